@@ -1,0 +1,37 @@
+/* check.h - the assertions of circe's unit test programs. A failed check prints where and the
+ * values involved, and the program goes on to report every failure; check_done() gives the exit
+ * status the automake harness reads (0 pass, 1 fail). */
+#ifndef CIRCE_TESTS_CHECK_H
+#define CIRCE_TESTS_CHECK_H
+
+#include <math.h>
+#include <stdio.h>
+
+static int check_count, check_failed;
+
+#define CHECK(cond, ...)                                                                   \
+	do {                                                                               \
+		check_count++;                                                             \
+		if (!(cond)) {                                                             \
+			check_failed++;                                                    \
+			fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond); \
+			fprintf(stderr, __VA_ARGS__);                                      \
+			fputc('\n', stderr);                                               \
+		}                                                                          \
+	} while (0)
+
+/* |a - b| <= tol, printing both values on failure. */
+#define CHECK_NEAR(a, b, tol)                                                              \
+	do {                                                                               \
+		double check_a_ = (double)(a), check_b_ = (double)(b);                     \
+		CHECK(fabs(check_a_ - check_b_) <= (tol), "%s = %.17g, %s = %.17g, tol %g", #a, \
+		      check_a_, #b, check_b_, (double)(tol));                              \
+	} while (0)
+
+static inline int check_done(const char *name)
+{
+	printf("%s: %d checks, %d failed\n", name, check_count, check_failed);
+	return check_failed ? 1 : 0;
+}
+
+#endif
