@@ -29,6 +29,30 @@ static int usage_error(const char *fmt, const char *arg)
 	return EXIT_USAGE;
 }
 
+/* circe check SCENE: parse and build, print statistics. */
+static int cmd_check(int argc, char **argv)
+{
+	(void)argc, (void)argv;
+	fprintf(stderr, "circe: error: 'check' needs the scene language, which this build lacks\n");
+	return EXIT_RUNTIME;
+}
+
+/* circe render SCENE [options]. */
+static int cmd_render(int argc, char **argv)
+{
+	(void)argc, (void)argv;
+	fprintf(stderr, "circe: error: 'render' needs the renderer, which this build lacks\n");
+	return EXIT_RUNTIME;
+}
+
+/* circe compare A.exr B.exr: error figures of A against B. */
+static int cmd_compare(int argc, char **argv)
+{
+	(void)argc, (void)argv;
+	fprintf(stderr, "circe: error: 'compare' is missing from this build\n");
+	return EXIT_RUNTIME;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc < 2)
@@ -42,5 +66,12 @@ int main(int argc, char **argv)
 		printf("circe %s\n", PACKAGE_VERSION);
 		return EXIT_OK;
 	}
+	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */
+	if (!strcmp(cmd, "render"))
+		return cmd_render(argc - 1, argv + 1);
+	if (!strcmp(cmd, "check"))
+		return cmd_check(argc - 1, argv + 1);
+	if (!strcmp(cmd, "compare"))
+		return cmd_compare(argc - 1, argv + 1);
 	return usage_error("unknown subcommand '%s'", cmd);
 }
