@@ -3,7 +3,14 @@
  * 2 bad command line, 3 scene error, 130 interrupted. */
 #include "config.h"
 
+#include "base/diag.h"
+#include "io/compare.h"
+#include "io/exr.h"
+
+#include <errno.h>
 #include <getopt.h>
+#include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,12 +52,99 @@ static int cmd_render(int argc, char **argv)
 	return EXIT_RUNTIME;
 }
 
-/* circe compare A.exr B.exr: error figures of A against B. */
+/* Parses a finite float option value; false when arg is not entirely a number. */
+static bool parse_double(const char *arg, double *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(arg, &end);
+	if (end == arg || *end != '\0' || errno == ERANGE || !isfinite(v))
+		return false;
+	*out = v;
+	return true;
+}
+
+/* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
+ * --fail-percent of the pixels have an error above --fail, 1 otherwise or on an I/O error. */
 static int cmd_compare(int argc, char **argv)
 {
-	(void)argc, (void)argv;
-	fprintf(stderr, "circe: error: 'compare' is missing from this build\n");
-	return EXIT_RUNTIME;
+	static const struct option opts[] = {
+		{"fail", required_argument, NULL, 'f'},
+		{"fail-percent", required_argument, NULL, 'p'},
+		{"diff", required_argument, NULL, 'd'},
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	double threshold = 1e-6, percent = 0.0;
+	const char *diff_path = NULL;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'f':
+			if (!parse_double(optarg, &threshold) || threshold < 0)
+				return usage_error("--fail needs a number >= 0, not '%s'", optarg);
+			break;
+		case 'p':
+			if (!parse_double(optarg, &percent) || percent < 0 || percent > 100)
+				return usage_error("--fail-percent needs a number from 0 to 100, not '%s'", optarg);
+			break;
+		case 'd':
+			diff_path = optarg;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return EXIT_OK;
+		default:
+			return usage_error("%s", "bad option for 'compare'");
+		}
+	}
+	if (argc - optind != 2)
+		return usage_error("%s", "'compare' needs two images: A.exr B.exr");
+	const char *pa = argv[optind], *pb = argv[optind + 1];
+	diag d;
+	diag_init(&d, stderr);
+	exrfile_image a, b, diff;
+	int status = EXIT_RUNTIME;
+	if (!exrfile_read(pa, &a, &d)) {
+		diag_free(&d);
+		return EXIT_RUNTIME;
+	}
+	if (!exrfile_read(pb, &b, &d)) {
+		exrfile_free(&a);
+		diag_free(&d);
+		return EXIT_RUNTIME;
+	}
+	compare_result r;
+	if (compare_images(&a, pa, &b, pb, threshold, &r, diff_path ? &diff : NULL, &d)) {
+		double frac = r.pixels ? 100.0 * (double)r.over / (double)r.pixels : 0.0;
+		bool pass = frac <= percent;
+		printf("channels: %d\npixels: %zu\n", r.nchannels, r.pixels);
+		printf("rmse: %.9g\nrelmse: %.9g (epsilon %g)\nmean_abs: %.9g\n", r.rmse, r.relmse,
+		       COMPARE_RELMSE_EPS, r.mean_abs);
+		printf("max_abs: %.9g at %d,%d channel %s\n", r.max_abs, r.max_x, r.max_y, r.max_channel);
+		printf("psnr: %.3f dB (peak %g)\n", r.psnr, COMPARE_PSNR_PEAK);
+		printf("over_threshold: %.6g%% (%zu pixels with error > %g; allowed %g%%)\n", frac, r.over,
+		       threshold, percent);
+		printf("nonfinite_a: nan %zu inf %zu\n", r.nan_a, r.inf_a);
+		printf("result: %s\n", pass ? "PASS" : "FAIL");
+		status = pass ? EXIT_OK : EXIT_RUNTIME;
+		if (diff_path) {
+			exrfile_channel chans[64];
+			for (int k = 0; k < diff.nchannels; k++)
+				chans[k] = (exrfile_channel){diff.names[k], diff.planes[k], 1, (size_t)diff.width};
+			exrfile_attr attr = {.name = "software", .kind = EXRFILE_ATTR_STRING,
+					     .s = "circe " PACKAGE_VERSION " compare: |A - B|"};
+			exrfile_write_desc desc = {diff.display, diff.data, diff.nchannels, chans, 1, &attr};
+			if (!exrfile_write(diff_path, &desc, &d))
+				status = EXIT_RUNTIME;
+			exrfile_free(&diff);
+		}
+	}
+	exrfile_free(&a);
+	exrfile_free(&b);
+	diag_free(&d);
+	return status;
 }
 
 int main(int argc, char **argv)

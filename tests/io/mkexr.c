@@ -1,0 +1,74 @@
+/* mkexr: writes test EXRs for the shell tests — a deterministic RGBA pattern, optional AOV
+ * channels and attributes, and single pixels overridden with --set X,Y,CHANNEL,VALUE (nan and
+ * inf accepted). Usage: mkexr OUT.exr W H [--pattern K | --const V] [--aov] [--set X,Y,C,V]... */
+#include "base/diag.h"
+#include "io/exr.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int main(int argc, char **argv)
+{
+	if (argc < 4) {
+		fprintf(stderr, "usage: mkexr OUT.exr W H [--pattern K] [--aov] [--set X,Y,C,V]...\n");
+		return 2;
+	}
+	int w = atoi(argv[2]), h = atoi(argv[3]), pattern = 0;
+	int aov = 0, constant = 0;
+	float cval = 0.0f;
+	if (w <= 0 || h <= 0)
+		return 2;
+	float *rgba = calloc((size_t)w * h * 4, sizeof(float));
+	float *z = calloc((size_t)w * h, sizeof(float));
+	for (int i = 4; i < argc; i++)
+		if (!strcmp(argv[i], "--pattern") && i + 1 < argc)
+			pattern = atoi(argv[++i]);
+		else if (!strcmp(argv[i], "--aov"))
+			aov = 1;
+		else if (!strcmp(argv[i], "--const") && i + 1 < argc)
+			constant = 1, cval = strtof(argv[++i], NULL);
+	for (int y = 0; y < h; y++)
+		for (int x = 0; x < w; x++) {
+			float *p = rgba + ((size_t)y * w + x) * 4;
+			p[0] = (float)(x + pattern) / (float)w;
+			p[1] = (float)y / (float)h;
+			p[2] = 0.25f + 0.001f * (float)((x * 7 + y * 13 + pattern) % 17);
+			p[3] = 1.0f;
+			z[(size_t)y * w + x] = 10.0f + (float)x;
+			if (constant)
+				p[0] = p[1] = p[2] = p[3] = cval;
+		}
+	for (int i = 4; i < argc; i++) {
+		if (strcmp(argv[i], "--set") || i + 1 >= argc)
+			continue;
+		int x, y;
+		char ch;
+		char val[32];
+		if (sscanf(argv[++i], "%d,%d,%c,%31s", &x, &y, &ch, val) != 4 || x < 0 || y < 0 || x >= w ||
+		    y >= h || !strchr("RGBA", ch)) {
+			fprintf(stderr, "mkexr: bad --set '%s'\n", argv[i]);
+			return 2;
+		}
+		float v = !strcmp(val, "nan") ? NAN : !strcmp(val, "inf") ? INFINITY : strtof(val, NULL);
+		rgba[((size_t)y * w + x) * 4 + (strchr("RGBA", ch) - "RGBA")] = v;
+	}
+	size_t row = (size_t)w * 4;
+	exrfile_channel ch[6] = {
+		{"R", rgba + 0, 4, row}, {"G", rgba + 1, 4, row}, {"B", rgba + 2, 4, row},
+		{"A", rgba + 3, 4, row}, {"Z", z, 1, (size_t)w}, {"albedo.R", rgba + 0, 4, row},
+	};
+	exrfile_attr attrs[2] = {
+		{.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe mkexr"},
+		{.name = "spp", .kind = EXRFILE_ATTR_INT, .i = 16},
+	};
+	exrfile_write_desc desc = {{0, 0, w, h}, {0, 0, w, h}, aov ? 6 : 4, ch, 2, attrs};
+	diag d;
+	diag_init(&d, stderr);
+	int ok = exrfile_write(argv[1], &desc, &d);
+	diag_free(&d);
+	free(rgba);
+	free(z);
+	return ok ? 0 : 1;
+}
