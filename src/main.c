@@ -1,5 +1,5 @@
 /* main.c - the circe command: parses the command line, calls the modules, decides exit codes.
- * Subcommands: render, check, compare, merge. Exit statuses: 0 success, 1 runtime or I/O error,
+ * Subcommands: render, check, compare. Exit statuses: 0 success, 1 runtime or I/O error,
  * 2 bad command line, 3 scene error, 130 interrupted. */
 #include "config.h"
 
@@ -9,7 +9,9 @@
 
 #include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,14 +27,14 @@ static const char usage_text[] =
 	"                    [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR] [--quiet]\n"
 	"       circe check SCENE [-I DIR] [--clock F]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
-	"       circe merge -o FULL.exr TILE.exr...\n"
+
 	"       circe --help | --version\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
 	fprintf(stderr, "circe: error: ");
 	fprintf(stderr, fmt, arg);
-	fprintf(stderr, "\n%s", usage_text);
+	fprintf(stderr, "\nTry 'circe --help' for the options.\n");
 	return EXIT_USAGE;
 }
 
@@ -41,14 +43,6 @@ static int cmd_check(int argc, char **argv)
 {
 	(void)argc, (void)argv;
 	fprintf(stderr, "circe: error: 'check' needs the scene language, which this build lacks\n");
-	return EXIT_RUNTIME;
-}
-
-/* circe render SCENE [options]. */
-static int cmd_render(int argc, char **argv)
-{
-	(void)argc, (void)argv;
-	fprintf(stderr, "circe: error: 'render' needs the renderer, which this build lacks\n");
 	return EXIT_RUNTIME;
 }
 
@@ -62,6 +56,229 @@ static bool parse_double(const char *arg, double *out)
 		return false;
 	*out = v;
 	return true;
+}
+
+/* Everything `circe render` takes from the command line. */
+typedef struct render_cli {
+	const char *scene, *out, *png;
+	int width, height;
+	long spp;         /* 0: not given */
+	double time_s;    /* 0: not given */
+	int threads;      /* 0: all cores */
+	const char *sss;  /* NULL: each material's own method */
+	bool talk_weight; /* --circle-weight talk */
+	uint64_t seed;
+	bool has_region;
+	int region[4]; /* x0, y0, x1, y1 */
+	unsigned aovs; /* AOV_* bits */
+	int tile_i, tile_n;
+	double clock;
+	long frame; /* -1: none */
+	double checkpoint_s;
+	size_t max_memory;
+	const char *include_dirs[64];
+	int ninclude;
+	bool quiet;
+} render_cli;
+
+enum { AOV_ALBEDO = 1, AOV_NORMAL = 2, AOV_DEPTH = 4, AOV_VARIANCE = 8 };
+
+static bool parse_long(const char *arg, long lo, long hi, long *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(arg, &end, 10);
+	if (end == arg || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+		return false;
+	*out = v;
+	return true;
+}
+
+/* SIZE with an optional K, M or G suffix (powers of 1024). */
+static bool parse_size(const char *arg, size_t *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(arg, &end);
+	double unit = 1;
+	if (*end == 'K' || *end == 'k')
+		unit = 1024.0, end++;
+	else if (*end == 'M' || *end == 'm')
+		unit = 1024.0 * 1024.0, end++;
+	else if (*end == 'G' || *end == 'g')
+		unit = 1024.0 * 1024.0 * 1024.0, end++;
+	if (end == arg || *end != '\0' || errno == ERANGE || !(v > 0) || v * unit > 1e18)
+		return false;
+	*out = (size_t)(v * unit);
+	return true;
+}
+
+static bool parse_aovs(const char *arg, unsigned *out)
+{
+	static const char *names[] = {"albedo", "normal", "depth", "variance"};
+	*out = 0;
+	const char *p = arg;
+	while (*p) {
+		size_t n = strcspn(p, ",");
+		int k = 0;
+		while (k < 4 && !(strlen(names[k]) == n && !strncmp(p, names[k], n)))
+			k++;
+		if (k == 4)
+			return false;
+		*out |= 1u << k;
+		p += n;
+		if (*p == ',')
+			p++;
+	}
+	return *out != 0;
+}
+
+/* Parses `render`'s options; returns EXIT_OK or EXIT_USAGE (after printing why). */
+static int parse_render_cli(int argc, char **argv, render_cli *o)
+{
+	static const struct option opts[] = {
+		{"png", required_argument, NULL, 'P'},
+		{"spp", required_argument, NULL, 's'},
+		{"time", required_argument, NULL, 't'},
+		{"threads", required_argument, NULL, 'j'},
+		{"sss", required_argument, NULL, 'S'},
+		{"circle-weight", required_argument, NULL, 'w'},
+		{"seed", required_argument, NULL, 'e'},
+		{"region", required_argument, NULL, 'r'},
+		{"aov", required_argument, NULL, 'a'},
+		{"tile", required_argument, NULL, 'T'},
+		{"clock", required_argument, NULL, 'c'},
+		{"frame", required_argument, NULL, 'f'},
+		{"checkpoint", required_argument, NULL, 'k'},
+		{"max-memory", required_argument, NULL, 'm'},
+		{"quiet", no_argument, NULL, 'q'},
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	*o = (render_cli){.width = 640, .height = 480, .frame = -1, .checkpoint_s = 60.0,
+			  .max_memory = (size_t)1 << 30};
+	long v;
+	double f;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "o:W:H:I:h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'o':
+			o->out = optarg;
+			break;
+		case 'P':
+			o->png = optarg;
+			break;
+		case 'W':
+		case 'H':
+			if (!parse_long(optarg, 1, 65536, &v))
+				return usage_error(c == 'W' ? "-W needs a width from 1 to 65536, not '%s'"
+							    : "-H needs a height from 1 to 65536, not '%s'", optarg);
+			*(c == 'W' ? &o->width : &o->height) = (int)v;
+			break;
+		case 's':
+			if (!parse_long(optarg, 1, 1L << 30, &o->spp))
+				return usage_error("--spp needs a sample count from 1 to 2^30, not '%s'", optarg);
+			break;
+		case 't':
+			if (!parse_double(optarg, &o->time_s) || o->time_s <= 0)
+				return usage_error("--time needs a number of seconds > 0, not '%s'", optarg);
+			break;
+		case 'j':
+			if (!parse_long(optarg, 1, 1024, &v))
+				return usage_error("--threads needs a count from 1 to 1024, not '%s'", optarg);
+			o->threads = (int)v;
+			break;
+		case 'S':
+			if (strcmp(optarg, "circle") && strcmp(optarg, "fullcircle") && strcmp(optarg, "disk") &&
+			    strcmp(optarg, "volume"))
+				return usage_error("--sss must be circle, fullcircle, disk or volume, not '%s'", optarg);
+			o->sss = optarg;
+			break;
+		case 'w':
+			if (strcmp(optarg, "exact") && strcmp(optarg, "talk"))
+				return usage_error("--circle-weight must be exact or talk, not '%s'", optarg);
+			o->talk_weight = !strcmp(optarg, "talk");
+			break;
+		case 'e':
+			if (!parse_long(optarg, 0, LONG_MAX, &v))
+				return usage_error("--seed needs an integer >= 0, not '%s'", optarg);
+			o->seed = (uint64_t)v;
+			break;
+		case 'r': {
+			int n = -1;
+			if (sscanf(optarg, "%d,%d,%d,%d%n", &o->region[0], &o->region[1], &o->region[2],
+				   &o->region[3], &n) != 4 || optarg[n] != '\0' || o->region[0] < 0 ||
+			    o->region[1] < 0 || o->region[2] <= o->region[0] || o->region[3] <= o->region[1])
+				return usage_error("--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'",
+						   optarg);
+			o->has_region = true;
+			break;
+		}
+		case 'a':
+			if (!parse_aovs(optarg, &o->aovs))
+				return usage_error("--aov takes a list of albedo, normal, depth, variance, not '%s'", optarg);
+			break;
+		case 'T': {
+			int n = -1;
+			if (sscanf(optarg, "%d/%d%n", &o->tile_i, &o->tile_n, &n) != 2 || optarg[n] != '\0' ||
+			    o->tile_n < 1 || o->tile_i < 0 || o->tile_i >= o->tile_n)
+				return usage_error("--tile needs I/N with 0 <= I < N, not '%s'", optarg);
+			break;
+		}
+		case 'c':
+			if (!parse_double(optarg, &o->clock))
+				return usage_error("--clock needs a number, not '%s'", optarg);
+			break;
+		case 'f':
+			if (!parse_long(optarg, 0, 99999999, &o->frame))
+				return usage_error("--frame needs a frame number >= 0, not '%s'", optarg);
+			break;
+		case 'k':
+			if (!parse_double(optarg, &f) || f <= 0)
+				return usage_error("--checkpoint needs a number of seconds > 0, not '%s'", optarg);
+			o->checkpoint_s = f;
+			break;
+		case 'm':
+			if (!parse_size(optarg, &o->max_memory))
+				return usage_error("--max-memory needs a size such as 512M or 2G, not '%s'", optarg);
+			break;
+		case 'I':
+			if (o->ninclude == 64)
+				return usage_error("too many -I directories (limit is %s)", "64");
+			o->include_dirs[o->ninclude++] = optarg;
+			break;
+		case 'q':
+			o->quiet = true;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return -1;
+		default:
+			return usage_error("%s", "bad option for 'render'");
+		}
+	}
+	if (o->spp && o->time_s > 0)
+		return usage_error("%s", "--spp and --time exclude each other");
+	if (argc - optind != 1)
+		return usage_error("%s", argc - optind ? "'render' takes one scene" : "'render' needs a scene");
+	o->scene = argv[optind];
+	if (o->has_region && (o->region[2] > o->width || o->region[3] > o->height))
+		return usage_error("--region lies outside the %s image", "-W x -H");
+	if (o->has_region && o->tile_n)
+		return usage_error("%s", "--region and --tile exclude each other");
+	return EXIT_OK;
+}
+
+/* circe render SCENE [options]. */
+static int cmd_render(int argc, char **argv)
+{
+	render_cli o;
+	int status = parse_render_cli(argc, argv, &o);
+	if (status != EXIT_OK)
+		return status < 0 ? EXIT_OK : status;
+	fprintf(stderr, "circe: error: 'render' needs the renderer, which this build lacks\n");
+	return EXIT_RUNTIME;
 }
 
 /* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
