@@ -1,11 +1,12 @@
 /* main.c - the circe command: parses the command line, calls the modules, decides exit codes.
- * Subcommands: render, check, compare. Exit statuses: 0 success, 1 runtime or I/O error,
+ * Subcommands: render, check, compare, merge. Exit statuses: 0 success, 1 runtime or I/O error,
  * 2 bad command line, 3 scene error, 130 interrupted. */
 #include "config.h"
 
 #include "base/diag.h"
 #include "io/compare.h"
 #include "io/exr.h"
+#include "io/merge.h"
 
 #include <errno.h>
 #include <getopt.h>
@@ -28,6 +29,7 @@ static const char usage_text[] =
 	"       circe check SCENE [-I DIR] [--clock F]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
 
+	"       circe merge -o FULL.exr TILE.exr...\n"
 	"       circe --help | --version\n";
 
 static int usage_error(const char *fmt, const char *arg)
@@ -364,6 +366,40 @@ static int cmd_compare(int argc, char **argv)
 	return status;
 }
 
+/* circe merge -o FULL.exr TILE.exr...: assembles tiles rendered apart. */
+static int cmd_merge(int argc, char **argv)
+{
+	static const struct option opts[] = {
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	const char *out = NULL;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'o':
+			out = optarg;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return EXIT_OK;
+		default:
+			return usage_error("%s", "bad option for 'merge'");
+		}
+	}
+	if (!out)
+		return usage_error("%s", "'merge' needs -o FULL.exr");
+	if (optind >= argc)
+		return usage_error("%s", "'merge' needs at least one tile");
+	diag d;
+	diag_init(&d, stderr);
+	d.max_errors = 0; /* every missing rectangle is worth printing */
+	bool ok = merge_tiles(out, (const char *const *)argv + optind, argc - optind, &d);
+	diag_free(&d);
+	return ok ? EXIT_OK : EXIT_RUNTIME;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc < 2)
@@ -384,5 +420,7 @@ int main(int argc, char **argv)
 		return cmd_check(argc - 1, argv + 1);
 	if (!strcmp(cmd, "compare"))
 		return cmd_compare(argc - 1, argv + 1);
+	if (!strcmp(cmd, "merge"))
+		return cmd_merge(argc - 1, argv + 1);
 	return usage_error("unknown subcommand '%s'", cmd);
 }

@@ -366,3 +366,16 @@ const exrfile_attr *exrfile_attr_find(const exrfile_image *img, const char *name
 			return &img->attrs[a];
 	return NULL;
 }
+
+bool exrfile_attr_is_structural(const char *name)
+{
+	static const char *const names[] = {
+		"channels",   "compression",        "dataWindow",        "displayWindow", "lineOrder",
+		"pixelAspectRatio", "screenWindowCenter", "screenWindowWidth", "tiles", "type",
+		"name",       "version",            "chunkCount",
+	};
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (!strcmp(name, names[i]))
+			return true;
+	return false;
+}

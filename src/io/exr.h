@@ -67,6 +67,9 @@ bool exrfile_read(const char *path, exrfile_image *img, diag *d);
 void exrfile_free(exrfile_image *img);
 /* The plane of the named channel, or NULL. */
 const float *exrfile_find_channel(const exrfile_image *img, const char *name);
+/* True for the attributes OpenEXR itself writes from the image's structure (channels,
+ * compression, windows, ...): a copy of a header must leave them out. */
+bool exrfile_attr_is_structural(const char *name);
 /* The named attribute, or NULL. */
 const exrfile_attr *exrfile_attr_find(const exrfile_image *img, const char *name);
 

@@ -1,10 +1,14 @@
 /* mkexr: writes test EXRs for the shell tests — a deterministic RGBA pattern, optional AOV
  * channels and attributes, and single pixels overridden with --set X,Y,CHANNEL,VALUE (nan and
- * inf accepted). Usage: mkexr OUT.exr W H [--pattern K | --const V] [--aov] [--set X,Y,C,V]... */
+ * inf accepted). W x H is the frame; --window X0,Y0,X1,Y1 writes only those pixels (a tile: the
+ * pattern depends on frame coordinates, so tiles assemble into the whole); --attr K=V and
+ * --iattr K=N add string and integer attributes.
+ * Usage: mkexr OUT.exr W H [--pattern K | --const V] [--aov] [--window R] [--attr K=V]... [--set X,Y,C,V]... */
 #include "base/diag.h"
 #include "io/exr.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,11 +63,32 @@ int main(int argc, char **argv)
 		{"R", rgba + 0, 4, row}, {"G", rgba + 1, 4, row}, {"B", rgba + 2, 4, row},
 		{"A", rgba + 3, 4, row}, {"Z", z, 1, (size_t)w}, {"albedo.R", rgba + 0, 4, row},
 	};
-	exrfile_attr attrs[2] = {
+	exrfile_attr attrs[34] = {
 		{.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe mkexr"},
 		{.name = "spp", .kind = EXRFILE_ATTR_INT, .i = 16},
 	};
-	exrfile_write_desc desc = {{0, 0, w, h}, {0, 0, w, h}, aov ? 6 : 4, ch, 2, attrs};
+	int nattrs = 2;
+	exrfile_rect win = {0, 0, w, h};
+	for (int i = 4; i + 1 < argc; i++) {
+		bool is_int = !strcmp(argv[i], "--iattr");
+		if ((is_int || !strcmp(argv[i], "--attr")) && nattrs < 34) {
+			char *eq = strchr(argv[++i], '=');
+			if (!eq)
+				return 2;
+			*eq = '\0';
+			attrs[nattrs++] = (exrfile_attr){.name = argv[i], .kind = is_int ? EXRFILE_ATTR_INT : EXRFILE_ATTR_STRING,
+							 .s = eq + 1, .i = atoi(eq + 1)};
+		} else if (!strcmp(argv[i], "--window")) {
+			if (sscanf(argv[++i], "%d,%d,%d,%d", &win.x0, &win.y0, &win.x1, &win.y1) != 4 || win.x0 < 0 ||
+			    win.y0 < 0 || win.x1 > w || win.y1 > h)
+				return 2;
+		}
+	}
+	/* Channel pointers start at the window's corner of the frame-sized arrays. */
+	size_t off = (size_t)win.y0 * w + (size_t)win.x0;
+	for (int c = 0; c < 6; c++)
+		ch[c].data += off * (ch[c].pixel_stride == 4 ? 4 : 1);
+	exrfile_write_desc desc = {{0, 0, w, h}, win, aov ? 6 : 4, ch, nattrs, attrs};
 	diag d;
 	diag_init(&d, stderr);
 	int ok = exrfile_write(argv[1], &desc, &d);
