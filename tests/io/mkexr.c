@@ -3,7 +3,10 @@
  * inf accepted). W x H is the frame; --window X0,Y0,X1,Y1 writes only those pixels (a tile: the
  * pattern depends on frame coordinates, so tiles assemble into the whole); --attr K=V and
  * --iattr K=N add string and integer attributes.
- * Usage: mkexr OUT.exr W H [--pattern K | --const V] [--aov] [--window R] [--attr K=V]... [--set X,Y,C,V]... */
+ * --studio writes a lat-long studio environment instead (the convention of render/light.h: row 0
+ * is +y, column 0.5 is +z): sky gradient, dark ground, one bright soft box up front-left.
+ * Usage: mkexr OUT.exr W H [--pattern K | --const V | --studio] [--aov] [--window R] [--attr K=V]...
+ *        [--set X,Y,C,V]... */
 #include "base/diag.h"
 #include "io/exr.h"
 
@@ -13,6 +16,32 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The studio environment at lat-long (u, v): direction d, then sky, ground and the soft box. */
+static void studio_texel(double u, double v, float *p)
+{
+	const double pi = 3.14159265358979323846;
+	double theta = v * pi, phi = 2 * pi * (u - 0.5);
+	double d[3] = {sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi)};
+	double c[3];
+	if (d[1] >= 0) {
+		double t = pow(d[1], 0.5);
+		static const double zenith[3] = {0.25, 0.36, 0.62}, horizon[3] = {0.85, 0.86, 0.88};
+		for (int k = 0; k < 3; k++)
+			c[k] = horizon[k] + (zenith[k] - horizon[k]) * t;
+	} else {
+		static const double ground[3] = {0.16, 0.14, 0.12};
+		for (int k = 0; k < 3; k++)
+			c[k] = ground[k];
+	}
+	/* The soft box: a disc of about 20 degrees around a direction up, at -x and towards +z (where a
+	 * camera looking along -z at a subject facing +z has it at its side, above). */
+	double box[3] = {-0.55, 0.6, 0.58}, len = sqrt(box[0] * box[0] + box[1] * box[1] + box[2] * box[2]);
+	double cosang = (d[0] * box[0] + d[1] * box[1] + d[2] * box[2]) / len;
+	if (cosang > cos(20 * pi / 180))
+		c[0] = 14.0, c[1] = 13.5, c[2] = 12.5;
+	p[0] = (float)c[0], p[1] = (float)c[1], p[2] = (float)c[2], p[3] = 1.0f;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc < 4) {
@@ -20,7 +49,7 @@ int main(int argc, char **argv)
 		return 2;
 	}
 	int w = atoi(argv[2]), h = atoi(argv[3]), pattern = 0;
-	int aov = 0, constant = 0;
+	int aov = 0, constant = 0, studio = 0;
 	float cval = 0.0f;
 	if (w <= 0 || h <= 0)
 		return 2;
@@ -31,6 +60,8 @@ int main(int argc, char **argv)
 			pattern = atoi(argv[++i]);
 		else if (!strcmp(argv[i], "--aov"))
 			aov = 1;
+		else if (!strcmp(argv[i], "--studio"))
+			studio = 1;
 		else if (!strcmp(argv[i], "--const") && i + 1 < argc)
 			constant = 1, cval = strtof(argv[++i], NULL);
 	for (int y = 0; y < h; y++)
@@ -43,6 +74,8 @@ int main(int argc, char **argv)
 			z[(size_t)y * w + x] = 10.0f + (float)x;
 			if (constant)
 				p[0] = p[1] = p[2] = p[3] = cval;
+			if (studio)
+				studio_texel((x + 0.5) / w, (y + 0.5) / h, p);
 		}
 	for (int i = 4; i < argc; i++) {
 		if (strcmp(argv[i], "--set") || i + 1 >= argc)
