@@ -8,8 +8,6 @@
 
 /* Below this |cos| at the light, a mesh sample is grazing: its solid-angle pdf would overflow. */
 #define LIGHT_GRAZING_COS 1e-6f
-/* A ray that hits a sphere light may graze its silhouette with cos a few ulps below the cone's. */
-#define LIGHT_CONE_SLACK 1e-6f
 
 static float deg_to_rad(float d) { return d * RENDER_PI / 180.0f; }
 
@@ -159,17 +157,17 @@ static vec3 from_frame(vec3 axis, vec3 local)
 	return v3_add(v3_add(v3_scale(b1, local.x), v3_scale(b2, local.y)), v3_scale(axis, local.z));
 }
 
-/* Cosine of the half-angle of the cone a sphere light subtends from p; false when p is inside. */
-static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *cos_max)
+/* The cone a sphere light subtends from p: its axis, the distance to the centre and sin^2 of the
+ * half angle; false when p is inside. */
+static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *sin2_max)
 {
 	vec3 to = v3_sub(l->pos, p);
 	*dist = v3_length(to);
-	if (*dist <= l->radius)
+	if (!(*dist > l->radius))
 		return false;
 	*axis = v3_scale(to, 1.0f / *dist);
-	float sin2 = (l->radius * l->radius) / (*dist * *dist);
-	*cos_max = sqrtf(fmaxf(0.0f, 1.0f - sin2));
-	return *cos_max < 1.0f;
+	*sin2_max = (l->radius * l->radius) / (*dist * *dist);
+	return *sin2_max > 0.0f;
 }
 
 /* POV-Ray's spot factor: cubic_spline(cos falloff, cos radius, cos theta). */
@@ -208,16 +206,19 @@ bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
 		return true;
 	case LIGHT_SPHERE: {
 		vec3 axis;
-		float dist, cos_max;
-		if (!sphere_cone(l, p, &axis, &dist, &cos_max))
+		float dist, sin2_max;
+		if (!sphere_cone(l, p, &axis, &dist, &sin2_max))
 			return false;
-		out->wi = v3_normalize(from_frame(axis, render_uniform_cone(u, cos_max)));
-		/* Distance to the near side: b - sqrt(r^2 - (d^2 - b^2)), b = d cos. */
-		float b = dist * v3_dot(out->wi, axis);
-		float disc = l->radius * l->radius - (dist * dist - b * b);
+		out->wi = v3_normalize(from_frame(axis, render_uniform_cone(u, sin2_max)));
+		/* Distance to the near side: b - sqrt(r^2 - |to - b wi|^2), b = to . wi; the squared
+		 * distance of the centre from the ray avoids the cancellation of d^2 - b^2. */
+		vec3 to = v3_scale(axis, dist);
+		float b = v3_dot(to, out->wi);
+		vec3 perp = v3_sub(to, v3_scale(out->wi, b));
+		float disc = l->radius * l->radius - v3_length2(perp);
 		out->dist = b - sqrtf(fmaxf(0.0f, disc));
 		out->li = l->color;
-		out->pdf = render_uniform_cone_pdf(cos_max);
+		out->pdf = render_uniform_cone_pdf(sin2_max);
 		return out->dist > 0.0f;
 	}
 	case LIGHT_MESH: {
@@ -266,10 +267,11 @@ float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n)
 	switch (l->kind) {
 	case LIGHT_SPHERE: {
 		vec3 axis;
-		float d, cos_max;
-		if (!sphere_cone(l, p, &axis, &d, &cos_max) || v3_dot(wi, axis) < cos_max * (1.0f - LIGHT_CONE_SLACK))
+		float d, sin2_max, t;
+		render_ray ray = {p, wi};
+		if (!sphere_cone(l, p, &axis, &d, &sin2_max) || !light_sphere_hit(l, &ray, 0.0f, INFINITY, &t))
 			return 0.0f;
-		return render_uniform_cone_pdf(cos_max);
+		return render_uniform_cone_pdf(sin2_max);
 	}
 	case LIGHT_MESH: {
 		float cos_l = fabsf(v3_dot(n, wi));
@@ -302,14 +304,22 @@ vec3 light_radiance_dir(const light *l, vec3 d)
 
 bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float tmax, float *t)
 {
+	/* Haines et al. 2019, "Precision Improvements for Ray/Sphere Intersection" (Ray Tracing Gems
+	 * ch. 7): the discriminant from the centre's distance to the ray, the near root as c / q. */
 	vec3 oc = v3_sub(ray->o, l->pos);
 	float b = v3_dot(oc, ray->d);
-	float c = v3_dot(oc, oc) - l->radius * l->radius;
-	float disc = b * b - c;
+	vec3 perp = v3_sub(oc, v3_scale(ray->d, b));
+	float disc = l->radius * l->radius - v3_length2(perp);
 	if (disc < 0.0f)
 		return false;
-	float s = sqrtf(disc);
-	float t0 = -b - s, t1 = -b + s;
+	float c = v3_length2(oc) - l->radius * l->radius;
+	float q = -b - copysignf(sqrtf(disc), b);
+	float t0 = q != 0.0f ? c / q : 0.0f, t1 = q;
+	if (t0 > t1) {
+		float x = t0;
+		t0 = t1;
+		t1 = x;
+	}
 	float hit = t0 > tmin ? t0 : t1;
 	if (!(hit > tmin && hit < tmax))
 		return false;

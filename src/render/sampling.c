@@ -37,17 +37,23 @@ vec3 render_uniform_sphere(vec2 u)
 	return v3(r * cosf(phi), r * sinf(phi), z);
 }
 
-vec3 render_uniform_cone(vec2 u, float cos_max)
+/* 1 - cos of the half angle, from its sin^2. */
+static float cone_one_minus_cos(float sin2_max)
 {
-	float z = 1.0f - u.x * (1.0f - cos_max);
-	float r = sqrtf(fmaxf(0.0f, 1.0f - z * z));
-	float phi = 2.0f * RENDER_PI * u.y;
-	return v3(r * cosf(phi), r * sinf(phi), z);
+	return sin2_max / (1.0f + sqrtf(fmaxf(0.0f, 1.0f - sin2_max)));
 }
 
-float render_uniform_cone_pdf(float cos_max)
+vec3 render_uniform_cone(vec2 u, float sin2_max)
 {
-	return 1.0f / (2.0f * RENDER_PI * (1.0f - cos_max));
+	float w = u.x * cone_one_minus_cos(sin2_max); /* 1 - cos theta */
+	float r = sqrtf(fmaxf(0.0f, w * (2.0f - w)));
+	float phi = 2.0f * RENDER_PI * u.y;
+	return v3(r * cosf(phi), r * sinf(phi), 1.0f - w);
+}
+
+float render_uniform_cone_pdf(float sin2_max)
+{
+	return 1.0f / (2.0f * RENDER_PI * cone_one_minus_cos(sin2_max));
 }
 
 vec2 render_uniform_triangle(vec2 u)

@@ -24,9 +24,12 @@ static inline float render_cosine_hemisphere_pdf(float cos_theta)
 /* Uniform direction on the unit sphere; pdf 1/(4 pi). */
 vec3 render_uniform_sphere(vec2 u);
 #define RENDER_UNIFORM_SPHERE_PDF (0.25f * RENDER_INV_PI)
-/* Uniform direction in the cone about +z with cos(half angle) = cos_max; pdf 1/(2 pi (1 - cos_max)). */
-vec3 render_uniform_cone(vec2 u, float cos_max);
-float render_uniform_cone_pdf(float cos_max);
+/* Uniform direction in the cone about +z whose half angle has sin^2 = sin2_max (in (0, 1]; the
+ * cone is at most a hemisphere); pdf 1/(2 pi (1 - cos_max)). Given by sin^2 because a small cone
+ * (a distant sphere light) has cos_max within a few float ulps of 1: 1 - cos is computed as
+ * sin^2 / (1 + cos) and the sampled sin theta from 1 - cos theta, both without cancellation. */
+vec3 render_uniform_cone(vec2 u, float sin2_max);
+float render_uniform_cone_pdf(float sin2_max);
 /* Uniform point on a triangle as barycentrics (b0, b1), b2 = 1 - b0 - b1 (Heitz 2019, "A
  * Low-Distortion Map Between Triangle and Square"); pdf 1/area. */
 vec2 render_uniform_triangle(vec2 u);

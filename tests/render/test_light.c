@@ -58,6 +58,22 @@ static void test_sphere_light(long n)
 			e += ls.li.x * ls.wi.y / ls.pdf;
 	}
 	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
+	/* A tiny, distant sphere (r / d = 1e-3, cos_max within 4 ulps of 1) keeps its cone exact:
+	 * every sample hits it, pdf() agrees, and the irradiance is the point light's. */
+	light tiny = light_sphere(v3(0, 50, 0), 0.05f, v3(100, 100, 100));
+	e = 0;
+	int misses = 0;
+	for (int i = 0; i < 10000; i++) {
+		light_sample ls;
+		float t;
+		if (!light_sample_from(&tiny, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		render_ray r = {v3s(0), ls.wi};
+		misses += !light_sphere_hit(&tiny, &r, 0, INFINITY, &t) || light_pdf(&tiny, v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
+		e += ls.li.x * ls.wi.y / ls.pdf;
+	}
+	CHECK(misses == 0, "tiny sphere light: %d of 10000 samples miss it or disagree on the pdf", misses);
+	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
 	light_sample ls;
 	CHECK(!light_sample_from(&l, l.pos, v2(0.5f, 0.5f), &ls), "sampling from inside a sphere light");
 }

@@ -28,13 +28,14 @@ static double p_sphere(void *ctx, vec3 d)
 }
 static bool s_cone(void *ctx, rng *g, vec3 *d)
 {
-	*d = render_uniform_cone(v2(rng_float(g), rng_float(g)), *(float *)ctx);
+	float c = *(float *)ctx;
+	*d = render_uniform_cone(v2(rng_float(g), rng_float(g)), 1.0f - c * c);
 	return true;
 }
 static double p_cone(void *ctx, vec3 d)
 {
 	float c = *(float *)ctx;
-	return d.z >= c ? render_uniform_cone_pdf(c) : 0.0;
+	return d.z >= c ? render_uniform_cone_pdf(1.0f - c * c) : 0.0;
 }
 
 static void test_disk_and_triangle(long n)
