@@ -1,7 +1,7 @@
 /* test_integrator: the path tracer against closed-form answers — the white furnace (a convex
  * diffuse object under a uniform sky of radiance 1 shows albedo * 1), a closed emissive diffuse box
  * (radiance Le / (1 - albedo) everywhere), a point light's irradiance law — and light sampling,
- * BSDF sampling and MIS converging to the same image. */
+ * BSDF sampling and MIS converging to the same image under a sphere light and an environment map. */
 #include "chi2.h"
 #include "render/camera.h"
 #include "render/integrator.h"
@@ -145,6 +145,35 @@ static void test_point_light(void)
 	light_set_free(&s.lights);
 }
 
+/* Light sampling (im[0]), BSDF sampling (im[1]) and MIS (im[2]) agree pixel by pixel and in the
+ * image mean within 5 sigma. */
+static void compare_strategies(const image *im)
+{
+	const char *names[3] = {"light sampling", "BSDF sampling", "MIS"};
+	int np = im[0].w * im[0].h;
+	double mean_mis = image_mean(&im[2]);
+	CHECK(mean_mis > 0.05, "MIS image is dark: %g", mean_mis);
+	for (int a = 0; a < 3; a++)
+		for (int b = a + 1; b < 3; b++) {
+			int bad = 0;
+			double worst = 0, sa = 0, sb = 0, va = 0, vb = 0;
+			for (int i = 0; i < np; i++) {
+				/* A floor of 1 % of the image mean: where one strategy almost never finds the
+				 * light its variance estimate is zero although its error is not. */
+				double sd = sqrt(im[a].var[i] + im[b].var[i]) + 0.002 * mean_mis;
+				double z = fabs(im[a].mean[i] - im[b].mean[i]) / sd;
+				worst = fmax(worst, z);
+				bad += z > 5;
+				sa += im[a].mean[i], sb += im[b].mean[i], va += im[a].var[i], vb += im[b].var[i];
+			}
+			double zm = fabs(sa - sb) / sqrt(va + vb);
+			CHECK(bad == 0 && zm < 5, "%s vs %s: %d pixels beyond 5 sigma (worst %g), means %g vs %g (z %g)",
+			      names[a], names[b], bad, worst, sa / np, sb / np, zm);
+			printf("  %-15s vs %-15s worst pixel z %.2f, image means %.4f %.4f (z %.2f)\n", names[a], names[b],
+			       worst, sa / np, sb / np, zm);
+		}
+}
+
 static void test_mis(int spp)
 {
 	ts_scene s;
@@ -164,35 +193,61 @@ static void test_mis(int spp)
 	cam_init(&c, &cp, 8, 8);
 	static image im[3];
 	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
-	const char *names[3] = {"light sampling", "BSDF sampling", "MIS"};
 	for (int m = 0; m < 3; m++)
 		render_image(&s, &c, (render_settings){3, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
-	double mean_mis = image_mean(&im[2]);
-	CHECK(mean_mis > 0.05, "MIS image is dark: %g", mean_mis);
-	for (int a = 0; a < 3; a++)
-		for (int b = a + 1; b < 3; b++) {
-			int bad = 0;
-			double worst = 0, sa = 0, sb = 0, va = 0, vb = 0;
-			for (int i = 0; i < 64; i++) {
-				/* A floor of 1 % of the image mean: where one strategy almost never finds the
-				 * light its variance estimate is zero although its error is not. */
-				double sd = sqrt(im[a].var[i] + im[b].var[i]) + 0.002 * mean_mis;
-				double z = fabs(im[a].mean[i] - im[b].mean[i]) / sd;
-				worst = fmax(worst, z);
-				bad += z > 5;
-				sa += im[a].mean[i], sb += im[b].mean[i], va += im[a].var[i], vb += im[b].var[i];
-			}
-			double zm = fabs(sa - sb) / sqrt(va + vb);
-			CHECK(bad == 0 && zm < 5, "%s vs %s: %d pixels beyond 5 sigma (worst %g), means %g vs %g (z %g)",
-			      names[a], names[b], bad, worst, sa / 64, sb / 64, zm);
-			printf("  %-15s vs %-15s worst pixel z %.2f, image means %.4f %.4f (z %.2f)\n", names[a], names[b],
-			       worst, sa / 64, sb / 64, zm);
-		}
+	compare_strategies(im);
 	/* MIS should not be noisier than the worse of the two strategies. */
 	double v_mis = 0, v_light = 0;
 	for (int i = 0; i < 64; i++)
 		v_mis += im[2].var[i], v_light += im[0].var[i];
 	CHECK(v_mis <= v_light * 1.05, "MIS variance %g above light sampling's %g", v_mis, v_light);
+	light_set_free(&s.lights);
+}
+
+/* The lat-long environment in the integrator: a constant map is the furnace again, and a map with
+ * a sun is rendered alike by light sampling, BSDF sampling and MIS. */
+static void test_envmap(int spp)
+{
+	enum { EW = 16, EH = 8 };
+	static float img[EW * EH * 3];
+	for (int i = 0; i < EW * EH * 3; i++)
+		img[i] = 1.0f;
+	ts_scene s;
+	ts_init(&s);
+	s.sph[s.nsph++] = (ts_sphere){v3(0, 0, 0), 1.0f, 0};
+	s.mat[0] = bsdf_diffuse(v3s(1));
+	xform rot = xform_rotate(d3(10, 40, 0));
+	light env;
+	CHECK(light_envmap_init(&env, img, EW, EH, 1.0f, &rot), "envmap");
+	light_set_add(&s.lights, &env);
+	light_set_finish(&s.lights, 2.0f);
+	cam_params cp = cam_params_default();
+	cp.location = v3(0, 0, -3);
+	cp.look_at = v3(0, 0, 0);
+	cp.angle_deg = 24;
+	cam c;
+	cam_init(&c, &cp, 6, 6);
+	static image im[3];
+	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im[0]);
+	expect_image("furnace under a constant environment map", &im[0], 1.0, 0.01);
+
+	for (int i = 0; i < EW * EH; i++) { /* a sky gradient and a small sun */
+		float v = 0.2f + 0.8f * (float)(EH - i / EW) / EH;
+		img[3 * i] = 0.6f * v, img[3 * i + 1] = 0.8f * v, img[3 * i + 2] = v;
+	}
+	img[3 * (2 * EW + 11)] = img[3 * (2 * EW + 11) + 1] = img[3 * (2 * EW + 11) + 2] = 30.0f;
+	light_set_free(&s.lights);
+	light_set_init(&s.lights);
+	CHECK(light_envmap_init(&env, img, EW, EH, 1.0f, &rot), "envmap");
+	light_set_add(&s.lights, &env);
+	light_set_finish(&s.lights, 2.0f);
+	s.mat[0] = bsdf_pov_finish(v3(0.8f, 0.8f, 0.8f), 0.6f, 0.4f, 0.05f);
+	cp.angle_deg = 50;
+	cam_init(&c, &cp, 6, 6);
+	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
+	for (int m = 0; m < 3; m++)
+		render_image(&s, &c, (render_settings){3, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
+	compare_strategies(im);
 	light_set_free(&s.lights);
 }
 
@@ -204,5 +259,6 @@ int main(void)
 	test_closed_box(spp);
 	test_point_light();
 	test_mis(spp);
+	test_envmap(spp);
 	return check_done("test_integrator");
 }
