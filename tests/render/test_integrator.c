@@ -60,6 +60,18 @@ static void expect_image(const char *what, const image *im, double want, double 
 	CHECK(fabs(m - want) <= tol_rel * want, "%s: image mean %g, want %g (tol %g)", what, m, want, tol_rel);
 }
 
+/* A camera at loc looking at `at` with horizontal FOV angle, for a w x h image. */
+static cam make_cam(vec3 loc, vec3 at, float angle, int w, int h)
+{
+	cam_params cp = cam_params_default();
+	cp.location = loc;
+	cp.look_at = at;
+	cp.angle_deg = angle;
+	cam c;
+	CHECK(cam_init(&c, &cp, w, h), "camera");
+	return c;
+}
+
 static void test_furnace(int spp)
 {
 	ts_scene s;
@@ -68,12 +80,7 @@ static void test_furnace(int spp)
 	light bg = light_background(v3s(1));
 	light_set_add(&s.lights, &bg);
 	light_set_finish(&s.lights, 2.0f);
-	cam_params cp = cam_params_default();
-	cp.location = v3(0, 0, -3);
-	cp.look_at = v3(0, 0, 0);
-	cp.angle_deg = 24; /* the sphere (19.5 deg radius) fills the frame, corners included */
-	cam c;
-	cam_init(&c, &cp, 6, 6);
+	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6); /* the sphere (19.5 deg radius) fills the frame */
 	static image im;
 	const render_mode modes[3] = {RENDER_BSDF_ONLY, RENDER_MIS, RENDER_LIGHT_ONLY};
 	const char *names[3] = {"furnace albedo 1, BSDF", "furnace albedo 1, MIS", "furnace albedo 1, light"};
@@ -111,11 +118,7 @@ static void test_closed_box(int spp)
 	CHECK(light_mesh_init(&mesh, v, 12, v3s(1)), "box light");
 	light_set_add(&s.lights, &mesh);
 	light_set_finish(&s.lights, 2.0f);
-	cam_params cp = cam_params_default();
-	cp.location = v3(0.1f, 0.2f, -0.3f);
-	cp.look_at = v3(0.5f, 0.1f, 1);
-	cam c;
-	cam_init(&c, &cp, 8, 8);
+	cam c = make_cam(v3(0.1f, 0.2f, -0.3f), v3(0.5f, 0.1f, 1), 90, 8, 8);
 	static image im;
 	render_image(&s, &c, (render_settings){200, RENDER_MIS}, spp, &im);
 	expect_image("closed emissive box, a = 0.5: Le / (1 - a)", &im, 2.0, 0.01);
@@ -131,12 +134,7 @@ static void test_point_light(void)
 	light pt = light_point(v3(1, 2, 0), v3s(8));
 	light_set_add(&s.lights, &pt);
 	light_set_finish(&s.lights, 10.0f);
-	cam_params cp = cam_params_default();
-	cp.location = v3(0, 3, -3);
-	cp.look_at = v3(0, 0, 0);
-	cp.angle_deg = 0.01f;
-	cam c;
-	cam_init(&c, &cp, 1, 1);
+	cam c = make_cam(v3(0, 3, -3), v3(0, 0, 0), 0.01f, 1, 1);
 	static image im;
 	render_image(&s, &c, (render_settings){1, RENDER_MIS}, 4, &im);
 	/* At the origin: d^2 = 5, cos = 2 / sqrt(5); L = (a / pi) I cos / d^2. */
@@ -174,6 +172,16 @@ static void compare_strategies(const image *im)
 		}
 }
 
+/* Renders light sampling, BSDF sampling (4x the samples: it is the noisier) and MIS into im[0..2]
+ * and compares them. */
+static void render_three(const ts_scene *s, const cam *c, int max_level, int spp, image *im)
+{
+	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
+	for (int m = 0; m < 3; m++)
+		render_image(s, c, (render_settings){max_level, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
+	compare_strategies(im);
+}
+
 static void test_mis(int spp)
 {
 	ts_scene s;
@@ -185,17 +193,9 @@ static void test_mis(int spp)
 	light sl = light_sphere(v3(0.5f, 1.5f, 0.5f), 0.4f, v3(3, 3, 3));
 	light_set_add(&s.lights, &sl);
 	light_set_finish(&s.lights, 5.0f);
-	cam_params cp = cam_params_default();
-	cp.location = v3(0, 1.2f, -2.5f);
-	cp.look_at = v3(0, 0.2f, 0.5f);
-	cp.angle_deg = 60;
-	cam c;
-	cam_init(&c, &cp, 8, 8);
+	cam c = make_cam(v3(0, 1.2f, -2.5f), v3(0, 0.2f, 0.5f), 60, 8, 8);
 	static image im[3];
-	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
-	for (int m = 0; m < 3; m++)
-		render_image(&s, &c, (render_settings){3, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
-	compare_strategies(im);
+	render_three(&s, &c, 3, spp, im);
 	/* MIS should not be noisier than the worse of the two strategies. */
 	double v_mis = 0, v_light = 0;
 	for (int i = 0; i < 64; i++)
@@ -221,12 +221,7 @@ static void test_envmap(int spp)
 	CHECK(light_envmap_init(&env, img, EW, EH, 1.0f, &rot), "envmap");
 	light_set_add(&s.lights, &env);
 	light_set_finish(&s.lights, 2.0f);
-	cam_params cp = cam_params_default();
-	cp.location = v3(0, 0, -3);
-	cp.look_at = v3(0, 0, 0);
-	cp.angle_deg = 24;
-	cam c;
-	cam_init(&c, &cp, 6, 6);
+	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6);
 	static image im[3];
 	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im[0]);
 	expect_image("furnace under a constant environment map", &im[0], 1.0, 0.01);
@@ -242,12 +237,8 @@ static void test_envmap(int spp)
 	light_set_add(&s.lights, &env);
 	light_set_finish(&s.lights, 2.0f);
 	s.mat[0] = bsdf_pov_finish(v3(0.8f, 0.8f, 0.8f), 0.6f, 0.4f, 0.05f);
-	cp.angle_deg = 50;
-	cam_init(&c, &cp, 6, 6);
-	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
-	for (int m = 0; m < 3; m++)
-		render_image(&s, &c, (render_settings){3, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
-	compare_strategies(im);
+	c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 50, 6, 6);
+	render_three(&s, &c, 3, spp, im);
 	light_set_free(&s.lights);
 }
 
