@@ -1,6 +1,9 @@
 /* light.h - circe's light sources and the set the integrator samples from.
- *   LIGHT_POINT     POV-Ray light_source { V color C }: intensity C (radiance * area per sr),
- *                   irradiance C cos / d^2. Delta: only light sampling finds it.
+ *   LIGHT_POINT     POV-Ray light_source { V color C }: intensity C (W/sr per unit colour),
+ *                   irradiance C cos / d^2. Unlike POV-Ray's default (no fading), light falls off
+ *                   with the inverse square, as it must in a physically based renderer; a light
+ *                   at distance d needs d^2 times POV-Ray's colour for the same brightness.
+ *                   Delta: only light sampling finds it.
  *   LIGHT_SPOT      a point light times POV-Ray's spot factor: 1 inside `radius`, 0 outside
  *                   `falloff` (half-angles in degrees about point_at), a smoothstep of cos between.
  *   LIGHT_PARALLEL  POV-Ray `parallel`: irradiance C from the fixed direction location->point_at.
