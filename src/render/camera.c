@@ -15,8 +15,8 @@ cam_params cam_params_default(void)
 		.look_at = v3(0, 0, 1),
 		.sky = v3(0, 1, 0),
 		.angle_deg = 90.0f,
-		.right_len = 0.0f,
-		.up_len = 0.0f,
+		.right = v3(0, 0, 0),
+		.up = v3(0, 0, 0),
 		.aperture = 0.0f,
 		.focal_point = v3(0, 0, 1),
 	};
@@ -36,8 +36,13 @@ bool cam_init(cam *c, const cam_params *p, int width, int height)
 	c->right = v3_normalize(r);
 	c->up = v3_cross(c->forward, c->right);
 	c->origin = p->location;
-	float right_len = p->right_len > 0.0f ? p->right_len : (float)width / (float)height;
-	float up_len = p->up_len > 0.0f ? p->up_len : 1.0f;
+	float right_len = v3_length(p->right) > 0.0f ? v3_length(p->right) : (float)width / (float)height;
+	float up_len = v3_length(p->up) > 0.0f ? v3_length(p->up) : 1.0f;
+	/* POV-Ray's handedness test on the vectors as given, before look_at: with the default
+	 * direction +z and up +y, a right along -x is a right-handed (mirrored) camera. */
+	vec3 up0 = v3_length(p->up) > 0.0f ? p->up : v3(0, 1, 0);
+	if (v3_length(p->right) > 0.0f && v3_dot(v3_cross(up0, v3(0, 0, 1)), p->right) < 0.0f)
+		c->right = v3_neg(c->right);
 	c->half_w = tanf(0.5f * p->angle_deg * RENDER_PI / 180.0f);
 	c->half_h = c->half_w * up_len / right_len;
 	c->lens_radius = 0.5f * fmaxf(p->aperture, 0.0f);

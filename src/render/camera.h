@@ -19,8 +19,10 @@ typedef struct cam_params {
 	vec3 look_at;      /* default <0,0,1> */
 	vec3 sky;          /* default <0,1,0>: the up direction look_at keeps */
 	float angle_deg;   /* horizontal field of view in degrees, default 90 */
-	float right_len;   /* |right|: 0 means image width / height (the image's aspect) */
-	float up_len;      /* |up|: 0 means 1 */
+	vec3 right;        /* POV-Ray's right: its length sets the aspect (the zero vector: image
+			      width / height); its sense sets handedness (right = -x mirrors the
+			      image, POV-Ray's right-handed trick); look_at re-aims it */
+	vec3 up;           /* POV-Ray's up: only its length counts (the zero vector: 1) */
 	float aperture;    /* lens diameter in scene units; 0 is a pinhole */
 	vec3 focal_point;  /* the plane through it, facing the camera, is in focus */
 } cam_params;

@@ -46,6 +46,15 @@ int main(void)
 	CHECK(top.d.y > 0, "top row looks up: (%g %g %g)", top.d.x, top.d.y, top.d.z);
 	CHECK_NEAR(angle_deg(cam_ray(&c, 0, 50, v2(0, 0.5f), v2(0, 0)).d, v3(0, 0, 1)), 45, 1e-2);
 
+	/* right = -x mirrors (POV-Ray's right-handed camera); |right| and |up| set the aspect. */
+	p.right = v3(-2, 0, 0);
+	p.up = v3(0, 1, 0);
+	CHECK(cam_init(&c, &p, 100, 100), "mirrored camera");
+	left = cam_ray(&c, 0, 50, v2(0.5f, 0.5f), v2(0, 0));
+	CHECK(left.d.x > 0, "mirrored: left column looks to +x: (%g %g %g)", left.d.x, left.d.y, left.d.z);
+	render_ray top2 = cam_ray(&c, 50, 0, v2(0.5f, 0), v2(0, 0));
+	CHECK_NEAR(angle_deg(top2.d, v3(0, 0, 1)), atan(0.5) * 180 / M_PI, 1e-2);
+
 	/* Degenerate input is refused. */
 	p.look_at = p.location;
 	CHECK(!cam_init(&c, &p, 10, 10), "look_at == location accepted");
