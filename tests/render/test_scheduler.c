@@ -1,7 +1,8 @@
 /* test_scheduler: the film and the threaded pass scheduler — bit-identical images for 1 and 2
- * threads and any tile size, four regions equal to the whole, a time budget and a SIGINT whose handler sets the interrupt flag, which
- * stop with every pixel at the same completed count (and equal to a render of that count),
- * checkpoints on schedule, dropped non-finite samples counted and kept off the film. */
+ * threads and any tile size, four regions equal to the whole; a time budget, and a SIGINT whose
+ * handler only sets the interrupt flag, stop with every pixel at the same completed count (the
+ * image equal to a render of that count); checkpoints on schedule; dropped non-finite samples
+ * counted and kept off the film. */
 #include "check.h"
 #include "base/mem.h"
 #include "render/scheduler.h"
