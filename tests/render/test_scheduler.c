@@ -153,6 +153,29 @@ int main(void)
 	for (int i = 0; i < 3 * W * H; i++)
 		neg += !(buf[i] >= 0.0f);
 	CHECK(neg == 0, "%d negative or NaN variances", neg);
+	/* One pixel recomputed by hand from its streams: the mean and the variance of the mean. */
+	{
+		const int px = 20, py = 15;
+		double sum[3] = {0}, sum2[3] = {0};
+		for (uint32_t k = 0; k < whole.spp; k++) {
+			rng g = rng_for_sample(1234, px, py, k);
+			vec2 pu = v2(rng_float(&g), rng_float(&g)), lu = v2(rng_float(&g), rng_float(&g));
+			render_settings set = {5, RENDER_MIS};
+			render_sample smp = render_path(&scene.rs, &set, cam_ray(&camera, px, py, pu, lu), &g);
+			const float c[3] = {smp.radiance.x, smp.radiance.y, smp.radiance.z};
+			for (int k2 = 0; k2 < 3; k2++)
+				sum[k2] += c[k2], sum2[k2] += (double)c[k2] * c[k2];
+		}
+		float *beauty = mem_alloc(W * H, 3 * sizeof(float));
+		film_read(&whole, FILM_BEAUTY, beauty);
+		for (int k2 = 0; k2 < 3; k2++) {
+			double n = whole.spp, m = sum[k2] / n, v = (sum2[k2] - n * m * m) / (n - 1) / n;
+			CHECK_NEAR(beauty[3 * (py * W + px) + k2], m, 1e-6 * (1 + m));
+			CHECK_NEAR(buf[3 * (py * W + px) + k2], v, 1e-5 * (1 + v));
+			CHECK(v > 0, "pixel %d,%d has no variance to compare", px, py);
+		}
+		mem_free(beauty);
+	}
 	film_read(&whole, FILM_DEPTH, buf);
 	CHECK(buf[(H - 1) * W + W / 2] > 0.5f, "depth at the bottom (the floor) %g", buf[(H - 1) * W + W / 2]);
 	film_free(&whole);
