@@ -28,7 +28,8 @@ bsdf_params bsdf_pov_finish(vec3 pigment, float kd, float ks, float roughness)
 
 bsdf_params bsdf_coat(vec3 albedo, float ior, float roughness)
 {
-	return (bsdf_params){.kind = BSDF_COAT, .diffuse = albedo, .alpha = clamp_alpha(roughness), .ior = ior};
+	return (bsdf_params){
+	    .kind = BSDF_COAT, .diffuse = albedo, .alpha = clamp_alpha(roughness), .ior = ior};
 }
 
 float bsdf_fresnel_dielectric(float cos_i, float eta)

@@ -22,10 +22,10 @@ typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT } bsdf_kind;
 /* A material's reflection parameters at one shading point (textures already applied). */
 typedef struct bsdf_params {
 	bsdf_kind kind;
-	vec3 diffuse;   /* reflectance of the diffuse part: Kd * pigment, or the coat's interior albedo */
-	vec3 specular;  /* BSDF_PLASTIC: Ks (as a colour) */
-	float alpha;    /* GGX roughness alpha, clamped to [BSDF_MIN_ALPHA, 1] */
-	float ior;      /* BSDF_COAT: index of refraction of the coat (outside is 1) */
+	vec3 diffuse;  /* reflectance of the diffuse part: Kd * pigment, or the coat's interior albedo */
+	vec3 specular; /* BSDF_PLASTIC: Ks (as a colour) */
+	float alpha;   /* GGX roughness alpha, clamped to [BSDF_MIN_ALPHA, 1] */
+	float ior;     /* BSDF_COAT: index of refraction of the coat (outside is 1) */
 } bsdf_params;
 
 /* Below this GGX's peak is too sharp for float; such surfaces are treated as this rough. */

@@ -11,14 +11,14 @@
 cam_params cam_params_default(void)
 {
 	return (cam_params){
-		.location = v3(0, 0, 0),
-		.look_at = v3(0, 0, 1),
-		.sky = v3(0, 1, 0),
-		.angle_deg = 90.0f,
-		.right = v3(0, 0, 0),
-		.up = v3(0, 0, 0),
-		.aperture = 0.0f,
-		.focal_point = v3(0, 0, 1),
+	    .location = v3(0, 0, 0),
+	    .look_at = v3(0, 0, 1),
+	    .sky = v3(0, 1, 0),
+	    .angle_deg = 90.0f,
+	    .right = v3(0, 0, 0),
+	    .up = v3(0, 0, 0),
+	    .aperture = 0.0f,
+	    .focal_point = v3(0, 0, 1),
 	};
 }
 
@@ -64,8 +64,8 @@ render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u)
 		/* Thin lens: every ray through the lens point meets the pinhole ray on the focal plane. */
 		vec3 focus = v3_madd(c->origin, d, c->focal_distance); /* d has unit forward component */
 		vec2 l = render_concentric_disk(lens_u);
-		vec3 o = v3_madd(v3_madd(c->origin, c->right, l.x * c->lens_radius), c->up,
-				 l.y * c->lens_radius);
+		vec3 o =
+		    v3_madd(v3_madd(c->origin, c->right, l.x * c->lens_radius), c->up, l.y * c->lens_radius);
 		ray.o = o;
 		ray.d = v3_normalize(v3_sub(focus, o));
 	}

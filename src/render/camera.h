@@ -15,23 +15,23 @@ typedef struct render_ray {
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. */
 typedef struct cam_params {
-	vec3 location;     /* default <0,0,0> */
-	vec3 look_at;      /* default <0,0,1> */
-	vec3 sky;          /* default <0,1,0>: the up direction look_at keeps */
-	float angle_deg;   /* horizontal field of view in degrees, default 90 */
-	vec3 right;        /* POV-Ray's right: its length sets the aspect (the zero vector: image
-			      width / height); its sense sets handedness (right = -x mirrors the
-			      image, POV-Ray's right-handed trick); look_at re-aims it */
-	vec3 up;           /* POV-Ray's up: only its length counts (the zero vector: 1) */
-	float aperture;    /* lens diameter in scene units; 0 is a pinhole */
-	vec3 focal_point;  /* the plane through it, facing the camera, is in focus */
+	vec3 location;	  /* default <0,0,0> */
+	vec3 look_at;	  /* default <0,0,1> */
+	vec3 sky;	  /* default <0,1,0>: the up direction look_at keeps */
+	float angle_deg;  /* horizontal field of view in degrees, default 90 */
+	vec3 right;	  /* POV-Ray's right: its length sets the aspect (the zero vector: image
+			     width / height); its sense sets handedness (right = -x mirrors the
+			     image, POV-Ray's right-handed trick); look_at re-aims it */
+	vec3 up;	  /* POV-Ray's up: only its length counts (the zero vector: 1) */
+	float aperture;	  /* lens diameter in scene units; 0 is a pinhole */
+	vec3 focal_point; /* the plane through it, facing the camera, is in focus */
 } cam_params;
 
 /* The ready camera: an orthonormal frame and the screen vectors at unit forward distance. */
 typedef struct cam {
 	vec3 origin;
 	vec3 forward, right, up; /* unit vectors */
-	float half_w, half_h;    /* screen half extents at distance 1 along forward */
+	float half_w, half_h;	 /* screen half extents at distance 1 along forward */
 	float lens_radius, focal_distance;
 	int width, height;
 } cam;

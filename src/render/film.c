@@ -12,7 +12,8 @@ bool film_init(film *f, int width, int height, int x0, int y0, int x1, int y1)
 		x1 = width;
 		y1 = height;
 	}
-	if (width <= 0 || height <= 0 || x0 < 0 || y0 < 0 || x1 > width || y1 > height || x0 >= x1 || y0 >= y1)
+	if (width <= 0 || height <= 0 || x0 < 0 || y0 < 0 || x1 > width || y1 > height || x0 >= x1 ||
+	    y0 >= y1)
 		return false;
 	size_t n = (size_t)(x1 - x0) * (size_t)(y1 - y0);
 	f->acc = mem_calloc(n, sizeof *f->acc);
@@ -37,7 +38,10 @@ void film_free(film *f)
 	memset(f, 0, sizeof *f);
 }
 
-int film_channel_components(film_channel ch) { return ch == FILM_DEPTH ? 1 : 3; }
+int film_channel_components(film_channel ch)
+{
+	return ch == FILM_DEPTH ? 1 : 3;
+}
 
 bool film_pixel_add(film_pixel *p, const render_sample *s)
 {

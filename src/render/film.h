@@ -21,28 +21,34 @@ typedef struct film_pixel {
 } film_pixel;
 
 typedef struct film {
-	int width, height;      /* the whole image */
-	int x0, y0, x1, y1;     /* the region rendered, half-open */
+	int width, height;	/* the whole image */
+	int x0, y0, x1, y1;	/* the region rendered, half-open */
 	film_pixel *acc, *work; /* (x1 - x0) * (y1 - y0) pixels, row-major from (x0, y0) */
-	uint32_t spp;           /* samples in every pixel of acc */
-	uint64_t dropped;       /* non-finite or negative samples dropped (counted as zero) */
+	uint32_t spp;		/* samples in every pixel of acc */
+	uint64_t dropped;	/* non-finite or negative samples dropped (counted as zero) */
 } film;
 
 /* The channels film_read produces. */
 typedef enum film_channel {
-	FILM_BEAUTY,   /* RGB mean radiance */
-	FILM_ALBEDO,   /* RGB mean first-hit albedo */
-	FILM_NORMAL,   /* XYZ mean first-hit normal (world space, not renormalised) */
-	FILM_DEPTH,    /* 1 value: mean first-hit distance, 0 where nothing was hit */
-	FILM_VARIANCE  /* RGB variance of the mean: sample variance / spp (0 below 2 samples) */
+	FILM_BEAUTY,  /* RGB mean radiance */
+	FILM_ALBEDO,  /* RGB mean first-hit albedo */
+	FILM_NORMAL,  /* XYZ mean first-hit normal (world space, not renormalised) */
+	FILM_DEPTH,   /* 1 value: mean first-hit distance, 0 where nothing was hit */
+	FILM_VARIANCE /* RGB variance of the mean: sample variance / spp (0 below 2 samples) */
 } film_channel;
 
 /* Whole image when x0 = y0 = x1 = y1 = 0. False for a region outside the image, an empty one,
  * or when memory runs out. */
 bool film_init(film *f, int width, int height, int x0, int y0, int x1, int y1);
 void film_free(film *f);
-static inline int film_region_width(const film *f) { return f->x1 - f->x0; }
-static inline int film_region_height(const film *f) { return f->y1 - f->y0; }
+static inline int film_region_width(const film *f)
+{
+	return f->x1 - f->x0;
+}
+static inline int film_region_height(const film *f)
+{
+	return f->y1 - f->y0;
+}
 /* 3 for RGB/XYZ channels, 1 for depth. */
 int film_channel_components(film_channel ch);
 /* Fills out (region width * height * components floats, row-major from (x0, y0)) from acc. */

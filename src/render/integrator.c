@@ -13,7 +13,10 @@ typedef struct frame {
 	vec3 t, b, n;
 } frame;
 
-static vec3 to_local(const frame *f, vec3 v) { return v3(v3_dot(v, f->t), v3_dot(v, f->b), v3_dot(v, f->n)); }
+static vec3 to_local(const frame *f, vec3 v)
+{
+	return v3(v3_dot(v, f->t), v3_dot(v, f->b), v3_dot(v, f->n));
+}
 static vec3 to_world(const frame *f, vec3 v)
 {
 	return v3_add(v3_add(v3_scale(f->t, v.x), v3_scale(f->b, v.y)), v3_scale(f->n, v.z));
@@ -35,7 +38,8 @@ static bool trace(const render_scene *s, const render_ray *ray, render_hit *hit,
 	for (size_t i = 0; ls && i < ls->count; i++) {
 		const light *l = &ls->lights[i];
 		float t;
-		if (l->kind == LIGHT_SPHERE && light_sphere_hit(l, ray, 0.0f, found ? hit->t : INFINITY, &t)) {
+		if (l->kind == LIGHT_SPHERE &&
+		    light_sphere_hit(l, ray, 0.0f, found ? hit->t : INFINITY, &t)) {
 			found = true;
 			*sphere_light = (int)i;
 			hit->t = t;
@@ -84,8 +88,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY)
-			  ? 1.0f
-			  : render_power_heuristic(light_pdf, bsdf_pdf(b, wo_local, wi_local));
+		      ? 1.0f
+		      : render_power_heuristic(light_pdf, bsdf_pdf(b, wo_local, wi_local));
 	return v3_scale(v3_mul(fval, ls_out.li), w * fabsf(wi_local.z) / light_pdf);
 }
 
@@ -103,15 +107,18 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (!trace(s, &ray, &hit, &sphere_light)) {
 			for (size_t k = 0; ls && k < ls->infinite_count; k++) {
 				const light *l = &ls->lights[ls->infinite[k]];
-				float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, prev_p, ray.d, INFINITY, v3s(0));
+				float lp = light_set_prob(ls, ls->infinite[k]) *
+					   light_pdf(l, prev_p, ray.d, INFINITY, v3s(0));
 				float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
-				radiance = v3_add(radiance, v3_scale(v3_mul(beta, light_radiance_dir(l, ray.d)), w));
+				radiance =
+				    v3_add(radiance, v3_scale(v3_mul(beta, light_radiance_dir(l, ray.d)), w));
 			}
 			break;
 		}
 		if (hit.light >= 0 && ls && (size_t)hit.light < ls->count) {
 			const light *l = &ls->lights[hit.light];
-			float lp = light_set_prob(ls, (size_t)hit.light) * light_pdf(l, prev_p, ray.d, hit.t, hit.ng);
+			float lp = light_set_prob(ls, (size_t)hit.light) *
+				   light_pdf(l, prev_p, ray.d, hit.t, hit.ng);
 			float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
 			radiance = v3_add(radiance, v3_scale(v3_mul(beta, l->color), w));
 		}
@@ -137,7 +144,9 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		vec3 wo_local = to_local(&f, wo);
 
 		if (set->mode != RENDER_BSDF_ONLY)
-			radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, hit.p, wo_local, g)));
+			radiance =
+			    v3_add(radiance,
+				   v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, hit.p, wo_local, g)));
 
 		float u_lobe = rng_float(g);
 		vec2 u = v2(rng_float(g), rng_float(g));

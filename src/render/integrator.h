@@ -25,14 +25,14 @@
 
 /* What intersect reports about the nearest surface. */
 typedef struct render_hit {
-	float t;       /* distance along the (unit) ray direction */
-	vec3 p;        /* world position */
-	vec3 ng;       /* unit geometric normal, either orientation */
-	vec3 ns;       /* unit shading normal (interpolated/normal-mapped), same hemisphere as ng */
-	vec2 uv;       /* texture coordinates */
-	int material;  /* index into render_scene.materials; -1: a black, non-reflecting surface */
-	int light;     /* index into render_scene.lights->lights of the emissive mesh (LIGHT_MESH)
-			  this surface belongs to, or -1 */
+	float t;	       /* distance along the (unit) ray direction */
+	vec3 p;		       /* world position */
+	vec3 ng;	       /* unit geometric normal, either orientation */
+	vec3 ns;	       /* unit shading normal (interpolated/normal-mapped), same hemisphere as ng */
+	vec2 uv;	       /* texture coordinates */
+	int material;	       /* index into render_scene.materials; -1: a black, non-reflecting surface */
+	int light;	       /* index into render_scene.lights->lights of the emissive mesh (LIGHT_MESH)
+				  this surface belongs to, or -1 */
 	uint32_t object, prim; /* the scene's own ids, passed back to shade() for texture lookups */
 } render_hit;
 
@@ -52,7 +52,7 @@ typedef struct render_scene {
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;
 
-#define RENDER_RR_DEPTH 3
+#define RENDER_RR_DEPTH		       3
 #define RENDER_DEFAULT_MAX_TRACE_LEVEL 5 /* POV-Ray's default */
 
 typedef struct render_settings {

@@ -9,7 +9,10 @@
 /* Below this |cos| at the light, a mesh sample is grazing: its solid-angle pdf would overflow. */
 #define LIGHT_GRAZING_COS 1e-6f
 
-static float deg_to_rad(float d) { return d * RENDER_PI / 180.0f; }
+static float deg_to_rad(float d)
+{
+	return d * RENDER_PI / 180.0f;
+}
 
 light light_point(vec3 pos, vec3 intensity)
 {
@@ -30,7 +33,8 @@ light light_spot(vec3 pos, vec3 point_at, vec3 intensity, float radius_deg, floa
 
 light light_parallel(vec3 from, vec3 point_at, vec3 irradiance)
 {
-	return (light){.kind = LIGHT_PARALLEL, .color = irradiance, .dir = v3_normalize(v3_sub(point_at, from))};
+	return (light){
+	    .kind = LIGHT_PARALLEL, .color = irradiance, .dir = v3_normalize(v3_sub(point_at, from))};
 }
 
 light light_sphere(vec3 center, float radius, vec3 color)
@@ -106,7 +110,8 @@ static vec3 env_texel(const light *l, size_t i)
 
 bool light_envmap_init(light *l, const float *rgb, int width, int height, float scale, const xform *rot)
 {
-	*l = (light){.kind = LIGHT_ENVMAP, .color = v3s(scale), .image = rgb, .width = width, .height = height};
+	*l = (light){
+	    .kind = LIGHT_ENVMAP, .color = v3s(scale), .image = rgb, .width = width, .height = height};
 	for (int i = 0; i < 3; i++)
 		for (int j = 0; j < 3; j++)
 			l->rot[i][j] = rot ? (float)rot->m[i][j] : (i == j ? 1.0f : 0.0f);
@@ -139,13 +144,15 @@ void light_free(light *l)
 
 static vec3 rot_apply(const float r[3][3], vec3 v)
 {
-	return v3(r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z, r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
+	return v3(r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z,
+		  r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
 		  r[2][0] * v.x + r[2][1] * v.y + r[2][2] * v.z);
 }
 
 static vec3 rot_apply_inverse(const float r[3][3], vec3 v)
 {
-	return v3(r[0][0] * v.x + r[1][0] * v.y + r[2][0] * v.z, r[0][1] * v.x + r[1][1] * v.y + r[2][1] * v.z,
+	return v3(r[0][0] * v.x + r[1][0] * v.y + r[2][0] * v.z,
+		  r[0][1] * v.x + r[1][1] * v.y + r[2][1] * v.z,
 		  r[0][2] * v.x + r[1][2] * v.y + r[2][2] * v.z);
 }
 
@@ -224,10 +231,12 @@ bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
 	case LIGHT_MESH: {
 		size_t tri;
 		float x = render_distrib1d_sample(&l->tri_select, u.x, NULL, &tri);
-		float ux = fminf(x * (float)l->tri_count - (float)tri, nextafterf(1.0f, 0.0f)); /* reuse u.x */
+		float ux =
+		    fminf(x * (float)l->tri_count - (float)tri, nextafterf(1.0f, 0.0f)); /* reuse u.x */
 		vec2 b = render_uniform_triangle(v2(fmaxf(ux, 0.0f), u.y));
 		const vec3 *v = l->tri + 3 * tri;
-		vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)), v3_scale(v[2], 1.0f - b.x - b.y));
+		vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)),
+				v3_scale(v[2], 1.0f - b.x - b.y));
 		vec3 n = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
 		vec3 to = v3_sub(y, p);
 		float d2 = v3_length2(to);
@@ -269,7 +278,8 @@ float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n)
 		vec3 axis;
 		float d, sin2_max, t;
 		render_ray ray = {p, wi};
-		if (!sphere_cone(l, p, &axis, &d, &sin2_max) || !light_sphere_hit(l, &ray, 0.0f, INFINITY, &t))
+		if (!sphere_cone(l, p, &axis, &d, &sin2_max) ||
+		    !light_sphere_hit(l, &ray, 0.0f, INFINITY, &t))
 			return 0.0f;
 		return render_uniform_cone_pdf(sin2_max);
 	}
@@ -298,7 +308,8 @@ vec3 light_radiance_dir(const light *l, vec3 d)
 	if (l->kind == LIGHT_BACKGROUND)
 		return l->color;
 	if (l->kind == LIGHT_ENVMAP)
-		return v3_mul(l->color, env_texel(l, env_pixel(l, light_env_uv(rot_apply_inverse(l->rot, d)))));
+		return v3_mul(l->color,
+			      env_texel(l, env_pixel(l, light_env_uv(rot_apply_inverse(l->rot, d)))));
 	return v3s(0.0f);
 }
 
@@ -354,7 +365,10 @@ float light_power(const light *l, float scene_radius)
 	return 0.0f;
 }
 
-void light_set_init(light_set *s) { memset(s, 0, sizeof *s); }
+void light_set_init(light_set *s)
+{
+	memset(s, 0, sizeof *s);
+}
 
 light *light_set_add(light_set *s, const light *l)
 {

@@ -48,10 +48,10 @@ typedef enum light_kind {
 
 typedef struct light {
 	light_kind kind;
-	vec3 color;      /* intensity (point, spot), irradiance (parallel), radiance (the others) */
-	vec3 pos;        /* point, spot, sphere centre */
-	vec3 dir;        /* spot axis, or the direction parallel light travels (unit) */
-	float radius;    /* sphere */
+	vec3 color;		 /* intensity (point, spot), irradiance (parallel), radiance (the others) */
+	vec3 pos;		 /* point, spot, sphere centre */
+	vec3 dir;		 /* spot axis, or the direction parallel light travels (unit) */
+	float radius;		 /* sphere */
 	float cos_hot, cos_fall; /* spot: cosines of radius and falloff */
 	/* LIGHT_MESH: world-space triangles, three vertices each (owned). */
 	vec3 *tri;

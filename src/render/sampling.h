@@ -10,7 +10,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#define RENDER_PI 3.14159265358979323846f
+#define RENDER_PI     3.14159265358979323846f
 #define RENDER_INV_PI 0.31830988618379067154f
 
 /* Shirley & Chiu 1997 concentric map to the unit disk; pdf 1/pi per unit area. */

@@ -58,7 +58,8 @@ static bool render_tile(pool *p, int tile)
 	film *f = p->film;
 	int tx = tile % p->tiles_x, ty = tile / p->tiles_x;
 	int xa = f->x0 + tx * p->tile, ya = f->y0 + ty * p->tile;
-	int xb = xa + p->tile < f->x1 ? xa + p->tile : f->x1, yb = ya + p->tile < f->y1 ? ya + p->tile : f->y1;
+	int xb = xa + p->tile < f->x1 ? xa + p->tile : f->x1,
+	    yb = ya + p->tile < f->y1 ? ya + p->tile : f->y1;
 	int rw = film_region_width(f);
 	uint64_t dropped = 0;
 	for (int y = ya; y < yb; y++) {
@@ -130,14 +131,15 @@ static void show_progress(double fraction, double rate, double elapsed)
 		format_time(left, sizeof left, elapsed * (1.0 - fraction) / fraction);
 	else
 		snprintf(left, sizeof left, "?");
-	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * fraction, rate,
-		el, left);
+	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * fraction,
+		rate, el, left);
 	fflush(stderr);
 }
 
 /* Samples per pixel of the next pass: double the last, capped by the target, by RENDER_PASS_MAX_S
  * and by the time budget left at the measured rate (pixel samples per second). */
-static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t last, double rate_px, double left_s)
+static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t last, double rate_px,
+			       double left_s)
 {
 	uint64_t want = last ? 2u * (uint64_t)last : 1u;
 	if (rate_px > 0.0) {
@@ -157,7 +159,8 @@ static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t la
 render_status render_run(const render_job *job, film *f, render_stats *stats)
 {
 	if (!job->scene || !job->camera || (job->spp == 0 && !(job->time_budget_s > 0.0)) ||
-	    job->camera->width != f->width || job->camera->height != f->height || job->settings.max_trace_level < 1)
+	    job->camera->width != f->width || job->camera->height != f->height ||
+	    job->settings.max_trace_level < 1)
 		return RENDER_ERROR;
 	double t0 = now_s();
 	int threads = job->threads > 0 ? job->threads : render_default_threads();
@@ -183,8 +186,8 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	int passes = 0;
 	while (status == RENDER_DONE) {
 		double elapsed = now_s() - t0;
-		if ((job->spp && f->spp >= job->spp) || (job->time_budget_s > 0.0 && elapsed >= job->time_budget_s) ||
-		    f->spp >= RENDER_MAX_SPP)
+		if ((job->spp && f->spp >= job->spp) ||
+		    (job->time_budget_s > 0.0 && elapsed >= job->time_budget_s) || f->spp >= RENDER_MAX_SPP)
 			break;
 		if (interrupted(job)) {
 			status = RENDER_INTERRUPTED;
@@ -230,7 +233,8 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 		double pass_s = now_s() - pass_start;
 		if (pass_s > 0.0)
 			rate_px = (double)n / pass_s;
-		if (job->checkpoint && job->checkpoint_interval_s > 0.0 && now_s() - last_checkpoint >= job->checkpoint_interval_s) {
+		if (job->checkpoint && job->checkpoint_interval_s > 0.0 &&
+		    now_s() - last_checkpoint >= job->checkpoint_interval_s) {
 			job->checkpoint(job->checkpoint_user, f);
 			last_checkpoint = now_s();
 		}
@@ -248,8 +252,8 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 
 	double seconds = now_s() - t0;
 	if (show) {
-		show_progress(job->spp ? (double)f->spp / job->spp : 1.0, seconds > 0 ? f->spp * npix / seconds : 0.0,
-			      seconds);
+		show_progress(job->spp ? (double)f->spp / job->spp : 1.0,
+			      seconds > 0 ? f->spp * npix / seconds : 0.0, seconds);
 		fputc('\n', stderr);
 	}
 	if (stats) {

@@ -31,7 +31,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#define RENDER_PASS_MAX_S 2.0
+#define RENDER_PASS_MAX_S   2.0
 #define RENDER_DEFAULT_TILE 16
 
 typedef struct render_job {
@@ -39,25 +39,25 @@ typedef struct render_job {
 	const cam *camera;
 	render_settings settings;
 	uint64_t seed;
-	uint32_t spp;            /* target samples per pixel; 0: none (then a time budget is needed) */
-	double time_budget_s;    /* 0: none */
-	int threads;             /* 0: all online cores */
-	int tile_size;           /* 0: RENDER_DEFAULT_TILE */
-	bool quiet;              /* no progress line even on a terminal */
-	double checkpoint_interval_s;                            /* 0: no checkpoints */
-	void (*checkpoint)(void *user, const film *f);           /* may be NULL */
+	uint32_t spp;		      /* target samples per pixel; 0: none (then a time budget is needed) */
+	double time_budget_s;	      /* 0: none */
+	int threads;		      /* 0: all online cores */
+	int tile_size;		      /* 0: RENDER_DEFAULT_TILE */
+	bool quiet;		      /* no progress line even on a terminal */
+	double checkpoint_interval_s; /* 0: no checkpoints */
+	void (*checkpoint)(void *user, const film *f); /* may be NULL */
 	void *checkpoint_user;
-	_Atomic int *interrupt;  /* may be NULL */
+	_Atomic int *interrupt; /* may be NULL */
 } render_job;
 
 typedef enum render_status { RENDER_DONE, RENDER_INTERRUPTED, RENDER_ERROR } render_status;
 
 typedef struct render_stats {
-	uint32_t spp;         /* samples per pixel completed (= film->spp) */
+	uint32_t spp;	      /* samples per pixel completed (= film->spp) */
 	uint64_t dropped;     /* non-finite samples dropped (= film->dropped); should be 0 */
-	double seconds;       /* wall time of render_run */
+	double seconds;	      /* wall time of render_run */
 	double samples_per_s; /* pixel samples committed per second */
-	int passes;           /* committed passes */
+	int passes;	      /* committed passes */
 	int threads;
 } render_stats;
 

@@ -113,7 +113,8 @@ static inline double chi2_counts(const char *name, const double *obs, const doub
 	}
 	mem_free(pair);
 	double p = bins > 1 ? chi2_gammq(0.5 * (bins - 1), 0.5 * stat) : 1.0;
-	CHECK(p > chi2_alpha(), "%s: chi2 = %g over %d bins, p = %g below alpha %g", name, stat, bins, p, chi2_alpha());
+	CHECK(p > chi2_alpha(), "%s: chi2 = %g over %d bins, p = %g below alpha %g", name, stat, bins, p,
+	      chi2_alpha());
 	printf("  %-40s chi2 %10.2f  dof %4d  p %.4f\n", name, stat, bins - 1, p);
 	return p;
 }
@@ -128,8 +129,9 @@ static inline vec3 chi2_dir(vec3 axis, double z, double phi)
 	vec3 b1, b2;
 	v3_basis(axis, &b1, &b2);
 	double r = sqrt(fmax(0.0, 1.0 - z * z));
-	return v3_normalize(v3_add(v3_add(v3_scale(b1, (float)(r * cos(phi))), v3_scale(b2, (float)(r * sin(phi)))),
-				   v3_scale(axis, (float)z)));
+	return v3_normalize(
+	    v3_add(v3_add(v3_scale(b1, (float)(r * cos(phi))), v3_scale(b2, (float)(r * sin(phi)))),
+		   v3_scale(axis, (float)z)));
 }
 
 /* Chi-square test on the sphere: nz bins of z = cos(angle to axis) over [zmin, 1] times nphi bins
@@ -196,8 +198,9 @@ static inline void chi2_sphere(const char *name, chi2_sample_fn sample, chi2_pdf
 		ex[i] *= total > 0.0 ? (double)ok / ((double)n * total) : 0.0;
 	double frac = (double)ok / (double)n;
 	double tol = 2e-3 + 5.0 * sqrt(fmax(frac * (1.0 - frac), 1e-6) / (double)n);
-	CHECK(fabs(total - frac) <= tol, "%s: pdf integrates to %.5f but %.5f of the samples succeeded (tol %g)",
-	      name, total, frac, tol);
+	CHECK(fabs(total - frac) <= tol,
+	      "%s: pdf integrates to %.5f but %.5f of the samples succeeded (tol %g)", name, total, frac,
+	      tol);
 	chi2_counts(name, obs, ex, nb - 1);
 	mem_free(obs);
 	mem_free(ex);

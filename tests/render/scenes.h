@@ -126,8 +126,12 @@ static inline void ts_init(ts_scene *s)
 {
 	memset(s, 0, sizeof *s);
 	light_set_init(&s->lights);
-	s->rs = (render_scene){.user = s, .intersect = ts_intersect, .occluded = ts_occluded,
-			       .materials = s->mat, .material_count = TS_MAX, .lights = &s->lights};
+	s->rs = (render_scene){.user = s,
+			       .intersect = ts_intersect,
+			       .occluded = ts_occluded,
+			       .materials = s->mat,
+			       .material_count = TS_MAX,
+			       .lights = &s->lights};
 }
 
 /* Adds the 12 triangles of the axis-aligned box [lo, hi], normals outwards. */
@@ -136,7 +140,8 @@ static inline void ts_add_box(ts_scene *s, vec3 lo, vec3 hi, int material, int l
 	vec3 c[8];
 	for (int i = 0; i < 8; i++)
 		c[i] = v3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-	static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+	static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+				    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
 	for (int f = 0; f < 6; f++) {
 		ts_tri a = {{c[q[f][0]], c[q[f][1]], c[q[f][2]]}, material, light};
 		ts_tri b = {{c[q[f][0]], c[q[f][2]], c[q[f][3]]}, material, light};

@@ -22,8 +22,8 @@ static bool s_bsdf(void *ctx, rng *g, vec3 *d)
 	/* The sample's own pdf and value agree with pdf() and eval(). */
 	float p2 = bsdf_pdf(&c->b, c->wo, *d);
 	vec3 f2 = bsdf_eval(&c->b, c->wo, *d);
-	CHECK(fabsf(pdf - p2) <= 1e-4f * p2 && fabsf(f.x - f2.x) <= 1e-5f * f2.x, "sample pdf %g vs %g, f %g vs %g",
-	      pdf, p2, f.x, f2.x);
+	CHECK(fabsf(pdf - p2) <= 1e-4f * p2 && fabsf(f.x - f2.x) <= 1e-5f * f2.x,
+	      "sample pdf %g vs %g, f %g vs %g", pdf, p2, f.x, f2.x);
 	return true;
 }
 

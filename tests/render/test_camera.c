@@ -20,8 +20,8 @@ int main(void)
 	CHECK(cam_init(&c, &p, 641, 481), "cam_init");
 	render_ray r = cam_ray(&c, 320, 240, v2(0.5f, 0.5f), v2(0, 0));
 	vec3 want = v3_normalize(v3_sub(p.look_at, p.location));
-	CHECK(angle_deg(r.d, want) < 1e-3, "centre ray (%g %g %g) vs look_at direction (%g %g %g)", r.d.x, r.d.y,
-	      r.d.z, want.x, want.y, want.z);
+	CHECK(angle_deg(r.d, want) < 1e-3, "centre ray (%g %g %g) vs look_at direction (%g %g %g)", r.d.x,
+	      r.d.y, r.d.z, want.x, want.y, want.z);
 
 	/* Horizontal FOV: the left and right image edges through the middle row span `angle`. */
 	for (float a = 30; a <= 150; a += 40) {
@@ -42,7 +42,8 @@ int main(void)
 	CHECK(cam_init(&c, &p, 100, 100), "default camera");
 	render_ray left = cam_ray(&c, 0, 50, v2(0.5f, 0.5f), v2(0, 0));
 	render_ray top = cam_ray(&c, 50, 0, v2(0.5f, 0.5f), v2(0, 0));
-	CHECK(left.d.x < 0 && left.d.z > 0, "left column looks to -x: (%g %g %g)", left.d.x, left.d.y, left.d.z);
+	CHECK(left.d.x < 0 && left.d.z > 0, "left column looks to -x: (%g %g %g)", left.d.x, left.d.y,
+	      left.d.z);
 	CHECK(top.d.y > 0, "top row looks up: (%g %g %g)", top.d.x, top.d.y, top.d.z);
 	CHECK_NEAR(angle_deg(cam_ray(&c, 0, 50, v2(0, 0.5f), v2(0, 0)).d, v3(0, 0, 1)), 45, 1e-2);
 
@@ -76,7 +77,8 @@ int main(void)
 	for (int i = 0; i < 1000; i++) {
 		render_ray lr = cam_ray(&c, 10, 20, v2(0.5f, 0.5f), v2(rng_float(&g), rng_float(&g)));
 		vec3 q = v3_madd(lr.o, lr.d, (4.0f - lr.o.z) / lr.d.z);
-		CHECK(v3_length(v3_sub(q, focus)) < 1e-4f, "lens ray misses focus by %g", v3_length(v3_sub(q, focus)));
+		CHECK(v3_length(v3_sub(q, focus)) < 1e-4f, "lens ray misses focus by %g",
+		      v3_length(v3_sub(q, focus)));
 		CHECK(v3_length(lr.o) <= 0.25f + 1e-6f, "lens origin %g from the centre", v3_length(lr.o));
 		max_off = fmaxf(max_off, v3_length(lr.o));
 	}

@@ -57,7 +57,8 @@ static void expect_image(const char *what, const image *im, double want, double 
 	CHECK(bad == 0, "%s: %d pixels off", what, bad);
 	double m = image_mean(im);
 	printf("  %-45s mean %.5f (want %g), worst pixel off by %.3f %%\n", what, m, want, 100 * worst);
-	CHECK(fabs(m - want) <= tol_rel * want, "%s: image mean %g, want %g (tol %g)", what, m, want, tol_rel);
+	CHECK(fabs(m - want) <= tol_rel * want, "%s: image mean %g, want %g (tol %g)", what, m, want,
+	      tol_rel);
 }
 
 /* A camera at loc looking at `at` with horizontal FOV angle, for a w x h image. */
@@ -80,7 +81,8 @@ static void test_furnace(int spp)
 	light bg = light_background(v3s(1));
 	light_set_add(&s.lights, &bg);
 	light_set_finish(&s.lights, 2.0f);
-	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6); /* the sphere (19.5 deg radius) fills the frame */
+	cam c =
+	    make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6); /* the sphere (19.5 deg radius) fills the frame */
 	static image im;
 	const render_mode modes[3] = {RENDER_BSDF_ONLY, RENDER_MIS, RENDER_LIGHT_ONLY};
 	const char *names[3] = {"furnace albedo 1, BSDF", "furnace albedo 1, MIS", "furnace albedo 1, light"};
@@ -90,7 +92,8 @@ static void test_furnace(int spp)
 		expect_image(names[m], &im, 1.0, 0.01);
 		if (modes[m] == RENDER_BSDF_ONLY) /* importance-sampled paths: 1 everywhere, no noise */
 			for (int i = 0; i < im.w * im.h; i++)
-				CHECK(fabs(im.mean[i] - 1.0) <= 0.01, "BSDF-sampled furnace pixel %d = %g", i, im.mean[i]);
+				CHECK(fabs(im.mean[i] - 1.0) <= 0.01, "BSDF-sampled furnace pixel %d = %g", i,
+				      im.mean[i]);
 	}
 	/* A convex object sees only the sky: albedo 0.5 shows exactly 0.5 (every pixel is on it). */
 	s.mat[0] = bsdf_diffuse(v3s(0.5f));
@@ -162,13 +165,15 @@ static void compare_strategies(const image *im)
 				double z = fabs(im[a].mean[i] - im[b].mean[i]) / sd;
 				worst = fmax(worst, z);
 				bad += z > 5;
-				sa += im[a].mean[i], sb += im[b].mean[i], va += im[a].var[i], vb += im[b].var[i];
+				sa += im[a].mean[i], sb += im[b].mean[i], va += im[a].var[i],
+				    vb += im[b].var[i];
 			}
 			double zm = fabs(sa - sb) / sqrt(va + vb);
-			CHECK(bad == 0 && zm < 5, "%s vs %s: %d pixels beyond 5 sigma (worst %g), means %g vs %g (z %g)",
+			CHECK(bad == 0 && zm < 5,
+			      "%s vs %s: %d pixels beyond 5 sigma (worst %g), means %g vs %g (z %g)",
 			      names[a], names[b], bad, worst, sa / np, sb / np, zm);
-			printf("  %-15s vs %-15s worst pixel z %.2f, image means %.4f %.4f (z %.2f)\n", names[a], names[b],
-			       worst, sa / np, sb / np, zm);
+			printf("  %-15s vs %-15s worst pixel z %.2f, image means %.4f %.4f (z %.2f)\n",
+			       names[a], names[b], worst, sa / np, sb / np, zm);
 		}
 }
 

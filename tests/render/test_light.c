@@ -39,15 +39,16 @@ static void test_sphere_light(long n)
 	rng_seed(&g, 1, 1);
 	for (int i = 0; i < 1000; i++) {
 		light_sample ls;
-		CHECK(light_sample_from(&l, c.p, v2(rng_float(&g), rng_float(&g)), &ls), "sphere sample failed");
+		CHECK(light_sample_from(&l, c.p, v2(rng_float(&g), rng_float(&g)), &ls),
+		      "sphere sample failed");
 		vec3 y = v3_madd(c.p, ls.wi, ls.dist);
 		CHECK_NEAR(v3_length(v3_sub(y, l.pos)), 0.8, 1e-4);
 		CHECK(v3_dot(v3_sub(y, l.pos), ls.wi) <= 1e-4f, "sample on the far side");
 		CHECK_NEAR(ls.pdf, light_pdf(&l, c.p, ls.wi, ls.dist, v3s(0)), 1e-3 * ls.pdf);
 		float t;
 		render_ray r = {c.p, ls.wi};
-		CHECK(light_sphere_hit(&l, &r, 0, INFINITY, &t) && fabsf(t - ls.dist) < 1e-3f * ls.dist, "ray misses: %g vs %g", t,
-		      ls.dist);
+		CHECK(light_sphere_hit(&l, &r, 0, INFINITY, &t) && fabsf(t - ls.dist) < 1e-3f * ls.dist,
+		      "ray misses: %g vs %g", t, ls.dist);
 	}
 	/* Far away a sphere light gives the irradiance of the point light of the same colour. */
 	light far = light_sphere(v3(0, 50, 0), 0.5f, v3(100, 100, 100));
@@ -69,7 +70,8 @@ static void test_sphere_light(long n)
 		if (!light_sample_from(&tiny, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
 			continue;
 		render_ray r = {v3s(0), ls.wi};
-		misses += !light_sphere_hit(&tiny, &r, 0, INFINITY, &t) || light_pdf(&tiny, v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
+		misses += !light_sphere_hit(&tiny, &r, 0, INFINITY, &t) ||
+			  light_pdf(&tiny, v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
 		e += ls.li.x * ls.wi.y / ls.pdf;
 	}
 	CHECK(misses == 0, "tiny sphere light: %d of 10000 samples miss it or disagree on the pdf", misses);
@@ -142,24 +144,28 @@ static void test_envmap(long n)
 			vec2 uv = v2((i + 0.5f) / NU, (j + 0.5f) / NV);
 			vec3 wd = d3_to_v3(xform_vector(&rot, v3_to_d3(light_env_dir(uv))));
 			float st = sinf(uv.y * RENDER_PI);
-			integral += light_pdf(&l, v3s(0), wd, INFINITY, v3s(0)) * st * 2 * M_PI * M_PI / ((double)NU * NV);
+			integral += light_pdf(&l, v3s(0), wd, INFINITY, v3s(0)) * st * 2 * M_PI * M_PI /
+				    ((double)NU * NV);
 		}
 	CHECK_NEAR(integral, 1.0, 1e-3);
 
 	/* The convention: the map's centre is straight ahead (+z), row 0 is up, u = 0.75 is +x. */
-	vec3 ahead = light_env_dir(v2(0.5f, 0.5f)), up = light_env_dir(v2(0.3f, 0.0f)), right = light_env_dir(v2(0.75f, 0.5f));
-	CHECK(ahead.z > 0.999f && up.y > 0.999f && right.x > 0.999f, "ahead (%g %g %g) up (%g %g %g) right (%g %g %g)",
-	      ahead.x, ahead.y, ahead.z, up.x, up.y, up.z, right.x, right.y, right.z);
+	vec3 ahead = light_env_dir(v2(0.5f, 0.5f)), up = light_env_dir(v2(0.3f, 0.0f)),
+	     right = light_env_dir(v2(0.75f, 0.5f));
+	CHECK(ahead.z > 0.999f && up.y > 0.999f && right.x > 0.999f,
+	      "ahead (%g %g %g) up (%g %g %g) right (%g %g %g)", ahead.x, ahead.y, ahead.z, up.x, up.y, up.z,
+	      right.x, right.y, right.z);
 	vec2 back = light_env_uv(light_env_dir(v2(0.3f, 0.6f)));
-	CHECK(fabsf(back.x - 0.3f) < 1e-5f && fabsf(back.y - 0.6f) < 1e-5f, "uv round trip (%g %g)", back.x, back.y);
+	CHECK(fabsf(back.x - 0.3f) < 1e-5f && fabsf(back.y - 0.6f) < 1e-5f, "uv round trip (%g %g)", back.x,
+	      back.y);
 	light_free(&l);
 }
 
 static void test_mesh(long n)
 {
 	/* Three triangles far apart, of areas 0.5, 2 and 4.5, one of them seen from behind. */
-	vec3 v[9] = {v3(0, 2, 0), v3(1, 2, 0), v3(0, 2, 1), v3(3, 0, -1), v3(3, 2, -1), v3(3, 0, 1),
-		     v3(-2, -1, 4), v3(1, -1, 4), v3(-2, 2, 4)};
+	vec3 v[9] = {v3(0, 2, 0), v3(1, 2, 0),	 v3(0, 2, 1),  v3(3, 0, -1), v3(3, 2, -1),
+		     v3(3, 0, 1), v3(-2, -1, 4), v3(1, -1, 4), v3(-2, 2, 4)};
 	light l;
 	CHECK(light_mesh_init(&l, v, 3, v3(1, 2, 3)), "mesh init");
 	CHECK_NEAR(l.area, 7.0, 1e-5);
@@ -195,7 +201,7 @@ static void test_mesh(long n)
 			for (int i1 = 0; i1 < NB; i1++) {
 				double lo = (double)i0 / NB, hi = (double)(i0 + 1) / NB;
 				ex[k * NB * NB + i0 * NB + i1] =
-					n * area[k] / 7.0 * ((1 - lo) * (1 - lo) - (1 - hi) * (1 - hi)) / NB;
+				    n * area[k] / 7.0 * ((1 - lo) * (1 - lo) - (1 - hi) * (1 - hi)) / NB;
 			}
 	chi2_counts("mesh light (triangle, barycentrics)", obs, ex, NBIN);
 
@@ -210,7 +216,8 @@ static void test_mesh(long n)
 			float t;
 			if (ts_tri_hit(v + 3 * k, &r, 0, (float)best, &t)) {
 				best = t;
-				vec3 nrm = v3_normalize(v3_cross(v3_sub(v[3 * k + 1], v[3 * k]), v3_sub(v[3 * k + 2], v[3 * k])));
+				vec3 nrm = v3_normalize(
+				    v3_cross(v3_sub(v[3 * k + 1], v[3 * k]), v3_sub(v[3 * k + 2], v[3 * k])));
 				pdf = light_pdf(&l, p, d, t, nrm);
 			}
 		}
@@ -236,9 +243,11 @@ static void test_delta_and_set(void)
 		float r = deg * RENDER_PI / 180;
 		vec3 q = v3(sinf(r), 1 - cosf(r), 0); /* at distance 1 from the light */
 		bool ok = light_sample_from(&sp, q, v2(0, 0), &ls);
-		float c20 = cosf(20 * RENDER_PI / 180), c40 = cosf(40 * RENDER_PI / 180), t = (cosf(r) - c40) / (c20 - c40);
+		float c20 = cosf(20 * RENDER_PI / 180), c40 = cosf(40 * RENDER_PI / 180),
+		      t = (cosf(r) - c40) / (c20 - c40);
 		double want = deg <= 20 ? 1.0 : deg >= 40 ? 0.0 : t * t * (3 - 2 * t);
-		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "spot at %g deg: %g, want %g", deg, ok ? ls.li.x : 0.0, want);
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "spot at %g deg: %g, want %g", deg,
+		      ok ? ls.li.x : 0.0, want);
 	}
 
 	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));

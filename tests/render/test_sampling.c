@@ -61,7 +61,8 @@ static void test_disk_and_triangle(long n)
 	double tobs[NB * NB] = {0}, tex[NB * NB];
 	for (long i = 0; i < n; i++) {
 		vec2 b = render_uniform_triangle(v2(rng_float(&g), rng_float(&g)));
-		CHECK(b.x >= 0 && b.y >= 0 && b.x + b.y <= 1.0f + 1e-6f, "barycentrics (%g %g) outside", b.x, b.y);
+		CHECK(b.x >= 0 && b.y >= 0 && b.x + b.y <= 1.0f + 1e-6f, "barycentrics (%g %g) outside", b.x,
+		      b.y);
 		int i0 = (int)(b.x * NB), i1 = (int)(b.y / (1.0 - b.x) * NB);
 		i0 = i0 >= NB ? NB - 1 : i0;
 		i1 = i1 >= NB ? NB - 1 : i1 < 0 ? 0 : i1;
@@ -89,7 +90,8 @@ static void test_distributions(long n)
 		size_t cell;
 		float x = render_distrib1d_sample(&d, rng_float(&g), &pdf, &cell);
 		CHECK(x >= 0.0f && x < 1.0f && (size_t)(x * 8) == cell, "x %g in cell %zu", x, cell);
-		CHECK(fabsf(pdf - f[cell] / (float)d.integral) < 1e-5f, "pdf %g vs %g", pdf, f[cell] / d.integral);
+		CHECK(fabsf(pdf - f[cell] / (float)d.integral) < 1e-5f, "pdf %g vs %g", pdf,
+		      f[cell] / d.integral);
 		obs[cell] += 1;
 	}
 	for (int i = 0; i < 8; i++) {
@@ -113,8 +115,8 @@ static void test_distributions(long n)
 		float pdf;
 		vec2 uv = render_distrib2d_sample(&d2, v2(rng_float(&g), rng_float(&g)), &pdf);
 		int c = (int)(uv.y * 4) * 6 + (int)(uv.x * 6);
-		CHECK(fabsf(pdf - render_distrib2d_pdf(&d2, uv)) < 1e-4f * pdf, "pdf %g vs %g at (%g %g)", pdf,
-		      render_distrib2d_pdf(&d2, uv), uv.x, uv.y);
+		CHECK(fabsf(pdf - render_distrib2d_pdf(&d2, uv)) < 1e-4f * pdf, "pdf %g vs %g at (%g %g)",
+		      pdf, render_distrib2d_pdf(&d2, uv), uv.x, uv.y);
 		o2[c] += 1;
 	}
 	for (int i = 0; i < 24; i++) {

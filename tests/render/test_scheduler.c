@@ -3,8 +3,8 @@
  * handler only sets the interrupt flag, stop with every pixel at the same completed count (the
  * image equal to a render of that count); checkpoints on schedule; dropped non-finite samples
  * counted and kept off the film. */
-#include "check.h"
 #include "base/mem.h"
+#include "check.h"
 #include "render/scheduler.h"
 #include "scenes.h"
 
@@ -65,7 +65,8 @@ static int differing_pixels(const film *whole, const film *f)
 	int diff = 0;
 	for (int y = f->y0; y < f->y1; y++)
 		for (int x = f->x0; x < f->x1; x++) {
-			const film_pixel *a = &whole->acc[(y - whole->y0) * film_region_width(whole) + (x - whole->x0)];
+			const film_pixel *a =
+			    &whole->acc[(y - whole->y0) * film_region_width(whole) + (x - whole->x0)];
 			const film_pixel *b = &f->acc[(y - f->y0) * film_region_width(f) + (x - f->x0)];
 			diff += memcmp(a, b, sizeof *a) != 0;
 		}
@@ -123,7 +124,8 @@ int main(void)
 
 	/* Threads and tiles do not change a bit. */
 	CHECK(render(job_for(6, 1, 16), &whole, 0, 0, 0, 0) == RENDER_DONE, "whole render");
-	CHECK(whole.spp == 6 && whole.dropped == 0, "spp %u dropped %llu", whole.spp, (unsigned long long)whole.dropped);
+	CHECK(whole.spp == 6 && whole.dropped == 0, "spp %u dropped %llu", whole.spp,
+	      (unsigned long long)whole.dropped);
 	CHECK(render(job_for(6, 2, 7), &f, 0, 0, 0, 0) == RENDER_DONE, "2-thread render");
 	int d = differing_pixels(&whole, &f);
 	CHECK(d == 0, "1 vs 2 threads: %d pixels differ", d);
@@ -133,9 +135,12 @@ int main(void)
 	const int xs[3] = {0, 17, W}, ys[3] = {0, 11, H};
 	for (int qy = 0; qy < 2; qy++)
 		for (int qx = 0; qx < 2; qx++) {
-			CHECK(render(job_for(6, 2, 5), &f, xs[qx], ys[qy], xs[qx + 1], ys[qy + 1]) == RENDER_DONE, "region");
+			CHECK(render(job_for(6, 2, 5), &f, xs[qx], ys[qy], xs[qx + 1], ys[qy + 1]) ==
+				  RENDER_DONE,
+			      "region");
 			d = differing_pixels(&whole, &f);
-			CHECK(d == 0, "region %d,%d-%d,%d: %d pixels differ", xs[qx], ys[qy], xs[qx + 1], ys[qy + 1], d);
+			CHECK(d == 0, "region %d,%d-%d,%d: %d pixels differ", xs[qx], ys[qy], xs[qx + 1],
+			      ys[qy + 1], d);
 			film_free(&f);
 		}
 	CHECK(!film_init(&f, W, H, 5, 5, 5, 9), "empty region accepted");
@@ -161,7 +166,8 @@ int main(void)
 			rng g = rng_for_sample(1234, px, py, k);
 			vec2 pu = v2(rng_float(&g), rng_float(&g)), lu = v2(rng_float(&g), rng_float(&g));
 			render_settings set = {5, RENDER_MIS};
-			render_sample smp = render_path(&scene.rs, &set, cam_ray(&camera, px, py, pu, lu), &g);
+			render_sample smp =
+			    render_path(&scene.rs, &set, cam_ray(&camera, px, py, pu, lu), &g);
 			const float c[3] = {smp.radiance.x, smp.radiance.y, smp.radiance.z};
 			for (int k2 = 0; k2 < 3; k2++)
 				sum[k2] += c[k2], sum2[k2] += (double)c[k2] * c[k2];
@@ -177,7 +183,8 @@ int main(void)
 		mem_free(beauty);
 	}
 	film_read(&whole, FILM_DEPTH, buf);
-	CHECK(buf[(H - 1) * W + W / 2] > 0.5f, "depth at the bottom (the floor) %g", buf[(H - 1) * W + W / 2]);
+	CHECK(buf[(H - 1) * W + W / 2] > 0.5f, "depth at the bottom (the floor) %g",
+	      buf[(H - 1) * W + W / 2]);
 	film_free(&whole);
 
 	/* A time budget stops after a whole pass; the image equals an spp render of that count. */
@@ -220,10 +227,11 @@ int main(void)
 	pthread_join(th, NULL);
 	CHECK(rs == RENDER_INTERRUPTED, "status %d after interrupt", (int)rs);
 	CHECK(returned - sp.set_at < 0.5, "returned %g s after the interrupt", returned - sp.set_at);
-	CHECK(st.spp == f.spp && f.spp > 0 && f.spp < 1000000, "interrupted at %u spp (stats %u)", f.spp, st.spp);
+	CHECK(st.spp == f.spp && f.spp > 0 && f.spp < 1000000, "interrupted at %u spp (stats %u)", f.spp,
+	      st.spp);
 	CHECK(ck.calls >= 1 && ck.monotone, "checkpoints: %d calls, monotone %d", ck.calls, ck.monotone);
-	printf("  interrupted after %u spp (%d passes, %d checkpoints), returned %.3f s after the flag\n", f.spp,
-	       st.passes, ck.calls, returned - sp.set_at);
+	printf("  interrupted after %u spp (%d passes, %d checkpoints), returned %.3f s after the flag\n",
+	       f.spp, st.passes, ck.calls, returned - sp.set_at);
 	CHECK(render(job_for(f.spp, 2, 16), &whole, 0, 0, 0, 0) == RENDER_DONE, "reference render");
 	d = differing_pixels(&whole, &f);
 	CHECK(d == 0, "interrupted render vs %u spp render: %d pixels differ", f.spp, d);
