@@ -247,6 +247,46 @@ static void test_envmap(int spp)
 	light_set_free(&s.lights);
 }
 
+/* The scene's shade() hook (textures, normal maps): an albedo it sets is what renders, and a
+ * shading normal tilted away from the viewer does not blacken the surface. */
+static int shade_mode;
+static void shade_hook(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
+{
+	(void)user;
+	if (shade_mode == 0) {
+		params->diffuse = v3s(0.5f);
+	} else { /* tilt 85 degrees towards +x, within ng's hemisphere */
+		vec3 t = v3_normalize(v3_sub(v3(1, 0, 0), v3_scale(hit->ng, hit->ng.x)));
+		if (v3_length(t) > 0)
+			*ns = v3_normalize(
+			    v3_add(v3_scale(hit->ng, cosf(1.4835f)), v3_scale(t, sinf(1.4835f))));
+	}
+}
+
+static void test_shade_hook(int spp)
+{
+	ts_scene s;
+	ts_init(&s);
+	s.sph[s.nsph++] = (ts_sphere){v3(0, 0, 0), 1.0f, 0};
+	s.mat[0] = bsdf_diffuse(v3s(1));
+	s.rs.shade = shade_hook;
+	light bg = light_background(v3s(1));
+	light_set_add(&s.lights, &bg);
+	light_set_finish(&s.lights, 2.0f);
+	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6);
+	static image im;
+	shade_mode = 0;
+	render_image(&s, &c, (render_settings){5, RENDER_BSDF_ONLY}, 16, &im);
+	expect_image("shade() sets albedo 0.5", &im, 0.5, 0.01);
+	shade_mode = 1;
+	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im);
+	int dark = 0;
+	for (int i = 0; i < im.w * im.h; i++)
+		dark += !(im.mean[i] > 0.2);
+	CHECK(dark == 0, "%d pixels dark or NaN under tilted shading normals", dark);
+	light_set_free(&s.lights);
+}
+
 int main(void)
 {
 	double scale = test_scale();
@@ -256,5 +296,6 @@ int main(void)
 	test_point_light();
 	test_mis(spp);
 	test_envmap(spp);
+	test_shade_hook(spp);
 	return check_done("test_integrator");
 }
