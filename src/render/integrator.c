@@ -140,8 +140,9 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		vec3 ng_out = v3_dot(hit.ng, wo) >= 0.0f ? hit.ng : v3_neg(hit.ng);
 		frame f;
 		f.n = v3_dot(ns, ng_out) >= 0.0f ? ns : v3_neg(ns);
-		if (v3_dot(f.n, wo) <= 0.0f) /* a shading normal turned away from the viewer (strong
-						normal maps, coarse meshes): shade with the true one */
+		/* A shading normal turned away from the viewer (strong normal maps, coarse meshes)
+		 * would leave wo below the BSDF's horizon: shade with the true normal instead. */
+		if (v3_dot(f.n, wo) <= 0.0f)
 			f.n = ng_out;
 		v3_basis(f.n, &f.t, &f.b);
 		vec3 wo_local = to_local(&f, wo);
