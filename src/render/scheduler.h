@@ -61,9 +61,11 @@ typedef struct render_stats {
 	int threads;
 } render_stats;
 
-/* Renders job into f (initialised by film_init, empty: spp 0). Returns RENDER_ERROR (with f
- * untouched) for an invalid job (no spp and no time budget, no scene or camera, a camera whose
- * size differs from the film's) or when threads cannot be started. stats may be NULL. */
+/* Renders job into f (from film_init). A film that already holds spp samples of the same job
+ * (an interrupted or time-limited render) is continued from sample spp on, and ends bit-identical
+ * to an uninterrupted render. Returns RENDER_ERROR (with f untouched) for an invalid job (no spp and no time
+ * budget, no scene or camera, a camera whose size differs from the film's) or when threads cannot be started.
+ * stats may be NULL. */
 render_status render_run(const render_job *job, film *f, render_stats *stats);
 /* Number of online cores (at least 1). */
 int render_default_threads(void);

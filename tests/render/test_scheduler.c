@@ -131,6 +131,14 @@ int main(void)
 	CHECK(d == 0, "1 vs 2 threads: %d pixels differ", d);
 	film_free(&f);
 
+	/* A render continued from 2 samples to 6 equals one render of 6. */
+	CHECK(render(job_for(2, 2, 16), &f, 0, 0, 0, 0) == RENDER_DONE && f.spp == 2, "first part");
+	render_job more = job_for(6, 2, 16);
+	CHECK(render_run(&more, &f, NULL) == RENDER_DONE && f.spp == 6, "continued to %u spp", f.spp);
+	d = differing_pixels(&whole, &f);
+	CHECK(d == 0, "continued render: %d pixels differ", d);
+	film_free(&f);
+
 	/* Four uneven quarters equal the whole. */
 	const int xs[3] = {0, 17, W}, ys[3] = {0, 11, H};
 	for (int qy = 0; qy < 2; qy++)
