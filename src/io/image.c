@@ -27,6 +27,34 @@ float image_linear_to_srgb(float v)
 	return v <= 0.0031308f ? v * 12.92f : 1.055f * powf(v, 1.0f / 2.4f) - 0.055f;
 }
 
+/* u mod 1 in [0, 1), NaN mapped to 0. */
+static float wrap01(float u)
+{
+	float w = u - floorf(u);
+	return w >= 0.0f && w < 1.0f ? w : 0.0f;
+}
+
+void image_bilinear(const image *img, float u, float v, float out[4])
+{
+	float x = wrap01(u) * (float)img->width - 0.5f, y = (1.0f - wrap01(v)) * (float)img->height - 0.5f;
+	float fx = floorf(x), fy = floorf(y);
+	float tx = x - fx, ty = y - fy;
+	int x0 = (int)fx, y0 = (int)fy;
+	int xs[2] = {x0, x0 + 1}, ys[2] = {y0, y0 + 1};
+	for (int k = 0; k < 2; k++) {
+		xs[k] = (xs[k] % img->width + img->width) % img->width;
+		ys[k] = (ys[k] % img->height + img->height) % img->height;
+	}
+	float w[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+	for (int c = 0; c < 4; c++)
+		out[c] = 0.0f;
+	for (int k = 0; k < 4; k++) {
+		const float *p = img->rgba + ((size_t)ys[k >> 1] * (size_t)img->width + (size_t)xs[k & 1]) * 4;
+		for (int c = 0; c < 4; c++)
+			out[c] += w[k] * p[c];
+	}
+}
+
 void image_free(image *img)
 {
 	mem_free(img->rgba);

@@ -24,6 +24,10 @@ typedef enum image_encoding {
 bool image_load(const char *path, image_encoding enc, image *out, diag *d);
 void image_free(image *img);
 
+/* Bilinear lookup at texture coordinates (u, v), repeating outside [0, 1): u runs left to right,
+ * v bottom to top (the OBJ/glTF-after-flip convention: v = 1 is row 0). out receives RGBA. */
+void image_bilinear(const image *img, float u, float v, float out[4]);
+
 /* sRGB transfer functions (IEC 61966-2-1). */
 float image_srgb_to_linear(float v);
 float image_linear_to_srgb(float v);

@@ -105,6 +105,23 @@ int main(void)
 	CHECK(img.width == 3 && img.rgba[4 * 5 + 1] == 16.0f, "exr Y channel expands to grey");
 	image_free(&img);
 
+	/* Bilinear lookup: texel centres give the texel, midpoints the mean, u and v repeat, v = 1 is
+	 * the top row. A 2x2 image: top row 0 and 1, bottom row 2 and 3 (in R). */
+	image tex = {2, 2, (float[]){0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1}};
+	float px[4];
+	image_bilinear(&tex, 0.25f, 0.75f, px);
+	CHECK_NEAR(px[0], 0.0, 1e-6);
+	image_bilinear(&tex, 0.75f, 0.25f, px);
+	CHECK_NEAR(px[0], 3.0, 1e-6);
+	image_bilinear(&tex, 0.5f, 0.5f, px);
+	CHECK_NEAR(px[0], 1.5, 1e-6);
+	image_bilinear(&tex, 1.25f, -0.75f, px);
+	CHECK_NEAR(px[0], 2.0, 1e-6);
+	CHECK_NEAR(px[3], 1.0, 1e-6);
+	/* At u = 0 the left texel's centre is half a texel away: the mean of the two wrapped texels. */
+	image_bilinear(&tex, 0.0f, 0.75f, px);
+	CHECK_NEAR(px[0], 0.5, 1e-6);
+
 	char *buf = NULL;
 	size_t len = 0;
 	FILE *mem = open_memstream(&buf, &len);
