@@ -9,54 +9,77 @@
 typedef struct word {
 	const char *s;
 	lang_tok tok;
+	size_t len;
 } word;
 
 static const word keywords[] = {
-#define LANG_KW_WORD(e, s) {s, LTK_KW_##e},
+#define LANG_KW_WORD(e, s) {s, LTK_KW_##e, sizeof s - 1},
 	LANG_KEYWORDS(LANG_KW_WORD)
 #undef LANG_KW_WORD
 };
 
 static const word directives[] = {
-#define LANG_DIR_WORD(e, s) {s, LTK_DIR_##e},
+#define LANG_DIR_WORD(e, s) {s, LTK_DIR_##e, sizeof s - 1},
 	LANG_DIRECTIVES(LANG_DIR_WORD)
 #undef LANG_DIR_WORD
 };
 
-/* POV-Ray words outside the language: recognised so the error can name them. */
+/* POV-Ray words outside the language, recognised so the error can name them. Sorted: looked up by
+ * binary search (test_lex checks every entry is found). */
 static const char *const unsupported_words[] = {
-	"difference", "intersection", "merge", "inverse", "clipped_by", "bounded_by", "blob", "torus",
-	"cone", "cylinder", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "polygon",
-	"prism", "sor", "superellipsoid", "text", "bicubic_patch", "parametric", "poly", "cubic",
-	"quartic", "quadric", "ovus", "lemon", "sphere_sweep", "media", "photons", "fog", "rainbow",
-	"radiosity", "normal", "ambient", "reflection", "phong", "refraction", "caustics", "brilliance",
-	"metallic", "irid", "area_light", "looks_like", "fade_distance", "fade_power", "orthographic",
-	"fisheye", "panoramic", "ultra_wide_angle", "omnimax", "cylindrical", "spherical", "hollow",
-	"pattern", "function", "checker", "gradient", "bozo", "granite", "agate", "marble_pattern",
-	"turbulence", "spline", "material_map", "texture_map", "pigment_map", "normal_map_pov",
-	"interpolate", "rgbf", "rgbt", "rgbft", "srgb", "filter", "transmit", "scattering",
-	"density", "emission_pov", "projected_through", "sturm", "open", "smooth", "uv_mapping",
-	"mesh_camera", "fresnel", "subsurface", "translucency", "conserve_energy",
-	NULL};
+	"agate", "ambient", "area_light", "bicubic_patch", "blob", "bounded_by", "bozo", "brilliance",
+	"caustics", "checker", "clipped_by", "cone", "conserve_energy", "cubic", "cylinder", "cylindrical",
+	"density", "difference", "disc", "fade_distance", "fade_power", "filter", "fisheye", "fog",
+	"fresnel", "function", "gradient", "granite", "height_field", "hollow", "interpolate",
+	"intersection", "inverse", "irid", "isosurface", "julia_fractal", "lathe", "lemon", "looks_like",
+	"material_map", "media", "merge", "mesh_camera", "metallic", "normal", "omnimax", "open",
+	"orthographic", "ovus", "panoramic", "parametric", "pattern", "phong", "photons", "pigment_map",
+	"poly", "polygon", "prism", "projected_through", "quadric", "quartic", "radiosity", "rainbow",
+	"reflection", "refraction", "rgbf", "rgbft", "rgbt", "scattering", "smooth", "sor", "sphere_sweep",
+	"spherical", "spline", "srgb", "sturm", "subsurface", "superellipsoid", "text", "texture_map",
+	"torus", "translucency", "transmit", "turbulence", "ultra_wide_angle", "uv_mapping"};
 static const char *const unsupported_directives[] = {
-	"macro", "switch", "case", "range", "break", "default", "for", "undef", "ifdef", "ifndef",
-	"elseif", "fopen", "fclose", "read", "write", "debug", "warning", "error", "render",
-	"statistics", "append", NULL};
+	"append", "break", "case", "debug", "default", "elseif", "error", "fclose", "fopen", "for",
+	"ifdef", "ifndef", "macro", "range", "read", "render", "statistics", "switch", "undef",
+	"warning", "write"};
+
+/* strcmp of the NUL-terminated w against the n bytes at s. */
+static int cmp_word(const char *w, const char *s, size_t n)
+{
+	int r = strncmp(w, s, n);
+	return r ? r : (w[n] != '\0');
+}
+
+/* Binary search in a sorted array of n entries, each `stride` bytes, whose first member is the
+ * spelling. Returns the index or -1. */
+static long find_word(const void *tab, size_t n, size_t stride, const char *s, size_t len)
+{
+	size_t lo = 0, hi = n;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		const char *w = *(const char *const *)((const char *)tab + mid * stride);
+		int r = cmp_word(w, s, len);
+		if (r == 0)
+			return (long)mid;
+		if (r < 0)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return -1;
+}
+
+#define N_OF(a) (sizeof(a) / sizeof(a)[0])
 
 lang_tok lang_keyword(const char *s, size_t len)
 {
-	for (size_t i = 0; i < sizeof keywords / sizeof keywords[0]; i++)
-		if (strlen(keywords[i].s) == len && !memcmp(keywords[i].s, s, len))
-			return keywords[i].tok;
-	return LTK_IDENT;
+	long i = find_word(keywords, N_OF(keywords), sizeof keywords[0], s, len);
+	return i < 0 ? LTK_IDENT : keywords[i].tok;
 }
 
-static bool in_list(const char *const *list, const char *s, size_t len)
+bool lang_unsupported_word(const char *s, size_t len)
 {
-	for (; *list; list++)
-		if (strlen(*list) == len && !memcmp(*list, s, len))
-			return true;
-	return false;
+	return find_word(unsupported_words, N_OF(unsupported_words), sizeof(char *), s, len) >= 0;
 }
 
 const char *lang_tok_name(lang_tok k)
@@ -237,12 +260,12 @@ static bool lex_word(lang_lexer *lx, diag *d, lang_token *t, bool directive)
 		return false;
 	}
 	if (directive) {
-		for (size_t i = 0; i < sizeof directives / sizeof directives[0]; i++)
-			if (strlen(directives[i].s) == n && !memcmp(directives[i].s, s, n)) {
+		for (size_t i = 0; i < N_OF(directives); i++)
+			if (directives[i].len == n && !memcmp(directives[i].s, s, n)) {
 				t->kind = directives[i].tok;
 				return true;
 			}
-		if (in_list(unsupported_directives, s, n)) {
+		if (find_word(unsupported_directives, N_OF(unsupported_directives), sizeof(char *), s, n) >= 0) {
 			t->kind = LTK_UNSUPPORTED;
 			t->text = s - 1; /* the name includes '#' */
 			t->len = (uint32_t)n + 1;
@@ -255,7 +278,7 @@ static bool lex_word(lang_lexer *lx, diag *d, lang_token *t, bool directive)
 		return false;
 	}
 	t->kind = lang_keyword(s, n);
-	if (t->kind == LTK_IDENT && in_list(unsupported_words, s, n))
+	if (t->kind == LTK_IDENT && lang_unsupported_word(s, n))
 		t->kind = LTK_UNSUPPORTED;
 	return true;
 }

@@ -17,8 +17,7 @@ enum {
 	LANG_MAX_STRING = 4096, /* bytes in a string literal */
 };
 
-/* X(enum suffix, spelling). Keep sorted by nothing in particular: lookup is by table scan at
- * lexer start-up into a hash. */
+/* KW(enum suffix, spelling), sorted by spelling: lang_keyword searches it by bisection. */
 #define LANG_KEYWORDS(KW)                                                                           \
 	KW(ABS, "abs") KW(ACOS, "acos") KW(ANGLE, "angle") KW(ANISOTROPY, "anisotropy")                 \
 	KW(APERTURE, "aperture") KW(ASIN, "asin") KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN2, "atan2")  \
@@ -100,7 +99,9 @@ void lang_lexer_init(lang_lexer *lx, const diag_source *src);
 bool lang_lex(lang_lexer *lx, diag *d, lang_token *tok);
 /* The spelling of a token kind for messages: "'{'", "'sphere'", "a number", "end of file". */
 const char *lang_tok_name(lang_tok k);
-/* The keyword or directive with this spelling, or LTK_IDENT. */
+/* The keyword with this spelling, or LTK_IDENT. */
 lang_tok lang_keyword(const char *s, size_t len);
+/* True for a POV-Ray word outside the language ("difference", "media", ...). */
+bool lang_unsupported_word(const char *s, size_t len);
 
 #endif

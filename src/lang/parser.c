@@ -95,6 +95,25 @@ bool lang_enter(parser *p, diag_loc loc)
 	return true;
 }
 
+/* The value of a string token, escapes resolved, in the scene arena. */
+static bool decode_string(parser *p, const lang_token *s, value *out)
+{
+	char *buf = arena_alloc(&p->sc->arena, s->len + 1, 1, 1);
+	if (!buf)
+		return lang_error(p, s->loc, "out of memory");
+	size_t k = 0;
+	for (uint32_t i = 0; i < s->len; i++) {
+		if (s->text[i] == '\\')
+			i++;
+		buf[k++] = s->text[i];
+	}
+	buf[k] = '\0';
+	out->kind = VAL_STRING;
+	out->n = 0;
+	out->str = buf, out->mat = NULL, out->obj = NULL;
+	return true;
+}
+
 /* ---- files ------------------------------------------------------------------------------- */
 
 int lang_read_file(void *user, const char *path, char **text, size_t *len)
@@ -165,8 +184,14 @@ static bool push_file(parser *p, const diag_source *src, const char *path, diag_
 /* The include chain, innermost first, as notes. */
 static void note_chain(parser *p)
 {
-	for (int i = p->n_files - 1; i >= 1; i--)
+	enum { SHOWN = 8 }; /* innermost and outermost links; the middle of a deep chain is noise */
+	for (int i = p->n_files - 1; i >= 1; i--) {
+		if (i == p->n_files - 1 - SHOWN && i > SHOWN) {
+			note(p, diag_noloc(), "... %d more includes ...", i - SHOWN);
+			i = SHOWN;
+		}
 		note(p, p->files[i].included_at, "'%s' is included from here", p->files[i].path);
+	}
 }
 
 static char *join_path(parser *p, const char *dir, size_t dlen, const char *name)
@@ -185,15 +210,31 @@ static char *join_path(parser *p, const char *dir, size_t dlen, const char *name
 
 static bool no_memory(parser *p, diag_loc loc) { return lang_error(p, loc, "out of memory"); }
 
-/* #include STRING: the including file's folder, then each -I folder. */
+/* include = "#include" ( string | identifier ) -- read raw: a lookahead here would run ahead
+ * of the included text. Searched in the including file's folder, then each -I folder. */
 static bool do_include(parser *p, diag_loc at)
 {
 	const char *name;
-	p->directive_expr = true;
-	bool ok = lang_string(p, "after '#include'", &name);
-	p->directive_expr = false;
-	if (!ok)
+	lang_token t;
+	if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, &t)) {
+		p->failed = true;
 		return false;
+	}
+	p->prev = t;
+	if (t.kind == LTK_STRING) {
+		value v;
+		if (!decode_string(p, &t, &v))
+			return false;
+		name = v.str;
+	} else {
+		const symbol *s = t.kind == LTK_IDENT ? lang_lookup(p, t.text, t.len) : NULL;
+		if (!s || s->val.kind != VAL_STRING) {
+			char found[300];
+			return lang_error(p, t.loc, "expected a string after '#include', found %s",
+					  s ? lang_value_kind_name(&s->val) : lang_describe(&t, found, sizeof found));
+		}
+		name = s->val.str;
+	}
 	diag_loc nloc = p->prev.loc;
 	if (p->n_files > LANG_MAX_INCLUDE_DEPTH) {
 		lang_error(p, at, "includes nested too deeply (limit is %d)", LANG_MAX_INCLUDE_DEPTH);
@@ -825,23 +866,8 @@ static bool primary(parser *p, value *out)
 		set_float(out, t->number);
 		lang_advance(p);
 		return true;
-	case LTK_STRING: {
-		lang_token s = *lang_advance(p);
-		char *buf = arena_alloc(&p->sc->arena, s.len + 1, 1, 1);
-		if (!buf)
-			return no_memory(p, s.loc);
-		size_t k = 0;
-		for (uint32_t i = 0; i < s.len; i++) {
-			if (s.text[i] == '\\')
-				i++;
-			buf[k++] = s.text[i];
-		}
-		buf[k] = '\0';
-		out->kind = VAL_STRING;
-		out->n = 0;
-		out->str = buf;
-		return true;
-	}
+	case LTK_STRING:
+		return decode_string(p, lang_advance(p), out);
 	case LTK_LPAREN: {
 		lang_advance(p);
 		bool saved = p->no_gt;

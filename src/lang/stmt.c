@@ -161,9 +161,12 @@ static const scene_material *declared_material(parser *p)
 	return s->val.mat;
 }
 
-/* texture = "texture" "{" [ identifier ] { pigment | finish } "}" */
-static bool texture(parser *p, const scene_material **out)
+/* texture = "texture" "{" [ identifier ] { pigment | finish } "}"
+ * *fresh (may be NULL) tells whether the record is new, hence the caller's to modify. */
+static bool texture(parser *p, const scene_material **out, bool *fresh)
 {
+	if (fresh)
+		*fresh = false;
 	diag_loc kw = lang_advance(p)->loc, open;
 	TRY(open_block(p, "texture", &open));
 	const scene_material *base = NULL;
@@ -192,6 +195,8 @@ static bool texture(parser *p, const scene_material **out)
 	}
 	lang_advance(p);
 	*out = m;
+	if (fresh)
+		*fresh = true;
 	return true;
 }
 
@@ -411,7 +416,7 @@ static bool material(parser *p, const scene_material **out)
 			break;
 		case LTK_KW_TEXTURE: {
 			const scene_material *tex;
-			TRY(texture(p, &tex));
+			TRY(texture(p, &tex, NULL));
 			vec3 em = m->emission;
 			uint32_t id = m->id;
 			scene_material *next = m->next;
@@ -514,7 +519,10 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	}
 	case LTK_KW_TEXTURE: {
 		const scene_material *mat;
-		TRY(texture(p, &mat));
+		bool fresh;
+		TRY(texture(p, &mat, &fresh));
+		if (fresh)
+			m->tex = (scene_material *)mat; /* made here: interior may set its ior */
 		return set_material(p, m, mat, t.loc);
 	}
 	case LTK_KW_PIGMENT:
@@ -571,7 +579,7 @@ static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, con
 		bool matched;
 		TRY(modifier(p, &m, &matched));
 		if (!matched)
-			return bad_item(p, open, what, "a transform, a material or no_shadow");
+			return bad_item(p, open, what, "a transform, a material, no_shadow");
 	}
 }
 
@@ -1175,7 +1183,7 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 		}
 		TRY(modifier(p, &m, &matched));
 		if (!matched)
-			return bad_item(p, open, "union", "an object, a transform, a material or no_shadow");
+			return bad_item(p, open, "union", "an object, a transform, a material, no_shadow");
 	}
 }
 
@@ -1239,7 +1247,7 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	*handled = true;
 	if (k == LTK_KW_MATERIAL || k == LTK_KW_TEXTURE) {
 		out->kind = VAL_MATERIAL;
-		return k == LTK_KW_MATERIAL ? material(p, &out->mat) : texture(p, &out->mat);
+		return k == LTK_KW_MATERIAL ? material(p, &out->mat) : texture(p, &out->mat, NULL);
 	}
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));

@@ -285,7 +285,13 @@ void scene_stats_get(const scene *s, scene_stats *st)
 
 static void dump_v3(FILE *o, const char *name, vec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
 static void dump_d3(FILE *o, const char *name, dvec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
-static void dump_loc(FILE *o, diag_loc l) { fprintf(o, " @%u:%u", l.line, l.col); }
+/* The file's base name only: dumps must not depend on where the tree lives. */
+static void dump_loc(FILE *o, diag_loc l)
+{
+	const char *name = l.src ? l.src->name : "?";
+	const char *slash = strrchr(name, '/');
+	fprintf(o, " @%s:%u:%u", slash ? slash + 1 : name, l.line, l.col);
+}
 
 static void dump_material(FILE *o, const scene_material *m)
 {
@@ -470,11 +476,14 @@ void scene_dump(const scene *s, FILE *o)
 		fputc('\n', o);
 	}
 	/* Oldest first: the lists are built newest first. */
-	const scene_material *mats[s->n_materials ? s->n_materials : 1];
-	for (const scene_material *m = s->materials; m; m = m->next)
-		mats[m->id] = m;
-	for (uint32_t i = 0; i < s->n_materials; i++)
-		dump_material(o, mats[i]);
+	const scene_material **mats = mem_alloc(s->n_materials ? s->n_materials : 1, sizeof *mats);
+	if (mats) {
+		for (const scene_material *m = s->materials; m; m = m->next)
+			mats[m->id] = m;
+		for (uint32_t i = 0; i < s->n_materials; i++)
+			dump_material(o, mats[i]);
+		mem_free(mats);
+	}
 	const scene_geom **geoms = mem_alloc(s->n_geoms ? s->n_geoms : 1, sizeof *geoms);
 	if (geoms) {
 		for (const scene_geom *g = s->geoms; g; g = g->next)
