@@ -1,0 +1,49 @@
+/* lang.h - the scene language's entry point: reads a scene file (and its includes) and builds the
+ * scene IR (scene/scene.h). Errors go to a diag object as `file:line:col: error: ...` with the
+ * source line quoted; the parser stops at the first syntax or evaluation error, while IR validation
+ * (scene_validate) reports every problem it finds. Not thread-safe per call; calls on different
+ * diag/scene objects may run concurrently (there is no global state). */
+#ifndef CIRCE_LANG_LANG_H
+#define CIRCE_LANG_LANG_H
+
+#include "base/diag.h"
+#include "scene/scene.h"
+
+#include <stddef.h>
+
+/* Limits that keep hostile input harmless; each is stated in its error message. */
+enum {
+	LANG_MAX_INCLUDE_DEPTH = 64,
+	LANG_MAX_NESTING = 200, /* nested blocks, parentheses, directives */
+	LANG_MAX_LOOP_ITERATIONS = 1000000, /* per #while loop */
+	LANG_MAX_VECTOR = 16, /* components of a vector literal (the matrix needs 12) */
+};
+
+/* Reads the file at path (exactly as resolved by the parser) into a heap buffer obtained from
+ * mem_alloc; the parser frees it with mem_free. Returns 0, or an errno value (ENOENT when the file
+ * does not exist, which makes the parser try the next folder of the search path). */
+typedef int (*lang_read_fn)(void *user, const char *path, char **text, size_t *len);
+
+typedef struct lang_options {
+	const char *const *include_dirs; /* the -I folders, searched after the including file's */
+	size_t n_include_dirs;
+	double clock; /* the value of `clock` */
+	lang_read_fn read; /* NULL: read from the file system */
+	void *read_user;
+} lang_options;
+
+typedef enum lang_status {
+	LANG_OK = 0,
+	LANG_IO_ERROR, /* the scene file itself could not be read (exit 1) */
+	LANG_SCENE_ERROR, /* syntax, evaluation or validation errors were reported (exit 3) */
+	LANG_NO_MEMORY /* reported as a runtime error (exit 1) */
+} lang_status;
+
+/* Parses and validates the scene at path. On LANG_OK *out is a new scene the caller frees with
+ * scene_free; otherwise *out is NULL. opt may be NULL (defaults: no -I, clock 0, the disk). */
+lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, scene **out);
+
+/* The default file reader (the file system). */
+int lang_read_file(void *user, const char *path, char **text, size_t *len);
+
+#endif

@@ -1,0 +1,107 @@
+/* lex.h - the lexer of the scene language: turns one source text into tokens that carry their
+ * file:line:col. Keywords come from one table (LANG_KEYWORDS) tied to the token enum; POV-Ray words
+ * outside the language come from a second table and lex as LTK_UNSUPPORTED, so the parser can say
+ * "X is not supported by circe" wherever they appear. Directives (`#declare`, ...) are single tokens. */
+#ifndef CIRCE_LANG_LEX_H
+#define CIRCE_LANG_LEX_H
+
+#include "base/diag.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Limits that keep hostile input harmless; each is stated in its error message. */
+enum {
+	LANG_MAX_IDENT = 255, /* characters in an identifier */
+	LANG_MAX_STRING = 4096, /* bytes in a string literal */
+};
+
+/* KW(enum suffix, spelling), sorted by spelling: lang_keyword searches it by bisection. */
+#define LANG_KEYWORDS(KW)                                                                           \
+	KW(ABS, "abs") KW(ACOS, "acos") KW(ANGLE, "angle") KW(ANISOTROPY, "anisotropy")                 \
+	KW(APERTURE, "aperture") KW(ASIN, "asin") KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN2, "atan2")  \
+	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
+	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
+	KW(CLOCK, "clock") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
+	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
+	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
+	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
+	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
+	KW(FOCAL_POINT, "focal_point") KW(FULLCIRCLE, "fullcircle") KW(GAUSSIAN, "gaussian")            \
+	KW(GLOBAL_SETTINGS, "global_settings") KW(GROUP, "group") KW(IMAGE, "image")                    \
+	KW(IMAGE_MAP, "image_map") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(IOR, "ior")   \
+	KW(JPEG, "jpeg") KW(LEVEL, "level") KW(LIGHT_SOURCE, "light_source") KW(LOCATION, "location")   \
+	KW(LOG, "log") KW(LOOK_AT, "look_at") KW(LOOP, "loop") KW(MARBLE, "marble")                      \
+	KW(MATERIAL, "material") KW(MATRIX, "matrix") KW(MAX, "max") KW(MAX_EDGE, "max_edge")            \
+	KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") KW(MESH2, "mesh2") KW(METHOD, "method")  \
+	KW(MIN, "min") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO_SHADOW, "no_shadow")          \
+	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")                              \
+	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(PARALLEL, "parallel")              \
+	KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment") KW(PLANE, "plane")            \
+	KW(PNG, "png") KW(POINT_AT, "point_at") KW(POW, "pow") KW(PRESET, "preset") KW(PROFILE, "profile") \
+	KW(RADIANS, "radians") KW(RADIUS, "radius") KW(RGB, "rgb") KW(RIGHT, "right")                    \
+	KW(ROTATE, "rotate") KW(ROUGHNESS, "roughness") KW(SCALE, "scale") KW(SCHEME, "scheme")          \
+	KW(SIGMA_A, "sigma_a") KW(SIGMA_S, "sigma_s") KW(SIN, "sin") KW(SKIN, "skin") KW(SKY, "sky")      \
+	KW(SKY_SPHERE, "sky_sphere") KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular")    \
+	KW(SPHERE, "sphere") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(STRENGTH, "strength")        \
+	KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUM_OF_GAUSSIANS, "sum_of_gaussians")        \
+	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle")        \
+	KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") KW(UV_INDICES, "uv_indices")            \
+	KW(UV_VECTORS, "uv_vectors") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERTEX_VECTORS,            \
+	"vertex_vectors") KW(VLENGTH, "vlength") KW(VNORMALIZE, "vnormalize") KW(VOLUME, "volume")     \
+	KW(WAX, "wax") KW(X, "x") KW(Y, "y") KW(Z, "z")
+
+/* X(enum suffix, spelling without '#'). */
+#define LANG_DIRECTIVES(X)                                                                          \
+	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else")    \
+	X(END, "end") X(WHILE, "while") X(VERSION, "version")
+
+typedef enum lang_tok {
+	LTK_EOF,
+	LTK_NUMBER,
+	LTK_STRING,
+	LTK_IDENT,
+	LTK_UNSUPPORTED, /* a POV-Ray word or directive outside the language */
+	LTK_LBRACE, LTK_RBRACE, LTK_LPAREN, LTK_RPAREN, LTK_LT, LTK_GT, LTK_LE, LTK_GE,
+	LTK_EQ, LTK_NE, LTK_COMMA, LTK_SEMI, LTK_PLUS, LTK_MINUS, LTK_STAR, LTK_SLASH,
+	LTK_BANG, LTK_AMP, LTK_BAR, LTK_QUESTION, LTK_COLON, LTK_DOT,
+#define LANG_KW_ENUM(e, s) LTK_KW_##e,
+	LANG_KEYWORDS(LANG_KW_ENUM)
+#undef LANG_KW_ENUM
+#define LANG_DIR_ENUM(e, s) LTK_DIR_##e,
+	LANG_DIRECTIVES(LANG_DIR_ENUM)
+#undef LANG_DIR_ENUM
+	LTK_COUNT
+} lang_tok;
+
+#define LANG_FIRST_KEYWORD LTK_KW_ABS
+#define LANG_FIRST_DIRECTIVE LTK_DIR_DECLARE
+
+typedef struct lang_token {
+	lang_tok kind;
+	diag_loc loc;
+	const char *text; /* into the source: the spelling (a string's contents without quotes) */
+	uint32_t len;
+	double number; /* LTK_NUMBER */
+} lang_token;
+
+/* The position of a lexer in its source; copyable, so #while can jump back. */
+typedef struct lang_lexer {
+	const diag_source *src;
+	const char *p, *end;
+	uint32_t line;
+	const char *line_start;
+} lang_lexer;
+
+void lang_lexer_init(lang_lexer *lx, const diag_source *src);
+/* Reads the next token. Returns false after reporting a lexical error through d. */
+bool lang_lex(lang_lexer *lx, diag *d, lang_token *tok);
+/* The spelling of a token kind for messages: "'{'", "'sphere'", "a number", "end of file". */
+const char *lang_tok_name(lang_tok k);
+/* The keyword with this spelling, or LTK_IDENT. */
+lang_tok lang_keyword(const char *s, size_t len);
+/* True for a POV-Ray word outside the language ("difference", "media", ...). */
+bool lang_unsupported_word(const char *s, size_t len);
+
+#endif

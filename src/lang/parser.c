@@ -1,0 +1,1198 @@
+/* parser.c - the token stream of the scene language: a stack of lexers for #include, the
+ * directives (#declare, #local, #if, #else, #while, #end, #version) run at token level so they may
+ * stand anywhere (inside blocks too), the symbol table, and expressions evaluated at parse time.
+ * The first error is reported and ends the parse: every function returns false from then on. */
+#include "lang/parser.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { DEFAULT_TOTAL_ITERATIONS = 10000000 }; /* all #while loops of one parse together */
+
+/* ---- errors ------------------------------------------------------------------------------ */
+
+static void vreport(parser *p, diag_kind kind, diag_loc loc, const char *fmt, va_list ap)
+{
+	diag_vreport(p->d, kind, loc, fmt, ap);
+}
+
+bool lang_error(parser *p, diag_loc loc, const char *fmt, ...)
+{
+	if (p->failed)
+		return false;
+	p->failed = true;
+	va_list ap;
+	va_start(ap, fmt);
+	vreport(p, DIAG_ERROR, loc, fmt, ap);
+	va_end(ap);
+	return false;
+}
+
+static void note(parser *p, diag_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static void note(parser *p, diag_loc loc, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vreport(p, DIAG_NOTE, loc, fmt, ap);
+	va_end(ap);
+}
+
+const char *lang_describe(const lang_token *t, char *buf, size_t size)
+{
+	switch (t->kind) {
+	case LTK_NUMBER:
+		snprintf(buf, size, "'%.*s'", t->len > 40 ? 40 : (int)t->len, t->text);
+		break;
+	case LTK_STRING:
+		snprintf(buf, size, "string \"%.*s\"", t->len > 40 ? 40 : (int)t->len, t->text);
+		break;
+	case LTK_IDENT:
+		snprintf(buf, size, "identifier '%.*s'", (int)t->len, t->text);
+		break;
+	case LTK_UNSUPPORTED:
+		snprintf(buf, size, "'%.*s'", (int)t->len, t->text);
+		break;
+	default:
+		snprintf(buf, size, "%s", lang_tok_name(t->kind));
+	}
+	return buf;
+}
+
+/* The message for a token outside the language, or NULL. */
+static bool report_unsupported(parser *p, const lang_token *t)
+{
+	if (t->kind != LTK_UNSUPPORTED)
+		return false;
+	lang_error(p, t->loc, "'%.*s' is not supported by circe", (int)t->len, t->text);
+	return true;
+}
+
+bool lang_error_found(parser *p, const char *fmt, ...)
+{
+	lang_token *t = lang_peek(p);
+	if (p->failed)
+		return false;
+	if (report_unsupported(p, t))
+		return false;
+	char what[512], found[300];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(what, sizeof what, fmt, ap);
+	va_end(ap);
+	return lang_error(p, t->loc, "%s, found %s", what, lang_describe(t, found, sizeof found));
+}
+
+bool lang_enter(parser *p, diag_loc loc)
+{
+	if (++p->depth > LANG_MAX_NESTING) {
+		p->depth--;
+		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_NESTING);
+	}
+	return true;
+}
+
+/* The value of a string token, escapes resolved, in the scene arena. */
+static bool decode_string(parser *p, const lang_token *s, value *out)
+{
+	char *buf = arena_alloc(&p->sc->arena, s->len + 1, 1, 1);
+	if (!buf)
+		return lang_error(p, s->loc, "out of memory");
+	size_t k = 0;
+	for (uint32_t i = 0; i < s->len; i++) {
+		if (s->text[i] == '\\')
+			i++;
+		buf[k++] = s->text[i];
+	}
+	buf[k] = '\0';
+	out->kind = VAL_STRING;
+	out->n = 0;
+	out->str = buf, out->mat = NULL, out->obj = NULL;
+	return true;
+}
+
+/* ---- files ------------------------------------------------------------------------------- */
+
+int lang_read_file(void *user, const char *path, char **text, size_t *len)
+{
+	(void)user;
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return errno ? errno : ENOENT;
+	size_t cap = 1 << 16, n = 0;
+	char *buf = mem_alloc(cap, 1);
+	if (!buf) {
+		fclose(f);
+		return ENOMEM;
+	}
+	for (;;) {
+		if (n == cap) {
+			char *nb = cap < SIZE_MAX / 2 ? mem_realloc(buf, cap * 2, 1) : NULL;
+			if (!nb) {
+				mem_free(buf);
+				fclose(f);
+				return ENOMEM;
+			}
+			buf = nb;
+			cap *= 2;
+		}
+		size_t got = fread(buf + n, 1, cap - n, f);
+		n += got;
+		if (got == 0)
+			break;
+	}
+	int err = ferror(f) ? (errno ? errno : EIO) : 0;
+	fclose(f);
+	if (err) {
+		mem_free(buf);
+		return err;
+	}
+	*text = buf;
+	*len = n;
+	return 0;
+}
+
+/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value. */
+static int open_source(parser *p, const char *path, const diag_source **out)
+{
+	char *text = NULL;
+	size_t len = 0;
+	int err = p->opt.read(p->opt.read_user, path, &text, &len);
+	if (err)
+		return err;
+	const char *t = text;
+	if (len >= 3 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
+		t += 3, len -= 3;
+	*out = diag_add_source(p->d, path, t, len);
+	mem_free(text);
+	return *out ? 0 : ENOMEM;
+}
+
+static bool push_file(parser *p, const diag_source *src, const char *path, diag_loc at)
+{
+	include_frame *f = &p->files[p->n_files++];
+	lang_lexer_init(&f->lx, src);
+	f->path = path;
+	f->included_at = at;
+	f->cond_base = p->n_conds;
+	return true;
+}
+
+/* The include chain, innermost first, as notes. */
+static void note_chain(parser *p)
+{
+	enum { SHOWN = 8 }; /* innermost and outermost links; the middle of a deep chain is noise */
+	for (int i = p->n_files - 1; i >= 1; i--) {
+		if (i == p->n_files - 1 - SHOWN && i > SHOWN) {
+			note(p, diag_noloc(), "... %d more includes ...", i - SHOWN);
+			i = SHOWN;
+		}
+		note(p, p->files[i].included_at, "'%s' is included from here", p->files[i].path);
+	}
+}
+
+static char *join_path(parser *p, const char *dir, size_t dlen, const char *name)
+{
+	size_t nlen = strlen(name);
+	char *s = arena_alloc(&p->sc->arena, dlen + nlen + 2, 1, 1);
+	if (!s)
+		return NULL;
+	memcpy(s, dir, dlen);
+	size_t k = dlen;
+	if (dlen && dir[dlen - 1] != '/')
+		s[k++] = '/';
+	memcpy(s + k, name, nlen + 1);
+	return s;
+}
+
+static bool no_memory(parser *p, diag_loc loc) { return lang_error(p, loc, "out of memory"); }
+
+/* include = "#include" ( string | identifier ) -- read raw: a lookahead here would run ahead
+ * of the included text. Searched in the including file's folder, then each -I folder. */
+static bool do_include(parser *p, diag_loc at)
+{
+	const char *name;
+	lang_token t;
+	if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, &t)) {
+		p->failed = true;
+		return false;
+	}
+	p->prev = t;
+	if (t.kind == LTK_STRING) {
+		value v;
+		if (!decode_string(p, &t, &v))
+			return false;
+		name = v.str;
+	} else {
+		const symbol *s = t.kind == LTK_IDENT ? lang_lookup(p, t.text, t.len) : NULL;
+		if (!s || s->val.kind != VAL_STRING) {
+			char found[300];
+			return lang_error(p, t.loc, "expected a string after '#include', found %s",
+					  s ? lang_value_kind_name(&s->val) : lang_describe(&t, found, sizeof found));
+		}
+		name = s->val.str;
+	}
+	diag_loc nloc = p->prev.loc;
+	if (p->n_files > LANG_MAX_INCLUDE_DEPTH) {
+		lang_error(p, at, "includes nested too deeply (limit is %d)", LANG_MAX_INCLUDE_DEPTH);
+		note_chain(p);
+		return false;
+	}
+	const char *cur = p->files[p->n_files - 1].path;
+	const char *slash = strrchr(cur, '/');
+	size_t n_dirs = 1 + p->opt.n_include_dirs;
+	for (size_t i = 0; i < n_dirs; i++) {
+		char *path;
+		if (name[0] == '/')
+			path = arena_strdup(&p->sc->arena, name);
+		else if (i == 0)
+			path = slash ? join_path(p, cur, (size_t)(slash - cur), name) : arena_strdup(&p->sc->arena, name);
+		else
+			path = join_path(p, p->opt.include_dirs[i - 1], strlen(p->opt.include_dirs[i - 1]), name);
+		if (!path)
+			return no_memory(p, at);
+		for (int k = 0; k < p->n_files; k++)
+			if (!strcmp(p->files[k].path, path)) {
+				lang_error(p, nloc, "include cycle: '%s' is already being read", path);
+				note_chain(p);
+				return false;
+			}
+		const diag_source *src;
+		int err = open_source(p, path, &src);
+		if (err == 0)
+			return push_file(p, src, path, at);
+		if (err == ENOMEM)
+			return no_memory(p, at);
+		if (err != ENOENT)
+			return lang_error(p, nloc, "cannot read include file '%s': %s", path, strerror(err));
+		if (name[0] == '/')
+			break;
+	}
+	return lang_error(p, nloc, "cannot find include file '%s' (searched the including file's folder%s)", name,
+			  p->opt.n_include_dirs ? " and the -I folders" : "");
+}
+
+/* ---- symbols ----------------------------------------------------------------------------- */
+
+const symbol *lang_lookup(parser *p, const char *name, size_t len)
+{
+	for (size_t i = p->locals.len; i-- > 0;) {
+		const symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (strlen(s->name) == len && !memcmp(s->name, name, len))
+			return s;
+	}
+	for (size_t i = p->globals.len; i-- > 0;) {
+		const symbol *s = &VECBUF_AT(&p->globals, symbol, i);
+		if (strlen(s->name) == len && !memcmp(s->name, name, len))
+			return s;
+	}
+	return NULL;
+}
+
+/* #declare assigns the global; #local the current include file's scope (the main file's #local is
+ * global, as in POV-Ray). */
+static bool define(parser *p, const lang_token *name, bool local, const value *v)
+{
+	int depth = local ? p->n_files - 1 : 0;
+	vecbuf *tab = depth ? &p->locals : &p->globals;
+	for (size_t i = tab->len; i-- > 0;) {
+		symbol *s = &VECBUF_AT(tab, symbol, i);
+		if (s->depth != depth)
+			break;
+		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
+			s->val = *v;
+			return true;
+		}
+	}
+	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v};
+	if (!s.name || !vecbuf_push(tab, &s))
+		return no_memory(p, name->loc);
+	return true;
+}
+
+static void pop_scope(parser *p, int depth)
+{
+	while (p->locals.len && VECBUF_AT(&p->locals, symbol, p->locals.len - 1).depth >= depth)
+		p->locals.len--;
+}
+
+/* ---- directives -------------------------------------------------------------------------- */
+
+/* declare = ("#declare" | "#local") identifier "=" ( block_value [";"] | expression ";" ) */
+static bool do_declare(parser *p, const lang_token *dir)
+{
+	bool local = dir->kind == LTK_DIR_LOCAL;
+	const char *dname = local ? "#local" : "#declare";
+	p->directive_expr = true;
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_IDENT) {
+		p->directive_expr = false;
+		if (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE)
+			return lang_error(p, t->loc, "cannot %s '%.*s': it is a keyword", dname, (int)t->len, t->text);
+		return lang_error_found(p, "expected an identifier after '%s'", dname);
+	}
+	lang_token name = *lang_advance(p);
+	if (!lang_expect(p, LTK_EQ, "after the name in #declare")) {
+		p->directive_expr = false;
+		return false;
+	}
+	value v;
+	bool handled = false;
+	p->directive_expr = false;
+	if (!lang_declare_block(p, &v, &handled))
+		return false;
+	if (handled) {
+		if (!define(p, &name, local, &v))
+			return false;
+		lang_skip_optional_semi(p);
+		return true;
+	}
+	p->directive_expr = true;
+	bool ok = lang_expr(p, &v);
+	if (ok) {
+		if (lang_peek(p)->kind != LTK_SEMI)
+			ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
+		else
+			lang_advance(p);
+	}
+	p->directive_expr = false;
+	return ok && define(p, &name, local, &v);
+}
+
+static bool cond_expr(parser *p, const char *what, bool *truth)
+{
+	double v;
+	p->directive_expr = true;
+	bool ok = lang_expect(p, LTK_LPAREN, what) && lang_float(p, "as the condition", &v) &&
+		  lang_expect(p, LTK_RPAREN, "after the condition");
+	p->directive_expr = false;
+	*truth = v != 0.0;
+	return ok;
+}
+
+/* Skips raw tokens up to the #else (when stop_at_else) or #end that matches the current level.
+ * *found_else tells which one ended the skip. */
+static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_else, bool *found_else)
+{
+	lang_lexer *lx = &p->files[p->n_files - 1].lx;
+	int level = 0;
+	*found_else = false;
+	for (;;) {
+		lang_token t;
+		if (!lang_lex(lx, p->d, &t)) {
+			p->failed = true;
+			return false;
+		}
+		switch (t.kind) {
+		case LTK_EOF:
+			lang_error(p, t.loc, "'#end' expected (to close '%s' at line %u), found end of file", what, open.line);
+			note(p, open, "'%s' opened here", what);
+			return false;
+		case LTK_DIR_IF:
+		case LTK_DIR_WHILE:
+			level++;
+			break;
+		case LTK_DIR_ELSE:
+			if (level == 0 && stop_at_else) {
+				*found_else = true;
+				return true;
+			}
+			break;
+		case LTK_DIR_END:
+			if (level-- == 0)
+				return true;
+			break;
+		default:
+			break;
+		}
+	}
+}
+
+static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
+{
+	if (p->n_conds >= LANG_MAX_NESTING)
+		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_NESTING);
+	cond *c = &p->conds[p->n_conds++];
+	c->kind = kind;
+	c->loc = loc;
+	c->file = p->n_files - 1;
+	c->iterations = 0;
+	return true;
+}
+
+/* if = "#if" "(" expression ")" { token } [ "#else" { token } ] "#end" */
+static bool do_if(parser *p, diag_loc loc)
+{
+	bool truth, found_else;
+	if (!cond_expr(p, "after '#if'", &truth))
+		return false;
+	if (truth)
+		return push_cond(p, COND_IF, loc);
+	if (!skip_block(p, loc, "#if", true, &found_else))
+		return false;
+	return found_else ? push_cond(p, COND_ELSE, loc) : true;
+}
+
+static bool do_else(parser *p, diag_loc loc)
+{
+	bool found_else;
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind != COND_IF)
+		return lang_error(p, loc, "'#else' without '#if'");
+	cond c = p->conds[--p->n_conds];
+	if (!skip_block(p, c.loc, "#if", false, &found_else))
+		return false;
+	return true;
+}
+
+/* while = "#while" "(" expression ")" { token } "#end" */
+static bool do_while(parser *p, diag_loc loc)
+{
+	lang_lexer restart = p->files[p->n_files - 1].lx;
+	bool truth, found_else;
+	if (!cond_expr(p, "after '#while'", &truth))
+		return false;
+	if (!truth)
+		return skip_block(p, loc, "#while", false, &found_else);
+	if (!push_cond(p, COND_WHILE, loc))
+		return false;
+	p->conds[p->n_conds - 1].restart = restart;
+	return true;
+}
+
+static bool do_end(parser *p, diag_loc loc)
+{
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base)
+		return lang_error(p, loc, "'#end' without '#if' or '#while'");
+	cond *c = &p->conds[p->n_conds - 1];
+	if (c->kind != COND_WHILE) {
+		p->n_conds--;
+		return true;
+	}
+	long limit = LANG_MAX_LOOP_ITERATIONS;
+	if (++c->iterations >= limit)
+		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
+	if (++p->total_iterations >= DEFAULT_TOTAL_ITERATIONS)
+		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %d in all)",
+				  DEFAULT_TOTAL_ITERATIONS);
+	lang_lexer *lx = &p->files[p->n_files - 1].lx;
+	lang_lexer after_end = *lx;
+	*lx = c->restart;
+	bool truth;
+	if (!cond_expr(p, "after '#while'", &truth))
+		return false;
+	if (!truth) {
+		*lx = after_end;
+		p->n_conds--;
+	}
+	return true;
+}
+
+/* version = "#version" expression ";" */
+static bool do_version(parser *p)
+{
+	double v;
+	p->directive_expr = true;
+	bool ok = lang_float(p, "after '#version'", &v) && lang_expect(p, LTK_SEMI, "after the #version number");
+	p->directive_expr = false;
+	return ok;
+}
+
+/* The end of a file: its conditionals must be closed; its #local names die. */
+static bool end_of_file(parser *p, const lang_token *t)
+{
+	include_frame *f = &p->files[p->n_files - 1];
+	if (p->n_conds > f->cond_base) {
+		cond *c = &p->conds[p->n_conds - 1];
+		const char *what = c->kind == COND_WHILE ? "#while" : "#if";
+		lang_error(p, t->loc, "'#end' expected (to close '%s' at line %u), found end of file", what, c->loc.line);
+		note(p, c->loc, "'%s' opened here", what);
+		return false;
+	}
+	pop_scope(p, p->n_files - 1);
+	if (p->n_files > 1)
+		p->n_files--;
+	else
+		p->eof = *t, p->n_files = 0;
+	return true;
+}
+
+/* The next token after running directives. */
+static bool fetch(parser *p, lang_token *t)
+{
+	for (;;) {
+		if (p->failed || p->n_files == 0) {
+			*t = p->eof;
+			return !p->failed;
+		}
+		if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, t)) {
+			p->failed = true;
+			p->eof.loc = t->loc;
+			*t = p->eof;
+			return false;
+		}
+		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF &&
+		    !(t->kind == LTK_UNSUPPORTED && t->text[0] == '#'))
+			return true;
+		if (t->kind == LTK_UNSUPPORTED) {
+			report_unsupported(p, t);
+			*t = p->eof;
+			return false;
+		}
+		if (t->kind == LTK_EOF) {
+			if (p->n_files == 1 && p->directive_expr)
+				return true; /* a directive's expression met the end of the scene */
+			if (!end_of_file(p, t))
+				return false;
+			continue;
+		}
+		if (p->directive_expr)
+			return true; /* "expected ';' ..., found '#declare'" */
+		lang_token dir = *t;
+		bool ok;
+		switch (dir.kind) {
+		case LTK_DIR_INCLUDE: ok = do_include(p, dir.loc); break;
+		case LTK_DIR_DECLARE:
+		case LTK_DIR_LOCAL: ok = do_declare(p, &dir); break;
+		case LTK_DIR_IF: ok = do_if(p, dir.loc); break;
+		case LTK_DIR_ELSE: ok = do_else(p, dir.loc); break;
+		case LTK_DIR_END: ok = do_end(p, dir.loc); break;
+		case LTK_DIR_WHILE: ok = do_while(p, dir.loc); break;
+		default: ok = do_version(p); break;
+		}
+		if (!ok) {
+			p->failed = true;
+			*t = p->eof;
+			return false;
+		}
+	}
+}
+
+lang_token *lang_peek(parser *p)
+{
+	if (!p->have_tok) {
+		lang_token t;
+		fetch(p, &t);
+		p->tok = t;
+		p->have_tok = true;
+	}
+	return &p->tok;
+}
+
+lang_token *lang_advance(parser *p)
+{
+	lang_peek(p);
+	p->prev = p->tok;
+	p->have_tok = false;
+	return &p->prev;
+}
+
+bool lang_accept(parser *p, lang_tok k)
+{
+	if (lang_peek(p)->kind != k)
+		return false;
+	lang_advance(p);
+	return true;
+}
+
+bool lang_expect(parser *p, lang_tok k, const char *context)
+{
+	if (lang_accept(p, k))
+		return true;
+	return lang_error_found(p, "expected %s %s", lang_tok_name(k), context);
+}
+
+bool lang_expect_close(parser *p, diag_loc open, const char *what)
+{
+	if (lang_accept(p, LTK_RBRACE))
+		return true;
+	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
+	lang_error_found(p, "expected '}' to close '%s' (opened at line %u)", what, open.line);
+	if (at_eof)
+		note(p, open, "'%s' opened here", what);
+	return false;
+}
+
+void lang_skip_optional_semi(parser *p)
+{
+	if (p->have_tok || p->n_files == 0)
+		return;
+	lang_lexer *lx = &p->files[p->n_files - 1].lx;
+	lang_lexer save = *lx;
+	lang_token t;
+	diag quiet;
+	diag_init(&quiet, NULL);
+	if (!lang_lex(lx, &quiet, &t) || t.kind != LTK_SEMI)
+		*lx = save; /* any error is reported again when the token is read for real */
+}
+
+/* ---- expressions ------------------------------------------------------------------------- */
+
+const char *lang_value_kind_name(const value *v)
+{
+	switch (v->kind) {
+	case VAL_FLOAT: return "a float";
+	case VAL_VECTOR: return v->n == 2 ? "a 2-vector" : v->n == 3 ? "a vector" : "a vector of another size";
+	case VAL_COLOR: return "a colour";
+	case VAL_STRING: return "a string";
+	case VAL_MATERIAL: return "a material";
+	case VAL_OBJECT: return "an object";
+	}
+	return "a value";
+}
+
+static void set_float(value *v, double x)
+{
+	v->kind = VAL_FLOAT;
+	v->n = 1;
+	v->v[0] = x;
+}
+
+static bool finite_result(parser *p, diag_loc loc, const value *v, const char *op)
+{
+	for (int i = 0; i < v->n; i++)
+		if (!isfinite(v->v[i]))
+			return lang_error(p, loc, "%s produces %s", op, isnan(v->v[i]) ? "NaN (not a number)" : "an infinity");
+	return true;
+}
+
+static bool is_numeric(const value *v) { return v->kind == VAL_FLOAT || v->kind == VAL_VECTOR || v->kind == VAL_COLOR; }
+
+/* Brings a and b to the same shape for a component-wise operation (a float is promoted). */
+static bool unify(parser *p, diag_loc loc, value *a, value *b, const char *op)
+{
+	if (!is_numeric(a) || !is_numeric(b))
+		return lang_error(p, loc, "cannot apply '%s' to %s and %s", op, lang_value_kind_name(a), lang_value_kind_name(b));
+	if (a->kind == VAL_FLOAT && b->kind != VAL_FLOAT) {
+		for (int i = 1; i < b->n; i++)
+			a->v[i] = a->v[0];
+		a->n = b->n;
+		a->kind = b->kind;
+	} else if (b->kind == VAL_FLOAT && a->kind != VAL_FLOAT) {
+		for (int i = 1; i < a->n; i++)
+			b->v[i] = b->v[0];
+		b->n = a->n;
+	}
+	if (a->n != b->n)
+		return lang_error(p, loc, "cannot apply '%s' to vectors of %d and %d components", op, a->n, b->n);
+	if (b->kind == VAL_COLOR)
+		a->kind = VAL_COLOR;
+	return true;
+}
+
+static bool need_float(parser *p, diag_loc loc, const value *v, const char *what)
+{
+	if (v->kind == VAL_FLOAT)
+		return true;
+	return lang_error(p, loc, "%s needs a float, found %s", what, lang_value_kind_name(v));
+}
+
+static bool expr_or(parser *p, value *out);
+
+/* vector = "<" expression { "," expression } ">"   (a '>' here closes the vector) */
+static bool vector_literal(parser *p, value *out)
+{
+	diag_loc open = p->prev.loc;
+	bool saved = p->no_gt;
+	p->no_gt = true;
+	out->kind = VAL_VECTOR;
+	out->n = 0;
+	for (;;) {
+		value c;
+		if (!expr_or(p, &c))
+			return false;
+		if (!need_float(p, p->prev.loc, &c, "a vector component"))
+			return false;
+		if (out->n >= LANG_MAX_VECTOR)
+			return lang_error(p, open, "vector has too many components (limit is %d)", LANG_MAX_VECTOR);
+		out->v[out->n++] = c.v[0];
+		if (lang_accept(p, LTK_COMMA))
+			continue;
+		if (lang_peek(p)->kind == LTK_GT)
+			break;
+		p->no_gt = saved;
+		return lang_error_found(p, "expected ',' or '>' in the vector opened at line %u, column %u", open.line, open.col);
+	}
+	lang_advance(p);
+	p->no_gt = saved;
+	return true;
+}
+
+typedef struct func {
+	lang_tok tok;
+	int arity; /* -1: two or more */
+} func;
+
+static const func funcs[] = {
+	{LTK_KW_SIN, 1},     {LTK_KW_COS, 1},     {LTK_KW_TAN, 1},        {LTK_KW_ASIN, 1},
+	{LTK_KW_ACOS, 1},    {LTK_KW_ATAN2, 2},   {LTK_KW_SQRT, 1},       {LTK_KW_POW, 2},
+	{LTK_KW_EXP, 1},     {LTK_KW_LOG, 1},     {LTK_KW_ABS, 1},        {LTK_KW_MIN, -1},
+	{LTK_KW_MAX, -1},    {LTK_KW_MOD, 2},     {LTK_KW_FLOOR, 1},      {LTK_KW_CEIL, 1},
+	{LTK_KW_RADIANS, 1}, {LTK_KW_DEGREES, 1}, {LTK_KW_VLENGTH, 1},    {LTK_KW_VNORMALIZE, 1},
+	{LTK_KW_VDOT, 2},    {LTK_KW_VCROSS, 2},
+};
+
+static const double PI = 3.14159265358979323846;
+
+static bool need_vec3(parser *p, diag_loc loc, const value *v, const char *fname)
+{
+	if ((v->kind == VAL_VECTOR || v->kind == VAL_COLOR) && v->n == 3)
+		return true;
+	return lang_error(p, loc, "'%s' needs a 3-vector, found %s", fname, lang_value_kind_name(v));
+}
+
+/* call = function "(" expression { "," expression } ")" */
+static bool call(parser *p, const lang_token *name, const func *f, value *out)
+{
+	const char *fname = lang_tok_name(name->kind);
+	char nm[32];
+	snprintf(nm, sizeof nm, "%.*s", (int)name->len, name->text);
+	fname = nm;
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "after '%s'", fname);
+	if (!lang_expect(p, LTK_LPAREN, ctx))
+		return false;
+	bool saved = p->no_gt;
+	p->no_gt = false;
+	value a[LANG_MAX_VECTOR];
+	diag_loc aloc[LANG_MAX_VECTOR];
+	int n = 0;
+	for (;;) {
+		if (n == LANG_MAX_VECTOR)
+			return lang_error(p, name->loc, "too many arguments to '%s' (limit is %d)", fname, LANG_MAX_VECTOR);
+		aloc[n] = lang_peek(p)->loc;
+		if (!expr_or(p, &a[n]))
+			return false;
+		n++;
+		if (!lang_accept(p, LTK_COMMA))
+			break;
+	}
+	snprintf(ctx, sizeof ctx, "to close the arguments of '%s'", fname);
+	if (!lang_expect(p, LTK_RPAREN, ctx))
+		return false;
+	p->no_gt = saved;
+	if ((f->arity > 0 && n != f->arity) || (f->arity < 0 && n < 2))
+		return lang_error(p, name->loc, "'%s' takes %s%d argument%s, found %d", fname, f->arity < 0 ? "at least " : "",
+				  f->arity < 0 ? 2 : f->arity, (f->arity == 1) ? "" : "s", n);
+	lang_tok k = f->tok;
+	if (k == LTK_KW_VLENGTH || k == LTK_KW_VNORMALIZE || k == LTK_KW_VDOT || k == LTK_KW_VCROSS) {
+		for (int i = 0; i < n; i++)
+			if (!need_vec3(p, aloc[i], &a[i], fname))
+				return false;
+		dvec3 u = d3(a[0].v[0], a[0].v[1], a[0].v[2]);
+		dvec3 w = n > 1 ? d3(a[1].v[0], a[1].v[1], a[1].v[2]) : u;
+		if (k == LTK_KW_VLENGTH) {
+			set_float(out, d3_length(u));
+		} else if (k == LTK_KW_VDOT) {
+			set_float(out, d3_dot(u, w));
+		} else {
+			dvec3 r;
+			if (k == LTK_KW_VCROSS) {
+				r = d3_cross(u, w);
+			} else {
+				double len = d3_length(u);
+				if (!(len > 0))
+					return lang_error(p, aloc[0], "'vnormalize' of a zero-length vector");
+				r = d3_scale(u, 1.0 / len);
+			}
+			*out = a[0];
+			out->kind = VAL_VECTOR;
+			out->v[0] = r.x, out->v[1] = r.y, out->v[2] = r.z;
+		}
+		return finite_result(p, name->loc, out, fname);
+	}
+	for (int i = 0; i < n; i++)
+		if (!need_float(p, aloc[i], &a[i], fname))
+			return false;
+	double x = a[0].v[0], y = n > 1 ? a[1].v[0] : 0, r = 0;
+	switch (k) {
+	case LTK_KW_SIN: r = sin(x); break;
+	case LTK_KW_COS: r = cos(x); break;
+	case LTK_KW_TAN: r = tan(x); break;
+	case LTK_KW_ASIN:
+	case LTK_KW_ACOS:
+		if (x < -1 || x > 1)
+			return lang_error(p, aloc[0], "'%s' of %g is outside [-1, 1]", fname, x);
+		r = k == LTK_KW_ASIN ? asin(x) : acos(x);
+		break;
+	case LTK_KW_ATAN2: r = atan2(x, y); break;
+	case LTK_KW_SQRT:
+		if (x < 0)
+			return lang_error(p, aloc[0], "'sqrt' of a negative number (%g)", x);
+		r = sqrt(x);
+		break;
+	case LTK_KW_POW: r = pow(x, y); break;
+	case LTK_KW_EXP: r = exp(x); break;
+	case LTK_KW_LOG:
+		if (!(x > 0))
+			return lang_error(p, aloc[0], "'log' of %g: the argument must be positive", x);
+		r = log(x);
+		break;
+	case LTK_KW_ABS: r = fabs(x); break;
+	case LTK_KW_MIN:
+	case LTK_KW_MAX:
+		r = x;
+		for (int i = 1; i < n; i++)
+			r = k == LTK_KW_MIN ? fmin(r, a[i].v[0]) : fmax(r, a[i].v[0]);
+		break;
+	case LTK_KW_MOD:
+		if (y == 0)
+			return lang_error(p, aloc[1], "'mod' by zero");
+		r = fmod(x, y);
+		break;
+	case LTK_KW_FLOOR: r = floor(x); break;
+	case LTK_KW_CEIL: r = ceil(x); break;
+	case LTK_KW_RADIANS: r = x * PI / 180.0; break;
+	case LTK_KW_DEGREES: r = x * 180.0 / PI; break;
+	default: break;
+	}
+	set_float(out, r);
+	return finite_result(p, name->loc, out, fname);
+}
+
+static bool expr_additive(parser *p, value *out);
+
+/* primary = number | string | "(" expression ")" | vector | colour | identifier | "x" | "y" | "z"
+ *         | "pi" | "clock" | call
+ * colour  = ("color" | "colour") [ "rgb" ] additive | "rgb" additive */
+static bool primary(parser *p, value *out)
+{
+	lang_token *t = lang_peek(p);
+	out->str = NULL, out->mat = NULL, out->obj = NULL;
+	switch (t->kind) {
+	case LTK_NUMBER:
+		set_float(out, t->number);
+		lang_advance(p);
+		return true;
+	case LTK_STRING:
+		return decode_string(p, lang_advance(p), out);
+	case LTK_LPAREN: {
+		lang_advance(p);
+		bool saved = p->no_gt;
+		p->no_gt = false;
+		if (!expr_or(p, out) || !lang_expect(p, LTK_RPAREN, "to close '('"))
+			return false;
+		p->no_gt = saved;
+		return true;
+	}
+	case LTK_LT:
+		lang_advance(p);
+		return vector_literal(p, out);
+	case LTK_KW_COLOR:
+	case LTK_KW_COLOUR:
+	case LTK_KW_RGB: {
+		diag_loc loc = t->loc;
+		if (lang_advance(p)->kind != LTK_KW_RGB)
+			lang_accept(p, LTK_KW_RGB);
+		if (!expr_additive(p, out))
+			return false;
+		if (out->kind == VAL_FLOAT) {
+			out->v[1] = out->v[2] = out->v[0];
+			out->n = 3;
+			out->kind = VAL_VECTOR;
+		}
+		if ((out->kind != VAL_VECTOR && out->kind != VAL_COLOR) || out->n != 3)
+			return lang_error(p, loc, "a colour needs a float or a 3-vector, found %s", lang_value_kind_name(out));
+		out->kind = VAL_COLOR;
+		return true;
+	}
+	case LTK_KW_X:
+	case LTK_KW_Y:
+	case LTK_KW_Z:
+		out->kind = VAL_VECTOR;
+		out->n = 3;
+		out->v[0] = t->kind == LTK_KW_X, out->v[1] = t->kind == LTK_KW_Y, out->v[2] = t->kind == LTK_KW_Z;
+		lang_advance(p);
+		return true;
+	case LTK_KW_PI:
+		set_float(out, PI);
+		lang_advance(p);
+		return true;
+	case LTK_KW_CLOCK:
+		set_float(out, p->opt.clock);
+		lang_advance(p);
+		return true;
+	case LTK_IDENT: {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		if (!s)
+			return lang_error(p, t->loc, "undeclared identifier '%.*s'", (int)t->len, t->text);
+		*out = s->val;
+		lang_advance(p);
+		return true;
+	}
+	default:
+		for (size_t i = 0; i < sizeof funcs / sizeof funcs[0]; i++)
+			if (funcs[i].tok == t->kind) {
+				lang_token name = *lang_advance(p);
+				return call(p, &name, &funcs[i], out);
+			}
+		return lang_error_found(p, "expected an expression");
+	}
+}
+
+/* unary = ( "-" | "+" | "!" ) unary | primary */
+static bool unary(parser *p, value *out)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_MINUS && t->kind != LTK_PLUS && t->kind != LTK_BANG)
+		return primary(p, out);
+	lang_token op = *lang_advance(p);
+	if (!lang_enter(p, op.loc))
+		return false;
+	bool ok = unary(p, out);
+	lang_leave(p);
+	if (!ok)
+		return false;
+	if (op.kind == LTK_BANG) {
+		if (!need_float(p, op.loc, out, "'!'"))
+			return false;
+		set_float(out, out->v[0] == 0.0);
+	} else if (op.kind == LTK_MINUS) {
+		if (!is_numeric(out))
+			return lang_error(p, op.loc, "cannot negate %s", lang_value_kind_name(out));
+		for (int i = 0; i < out->n; i++)
+			out->v[i] = -out->v[i];
+	} else if (!is_numeric(out)) {
+		return lang_error(p, op.loc, "unary '+' needs a number, found %s", lang_value_kind_name(out));
+	}
+	return true;
+}
+
+/* term = unary { ( "*" | "/" ) unary } */
+static bool term(parser *p, value *out)
+{
+	if (!unary(p, out))
+		return false;
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_STAR && k != LTK_SLASH)
+			return true;
+		lang_token op = *lang_advance(p);
+		value b;
+		if (!unary(p, &b) || !unify(p, op.loc, out, &b, k == LTK_STAR ? "*" : "/"))
+			return false;
+		for (int i = 0; i < out->n; i++) {
+			if (k == LTK_SLASH && b.v[i] == 0.0)
+				return lang_error(p, op.loc, "division by zero");
+			out->v[i] = k == LTK_STAR ? out->v[i] * b.v[i] : out->v[i] / b.v[i];
+		}
+		if (!finite_result(p, op.loc, out, k == LTK_STAR ? "'*'" : "'/'"))
+			return false;
+	}
+}
+
+/* additive = term { ( "+" | "-" ) term } */
+static bool expr_additive(parser *p, value *out)
+{
+	if (!term(p, out))
+		return false;
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_PLUS && k != LTK_MINUS)
+			return true;
+		lang_token op = *lang_advance(p);
+		value b;
+		if (!term(p, &b) || !unify(p, op.loc, out, &b, k == LTK_PLUS ? "+" : "-"))
+			return false;
+		for (int i = 0; i < out->n; i++)
+			out->v[i] = k == LTK_PLUS ? out->v[i] + b.v[i] : out->v[i] - b.v[i];
+		if (!finite_result(p, op.loc, out, k == LTK_PLUS ? "'+'" : "'-'"))
+			return false;
+	}
+}
+
+/* comparison = additive { ( "<" | "<=" | "=" | "!=" | ">=" | ">" ) additive }
+ * Inside a vector literal a '>' is not an operator: it closes the vector. */
+static bool comparison(parser *p, value *out)
+{
+	if (!expr_additive(p, out))
+		return false;
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_LT && k != LTK_LE && k != LTK_EQ && k != LTK_NE && k != LTK_GE && k != LTK_GT)
+			return true;
+		if (k == LTK_GT && p->no_gt)
+			return true;
+		lang_token op = *lang_advance(p);
+		value b;
+		if (!expr_additive(p, &b))
+			return false;
+		if (!need_float(p, op.loc, out, "a comparison") || !need_float(p, op.loc, &b, "a comparison"))
+			return false;
+		double x = out->v[0], y = b.v[0];
+		bool r = k == LTK_LT ? x < y : k == LTK_LE ? x <= y : k == LTK_EQ ? x == y : k == LTK_NE ? x != y
+			 : k == LTK_GE ? x >= y : x > y;
+		set_float(out, r);
+	}
+}
+
+/* and = comparison { "&" comparison } */
+static bool expr_and(parser *p, value *out)
+{
+	if (!comparison(p, out))
+		return false;
+	while (lang_peek(p)->kind == LTK_AMP) {
+		lang_token op = *lang_advance(p);
+		value b;
+		if (!comparison(p, &b) || !need_float(p, op.loc, out, "'&'") || !need_float(p, op.loc, &b, "'&'"))
+			return false;
+		set_float(out, out->v[0] != 0 && b.v[0] != 0);
+	}
+	return true;
+}
+
+/* expression = and { "|" and } */
+static bool expr_or(parser *p, value *out)
+{
+	if (!lang_enter(p, lang_peek(p)->loc))
+		return false;
+	bool ok = expr_and(p, out);
+	while (ok && lang_peek(p)->kind == LTK_BAR) {
+		lang_token op = *lang_advance(p);
+		value b;
+		ok = expr_and(p, &b) && need_float(p, op.loc, out, "'|'") && need_float(p, op.loc, &b, "'|'");
+		if (ok)
+			set_float(out, out->v[0] != 0 || b.v[0] != 0);
+	}
+	lang_leave(p);
+	return ok;
+}
+
+bool lang_expr(parser *p, value *out) { return expr_or(p, out); }
+
+bool lang_float(parser *p, const char *what, double *out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	value v;
+	if (!lang_expr(p, &v))
+		return false;
+	if (v.kind != VAL_FLOAT)
+		return lang_error(p, loc, "expected a float %s, found %s", what, lang_value_kind_name(&v));
+	*out = v.v[0];
+	return true;
+}
+
+bool lang_int(parser *p, const char *what, long lo, long hi, long *out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	double x;
+	if (!lang_float(p, what, &x))
+		return false;
+	if (x != floor(x))
+		return lang_error(p, loc, "expected an integer %s, found %g", what, x);
+	if (x < (double)lo || x > (double)hi)
+		return lang_error(p, loc, "%g is out of range %s (limit is %ld to %ld)", x, what, lo, hi);
+	*out = (long)x;
+	return true;
+}
+
+bool lang_vec3(parser *p, const char *what, dvec3 *out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	value v;
+	if (!lang_expr(p, &v))
+		return false;
+	if (v.kind == VAL_FLOAT) {
+		*out = d3(v.v[0], v.v[0], v.v[0]);
+		return true;
+	}
+	if ((v.kind != VAL_VECTOR && v.kind != VAL_COLOR) || v.n != 3)
+		return lang_error(p, loc, "expected a vector %s, found %s", what, lang_value_kind_name(&v));
+	*out = d3(v.v[0], v.v[1], v.v[2]);
+	return true;
+}
+
+bool lang_color(parser *p, const char *what, vec3 *out)
+{
+	dvec3 c;
+	if (!lang_vec3(p, what, &c))
+		return false;
+	*out = d3_to_v3(c);
+	return true;
+}
+
+bool lang_string(parser *p, const char *what, const char **out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	value v;
+	if (!lang_expr(p, &v))
+		return false;
+	if (v.kind != VAL_STRING)
+		return lang_error(p, loc, "expected a string %s, found %s", what, lang_value_kind_name(&v));
+	*out = v.str;
+	return true;
+}
+
+bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc)
+{
+	*loc = lang_peek(p)->loc;
+	value v;
+	if (!lang_expr(p, &v))
+		return false;
+	if (v.kind != VAL_VECTOR)
+		return lang_error(p, *loc, "expected a vector of indices %s, found %s", what, lang_value_kind_name(&v));
+	for (int i = 0; i < v.n; i++) {
+		double x = v.v[i];
+		if (x != floor(x) || x < 0 || x > 4294967295.0)
+			return lang_error(p, *loc, "index %g %s is not a non-negative integer", x, what);
+		idx[i] = (uint32_t)x;
+	}
+	*n = v.n;
+	return true;
+}
+
+/* ---- entry point ------------------------------------------------------------------------- */
+
+lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, scene **out)
+{
+	*out = NULL;
+	parser *p = mem_calloc(1, sizeof *p);
+	scene *sc = scene_new();
+	if (!p || !sc) {
+		mem_free(p);
+		scene_free(sc);
+		diag_error(d, diag_noloc(), "out of memory");
+		return LANG_NO_MEMORY;
+	}
+	p->d = d;
+	p->sc = sc;
+	if (opt)
+		p->opt = *opt;
+	if (!p->opt.read)
+		p->opt.read = lang_read_file;
+	vecbuf_init(&p->globals, sizeof(symbol));
+	vecbuf_init(&p->locals, sizeof(symbol));
+	p->eof.kind = LTK_EOF;
+	lang_status st = LANG_OK;
+	const diag_source *src;
+	int err = open_source(p, path, &src);
+	if (err) {
+		if (err == ENOMEM) {
+			diag_error(d, diag_noloc(), "out of memory");
+			st = LANG_NO_MEMORY;
+		} else {
+			diag_file_error(d, path, "cannot open: %s", strerror(err));
+			st = LANG_IO_ERROR;
+		}
+	} else {
+		push_file(p, src, arena_strdup(&sc->arena, path), diag_noloc());
+		p->eof.loc = (diag_loc){src, 1, 1};
+		while (!p->failed && lang_peek(p)->kind != LTK_EOF)
+			if (!lang_statement(p))
+				break;
+		if (p->failed || d->errors)
+			st = LANG_SCENE_ERROR;
+		else if (scene_validate(sc, d) > 0)
+			st = LANG_SCENE_ERROR;
+	}
+	vecbuf_free(&p->globals);
+	vecbuf_free(&p->locals);
+	mem_free(p);
+	if (st != LANG_OK)
+		scene_free(sc);
+	else
+		*out = sc;
+	return st;
+}

@@ -1,0 +1,113 @@
+/* parser.h - internals shared by the two halves of the parser: the token stream with directives,
+ * includes and expressions (parser.c), and the statements that build the scene IR (stmt.c).
+ * Not a public interface: the renderer uses lang.h. */
+#ifndef CIRCE_LANG_PARSER_H
+#define CIRCE_LANG_PARSER_H
+
+#include "base/mem.h"
+#include "lang/lang.h"
+#include "lang/lex.h"
+#include "scene/scene.h"
+
+#include <stdbool.h>
+
+typedef enum value_kind { VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT } value_kind;
+
+/* A list of placed objects made by one object item (a union gives several). */
+typedef struct objlist {
+	scene_object *items;
+	size_t n;
+} objlist;
+
+typedef struct value {
+	value_kind kind;
+	int n; /* components of a vector or colour */
+	double v[LANG_MAX_VECTOR];
+	const char *str; /* VAL_STRING, in the scene arena */
+	const scene_material *mat;
+	const objlist *obj;
+} value;
+
+typedef struct include_frame {
+	lang_lexer lx;
+	const char *path; /* as resolved; the folder of later includes */
+	diag_loc included_at; /* the #include directive (no source for the main file) */
+	int cond_base; /* the conditional stack depth when the file was entered */
+} include_frame;
+
+typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE } cond_kind;
+
+typedef struct cond {
+	cond_kind kind;
+	diag_loc loc;
+	int file; /* index into files */
+	lang_lexer restart; /* COND_WHILE: just after the `#while` word */
+	long iterations;
+} cond;
+
+typedef struct symbol {
+	const char *name;
+	int depth; /* 0 global; k the k-th include level for #local */
+	diag_loc loc;
+	value val;
+} symbol;
+
+typedef struct parser {
+	diag *d;
+	scene *sc;
+	lang_options opt;
+	include_frame files[LANG_MAX_INCLUDE_DEPTH + 1];
+	int n_files;
+	cond conds[LANG_MAX_NESTING];
+	int n_conds;
+	lang_token tok; /* the lookahead, when have_tok */
+	bool have_tok;
+	lang_token prev; /* the last token consumed */
+	lang_token eof; /* returned after the last file or an error */
+	bool failed; /* the first error was reported: report no more */
+	bool no_gt; /* inside < >: a '>' closes the vector */
+	bool directive_expr; /* parsing a directive's own expression: directives there are errors */
+	int depth; /* recursion guard for expressions and nested blocks */
+	long total_iterations;
+	vecbuf globals, locals; /* symbol */
+} parser;
+
+/* ---- token stream (parser.c) ---- */
+lang_token *lang_peek(parser *p);
+lang_token *lang_advance(parser *p);
+bool lang_accept(parser *p, lang_tok k);
+/* Expects k; otherwise "expected K CONTEXT, found X". context: e.g. "after the sphere centre". */
+bool lang_expect(parser *p, lang_tok k, const char *context);
+/* Expects '}' closing what opened at open; names the opening on failure. */
+bool lang_expect_close(parser *p, diag_loc open, const char *what);
+/* Reports at the lookahead: "expected WHAT, found X" (or "'X' is not supported by circe"). */
+bool lang_error_found(parser *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Reports at loc; false. Nothing is printed once an error was reported. */
+bool lang_error(parser *p, diag_loc loc, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* A description of a token for messages: "'1'", "'sphere'", "end of file", "identifier 'Foo'". */
+const char *lang_describe(const lang_token *t, char *buf, size_t size);
+bool lang_enter(parser *p, diag_loc loc); /* recursion guard */
+static inline void lang_leave(parser *p) { p->depth--; }
+/* After a block value of #declare: consumes an optional ';' without running directives. */
+void lang_skip_optional_semi(parser *p);
+
+/* ---- expressions (parser.c) ---- */
+bool lang_expr(parser *p, value *out);
+bool lang_float(parser *p, const char *what, double *out);
+bool lang_int(parser *p, const char *what, long lo, long hi, long *out);
+bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted */
+bool lang_color(parser *p, const char *what, vec3 *out); /* a float is promoted */
+bool lang_string(parser *p, const char *what, const char **out);
+/* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
+bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);
+const symbol *lang_lookup(parser *p, const char *name, size_t len);
+const char *lang_value_kind_name(const value *v);
+
+/* ---- statements (stmt.c) ---- */
+/* statement = global_settings | camera | light_source | background | sky_sphere | object_item */
+bool lang_statement(parser *p);
+/* The right-hand side of #declare that is a block (object, material, texture); false with
+ * *handled false when the lookahead starts none of them. */
+bool lang_declare_block(parser *p, value *out, bool *handled);
+
+#endif

@@ -1,0 +1,1541 @@
+/* stmt.c - the statements of the scene language and the scene IR they build: settings, camera,
+ * lights, environment, objects (primitives, meshes, subdivision cages, instances, unions) and
+ * materials. Each parse function carries its grammar rule as a comment (grammar/scene.ebnf). */
+#include "lang/parser.h"
+
+#include <math.h>
+#include <string.h>
+
+#define TRY(x)                                                                                     \
+	do {                                                                                       \
+		if (!(x))                                                                          \
+			return false;                                                              \
+	} while (0)
+
+/* Reports "expected EXPECT or '}' to close 'what'" at the lookahead, with a note at the opening
+ * brace when the file ended. */
+static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
+{
+	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
+	lang_error_found(p, "expected %s or '}' to close '%s' (opened at line %u)", expect, what, open.line);
+	if (at_eof)
+		diag_note(p->d, open, "'%s' opened here", what);
+	return false;
+}
+
+/* "{" after a block keyword; *open receives its location. */
+static bool open_block(parser *p, const char *what, diag_loc *open)
+{
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "after '%s'", what);
+	*open = lang_peek(p)->loc;
+	return lang_expect(p, LTK_LBRACE, ctx);
+}
+
+static bool positive(parser *p, diag_loc loc, const char *what, double x)
+{
+	if (x > 0)
+		return true;
+	return lang_error(p, loc, "%s must be > 0, found %g", what, x);
+}
+
+static bool in_range(parser *p, diag_loc loc, const char *what, double x, double lo, double hi)
+{
+	if (x >= lo && x <= hi)
+		return true;
+	return lang_error(p, loc, "%s must be in [%g, %g], found %g", what, lo, hi, x);
+}
+
+/* ---- materials --------------------------------------------------------------------------- */
+
+static scene_material *new_material(parser *p, diag_loc loc, scene_material_kind kind)
+{
+	scene_material *m = scene_new_material(p->sc, loc);
+	if (!m) {
+		lang_error(p, loc, "out of memory");
+		return NULL;
+	}
+	m->kind = kind;
+	if (kind == MAT_TEXTURE) {
+		m->diffuse = 0.6f; /* POV-Ray's finish defaults */
+		m->roughness = 0.05f;
+	}
+	return m;
+}
+
+/* A new record with the contents of base (a declared material being modified). */
+static scene_material *copy_material(parser *p, const scene_material *base, diag_loc loc)
+{
+	scene_material *m = new_material(p, loc, base->kind);
+	if (!m)
+		return NULL;
+	uint32_t id = m->id;
+	scene_material *next = m->next;
+	*m = *base;
+	m->id = id, m->next = next, m->loc = loc, m->name = NULL;
+	return m;
+}
+
+/* pigment = "pigment" "{" ( colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}" ) "}" */
+static bool pigment(parser *p, scene_material *m)
+{
+	diag_loc open, io;
+	lang_advance(p);
+	TRY(open_block(p, "pigment", &open));
+	if (lang_accept(p, LTK_KW_IMAGE_MAP)) {
+		TRY(open_block(p, "image_map", &io));
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_KW_PNG && k != LTK_KW_JPEG && k != LTK_KW_EXR)
+			return lang_error_found(p, "expected the image type (png, jpeg or exr) in 'image_map'");
+		lang_advance(p);
+		TRY(lang_string(p, "as the image file", &m->image));
+		TRY(lang_expect_close(p, io, "image_map"));
+	} else {
+		TRY(lang_color(p, "as the pigment colour", &m->color));
+	}
+	return lang_expect_close(p, open, "pigment");
+}
+
+/* finish = "finish" "{" { "diffuse" float | "specular" float | "roughness" float } "}" */
+static bool finish(parser *p, scene_material *m)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, "finish", &open));
+	for (;;) {
+		lang_token *t = lang_peek(p);
+		diag_loc loc = t->loc;
+		double x;
+		switch (t->kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			return true;
+		case LTK_KW_DIFFUSE:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'diffuse'", &x) && in_range(p, loc, "finish diffuse", x, 0, 1));
+			m->diffuse = (float)x;
+			break;
+		case LTK_KW_SPECULAR:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'specular'", &x) && in_range(p, loc, "finish specular", x, 0, 1));
+			m->specular = (float)x;
+			break;
+		case LTK_KW_ROUGHNESS:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, loc, "finish roughness", x, 0, 1));
+			m->roughness = (float)x;
+			break;
+		default:
+			return bad_item(p, open, "finish", "diffuse, specular or roughness");
+		}
+	}
+}
+
+/* interior = "interior" "{" [ "ior" float ] "}" */
+static bool interior(parser *p, float *ior)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, "interior", &open));
+	if (lang_peek(p)->kind == LTK_KW_IOR) {
+		diag_loc loc = lang_advance(p)->loc;
+		double x;
+		TRY(lang_float(p, "after 'ior'", &x) && positive(p, loc, "ior", x));
+		*ior = (float)x;
+	}
+	return lang_expect_close(p, open, "interior");
+}
+
+static const scene_material *declared_material(parser *p)
+{
+	lang_token t = *lang_advance(p);
+	const symbol *s = lang_lookup(p, t.text, t.len);
+	if (!s) {
+		lang_error(p, t.loc, "undeclared identifier '%.*s'", (int)t.len, t.text);
+		return NULL;
+	}
+	if (s->val.kind != VAL_MATERIAL) {
+		lang_error(p, t.loc, "'%.*s' is %s, not a material", (int)t.len, t.text, lang_value_kind_name(&s->val));
+		return NULL;
+	}
+	return s->val.mat;
+}
+
+/* texture = "texture" "{" [ identifier ] { pigment | finish } "}"
+ * *fresh (may be NULL) tells whether the record is new, hence the caller's to modify. */
+static bool texture(parser *p, const scene_material **out, bool *fresh)
+{
+	if (fresh)
+		*fresh = false;
+	diag_loc kw = lang_advance(p)->loc, open;
+	TRY(open_block(p, "texture", &open));
+	const scene_material *base = NULL;
+	if (lang_peek(p)->kind == LTK_IDENT)
+		TRY(base = declared_material(p));
+	if (base && lang_peek(p)->kind == LTK_RBRACE) {
+		lang_advance(p);
+		*out = base;
+		return true;
+	}
+	scene_material *m = base ? copy_material(p, base, kw) : new_material(p, kw, MAT_TEXTURE);
+	TRY(m);
+	if (base && m->kind != MAT_TEXTURE)
+		return lang_error(p, kw, "'texture' needs a texture, but this one is a %s material",
+				  scene_material_kind_name(m->kind));
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k == LTK_KW_PIGMENT)
+			TRY(pigment(p, m));
+		else if (k == LTK_KW_FINISH)
+			TRY(finish(p, m));
+		else if (k == LTK_RBRACE)
+			break;
+		else
+			return bad_item(p, open, "texture", "pigment or finish");
+	}
+	lang_advance(p);
+	*out = m;
+	if (fresh)
+		*fresh = true;
+	return true;
+}
+
+static bool form(parser *p, scene_material *m, scene_sss_form f, const lang_token *t)
+{
+	scene_sss *s = &m->sss;
+	if (s->given != SSS_FORM_DEFAULT && s->given != f) {
+		diag_loc other = f == SSS_FORM_PHYSICAL ? s->artist_loc : s->physical_loc;
+		return lang_error(p, t->loc,
+				  "'%.*s' gives the %s form, but the %s form was given at line %u; give sigma_s/sigma_a "
+				  "(or a preset) or color/radius, not both",
+				  (int)t->len, t->text, f == SSS_FORM_PHYSICAL ? "physical" : "artist",
+				  f == SSS_FORM_PHYSICAL ? "artist" : "physical", other.line);
+	}
+	if (s->given == SSS_FORM_DEFAULT) {
+		if (f == SSS_FORM_PHYSICAL)
+			s->physical_loc = t->loc;
+		else
+			s->artist_loc = t->loc;
+	}
+	s->given = f;
+	return true;
+}
+
+static bool positive3(parser *p, diag_loc loc, const char *what, vec3 c)
+{
+	if (c.x > 0 && c.y > 0 && c.z > 0)
+		return true;
+	return lang_error(p, loc, "%s must be > 0 in every channel, found <%g, %g, %g>", what, c.x, c.y, c.z);
+}
+
+/* sss_block = ( "skin" | "wax" | "marble" ) "{" { sss_param } "}"
+ * sss_param = "preset" string | "sigma_s" colour | "sigma_a" colour | "color" colour
+ *           | "image" string | "radius" colour | "ior" float | "roughness" float
+ *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
+ *           | "normal_map" string [ "strength" float ] | "anisotropy" float
+ *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" ) | "group" string */
+static bool sss_block(parser *p, scene_material *m)
+{
+	lang_token kw = *lang_advance(p);
+	const char *what = kw.kind == LTK_KW_SKIN ? "skin" : kw.kind == LTK_KW_WAX ? "wax" : "marble";
+	diag_loc open;
+	TRY(open_block(p, what, &open));
+	scene_sss *s = &m->sss;
+	scene_sss_defaults(m);
+	scene_sss_derive(s); /* both forms of the defaults; the user's values override one */
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		double x;
+		if (t.kind == LTK_RBRACE)
+			break;
+		switch (t.kind) {
+		case LTK_KW_PRESET: {
+			lang_advance(p);
+			TRY(form(p, m, SSS_FORM_PHYSICAL, &t));
+			diag_loc sloc = lang_peek(p)->loc;
+			const char *name;
+			TRY(lang_string(p, "after 'preset'", &name));
+			const scene_sss_preset *pr = scene_sss_preset_find(name);
+			if (!pr)
+				return lang_error(p, sloc,
+						  "unknown preset '%s' (presets: apple, chicken1, chicken2, cream, ketchup, "
+						  "marble, potato, skimmilk, skin1, skin2, wholemilk)",
+						  name);
+			s->preset = pr->name;
+			s->sigma_s_per_mm = v3(pr->sigma_s_per_mm[0], pr->sigma_s_per_mm[1], pr->sigma_s_per_mm[2]);
+			s->sigma_a_per_mm = v3(pr->sigma_a_per_mm[0], pr->sigma_a_per_mm[1], pr->sigma_a_per_mm[2]);
+			break;
+		}
+		case LTK_KW_SIGMA_S:
+		case LTK_KW_SIGMA_A: {
+			lang_advance(p);
+			TRY(form(p, m, SSS_FORM_PHYSICAL, &t));
+			vec3 *c = t.kind == LTK_KW_SIGMA_S ? &s->sigma_s_per_mm : &s->sigma_a_per_mm;
+			TRY(lang_color(p, t.kind == LTK_KW_SIGMA_S ? "after 'sigma_s'" : "after 'sigma_a'", c));
+			TRY(positive3(p, t.loc, t.kind == LTK_KW_SIGMA_S ? "sigma_s" : "sigma_a", *c));
+			break;
+		}
+		case LTK_KW_COLOR:
+		case LTK_KW_COLOUR:
+		case LTK_KW_RGB:
+			TRY(form(p, m, SSS_FORM_ARTIST, &t));
+			TRY(lang_color(p, "as the SSS colour", &s->albedo));
+			if (!(s->albedo.x >= 0 && s->albedo.y >= 0 && s->albedo.z >= 0 && s->albedo.x <= 1 &&
+			      s->albedo.y <= 1 && s->albedo.z <= 1))
+				return lang_error(p, t.loc, "SSS colour must be in [0, 1] in every channel, found <%g, %g, %g>",
+						  s->albedo.x, s->albedo.y, s->albedo.z);
+			break;
+		case LTK_KW_IMAGE:
+			lang_advance(p);
+			TRY(form(p, m, SSS_FORM_ARTIST, &t));
+			TRY(lang_string(p, "after 'image'", &s->albedo_image));
+			break;
+		case LTK_KW_RADIUS:
+			lang_advance(p);
+			TRY(form(p, m, SSS_FORM_ARTIST, &t));
+			TRY(lang_color(p, "after 'radius'", &s->radius_mm));
+			TRY(positive3(p, t.loc, "radius", s->radius_mm));
+			break;
+		case LTK_KW_IOR:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'ior'", &x) && positive(p, t.loc, "ior", x));
+			s->ior = (float)x;
+			break;
+		case LTK_KW_ROUGHNESS:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, t.loc, "roughness", x, 0, 1));
+			s->roughness = (float)x;
+			break;
+		case LTK_KW_ANISOTROPY:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'anisotropy'", &x) && in_range(p, t.loc, "anisotropy", x, -0.99, 0.99));
+			s->anisotropy = (float)x;
+			break;
+		case LTK_KW_PROFILE: {
+			lang_advance(p);
+			lang_tok k = lang_peek(p)->kind;
+			if (k == LTK_KW_GAUSSIAN)
+				s->profile = PROFILE_GAUSSIAN;
+			else if (k == LTK_KW_SUM_OF_GAUSSIANS)
+				s->profile = PROFILE_SUM_OF_GAUSSIANS;
+			else if (k == LTK_KW_BURLEY)
+				s->profile = PROFILE_BURLEY;
+			else if (k == LTK_KW_DIPOLE)
+				s->profile = PROFILE_DIPOLE;
+			else
+				return lang_error_found(p, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
+			lang_advance(p);
+			break;
+		}
+		case LTK_KW_METHOD: {
+			lang_advance(p);
+			lang_tok k = lang_peek(p)->kind;
+			if (k == LTK_KW_CIRCLE)
+				s->method = SSS_METHOD_CIRCLE;
+			else if (k == LTK_KW_FULLCIRCLE)
+				s->method = SSS_METHOD_FULLCIRCLE;
+			else if (k == LTK_KW_DISK)
+				s->method = SSS_METHOD_DISK;
+			else if (k == LTK_KW_VOLUME)
+				s->method = SSS_METHOD_VOLUME;
+			else
+				return lang_error_found(p, "expected circle, fullcircle, disk or volume after 'method'");
+			lang_advance(p);
+			break;
+		}
+		case LTK_KW_NORMAL_MAP:
+			lang_advance(p);
+			TRY(lang_string(p, "after 'normal_map'", &s->normal_map));
+			if (lang_peek(p)->kind == LTK_KW_STRENGTH) {
+				lang_advance(p);
+				TRY(lang_float(p, "after 'strength'", &x));
+				s->normal_strength = (float)x;
+			}
+			break;
+		case LTK_KW_GROUP:
+			lang_advance(p);
+			TRY(lang_string(p, "after 'group'", &s->group));
+			break;
+		default:
+			return bad_item(p, open, what, "an SSS parameter (preset, sigma_s, sigma_a, color, radius, ior, ...)");
+		}
+	}
+	lang_advance(p);
+	scene_sss_derive(s);
+	return true;
+}
+
+/* material = "material" "{" [ identifier ] { material_item } "}"
+ * material_item = "diffuse" "{" ( colour | "image" string ) "}" | sss_block | texture
+ *               | interior | "emission" colour */
+static bool material(parser *p, const scene_material **out)
+{
+	diag_loc kw = lang_advance(p)->loc, open;
+	TRY(open_block(p, "material", &open));
+	const scene_material *base = NULL;
+	if (lang_peek(p)->kind == LTK_IDENT)
+		TRY(base = declared_material(p));
+	if (base && lang_peek(p)->kind == LTK_RBRACE) {
+		lang_advance(p);
+		*out = base;
+		return true;
+	}
+	scene_material *m = base ? copy_material(p, base, kw) : new_material(p, kw, MAT_DIFFUSE);
+	TRY(m);
+	bool has_kind = base != NULL, has_emission = false;
+	diag_loc kind_loc = kw;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (t.kind == LTK_RBRACE)
+			break;
+		bool is_kind = t.kind == LTK_KW_DIFFUSE || t.kind == LTK_KW_SKIN || t.kind == LTK_KW_WAX ||
+			       t.kind == LTK_KW_MARBLE || t.kind == LTK_KW_TEXTURE;
+		if (is_kind && has_kind)
+			return lang_error(p, t.loc, "a material has one kind: '%.*s' after the one at line %u", (int)t.len,
+					  t.text, kind_loc.line);
+		if (is_kind)
+			has_kind = true, kind_loc = t.loc;
+		switch (t.kind) {
+		case LTK_KW_DIFFUSE: {
+			diag_loc dopen;
+			lang_advance(p);
+			TRY(open_block(p, "diffuse", &dopen));
+			m->kind = MAT_DIFFUSE;
+			if (lang_accept(p, LTK_KW_IMAGE))
+				TRY(lang_string(p, "after 'image'", &m->image));
+			else
+				TRY(lang_color(p, "as the diffuse colour", &m->color));
+			TRY(lang_expect_close(p, dopen, "diffuse"));
+			break;
+		}
+		case LTK_KW_SKIN:
+		case LTK_KW_WAX:
+		case LTK_KW_MARBLE:
+			m->kind = t.kind == LTK_KW_SKIN ? MAT_SKIN : t.kind == LTK_KW_WAX ? MAT_WAX : MAT_MARBLE;
+			TRY(sss_block(p, m));
+			break;
+		case LTK_KW_TEXTURE: {
+			const scene_material *tex;
+			TRY(texture(p, &tex, NULL));
+			vec3 em = m->emission;
+			uint32_t id = m->id;
+			scene_material *next = m->next;
+			*m = *tex;
+			m->id = id, m->next = next, m->loc = kw, m->name = NULL, m->emission = em;
+			break;
+		}
+		case LTK_KW_INTERIOR:
+			TRY(interior(p, &m->ior));
+			break;
+		case LTK_KW_EMISSION:
+			lang_advance(p);
+			TRY(lang_color(p, "after 'emission'", &m->emission));
+			has_emission = true;
+			break;
+		default:
+			return bad_item(p, open, "material", "diffuse, texture, skin, wax, marble, interior or emission");
+		}
+	}
+	lang_advance(p);
+	if (!has_kind && !has_emission)
+		return lang_error(p, kw, "empty material: give diffuse, texture, skin, wax, marble, emission or a declared "
+					 "material");
+	if (!has_kind) {
+		m->kind = MAT_EMISSION;
+		m->color = v3s(0.0f);
+	}
+	*out = m;
+	return true;
+}
+
+/* ---- object modifiers -------------------------------------------------------------------- */
+
+typedef struct mods {
+	xform t;
+	const scene_material *mat;
+	diag_loc mat_loc;
+	scene_material *tex; /* made by a bare pigment or finish on this item */
+	bool no_shadow;
+	bool has_interior;
+	float ior;
+	diag_loc interior_loc;
+} mods;
+
+static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc loc)
+{
+	if (m->mat)
+		return lang_error(p, loc, "a second material on the same object (the first is at line %u)", m->mat_loc.line);
+	m->mat = mat;
+	m->mat_loc = loc;
+	return true;
+}
+
+/* modifier = "translate" vector | "rotate" vector | "scale" ( float | vector )
+ *          | "matrix" "<" float { "," float } ">" | material | texture | pigment | finish
+ *          | interior | "no_shadow" */
+static bool modifier(parser *p, mods *m, bool *matched)
+{
+	lang_token t = *lang_peek(p);
+	dvec3 v;
+	*matched = true;
+	switch (t.kind) {
+	case LTK_KW_TRANSLATE:
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'translate'", &v));
+		m->t = xform_then(m->t, xform_translate(v));
+		return true;
+	case LTK_KW_ROTATE:
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'rotate'", &v));
+		m->t = xform_then(m->t, xform_rotate(v));
+		return true;
+	case LTK_KW_SCALE: {
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'scale'", &v));
+		xform s;
+		if (!xform_scale(v, &s))
+			return lang_error(p, t.loc, "scale by zero (<%g, %g, %g>) flattens the object", v.x, v.y, v.z);
+		m->t = xform_then(m->t, s);
+		return true;
+	}
+	case LTK_KW_MATRIX: {
+		lang_advance(p);
+		diag_loc loc = lang_peek(p)->loc;
+		value mv;
+		TRY(lang_expr(p, &mv));
+		if (mv.kind != VAL_VECTOR || mv.n != 12)
+			return lang_error(p, loc, "'matrix' needs 12 numbers <m00, m01, ..., m32>, found %s%s",
+					  lang_value_kind_name(&mv), mv.kind == VAL_VECTOR ? "" : "");
+		xform x;
+		if (!xform_from_pov_matrix(mv.v, &x))
+			return lang_error(p, loc, "'matrix' is singular (its 3x3 part has no inverse)");
+		m->t = xform_then(m->t, x);
+		return true;
+	}
+	case LTK_KW_MATERIAL: {
+		const scene_material *mat;
+		TRY(material(p, &mat));
+		return set_material(p, m, mat, t.loc);
+	}
+	case LTK_KW_TEXTURE: {
+		const scene_material *mat;
+		bool fresh;
+		TRY(texture(p, &mat, &fresh));
+		if (fresh)
+			m->tex = (scene_material *)mat; /* made here: interior may set its ior */
+		return set_material(p, m, mat, t.loc);
+	}
+	case LTK_KW_PIGMENT:
+	case LTK_KW_FINISH:
+		if (!m->tex) {
+			TRY(m->tex = new_material(p, t.loc, MAT_TEXTURE));
+			TRY(set_material(p, m, m->tex, t.loc));
+		}
+		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex) : finish(p, m->tex);
+	case LTK_KW_INTERIOR:
+		m->has_interior = true;
+		m->interior_loc = t.loc;
+		return interior(p, &m->ior);
+	case LTK_KW_NO_SHADOW:
+		lang_advance(p);
+		m->no_shadow = true;
+		return true;
+	default:
+		*matched = false;
+		return true;
+	}
+}
+
+/* Applies an item's modifiers to the objects it made (out[start..]). */
+static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
+{
+	if (m->has_interior) {
+		if (!m->mat || m->mat->kind != MAT_TEXTURE)
+			return lang_error(p, m->interior_loc, "'interior' sets the ior of a texture; this object has none");
+		scene_material *mm = (scene_material *)m->mat; /* made or copied here, hence writable */
+		if (m->mat != m->tex) {
+			TRY(mm = copy_material(p, m->mat, m->mat_loc));
+			m->mat = mm;
+		}
+		mm->ior = m->ior;
+	}
+	for (size_t i = start; i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->transform = xform_then(o->transform, m->t);
+		if (!o->material)
+			o->material = m->mat;
+		o->no_shadow |= m->no_shadow;
+	}
+	return true;
+}
+
+/* { modifier } "}" : the common tail of every object item. */
+static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
+{
+	mods m = {.t = xform_identity()};
+	for (;;) {
+		if (lang_accept(p, LTK_RBRACE))
+			return apply_mods(p, out, start, &m);
+		bool matched;
+		TRY(modifier(p, &m, &matched));
+		if (!matched)
+			return bad_item(p, open, what, "a transform, a material, no_shadow");
+	}
+}
+
+static scene_geom *new_geom(parser *p, scene_shape_kind kind, diag_loc loc)
+{
+	scene_geom *g = scene_new_geom(p->sc, kind, loc);
+	if (!g)
+		lang_error(p, loc, "out of memory");
+	return g;
+}
+
+static bool place(parser *p, vecbuf *out, const scene_geom *g, diag_loc loc)
+{
+	scene_object o = {.loc = loc, .geom = g, .transform = xform_identity()};
+	if (!vecbuf_push(out, &o))
+		return lang_error(p, loc, "out of memory");
+	return true;
+}
+
+/* ---- primitives -------------------------------------------------------------------------- */
+
+/* sphere = "sphere" "{" vector "," float { modifier } "}" */
+static bool sphere(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	scene_geom *g;
+	TRY(g = new_geom(p, SHAPE_SPHERE, kw));
+	TRY(lang_vec3(p, "as the sphere centre", &g->u.sphere.center));
+	TRY(lang_expect(p, LTK_COMMA, "after the sphere centre"));
+	diag_loc rl = lang_peek(p)->loc;
+	TRY(lang_float(p, "as the sphere radius", &g->u.sphere.radius));
+	TRY(positive(p, rl, "sphere radius", g->u.sphere.radius));
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "sphere");
+}
+
+/* box = "box" "{" vector "," vector { modifier } "}" */
+static bool box(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	scene_geom *g;
+	TRY(g = new_geom(p, SHAPE_BOX, kw));
+	TRY(lang_vec3(p, "as the first box corner", &g->u.box.corner1));
+	TRY(lang_expect(p, LTK_COMMA, "after the first box corner"));
+	TRY(lang_vec3(p, "as the second box corner", &g->u.box.corner2));
+	dvec3 a = g->u.box.corner1, b = g->u.box.corner2;
+	if (a.x == b.x || a.y == b.y || a.z == b.z)
+		return lang_error(p, kw, "box is flat: its corners share a coordinate");
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "box");
+}
+
+/* plane = "plane" "{" vector "," float { modifier } "}" */
+static bool plane(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	scene_geom *g;
+	TRY(g = new_geom(p, SHAPE_PLANE, kw));
+	diag_loc nl = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "as the plane normal", &g->u.plane.normal));
+	if (!(d3_length(g->u.plane.normal) > 0))
+		return lang_error(p, nl, "plane normal is the zero vector");
+	TRY(lang_expect(p, LTK_COMMA, "after the plane normal"));
+	TRY(lang_float(p, "as the plane offset", &g->u.plane.offset));
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "plane");
+}
+
+/* ---- meshes ------------------------------------------------------------------------------ */
+
+typedef struct meshbuf {
+	vecbuf pos, nrm, uv, faces, nidx, uvidx, sizes, locs;
+} meshbuf;
+
+static void meshbuf_init(meshbuf *b)
+{
+	vecbuf_init(&b->pos, sizeof(vec3));
+	vecbuf_init(&b->nrm, sizeof(vec3));
+	vecbuf_init(&b->uv, sizeof(vec2));
+	vecbuf_init(&b->faces, sizeof(uint32_t));
+	vecbuf_init(&b->nidx, sizeof(uint32_t));
+	vecbuf_init(&b->uvidx, sizeof(uint32_t));
+	vecbuf_init(&b->sizes, sizeof(uint32_t));
+	vecbuf_init(&b->locs, sizeof(diag_loc));
+}
+
+static void meshbuf_free(meshbuf *b)
+{
+	vecbuf_free(&b->pos), vecbuf_free(&b->nrm), vecbuf_free(&b->uv), vecbuf_free(&b->faces);
+	vecbuf_free(&b->nidx), vecbuf_free(&b->uvidx), vecbuf_free(&b->sizes), vecbuf_free(&b->locs);
+}
+
+/* Hands a buffer's array to the IR (NULL when empty) and resets the buffer. */
+static void *take(vecbuf *v, uint32_t *n)
+{
+	void *d = v->len ? v->data : NULL;
+	if (n)
+		*n = (uint32_t)v->len;
+	if (!v->len)
+		vecbuf_free(v);
+	vecbuf_init(v, v->elem);
+	return d;
+}
+
+static bool push(parser *p, vecbuf *v, const void *x)
+{
+	if (v->len >= UINT32_MAX - 1)
+		return lang_error(p, lang_peek(p)->loc, "too many mesh elements (limit is %u)", UINT32_MAX - 1);
+	if (!vecbuf_push(v, x))
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	return true;
+}
+
+static bool push_v3(parser *p, vecbuf *v, dvec3 x)
+{
+	vec3 f = d3_to_v3(x);
+	if (!v3_is_finite(f))
+		return lang_error(p, p->prev.loc, "vector <%g, %g, %g> overflows a float", x.x, x.y, x.z);
+	return push(p, v, &f);
+}
+
+/* triangle        = "triangle" "{" vector "," vector "," vector "}"
+ * smooth_triangle = "smooth_triangle" "{" vector "," vector "," vector "," vector ","
+ *                   vector "," vector "}" */
+static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
+{
+	const char *what = smooth ? "smooth_triangle" : "triangle";
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, what, &open));
+	dvec3 v[3], n[3];
+	static const char *const nth[] = {"first", "second", "third"};
+	char ctx[64];
+	for (int i = 0; i < 3; i++) {
+		snprintf(ctx, sizeof ctx, "as the %s vertex of the %s", nth[i], what);
+		TRY(lang_vec3(p, ctx, &v[i]));
+		if (smooth) {
+			snprintf(ctx, sizeof ctx, "after the %s vertex of the %s", nth[i], what);
+			TRY(lang_expect(p, LTK_COMMA, ctx));
+			snprintf(ctx, sizeof ctx, "as the %s normal of the smooth_triangle", nth[i]);
+			TRY(lang_vec3(p, ctx, &n[i]));
+		}
+		if (i < 2) {
+			snprintf(ctx, sizeof ctx, "after the %s %s of the %s", nth[i], smooth ? "normal" : "vertex", what);
+			TRY(lang_expect(p, LTK_COMMA, ctx));
+		}
+	}
+	TRY(lang_expect_close(p, open, what));
+	uint32_t base = (uint32_t)b->pos.len;
+	if (!smooth) {
+		dvec3 fn = d3_cross(d3_sub(v[1], v[0]), d3_sub(v[2], v[0]));
+		double len = d3_length(fn);
+		n[0] = n[1] = n[2] = len > 0 ? d3_scale(fn, 1 / len) : d3(0, 1, 0);
+	}
+	*any_smooth |= smooth;
+	for (int i = 0; i < 3; i++) {
+		uint32_t k = base + (uint32_t)i;
+		TRY(push_v3(p, &b->pos, v[i]) && push_v3(p, &b->nrm, n[i]) && push(p, &b->faces, &k) && push(p, &b->nidx, &k));
+	}
+	return true;
+}
+
+/* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } ) { modifier } "}" */
+static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	if (lang_accept(p, LTK_KW_FILE)) {
+		scene_geom *g;
+		TRY(g = new_geom(p, SHAPE_MESH_FILE, kw));
+		TRY(lang_string(p, "after 'file'", &g->u.file.path));
+		size_t start = out->len;
+		TRY(place(p, out, g, kw));
+		return object_tail(p, out, start, open, "mesh");
+	}
+	meshbuf b;
+	meshbuf_init(&b);
+	bool any_smooth = false, ok = true;
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_KW_TRIANGLE && k != LTK_KW_SMOOTH_TRIANGLE)
+			break;
+		if (!(ok = triangle(p, &b, k == LTK_KW_SMOOTH_TRIANGLE, &any_smooth)))
+			break;
+	}
+	if (ok && b.faces.len == 0)
+		ok = lang_error_found(p, "expected 'triangle', 'smooth_triangle' or 'file' in 'mesh'");
+	scene_geom *g = ok ? new_geom(p, SHAPE_MESH, kw) : NULL;
+	if (!g) {
+		meshbuf_free(&b);
+		return false;
+	}
+	scene_mesh *m = &g->u.mesh;
+	m->positions = take(&b.pos, &m->n_positions);
+	m->faces = take(&b.faces, &m->n_faces);
+	m->n_faces /= 3;
+	if (any_smooth) {
+		m->normals = take(&b.nrm, &m->n_normals);
+		m->normal_idx = take(&b.nidx, NULL);
+	}
+	meshbuf_free(&b);
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "mesh");
+}
+
+typedef bool (*item_fn)(parser *p, void *ctx, uint32_t i);
+
+/* list = "{" count { "," item } "}"   with exactly count items */
+static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, vecbuf *reserve, size_t per_item,
+			 uint32_t *count)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, what, &open));
+	long n;
+	char ctx_s[64];
+	snprintf(ctx_s, sizeof ctx_s, "as the item count of '%s'", what);
+	diag_loc nloc = lang_peek(p)->loc;
+	TRY(lang_int(p, ctx_s, 0, UINT32_MAX / 4, &n));
+	/* Reserve what the count announces, within reason: a hostile count must not allocate. */
+	if (reserve && !vecbuf_reserve(reserve, (size_t)(n < (1 << 20) ? n : (1 << 20)) * per_item))
+		return lang_error(p, nloc, "out of memory");
+	uint32_t i = 0;
+	while (lang_peek(p)->kind == LTK_COMMA) {
+		diag_loc cl = lang_advance(p)->loc;
+		if (i == (uint32_t)n)
+			return lang_error(p, cl, "'%s' has more items than its count %ld", what, n);
+		TRY(item(p, ctx, i));
+		i++;
+	}
+	if (lang_peek(p)->kind == LTK_RBRACE && i < (uint32_t)n)
+		return lang_error(p, lang_peek(p)->loc, "'%s' announces %ld items but gives %u", what, n, i);
+	TRY(lang_expect_close(p, open, what));
+	*count = i;
+	return true;
+}
+
+typedef struct list_ctx {
+	meshbuf *b;
+	vecbuf *dst;
+	const char *what;
+	uint32_t limit; /* indices must be below this (0: not checked here) */
+	const char *target; /* what the indices refer to */
+} list_ctx;
+
+static bool item_v3(parser *p, void *c, uint32_t i)
+{
+	list_ctx *x = c;
+	dvec3 v;
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "as item %u of '%s'", i, x->what);
+	return lang_vec3(p, ctx, &v) && push_v3(p, x->dst, v);
+}
+
+static bool item_uv(parser *p, void *c, uint32_t i)
+{
+	list_ctx *x = c;
+	diag_loc loc = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (v.kind != VAL_VECTOR || v.n != 2)
+		return lang_error(p, loc, "expected a 2-vector <u, v> as item %u of '%s', found %s", i, x->what,
+				  lang_value_kind_name(&v));
+	vec2 uv = v2((float)v.v[0], (float)v.v[1]);
+	return push(p, x->dst, &uv);
+}
+
+/* A triangle <a, b, c> of mesh2 (exactly three indices). */
+static bool item_tri(parser *p, void *c, uint32_t i)
+{
+	list_ctx *x = c;
+	uint32_t idx[LANG_MAX_VECTOR];
+	int n;
+	diag_loc loc;
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
+	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	if (n != 3)
+		return lang_error(p, loc, "face %u of '%s' has %d indices; mesh2 faces are triangles <a, b, c>", i, x->what, n);
+	for (int k = 0; k < 3; k++) {
+		if (x->limit && idx[k] >= x->limit)
+			return lang_error(p, loc, "face %u of '%s' refers to %s %u, but there are only %u", i, x->what,
+					  x->target, idx[k], x->limit);
+		TRY(push(p, x->dst, &idx[k]));
+	}
+	return true;
+}
+
+/* A polygon of a subdivision cage (any size; fewer than 3 is reported by validation). */
+static bool item_poly(parser *p, void *c, uint32_t i)
+{
+	list_ctx *x = c;
+	uint32_t idx[LANG_MAX_VECTOR];
+	int n;
+	diag_loc loc;
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
+	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	uint32_t un = (uint32_t)n;
+	TRY(push(p, x->dst == &x->b->faces ? &x->b->sizes : &x->b->nidx, &un));
+	if (x->dst == &x->b->faces)
+		TRY(push(p, &x->b->locs, &loc));
+	for (int k = 0; k < n; k++)
+		TRY(push(p, x->dst, &idx[k]));
+	return true;
+}
+
+static bool once(parser *p, bool *seen, const lang_token *t)
+{
+	if (*seen)
+		return lang_error(p, t->loc, "'%.*s' given twice", (int)t->len, t->text);
+	*seen = true;
+	return true;
+}
+
+/* mesh2 = "mesh2" "{" "vertex_vectors" list [ "normal_vectors" list ] [ "uv_vectors" list ]
+ *         "face_indices" list [ "normal_indices" list ] [ "uv_indices" list ] { modifier } "}" */
+static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
+{
+	bool seen[6] = {false};
+	uint32_t n_faces = 0, n_nidx = 0, n_uvidx = 0, cnt;
+	if (lang_peek(p)->kind != LTK_KW_VERTEX_VECTORS)
+		return lang_error_found(p, "expected 'vertex_vectors' first in 'mesh2'");
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		list_ctx c = {b, NULL, NULL, 0, NULL};
+		switch (t.kind) {
+		case LTK_KW_VERTEX_VECTORS:
+			TRY(once(p, &seen[0], &t));
+			c.dst = &b->pos, c.what = "vertex_vectors";
+			TRY(counted_list(p, c.what, item_v3, &c, c.dst, 1, &cnt));
+			break;
+		case LTK_KW_NORMAL_VECTORS:
+			TRY(once(p, &seen[1], &t));
+			c.dst = &b->nrm, c.what = "normal_vectors";
+			TRY(counted_list(p, c.what, item_v3, &c, c.dst, 1, &cnt));
+			break;
+		case LTK_KW_UV_VECTORS:
+			TRY(once(p, &seen[2], &t));
+			c.dst = &b->uv, c.what = "uv_vectors";
+			TRY(counted_list(p, c.what, item_uv, &c, c.dst, 1, &cnt));
+			break;
+		case LTK_KW_FACE_INDICES:
+			TRY(once(p, &seen[3], &t));
+			c.dst = &b->faces, c.what = "face_indices", c.limit = (uint32_t)b->pos.len, c.target = "vertex";
+			if (!c.limit)
+				return lang_error(p, t.loc, "'face_indices' but 'vertex_vectors' is empty");
+			TRY(counted_list(p, c.what, item_tri, &c, c.dst, 3, &n_faces));
+			break;
+		case LTK_KW_NORMAL_INDICES:
+			TRY(once(p, &seen[4], &t));
+			if (!seen[1])
+				return lang_error(p, t.loc, "'normal_indices' needs 'normal_vectors' before it");
+			c.dst = &b->nidx, c.what = "normal_indices", c.limit = (uint32_t)b->nrm.len, c.target = "normal";
+			TRY(counted_list(p, c.what, item_tri, &c, c.dst, 3, &n_nidx));
+			break;
+		case LTK_KW_UV_INDICES:
+			TRY(once(p, &seen[5], &t));
+			if (!seen[2])
+				return lang_error(p, t.loc, "'uv_indices' needs 'uv_vectors' before it");
+			c.dst = &b->uvidx, c.what = "uv_indices", c.limit = (uint32_t)b->uv.len, c.target = "uv";
+			TRY(counted_list(p, c.what, item_tri, &c, c.dst, 3, &n_uvidx));
+			break;
+		default:
+			if (!seen[3])
+				return lang_error_found(p, "expected 'face_indices' in 'mesh2'");
+			if (seen[4] && n_nidx != n_faces)
+				return lang_error(p, open, "mesh2 has %u faces but %u normal_indices", n_faces, n_nidx);
+			if (seen[5] && n_uvidx != n_faces)
+				return lang_error(p, open, "mesh2 has %u faces but %u uv_indices", n_faces, n_uvidx);
+			if (seen[1] && !seen[4] && b->nrm.len != b->pos.len)
+				return lang_error(p, open,
+						  "mesh2 has %zu normal_vectors but %zu vertex_vectors and no normal_indices",
+						  b->nrm.len, b->pos.len);
+			if (seen[2] && !seen[5] && b->uv.len != b->pos.len)
+				return lang_error(p, open, "mesh2 has %zu uv_vectors but %zu vertex_vectors and no uv_indices",
+						  b->uv.len, b->pos.len);
+			(void)kw;
+			return true;
+		}
+	}
+}
+
+static bool mesh2(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	meshbuf b;
+	meshbuf_init(&b);
+	scene_geom *g = mesh2_body(p, &b, kw, open) ? new_geom(p, SHAPE_MESH, kw) : NULL;
+	if (!g) {
+		meshbuf_free(&b);
+		return false;
+	}
+	scene_mesh *m = &g->u.mesh;
+	m->positions = take(&b.pos, &m->n_positions);
+	m->normals = take(&b.nrm, &m->n_normals);
+	m->uvs = take(&b.uv, &m->n_uvs);
+	m->faces = take(&b.faces, &m->n_faces);
+	m->n_faces /= 3;
+	/* Normals or uvs without their own indices follow the vertex indices. */
+	if (b.nidx.len)
+		m->normal_idx = take(&b.nidx, NULL);
+	else if (m->normals && (m->normal_idx = mem_alloc(m->n_faces, 3 * sizeof(uint32_t))))
+		memcpy(m->normal_idx, m->faces, (size_t)m->n_faces * 3 * sizeof(uint32_t));
+	if (b.uvidx.len)
+		m->uv_idx = take(&b.uvidx, NULL);
+	else if (m->uvs && (m->uv_idx = mem_alloc(m->n_faces, 3 * sizeof(uint32_t))))
+		memcpy(m->uv_idx, m->faces, (size_t)m->n_faces * 3 * sizeof(uint32_t));
+	meshbuf_free(&b);
+	if ((m->normals && !m->normal_idx) || (m->uvs && !m->uv_idx))
+		return lang_error(p, kw, "out of memory");
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "mesh2");
+}
+
+/* ---- subdivision surfaces ---------------------------------------------------------------- */
+
+typedef struct subd_ctx {
+	parser *p;
+	vecbuf creases, corners;
+} subd_ctx;
+
+static bool item_crease(parser *p, void *c, uint32_t i)
+{
+	subd_ctx *x = c;
+	uint32_t idx[LANG_MAX_VECTOR];
+	int n;
+	scene_crease cr;
+	double s;
+	TRY(lang_index_tuple(p, "in 'creases'", idx, &n, &cr.loc));
+	if (n != 2)
+		return lang_error(p, cr.loc, "crease %u needs two vertex indices <i, j>, found %d", i, n);
+	TRY(lang_expect(p, LTK_COMMA, "after the crease's vertex pair"));
+	diag_loc sl = lang_peek(p)->loc;
+	TRY(lang_float(p, "as the crease sharpness", &s) && in_range(p, sl, "crease sharpness", s, 0, 10));
+	cr.a = idx[0], cr.b = idx[1], cr.sharpness = (float)s;
+	return push(p, &x->creases, &cr);
+}
+
+static bool item_corner(parser *p, void *c, uint32_t i)
+{
+	subd_ctx *x = c;
+	scene_corner co;
+	long v;
+	double s;
+	(void)i;
+	co.loc = lang_peek(p)->loc;
+	TRY(lang_int(p, "as the corner vertex", 0, UINT32_MAX, &v));
+	TRY(lang_expect(p, LTK_COMMA, "after the corner vertex"));
+	diag_loc sl = lang_peek(p)->loc;
+	TRY(lang_float(p, "as the corner sharpness", &s) && in_range(p, sl, "corner sharpness", s, 0, 10));
+	co.vertex = (uint32_t)v, co.sharpness = (float)s;
+	return push(p, &x->corners, &co);
+}
+
+/* subdivision_surface = "subdivision_surface" "{" { subd_item } { modifier } "}"
+ * subd_item = "file" string | "vertex_vectors" list | "faces" list | "uv_vectors" list
+ *           | "uv_faces" list | "creases" list | "corners" list
+ *           | "scheme" ( "catmull_clark" | "loop" ) | "boundary" ( "edge_only" | "edge_and_corner" )
+ *           | "level" integer | "max_edge" float */
+static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, diag_loc kw)
+{
+	bool seen[10] = {false};
+	uint32_t cnt;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		list_ctx c = {b, NULL, NULL, 0, NULL};
+		long n;
+		double x;
+		switch (t.kind) {
+		case LTK_KW_FILE:
+			TRY(once(p, &seen[0], &t));
+			lang_advance(p);
+			TRY(lang_string(p, "after 'file'", &d->file));
+			break;
+		case LTK_KW_VERTEX_VECTORS:
+			TRY(once(p, &seen[1], &t));
+			c.dst = &b->pos, c.what = "vertex_vectors";
+			TRY(counted_list(p, c.what, item_v3, &c, c.dst, 1, &cnt));
+			break;
+		case LTK_KW_FACES:
+			TRY(once(p, &seen[2], &t));
+			c.dst = &b->faces, c.what = "faces";
+			TRY(counted_list(p, c.what, item_poly, &c, NULL, 1, &cnt));
+			break;
+		case LTK_KW_UV_VECTORS:
+			TRY(once(p, &seen[3], &t));
+			c.dst = &b->uv, c.what = "uv_vectors";
+			TRY(counted_list(p, c.what, item_uv, &c, c.dst, 1, &cnt));
+			break;
+		case LTK_KW_UV_FACES:
+			TRY(once(p, &seen[4], &t));
+			c.dst = &b->uvidx, c.what = "uv_faces";
+			TRY(counted_list(p, c.what, item_poly, &c, NULL, 1, &cnt));
+			break;
+		case LTK_KW_CREASES:
+			TRY(once(p, &seen[5], &t));
+			TRY(counted_list(p, "creases", item_crease, sx, NULL, 1, &cnt));
+			break;
+		case LTK_KW_CORNERS:
+			TRY(once(p, &seen[6], &t));
+			TRY(counted_list(p, "corners", item_corner, sx, NULL, 1, &cnt));
+			break;
+		case LTK_KW_SCHEME:
+			TRY(once(p, &seen[7], &t));
+			lang_advance(p);
+			if (lang_accept(p, LTK_KW_CATMULL_CLARK))
+				d->scheme = SCENE_SUBD_CATMULL_CLARK;
+			else if (lang_accept(p, LTK_KW_LOOP))
+				d->scheme = SCENE_SUBD_LOOP;
+			else
+				return lang_error_found(p, "expected catmull_clark or loop after 'scheme'");
+			break;
+		case LTK_KW_BOUNDARY:
+			TRY(once(p, &seen[8], &t));
+			lang_advance(p);
+			if (lang_accept(p, LTK_KW_EDGE_ONLY))
+				d->boundary = SCENE_SUBD_EDGE_ONLY;
+			else if (lang_accept(p, LTK_KW_EDGE_AND_CORNER))
+				d->boundary = SCENE_SUBD_EDGE_AND_CORNER;
+			else
+				return lang_error_found(p, "expected edge_only or edge_and_corner after 'boundary'");
+			break;
+		case LTK_KW_LEVEL:
+			TRY(once(p, &seen[9], &t));
+			lang_advance(p);
+			TRY(lang_int(p, "after 'level'", 1, 8, &n));
+			d->level = (int)n;
+			break;
+		case LTK_KW_MAX_EDGE:
+			TRY(once(p, &seen[9], &t));
+			lang_advance(p);
+			TRY(lang_float(p, "after 'max_edge'", &x) && positive(p, t.loc, "max_edge", x));
+			d->max_edge_px = x;
+			break;
+		default:
+			if (seen[0] && (seen[1] || seen[2]))
+				return lang_error(p, kw, "subdivision_surface has both a 'file' and an inline cage");
+			if (!seen[0] && !(seen[1] && seen[2]))
+				return lang_error_found(p, "expected %s in 'subdivision_surface'",
+							!seen[1] ? "'file' or 'vertex_vectors'" : "'faces'");
+			if (seen[3] != seen[4])
+				return lang_error(p, kw, "subdivision_surface needs both 'uv_vectors' and 'uv_faces', or neither");
+			return true;
+		}
+	}
+}
+
+static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	meshbuf b;
+	meshbuf_init(&b);
+	subd_ctx sx = {p, {0}, {0}};
+	vecbuf_init(&sx.creases, sizeof(scene_crease));
+	vecbuf_init(&sx.corners, sizeof(scene_corner));
+	scene_subdiv d = {.max_edge_px = 1.5, .boundary = SCENE_SUBD_EDGE_AND_CORNER};
+	scene_geom *g = subdiv_items(p, &b, &sx, &d, kw) ? new_geom(p, SHAPE_SUBDIV, kw) : NULL;
+	if (!g) {
+		meshbuf_free(&b);
+		vecbuf_free(&sx.creases);
+		vecbuf_free(&sx.corners);
+		return false;
+	}
+	d.vertices = take(&b.pos, &d.n_vertices);
+	d.face_sizes = take(&b.sizes, &d.n_faces);
+	d.face_verts = take(&b.faces, &d.n_face_verts);
+	d.face_locs = take(&b.locs, NULL);
+	d.uvs = take(&b.uv, &d.n_uvs);
+	d.uv_face_sizes = take(&b.nidx, &d.n_uv_faces);
+	d.uv_face_verts = take(&b.uvidx, &d.n_uv_face_verts);
+	d.creases = take(&sx.creases, &d.n_creases);
+	d.corners = take(&sx.corners, &d.n_corners);
+	g->u.subdiv = d;
+	meshbuf_free(&b);
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, "subdivision_surface");
+}
+
+/* ---- object items ------------------------------------------------------------------------ */
+
+static bool object_item(parser *p, vecbuf *out, bool *matched);
+
+/* union = "union" "{" object_item { object_item } { modifier } "}" */
+static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	size_t start = out->len;
+	mods m = {.t = xform_identity()};
+	bool any = false;
+	for (;;) {
+		if (lang_peek(p)->kind == LTK_RBRACE) {
+			if (!any)
+				return lang_error(p, kw, "union has no objects");
+			lang_advance(p);
+			return apply_mods(p, out, start, &m);
+		}
+		bool matched;
+		TRY(object_item(p, out, &matched));
+		if (matched) {
+			any = true;
+			continue;
+		}
+		TRY(modifier(p, &m, &matched));
+		if (!matched)
+			return bad_item(p, open, "union", "an object, a transform, a material, no_shadow");
+	}
+}
+
+/* instance = "object" "{" identifier { modifier } "}" */
+static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_IDENT)
+		return lang_error_found(p, "expected the name of a declared object after 'object {'");
+	lang_token name = *lang_advance(p);
+	const symbol *s = lang_lookup(p, name.text, name.len);
+	if (!s)
+		return lang_error(p, name.loc, "undeclared identifier '%.*s'", (int)name.len, name.text);
+	if (s->val.kind != VAL_OBJECT)
+		return lang_error(p, name.loc, "'%.*s' is %s, not an object", (int)name.len, name.text,
+				  lang_value_kind_name(&s->val));
+	size_t start = out->len;
+	for (size_t i = 0; i < s->val.obj->n; i++) {
+		scene_object o = s->val.obj->items[i];
+		o.instance = true;
+		o.loc = kw;
+		if (!vecbuf_push(out, &o))
+			return lang_error(p, kw, "out of memory");
+	}
+	return object_tail(p, out, start, open, "object");
+}
+
+/* object_item = sphere | box | plane | mesh | mesh2 | subdivision_surface | instance | union */
+static bool object_item(parser *p, vecbuf *out, bool *matched)
+{
+	lang_token t = *lang_peek(p);
+	bool (*fn)(parser *, vecbuf *, diag_loc, diag_loc);
+	switch (t.kind) {
+	case LTK_KW_SPHERE: fn = sphere; break;
+	case LTK_KW_BOX: fn = box; break;
+	case LTK_KW_PLANE: fn = plane; break;
+	case LTK_KW_MESH: fn = mesh; break;
+	case LTK_KW_MESH2: fn = mesh2; break;
+	case LTK_KW_SUBDIVISION_SURFACE: fn = subdivision_surface; break;
+	case LTK_KW_OBJECT: fn = instance; break;
+	case LTK_KW_UNION: fn = union_block; break;
+	default:
+		*matched = false;
+		return true;
+	}
+	*matched = true;
+	lang_advance(p);
+	diag_loc open;
+	TRY(lang_enter(p, t.loc));
+	char nm[32];
+	snprintf(nm, sizeof nm, "%.*s", (int)t.len, t.text);
+	bool ok = open_block(p, nm, &open) && fn(p, out, t.loc, open);
+	lang_leave(p);
+	return ok;
+}
+
+bool lang_declare_block(parser *p, value *out, bool *handled)
+{
+	lang_tok k = lang_peek(p)->kind;
+	memset(out, 0, sizeof *out);
+	*handled = true;
+	if (k == LTK_KW_MATERIAL || k == LTK_KW_TEXTURE) {
+		out->kind = VAL_MATERIAL;
+		return k == LTK_KW_MATERIAL ? material(p, &out->mat) : texture(p, &out->mat, NULL);
+	}
+	vecbuf tmp;
+	vecbuf_init(&tmp, sizeof(scene_object));
+	bool matched;
+	bool ok = object_item(p, &tmp, &matched);
+	if (!matched) {
+		*handled = false;
+		vecbuf_free(&tmp);
+		return true;
+	}
+	objlist *l = ok ? arena_zalloc(&p->sc->arena, 1, sizeof *l) : NULL;
+	if (l) {
+		l->n = tmp.len;
+		l->items = arena_alloc(&p->sc->arena, tmp.len, sizeof(scene_object), 16);
+		if (l->items)
+			memcpy(l->items, tmp.data, tmp.len * sizeof(scene_object));
+	}
+	vecbuf_free(&tmp);
+	if (ok && (!l || !l->items))
+		return lang_error(p, p->prev.loc, "out of memory");
+	out->kind = VAL_OBJECT;
+	out->obj = l;
+	return ok;
+}
+
+/* ---- top-level statements ---------------------------------------------------------------- */
+
+/* global_settings = "global_settings" "{" { "mm_per_unit" float | "max_trace_level" integer
+ *                   | "assumed_gamma" float } "}" */
+static bool global_settings(parser *p)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, "global_settings", &open));
+	scene_global *g = &p->sc->global;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		double x;
+		long n;
+		switch (t.kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			return true;
+		case LTK_KW_MM_PER_UNIT:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'mm_per_unit'", &x) && positive(p, t.loc, "mm_per_unit", x));
+			g->mm_per_unit = x;
+			break;
+		case LTK_KW_MAX_TRACE_LEVEL:
+			lang_advance(p);
+			TRY(lang_int(p, "after 'max_trace_level'", 1, 256, &n));
+			g->max_trace_level = (int)n;
+			break;
+		case LTK_KW_ASSUMED_GAMMA:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'assumed_gamma'", &x) && positive(p, t.loc, "assumed_gamma", x));
+			g->assumed_gamma = x;
+			break;
+		default:
+			return bad_item(p, open, "global_settings", "mm_per_unit, max_trace_level or assumed_gamma");
+		}
+	}
+}
+
+/* camera = "camera" "{" { "perspective" | "location" vector | "look_at" vector | "sky" vector
+ *          | "angle" float | "right" vector | "up" vector | "aperture" float
+ *          | "focal_point" vector } "}" */
+static bool camera(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	if (p->sc->has_camera) {
+		lang_error(p, kw.loc, "a second camera (a scene has one)");
+		diag_note(p->d, p->sc->camera.loc, "the first camera is here");
+		return false;
+	}
+	diag_loc open;
+	TRY(open_block(p, "camera", &open));
+	scene_camera *c = &p->sc->camera;
+	*c = (scene_camera){.loc = kw.loc,
+			    .location = d3(0, 0, 0),
+			    .look_at = d3(0, 0, 1),
+			    .sky = d3(0, 1, 0),
+			    .right = d3(1.33, 0, 0),
+			    .up = d3(0, 1, 0),
+			    .angle_deg = 67.380135}; /* POV-Ray's default: 2 atan(1.33 / 2) */
+	p->sc->has_camera = true;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		double x;
+		dvec3 *v = NULL;
+		switch (t.kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			return true;
+		case LTK_KW_PERSPECTIVE:
+			lang_advance(p);
+			continue;
+		case LTK_KW_LOCATION: v = &c->location; break;
+		case LTK_KW_LOOK_AT: v = &c->look_at; break;
+		case LTK_KW_SKY: v = &c->sky; break;
+		case LTK_KW_RIGHT: v = &c->right; break;
+		case LTK_KW_UP: v = &c->up; break;
+		case LTK_KW_FOCAL_POINT:
+			v = &c->focal_point;
+			c->has_focal_point = true;
+			break;
+		case LTK_KW_ANGLE:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'angle'", &x));
+			if (!(x > 0 && x < 180))
+				return lang_error(p, t.loc, "camera angle must be in (0, 180) degrees, found %g", x);
+			c->angle_deg = x;
+			continue;
+		case LTK_KW_APERTURE:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'aperture'", &x));
+			if (x < 0)
+				return lang_error(p, t.loc, "aperture must be >= 0, found %g", x);
+			c->aperture = x;
+			continue;
+		default:
+			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ...)");
+		}
+		lang_advance(p);
+		char ctx[48];
+		snprintf(ctx, sizeof ctx, "after '%.*s'", (int)t.len, t.text);
+		TRY(lang_vec3(p, ctx, v));
+	}
+}
+
+/* light_source = "light_source" "{" vector [ "," ] { colour | "intensity" float | "radius" float
+ *                | "spotlight" | "parallel" | "point_at" vector | "falloff" float } "}" */
+static bool light_source(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	diag_loc open;
+	TRY(open_block(p, "light_source", &open));
+	scene_light l = {.loc = kw.loc, .kind = SCENE_LIGHT_POINT, .color = v3s(1), .intensity = 1,
+			 .point_at = d3(0, 0, 1), .cone_deg = 30, .falloff_deg = 45};
+	TRY(lang_vec3(p, "as the light position", &l.position));
+	lang_accept(p, LTK_COMMA);
+	bool point_at = false, falloff = false;
+	diag_loc point_at_loc = kw.loc, falloff_loc = kw.loc;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		double x;
+		switch (t.kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			if (point_at && l.kind != SCENE_LIGHT_SPOT && l.kind != SCENE_LIGHT_PARALLEL)
+				return lang_error(p, point_at_loc, "'point_at' needs 'spotlight' or 'parallel'");
+			if (falloff && l.kind != SCENE_LIGHT_SPOT)
+				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight'");
+			if (l.kind == SCENE_LIGHT_SPOT && l.falloff_deg < l.cone_deg)
+				return lang_error(p, kw.loc, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
+						  l.falloff_deg, l.cone_deg);
+			if ((l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL) &&
+			    !(d3_length(d3_sub(l.point_at, l.position)) > 0))
+				return lang_error(p, kw.loc, "point_at is the light position: the light has no direction");
+			if (!vecbuf_push(&p->sc->lights, &l))
+				return lang_error(p, kw.loc, "out of memory");
+			return true;
+		case LTK_KW_COLOR:
+		case LTK_KW_COLOUR:
+		case LTK_KW_RGB:
+			TRY(lang_color(p, "as the light colour", &l.color));
+			if (!(l.color.x >= 0 && l.color.y >= 0 && l.color.z >= 0))
+				return lang_error(p, t.loc, "light colour must be >= 0 in every channel");
+			break;
+		case LTK_KW_INTENSITY:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'intensity'", &x));
+			if (x < 0)
+				return lang_error(p, t.loc, "light intensity must be >= 0, found %g", x);
+			l.intensity = x;
+			break;
+		case LTK_KW_RADIUS:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'radius'", &x));
+			if (l.kind == SCENE_LIGHT_SPOT) {
+				TRY(in_range(p, t.loc, "spotlight radius (a cone angle)", x, 0, 90));
+				l.cone_deg = x;
+			} else {
+				if (x < 0)
+					return lang_error(p, t.loc, "light radius must be >= 0, found %g", x);
+				l.radius = x;
+				l.kind = x > 0 ? SCENE_LIGHT_SPHERE : SCENE_LIGHT_POINT;
+			}
+			break;
+		case LTK_KW_FALLOFF:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'falloff'", &x) && in_range(p, t.loc, "spotlight falloff", x, 0, 90));
+			l.falloff_deg = x;
+			falloff = true, falloff_loc = t.loc;
+			break;
+		case LTK_KW_SPOTLIGHT:
+		case LTK_KW_PARALLEL:
+			lang_advance(p);
+			if (l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL)
+				return lang_error(p, t.loc, "a light is either a spotlight or parallel, not both");
+			l.kind = t.kind == LTK_KW_SPOTLIGHT ? SCENE_LIGHT_SPOT : SCENE_LIGHT_PARALLEL;
+			l.radius = 0;
+			break;
+		case LTK_KW_POINT_AT:
+			lang_advance(p);
+			TRY(lang_vec3(p, "after 'point_at'", &l.point_at));
+			point_at = true, point_at_loc = t.loc;
+			break;
+		default:
+			return bad_item(p, open, "light_source", "a colour, intensity, radius, spotlight, parallel or point_at");
+		}
+	}
+}
+
+/* background = "background" "{" colour "}" */
+static bool background(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	diag_loc open;
+	TRY(open_block(p, "background", &open));
+	TRY(lang_color(p, "as the background colour", &p->sc->background));
+	p->sc->has_background = true;
+	p->sc->background_loc = kw.loc;
+	return lang_expect_close(p, open, "background");
+}
+
+/* sky_sphere = "sky_sphere" "{" "image" string { "intensity" float | "rotate" vector } "}" */
+static bool sky_sphere(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	diag_loc open;
+	TRY(open_block(p, "sky_sphere", &open));
+	scene_sky_sphere *s = &p->sc->sky_sphere;
+	*s = (scene_sky_sphere){.loc = kw.loc, .intensity = 1};
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		double x;
+		switch (t.kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			if (!s->image)
+				return lang_error(p, kw.loc, "sky_sphere needs an 'image'");
+			p->sc->has_sky_sphere = true;
+			return true;
+		case LTK_KW_IMAGE:
+			lang_advance(p);
+			TRY(lang_string(p, "after 'image'", &s->image));
+			break;
+		case LTK_KW_INTENSITY:
+			lang_advance(p);
+			TRY(lang_float(p, "after 'intensity'", &x));
+			if (x < 0)
+				return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
+			s->intensity = x;
+			break;
+		case LTK_KW_ROTATE:
+			lang_advance(p);
+			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
+			break;
+		default:
+			return bad_item(p, open, "sky_sphere", "image, intensity or rotate");
+		}
+	}
+}
+
+bool lang_statement(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	switch (t->kind) {
+	case LTK_KW_GLOBAL_SETTINGS: return global_settings(p);
+	case LTK_KW_CAMERA: return camera(p);
+	case LTK_KW_LIGHT_SOURCE: return light_source(p);
+	case LTK_KW_BACKGROUND: return background(p);
+	case LTK_KW_SKY_SPHERE: return sky_sphere(p);
+	case LTK_IDENT: {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		if (s && s->val.kind == VAL_OBJECT)
+			return lang_error(p, t->loc, "'%.*s' is a declared object: place it with object { %.*s }", (int)t->len,
+					  t->text, (int)t->len, t->text);
+		break;
+	}
+	default:
+		break;
+	}
+	bool matched;
+	TRY(object_item(p, &p->sc->objects, &matched));
+	if (!matched)
+		return lang_error_found(p, "expected a statement (camera, light_source, background, sky_sphere, "
+					   "global_settings or an object)");
+	return true;
+}

@@ -1,0 +1,510 @@
+/* scene.c - IR lifetime, validation, statistics and the text dump used by golden tests. */
+#include "scene/scene.h"
+
+#include <math.h>
+#include <string.h>
+
+scene *scene_new(void)
+{
+	scene *s = mem_calloc(1, sizeof *s);
+	if (!s)
+		return NULL;
+	arena_init(&s->arena, 64 * 1024);
+	vecbuf_init(&s->lights, sizeof(scene_light));
+	vecbuf_init(&s->objects, sizeof(scene_object));
+	s->global.mm_per_unit = 10.0;
+	s->global.max_trace_level = 5;
+	s->global.assumed_gamma = 1.0;
+	return s;
+}
+
+static void free_geom_arrays(scene_geom *g)
+{
+	if (g->kind == SHAPE_MESH) {
+		scene_mesh *m = &g->u.mesh;
+		mem_free(m->positions), mem_free(m->normals), mem_free(m->uvs);
+		mem_free(m->faces), mem_free(m->normal_idx), mem_free(m->uv_idx);
+	} else if (g->kind == SHAPE_SUBDIV) {
+		scene_subdiv *d = &g->u.subdiv;
+		mem_free(d->vertices), mem_free(d->face_sizes), mem_free(d->face_verts);
+		mem_free(d->face_locs), mem_free(d->uvs), mem_free(d->uv_face_sizes);
+		mem_free(d->uv_face_verts), mem_free(d->creases), mem_free(d->corners);
+	}
+}
+
+void scene_free(scene *s)
+{
+	if (!s)
+		return;
+	for (scene_geom *g = s->geoms; g; g = g->next)
+		free_geom_arrays(g);
+	vecbuf_free(&s->lights);
+	vecbuf_free(&s->objects);
+	arena_release(&s->arena);
+	mem_free(s);
+}
+
+scene_geom *scene_new_geom(scene *s, scene_shape_kind kind, diag_loc loc)
+{
+	scene_geom *g = arena_zalloc(&s->arena, 1, sizeof *g);
+	if (!g)
+		return NULL;
+	g->kind = kind;
+	g->loc = loc;
+	g->id = s->n_geoms++;
+	g->next = s->geoms;
+	s->geoms = g;
+	if (kind == SHAPE_SUBDIV)
+		g->u.subdiv.max_edge_px = 1.5; /* LANGUAGE.md default */
+	return g;
+}
+
+scene_material *scene_new_material(scene *s, diag_loc loc)
+{
+	scene_material *m = arena_zalloc(&s->arena, 1, sizeof *m);
+	if (!m)
+		return NULL;
+	m->loc = loc;
+	m->id = s->n_materials++;
+	m->color = v3s(0.8f);
+	m->diffuse = 1.0f;
+	m->roughness = 1.0f;
+	m->next = s->materials;
+	s->materials = m;
+	return m;
+}
+
+/* ---- validation ------------------------------------------------------------------------- */
+
+static int check_indices(diag *d, diag_loc loc, const char *what, const uint32_t *idx, uint32_t n_faces,
+			 uint32_t n_items, const char *items)
+{
+	if (!idx)
+		return 0;
+	for (uint32_t f = 0; f < n_faces; f++)
+		for (int k = 0; k < 3; k++)
+			if (idx[3 * f + k] >= n_items) {
+				diag_error(d, loc, "%s: face %u refers to %s %u, but there are only %u", what, f,
+					   items, idx[3 * f + k], n_items);
+				return 1;
+			}
+	return 0;
+}
+
+static int validate_mesh(const scene_geom *g, diag *d)
+{
+	const scene_mesh *m = &g->u.mesh;
+	int e = 0;
+	e += check_indices(d, g->loc, "mesh", m->faces, m->n_faces, m->n_positions, "vertex");
+	e += check_indices(d, g->loc, "mesh", m->normal_idx, m->n_faces, m->n_normals, "normal");
+	e += check_indices(d, g->loc, "mesh", m->uv_idx, m->n_faces, m->n_uvs, "uv");
+	if (m->n_faces == 0) {
+		diag_error(d, g->loc, "mesh has no triangles");
+		e++;
+	}
+	return e;
+}
+
+/* True when a-b is an edge of some face of the cage. */
+static bool cage_has_edge(const scene_subdiv *c, uint32_t a, uint32_t b)
+{
+	uint32_t base = 0;
+	for (uint32_t f = 0; f < c->n_faces; f++) {
+		uint32_t n = c->face_sizes[f];
+		for (uint32_t k = 0; k < n; k++) {
+			uint32_t u = c->face_verts[base + k], v = c->face_verts[base + (k + 1) % n];
+			if ((u == a && v == b) || (u == b && v == a))
+				return true;
+		}
+		base += n;
+	}
+	return false;
+}
+
+static int validate_subdiv(const scene_geom *g, diag *d)
+{
+	const scene_subdiv *c = &g->u.subdiv;
+	int e = 0;
+	if (c->file)
+		return 0; /* the importer checks a file cage */
+	uint32_t base = 0;
+	for (uint32_t f = 0; f < c->n_faces; f++) {
+		uint32_t n = c->face_sizes[f];
+		if (n < 3) {
+			diag_error(d, c->face_locs[f], "face %u has %u vertices; a face needs at least 3", f, n);
+			e++;
+		}
+		if (c->scheme == SCENE_SUBD_LOOP && n != 3) {
+			diag_error(d, c->face_locs[f], "face %u has %u vertices; the loop scheme needs triangles", f, n);
+			e++;
+		}
+		for (uint32_t k = 0; k < n; k++)
+			if (c->face_verts[base + k] >= c->n_vertices) {
+				diag_error(d, c->face_locs[f], "face %u refers to vertex %u, but the cage has %u vertices",
+					   f, c->face_verts[base + k], c->n_vertices);
+				e++;
+				break;
+			}
+		base += n;
+	}
+	if (c->uv_face_sizes) {
+		if (c->n_uv_faces != c->n_faces) {
+			diag_error(d, g->loc, "uv_faces has %u faces but the cage has %u", c->n_uv_faces, c->n_faces);
+			e++;
+		} else {
+			uint32_t ub = 0;
+			for (uint32_t f = 0; f < c->n_faces; f++) {
+				if (c->uv_face_sizes[f] != c->face_sizes[f]) {
+					diag_error(d, c->face_locs[f], "uv face %u has %u corners but face %u has %u", f,
+						   c->uv_face_sizes[f], f, c->face_sizes[f]);
+					e++;
+				}
+				for (uint32_t k = 0; k < c->uv_face_sizes[f]; k++)
+					if (c->uv_face_verts[ub + k] >= c->n_uvs) {
+						diag_error(d, c->face_locs[f], "uv face %u refers to uv %u, but there are only %u",
+							   f, c->uv_face_verts[ub + k], c->n_uvs);
+						e++;
+						break;
+					}
+				ub += c->uv_face_sizes[f];
+			}
+		}
+	}
+	if (e)
+		return e; /* edges of a broken cage mean nothing */
+	for (uint32_t i = 0; i < c->n_creases; i++)
+		if (!cage_has_edge(c, c->creases[i].a, c->creases[i].b)) {
+			diag_error(d, c->creases[i].loc, "crease %u: <%u, %u> is not an edge of the cage", i,
+				   c->creases[i].a, c->creases[i].b);
+			e++;
+		}
+	for (uint32_t i = 0; i < c->n_corners; i++)
+		if (c->corners[i].vertex >= c->n_vertices) {
+			diag_error(d, c->corners[i].loc, "corner %u: vertex %u is out of range (the cage has %u vertices)",
+				   i, c->corners[i].vertex, c->n_vertices);
+			e++;
+		}
+	return e;
+}
+
+static int validate_camera(const scene_camera *c, diag *d)
+{
+	dvec3 dir = d3_sub(c->look_at, c->location);
+	double len = d3_length(dir);
+	if (!(len > 0)) {
+		diag_error(d, c->loc, "degenerate camera: look_at is the same point as location");
+		return 1;
+	}
+	double sl = d3_length(c->sky);
+	if (!(sl > 0) || d3_length(d3_cross(d3_scale(dir, 1 / len), d3_scale(c->sky, 1 / sl))) < 1e-9) {
+		diag_error(d, c->loc, "degenerate camera: sky is parallel to the view direction");
+		return 1;
+	}
+	if (!(c->angle_deg > 0 && c->angle_deg < 180)) {
+		diag_error(d, c->loc, "camera angle %g is outside (0, 180) degrees", c->angle_deg);
+		return 1;
+	}
+	return 0;
+}
+
+static int validate_material(const scene_material *m, diag *d)
+{
+	if (m->kind < MAT_SKIN)
+		return 0;
+	const scene_sss *s = &m->sss;
+	int e = 0;
+	for (int i = 0; i < 3; i++) {
+		float ss = i == 0 ? s->sigma_s_per_mm.x : i == 1 ? s->sigma_s_per_mm.y : s->sigma_s_per_mm.z;
+		float sa = i == 0 ? s->sigma_a_per_mm.x : i == 1 ? s->sigma_a_per_mm.y : s->sigma_a_per_mm.z;
+		if (!(ss > 0) || !(sa > 0) || !isfinite(ss) || !isfinite(sa)) {
+			diag_error(d, m->loc, "%s material: sigma_s and sigma_a must be positive in every channel",
+				   scene_material_kind_name(m->kind));
+			return 1;
+		}
+	}
+	return e;
+}
+
+int scene_validate(const scene *s, diag *d)
+{
+	int e = 0;
+	if (s->has_camera)
+		e += validate_camera(&s->camera, d);
+	for (scene_material *m = s->materials; m; m = m->next)
+		e += validate_material(m, d);
+	for (scene_geom *g = s->geoms; g; g = g->next) {
+		if (g->kind == SHAPE_MESH)
+			e += validate_mesh(g, d);
+		else if (g->kind == SHAPE_SUBDIV)
+			e += validate_subdiv(g, d);
+	}
+	return e;
+}
+
+/* ---- statistics -------------------------------------------------------------------------- */
+
+static size_t geom_bytes(const scene_geom *g)
+{
+	if (g->kind == SHAPE_MESH) {
+		const scene_mesh *m = &g->u.mesh;
+		return m->n_positions * sizeof(vec3) + m->n_normals * sizeof(vec3) + m->n_uvs * sizeof(vec2) +
+		       (size_t)m->n_faces * 3 * sizeof(uint32_t) * (1 + !!m->normal_idx + !!m->uv_idx);
+	}
+	if (g->kind == SHAPE_SUBDIV) {
+		const scene_subdiv *c = &g->u.subdiv;
+		return c->n_vertices * sizeof(vec3) + c->n_faces * (sizeof(uint32_t) + sizeof(diag_loc)) +
+		       c->n_face_verts * sizeof(uint32_t) + c->n_uvs * sizeof(vec2) +
+		       (c->n_uv_faces + c->n_uv_face_verts) * sizeof(uint32_t) +
+		       c->n_creases * sizeof(scene_crease) + c->n_corners * sizeof(scene_corner);
+	}
+	return 0;
+}
+
+void scene_stats_get(const scene *s, scene_stats *st)
+{
+	memset(st, 0, sizeof *st);
+	st->objects = scene_n_objects(s);
+	st->lights = scene_n_lights(s);
+	st->geoms = s->n_geoms;
+	for (size_t i = 0; i < st->objects; i++)
+		st->instances += scene_object_at(s, i)->instance;
+	for (const scene_material *m = s->materials; m; m = m->next)
+		st->materials_by_kind[m->kind]++;
+	st->memory_bytes = sizeof *s + s->arena.total + s->objects.cap * s->objects.elem +
+			   s->lights.cap * s->lights.elem;
+	for (const scene_geom *g = s->geoms; g; g = g->next) {
+		st->memory_bytes += geom_bytes(g);
+		if (g->kind == SHAPE_MESH)
+			st->mesh_triangles += g->u.mesh.n_faces;
+		if (g->kind == SHAPE_SUBDIV)
+			st->subdiv_faces += g->u.subdiv.n_faces;
+	}
+}
+
+/* ---- dump ------------------------------------------------------------------------------- */
+
+static void dump_v3(FILE *o, const char *name, vec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
+static void dump_d3(FILE *o, const char *name, dvec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
+/* The file's base name only: dumps must not depend on where the tree lives. */
+static void dump_loc(FILE *o, diag_loc l)
+{
+	const char *name = l.src ? l.src->name : "?";
+	const char *slash = strrchr(name, '/');
+	fprintf(o, " @%s:%u:%u", slash ? slash + 1 : name, l.line, l.col);
+}
+
+static void dump_material(FILE *o, const scene_material *m)
+{
+	fprintf(o, "material %u %s", m->id, scene_material_kind_name(m->kind));
+	if (m->name)
+		fprintf(o, " name %s", m->name);
+	dump_loc(o, m->loc);
+	fputc('\n', o);
+	if (m->kind == MAT_DIFFUSE || m->kind == MAT_TEXTURE) {
+		fprintf(o, " ");
+		dump_v3(o, "color", m->color);
+		if (m->image)
+			fprintf(o, " image \"%s\"", m->image);
+		fprintf(o, " diffuse %g specular %g roughness %g", m->diffuse, m->specular, m->roughness);
+		if (m->ior > 0)
+			fprintf(o, " ior %g", m->ior);
+		fputc('\n', o);
+	}
+	if (m->emission.x != 0 || m->emission.y != 0 || m->emission.z != 0) {
+		fprintf(o, " ");
+		dump_v3(o, "emission", m->emission);
+		fputc('\n', o);
+	}
+	if (m->kind >= MAT_SKIN) {
+		const scene_sss *s = &m->sss;
+		static const char *const forms[] = {"default", "physical", "artist"};
+		fprintf(o, "  form %s", forms[s->given]);
+		if (s->preset)
+			fprintf(o, " preset %s", s->preset);
+		fputc('\n', o);
+		fprintf(o, " ");
+		dump_v3(o, "sigma_s", s->sigma_s_per_mm);
+		dump_v3(o, "sigma_a", s->sigma_a_per_mm);
+		fprintf(o, "\n ");
+		fprintf(o, " albedo <%.4f, %.4f, %.4f> radius <%.4f, %.4f, %.4f>\n", s->albedo.x, s->albedo.y,
+			s->albedo.z, s->radius_mm.x, s->radius_mm.y, s->radius_mm.z);
+		fprintf(o, "  ior %g roughness %g anisotropy %g profile %s method %s", s->ior, s->roughness,
+			s->anisotropy, scene_sss_profile_name(s->profile), scene_sss_method_name(s->method));
+		if (s->albedo_image)
+			fprintf(o, " image \"%s\"", s->albedo_image);
+		if (s->normal_map)
+			fprintf(o, " normal_map \"%s\" strength %g", s->normal_map, s->normal_strength);
+		if (s->group)
+			fprintf(o, " group \"%s\"", s->group);
+		fputc('\n', o);
+	}
+}
+
+static void dump_geom(FILE *o, const scene_geom *g)
+{
+	static const char *const kinds[] = {"sphere", "box", "plane", "mesh", "mesh_file", "subdivision_surface"};
+	fprintf(o, "geom %u %s", g->id, kinds[g->kind]);
+	dump_loc(o, g->loc);
+	switch (g->kind) {
+	case SHAPE_SPHERE:
+		dump_d3(o, "center", g->u.sphere.center);
+		fprintf(o, " radius %g\n", g->u.sphere.radius);
+		break;
+	case SHAPE_BOX:
+		dump_d3(o, "corner1", g->u.box.corner1);
+		dump_d3(o, "corner2", g->u.box.corner2);
+		fputc('\n', o);
+		break;
+	case SHAPE_PLANE:
+		dump_d3(o, "normal", g->u.plane.normal);
+		fprintf(o, " offset %g\n", g->u.plane.offset);
+		break;
+	case SHAPE_MESH_FILE:
+		fprintf(o, " file \"%s\"\n", g->u.file.path);
+		break;
+	case SHAPE_MESH: {
+		const scene_mesh *m = &g->u.mesh;
+		fprintf(o, " positions %u normals %u uvs %u faces %u\n", m->n_positions, m->n_normals, m->n_uvs,
+			m->n_faces);
+		for (uint32_t i = 0; i < m->n_positions; i++)
+			fprintf(o, "  v %g %g %g\n", m->positions[i].x, m->positions[i].y, m->positions[i].z);
+		for (uint32_t i = 0; i < m->n_normals; i++)
+			fprintf(o, "  n %g %g %g\n", m->normals[i].x, m->normals[i].y, m->normals[i].z);
+		for (uint32_t i = 0; i < m->n_uvs; i++)
+			fprintf(o, "  uv %g %g\n", m->uvs[i].x, m->uvs[i].y);
+		for (uint32_t i = 0; i < m->n_faces; i++) {
+			fprintf(o, "  f %u %u %u", m->faces[3 * i], m->faces[3 * i + 1], m->faces[3 * i + 2]);
+			if (m->normal_idx)
+				fprintf(o, " n %u %u %u", m->normal_idx[3 * i], m->normal_idx[3 * i + 1],
+					m->normal_idx[3 * i + 2]);
+			if (m->uv_idx)
+				fprintf(o, " uv %u %u %u", m->uv_idx[3 * i], m->uv_idx[3 * i + 1], m->uv_idx[3 * i + 2]);
+			fputc('\n', o);
+		}
+		break;
+	}
+	case SHAPE_SUBDIV: {
+		const scene_subdiv *c = &g->u.subdiv;
+		fprintf(o, " scheme %s boundary %s", c->scheme == SCENE_SUBD_LOOP ? "loop" : "catmull_clark",
+			c->boundary == SCENE_SUBD_EDGE_ONLY ? "edge_only" : "edge_and_corner");
+		if (c->level > 0)
+			fprintf(o, " level %d", c->level);
+		else
+			fprintf(o, " max_edge %g", c->max_edge_px);
+		if (c->file)
+			fprintf(o, " file \"%s\"", c->file);
+		fprintf(o, " vertices %u faces %u uvs %u creases %u corners %u\n", c->n_vertices, c->n_faces,
+			c->n_uvs, c->n_creases, c->n_corners);
+		for (uint32_t i = 0; i < c->n_vertices; i++)
+			fprintf(o, "  v %g %g %g\n", c->vertices[i].x, c->vertices[i].y, c->vertices[i].z);
+		for (uint32_t f = 0, b = 0; f < c->n_faces; b += c->face_sizes[f], f++) {
+			fprintf(o, "  f");
+			for (uint32_t k = 0; k < c->face_sizes[f]; k++)
+				fprintf(o, " %u", c->face_verts[b + k]);
+			fputc('\n', o);
+		}
+		for (uint32_t i = 0; i < c->n_uvs; i++)
+			fprintf(o, "  uv %g %g\n", c->uvs[i].x, c->uvs[i].y);
+		for (uint32_t f = 0, b = 0; f < c->n_uv_faces; b += c->uv_face_sizes[f], f++) {
+			fprintf(o, "  uf");
+			for (uint32_t k = 0; k < c->uv_face_sizes[f]; k++)
+				fprintf(o, " %u", c->uv_face_verts[b + k]);
+			fputc('\n', o);
+		}
+		for (uint32_t i = 0; i < c->n_creases; i++)
+			fprintf(o, "  crease %u %u %g\n", c->creases[i].a, c->creases[i].b, c->creases[i].sharpness);
+		for (uint32_t i = 0; i < c->n_corners; i++)
+			fprintf(o, "  corner %u %g\n", c->corners[i].vertex, c->corners[i].sharpness);
+		break;
+	}
+	}
+}
+
+static void dump_xform(FILE *o, const xform *t)
+{
+	fprintf(o, "  m");
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 4; j++) {
+			double v = t->m[i][j];
+			fprintf(o, " %.6g", fabs(v) < 1e-12 ? 0.0 : v);
+		}
+	fputc('\n', o);
+}
+
+void scene_dump(const scene *s, FILE *o)
+{
+	fprintf(o, "global mm_per_unit %g max_trace_level %d assumed_gamma %g\n", s->global.mm_per_unit,
+		s->global.max_trace_level, s->global.assumed_gamma);
+	if (s->has_camera) {
+		const scene_camera *c = &s->camera;
+		fprintf(o, "camera");
+		dump_loc(o, c->loc);
+		dump_d3(o, "location", c->location);
+		dump_d3(o, "look_at", c->look_at);
+		dump_d3(o, "sky", c->sky);
+		dump_d3(o, "right", c->right);
+		dump_d3(o, "up", c->up);
+		fprintf(o, " angle %g aperture %g", c->angle_deg, c->aperture);
+		if (c->has_focal_point)
+			dump_d3(o, "focal_point", c->focal_point);
+		fputc('\n', o);
+	}
+	if (s->has_background) {
+		fprintf(o, "background");
+		dump_v3(o, "color", s->background);
+		fputc('\n', o);
+	}
+	if (s->has_sky_sphere) {
+		fprintf(o, "sky_sphere image \"%s\" intensity %g", s->sky_sphere.image, s->sky_sphere.intensity);
+		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
+		fputc('\n', o);
+	}
+	static const char *const lk[] = {"point", "sphere", "spot", "parallel"};
+	for (size_t i = 0; i < scene_n_lights(s); i++) {
+		const scene_light *l = scene_light_at(s, i);
+		fprintf(o, "light %s", lk[l->kind]);
+		dump_loc(o, l->loc);
+		dump_d3(o, "position", l->position);
+		dump_v3(o, "color", l->color);
+		fprintf(o, " intensity %g", l->intensity);
+		if (l->kind == SCENE_LIGHT_SPHERE)
+			fprintf(o, " radius %g", l->radius);
+		if (l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL)
+			dump_d3(o, "point_at", l->point_at);
+		if (l->kind == SCENE_LIGHT_SPOT)
+			fprintf(o, " cone %g falloff %g", l->cone_deg, l->falloff_deg);
+		fputc('\n', o);
+	}
+	/* Oldest first: the lists are built newest first. */
+	const scene_material **mats = mem_alloc(s->n_materials ? s->n_materials : 1, sizeof *mats);
+	if (mats) {
+		for (const scene_material *m = s->materials; m; m = m->next)
+			mats[m->id] = m;
+		for (uint32_t i = 0; i < s->n_materials; i++)
+			dump_material(o, mats[i]);
+		mem_free(mats);
+	}
+	const scene_geom **geoms = mem_alloc(s->n_geoms ? s->n_geoms : 1, sizeof *geoms);
+	if (geoms) {
+		for (const scene_geom *g = s->geoms; g; g = g->next)
+			geoms[g->id] = g;
+		for (uint32_t i = 0; i < s->n_geoms; i++)
+			dump_geom(o, geoms[i]);
+		mem_free(geoms);
+	}
+	for (size_t i = 0; i < scene_n_objects(s); i++) {
+		const scene_object *ob = scene_object_at(s, i);
+		fprintf(o, "object %zu geom %u material ", i, ob->geom->id);
+		if (ob->material)
+			fprintf(o, "%u", ob->material->id);
+		else
+			fprintf(o, "default");
+		if (ob->no_shadow)
+			fprintf(o, " no_shadow");
+		if (ob->instance)
+			fprintf(o, " instance");
+		dump_loc(o, ob->loc);
+		fputc('\n', o);
+		dump_xform(o, &ob->transform);
+	}
+}

@@ -1,0 +1,203 @@
+/* scene.h - the scene IR: plain C structs that the language fills and the geometry and renderer
+ * read. No text syntax lives here. Every item keeps the diag_loc of the text that made it, so later
+ * stages (tessellation, BVH build) can report errors at the right place. A scene owns all of its
+ * memory (an arena plus a few large heap arrays); scene_free releases everything. */
+#ifndef CIRCE_SCENE_SCENE_H
+#define CIRCE_SCENE_SCENE_H
+
+#include "base/diag.h"
+#include "base/mem.h"
+#include "base/vec.h"
+#include "scene/material.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+typedef struct scene_camera {
+	diag_loc loc;
+	dvec3 location, look_at, sky, right, up;
+	double angle_deg; /* horizontal field of view */
+	double aperture; /* thin lens when > 0 */
+	dvec3 focal_point;
+	bool has_focal_point;
+} scene_camera;
+
+typedef enum scene_light_kind { SCENE_LIGHT_POINT, SCENE_LIGHT_SPHERE, SCENE_LIGHT_SPOT, SCENE_LIGHT_PARALLEL } scene_light_kind;
+
+typedef struct scene_light {
+	diag_loc loc;
+	scene_light_kind kind;
+	dvec3 position;
+	vec3 color;
+	double intensity; /* multiplies color; default 1 */
+	double radius; /* sphere lights: scene units */
+	dvec3 point_at; /* spot and parallel lights */
+	double cone_deg, falloff_deg; /* spot lights: POV-Ray's radius and falloff, degrees */
+} scene_light;
+
+typedef enum scene_shape_kind {
+	SHAPE_SPHERE,
+	SHAPE_BOX,
+	SHAPE_PLANE,
+	SHAPE_MESH, /* triangles from mesh{triangle...}, mesh2, or a generated list */
+	SHAPE_MESH_FILE, /* mesh { file "x.obj" }: loaded by the importer */
+	SHAPE_SUBDIV /* subdivision_surface */
+} scene_shape_kind;
+
+/* A triangle mesh. Faces index positions; normal_idx/uv_idx (when non-NULL) index normals/uvs
+ * with the same layout (three per face). Arrays are heap-owned by the scene. */
+typedef struct scene_mesh {
+	vec3 *positions;
+	uint32_t n_positions;
+	vec3 *normals;
+	uint32_t n_normals;
+	vec2 *uvs;
+	uint32_t n_uvs;
+	uint32_t *faces; /* 3 * n_faces */
+	uint32_t *normal_idx; /* 3 * n_faces or NULL */
+	uint32_t *uv_idx; /* 3 * n_faces or NULL */
+	uint32_t n_faces;
+} scene_mesh;
+
+typedef enum scene_subd_scheme { SCENE_SUBD_CATMULL_CLARK, SCENE_SUBD_LOOP } scene_subd_scheme;
+typedef enum scene_subd_boundary { SCENE_SUBD_EDGE_ONLY, SCENE_SUBD_EDGE_AND_CORNER } scene_subd_boundary;
+
+typedef struct scene_crease {
+	uint32_t a, b;
+	float sharpness;
+	diag_loc loc;
+} scene_crease;
+
+typedef struct scene_corner {
+	uint32_t vertex;
+	float sharpness;
+	diag_loc loc;
+} scene_corner;
+
+/* A subdivision cage: either a file or inline vertices and faces of any size >= 3. */
+typedef struct scene_subdiv {
+	const char *file; /* NULL for an inline cage */
+	vec3 *vertices;
+	uint32_t n_vertices;
+	uint32_t *face_sizes; /* n_faces entries */
+	uint32_t *face_verts; /* sum of face_sizes entries */
+	diag_loc *face_locs; /* where each face was written, for errors */
+	uint32_t n_faces, n_face_verts;
+	vec2 *uvs;
+	uint32_t n_uvs;
+	uint32_t *uv_face_sizes, *uv_face_verts; /* same face count as the cage when given */
+	uint32_t n_uv_faces, n_uv_face_verts;
+	scene_crease *creases;
+	uint32_t n_creases;
+	scene_corner *corners;
+	uint32_t n_corners;
+	scene_subd_scheme scheme;
+	scene_subd_boundary boundary;
+	int level; /* uniform level when > 0 */
+	double max_edge_px; /* adaptive: longest tessellated edge on screen, pixels (when level == 0) */
+} scene_subdiv;
+
+/* Geometry, shared between every object that instances it (object { Name } points here). */
+typedef struct scene_geom {
+	diag_loc loc;
+	scene_shape_kind kind;
+	uint32_t id; /* 0, 1, ... in creation order */
+	union {
+		struct {
+			dvec3 center;
+			double radius;
+		} sphere;
+		struct {
+			dvec3 corner1, corner2;
+		} box;
+		struct {
+			dvec3 normal;
+			double offset;
+		} plane;
+		scene_mesh mesh;
+		struct {
+			const char *path; /* as written; resolved against the scene's folder by the importer */
+		} file;
+		scene_subdiv subdiv;
+	} u;
+	struct scene_geom *next; /* the scene's list of all geometry */
+} scene_geom;
+
+/* One placed object: a geometry, its object-to-world transform and its material. Unions are
+ * flattened into their members, each with the composed transform. */
+typedef struct scene_object {
+	diag_loc loc;
+	const scene_geom *geom;
+	xform transform;
+	const scene_material *material; /* NULL: the default grey diffuse */
+	bool no_shadow;
+	bool instance; /* made by object { Name } */
+} scene_object;
+
+typedef struct scene_global {
+	double mm_per_unit; /* default 10 */
+	int max_trace_level; /* default 5 */
+	double assumed_gamma; /* default 1 */
+} scene_global;
+
+typedef struct scene_sky_sphere {
+	diag_loc loc;
+	const char *image;
+	double intensity;
+	dvec3 rotate_deg;
+} scene_sky_sphere;
+
+typedef struct scene {
+	arena arena; /* owns strings, materials, small records */
+	scene_global global;
+	bool has_camera;
+	scene_camera camera;
+	vecbuf lights; /* scene_light */
+	bool has_background;
+	vec3 background;
+	diag_loc background_loc;
+	bool has_sky_sphere;
+	scene_sky_sphere sky_sphere;
+	vecbuf objects; /* scene_object */
+	scene_geom *geoms; /* every geometry record, newest first */
+	uint32_t n_geoms;
+	scene_material *materials; /* every material record, newest first */
+	uint32_t n_materials;
+} scene;
+
+scene *scene_new(void);
+void scene_free(scene *s);
+
+/* New records owned by s; NULL when memory runs out. */
+scene_geom *scene_new_geom(scene *s, scene_shape_kind kind, diag_loc loc);
+scene_material *scene_new_material(scene *s, diag_loc loc);
+
+static inline size_t scene_n_objects(const scene *s) { return s->objects.len; }
+static inline const scene_object *scene_object_at(const scene *s, size_t i)
+{
+	return &VECBUF_AT(&s->objects, scene_object, i);
+}
+static inline size_t scene_n_lights(const scene *s) { return s->lights.len; }
+static inline const scene_light *scene_light_at(const scene *s, size_t i)
+{
+	return &VECBUF_AT(&s->lights, scene_light, i);
+}
+
+/* Checks what the parser cannot check alone (index ranges, creases, camera, materials) and
+ * reports every problem through d. Returns the number of errors found. */
+int scene_validate(const scene *s, diag *d);
+
+/* Counts for `circe check`. */
+typedef struct scene_stats {
+	size_t objects, instances, geoms, lights;
+	size_t materials_by_kind[MAT_KIND_COUNT];
+	size_t mesh_triangles; /* explicit triangles only; tessellation comes later */
+	size_t subdiv_faces;
+	size_t memory_bytes; /* estimated IR memory */
+} scene_stats;
+void scene_stats_get(const scene *s, scene_stats *st);
+
+/* Writes a stable text dump of the IR (for golden tests and debugging). */
+void scene_dump(const scene *s, FILE *out);
+
+#endif

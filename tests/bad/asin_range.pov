@@ -1,0 +1,1 @@
+#declare A = asin(2);

@@ -1,0 +1,1 @@
+#declare A = 1 #declare B = 2;

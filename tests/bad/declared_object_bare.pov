@@ -1,0 +1,2 @@
+#declare Ball = sphere { 0, 1 }
+Ball

@@ -1,0 +1,1 @@
+#declare A = atan2(1);

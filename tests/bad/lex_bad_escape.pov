@@ -1,0 +1,1 @@
+#declare S = "a\q";

@@ -1,0 +1,2 @@
+#include "abc
+sphere { 0, 1 }

@@ -1,0 +1,1 @@
+global_settings { max_trace_level 2.5 }

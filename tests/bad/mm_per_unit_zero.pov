@@ -1,0 +1,1 @@
+global_settings { mm_per_unit 0 }

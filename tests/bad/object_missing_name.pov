@@ -1,0 +1,1 @@
+object { sphere { 0, 1 } }

@@ -1,0 +1,1 @@
+sky_sphere { intensity 2 }

@@ -1,0 +1,4 @@
+subdivision_surface {
+  vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }
+  faces { 2, <0, 1, 2>, <0, 2> }
+}

@@ -1,0 +1,6 @@
+subdivision_surface {
+  vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }
+  faces { 1, <0, 1, 2> }
+  uv_vectors { 3, <0, 0>, <1, 0>, <0, 1> }
+  uv_faces { 2, <0, 1, 2>, <0, 1, 2> }
+}

@@ -1,0 +1,2 @@
+#declare M = material { skin { } }
+sphere { 0, 1 texture { M pigment { rgb 1 } } }

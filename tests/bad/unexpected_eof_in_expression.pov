@@ -1,0 +1,1 @@
+#declare A = 1 +

@@ -1,0 +1,2 @@
+camera { location <0, 0, -5> look_at 0 }
+foo

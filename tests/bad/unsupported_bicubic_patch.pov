@@ -1,0 +1,1 @@
+bicubic_patch { type 1 }

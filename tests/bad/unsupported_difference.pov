@@ -1,0 +1,4 @@
+difference {
+  sphere { 0, 1 }
+  box { -1, 1 }
+}

@@ -1,0 +1,1 @@
+isosurface { function { x } }

@@ -1,0 +1,3 @@
+#macro M(A)
+  sphere { 0, A }
+#end

@@ -1,0 +1,1 @@
+global_settings { photons { count 1000 } }

@@ -1,0 +1,3 @@
+#declare A = 1;
+#switch (A)
+#end

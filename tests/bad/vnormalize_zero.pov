@@ -1,0 +1,1 @@
+#declare V = vnormalize(<0, 0, 0>);

@@ -1,0 +1,38 @@
+#!/bin/sh
+# check_cli: `circe check` exit codes and summary: 0 ok, 1 unreadable file, 2 bad command line, 3 scene error.
+set -u
+: "${CIRCE:?}" "${srcdir:?}"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/circe-cli.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+expect() { # expect STATUS DESCRIPTION -- command...
+	want=$1 what=$2
+	shift 3
+	"$@" >"$tmp/out" 2>"$tmp/err"
+	got=$?
+	if [ "$got" -ne "$want" ]; then
+		echo "FAIL $what: exit $got, expected $want"
+		cat "$tmp/out" "$tmp/err"
+		fail=1
+	fi
+}
+good="$srcdir/tests/good"
+expect 0 "good scene" -- "$CIRCE" check -I "$good/inc" "$good/include_path.pov"
+grep -q "objects:    4" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
+grep -q "triangles after tessellation: (tessellation not yet built)" "$tmp/out" ||
+	{ echo "FAIL summary lacks the honest triangle line"; fail=1; }
+expect 1 "missing file" -- "$CIRCE" check "$tmp/none.pov"
+grep -qx "$tmp/none.pov: error: cannot open: No such file or directory" "$tmp/err" ||
+	{ echo "FAIL missing-file message:"; cat "$tmp/err"; fail=1; }
+expect 2 "no scene" -- "$CIRCE" check
+expect 2 "two scenes" -- "$CIRCE" check a.pov b.pov
+expect 2 "bad clock" -- "$CIRCE" check --clock abc "$good/basic.pov"
+expect 2 "unknown option" -- "$CIRCE" check --frobnicate "$good/basic.pov"
+expect 3 "scene error" -- "$CIRCE" check "$srcdir/tests/bad/sphere_missing_comma.pov"
+expect 3 "include without -I" -- "$CIRCE" check "$good/include_path.pov"
+printf 'sphere { 0, clock }\n' >"$tmp/clock.pov"
+expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
+expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
+expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
+grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+exit $fail
