@@ -8,7 +8,14 @@
 #include "io/exr.h"
 #include "io/merge.h"
 #include "lang/lang.h"
+#include "render/output.h"
+#include "render/scheduler.h"
+#include "render/world.h"
 #include "scene/scene.h"
+
+#include <signal.h>
+#include <stdatomic.h>
+#include <time.h>
 
 #include <errno.h>
 #include <getopt.h>
@@ -338,6 +345,88 @@ static int parse_render_cli(int argc, char **argv, render_cli *o)
 	return EXIT_OK;
 }
 
+/* Set by SIGINT/SIGTERM; the scheduler polls it. The handler does nothing else. */
+static _Atomic int interrupted;
+
+static void on_signal(int sig)
+{
+	(void)sig;
+	atomic_store(&interrupted, 1);
+}
+
+/* FNV-1a (64-bit) of every source text the parser read, in the order it read them: the scene
+ * and its includes. Tiles of one frame must agree on it. */
+static void scene_hash(const diag *d, char out[17])
+{
+	uint64_t h = 0xcbf29ce484222325ULL;
+	const diag_source *list[4096];
+	size_t n = 0;
+	for (const diag_source *s = d->sources; s && n < 4096; s = s->next)
+		list[n++] = s;
+	while (n-- > 0) /* the list is newest first */
+		for (size_t i = 0; i < list[n]->len; i++)
+			h = (h ^ (unsigned char)list[n]->text[i]) * 0x100000001b3ULL;
+	snprintf(out, 17, "%016llx", (unsigned long long)h);
+}
+
+/* The output name with the frame number in place of the run of '#' (zero-padded to its length),
+ * or before the extension when there is no '#'. */
+static char *frame_name(const char *pattern, long frame)
+{
+	size_t n = strlen(pattern) + 32;
+	char *out = malloc(n);
+	if (!out)
+		return NULL;
+	const char *hash = strchr(pattern, '#');
+	if (frame < 0) {
+		snprintf(out, n, "%s", pattern);
+	} else if (hash) {
+		size_t run = strspn(hash, "#");
+		snprintf(out, n, "%.*s%0*ld%s", (int)(hash - pattern), pattern, (int)run, frame, hash + run);
+	} else {
+		const char *dot = strrchr(pattern, '.');
+		const char *slash = strrchr(pattern, '/');
+		if (!dot || (slash && dot < slash))
+			dot = pattern + strlen(pattern);
+		snprintf(out, n, "%.*s.%04ld%s", (int)(dot - pattern), pattern, frame, dot);
+	}
+	return out;
+}
+
+/* The default output: the scene's name with .exr, in the current folder. */
+static char *default_output(const char *scene_path)
+{
+	const char *base = strrchr(scene_path, '/');
+	base = base ? base + 1 : scene_path;
+	const char *dot = strrchr(base, '.');
+	size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	char *out = malloc(stem + 5);
+	if (out)
+		snprintf(out, stem + 5, "%.*s.exr", (int)stem, base);
+	return out;
+}
+
+typedef struct checkpoint_ctx {
+	const char *path;
+	output_info *info;
+	diag *d;
+	struct timespec start;
+} checkpoint_ctx;
+
+static double seconds_since(const struct timespec *t0)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)(t.tv_sec - t0->tv_sec) + 1e-9 * (double)(t.tv_nsec - t0->tv_nsec);
+}
+
+static void on_checkpoint(void *user, const film *f)
+{
+	checkpoint_ctx *c = user;
+	c->info->render_seconds = seconds_since(&c->start);
+	output_write_exr(c->path, f, c->info, c->d);
+}
+
 /* circe render SCENE [options]. */
 static int cmd_render(int argc, char **argv)
 {
@@ -345,8 +434,98 @@ static int cmd_render(int argc, char **argv)
 	int status = parse_render_cli(argc, argv, &o);
 	if (status != EXIT_OK)
 		return status < 0 ? EXIT_OK : status;
-	fprintf(stderr, "circe: error: 'render' needs the renderer, which this build lacks\n");
-	return EXIT_RUNTIME;
+	struct timespec start;
+	clock_gettime(CLOCK_MONOTONIC, &start);
+	diag d;
+	diag_init(&d, stderr);
+	lang_options lo = {.include_dirs = o.include_dirs, .n_include_dirs = (size_t)o.ninclude, .clock = o.clock};
+	scene *sc = NULL;
+	lang_status ls = lang_parse_file(o.scene, &lo, &d, &sc);
+	if (ls != LANG_OK) {
+		diag_free(&d);
+		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
+	}
+	char *out_default = o.out ? NULL : default_output(o.scene);
+	char *out = frame_name(o.out ? o.out : out_default, o.frame);
+	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
+	world w;
+	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory};
+	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
+	 * the machine's (memory): both were reported with their place. */
+	if (!out || (o.png && !png) || !world_build(&w, sc, &wo, &d)) {
+		int rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
+		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+		return rc;
+	}
+	int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+	char tile[32] = "";
+	if (o.has_region) {
+		x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
+	} else if (o.tile_n) {
+		exrfile_rect r;
+		if (!merge_tile_rect(o.width, o.height, o.tile_i, o.tile_n, &r)) {
+			fprintf(stderr, "circe: error: a %dx%d image cannot be cut into %d tiles\n", o.width, o.height,
+				o.tile_n);
+			world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+			return EXIT_USAGE;
+		}
+		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
+		snprintf(tile, sizeof tile, "%d/%d", o.tile_i, o.tile_n);
+	}
+	film f;
+	if (!film_init(&f, o.width, o.height, x0, y0, x1, y1)) {
+		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o.width, o.height);
+		world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+		return EXIT_RUNTIME;
+	}
+	if (w.has_sss && !o.quiet)
+		fprintf(stderr, "circe: note: subsurface scattering is not in this build yet: skin, wax and "
+				"marble render as their coat over a diffuse interior of the material's albedo\n");
+	char hash[17];
+	scene_hash(&d, hash);
+	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
+			    .sss_method = o.sss ? o.sss : "circle", .clock = o.clock, .tile = tile[0] ? tile : NULL,
+			    .aovs = o.aovs};
+	checkpoint_ctx cp = {out, &info, &d, start};
+	render_job job = {
+		.scene = &w.rs, .camera = &w.camera,
+		.settings = {.max_trace_level = sc->global.max_trace_level > 0 ? sc->global.max_trace_level
+									: RENDER_DEFAULT_MAX_TRACE_LEVEL,
+			     .mode = RENDER_MIS},
+		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
+		.threads = o.threads, .quiet = o.quiet, .checkpoint_interval_s = o.checkpoint_s,
+		.checkpoint = on_checkpoint, .checkpoint_user = &cp, .interrupt = &interrupted};
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+	render_stats stats;
+	render_status rs = render_run(&job, &f, &stats);
+	signal(SIGINT, SIG_DFL);
+	signal(SIGTERM, SIG_DFL);
+	int rc = EXIT_OK;
+	if (rs == RENDER_ERROR) {
+		fprintf(stderr, "circe: error: the render could not start (threads or memory)\n");
+		rc = EXIT_RUNTIME;
+	} else {
+		info.interrupted = rs == RENDER_INTERRUPTED;
+		info.render_seconds = seconds_since(&start);
+		bool ok = output_write_exr(out, &f, &info, &d) && (!png || output_write_png(png, &f, 0.0f, &d));
+		if (!o.quiet || stats.dropped)
+			fprintf(stderr, "circe: %s: %u samples per pixel in %.2f s (%.3g samples/s, %d threads); %llu "
+					"non-finite samples dropped\n",
+				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
+				(unsigned long long)stats.dropped);
+		rc = !ok ? EXIT_RUNTIME : info.interrupted ? 130 : EXIT_OK;
+	}
+	film_free(&f);
+	world_free(&w);
+	scene_free(sc);
+	free(out), free(png), free(out_default);
+	diag_free(&d);
+	return rc;
 }
 
 /* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most

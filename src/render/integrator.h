@@ -34,6 +34,7 @@ typedef struct render_hit {
 	int light;	       /* index into render_scene.lights->lights of the emissive mesh (LIGHT_MESH)
 				  this surface belongs to, or -1 */
 	uint32_t object, prim; /* the scene's own ids, passed back to shade() for texture lookups */
+	vec2 bary;     /* barycentrics of the triangle's second and third vertex, for shade() */
 } render_hit;
 
 typedef struct render_scene {

@@ -1,0 +1,95 @@
+/* output.c - film to EXR channels and header attributes; film to PNG. */
+#include "config.h"
+
+#include "render/output.h"
+
+#include "base/mem.h"
+#include "io/exr.h"
+#include "io/image.h"
+
+#include <inttypes.h>
+#include <stdio.h>
+
+/* Planar copies of the film's channels, freed together. */
+typedef struct planes {
+	float *data[4];
+} planes;
+
+bool output_write_exr(const char *path, const film *f, const output_info *info, diag *d)
+{
+	int w = film_region_width(f), h = film_region_height(f);
+	size_t n = (size_t)w * (size_t)h;
+	static const film_channel chans[4] = {FILM_ALBEDO, FILM_NORMAL, FILM_DEPTH, FILM_VARIANCE};
+	static const char *const names[4][3] = {
+		{"albedo.R", "albedo.G", "albedo.B"}, {"N.X", "N.Y", "N.Z"}, {"Z", NULL, NULL},
+		{"variance.R", "variance.G", "variance.B"}};
+	float *beauty = mem_alloc(n, 4 * sizeof(float));
+	float *aov[4] = {NULL, NULL, NULL, NULL};
+	exrfile_channel ch[4 + 4 * 3];
+	int nch = 0;
+	bool ok = beauty != NULL;
+	if (ok) {
+		/* Beauty RGB is read three-wide, then spread to RGBA with A = 1. */
+		film_read(f, FILM_BEAUTY, beauty);
+		for (size_t i = n; i-- > 0;) {
+			float r = beauty[i * 3], g = beauty[i * 3 + 1], b = beauty[i * 3 + 2];
+			beauty[i * 4] = r, beauty[i * 4 + 1] = g, beauty[i * 4 + 2] = b, beauty[i * 4 + 3] = 1.0f;
+		}
+		static const char *const rgba[4] = {"R", "G", "B", "A"};
+		for (int c = 0; c < 4; c++)
+			ch[nch++] = (exrfile_channel){rgba[c], beauty + c, 4, (size_t)w * 4};
+	}
+	for (int k = 0; ok && k < 4; k++) {
+		if (!(info->aovs & (1u << k)))
+			continue;
+		int comps = film_channel_components(chans[k]);
+		aov[k] = mem_alloc(n, (size_t)comps * sizeof(float));
+		if (!(ok = aov[k] != NULL))
+			break;
+		film_read(f, chans[k], aov[k]);
+		for (int c = 0; c < comps; c++)
+			ch[nch++] = (exrfile_channel){names[k][c], aov[k] + c, (size_t)comps, (size_t)w * comps};
+	}
+	if (!ok) {
+		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
+	} else {
+		char seed[32];
+		snprintf(seed, sizeof seed, "%" PRIu64, info->seed);
+		exrfile_attr at[12];
+		int na = 0;
+		at[na++] = (exrfile_attr){.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe " PACKAGE_VERSION};
+		at[na++] = (exrfile_attr){.name = "circe.scene", .kind = EXRFILE_ATTR_STRING, .s = info->scene_path};
+		at[na++] = (exrfile_attr){.name = "circe.scene_hash", .kind = EXRFILE_ATTR_STRING, .s = info->scene_hash};
+		at[na++] = (exrfile_attr){.name = "circe.seed", .kind = EXRFILE_ATTR_STRING, .s = seed};
+		at[na++] = (exrfile_attr){.name = "circe.spp", .kind = EXRFILE_ATTR_INT, .i = (int)f->spp};
+		at[na++] = (exrfile_attr){.name = "circe.sss", .kind = EXRFILE_ATTR_STRING, .s = info->sss_method};
+		at[na++] = (exrfile_attr){.name = "circe.clock", .kind = EXRFILE_ATTR_DOUBLE, .d = info->clock};
+		at[na++] = (exrfile_attr){.name = "circe.render_time_s", .kind = EXRFILE_ATTR_DOUBLE,
+					  .d = info->render_seconds};
+		at[na++] = (exrfile_attr){.name = "circe.dropped_samples", .kind = EXRFILE_ATTR_DOUBLE,
+					  .d = (double)f->dropped};
+		at[na++] = (exrfile_attr){.name = "circe.interrupted", .kind = EXRFILE_ATTR_INT, .i = info->interrupted};
+		if (info->tile)
+			at[na++] = (exrfile_attr){.name = "circe.tile", .kind = EXRFILE_ATTR_STRING, .s = info->tile};
+		exrfile_write_desc desc = {{0, 0, f->width, f->height}, {f->x0, f->y0, f->x1, f->y1}, nch, ch, na, at};
+		ok = exrfile_write(path, &desc, d);
+	}
+	mem_free(beauty);
+	for (int k = 0; k < 4; k++)
+		mem_free(aov[k]);
+	return ok;
+}
+
+bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d)
+{
+	int w = film_region_width(f), h = film_region_height(f);
+	float *rgb = mem_alloc((size_t)w * (size_t)h, 3 * sizeof(float));
+	if (!rgb) {
+		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
+		return false;
+	}
+	film_read(f, FILM_BEAUTY, rgb);
+	bool ok = png_write(path, w, h, rgb, 3, (size_t)w * 3, exposure_stops, d);
+	mem_free(rgb);
+	return ok;
+}

@@ -1,0 +1,36 @@
+/* output.h - a film written out: the EXR with beauty and the chosen AOVs and the header that
+ * records how it was made, and the PNG preview. Data window = the film's region, display window
+ * = the whole frame, so tiles and regions are EXRs that compositing tools and `circe merge`
+ * understand. */
+#ifndef CIRCE_RENDER_OUTPUT_H
+#define CIRCE_RENDER_OUTPUT_H
+
+#include "base/diag.h"
+#include "render/film.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+enum { OUTPUT_AOV_ALBEDO = 1, OUTPUT_AOV_NORMAL = 2, OUTPUT_AOV_DEPTH = 4, OUTPUT_AOV_VARIANCE = 8 };
+
+typedef struct output_info {
+	const char *scene_path;
+	const char *scene_hash; /* hex digest of the scene text and its includes */
+	uint64_t seed;
+	const char *sss_method;
+	double clock;
+	double render_seconds;
+	const char *tile; /* "I/N" or NULL */
+	unsigned aovs;    /* OUTPUT_AOV_* */
+	bool interrupted;
+} output_info;
+
+/* Writes f as an EXR (atomically). Channels: R G B A, then albedo.R/G/B, N.X/Y/Z, Z and
+ * variance.R/G/B as asked. Attributes: software, circe.scene, circe.scene_hash, circe.seed,
+ * circe.spp (samples completed in every pixel), circe.sss, circe.clock, circe.render_time_s,
+ * circe.dropped_samples, circe.interrupted and circe.tile when set. */
+bool output_write_exr(const char *path, const film *f, const output_info *info, diag *d);
+/* Writes the beauty of f as an 8-bit sRGB PNG (atomically), exposure in stops. */
+bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d);
+
+#endif

@@ -1,0 +1,636 @@
+/* world.c - IR to meshes, BVHs, instances, BSDFs, textures, lights and camera; the integrator's
+ * callbacks over them. */
+#include "render/world.h"
+
+#include "base/mem.h"
+#include "geom/prim.h"
+#include "geom/subdiv.h"
+#include "render/shading.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+/* The grey of an object without a material: mid-grey diffuse. */
+#define WORLD_DEFAULT_GREY 0.5f
+
+/* A path written in the scene, resolved against the folder of the file it was written in; when
+ * no such file exists there, the path as written (relative to the working directory). */
+static char *resolve_path(diag_loc loc, const char *path)
+{
+	if (path[0] == '/' || !loc.src)
+		return mem_strdup(path);
+	const char *name = loc.src->name, *slash = strrchr(name, '/');
+	if (!slash)
+		return mem_strdup(path);
+	size_t n = (size_t)(slash - name) + 1 + strlen(path) + 1;
+	char *full = mem_alloc(n, 1);
+	if (!full)
+		return NULL;
+	snprintf(full, n, "%.*s%s", (int)(slash - name + 1), name, path);
+	if (access(full, F_OK) == 0)
+		return full;
+	mem_free(full);
+	return mem_strdup(path);
+}
+
+/* The image at path (resolved at loc), loaded once per world; NULL after reporting an error. */
+static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d)
+{
+	char *full = resolve_path(loc, path);
+	if (!full) {
+		diag_error(d, loc, "out of memory");
+		return NULL;
+	}
+	for (size_t i = 0; i < w->n_images; i++)
+		if (!strcmp(w->image_paths[i], full)) {
+			mem_free(full);
+			return &w->images[i];
+		}
+	image *imgs = mem_realloc(w->images, w->n_images + 1, sizeof *imgs);
+	char **paths = imgs ? mem_realloc(w->image_paths, w->n_images + 1, sizeof *paths) : NULL;
+	if (imgs)
+		w->images = imgs;
+	if (paths)
+		w->image_paths = paths;
+	if (!imgs || !paths) {
+		mem_free(full);
+		diag_error(d, loc, "out of memory");
+		return NULL;
+	}
+	image *img = &w->images[w->n_images];
+	if (!image_load(full, enc, img, d)) {
+		diag_note(d, loc, "the image was named here");
+		mem_free(full);
+		return NULL;
+	}
+	w->image_paths[w->n_images++] = full;
+	return img;
+}
+
+static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
+
+/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera. */
+static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, const world_options *opt,
+				   subd_camera *camera)
+{
+	subd_options so = {.level = sd->level, .max_bytes = opt->max_memory};
+	if (sd->level <= 0 && sd->max_edge_px > 0) {
+		const scene_camera *c = &sc->camera;
+		double aspect = (double)opt->width / (double)opt->height;
+		double half_h = tan(c->angle_deg * M_PI / 360.0) / aspect;
+		*camera = (subd_camera){.position = d3v(c->location), .look = d3v(d3_sub(c->look_at, c->location)),
+					.up = d3v(c->sky), .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+					.image_height = (uint32_t)opt->height};
+		so.camera = camera;
+		so.max_edge_px = (float)sd->max_edge_px;
+	}
+	return so;
+}
+
+static bool build_subdiv(const scene *sc, const scene_geom *g, const world_options *opt, mesh *m, diag *d)
+{
+	const scene_subdiv *sd = &g->u.subdiv;
+	if (sd->file) {
+		diag_error(d, g->loc, "subdivision_surface { file } is not supported by circe yet: give the cage "
+				      "inline with vertex_vectors and faces");
+		return false;
+	}
+	float *crease_sharp = NULL, *corner_sharp = NULL;
+	uint32_t *crease_v = NULL, *corner_v = NULL;
+	bool ok = true;
+	if (sd->n_creases) {
+		crease_v = mem_alloc((size_t)sd->n_creases * 2, sizeof *crease_v);
+		crease_sharp = mem_alloc(sd->n_creases, sizeof *crease_sharp);
+		ok = crease_v && crease_sharp;
+		for (uint32_t i = 0; ok && i < sd->n_creases; i++) {
+			crease_v[2 * i] = sd->creases[i].a, crease_v[2 * i + 1] = sd->creases[i].b;
+			crease_sharp[i] = sd->creases[i].sharpness;
+		}
+	}
+	if (ok && sd->n_corners) {
+		corner_v = mem_alloc(sd->n_corners, sizeof *corner_v);
+		corner_sharp = mem_alloc(sd->n_corners, sizeof *corner_sharp);
+		ok = corner_v && corner_sharp;
+		for (uint32_t i = 0; ok && i < sd->n_corners; i++)
+			corner_v[i] = sd->corners[i].vertex, corner_sharp[i] = sd->corners[i].sharpness;
+	}
+	if (!ok) {
+		diag_error(d, g->loc, "out of memory");
+	} else {
+		subd_cage cage = {
+			.positions = sd->vertices, .num_vertices = sd->n_vertices,
+			.face_sizes = sd->face_sizes, .num_faces = sd->n_faces, .face_indices = sd->face_verts,
+			.crease_vertices = crease_v, .crease_sharpness = crease_sharp, .num_creases = sd->n_creases,
+			.corner_vertices = corner_v, .corner_sharpness = corner_sharp, .num_corners = sd->n_corners,
+			.uvs = sd->n_uv_faces ? sd->uvs : NULL, .num_uvs = sd->n_uvs,
+			.uv_indices = sd->n_uv_faces ? sd->uv_face_verts : NULL,
+			.scheme = sd->scheme == SCENE_SUBD_LOOP ? SUBD_LOOP : SUBD_CATMULL_CLARK,
+			.boundary = sd->boundary == SCENE_SUBD_EDGE_AND_CORNER ? SUBD_BOUNDARY_EDGE_AND_CORNER
+									       : SUBD_BOUNDARY_EDGE_ONLY,
+		};
+		subd_camera camera;
+		subd_options so = subdiv_options(sc, sd, opt, &camera);
+		ok = subd_tessellate(&cage, &so, m, d, g->loc);
+	}
+	mem_free(crease_v), mem_free(crease_sharp), mem_free(corner_v), mem_free(corner_sharp);
+	return ok;
+}
+
+/* Tessellates one geometry record (planes wait for the scene's bounds). */
+static bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d)
+{
+	mesh *m = &w->geoms[g->id].m;
+	switch (g->kind) {
+	case SHAPE_SPHERE: {
+		float r = (float)g->u.sphere.radius;
+		if (!prim_sphere(d3v(g->u.sphere.center), r, prim_sphere_segments(r, r * WORLD_SPHERE_REL_ERROR), m))
+			break;
+		return true;
+	}
+	case SHAPE_BOX:
+		if (!prim_box(d3v(g->u.box.corner1), d3v(g->u.box.corner2), m))
+			break;
+		return true;
+	case SHAPE_PLANE:
+		return true;
+	case SHAPE_MESH: {
+		const scene_mesh *sm = &g->u.mesh;
+		mesh_arrays a = {sm->positions, sm->n_positions, sm->normals, sm->n_normals, sm->uvs, sm->n_uvs,
+				 sm->faces, sm->normal_idx, sm->uv_idx, sm->n_faces};
+		return mesh_from_arrays(&a, m, d, g->loc);
+	}
+	case SHAPE_MESH_FILE: {
+		char *path = resolve_path(g->loc, g->u.file.path);
+		bool ok = path && mesh_import(path, m, d);
+		if (path && !ok)
+			diag_note(d, g->loc, "the mesh file was named here");
+		mem_free(path);
+		return ok;
+	}
+	case SHAPE_SUBDIV:
+		w->stats.subdiv_surfaces++;
+		return build_subdiv(sc, g, opt, m, d);
+	}
+	diag_error(d, g->loc, "out of memory while tessellating");
+	return false;
+}
+
+/* World-space bounds of an object-space box under t. */
+static void xform_bounds(const xform *t, vec3 lo, vec3 hi, vec3 *wlo, vec3 *whi)
+{
+	*wlo = v3s(FLT_MAX), *whi = v3s(-FLT_MAX);
+	for (int k = 0; k < 8; k++) {
+		dvec3 c = d3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec3 p = d3v(xform_point(t, c));
+		*wlo = v3_min(*wlo, p), *whi = v3_max(*whi, p);
+	}
+}
+
+/* Object-space box holding the world box [lo, hi] under t's inverse. */
+static void inv_xform_bounds(const xform *t, vec3 lo, vec3 hi, vec3 *olo, vec3 *ohi)
+{
+	*olo = v3s(FLT_MAX), *ohi = v3s(-FLT_MAX);
+	for (int k = 0; k < 8; k++) {
+		dvec3 c = d3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec3 p = d3v(xform_inv_point(t, c));
+		*olo = v3_min(*olo, p), *ohi = v3_max(*ohi, p);
+	}
+}
+
+static bool is_identity(const xform *t)
+{
+	xform id = xform_identity();
+	return !memcmp(t->m, id.m, sizeof id.m);
+}
+
+/* BSDF parameters and textures of a scene material. */
+static bool build_material(world *w, size_t k, const scene_material *sm, diag *d)
+{
+	world_material *wm = &w->materials[k];
+	switch (sm->kind) {
+	case MAT_DIFFUSE:
+		w->bsdfs[k] = bsdf_diffuse(sm->color);
+		break;
+	case MAT_TEXTURE:
+		w->bsdfs[k] = bsdf_pov_finish(sm->color, sm->diffuse, sm->specular, sm->roughness);
+		break;
+	case MAT_EMISSION:
+		w->bsdfs[k] = bsdf_diffuse(v3s(0.0f));
+		break;
+	case MAT_SKIN:
+	case MAT_WAX:
+	case MAT_MARBLE:
+		/* Until subsurface scattering lands, the interior under the coat is a diffuse of the
+		 * medium's multiple-scattering albedo (the artist form). */
+		w->bsdfs[k] = bsdf_coat(sm->sss.albedo, sm->sss.ior, sm->sss.roughness);
+		w->has_sss = true;
+		break;
+	default:
+		w->bsdfs[k] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
+		break;
+	}
+	bool sss = sm->kind == MAT_SKIN || sm->kind == MAT_WAX || sm->kind == MAT_MARBLE;
+	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
+	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
+		return false;
+	if (sss && sm->sss.normal_map) {
+		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
+			return false;
+		wm->normal_strength = sm->sss.normal_strength;
+	}
+	return true;
+}
+
+/* ---- the integrator's callbacks ---------------------------------------------------------- */
+
+/* The ray in an instance's object space; t stays the same parameter. */
+static bvh_ray inst_ray(const world_inst *in, const render_ray *ray, float tmin, float tmax)
+{
+	if (in->identity)
+		return (bvh_ray){ray->o, ray->d, tmin, tmax};
+	return (bvh_ray){d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o))),
+			 d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d))), tmin, tmax};
+}
+
+/* Slab test of a ray against a world box, within [tmin, tmax]. */
+static bool box_hit(vec3 lo, vec3 hi, const render_ray *r, float tmin, float tmax)
+{
+	for (int a = 0; a < 3; a++) {
+		float o = v3_get(r->o, a), inv = 1.0f / v3_get(r->d, a);
+		float t0 = (v3_get(lo, a) - o) * inv, t1 = (v3_get(hi, a) - o) * inv;
+		if (t0 > t1) {
+			float s = t0;
+			t0 = t1, t1 = s;
+		}
+		tmin = t0 > tmin ? t0 : tmin;
+		tmax = t1 * 1.00000024f < tmax ? t1 * 1.00000024f : tmax; /* two ulps: robust slabs */
+		if (tmin > tmax)
+			return false;
+	}
+	return true;
+}
+
+static vec3 xf_normal(const world_inst *in, vec3 n)
+{
+	return in->identity ? n : d3v(xform_normal(&in->xf, v3_to_d3(n)));
+}
+
+static vec3 xf_vector(const world_inst *in, vec3 v)
+{
+	return in->identity ? v : d3v(xform_vector(&in->xf, v3_to_d3(v)));
+}
+
+static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
+{
+	const world *w = user;
+	bvh_hit best = {0};
+	int best_inst = -1;
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		if (!in->g->b || !box_hit(in->lo, in->hi, ray, tmin, tmax))
+			continue;
+		bvh_ray r = inst_ray(in, ray, tmin, tmax);
+		bvh_hit h;
+		if (bvh_intersect(in->g->b, &r, &h) && h.t <= tmax) {
+			best = h;
+			best_inst = (int)i;
+			tmax = h.t;
+		}
+	}
+	if (best_inst < 0)
+		return false;
+	const world_inst *in = &w->insts[best_inst];
+	const mesh *m = &in->g->m;
+	const uint32_t *ix = m->indices + 3 * (size_t)best.prim;
+	float b0 = 1.0f - best.u - best.v;
+	vec3 p0 = m->positions[ix[0]], p1 = m->positions[ix[1]], p2 = m->positions[ix[2]];
+	vec3 ng = v3_normalize(xf_normal(in, v3_cross(v3_sub(p1, p0), v3_sub(p2, p0))));
+	vec3 ns = ng;
+	if (m->normals) {
+		vec3 n = v3_add(v3_add(v3_scale(m->normals[ix[0]], b0), v3_scale(m->normals[ix[1]], best.u)),
+				v3_scale(m->normals[ix[2]], best.v));
+		n = v3_normalize(xf_normal(in, n));
+		if (v3_is_finite(n) && v3_length2(n) > 0.5f)
+			ns = n;
+		if (v3_dot(ns, ng) < 0.0f)
+			ng = v3_neg(ng); /* render_hit wants both normals in one hemisphere */
+	}
+	vec2 uv = v2(0.0f, 0.0f);
+	if (m->uvs)
+		uv = v2(b0 * m->uvs[ix[0]].x + best.u * m->uvs[ix[1]].x + best.v * m->uvs[ix[2]].x,
+			b0 * m->uvs[ix[0]].y + best.u * m->uvs[ix[1]].y + best.v * m->uvs[ix[2]].y);
+	*hit = (render_hit){.t = best.t, .p = v3_madd(ray->o, ray->d, best.t), .ng = ng, .ns = ns, .uv = uv,
+			    .material = in->material, .light = in->light, .object = (uint32_t)best_inst,
+			    .prim = best.prim, .bary = v2(best.u, best.v)};
+	return true;
+}
+
+static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
+{
+	const world *w = user;
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		if (in->no_shadow || !in->g->b || !box_hit(in->lo, in->hi, ray, tmin, tmax))
+			continue;
+		bvh_ray r = inst_ray(in, ray, tmin, tmax);
+		if (bvh_occluded(in->g->b, &r))
+			return true;
+	}
+	return false;
+}
+
+static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
+{
+	const world *w = user;
+	if (hit->material < 0 || hit->object >= w->n_insts)
+		return;
+	const world_material *wm = &w->materials[hit->material];
+	if (wm->albedo) {
+		float c[4];
+		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);
+		params->diffuse = v3(c[0], c[1], c[2]);
+	}
+	const world_inst *in = &w->insts[hit->object];
+	const mesh *m = &in->g->m;
+	if (wm->normal_map && m->tangents) {
+		const uint32_t *ix = m->indices + 3 * (size_t)hit->prim;
+		float b0 = 1.0f - hit->bary.x - hit->bary.y;
+		vec3 t = v3_add(v3_add(v3_scale(m->tangents[ix[0]].t, b0), v3_scale(m->tangents[ix[1]].t, hit->bary.x)),
+				v3_scale(m->tangents[ix[2]].t, hit->bary.y));
+		float c[4];
+		image_bilinear(wm->normal_map, hit->uv.x, hit->uv.y, c);
+		*ns = render_normal_map(*ns, xf_vector(in, t), m->tangents[ix[0]].sign, v3(c[0], c[1], c[2]),
+					wm->normal_strength);
+	}
+}
+
+/* ---- building ---------------------------------------------------------------------------- */
+
+static bool build_instances(world *w, const scene *sc, diag *d)
+{
+	size_t n = scene_n_objects(sc);
+	w->insts = mem_calloc(n ? n : 1, sizeof *w->insts);
+	if (!w->insts) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	for (size_t i = 0; i < n; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		world_inst *in = &w->insts[w->n_insts++];
+		in->g = &w->geoms[o->geom->id];
+		in->xf = o->transform;
+		in->identity = is_identity(&o->transform);
+		in->no_shadow = o->no_shadow;
+		in->light = -1;
+		/* Without a material: the default grey, the last entry. */
+		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;
+	}
+	return true;
+}
+
+/* Bounds of everything but planes, and the camera; planes are then cut to them. */
+static bool build_planes(world *w, const scene *sc, diag *d)
+{
+	vec3 lo = v3s(FLT_MAX), hi = v3s(-FLT_MAX);
+	for (size_t i = 0; i < w->n_insts; i++) {
+		world_inst *in = &w->insts[i];
+		const scene_object *o = scene_object_at(sc, i);
+		if (o->geom->kind == SHAPE_PLANE || !mesh_bounds(&in->g->m, &in->lo, &in->hi))
+			continue;
+		xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
+		lo = v3_min(lo, in->lo), hi = v3_max(hi, in->hi);
+	}
+	if (sc->has_camera) {
+		vec3 c = d3v(sc->camera.location);
+		lo = v3_min(lo, c), hi = v3_max(hi, c);
+	}
+	if (lo.x > hi.x)
+		lo = v3s(-1.0f), hi = v3s(1.0f);
+	/* Planes reach well past everything else, so their edges stay out of sight: ten times the
+	 * extent of the rest of the scene around it. */
+	vec3 centre = v3_scale(v3_add(lo, hi), 0.5f);
+	float ext = fmaxf(v3_max_comp(v3_sub(hi, lo)), 1e-3f) * 10.0f;
+	vec3 plo = v3_sub(centre, v3s(ext)), phi = v3_add(centre, v3s(ext));
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		world_inst *in = &w->insts[i];
+		if (o->geom->kind != SHAPE_PLANE || in->g->m.num_triangles)
+			continue;
+		vec3 olo, ohi;
+		inv_xform_bounds(&in->xf, plo, phi, &olo, &ohi);
+		mesh *m = &w->geoms[o->geom->id].m;
+		if (!prim_plane(d3v(o->geom->u.plane.normal), (float)o->geom->u.plane.offset, olo, ohi, m) &&
+		    !m->num_triangles && d3_length(o->geom->u.plane.normal) == 0.0) {
+			diag_error(d, o->geom->loc, "the plane's normal is zero");
+			return false;
+		}
+	}
+	for (size_t i = 0; i < w->n_insts; i++) {
+		world_inst *in = &w->insts[i];
+		if (scene_object_at(sc, i)->geom->kind == SHAPE_PLANE && mesh_bounds(&in->g->m, &in->lo, &in->hi))
+			xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
+	}
+	w->lo = lo, w->hi = hi;
+	w->radius = 0.5f * v3_length(v3_sub(hi, lo));
+	return true;
+}
+
+/* Adds an emissive instance as a mesh light over its world-space triangles. */
+static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, diag_loc loc)
+{
+	const mesh *m = &in->g->m;
+	vec3 *v = mem_alloc((size_t)m->num_triangles * 3, sizeof *v);
+	if (!v) {
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	for (size_t t = 0; t < (size_t)m->num_triangles * 3; t++) {
+		vec3 p = m->positions[m->indices[t]];
+		v[t] = in->identity ? p : d3v(xform_point(&in->xf, v3_to_d3(p)));
+	}
+	light l;
+	bool ok = light_mesh_init(&l, v, m->num_triangles, radiance);
+	mem_free(v);
+	if (!ok)
+		return true; /* zero area: it emits nothing */
+	in->light = (int)w->lights.count;
+	if (!light_set_add(&w->lights, &l)) {
+		light_free(&l);
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	return true;
+}
+
+static bool build_lights(world *w, const scene *sc, diag *d)
+{
+	light_set_init(&w->lights);
+	for (size_t i = 0; i < scene_n_lights(sc); i++) {
+		const scene_light *sl = scene_light_at(sc, i);
+		vec3 c = v3_scale(sl->color, (float)sl->intensity);
+		vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
+		light l;
+		switch (sl->kind) {
+		case SCENE_LIGHT_POINT:
+			l = light_point(pos, c);
+			break;
+		case SCENE_LIGHT_SPHERE:
+			l = light_sphere(pos, (float)sl->radius, c);
+			break;
+		case SCENE_LIGHT_SPOT:
+			l = light_spot(pos, at, c, (float)sl->cone_deg, (float)sl->falloff_deg);
+			break;
+		default:
+			l = light_parallel(pos, at, c);
+			break;
+		}
+		if (!light_set_add(&w->lights, &l)) {
+			diag_error(d, sl->loc, "out of memory");
+			return false;
+		}
+	}
+	if (sc->has_background) {
+		light l = light_background(sc->background);
+		if (!light_set_add(&w->lights, &l))
+			return false;
+	}
+	if (sc->has_sky_sphere) {
+		const scene_sky_sphere *sky = &sc->sky_sphere;
+		const image *img = world_image(w, sky->loc, sky->image, IMAGE_SRGB, d);
+		if (!img)
+			return false;
+		size_t n = (size_t)img->width * (size_t)img->height;
+		w->env_rgb = mem_alloc(n, 3 * sizeof(float));
+		if (!w->env_rgb) {
+			diag_error(d, sky->loc, "out of memory");
+			return false;
+		}
+		for (size_t i = 0; i < n; i++)
+			for (int c = 0; c < 3; c++)
+				w->env_rgb[i * 3 + c] = img->rgba[i * 4 + c];
+		xform rot = xform_rotate(sky->rotate_deg);
+		light l;
+		if (!light_envmap_init(&l, w->env_rgb, img->width, img->height, (float)sky->intensity, &rot) ||
+		    !light_set_add(&w->lights, &l)) {
+			diag_error(d, sky->loc, "out of memory");
+			return false;
+		}
+	}
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		if (o->material && v3_max_comp(o->material->emission) > 0.0f &&
+		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
+			return false;
+	}
+	if (!light_set_finish(&w->lights, fmaxf(w->radius, 1e-3f))) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	return true;
+}
+
+static bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	cam_params cp = cam_params_default();
+	diag_loc loc = diag_noloc();
+	if (sc->has_camera) {
+		const scene_camera *c = &sc->camera;
+		loc = c->loc;
+		cp.location = d3v(c->location);
+		cp.look_at = d3v(c->look_at);
+		cp.sky = d3v(c->sky);
+		cp.angle_deg = (float)c->angle_deg;
+		/* POV-Ray's default right <1.33,0,0> is its 4:3 default image; circe fits the image
+		 * instead, unless the scene sets another right. */
+		bool default_right = c->right.x == 1.33 && c->right.y == 0.0 && c->right.z == 0.0;
+		cp.right = default_right ? v3s(0.0f) : d3v(c->right);
+		cp.up = d3v(c->up);
+		cp.aperture = (float)c->aperture;
+		cp.focal_point = c->has_focal_point ? d3v(c->focal_point) : cp.look_at;
+	}
+	if (!cam_init(&w->camera, &cp, opt->width, opt->height)) {
+		diag_error(d, loc, "the camera is degenerate (look_at at the location, sky along the view, or angle out of range)");
+		return false;
+	}
+	return true;
+}
+
+bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	memset(w, 0, sizeof *w);
+	light_set_init(&w->lights);
+	world_options o = *opt;
+	if (!o.max_memory)
+		o.max_memory = SUBD_DEFAULT_MAX_BYTES;
+	w->n_geoms = sc->n_geoms;
+	w->geoms = mem_calloc(w->n_geoms ? w->n_geoms : 1, sizeof *w->geoms);
+	w->n_materials = sc->n_materials + 1;
+	w->bsdfs = mem_calloc(w->n_materials, sizeof *w->bsdfs);
+	w->materials = mem_calloc(w->n_materials, sizeof *w->materials);
+	if (!w->geoms || !w->bsdfs || !w->materials) {
+		diag_error(d, diag_noloc(), "out of memory");
+		world_free(w);
+		return false;
+	}
+	bool ok = true;
+	for (const scene_geom *g = sc->geoms; g && ok; g = g->next)
+		ok = build_geom(w, sc, g, &o, d);
+	ok = ok && build_instances(w, sc, d) && build_planes(w, sc, d);
+	/* Normal maps need tangents; meshes without them get generated ones. */
+	for (const scene_material *m = sc->materials; ok && m; m = m->next)
+		ok = o.geometry_only || build_material(w, m->id, m, d);
+	if (ok)
+		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
+	for (size_t i = 0; ok && !o.geometry_only && i < w->n_insts; i++) {
+		world_inst *in = &w->insts[i];
+		mesh *m = (mesh *)&in->g->m;
+		if (w->materials[in->material].normal_map && !m->tangents && m->normals && m->uvs)
+			ok = mesh_generate_tangents(m);
+		if (!ok)
+			diag_error(d, diag_noloc(), "out of memory while generating tangents");
+	}
+	for (size_t i = 0; i < w->n_geoms; i++) {
+		world_geom *g = &w->geoms[i];
+		w->stats.triangles += g->m.num_triangles;
+		w->stats.geometry_bytes += mesh_bytes(&g->m);
+		if (!ok || o.geometry_only || !g->m.num_triangles)
+			continue;
+		g->b = bvh_build(g->m.positions, g->m.num_vertices, g->m.indices, g->m.num_triangles);
+		if (!g->b) {
+			diag_error(d, diag_noloc(), "out of memory while building the BVH");
+			ok = false;
+		} else {
+			w->stats.geometry_bytes += bvh_bytes(g->b);
+		}
+	}
+	for (size_t i = 0; i < w->n_insts; i++)
+		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
+	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	if (!ok) {
+		world_free(w);
+		return false;
+	}
+	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
+			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
+			       .lights = &w->lights};
+	return true;
+}
+
+void world_free(world *w)
+{
+	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
+		mesh_free(&w->geoms[i].m);
+		bvh_free(w->geoms[i].b);
+	}
+	for (size_t i = 0; i < w->n_images; i++) {
+		image_free(&w->images[i]);
+		mem_free(w->image_paths[i]);
+	}
+	light_set_free(&w->lights);
+	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
+	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
+	memset(w, 0, sizeof *w);
+}

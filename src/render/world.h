@@ -1,0 +1,91 @@
+/* world.h - a scene made ready to render: the IR's geometry tessellated into meshes (one per
+ * geometry record, shared by every object that instances it), a BVH per mesh, the objects as
+ * instances with their transforms, the materials as BSDF parameters with their textures, the
+ * lights, and the camera. It backs the integrator's render_scene (integrator.h): its callbacks
+ * trace the instances and apply textures and normal maps at a hit. Read-only once built, so any
+ * number of render threads share one world. */
+#ifndef CIRCE_RENDER_WORLD_H
+#define CIRCE_RENDER_WORLD_H
+
+#include "accel/bvh.h"
+#include "base/diag.h"
+#include "geom/mesh.h"
+#include "io/image.h"
+#include "render/camera.h"
+#include "render/integrator.h"
+#include "render/light.h"
+#include "scene/scene.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Chordal error of a tessellated sphere, relative to its radius: 1e-4 keeps the silhouette and the
+ * shading within a part in ten thousand (256 segments around). */
+#define WORLD_SPHERE_REL_ERROR 1e-4f
+
+typedef struct world_options {
+	int width, height;    /* the image, for the camera and adaptive tessellation */
+	size_t max_memory;    /* tessellation limit in bytes (0: 1 GiB) */
+	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
+} world_options;
+
+/* One geometry record made triangles: its mesh and BVH (object space). */
+typedef struct world_geom {
+	mesh m;
+	bvh *b;
+	vec3 lo, hi; /* object-space bounds */
+} world_geom;
+
+/* One placed object. */
+typedef struct world_inst {
+	const world_geom *g;
+	xform xf;
+	bool identity;  /* xf is the identity: no ray transform needed */
+	bool no_shadow;
+	int material;   /* index into world.materials */
+	int light;      /* index of its mesh light in world.lights, or -1 */
+	vec3 lo, hi;    /* world-space bounds */
+} world_inst;
+
+/* What a material adds to its BSDF parameters at a hit. */
+typedef struct world_material {
+	const image *albedo; /* NULL: the constant colour of the BSDF */
+	const image *normal_map;
+	float normal_strength;
+} world_material;
+
+typedef struct world_stats {
+	size_t triangles;       /* of the unique meshes */
+	size_t instanced_triangles; /* counting each instance */
+	size_t geometry_bytes;  /* meshes and BVHs */
+	size_t subdiv_surfaces;
+} world_stats;
+
+typedef struct world {
+	world_geom *geoms;      /* indexed by scene_geom.id; unused records stay empty */
+	size_t n_geoms;
+	world_inst *insts;
+	size_t n_insts;
+	bsdf_params *bsdfs;     /* indexed like materials; the last is the default grey */
+	world_material *materials;
+	size_t n_materials;
+	image *images;          /* every texture loaded, once per path */
+	char **image_paths;
+	size_t n_images;
+	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
+	light_set lights;
+	cam camera;
+	vec3 lo, hi;            /* world bounds of the objects */
+	float radius;           /* of the bounding sphere, for the lights */
+	bool has_sss;           /* some material's interior stands in for subsurface scattering */
+	world_stats stats;
+	render_scene rs;        /* the integrator's view of this world */
+} world;
+
+/* Builds w from the scene; errors (a file that cannot be read, tessellation over the memory limit,
+ * a degenerate camera) are reported to d at the scene's location. On failure w is left empty. */
+bool world_build(world *w, const scene *sc, const world_options *opt, diag *d);
+void world_free(world *w);
+
+#endif
