@@ -47,25 +47,27 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 	for (size_t i = 0; i < w->n_images; i++)
 		if (!strcmp(w->image_paths[i], full)) {
 			mem_free(full);
-			return &w->images[i];
+			return w->images[i];
 		}
-	image *imgs = mem_realloc(w->images, w->n_images + 1, sizeof *imgs);
+	image **imgs = mem_realloc(w->images, w->n_images + 1, sizeof *imgs);
 	char **paths = imgs ? mem_realloc(w->image_paths, w->n_images + 1, sizeof *paths) : NULL;
+	image *img = paths ? mem_calloc(1, sizeof *img) : NULL;
 	if (imgs)
 		w->images = imgs;
 	if (paths)
 		w->image_paths = paths;
-	if (!imgs || !paths) {
+	if (!img) {
 		mem_free(full);
 		diag_error(d, loc, "out of memory");
 		return NULL;
 	}
-	image *img = &w->images[w->n_images];
 	if (!image_load(full, enc, img, d)) {
 		diag_note(d, loc, "the image was named here");
+		mem_free(img);
 		mem_free(full);
 		return NULL;
 	}
+	w->images[w->n_images] = img;
 	w->image_paths[w->n_images++] = full;
 	return img;
 }
@@ -626,7 +628,8 @@ void world_free(world *w)
 		bvh_free(w->geoms[i].b);
 	}
 	for (size_t i = 0; i < w->n_images; i++) {
-		image_free(&w->images[i]);
+		image_free(w->images[i]);
+		mem_free(w->images[i]);
 		mem_free(w->image_paths[i]);
 	}
 	light_set_free(&w->lights);

@@ -70,7 +70,7 @@ typedef struct world {
 	bsdf_params *bsdfs;     /* indexed like materials; the last is the default grey */
 	world_material *materials;
 	size_t n_materials;
-	image *images;          /* every texture loaded, once per path */
+	image **images;         /* every texture loaded, once per path (stable addresses) */
 	char **image_paths;
 	size_t n_images;
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */

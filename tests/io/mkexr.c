@@ -5,7 +5,7 @@
  * --iattr K=N add string and integer attributes.
  * --studio writes a lat-long studio environment instead (the convention of render/light.h: row 0
  * is +y, column 0.5 is +z): sky gradient, dark ground, one bright soft box up front-left.
- * Usage: mkexr OUT.exr W H [--pattern K | --const V | --studio] [--aov] [--window R] [--attr K=V]...
+ * --alpha V sets A. Usage: mkexr OUT.exr W H [--pattern K | --const V | --studio] [--alpha V] [--aov] [--window R] [--attr K=V]...
  *        [--set X,Y,C,V]... */
 #include "base/diag.h"
 #include "io/exr.h"
@@ -49,7 +49,8 @@ int main(int argc, char **argv)
 		return 2;
 	}
 	int w = atoi(argv[2]), h = atoi(argv[3]), pattern = 0;
-	int aov = 0, constant = 0, studio = 0;
+	int aov = 0, constant = 0, studio = 0, set_alpha = 0;
+	float alpha = 1.0f;
 	float cval = 0.0f;
 	if (w <= 0 || h <= 0)
 		return 2;
@@ -60,6 +61,8 @@ int main(int argc, char **argv)
 			pattern = atoi(argv[++i]);
 		else if (!strcmp(argv[i], "--aov"))
 			aov = 1;
+		else if (!strcmp(argv[i], "--alpha") && i + 1 < argc)
+			set_alpha = 1, alpha = strtof(argv[++i], NULL);
 		else if (!strcmp(argv[i], "--studio"))
 			studio = 1;
 		else if (!strcmp(argv[i], "--const") && i + 1 < argc)
@@ -76,6 +79,8 @@ int main(int argc, char **argv)
 				p[0] = p[1] = p[2] = p[3] = cval;
 			if (studio)
 				studio_texel((x + 0.5) / w, (y + 0.5) / h, p);
+			if (set_alpha)
+				p[3] = alpha;
 		}
 	for (int i = 4; i < argc; i++) {
 		if (strcmp(argv[i], "--set") || i + 1 >= argc)
