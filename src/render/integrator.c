@@ -3,9 +3,8 @@
  * geometric normal is rejected so shading normals cannot leak light through a surface. */
 #include "render/integrator.h"
 
-/* Ray origins are pushed off the surface by this times (1 + largest |coordinate|): float
- * positions carry that much relative error after intersection. */
-#define RENDER_RAY_EPS 1e-4f
+#include "accel/bvh.h"
+
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
 
@@ -22,11 +21,11 @@ static vec3 to_world(const frame *f, vec3 v)
 	return v3_add(v3_add(v3_scale(f->t, v.x), v3_scale(f->b, v.y)), v3_scale(f->n, v.z));
 }
 
-static vec3 offset_origin(vec3 p, vec3 n_out)
-{
-	float scale = 1.0f + v3_max_comp(v3_abs(p));
-	return v3_madd(p, n_out, RENDER_RAY_EPS * scale);
-}
+/* Spawned rays leave from the hit moved off its surface just enough for float error: Waechter &
+ * Binder's offset (accel/bvh.h), valid from 1e-8 to 1e8 in coordinates, so scenes behave the same
+ * at any scale. The scene's hit positions must be computed from the triangle (barycentrics), not
+ * as o + t d, for the offset to cover their error. */
+static vec3 offset_origin(vec3 p, vec3 n_out) { return bvh_offset_origin(p, n_out); }
 
 /* Nearest surface: the scene's or a sphere light's. *light_hit receives the sphere light's index
  * when that is nearer, else -1. */

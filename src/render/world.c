@@ -324,7 +324,12 @@ static bool world_intersect(void *user, const render_ray *ray, float tmin, float
 	if (m->uvs)
 		uv = v2(b0 * m->uvs[ix[0]].x + best.u * m->uvs[ix[1]].x + best.v * m->uvs[ix[2]].x,
 			b0 * m->uvs[ix[0]].y + best.u * m->uvs[ix[1]].y + best.v * m->uvs[ix[2]].y);
-	*hit = (render_hit){.t = best.t, .p = v3_madd(ray->o, ray->d, best.t), .ng = ng, .ns = ns, .uv = uv,
+	/* The position from the triangle: its error is that of the vertices, which the ray offset
+	 * covers; o + t d would carry the error of the whole ray. */
+	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, best.u)), v3_scale(p2, best.v));
+	if (!in->identity)
+		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
+	*hit = (render_hit){.t = best.t, .p = p, .ng = ng, .ns = ns, .uv = uv,
 			    .material = in->material, .light = in->light, .object = (uint32_t)best_inst,
 			    .prim = best.prim, .bary = v2(best.u, best.v)};
 	return true;
