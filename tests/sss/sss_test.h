@@ -1,5 +1,5 @@
 /* sss_test.h - numerical helpers shared by the sss test programs: quadrature, the chi-square
- * p-value, and the sample-count scale (CIRCE_TEST_SCALE, default 1, e.g. 0.25 under sanitizers). */
+ * p-value, and the sample-count scale (CIRCE_TEST_SCALE). */
 #ifndef CIRCE_TESTS_SSS_TEST_H
 #define CIRCE_TESTS_SSS_TEST_H
 
@@ -8,11 +8,23 @@
 
 #define PI 3.14159265358979323846
 
-/* Sample counts are multiplied by CIRCE_TEST_SCALE (clamped to [0.01, 100]). */
+/* Sample counts are multiplied by CIRCE_TEST_SCALE (clamped to [0.01, 100]); its default is 1,
+ * or 0.25 in a sanitizer build (GCC's and Clang's address sanitizer macros). */
+#if defined(__SANITIZE_ADDRESS__)
+#define SSS_TEST_DEFAULT_SCALE 0.25
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SSS_TEST_DEFAULT_SCALE 0.25
+#endif
+#endif
+#ifndef SSS_TEST_DEFAULT_SCALE
+#define SSS_TEST_DEFAULT_SCALE 1.0
+#endif
+
 static inline long test_scaled(long n)
 {
 	const char *s = getenv("CIRCE_TEST_SCALE");
-	double k = s ? atof(s) : 1.0;
+	double k = s ? atof(s) : SSS_TEST_DEFAULT_SCALE;
 	if (!(k >= 0.01))
 		k = 0.01;
 	if (k > 100.0)
