@@ -149,51 +149,50 @@ static double pdf0(const sss_channel *c, double r)
 	return 0.0;
 }
 
-static double cdf0(const sss_channel *c, double r)
+/* The untruncated CDF0(r) and its complement 1 - CDF0(r), each computed without cancellation
+ * (the complement directly, so the truncation radius is accurate). */
+static void cdf_tail0(const sss_channel *c, double r, double *cdf, double *tail)
 {
+	double f = 0.0, t = 0.0;
 	switch (c->kind) {
 	case SSS_PROFILE_GAUSSIAN:
-	case SSS_PROFILE_SUM_OF_GAUSSIANS: {
-		double f = 0.0;
-		for (int i = 0; i < c->gauss.n; i++)
-			f -= c->gauss.w[i] * expm1(-r * r / (2.0 * c->gauss.v_mm2[i]));
-		return f;
-	}
+	case SSS_PROFILE_SUM_OF_GAUSSIANS:
+		for (int i = 0; i < c->gauss.n; i++) {
+			double x = -r * r / (2.0 * c->gauss.v_mm2[i]);
+			f -= c->gauss.w[i] * expm1(x);
+			t += c->gauss.w[i] * exp(x);
+		}
+		break;
 	case SSS_PROFILE_BURLEY: {
 		double d = c->burley.d_mm;
-		return -0.25 * expm1(-r / d) - 0.75 * expm1(-r / (3.0 * d));
+		f = -0.25 * expm1(-r / d) - 0.75 * expm1(-r / (3.0 * d));
+		t = 0.25 * exp(-r / d) + 0.75 * exp(-r / (3.0 * d));
+		break;
 	}
 	case SSS_PROFILE_DIPOLE: {
-		double s = c->dipole.sigma_tr;
-		return 0.5 * (dipole_source_cdf(r, c->dipole.z_r, s) + dipole_source_cdf(r, c->dipole.z_v, s)) /
-		       dipole_t(c);
+		double s = c->dipole.sigma_tr, zr = c->dipole.z_r, zv = c->dipole.z_v, k = 0.5 / dipole_t(c);
+		double dr = sqrt(r * r + zr * zr), dv = sqrt(r * r + zv * zv);
+		f = k * (dipole_source_cdf(r, zr, s) + dipole_source_cdf(r, zv, s));
+		t = k * (zr * exp(-s * dr) / dr + zv * exp(-s * dv) / dv);
+		break;
 	}
 	}
-	return 0.0;
+	*cdf = f;
+	*tail = t;
 }
 
-/* 1 - CDF0(r), computed directly so the truncation radius is accurate. */
+static double cdf0(const sss_channel *c, double r)
+{
+	double f, t;
+	cdf_tail0(c, r, &f, &t);
+	return f;
+}
+
 static double tail0(const sss_channel *c, double r)
 {
-	switch (c->kind) {
-	case SSS_PROFILE_GAUSSIAN:
-	case SSS_PROFILE_SUM_OF_GAUSSIANS: {
-		double f = 0.0;
-		for (int i = 0; i < c->gauss.n; i++)
-			f += c->gauss.w[i] * exp(-r * r / (2.0 * c->gauss.v_mm2[i]));
-		return f;
-	}
-	case SSS_PROFILE_BURLEY: {
-		double d = c->burley.d_mm;
-		return 0.25 * exp(-r / d) + 0.75 * exp(-r / (3.0 * d));
-	}
-	case SSS_PROFILE_DIPOLE: {
-		double s = c->dipole.sigma_tr, zr = c->dipole.z_r, zv = c->dipole.z_v;
-		double dr = sqrt(r * r + zr * zr), dv = sqrt(r * r + zv * zv);
-		return 0.5 * (zr * exp(-s * dr) / dr + zv * exp(-s * dv) / dv) / dipole_t(c);
-	}
-	}
-	return 0.0;
+	double f, t;
+	cdf_tail0(c, r, &f, &t);
+	return t;
 }
 
 /* Any length of the profile's scale, to start the search for r_max. */
@@ -457,26 +456,30 @@ sss_profile sss_profile_make(const sss_channel ch[3])
 	return p;
 }
 
-bool sss_profile_from_physical(sss_profile *out, sss_profile_kind kind, const double sigma_s_prime_per_mm[3],
-			       const double sigma_a_per_mm[3], double eta)
+/* The two forms' channel builders share one signature: (out, kind, channel, x, y, eta). */
+typedef bool (*channel_builder)(sss_channel *, sss_profile_kind, int, double, double, double);
+
+static bool profile_build(sss_profile *out, sss_profile_kind kind, channel_builder build, const double x[3],
+			  const double y[3], double eta)
 {
 	sss_channel ch[3];
 	for (int c = 0; c < 3; c++)
-		if (!sss_channel_from_physical(&ch[c], kind, c, sigma_s_prime_per_mm[c], sigma_a_per_mm[c], eta))
+		if (!build(&ch[c], kind, c, x[c], y[c], eta))
 			return false;
 	*out = sss_profile_make(ch);
 	return true;
 }
 
+bool sss_profile_from_physical(sss_profile *out, sss_profile_kind kind, const double sigma_s_prime_per_mm[3],
+			       const double sigma_a_per_mm[3], double eta)
+{
+	return profile_build(out, kind, sss_channel_from_physical, sigma_s_prime_per_mm, sigma_a_per_mm, eta);
+}
+
 bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const double albedo[3],
 			     const double mfp_mm[3], double eta)
 {
-	sss_channel ch[3];
-	for (int c = 0; c < 3; c++)
-		if (!sss_channel_from_artist(&ch[c], kind, c, albedo[c], mfp_mm[c], eta))
-			return false;
-	*out = sss_profile_make(ch);
-	return true;
+	return profile_build(out, kind, sss_channel_from_artist, albedo, mfp_mm, eta);
 }
 
 double sss_profile_sample(const sss_profile *p, double u_channel, double u_r)

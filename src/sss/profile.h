@@ -85,6 +85,8 @@ bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channe
 
 /* Builds the RGB profile from three channels (fills q). */
 sss_profile sss_profile_make(const sss_channel ch[3]);
+/* The RGB profile from per-channel physical or artist parameters (the channel functions above,
+ * channel c from element c); false when any channel is refused. */
 bool sss_profile_from_physical(sss_profile *out, sss_profile_kind kind, const double sigma_s_prime_per_mm[3],
 			       const double sigma_a_per_mm[3], double eta);
 bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const double albedo[3],

@@ -122,6 +122,8 @@ static double g_fn(dvec3 p) { return 1.5 + sin(p.x) * cos(2.0 * p.y) + 0.3 * p.z
  * min(1, |n_y . e| / eps), e the tangent at y of the circle of axis n through y, which is what
  * the estimator with grazing_min = eps converges to (p_A / p_A clamped). */
 static double quad_eps;
+/* The colour channel that the quadrature and the estimator follow. */
+static int test_channel;
 
 /* R(|y - x|) f_t(y) g(y) at surface point y with normal ny. */
 static double integrand(const sss_profile *prof, dvec3 x, dvec3 n, dvec3 y, dvec3 ny)
@@ -131,7 +133,7 @@ static double integrand(const sss_profile *prof, dvec3 x, dvec3 n, dvec3 y, dvec
 	if (r <= 0.0)
 		return 0.0;
 	d = d3_scale(d, 1.0 / r);
-	double R = sss_channel_eval(&prof->ch[0], r);
+	double R = sss_channel_eval(&prof->ch[test_channel], r);
 	double ft = sss_circle_leak(d3_to_v3(n), d3_to_v3(ny), d3_to_v3(d));
 	double clamp = 1.0;
 	if (quad_eps > 0.0) {
@@ -220,7 +222,7 @@ static estimate run_estimator(const sss_profile *prof, const quadric *q, dvec3 x
 		if (pick < 0)
 			none++;
 		else
-			f = w.x * g_fn(v3_to_d3(hits[pick].p));
+			f = v3_get(w, test_channel) * g_fn(v3_to_d3(hits[pick].p));
 		sum += f, sum2 += f * f, mx = fmax(mx, fabs(f));
 	}
 	estimate e;
@@ -397,8 +399,9 @@ static void check_extremes(void)
 			CHECK(ok && v3_is_finite(w), "A %g kind %d: pick %d weight %g", alb[ia], kind, pick, w.x);
 		}
 	/* Grazing: n_i perpendicular to e_theta exactly, and on the axis (theta = pi/2). The bound
-	 * is sum(ratio) / (2 pi p_phi grazing_min) = 3 / grazing_min for half circles. */
-	float bound = 3.0f / SSS_CIRCLE_GRAZING_MIN * 1.0001f;
+	 * of a hit is ratio_c / (2 pi p_phi grazing_min) = 1 / grazing_min for half circles and a
+	 * unit ratio; the chosen weight is at most k = 3 times that. */
+	float bound = 1.0f / SSS_CIRCLE_GRAZING_MIN * 1.0001f;
 	for (int i = 0; i < 10000; i++) {
 		vec3 nn = v3_normalize(v3(rng_float(&g) - 0.5f, rng_float(&g) - 0.5f, rng_float(&g) - 0.5f));
 		for (int m = 0; m < 2; m++) {
@@ -421,7 +424,7 @@ static void check_extremes(void)
 			float wsum = 0.0f;
 			for (int j = 0; j < 3; j++)
 				wsum += sss_circle_hit_weight(&c, v3s(1.0f), &hs[j], &om).x;
-			CHECK(pick >= 0 ? v3_is_finite(w) && prob > 0.0f : wsum == 0.0f,
+			CHECK(pick >= 0 ? v3_is_finite(w) && prob > 0.0f && w.x <= 3.0f * bound : wsum == 0.0f,
 			      "grazing choice (mis %d, theta %g): pick %d w %g prob %g, sum of weights %g", m, th, pick, w.x,
 			      prob, wsum);
 		}
@@ -478,5 +481,19 @@ int main(void)
 		}
 	}
 	check_grazing(&prof, n);
+
+	/* A colour profile (burley, different radius and albedo per channel) on the sphere: the
+	 * one-sample MIS over channels and the luminance resampling are exact in every channel. */
+	double alb[3] = {0.9, 0.6, 0.3}, mfp[3] = {0.3, 0.15, 0.08};
+	sss_profile rgb;
+	CHECK(sss_profile_from_artist(&rgb, SSS_PROFILE_BURLEY, alb, mfp, 1.4), "rgb burley not built");
+	for (test_channel = 0; test_channel < 3; test_channel++) {
+		double q = quad_sphere(&rgb, &sp.q, sp.x);
+		estimate e = run_estimator(&rgb, &sp.q, sp.x, sp.n, &exact, n, 4000);
+		const char *ch[3] = {"rgb burley, red", "rgb burley, green", "rgb burley, blue"};
+		print_row(sp.name, ch[test_channel], q, e);
+		CHECK(fabs(e.mean - q) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", sp.name, ch[test_channel],
+		      e.mean, e.se, q);
+	}
 	return check_done("test_circle");
 }
