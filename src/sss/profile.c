@@ -507,9 +507,13 @@ vec3 sss_profile_eval(const sss_profile *p, double r)
 
 vec3 sss_profile_ratio(const sss_profile *p, double r)
 {
-	double pdf = sss_profile_pdf(p, r), w[3];
+	double pc[3], pdf = 0.0, w[3];
+	for (int c = 0; c < 3; c++) {
+		pc[c] = sss_channel_pdf(&p->ch[c], r);
+		pdf += p->q[c] * pc[c];
+	}
 	for (int c = 0; c < 3; c++)
-		w[c] = pdf > 0.0 ? p->ch[c].albedo * sss_channel_pdf(&p->ch[c], r) / pdf : 0.0;
+		w[c] = pdf > 0.0 ? p->ch[c].albedo * pc[c] / pdf : 0.0;
 	return v3((float)w[0], (float)w[1], (float)w[2]);
 }
 

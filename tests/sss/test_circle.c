@@ -431,11 +431,51 @@ static void check_extremes(void)
 	}
 }
 
+/* The same samples on a sphere scaled by 1e-3 and 1e3 (the radius in scene units scaled with it,
+ * the profile in mm unchanged): every weight is the same, to float precision. */
+static void check_scale_invariance(void)
+{
+	sss_profile prof = grey_profile(SSS_PROFILE_BURLEY, 0.7, 0.2);
+	sss_circle_opts o = sss_circle_default_opts();
+	const double scale[2] = {1e-3, 1e3};
+	scene sp = sphere_scene();
+	for (int si = 0; si < 2; si++) {
+		double k = scale[si], worst = 0.0;
+		int weighed = 0;
+		quadric qs = sp.q;
+		qs.c = d3_scale(qs.c, k), qs.R *= k;
+		rng g;
+		rng_seed(&g, 21, si);
+		for (int i = 0; i < 20000; i++) {
+			double r = sss_profile_sample(&prof, rng_double(&g), rng_double(&g));
+			float up = rng_float(&g), us = rng_float(&g);
+			double w2[2];
+			for (int v = 0; v < 2; v++) {
+				const quadric *q = v ? &qs : &sp.q;
+				double f = v ? k : 1.0;
+				sss_circle c = sss_circle_make(d3_to_v3(d3_scale(sp.x, f)), d3_to_v3(sp.n), (float)(r * f),
+							       0.0f, up, &o);
+				sss_circle_hit hits[8];
+				int n = circle_hits(&c, q, hits);
+				vec3 w;
+				float prob;
+				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits, n, us, &o, &w, &prob);
+				w2[v] = pick < 0 ? 0.0 : w.x;
+			}
+			worst = fmax(worst, fabs(w2[1] - w2[0]) / fmax(1.0, w2[0]));
+			weighed += w2[0] > 0.0;
+		}
+		CHECK(worst <= 1e-3 && weighed > 19000, "sphere scaled by %g: weights differ by up to %g (%d of 20000 hit)",
+		      k, worst, weighed);
+	}
+}
+
 int main(void)
 {
 	gauss_legendre(GL_N, gl_x, gl_w);
 	check_plane_zero_variance();
 	check_extremes();
+	check_scale_invariance();
 
 	/* Gaussian grey profile, sd about 0.5 (r_max about 1.9): comparable to the objects. */
 	sss_profile prof = grey_profile(SSS_PROFILE_GAUSSIAN, 0.8, 0.3);
