@@ -13,6 +13,8 @@
 #define SSS_U_MIN 0x1p-64
 /* Iterations of bisection: enough to reach the last bit of a double on any bracket. */
 #define SSS_BISECT_STEPS 200
+/* Relative Newton step below which the dipole's CDF inversion stops (see invert_cdf0). */
+#define SSS_NEWTON_DONE 1e-9
 /* Intervals of the Simpson rule for the Fresnel moment; the integrand is smooth on each piece
  * (split at the critical angle), so the error is below 1e-9. */
 #define SSS_FM1_INTERVALS 512
@@ -210,6 +212,12 @@ static double length_scale(const sss_channel *c)
 	return 1.0;
 }
 
+/* The radius of entry i of the dipole's CDF table: r_max 2^{-(SSS_DIPOLE_TABLE - 1 - i)/2}. */
+static double dipole_table_r(const sss_channel *c, int i)
+{
+	return c->r_max_mm * exp2(-0.5 * (SSS_DIPOLE_TABLE - 1 - i));
+}
+
 /* The r where tail0 falls to SSS_PROFILE_TAIL (tail0 decreases from 1 to 0), and the
  * renormalisation CDF0(r_max). */
 static void set_truncation(sss_channel *c)
@@ -226,6 +234,9 @@ static void set_truncation(sss_channel *c)
 	}
 	c->r_max_mm = hi;
 	c->norm = cdf0(c, hi);
+	if (c->kind == SSS_PROFILE_DIPOLE)
+		for (int i = 0; i < SSS_DIPOLE_TABLE; i++)
+			c->dipole.table_cdf[i] = cdf0(c, dipole_table_r(c, i));
 }
 
 /* ---- building channels ------------------------------------------------------------------------ */
@@ -389,21 +400,44 @@ static int pick_component(const double *w, const double *m, int n, double *u)
 	return n - 1;
 }
 
-/* Solves cdf0(r) = target on [0, r_max] by Newton's method kept inside a bisection bracket. */
+/* Solves cdf0(r) = target on [0, r_max] (the dipole's) by Newton's method kept inside a
+ * bisection bracket, starting from the bracket of the CDF table. */
 static double invert_cdf0(const sss_channel *c, double target)
 {
-	double lo = 0.0, hi = c->r_max_mm, r = 0.5 * hi;
+	/* The bracket from the table (binary search), the start by linear interpolation in it. */
+	const double *t = c->dipole.table_cdf;
+	int a = 0, b = SSS_DIPOLE_TABLE - 1;
+	if (target <= t[0]) {
+		b = 0;
+	} else {
+		while (b - a > 1) {
+			int m = (a + b) / 2;
+			if (t[m] < target)
+				a = m;
+			else
+				b = m;
+		}
+	}
+	double lo = b == 0 ? 0.0 : dipole_table_r(c, a), hi = dipole_table_r(c, b);
+	double flo = b == 0 ? 0.0 : t[a], fhi = t[b];
+	double r = fhi > flo ? lo + (hi - lo) * (target - flo) / (fhi - flo) : 0.5 * (lo + hi);
+	if (!(r > lo && r < hi))
+		r = 0.5 * (lo + hi);
 	for (int i = 0; i < SSS_BISECT_STEPS; i++) {
 		double f = cdf0(c, r) - target;
+		if (f == 0.0)
+			return r;
 		if (f < 0.0)
 			lo = r;
 		else
 			hi = r;
 		double p = pdf0(c, r);
 		double next = p > 0.0 ? r - f / p : 0.5 * (lo + hi);
-		if (!(next > lo && next < hi))
+		if (!(next >= lo && next <= hi))
 			next = 0.5 * (lo + hi);
-		if (fabs(next - r) <= 1e-15 * r || hi - lo <= 1e-15 * hi)
+		/* Newton converges quadratically: after a step below 1e-9 r the error of `next` is
+		 * of order (1e-9)^2 r, below the double's resolution. */
+		if (fabs(next - r) <= SSS_NEWTON_DONE * r || hi - lo <= 1e-15 * hi)
 			return next;
 		r = next;
 	}

@@ -21,6 +21,9 @@ typedef enum sss_profile_kind {
  * truncated profile still integrates to A and sampling, pdf and R agree exactly. */
 #define SSS_PROFILE_TAIL 1e-3
 
+/* Entries of the dipole's CDF table: half-octave steps in r below r_max. */
+#define SSS_DIPOLE_TABLE 48
+
 /* Components of a Gaussian mixture (d'Eon & Luebke's skin fit has six). */
 #define SSS_PROFILE_MAX_GAUSSIANS 6
 
@@ -43,6 +46,9 @@ typedef struct sss_channel {
 			double alpha_prime; /* reduced single-scattering albedo sigma_s'/sigma_t' */
 			double sigma_tr;    /* effective transport coefficient, per mm */
 			double z_r, z_v;    /* real and virtual source depths, mm */
+			/* untruncated CDF at r_max 2^{-k/2}, k = SSS_DIPOLE_TABLE - 1 - i: the sampler's
+			 * starting bracket, refined by Newton's method on the exact CDF */
+			double table_cdf[SSS_DIPOLE_TABLE];
 		} dipole;
 	};
 } sss_channel;

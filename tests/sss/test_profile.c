@@ -56,6 +56,21 @@ static void check_normalisation(const sss_channel *c, const char *what)
 	CHECK(fabs(c->norm - (1.0 - SSS_PROFILE_TAIL)) <= 1e-9, "%s: norm %.12f", what, c->norm);
 }
 
+/* The single-component samplers (gaussian, dipole) invert the CDF: CDF(sample(u)) = u to the
+ * resolution of a double (the mixtures pick a component first, so this does not hold for them). */
+static void check_inversion(const sss_channel *c, const char *what)
+{
+	if (c->kind != SSS_PROFILE_GAUSSIAN && c->kind != SSS_PROFILE_DIPOLE)
+		return;
+	double worst = 0.0, at = 0.0;
+	for (int i = 1; i < 1000; i++) {
+		double u = i / 1000.0, e = fabs(sss_channel_cdf(c, sss_channel_sample(c, u)) - u);
+		if (e > worst)
+			worst = e, at = u;
+	}
+	CHECK(worst <= 1e-12, "%s: |CDF(sample(u)) - u| = %g at u = %g", what, worst, at);
+}
+
 /* Bin edges at the CDF's quantiles k/CHI2_BINS, found by bisection on cdf (independent of the
  * samplers' own inversion). */
 static void quantile_edges(double (*cdf)(const void *, double), const void *ctx, double r_max, double *edge)
@@ -269,6 +284,7 @@ int main(void)
 			if (!ok)
 				continue;
 			check_normalisation(&c, what);
+			check_inversion(&c, what);
 			check_chi2(ch_sample, ch_cdf, &c, c.r_max_mm, what, 100 + chi++);
 		}
 
