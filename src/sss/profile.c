@@ -13,6 +13,12 @@
 #define SSS_U_MIN 0x1p-64
 /* Iterations of bisection: enough to reach the last bit of a double on any bracket. */
 #define SSS_BISECT_STEPS 200
+/* Relative bracket width at which a bisection stops: a few ulps of a double. */
+#define SSS_BISECT_REL 1e-15
+/* The artist form's largest alpha': A = 1 with a finite l_d = 1/sigma_tr would need sigma_a = 0
+ * and sigma_t' infinite; alpha' stays this close to 1 instead (R_d then falls short of 1 by
+ * about 1e-5). */
+#define SSS_ALPHA_PRIME_MAX (1.0 - 1e-12)
 /* Relative Newton step below which the dipole's CDF inversion stops (see invert_cdf0). */
 #define SSS_NEWTON_DONE 1e-9
 /* Intervals of the Simpson rule for the Fresnel moment; the integrand is smooth on each piece
@@ -94,7 +100,7 @@ double sss_dipole_alpha_prime(double albedo, double eta)
 		return 0.0;
 	if (albedo >= 1.0)
 		return 1.0;
-	for (int i = 0; i < SSS_BISECT_STEPS && hi - lo > 1e-14; i++) {
+	for (int i = 0; i < SSS_BISECT_STEPS && hi - lo > SSS_BISECT_REL; i++) {
 		double mid = 0.5 * (lo + hi);
 		if (dipole_albedo_a(mid, a_f) < albedo)
 			lo = mid;
@@ -225,7 +231,7 @@ static void set_truncation(sss_channel *c)
 	double lo = 0.0, hi = length_scale(c);
 	while (tail0(c, hi) > SSS_PROFILE_TAIL)
 		lo = hi, hi *= 2.0;
-	for (int i = 0; i < SSS_BISECT_STEPS && hi - lo > 1e-15 * hi; i++) {
+	for (int i = 0; i < SSS_BISECT_STEPS && hi - lo > SSS_BISECT_REL * hi; i++) {
 		double mid = 0.5 * (lo + hi);
 		if (tail0(c, mid) > SSS_PROFILE_TAIL)
 			lo = mid;
@@ -241,15 +247,16 @@ static void set_truncation(sss_channel *c)
 
 /* ---- building channels ------------------------------------------------------------------------ */
 
-/* Christensen & Burley 2015, section 5, eq. 6 (the fit for diffuse surface transmission):
- * d = l / s(A) with l the mean free path. */
+/* Christensen & Burley 2015, section 5, eq. 8: the fit for the diffuse mean free path,
+ * d = l_d / s(A). */
 static double burley_s(double albedo)
 {
-	return 1.9 - albedo + 3.5 * (albedo - 0.8) * (albedo - 0.8);
+	double x = albedo - 0.33;
+	return 3.5 + 100.0 * x * x * x * x;
 }
 
 /* The gaussian kinds have no physical derivation: their variances are scaled so that the mean
- * exit distance E[r] equals burley's for the same (A, l), E[r] = d/4 + 3 (3d)/4 = 2.5 d. A
+ * exit distance E[r] equals burley's for the same (A, l_d), E[r] = d/4 + 3 (3d)/4 = 2.5 d. A
  * Gaussian of variance v has E[r] = sqrt(pi v / 2) (the Rayleigh mean). */
 static void gauss_fit_mean(sss_channel *c, double mean_mm)
 {
@@ -261,13 +268,14 @@ static void gauss_fit_mean(sss_channel *c, double mean_mm)
 		c->gauss.v_mm2[i] *= k2;
 }
 
-/* The channel from (A, l, alpha', eta); alpha' is read by the dipole only. */
-static void channel_build(sss_channel *c, sss_profile_kind kind, int channel, double albedo,
-			  double mfp_mm, double alpha_prime, double eta)
+/* The channel from the medium: (A, l_d) for burley and the gaussians, (alpha', sigma_t', eta)
+ * for the dipole. */
+static void channel_build(sss_channel *c, sss_profile_kind kind, int channel, double albedo, double ld_mm,
+			  double alpha_prime, double sigma_t_per_mm, double eta)
 {
 	c->kind = kind;
 	c->albedo = albedo;
-	double d_mm = mfp_mm / burley_s(albedo);
+	double d_mm = ld_mm / burley_s(albedo);
 	switch (kind) {
 	case SSS_PROFILE_GAUSSIAN:
 		c->gauss.n = 1;
@@ -290,12 +298,12 @@ static void channel_build(sss_channel *c, sss_profile_kind kind, int channel, do
 		break;
 	case SSS_PROFILE_DIPOLE: {
 		/* Jensen et al. 2001, section 2.3: sigma_tr = sqrt(3 sigma_a sigma_t'), z_r = 1/sigma_t',
-		 * z_v = z_r (1 + 4/3 A_F); here sigma_t' = 1/l and sigma_a = (1 - alpha') sigma_t'. */
+		 * z_v = z_r (1 + 4/3 A_F), with sigma_a = (1 - alpha') sigma_t'. */
 		double a_f = dipole_boundary_a(eta);
 		c->dipole.alpha_prime = alpha_prime;
-		c->dipole.sigma_tr = sqrt(3.0 * (1.0 - alpha_prime)) / mfp_mm;
-		c->dipole.z_r = mfp_mm;
-		c->dipole.z_v = mfp_mm * (1.0 + 4.0 / 3.0 * a_f);
+		c->dipole.sigma_tr = sqrt(3.0 * (1.0 - alpha_prime)) * sigma_t_per_mm;
+		c->dipole.z_r = 1.0 / sigma_t_per_mm;
+		c->dipole.z_v = c->dipole.z_r * (1.0 + 4.0 / 3.0 * a_f);
 		c->albedo = alpha_prime * dipole_t(c);
 		break;
 	}
@@ -304,30 +312,34 @@ static void channel_build(sss_channel *c, sss_profile_kind kind, int channel, do
 }
 
 static bool finite_nonneg(double x) { return isfinite(x) && x >= 0.0; }
+static bool finite_pos(double x) { return isfinite(x) && x > 0.0; }
 
 bool sss_channel_from_physical(sss_channel *out, sss_profile_kind kind, int channel,
 			       double sigma_s_prime_per_mm, double sigma_a_per_mm, double eta)
 {
-	if (!finite_nonneg(sigma_s_prime_per_mm) || !finite_nonneg(sigma_a_per_mm) || !(eta > 0.0) ||
-	    !isfinite(eta) || channel < 0 || channel > 2)
+	if (!finite_nonneg(sigma_s_prime_per_mm) || !finite_nonneg(sigma_a_per_mm) || !finite_pos(eta) ||
+	    channel < 0 || channel > 2)
 		return false;
 	double sigma_t = sigma_s_prime_per_mm + sigma_a_per_mm;
-	if (!(sigma_t > 0.0) || !isfinite(1.0 / sigma_t))
+	double ld_mm = 1.0 / sqrt(3.0 * sigma_a_per_mm * sigma_t);
+	if (!finite_pos(sigma_t) || !finite_pos(1.0 / sigma_t) || (kind != SSS_PROFILE_DIPOLE && !finite_pos(ld_mm)))
 		return false;
 	double alpha_prime = fmin(1.0, sigma_s_prime_per_mm / sigma_t);
 	double albedo = sss_dipole_albedo(alpha_prime, eta);
-	channel_build(out, kind, channel, albedo, 1.0 / sigma_t, alpha_prime, eta);
+	channel_build(out, kind, channel, albedo, ld_mm, alpha_prime, sigma_t, eta);
 	return true;
 }
 
-bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channel, double albedo,
-			     double mfp_mm, double eta)
+bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channel, double albedo, double ld_mm,
+			     double eta)
 {
-	if (!(albedo >= 0.0 && albedo <= 1.0) || !(mfp_mm > 0.0) || !isfinite(mfp_mm) || !(eta > 0.0) ||
-	    !isfinite(eta) || channel < 0 || channel > 2)
+	if (!(albedo >= 0.0 && albedo <= 1.0) || !finite_pos(ld_mm) || !finite_pos(eta) || channel < 0 ||
+	    channel > 2)
 		return false;
-	double alpha_prime = kind == SSS_PROFILE_DIPOLE ? sss_dipole_alpha_prime(albedo, eta) : 0.0;
-	channel_build(out, kind, channel, albedo, mfp_mm, alpha_prime, eta);
+	/* JB02 section 4: alpha' from R_d(alpha') = A, then sigma_t' = sigma_tr / sqrt(3 (1 - alpha')). */
+	double alpha_prime = fmin(sss_dipole_alpha_prime(albedo, eta), SSS_ALPHA_PRIME_MAX);
+	double sigma_t = 1.0 / (ld_mm * sqrt(3.0 * (1.0 - alpha_prime)));
+	channel_build(out, kind, channel, albedo, ld_mm, alpha_prime, sigma_t, eta);
 	return true;
 }
 
@@ -437,7 +449,7 @@ static double invert_cdf0(const sss_channel *c, double target)
 			next = 0.5 * (lo + hi);
 		/* Newton converges quadratically: after a step below 1e-9 r the error of `next` is
 		 * of order (1e-9)^2 r, below the double's resolution. */
-		if (fabs(next - r) <= SSS_NEWTON_DONE * r || hi - lo <= 1e-15 * hi)
+		if (fabs(next - r) <= SSS_NEWTON_DONE * r || hi - lo <= SSS_BISECT_REL * hi)
 			return next;
 		r = next;
 	}
@@ -511,9 +523,9 @@ bool sss_profile_from_physical(sss_profile *out, sss_profile_kind kind, const do
 }
 
 bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const double albedo[3],
-			     const double mfp_mm[3], double eta)
+			     const double ld_mm[3], double eta)
 {
-	return profile_build(out, kind, sss_channel_from_artist, albedo, mfp_mm, eta);
+	return profile_build(out, kind, sss_channel_from_artist, albedo, ld_mm, eta);
 }
 
 double sss_profile_sample(const sss_profile *p, double u_channel, double u_r)

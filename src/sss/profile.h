@@ -1,7 +1,8 @@
 /* profile.h - radial diffusion profiles R(r) of the BSSRDF (DESIGN.md, "Subsurface scattering"):
  * gaussian, sum_of_gaussians, burley, dipole. Each channel's profile integrates to its albedo A,
  * is sampled exactly in r with pdf p(r) proportional to 2 pi r R(r), and is truncated at r_max.
- * Formulas, sources and the parameter links are in src/sss/README.md. */
+ * Formulas, sources and the parameter links are in src/sss/README.md. All functions are pure
+ * (thread-safe) and allocate nothing; the structs are plain data. */
 #ifndef CIRCE_SSS_PROFILE_H
 #define CIRCE_SSS_PROFILE_H
 
@@ -72,22 +73,24 @@ double sss_fresnel_moment1(double eta);
  * 2.4): R_d = alpha'/2 (1 + e^{-4/3 A_F sqrt(3(1 - alpha'))}) e^{-sqrt(3(1 - alpha'))}, with
  * A_F = (1 + F_dr)/(1 - F_dr). Monotone in alpha' in [0, 1]; 0 at 0 and 1 at 1. */
 double sss_dipole_albedo(double alpha_prime, double eta);
-/* The inverse of sss_dipole_albedo in alpha' (bisection to 1e-12), for albedo in [0, 1]. */
+/* The inverse of sss_dipole_albedo in alpha' (bisection to 1e-15), for albedo in [0, 1]. */
 double sss_dipole_alpha_prime(double albedo, double eta);
 
 /* Builds one channel from the physical form: reduced scattering and absorption coefficients in
  * mm^-1 and the relative index of refraction eta of the boundary. The multiple-scattering
- * albedo is A = sss_dipole_albedo(sigma_s'/sigma_t', eta) and the mean free path is
- * 1/sigma_t' (mm). `channel` (0 r, 1 g, 2 b) picks d'Eon & Luebke's weights for
- * sum_of_gaussians. Returns false (and leaves *out untouched) on negative, non-finite or
- * all-zero coefficients, or eta <= 0. */
+ * albedo is A = sss_dipole_albedo(sigma_s'/sigma_t', eta) and the diffuse mean free path is
+ * l_d = 1/sigma_tr = 1/sqrt(3 sigma_a sigma_t') (mm). `channel` (0 r, 1 g, 2 b) picks d'Eon &
+ * Luebke's weights for sum_of_gaussians. Returns false (and leaves *out untouched) on negative
+ * or non-finite coefficients, sigma_t' = 0, eta <= 0, or sigma_a = 0 for any kind but the
+ * dipole (l_d would be infinite). */
 bool sss_channel_from_physical(sss_channel *out, sss_profile_kind kind, int channel,
 			       double sigma_s_prime_per_mm, double sigma_a_per_mm, double eta);
-/* Builds one channel from the artist form: multiple-scattering albedo A in [0, 1] and mean free
- * path mfp_mm = 1/sigma_t' in mm (> 0). For the dipole alpha' is found by inverting
- * sss_dipole_albedo. Returns false on out-of-range input. */
+/* Builds one channel from the artist form: multiple-scattering albedo A in [0, 1] and "radius"
+ * ld_mm, the diffuse mean free path l_d = 1/sigma_tr in mm (> 0): Jensen & Buhler 2002's
+ * convention, the scene's radius_mm. The medium is sigma_t' = 1/(l_d sqrt(3 (1 - alpha'))) with
+ * alpha' inverting sss_dipole_albedo (held below 1 at A = 1). Returns false on out-of-range input. */
 bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channel, double albedo,
-			     double mfp_mm, double eta);
+			     double ld_mm, double eta);
 
 /* Builds the RGB profile from three channels (fills q). */
 sss_profile sss_profile_make(const sss_channel ch[3]);
@@ -96,7 +99,7 @@ sss_profile sss_profile_make(const sss_channel ch[3]);
 bool sss_profile_from_physical(sss_profile *out, sss_profile_kind kind, const double sigma_s_prime_per_mm[3],
 			       const double sigma_a_per_mm[3], double eta);
 bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const double albedo[3],
-			     const double mfp_mm[3], double eta);
+			     const double ld_mm[3], double eta);
 
 /* ---- one channel ------------------------------------------------------------------------------ */
 

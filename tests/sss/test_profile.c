@@ -202,13 +202,13 @@ static void check_medium_links(void)
 		CHECK(fabs(sss_dipole_albedo(ap, 1.4) - a) <= 1e-10, "R_d(alpha'(%g)) = %.12f", a,
 		      sss_dipole_albedo(ap, 1.4));
 	}
-	/* Physical and artist forms meet: (sigma_s', sigma_a) and (R_d, 1/sigma_t') build the same
-	 * channel for every kind. */
+	/* Physical and artist forms meet: (sigma_s', sigma_a) and (R_d, l_d = 1/sigma_tr) build the
+	 * same channel for every kind. */
 	for (int k = 0; k < 4; k++) {
 		sss_channel p, a;
 		CHECK(sss_channel_from_physical(&p, k, 1, 0.88, 0.17, 1.3), "physical %s", kind_name[k]);
-		double alb = sss_dipole_albedo(0.88 / 1.05, 1.3);
-		CHECK(sss_channel_from_artist(&a, k, 1, alb, 1.0 / 1.05, 1.3), "artist %s", kind_name[k]);
+		double alb = sss_dipole_albedo(0.88 / 1.05, 1.3), ld = 1.0 / sqrt(3.0 * 0.17 * 1.05);
+		CHECK(sss_channel_from_artist(&a, k, 1, alb, ld, 1.3), "artist %s", kind_name[k]);
 		CHECK(fabs(p.r_max_mm - a.r_max_mm) <= 1e-8 * p.r_max_mm && fabs(p.albedo - a.albedo) <= 1e-9,
 		      "%s: physical r_max %.12g A %.12g, artist r_max %.12g A %.12g", kind_name[k], p.r_max_mm,
 		      p.albedo, a.r_max_mm, a.albedo);
@@ -218,6 +218,9 @@ static void check_medium_links(void)
 	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, 0.0, 0.0, 1.3), "sigma_t = 0 accepted");
 	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, -1.0, 0.5, 1.3), "negative sigma accepted");
 	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, NAN, 0.5, 1.3), "NaN sigma accepted");
+	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, 1.0, 0.0, 1.3), "sigma_a = 0 (l_d infinite) accepted");
+	CHECK(sss_channel_from_physical(&c, SSS_PROFILE_DIPOLE, 0, 1.0, 0.0, 1.3) && fabs(c.albedo - 1.0) < 1e-12,
+	      "dipole without absorption: albedo %.15f", c.albedo);
 	CHECK(!sss_channel_from_artist(&c, SSS_PROFILE_BURLEY, 0, 1.5, 1.0, 1.3), "albedo 1.5 accepted");
 	CHECK(!sss_channel_from_artist(&c, SSS_PROFILE_BURLEY, 0, 0.5, 0.0, 1.3), "radius 0 accepted");
 	CHECK(!sss_channel_from_artist(&c, SSS_PROFILE_BURLEY, 0, 0.5, 1.0, 0.0), "eta 0 accepted");
@@ -227,7 +230,7 @@ static void check_medium_links(void)
 /* No NaN, no Inf, samples in (0, r_max], at the edges of the parameter space. */
 static void check_extremes(void)
 {
-	const double albedo[] = {0.0, 1.0, 0.5}, mfp[] = {1e-9, 1e6, 1.0}, eta[] = {1.0, 1.4, 3.0};
+	const double albedo[] = {0.0, 1.0, 0.5}, ld[] = {1e-9, 1e6, 1.0}, eta[] = {1.0, 1.4, 3.0};
 	rng g;
 	rng_seed(&g, 5, 5);
 	for (int k = 0; k < 4; k++)
@@ -235,10 +238,10 @@ static void check_extremes(void)
 			for (int im = 0; im < 3; im++)
 				for (int ie = 0; ie < 3; ie++) {
 					sss_channel c;
-					bool ok = sss_channel_from_artist(&c, k, 0, albedo[ia], mfp[im], eta[ie]);
+					bool ok = sss_channel_from_artist(&c, k, 0, albedo[ia], ld[im], eta[ie]);
 					CHECK(ok && isfinite(c.r_max_mm) && c.r_max_mm > 0.0 && isfinite(c.albedo),
-					      "%s A %g l %g eta %g: built %d r_max %g A %g", kind_name[k], albedo[ia],
-					      mfp[im], eta[ie], ok, c.r_max_mm, c.albedo);
+					      "%s A %g l_d %g eta %g: built %d r_max %g A %g", kind_name[k], albedo[ia],
+					      ld[im], eta[ie], ok, c.r_max_mm, c.albedo);
 					if (!ok)
 						continue;
 					int bad = 0;
@@ -249,8 +252,8 @@ static void check_extremes(void)
 						if (!(r > 0.0 && r <= c.r_max_mm) || !isfinite(R) || !isfinite(p) || !(p > 0.0))
 							bad++;
 					}
-					CHECK(bad == 0, "%s A %g l %g eta %g: %d bad samples", kind_name[k], albedo[ia],
-					      mfp[im], eta[ie], bad);
+					CHECK(bad == 0, "%s A %g l_d %g eta %g: %d bad samples", kind_name[k], albedo[ia],
+					      ld[im], eta[ie], bad);
 				}
 }
 
@@ -263,7 +266,7 @@ int main(void)
 	struct {
 		bool physical;
 		int channel;
-		double a, b; /* sigma_s', sigma_a or albedo, mfp */
+		double a, b; /* sigma_s', sigma_a or albedo, l_d */
 		double eta;
 	} cfg[] = {
 		{true, 1, 0.88, 0.17, 1.3},
