@@ -16,7 +16,7 @@ typedef enum sss_circle_kind {
 
 typedef enum sss_circle_weight {
 	SSS_CIRCLE_EXACT, /* the exact density of DESIGN.md */
-	SSS_CIRCLE_TALK,  /* the talk's 1/sqrt(1 - (n_i.d)^2): |n_i.e_theta| replaced by sqrt(1 - (n_i.d)^2) */
+	SSS_CIRCLE_TALK, /* the talk's 1/sqrt(1 - (n_i.d)^2): |n_i.e_theta| replaced by sqrt(1 - (n_i.d)^2) */
 } sss_circle_weight;
 
 /* The floor of |n_i . e_theta| in the density: the remedy for grazing hits, a clamp (README.md,
@@ -42,19 +42,19 @@ sss_circle_opts sss_circle_default_opts(void);
 
 /* One circle: c(theta) = center + radius (cos(theta) t + sin(theta) axis). */
 typedef struct sss_circle {
-	vec3 center;                /* x, the exit point */
-	vec3 n, b1, b2;             /* the exit's geometric normal and its basis (v3_basis) */
-	vec3 axis, t;               /* the plane of the circle: axis is n unless mis_axes chose b1, b2 */
-	float radius;               /* r > 0, the sampled profile radius (scene units) */
+	vec3 center;		    /* x, the exit point */
+	vec3 n, b1, b2;		    /* the exit's geometric normal and its basis (v3_basis) */
+	vec3 axis, t;		    /* the plane of the circle: axis is n unless mis_axes chose b1, b2 */
+	float radius;		    /* r > 0, the sampled profile radius (scene units) */
 	float theta_min, theta_max; /* the arc to trace */
-	float p_phi;                /* density of phi: 1/(2 pi) half, 1/pi full */
-	int family;                 /* 0 (axis n), 1 (b1), 2 (b2) */
+	float p_phi;		    /* density of phi: 1/(2 pi) half, 1/pi full */
+	int family;		    /* 0 (axis n), 1 (b1), 2 (b2) */
 } sss_circle;
 
 /* One intersection of the circle with the surface. */
 typedef struct sss_circle_hit {
-	vec3 p;      /* position x_i */
-	vec3 n;      /* geometric normal n_i, unit (either orientation) */
+	vec3 p;	     /* position x_i */
+	vec3 n;	     /* geometric normal n_i, unit (either orientation) */
 	float theta; /* the circle's angle at the hit */
 } sss_circle_hit;
 
@@ -69,7 +69,8 @@ vec3 sss_circle_tangent(const sss_circle *c, float theta);
  * of r (pdf_r = sss_profile_pdf(r)): p(r) p_phi |n_i . e_theta| / (r sqrt(1 - (n . d)^2)) for
  * the exact weight, summed over the families with their probabilities under mis_axes. Zero at
  * an exactly grazing hit when grazing_min is 0; +Inf for a hit on the axis (theta = +-pi/2). */
-float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const sss_circle_hit *h, const sss_circle_opts *o);
+float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const sss_circle_hit *h,
+			  const sss_circle_opts *o);
 
 /* The leak filter of DESIGN.md: mix(1, max(0, n . n_i), max(0, n . d)), d = (x_i - x)/|x_i - x|. */
 float sss_circle_leak(vec3 n, vec3 n_i, vec3 d);
@@ -78,7 +79,8 @@ float sss_circle_leak(vec3 n, vec3 n_i, vec3 d);
  * computed as ratio f_t / (2 pi H) with H = r p_A / p(r), so r and p(r) never divide. Zero for a
  * hit on the circle's axis. Finite for every input when grazing_min > 0, and then each channel is
  * at most ratio_c / (2 pi p_phi grazing_min) (ratio_c / grazing_min for half circles). */
-vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *h, const sss_circle_opts *o);
+vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *h,
+			   const sss_circle_opts *o);
 
 /* Resampling among the k hits of one circle: picks hit i with probability
  * P_i = lum(w_i) / sum_j lum(w_j), w_i = sss_circle_hit_weight, using u in [0, 1). Returns i, with

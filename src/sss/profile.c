@@ -30,9 +30,9 @@
  * to 1). G(v, r) = e^{-r^2/(2v)} / (2 pi v). */
 static const double sog_skin_v_mm2[6] = {0.0064, 0.0484, 0.187, 0.567, 1.99, 7.41};
 static const double sog_skin_w[3][6] = {
-	{0.233, 0.100, 0.118, 0.113, 0.358, 0.078},
-	{0.455, 0.336, 0.198, 0.007, 0.004, 0.0},
-	{0.649, 0.344, 0.0, 0.007, 0.0, 0.0},
+    {0.233, 0.100, 0.118, 0.113, 0.358, 0.078},
+    {0.455, 0.336, 0.198, 0.007, 0.004, 0.0},
+    {0.649, 0.344, 0.0, 0.007, 0.0, 0.0},
 };
 
 /* ---- Fresnel and the dipole's albedo ---------------------------------------------------------- */
@@ -311,8 +311,14 @@ static void channel_build(sss_channel *c, sss_profile_kind kind, int channel, do
 	set_truncation(c);
 }
 
-static bool finite_nonneg(double x) { return isfinite(x) && x >= 0.0; }
-static bool finite_pos(double x) { return isfinite(x) && x > 0.0; }
+static bool finite_nonneg(double x)
+{
+	return isfinite(x) && x >= 0.0;
+}
+static bool finite_pos(double x)
+{
+	return isfinite(x) && x > 0.0;
+}
 
 bool sss_channel_from_physical(sss_channel *out, sss_profile_kind kind, int channel,
 			       double sigma_s_prime_per_mm, double sigma_a_per_mm, double eta)
@@ -322,7 +328,8 @@ bool sss_channel_from_physical(sss_channel *out, sss_profile_kind kind, int chan
 		return false;
 	double sigma_t = sigma_s_prime_per_mm + sigma_a_per_mm;
 	double ld_mm = 1.0 / sqrt(3.0 * sigma_a_per_mm * sigma_t);
-	if (!finite_pos(sigma_t) || !finite_pos(1.0 / sigma_t) || (kind != SSS_PROFILE_DIPOLE && !finite_pos(ld_mm)))
+	if (!finite_pos(sigma_t) || !finite_pos(1.0 / sigma_t) ||
+	    (kind != SSS_PROFILE_DIPOLE && !finite_pos(ld_mm)))
 		return false;
 	double alpha_prime = fmin(1.0, sigma_s_prime_per_mm / sigma_t);
 	double albedo = sss_dipole_albedo(alpha_prime, eta);
@@ -330,8 +337,8 @@ bool sss_channel_from_physical(sss_channel *out, sss_profile_kind kind, int chan
 	return true;
 }
 
-bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channel, double albedo, double ld_mm,
-			     double eta)
+bool sss_channel_from_artist(sss_channel *out, sss_profile_kind kind, int channel, double albedo,
+			     double ld_mm, double eta)
 {
 	if (!(albedo >= 0.0 && albedo <= 1.0) || !finite_pos(ld_mm) || !finite_pos(eta) || channel < 0 ||
 	    channel > 2)

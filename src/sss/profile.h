@@ -31,9 +31,9 @@ typedef enum sss_profile_kind {
 /* One colour channel of a profile. Plain data: copy it freely; no allocation anywhere. */
 typedef struct sss_channel {
 	sss_profile_kind kind;
-	double albedo;   /* A in [0, 1]: integral of R(r) 2 pi r dr */
+	double albedo;	 /* A in [0, 1]: integral of R(r) 2 pi r dr */
 	double r_max_mm; /* truncation radius, > 0 */
-	double norm;     /* untruncated CDF at r_max = 1 - SSS_PROFILE_TAIL (renormalisation) */
+	double norm;	 /* untruncated CDF at r_max = 1 - SSS_PROFILE_TAIL (renormalisation) */
 	union {
 		struct { /* gaussian, sum_of_gaussians: sum_i w_i e^{-r^2/(2 v_i)} / (2 pi v_i) */
 			int n;
@@ -43,7 +43,7 @@ typedef struct sss_channel {
 		struct { /* burley: (e^{-r/d} + e^{-r/(3d)}) / (8 pi d r) */
 			double d_mm;
 		} burley;
-		struct { /* dipole (Jensen et al. 2001, eq. 4), in units of mm */
+		struct {		    /* dipole (Jensen et al. 2001, eq. 4), in units of mm */
 			double alpha_prime; /* reduced single-scattering albedo sigma_s'/sigma_t' */
 			double sigma_tr;    /* effective transport coefficient, per mm */
 			double z_r, z_v;    /* real and virtual source depths, mm */

@@ -109,9 +109,15 @@ static inline double gamma_q(double a, double x)
 }
 
 /* P(chi-square with dof degrees of freedom >= x). */
-static inline double chi2_pvalue(double x, int dof) { return gamma_q(0.5 * dof, 0.5 * x); }
+static inline double chi2_pvalue(double x, int dof)
+{
+	return gamma_q(0.5 * dof, 0.5 * x);
+}
 
 /* The per-test level that keeps the family-wise level at alpha over m tests (Sidak). */
-static inline double sidak(double alpha, int m) { return 1.0 - pow(1.0 - alpha, 1.0 / m); }
+static inline double sidak(double alpha, int m)
+{
+	return 1.0 - pow(1.0 - alpha, 1.0 / m);
+}
 
 #endif

@@ -1,10 +1,10 @@
 /* test_circle: the circle estimator is exact where it must be: zero variance on a plane, the
  * quadrature value of known integrals over a sphere and a cylinder within 3 standard errors
  * (the talk's weight biased on the cylinder), bounded weights at grazing hits and extremes. */
-#include "sss/circle.h"
-#include "sss/profile.h"
 #include "base/rng.h"
 #include "check.h"
+#include "sss/circle.h"
+#include "sss/profile.h"
 #include "sss_test.h"
 
 #include <stdio.h>
@@ -116,7 +116,10 @@ static int circle_hits(const sss_circle *c, const quadric *q, sss_circle_hit *ou
 /* ---- the integrand and its quadrature ------------------------------------------------------- */
 
 /* A smooth function on space. */
-static double g_fn(dvec3 p) { return 1.5 + sin(p.x) * cos(2.0 * p.y) + 0.3 * p.z; }
+static double g_fn(dvec3 p)
+{
+	return 1.5 + sin(p.x) * cos(2.0 * p.y) + 0.3 * p.z;
+}
 
 /* The grazing floor of the quadrature: with eps > 0 the integrand is multiplied by
  * min(1, |n_y . e| / eps), e the tangent at y of the circle of axis n through y, which is what
@@ -161,8 +164,9 @@ static double quad_sphere(const sss_profile *prof, const quadric *q, dvec3 x)
 		double g = 0.5 * gmax * (gl_x[i] + 1.0), wg = 0.5 * gmax * gl_w[i];
 		for (int j = 0; j < npsi; j++) {
 			double psi = 2.0 * PI * j / npsi;
-			dvec3 dir = d3_add(d3_scale(n, cos(g)),
-					   d3_scale(d3_add(d3_scale(b1, cos(psi)), d3_scale(b2, sin(psi))), sin(g)));
+			dvec3 dir =
+			    d3_add(d3_scale(n, cos(g)),
+				   d3_scale(d3_add(d3_scale(b1, cos(psi)), d3_scale(b2, sin(psi))), sin(g)));
 			dvec3 y = d3_add(q->c, d3_scale(dir, q->R));
 			s += wg * (2.0 * PI / npsi) * q->R * q->R * sin(g) *
 			     integrand(prof, x, d3_scale(n, q->orient), y, d3_scale(dir, q->orient));
@@ -181,7 +185,8 @@ static double quad_cylinder(const sss_profile *prof, const quadric *q, double a0
 	double s = 0.0;
 	for (int i = 0; i < GL_N; i++) {
 		double da = amax * gl_x[i], wa = amax * gl_w[i], a = a0 + da;
-		double chord = 2.0 * Rc * sin(0.5 * fabs(da)), hmax = sqrt(fmax(0.0, rm * rm - chord * chord));
+		double chord = 2.0 * Rc * sin(0.5 * fabs(da)),
+		       hmax = sqrt(fmax(0.0, rm * rm - chord * chord));
 		dvec3 ny = d3_scale(d3(cos(a), 0.0, sin(a)), q->orient);
 		for (int j = 0; j < GL_N; j++) {
 			double h = hmax * gl_x[j], wh = hmax * gl_w[j];
@@ -200,8 +205,8 @@ typedef struct estimate {
 } estimate;
 
 /* n samples of the circle estimator of the integral above, at exit point x with normal n. */
-static estimate run_estimator(const sss_profile *prof, const quadric *q, dvec3 x, dvec3 n, const sss_circle_opts *o,
-			      long count, uint64_t seed)
+static estimate run_estimator(const sss_profile *prof, const quadric *q, dvec3 x, dvec3 n,
+			      const sss_circle_opts *o, long count, uint64_t seed)
 {
 	rng g;
 	rng_seed(&g, seed, 3);
@@ -260,7 +265,8 @@ static void check_plane_zero_variance(void)
 			o.kind = full ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
 			double lo = INFINITY, hi = -INFINITY, worst_pa = 0.0;
 			for (int i = 0; i < 10000; i++) {
-				vec3 n = v3_normalize(v3(rng_float(&g) - 0.5f, rng_float(&g) - 0.5f, rng_float(&g) - 0.5f));
+				vec3 n = v3_normalize(
+				    v3(rng_float(&g) - 0.5f, rng_float(&g) - 0.5f, rng_float(&g) - 0.5f));
 				vec3 x = v3(rng_float(&g) * 10.0f, rng_float(&g), -rng_float(&g) * 5.0f);
 				double r = sss_profile_sample(&prof, rng_double(&g), rng_double(&g));
 				sss_circle c = sss_circle_make(x, n, (float)r, 0.0f, rng_float(&g), &o);
@@ -268,20 +274,22 @@ static void check_plane_zero_variance(void)
 							  {sss_circle_point(&c, (float)PI), n, (float)PI}};
 				vec3 w;
 				float prob;
-				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits, full ? 2 : 1,
-							     rng_float(&g), &o, &w, &prob);
+				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits,
+							     full ? 2 : 1, rng_float(&g), &o, &w, &prob);
 				double v = pick < 0 ? 0.0 : v3_luminance(w);
 				lo = fmin(lo, v), hi = fmax(hi, v);
-				double pa = sss_circle_pdf_area(&c, (float)sss_profile_pdf(&prof, r), &hits[0], &o);
+				double pa =
+				    sss_circle_pdf_area(&c, (float)sss_profile_pdf(&prof, r), &hits[0], &o);
 				double expect = sss_profile_pdf(&prof, r) / ((full ? PI : 2.0 * PI) * r);
 				worst_pa = fmax(worst_pa, fabs(pa / expect - 1.0));
 			}
 			double a = prof.ch[0].albedo;
-			CHECK(fabs(lo - a) <= 2e-5 * a && fabs(hi - a) <= 2e-5 * a,
-			      "plane, profile %d, %s circle: R/p_A in [%.8f, %.8f], expected the constant %.8f", kk,
-			      full ? "full" : "half", lo, hi, a);
-			CHECK(worst_pa <= 1e-5, "plane, profile %d, %s: p_A differs from p(r)/(%s r) by %g", kk,
-			      full ? "full" : "half", full ? "pi" : "2 pi", worst_pa);
+			CHECK(
+			    fabs(lo - a) <= 2e-5 * a && fabs(hi - a) <= 2e-5 * a,
+			    "plane, profile %d, %s circle: R/p_A in [%.8f, %.8f], expected the constant %.8f",
+			    kk, full ? "full" : "half", lo, hi, a);
+			CHECK(worst_pa <= 1e-5, "plane, profile %d, %s: p_A differs from p(r)/(%s r) by %g",
+			      kk, full ? "full" : "half", full ? "pi" : "2 pi", worst_pa);
 		}
 	}
 }
@@ -315,9 +323,10 @@ static scene cylinder_scene(double R, bool inside, double *a0)
 
 static void print_row(const char *scene_name, const char *method, double quad, estimate e)
 {
-	printf("  %-16s %-22s quad %.6f  est %.6f +- %.6f  (%+.2f SE, %+.3f %%)  var %.4g  max %.3g  no-hit %.4f\n",
-	       scene_name, method, quad, e.mean, e.se, (e.mean - quad) / e.se, 100.0 * (e.mean / quad - 1.0), e.var,
-	       e.max, (double)e.no_hit / e.n);
+	printf("  %-16s %-22s quad %.6f  est %.6f +- %.6f  (%+.2f SE, %+.3f %%)  var %.4g  max %.3g  no-hit "
+	       "%.4f\n",
+	       scene_name, method, quad, e.mean, e.se, (e.mean - quad) / e.se, 100.0 * (e.mean / quad - 1.0),
+	       e.var, e.max, (double)e.no_hit / e.n);
 }
 
 /* Grazing hits on each curved scene: the pure density against the clamp of |n_i . e| at several
@@ -339,17 +348,20 @@ static void check_grazing(const sss_profile *prof, long n)
 			quad_eps = 0.0;
 			estimate e = run_estimator(prof, &s.q, s.x, s.n, &o, n, 3000 + 10 * sc + i);
 			char name[40];
-			snprintf(name, sizeof name, "clamp %.2f (bias %.3f %%)", eps[i], 100.0 * (qe / q0 - 1.0));
+			snprintf(name, sizeof name, "clamp %.2f (bias %.3f %%)", eps[i],
+				 100.0 * (qe / q0 - 1.0));
 			print_row(s.name, name, q0, e);
-			CHECK(fabs(e.mean - qe) <= 3.0 * e.se, "%s clamp %g: %.6f +- %.6f, clamped quadrature %.6f",
-			      s.name, eps[i], e.mean, e.se, qe);
+			CHECK(fabs(e.mean - qe) <= 3.0 * e.se,
+			      "%s clamp %g: %.6f +- %.6f, clamped quadrature %.6f", s.name, eps[i], e.mean,
+			      e.se, qe);
 			/* The bound of circle.h: sum of albedos / (2 pi p_phi eps), times max g (< 2.6). */
 			double bound = 3.0 * prof->ch[0].albedo / eps[i] * 2.6;
-			CHECK(e.max <= bound, "%s clamp %g: largest sample %g over the bound %g", s.name, eps[i], e.max,
-			      bound);
+			CHECK(e.max <= bound, "%s clamp %g: largest sample %g over the bound %g", s.name,
+			      eps[i], e.max, bound);
 			if (eps[i] == SSS_CIRCLE_GRAZING_MIN)
-				CHECK(fabs(qe / q0 - 1.0) <= 0.004, "%s: the default floor %g costs %.3f %% of the integral",
-				      s.name, eps[i], 100.0 * (qe / q0 - 1.0));
+				CHECK(fabs(qe / q0 - 1.0) <= 0.004,
+				      "%s: the default floor %g costs %.3f %% of the integral", s.name,
+				      eps[i], 100.0 * (qe / q0 - 1.0));
 		}
 	}
 }
@@ -369,8 +381,8 @@ static void check_extremes(void)
 	vec3 w;
 	float prob;
 	int pick = sss_circle_choose(&c, v3s(1.0f), hits, k, 0.5f, &o, &w, &prob);
-	CHECK(k == 0 && pick == -1 && w.x == 0.0f && prob == 0.0f, "r = 100 on a unit sphere: %d hits, pick %d, w %g",
-	      k, pick, w.x);
+	CHECK(k == 0 && pick == -1 && w.x == 0.0f && prob == 0.0f,
+	      "r = 100 on a unit sphere: %d hits, pick %d, w %g", k, pick, w.x);
 	/* Radius -> 0 on the sphere: the single hit is the plane's, weight A. Radii below float
 	 * resolution of the positions (about 1e-7 here) lose their hit: counted as no hit, never a
 	 * wrong weight. */
@@ -380,7 +392,8 @@ static void check_extremes(void)
 		double r = sss_profile_sample(&tiny, rng_double(&g), rng_double(&g));
 		c = sss_circle_make(d3_to_v3(sp.x), d3_to_v3(sp.n), (float)r, 0.0f, rng_float(&g), &o);
 		k = circle_hits(&c, &sp.q, hits);
-		pick = sss_circle_choose(&c, sss_profile_ratio(&tiny, r), hits, k, rng_float(&g), &o, &w, &prob);
+		pick =
+		    sss_circle_choose(&c, sss_profile_ratio(&tiny, r), hits, k, rng_float(&g), &o, &w, &prob);
 		bool ok = pick >= 0 ? fabs(w.x - 0.6) <= 1e-3 : r < 1e-6;
 		lost += pick < 0;
 		CHECK(ok, "r = %g: %d hits, pick %d, weight %g (want 0.6)", r, k, pick, w.x);
@@ -397,10 +410,12 @@ static void check_extremes(void)
 			c = sss_circle_make(x, n, (float)r, 0.0f, 0.2f, &o);
 			sss_circle_hit h = {sss_circle_point(&c, 0.0f), n, 0.0f};
 			pick = sss_circle_choose(&c, sss_profile_ratio(&p, r), &h, 1, 0.5f, &o, &w, &prob);
-			vec3 ratio = sss_profile_ratio(&p, r); /* on a plane the weight is the profile's ratio */
+			vec3 ratio =
+			    sss_profile_ratio(&p, r); /* on a plane the weight is the profile's ratio */
 			bool ok = ia == 0 ? pick == -1 && w.x == 0.0f
 					  : pick == 0 && fabs(v3_luminance(w) - v3_luminance(ratio)) < 1e-4;
-			CHECK(ok && v3_is_finite(w), "A %g kind %d: pick %d weight %g", alb[ia], kind, pick, w.x);
+			CHECK(ok && v3_is_finite(w), "A %g kind %d: pick %d weight %g", alb[ia], kind, pick,
+			      w.x);
 		}
 	/* Grazing: n_i perpendicular to e_theta exactly, and on the axis (theta = pi/2). The bound
 	 * of a hit is ratio_c / (2 pi p_phi grazing_min) = 1 / grazing_min for half circles and a
@@ -417,20 +432,23 @@ static void check_extremes(void)
 			vec3 ni = v3_normalize(v3_cross(e, v3(rng_float(&g), rng_float(&g), rng_float(&g))));
 			sss_circle_hit hs[3] = {{sss_circle_point(&c, th), ni, th},
 						{sss_circle_point(&c, 1.5707964f), nn, 1.5707964f},
-						{sss_circle_point(&c, th), v3_normalize(v3_sub(sss_circle_point(&c, th), x)), th}};
+						{sss_circle_point(&c, th),
+						 v3_normalize(v3_sub(sss_circle_point(&c, th), x)), th}};
 			for (int j = 0; j < 3; j++) {
 				vec3 hw = sss_circle_hit_weight(&c, v3s(1.0f), &hs[j], &om);
 				float pa = sss_circle_pdf_area(&c, 1.0f, &hs[j], &om);
 				CHECK(v3_is_finite(hw) && hw.x >= 0.0f && hw.x <= bound && !isnan(pa),
-				      "grazing case %d mis %d: weight %g (bound %g), p_A %g", j, m, hw.x, bound, pa);
+				      "grazing case %d mis %d: weight %g (bound %g), p_A %g", j, m, hw.x,
+				      bound, pa);
 			}
 			pick = sss_circle_choose(&c, v3s(1.0f), hs, 3, rng_float(&g), &om, &w, &prob);
 			float wsum = 0.0f;
 			for (int j = 0; j < 3; j++)
 				wsum += sss_circle_hit_weight(&c, v3s(1.0f), &hs[j], &om).x;
-			CHECK(pick >= 0 ? v3_is_finite(w) && prob > 0.0f && w.x <= 3.0f * bound : wsum == 0.0f,
-			      "grazing choice (mis %d, theta %g): pick %d w %g prob %g, sum of weights %g", m, th, pick, w.x,
-			      prob, wsum);
+			CHECK(pick >= 0 ? v3_is_finite(w) && prob > 0.0f && w.x <= 3.0f * bound
+					: wsum == 0.0f,
+			      "grazing choice (mis %d, theta %g): pick %d w %g prob %g, sum of weights %g", m,
+			      th, pick, w.x, prob, wsum);
 		}
 	}
 }
@@ -457,20 +475,21 @@ static void check_scale_invariance(void)
 			for (int v = 0; v < 2; v++) {
 				const quadric *q = v ? &qs : &sp.q;
 				double f = v ? k : 1.0;
-				sss_circle c = sss_circle_make(d3_to_v3(d3_scale(sp.x, f)), d3_to_v3(sp.n), (float)(r * f),
-							       0.0f, up, &o);
+				sss_circle c = sss_circle_make(d3_to_v3(d3_scale(sp.x, f)), d3_to_v3(sp.n),
+							       (float)(r * f), 0.0f, up, &o);
 				sss_circle_hit hits[8];
 				int n = circle_hits(&c, q, hits);
 				vec3 w;
 				float prob;
-				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits, n, us, &o, &w, &prob);
+				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits, n, us, &o,
+							     &w, &prob);
 				w2[v] = pick < 0 ? 0.0 : w.x;
 			}
 			worst = fmax(worst, fabs(w2[1] - w2[0]) / fmax(1.0, w2[0]));
 			weighed += w2[0] > 0.0;
 		}
-		CHECK(worst <= 1e-3 && weighed > 19000, "sphere scaled by %g: weights differ by up to %g (%d of 20000 hit)",
-		      k, worst, weighed);
+		CHECK(worst <= 1e-3 && weighed > 19000,
+		      "sphere scaled by %g: weights differ by up to %g (%d of 20000 hit)", k, worst, weighed);
 	}
 }
 
@@ -498,8 +517,8 @@ int main(void)
 	for (int i = 0; i < 4; i++) {
 		estimate e = run_estimator(&prof, &sp.q, sp.x, sp.n, opts[i], n, 1000 + i);
 		print_row(sp.name, names[i], qs, e);
-		CHECK(fabs(e.mean - qs) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", sp.name, names[i],
-		      e.mean, e.se, qs);
+		CHECK(fabs(e.mean - qs) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", sp.name,
+		      names[i], e.mean, e.se, qs);
 	}
 
 	/* Cylinders: exact (half, full, mis) unbiased; the talk's weight low, by 1 % to 7 % on the
@@ -511,16 +530,18 @@ int main(void)
 		double qc = quad_cylinder(&prof, &cs.q, a0);
 		for (int i = 0; i < 4; i++) {
 			long count = cyl == 0 && i == 0 ? 8 * n : n;
-			estimate e = run_estimator(&prof, &cs.q, cs.x, cs.n, opts[i], count, 2000 + 10 * cyl + i);
+			estimate e =
+			    run_estimator(&prof, &cs.q, cs.x, cs.n, opts[i], count, 2000 + 10 * cyl + i);
 			print_row(cs.name, names[i], qc, e);
 			if (opts[i] == &talk) {
 				double bias = 1.0 - e.mean / qc, top = cyl == 1 ? 0.5 : 0.07;
 				CHECK(bias >= 0.01 && bias <= top && (qc - e.mean) > 5.0 * e.se,
-				      "%s talk: %.6f +- %.6f vs quadrature %.6f: %.2f %% low, expected 1 %% to %g %%", cs.name,
-				      e.mean, e.se, qc, 100.0 * bias, 100.0 * top);
+				      "%s talk: %.6f +- %.6f vs quadrature %.6f: %.2f %% low, expected 1 %% "
+				      "to %g %%",
+				      cs.name, e.mean, e.se, qc, 100.0 * bias, 100.0 * top);
 			} else {
-				CHECK(fabs(e.mean - qc) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", cs.name,
-				      names[i], e.mean, e.se, qc);
+				CHECK(fabs(e.mean - qc) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f",
+				      cs.name, names[i], e.mean, e.se, qc);
 			}
 		}
 	}
@@ -536,8 +557,8 @@ int main(void)
 		estimate e = run_estimator(&rgb, &sp.q, sp.x, sp.n, &exact, n, 4000);
 		const char *ch[3] = {"rgb burley, red", "rgb burley, green", "rgb burley, blue"};
 		print_row(sp.name, ch[test_channel], q, e);
-		CHECK(fabs(e.mean - q) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", sp.name, ch[test_channel],
-		      e.mean, e.se, q);
+		CHECK(fabs(e.mean - q) <= 3.0 * e.se, "%s %s: %.6f +- %.6f, quadrature %.6f", sp.name,
+		      ch[test_channel], e.mean, e.se, q);
 	}
 	return check_done("test_circle");
 }

@@ -1,9 +1,9 @@
 /* test_profile: every profile integrates to its albedo, its pdf to 1 and its CDF to the pdf's
  * integral, truncation holds the stated tail, sampling passes chi-square, and the medium links
  * (Fresnel moment, Jensen's R_d, physical <-> artist) agree with their sources. */
-#include "sss/profile.h"
 #include "base/rng.h"
 #include "check.h"
+#include "sss/profile.h"
 #include "sss_test.h"
 
 #include <stdio.h>
@@ -11,7 +11,7 @@
 
 /* Chi-square tests in this program, for the Sidak correction of the family level 0.01. */
 #define CHI2_TESTS 16
-#define CHI2_BINS 100
+#define CHI2_BINS  100
 
 static const char *kind_name[] = {"gaussian", "sum_of_gaussians", "burley", "dipole"};
 
@@ -21,8 +21,14 @@ static double f_R(double r, const void *c)
 	r = fmax(r, 1e-300);
 	return 2.0 * PI * r * sss_channel_eval(c, r);
 }
-static double f_pdf(double r, const void *c) { return sss_channel_pdf(c, r); }
-static double f_mix_pdf(double r, const void *p) { return sss_profile_pdf(p, r); }
+static double f_pdf(double r, const void *c)
+{
+	return sss_channel_pdf(c, r);
+}
+static double f_mix_pdf(double r, const void *p)
+{
+	return sss_profile_pdf(p, r);
+}
 
 /* The same channel without truncation: the paper's formula on [0, inf). */
 static sss_channel untruncated(const sss_channel *c)
@@ -38,7 +44,8 @@ static void check_normalisation(const sss_channel *c, const char *what)
 {
 	double rm = c->r_max_mm;
 	double a = integrate_log(f_R, c, 0.0, rm);
-	CHECK(fabs(a - c->albedo) <= 1e-6, "%s: integral of R 2 pi r dr = %.9f, albedo %.9f", what, a, c->albedo);
+	CHECK(fabs(a - c->albedo) <= 1e-6, "%s: integral of R 2 pi r dr = %.9f, albedo %.9f", what, a,
+	      c->albedo);
 	double one = integrate_log(f_pdf, c, 0.0, rm);
 	CHECK(fabs(one - 1.0) <= 1e-6, "%s: integral of pdf = %.9f", what, one);
 	for (int k = 1; k < 10; k++) {
@@ -50,9 +57,10 @@ static void check_normalisation(const sss_channel *c, const char *what)
 	sss_channel u = untruncated(c);
 	double all = integrate_log(f_R, &u, 0.0, u.r_max_mm), below = integrate_log(f_R, &u, 0.0, rm);
 	double tail_ok = c->albedo > 0.0 ? fabs(below / all - (1.0 - SSS_PROFILE_TAIL)) : 0.0;
-	CHECK(fabs(all - c->albedo) <= 2e-6, "%s: untruncated integral %.9f, albedo %.9f", what, all, c->albedo);
-	CHECK(tail_ok <= 1e-6, "%s: untruncated mass below r_max %.9f of %.9f (want 1 - %g)", what, below, all,
-	      SSS_PROFILE_TAIL);
+	CHECK(fabs(all - c->albedo) <= 2e-6, "%s: untruncated integral %.9f, albedo %.9f", what, all,
+	      c->albedo);
+	CHECK(tail_ok <= 1e-6, "%s: untruncated mass below r_max %.9f of %.9f (want 1 - %g)", what, below,
+	      all, SSS_PROFILE_TAIL);
 	CHECK(fabs(c->norm - (1.0 - SSS_PROFILE_TAIL)) <= 1e-9, "%s: norm %.12f", what, c->norm);
 }
 
@@ -135,8 +143,14 @@ static void check_chi2(sampler_fn sample, double (*cdf)(const void *, double), c
 	printf("  %-44s chi2 %7.1f  p %.3f\n", what, chi2, p);
 }
 
-static double ch_sample(const void *c, rng *g) { return sss_channel_sample(c, rng_double(g)); }
-static double ch_cdf(const void *c, double r) { return sss_channel_cdf(c, r); }
+static double ch_sample(const void *c, rng *g)
+{
+	return sss_channel_sample(c, rng_double(g));
+}
+static double ch_cdf(const void *c, double r)
+{
+	return sss_channel_cdf(c, r);
+}
 static double mix_sample(const void *p, rng *g)
 {
 	double uc = rng_double(g);
@@ -153,7 +167,10 @@ static double mix_cdf(const void *p, double r)
 
 /* Jensen et al. 2001's polynomial for the internal diffuse Fresnel reflectance (section 2.3,
  * after Egan & Hilgeman): an approximation of 2 FM1(1/eta). */
-static double jensen_fdr(double eta) { return -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta; }
+static double jensen_fdr(double eta)
+{
+	return -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta;
+}
 
 /* Brute-force first Fresnel moment: midpoint rule, 10^6 intervals. */
 static double fm1_reference(double eta)
@@ -182,8 +199,8 @@ static void check_medium_links(void)
 	}
 	for (double eta = 1.1; eta < 1.61; eta += 0.1) {
 		double f_dr = 2.0 * sss_fresnel_moment1(1.0 / eta);
-		CHECK(fabs(f_dr - jensen_fdr(eta)) <= 0.01, "F_dr(%g) = %.4f, Jensen's polynomial %.4f", eta, f_dr,
-		      jensen_fdr(eta));
+		CHECK(fabs(f_dr - jensen_fdr(eta)) <= 0.01, "F_dr(%g) = %.4f, Jensen's polynomial %.4f", eta,
+		      f_dr, jensen_fdr(eta));
 	}
 	/* Jensen et al. 2001's R_d for skin1 (their measured sigma_s', sigma_a, eta 1.3), written
 	 * here with their polynomial F_dr: ours uses the exact Fresnel moment, so they differ a little. */
@@ -210,16 +227,19 @@ static void check_medium_links(void)
 		double alb = sss_dipole_albedo(0.88 / 1.05, 1.3), ld = 1.0 / sqrt(3.0 * 0.17 * 1.05);
 		CHECK(sss_channel_from_artist(&a, k, 1, alb, ld, 1.3), "artist %s", kind_name[k]);
 		CHECK(fabs(p.r_max_mm - a.r_max_mm) <= 1e-8 * p.r_max_mm && fabs(p.albedo - a.albedo) <= 1e-9,
-		      "%s: physical r_max %.12g A %.12g, artist r_max %.12g A %.12g", kind_name[k], p.r_max_mm,
-		      p.albedo, a.r_max_mm, a.albedo);
+		      "%s: physical r_max %.12g A %.12g, artist r_max %.12g A %.12g", kind_name[k],
+		      p.r_max_mm, p.albedo, a.r_max_mm, a.albedo);
 	}
 	/* Bad input is refused. */
 	sss_channel c;
 	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, 0.0, 0.0, 1.3), "sigma_t = 0 accepted");
-	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, -1.0, 0.5, 1.3), "negative sigma accepted");
+	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, -1.0, 0.5, 1.3),
+	      "negative sigma accepted");
 	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, NAN, 0.5, 1.3), "NaN sigma accepted");
-	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, 1.0, 0.0, 1.3), "sigma_a = 0 (l_d infinite) accepted");
-	CHECK(sss_channel_from_physical(&c, SSS_PROFILE_DIPOLE, 0, 1.0, 0.0, 1.3) && fabs(c.albedo - 1.0) < 1e-12,
+	CHECK(!sss_channel_from_physical(&c, SSS_PROFILE_BURLEY, 0, 1.0, 0.0, 1.3),
+	      "sigma_a = 0 (l_d infinite) accepted");
+	CHECK(sss_channel_from_physical(&c, SSS_PROFILE_DIPOLE, 0, 1.0, 0.0, 1.3) &&
+		  fabs(c.albedo - 1.0) < 1e-12,
 	      "dipole without absorption: albedo %.15f", c.albedo);
 	CHECK(!sss_channel_from_artist(&c, SSS_PROFILE_BURLEY, 0, 1.5, 1.0, 1.3), "albedo 1.5 accepted");
 	CHECK(!sss_channel_from_artist(&c, SSS_PROFILE_BURLEY, 0, 0.5, 0.0, 1.3), "radius 0 accepted");
@@ -238,22 +258,28 @@ static void check_extremes(void)
 			for (int im = 0; im < 3; im++)
 				for (int ie = 0; ie < 3; ie++) {
 					sss_channel c;
-					bool ok = sss_channel_from_artist(&c, k, 0, albedo[ia], ld[im], eta[ie]);
-					CHECK(ok && isfinite(c.r_max_mm) && c.r_max_mm > 0.0 && isfinite(c.albedo),
-					      "%s A %g l_d %g eta %g: built %d r_max %g A %g", kind_name[k], albedo[ia],
-					      ld[im], eta[ie], ok, c.r_max_mm, c.albedo);
+					bool ok =
+					    sss_channel_from_artist(&c, k, 0, albedo[ia], ld[im], eta[ie]);
+					CHECK(ok && isfinite(c.r_max_mm) && c.r_max_mm > 0.0 &&
+						  isfinite(c.albedo),
+					      "%s A %g l_d %g eta %g: built %d r_max %g A %g", kind_name[k],
+					      albedo[ia], ld[im], eta[ie], ok, c.r_max_mm, c.albedo);
 					if (!ok)
 						continue;
 					int bad = 0;
 					for (int i = 0; i < 200; i++) {
-						double u = i == 0 ? 0.0 : i == 1 ? 1.0 - 0x1p-53 : rng_double(&g);
+						double u = i == 0   ? 0.0
+							   : i == 1 ? 1.0 - 0x1p-53
+								    : rng_double(&g);
 						double r = sss_channel_sample(&c, u);
-						double R = sss_channel_eval(&c, r), p = sss_channel_pdf(&c, r);
-						if (!(r > 0.0 && r <= c.r_max_mm) || !isfinite(R) || !isfinite(p) || !(p > 0.0))
+						double R = sss_channel_eval(&c, r),
+						       p = sss_channel_pdf(&c, r);
+						if (!(r > 0.0 && r <= c.r_max_mm) || !isfinite(R) ||
+						    !isfinite(p) || !(p > 0.0))
 							bad++;
 					}
-					CHECK(bad == 0, "%s A %g l_d %g eta %g: %d bad samples", kind_name[k], albedo[ia],
-					      ld[im], eta[ie], bad);
+					CHECK(bad == 0, "%s A %g l_d %g eta %g: %d bad samples", kind_name[k],
+					      albedo[ia], ld[im], eta[ie], bad);
 				}
 }
 
@@ -269,17 +295,18 @@ int main(void)
 		double a, b; /* sigma_s', sigma_a or albedo, l_d */
 		double eta;
 	} cfg[] = {
-		{true, 1, 0.88, 0.17, 1.3},
-		{false, 0, 0.95, 2.0, 1.45},
-		{false, 2, 1.0, 0.6, 1.0},
+	    {true, 1, 0.88, 0.17, 1.3},
+	    {false, 0, 0.95, 2.0, 1.45},
+	    {false, 2, 1.0, 0.6, 1.0},
 	};
 	int chi = 0;
 	for (int k = 0; k < 4; k++)
 		for (int i = 0; i < 3; i++) {
 			sss_channel c;
-			bool ok = cfg[i].physical
-					  ? sss_channel_from_physical(&c, k, cfg[i].channel, cfg[i].a, cfg[i].b, cfg[i].eta)
-					  : sss_channel_from_artist(&c, k, cfg[i].channel, cfg[i].a, cfg[i].b, cfg[i].eta);
+			bool ok = cfg[i].physical ? sss_channel_from_physical(&c, k, cfg[i].channel, cfg[i].a,
+									      cfg[i].b, cfg[i].eta)
+						  : sss_channel_from_artist(&c, k, cfg[i].channel, cfg[i].a,
+									    cfg[i].b, cfg[i].eta);
 			char what[96];
 			snprintf(what, sizeof what, "%s %s (%g, %g, eta %g)", kind_name[k],
 				 cfg[i].physical ? "physical" : "artist", cfg[i].a, cfg[i].b, cfg[i].eta);
@@ -304,7 +331,8 @@ int main(void)
 		char what[96];
 		snprintf(what, sizeof what, "rgb %s (%s)", kind_name[k], k % 2 ? "skin1" : "wax");
 		/* Piecewise between the channels' truncation radii, where the mixture pdf jumps. */
-		double rm = sss_profile_r_max(&p), one = 0.0, cut[4] = {0.0, p.ch[0].r_max_mm, p.ch[1].r_max_mm, p.ch[2].r_max_mm};
+		double rm = sss_profile_r_max(&p), one = 0.0,
+		       cut[4] = {0.0, p.ch[0].r_max_mm, p.ch[1].r_max_mm, p.ch[2].r_max_mm};
 		for (int i = 1; i < 4; i++)
 			for (int j = i; j > 1 && cut[j] < cut[j - 1]; j--) {
 				double t = cut[j];
@@ -319,9 +347,10 @@ int main(void)
 			vec3 ratio = sss_profile_ratio(&p, r), R = sss_profile_eval(&p, r);
 			for (int c = 0; c < 3; c++) {
 				double w = v3_get(ratio, c), expect = 2.0 * PI * r * v3_get(R, c) / pdf;
-				CHECK(w <= sum_a * (1.0 + 1e-6) && (pdf == 0.0 || fabs(w - expect) <= 1e-5 * (1.0 + expect)),
-				      "%s r %g channel %d: ratio %g, 2 pi r R / pdf %g, bound %g", what, r, c, w, expect,
-				      sum_a);
+				CHECK(w <= sum_a * (1.0 + 1e-6) &&
+					  (pdf == 0.0 || fabs(w - expect) <= 1e-5 * (1.0 + expect)),
+				      "%s r %g channel %d: ratio %g, 2 pi r R / pdf %g, bound %g", what, r, c,
+				      w, expect, sum_a);
 			}
 		}
 		check_chi2(mix_sample, mix_cdf, &p, rm, what, 100 + chi++);
