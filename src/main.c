@@ -445,6 +445,7 @@ static int cmd_render(int argc, char **argv)
 		diag_free(&d);
 		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
 	}
+	double parse_s = seconds_since(&start);
 	char *out_default = o.out ? NULL : default_output(o.scene);
 	char *out = frame_name(o.out ? o.out : out_default, o.frame);
 	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
@@ -457,6 +458,7 @@ static int cmd_render(int argc, char **argv)
 		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return rc;
 	}
+	double build_s = seconds_since(&start) - parse_s;
 	int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 	char tile[32] = "";
 	if (o.has_region) {
@@ -515,9 +517,11 @@ static int cmd_render(int argc, char **argv)
 		bool ok = output_write_exr(out, &f, &info, &d) && (!png || output_write_png(png, &f, 0.0f, &d));
 		if (!o.quiet || stats.dropped)
 			fprintf(stderr, "circe: %s: %u samples per pixel in %.2f s (%.3g samples/s, %d threads); %llu "
-					"non-finite samples dropped\n",
+					"non-finite samples dropped\n"
+					"circe: time: parse %.3f s, build %.3f s (%zu triangles: tessellation and BVHs), "
+					"render %.3f s\n",
 				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
-				(unsigned long long)stats.dropped);
+				(unsigned long long)stats.dropped, parse_s, build_s, w.stats.triangles, stats.seconds);
 		rc = !ok ? EXIT_RUNTIME : info.interrupted ? 130 : EXIT_OK;
 	}
 	film_free(&f);

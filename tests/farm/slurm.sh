@@ -31,4 +31,18 @@ done
 [ -f full.exr ] || fail "no merged image; logs: $(cat ./*.log)"
 expect_status 0 "$CIRCE" compare full.exr whole.exr --fail 0
 grep -q '^max_abs: 0 at' out || fail "merged differs from the single render: $(cat out)"
+
+# An animation: frames 0 to 2, one task each; clock runs 0, 0.5, 1, so the frames differ.
+sh "$top_srcdir/farm/slurm/submit-frames.sh" "$top_srcdir/tests/farm/anim.pov" "$work/anim.####.exr" 0 2 \
+	-W 32 -H 24 --spp 4 >submit.log 2>&1 || fail "submit frames: $(cat submit.log)"
+for _ in $(seq 240); do
+	[ -z "$(squeue -h 2>/dev/null)" ] && break
+	sleep 0.5
+done
+for f in 0 1 2; do
+	[ -f "anim.000$f.exr" ] || fail "frame $f missing; logs: $(cat ./*.log)"
+done
+expect_status 1 "$CIRCE" compare anim.0000.exr anim.0002.exr --fail 0.1
+expect_status 0 "$CIRCE" render "$top_srcdir/tests/farm/anim.pov" -o mid.exr -W 32 -H 24 --spp 4 --clock 0.5 --quiet
+expect_status 0 "$CIRCE" compare anim.0001.exr mid.exr --fail 0
 pass
