@@ -4,7 +4,7 @@
 # the build folder (it uses ./circe). The image is the same for every count (determinism).
 set -eu
 scene=${1:-../scenes/default.pov}
-shift || true
+if [ $# -gt 0 ]; then shift; fi
 counts=${*:-"1 2"}
 opts="-W 320 -H 240 --spp 32"
 work=$(mktemp -d)

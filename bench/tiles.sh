@@ -5,7 +5,7 @@
 # one CPU. Prints a markdown table. Run from the build folder (it uses ./circe).
 set -eu
 scene=${1:-../scenes/default.pov}
-shift || true
+if [ $# -gt 0 ]; then shift; fi
 counts=${*:-"4 16"}
 opts="-W 320 -H 240 --spp 16 --threads 1"
 work=$(mktemp -d)
