@@ -84,8 +84,8 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 /* Slab test of a ray against a node, conservative against rounding: true when the box may hold
  * a hit with t in [r->tmin, tlimit]; *tnear receives the entry distance. */
 bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tnear);
-/* Conservative circle/box test: the box meets the circle's plane and the spherical shell of the
- * circle's radius (and, for a half circle, the half space cos theta >= 0). */
+/* Conservative circle/box test: the box meets the circle's own bounds, its plane and the
+ * spherical shell of its radius (and, for a half circle, the half space cos theta >= 0). */
 bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q);
 
 #endif
