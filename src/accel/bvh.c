@@ -267,9 +267,8 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 {
 	if (b->num_nodes == 0)
 		return false;
-	const bvh_node *r = &b->nodes[0];
-	*lo = v3(r->lo[0], r->lo[1], r->lo[2]);
-	*hi = v3(r->hi[0], r->hi[1], r->hi[2]);
+	*lo = bvh_node_lo(&b->nodes[0]);
+	*hi = bvh_node_hi(&b->nodes[0]);
 	return true;
 }
 
@@ -412,15 +411,8 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = node_hit(&b->nodes[c0], &sr, r->tmax, &tn);
 			bool h1 = node_hit(&b->nodes[c1], &sr, r->tmax, &tn);
-			if (h0 && h1) {
-				stack[sp++] = c1;
-				ni = c0;
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
-				continue;
-			}
 		} else {
 			const bvh_tri *tr = &b->tris[nd->first];
 			for (uint32_t i = 0; i < nd->count; i++, tr++) {
@@ -515,7 +507,7 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 
 static bool node_circle(const circle_prep *p, const bvh_node *nd)
 {
-	return box_circle(p, v3(nd->lo[0], nd->lo[1], nd->lo[2]), v3(nd->hi[0], nd->hi[1], nd->hi[2]));
+	return box_circle(p, bvh_node_lo(nd), bvh_node_hi(nd));
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
@@ -524,7 +516,7 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 	if (b->num_nodes == 0)
 		return 0;
 	const bvh_node *root = &b->nodes[0];
-	float extent = box_extent(v3(root->lo[0], root->lo[1], root->lo[2]), v3(root->hi[0], root->hi[1], root->hi[2]));
+	float extent = box_extent(bvh_node_lo(root), bvh_node_hi(root));
 	if (!circle_prepare(q, extent, &p) || !node_circle(&p, root))
 		return 0;
 	uint32_t stack[BVH_MAX_DEPTH + 2];
@@ -535,15 +527,8 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 		if (nd->count & BVH_INNER) {
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = node_circle(&p, &b->nodes[c0]), h1 = node_circle(&p, &b->nodes[c1]);
-			if (h0 && h1) {
-				stack[sp++] = c1;
-				ni = c0;
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
-				continue;
-			}
 		} else {
 			const bvh_tri *tr = &b->tris[nd->first];
 			for (uint32_t i = 0; i < nd->count; i++, tr++) {

@@ -111,12 +111,8 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = bvh_node_hit(&t->nodes[c0], &wr, tlimit, &tn);
 			bool h1 = bvh_node_hit(&t->nodes[c1], &wr, tlimit, &tn);
-			if (h0 && h1)
-				stack[sp++] = c1;
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
 		} else {
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t id = t->order[nd->first + k];
@@ -170,8 +166,7 @@ uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circ
 {
 	if (only != TLAS_ALL_INSTANCES)
 		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
-	if (t->num_nodes == 0 || !bvh_box_circle(v3(t->nodes[0].lo[0], t->nodes[0].lo[1], t->nodes[0].lo[2]),
-						 v3(t->nodes[0].hi[0], t->nodes[0].hi[1], t->nodes[0].hi[2]), q))
+	if (t->num_nodes == 0 || !bvh_box_circle(bvh_node_lo(&t->nodes[0]), bvh_node_hi(&t->nodes[0]), q))
 		return 0;
 	uint32_t stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -181,14 +176,10 @@ uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circ
 		if (nd->count & BVH_INNER) {
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			const bvh_node *a = &t->nodes[c0], *b = &t->nodes[c1];
-			bool h0 = bvh_box_circle(v3(a->lo[0], a->lo[1], a->lo[2]), v3(a->hi[0], a->hi[1], a->hi[2]), q);
-			bool h1 = bvh_box_circle(v3(b->lo[0], b->lo[1], b->lo[2]), v3(b->hi[0], b->hi[1], b->hi[2]), q);
-			if (h0 && h1)
-				stack[sp++] = c1;
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
+			bool h0 = bvh_box_circle(bvh_node_lo(a), bvh_node_hi(a), q);
+			bool h1 = bvh_box_circle(bvh_node_lo(b), bvh_node_hi(b), q);
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
 		} else {
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t room = total < max_hits ? max_hits - total : 0;
