@@ -7,8 +7,10 @@
 
 #include <string.h>
 
-/* SAH: the cost of one node visit relative to one triangle test. */
-#define SAH_TRAVERSAL_COST 1.0f
+/* SAH: the costs of a node visit (two box tests) and of a triangle test. Their ratio sets the
+ * leaf size, hence speed against memory (bench/README.md). */
+#define SAH_TRAVERSAL_COST 2.0f
+#define SAH_INTERSECTION_COST 1.0f
 #define SAH_BINS 16
 /* Slack of the slab test's far distance: 1 + 2 gamma(3) of Ize 2013 ("Robust BVH Ray
  * Traversal") covers the rounding of the box distances; we take ten times that, because the
@@ -41,6 +43,22 @@ typedef struct build_task {
 	uint32_t node, begin, end, depth;
 } build_task;
 
+/* Component min and max as compare-and-select (minss/maxss): vec.h's fminf-based ones are
+ * library calls at -O2, and build inputs are finite (degenerate triangles are left out). */
+static inline vec3 vmin(vec3 a, vec3 b)
+{
+	return v3(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
+}
+static inline vec3 vmax(vec3 a, vec3 b)
+{
+	return v3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
+}
+static inline float fmax3(vec3 a)
+{
+	float m = a.x > a.y ? a.x : a.y;
+	return m > a.z ? m : a.z;
+}
+
 static float half_area(vec3 lo, vec3 hi)
 {
 	vec3 e = v3_sub(hi, lo);
@@ -66,44 +84,49 @@ static bool find_split(const build_ref *refs, uint32_t b, uint32_t e, vec3 clo, 
 		       int *axis, int *split_bin, float *scale_out)
 {
 	uint32_t count = e - b;
-	float best = (float)count; /* the leaf's cost */
+	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY; /* the leaf */
 	bool found = false;
-	bool leaf_ok = count <= BVH_MAX_LEAF;
-	if (!leaf_ok)
-		best = INFINITY;
+	float cmin[3] = {clo.x, clo.y, clo.z}, scale[3];
+	bool usable[3];
 	for (int ax = 0; ax < 3; ax++) {
-		float cmin = v3_get(clo, ax), ext = v3_get(chi, ax) - cmin;
-		if (!(ext > 0.0f))
-			continue;
-		float scale = (float)SAH_BINS * (1.0f - 1e-6f) / ext;
-		uint32_t cnt[SAH_BINS] = {0};
-		vec3 blo[SAH_BINS], bhi[SAH_BINS];
+		float ext = v3_get(chi, ax) - cmin[ax];
+		usable[ax] = ext > 0.0f;
+		scale[ax] = usable[ax] ? (float)SAH_BINS * (1.0f - 1e-6f) / ext : 0.0f;
+	}
+	uint32_t cnt[3][SAH_BINS] = {{0}};
+	vec3 blo[3][SAH_BINS], bhi[3][SAH_BINS];
+	for (int ax = 0; ax < 3; ax++)
 		for (int i = 0; i < SAH_BINS; i++)
-			blo[i] = v3s(INFINITY), bhi[i] = v3s(-INFINITY);
-		for (uint32_t i = b; i < e; i++) {
-			const build_ref *r = &refs[i];
-			int k = bin_of(v3_get(r->lo, ax) + v3_get(r->hi, ax), cmin, scale);
-			cnt[k]++;
-			blo[k] = v3_min(blo[k], r->lo);
-			bhi[k] = v3_max(bhi[k], r->hi);
-		}
+			blo[ax][i] = v3s(INFINITY), bhi[ax][i] = v3s(-INFINITY);
+	for (uint32_t i = b; i < e; i++) {
+		const build_ref *r = &refs[i];
+		vec3 c = v3_add(r->lo, r->hi);
+		int k0 = bin_of(c.x, cmin[0], scale[0]), k1 = bin_of(c.y, cmin[1], scale[1]), k2 = bin_of(c.z, cmin[2], scale[2]);
+		cnt[0][k0]++, cnt[1][k1]++, cnt[2][k2]++;
+		blo[0][k0] = vmin(blo[0][k0], r->lo), bhi[0][k0] = vmax(bhi[0][k0], r->hi);
+		blo[1][k1] = vmin(blo[1][k1], r->lo), bhi[1][k1] = vmax(bhi[1][k1], r->hi);
+		blo[2][k2] = vmin(blo[2][k2], r->lo), bhi[2][k2] = vmax(bhi[2][k2], r->hi);
+	}
+	for (int ax = 0; ax < 3; ax++) {
+		if (!usable[ax])
+			continue;
 		/* Sweep from the right, then from the left. */
 		float right_cost[SAH_BINS];
 		vec3 lo = v3s(INFINITY), hi = v3s(-INFINITY);
 		uint32_t n = 0;
 		for (int i = SAH_BINS - 1; i > 0; i--) {
-			lo = v3_min(lo, blo[i]), hi = v3_max(hi, bhi[i]), n += cnt[i];
+			lo = vmin(lo, blo[ax][i]), hi = vmax(hi, bhi[ax][i]), n += cnt[ax][i];
 			right_cost[i] = n ? half_area(lo, hi) * (float)n : 0.0f;
 		}
 		lo = v3s(INFINITY), hi = v3s(-INFINITY), n = 0;
 		for (int i = 0; i < SAH_BINS - 1; i++) {
-			lo = v3_min(lo, blo[i]), hi = v3_max(hi, bhi[i]), n += cnt[i];
+			lo = vmin(lo, blo[ax][i]), hi = vmax(hi, bhi[ax][i]), n += cnt[ax][i];
 			if (n == 0 || n == count)
 				continue;
 			float cost = SAH_TRAVERSAL_COST +
-				     (half_area(lo, hi) * (float)n + right_cost[i + 1]) / node_area;
+				     SAH_INTERSECTION_COST * (half_area(lo, hi) * (float)n + right_cost[i + 1]) / node_area;
 			if (cost < best) {
-				best = cost, *axis = ax, *split_bin = i + 1, *scale_out = scale;
+				best = cost, *axis = ax, *split_bin = i + 1, *scale_out = scale[ax];
 				found = true;
 			}
 		}
@@ -134,9 +157,9 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 		bvh_node *nd = &nodes[tk.node];
 		vec3 blo = v3s(INFINITY), bhi = v3s(-INFINITY), clo = blo, chi = bhi;
 		for (uint32_t i = tk.begin; i < tk.end; i++) {
-			blo = v3_min(blo, refs[i].lo), bhi = v3_max(bhi, refs[i].hi);
+			blo = vmin(blo, refs[i].lo), bhi = vmax(bhi, refs[i].hi);
 			vec3 c = v3_add(refs[i].lo, refs[i].hi);
-			clo = v3_min(clo, c), chi = v3_max(chi, c);
+			clo = vmin(clo, c), chi = vmax(chi, c);
 		}
 		nd->lo[0] = blo.x, nd->lo[1] = blo.y, nd->lo[2] = blo.z;
 		nd->hi[0] = bhi.x, nd->hi[1] = bhi.y, nd->hi[2] = bhi.z;
@@ -205,8 +228,8 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			if (tri_is_degenerate(a, c, d))
 				continue;
 			keep[n] = f;
-			lo[n] = v3_min(a, v3_min(c, d));
-			hi[n] = v3_max(a, v3_max(c, d));
+			lo[n] = vmin(a, vmin(c, d));
+			hi[n] = vmax(a, vmax(c, d));
 			n++;
 		}
 		ok = bvh_build_nodes(lo, hi, n, &b->nodes, &b->num_nodes, perm);
@@ -244,9 +267,8 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 {
 	if (b->num_nodes == 0)
 		return false;
-	const bvh_node *r = &b->nodes[0];
-	*lo = v3(r->lo[0], r->lo[1], r->lo[2]);
-	*hi = v3(r->hi[0], r->hi[1], r->hi[2]);
+	*lo = bvh_node_lo(&b->nodes[0]);
+	*hi = bvh_node_hi(&b->nodes[0]);
 	return true;
 }
 
@@ -262,18 +284,43 @@ uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
 static inline float max_nan(float x, float m) { return x > m ? x : m; }
 static inline float min_nan(float x, float m) { return x < m ? x : m; }
 
-bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tnear)
+/* The slab test. The ray's direction signs pick each axis's near and far planes: lo[] sits at
+ * word 0 of a node and hi[] at word 4, so the plane is word 4 * sign + axis. */
+typedef struct slab_ray {
+	float org[3], inv[3];
+	int near_off[3], far_off[3];
+	float tmin;
+} slab_ray;
+
+static inline void slab_prepare(slab_ray *s, const tri_ray *r)
 {
-	float x0 = (nd->lo[0] - r->org.x) * r->inv_dir.x, x1 = (nd->hi[0] - r->org.x) * r->inv_dir.x;
-	float y0 = (nd->lo[1] - r->org.y) * r->inv_dir.y, y1 = (nd->hi[1] - r->org.y) * r->inv_dir.y;
-	float z0 = (nd->lo[2] - r->org.z) * r->inv_dir.z, z1 = (nd->hi[2] - r->org.z) * r->inv_dir.z;
-	bool sx = r->inv_dir.x < 0.0f, sy = r->inv_dir.y < 0.0f, sz = r->inv_dir.z < 0.0f;
-	float tn = r->tmin, tf = tlimit;
-	tn = max_nan(sx ? x1 : x0, tn), tf = min_nan(sx ? x0 : x1, tf);
-	tn = max_nan(sy ? y1 : y0, tn), tf = min_nan(sy ? y0 : y1, tf);
-	tn = max_nan(sz ? z1 : z0, tn), tf = min_nan(sz ? z0 : z1, tf);
+	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
+	for (int i = 0; i < 3; i++) {
+		s->org[i] = o[i], s->inv[i] = d[i];
+		int neg = d[i] < 0.0f;
+		s->near_off[i] = 4 * neg + i, s->far_off[i] = 4 * (1 - neg) + i;
+	}
+	s->tmin = r->tmin;
+}
+
+static inline bool node_hit(const bvh_node *nd, const slab_ray *s, float tlimit, float *tnear)
+{
+	const float *w = (const float *)nd;
+	float tn = s->tmin, tf = tlimit;
+	for (int i = 0; i < 3; i++) {
+		float a = (w[s->near_off[i]] - s->org[i]) * s->inv[i];
+		float b = (w[s->far_off[i]] - s->org[i]) * s->inv[i];
+		tn = max_nan(a, tn), tf = min_nan(b, tf);
+	}
 	*tnear = tn;
 	return tn <= tf * BVH_SLAB_SLACK;
+}
+
+bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tnear)
+{
+	slab_ray s;
+	slab_prepare(&s, r);
+	return node_hit(nd, &s, tlimit, tnear);
 }
 
 typedef struct stack_entry {
@@ -286,7 +333,9 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 	if (b->num_nodes == 0)
 		return false;
 	float tn0, tn1;
-	if (!bvh_node_hit(&b->nodes[0], r, *tlimit, &tn0))
+	slab_ray sr;
+	slab_prepare(&sr, r);
+	if (!node_hit(&b->nodes[0], &sr, *tlimit, &tn0))
 		return false;
 	stack_entry stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -297,8 +346,8 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 		const bvh_node *nd = &b->nodes[ni];
 		if (nd->count & BVH_INNER) {
 			uint32_t c0 = nd->first, c1 = c0 + 1;
-			bool h0 = bvh_node_hit(&b->nodes[c0], r, *tlimit, &tn0);
-			bool h1 = bvh_node_hit(&b->nodes[c1], r, *tlimit, &tn1);
+			bool h0 = node_hit(&b->nodes[c0], &sr, *tlimit, &tn0);
+			bool h1 = node_hit(&b->nodes[c1], &sr, *tlimit, &tn1);
 			if (h0 && h1) {
 				if (tn1 < tn0) {
 					uint32_t tc = c0;
@@ -349,7 +398,9 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 	if (b->num_nodes == 0)
 		return false;
 	float tn;
-	if (!bvh_node_hit(&b->nodes[0], r, r->tmax, &tn))
+	slab_ray sr;
+	slab_prepare(&sr, r);
+	if (!node_hit(&b->nodes[0], &sr, r->tmax, &tn))
 		return false;
 	uint32_t stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -358,17 +409,10 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 		const bvh_node *nd = &b->nodes[ni];
 		if (nd->count & BVH_INNER) {
 			uint32_t c0 = nd->first, c1 = c0 + 1;
-			bool h0 = bvh_node_hit(&b->nodes[c0], r, r->tmax, &tn);
-			bool h1 = bvh_node_hit(&b->nodes[c1], r, r->tmax, &tn);
-			if (h0 && h1) {
-				stack[sp++] = c1;
-				ni = c0;
+			bool h0 = node_hit(&b->nodes[c0], &sr, r->tmax, &tn);
+			bool h1 = node_hit(&b->nodes[c1], &sr, r->tmax, &tn);
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
-				continue;
-			}
 		} else {
 			const bvh_tri *tr = &b->tris[nd->first];
 			for (uint32_t i = 0; i < nd->count; i++, tr++) {
@@ -403,58 +447,77 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray)
 
 /* A circle prepared for box tests: its plane normal m = t x n and the slack. */
 typedef struct circle_prep {
+	vec3 lo, hi; /* the circle's own bounds, grown by the slack */
 	vec3 c, t, m;
-	float r, slack;
+	float r, slack, rmax2, rmin2; /* rmin2 < 0: no inner bound */
 	bool full;
 } circle_prep;
 
-static bool circle_prepare(const tri_circle *q, circle_prep *p)
+/* The slack covers rounding of box and circle data of magnitude up to `extent` (the largest
+ * coordinate of the boxes that will be tested). */
+static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 {
 	if (!v3_is_finite(q->centre) || !v3_is_finite(q->t) || !v3_is_finite(q->n) || !isfinite(q->radius) ||
 	    q->radius < 0.0f)
 		return false;
 	p->c = q->centre, p->t = q->t, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
-	p->slack = BVH_CIRCLE_SLACK * (q->radius + v3_max_comp(v3_abs(q->centre)));
+	p->slack = BVH_CIRCLE_SLACK * (q->radius + fmax3(v3_abs(q->centre)) + extent);
+	p->rmax2 = (p->r + p->slack) * (p->r + p->slack);
+	float rmin = p->r - p->slack;
+	p->rmin2 = rmin > 0.0f ? rmin * rmin : -1.0f;
+	/* Bounds of the circle: along axis i, cos(theta) t_i + sin(theta) n_i spans
+	 * +-sqrt(t_i^2 + n_i^2); a half circle reaches the positive end only when t_i >= 0 (else its
+	 * ends, +-n_i, bound it), the negative end only when t_i <= 0. */
+	float tc[3] = {q->t.x, q->t.y, q->t.z}, nc[3] = {q->n.x, q->n.y, q->n.z}, lo[3], hi[3];
+	for (int i = 0; i < 3; i++) {
+		float a = sqrtf(tc[i] * tc[i] + nc[i] * nc[i]), an = fabsf(nc[i]);
+		float up = q->full || tc[i] >= 0.0f ? a : an, down = q->full || tc[i] <= 0.0f ? a : an;
+		lo[i] = -down * q->radius - p->slack, hi[i] = up * q->radius + p->slack;
+	}
+	p->lo = v3_add(q->centre, v3(lo[0], lo[1], lo[2]));
+	p->hi = v3_add(q->centre, v3(hi[0], hi[1], hi[2]));
 	return true;
 }
 
 static bool box_circle(const circle_prep *p, vec3 lo, vec3 hi)
 {
+	/* All tests evaluated, one branch: cheaper than early exits that mispredict. */
+	bool bounds = (lo.x <= p->hi.x) & (lo.y <= p->hi.y) & (lo.z <= p->hi.z) & (hi.x >= p->lo.x) &
+		      (hi.y >= p->lo.y) & (hi.z >= p->lo.z);
 	vec3 e = v3_scale(v3_sub(hi, lo), 0.5f);
 	vec3 rel = v3_sub(v3_scale(v3_add(lo, hi), 0.5f), p->c);
-	float slack = p->slack + BVH_CIRCLE_SLACK * (v3_max_comp(v3_abs(lo)) + v3_max_comp(v3_abs(hi)));
 	/* The box meets the plane: its projection on m holds the centre's. */
-	if (fabsf(v3_dot(p->m, rel)) > v3_dot(v3_abs(p->m), e) + slack)
-		return false;
+	bool plane = fabsf(v3_dot(p->m, rel)) <= v3_dot(v3_abs(p->m), e) + p->slack;
 	/* For a half circle, the box reaches the side cos theta >= 0. */
-	if (!p->full && v3_dot(p->t, rel) + v3_dot(v3_abs(p->t), e) < -slack)
-		return false;
+	bool side = p->full | (v3_dot(p->t, rel) + v3_dot(v3_abs(p->t), e) >= -p->slack);
 	/* The box meets the sphere of radius r: nearest point inside, farthest outside. */
 	vec3 a = v3_abs(rel);
-	vec3 dn = v3_max(v3_sub(a, e), v3s(0.0f)), df = v3_add(a, e);
-	float rmax = p->r + slack, rmin = p->r - slack;
-	if (v3_length2(dn) > rmax * rmax)
-		return false;
-	if (rmin > 0.0f && v3_length2(df) < rmin * rmin)
-		return false;
-	return true;
+	vec3 dn = vmax(v3_sub(a, e), v3s(0.0f)), df = v3_add(a, e);
+	bool shell = (v3_length2(dn) <= p->rmax2) & (v3_length2(df) >= p->rmin2);
+	return bounds & plane & side & shell;
 }
+
+static float box_extent(vec3 lo, vec3 hi) { return fmax3(vmax(v3_abs(lo), v3_abs(hi))); }
 
 bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 {
 	circle_prep p;
-	return circle_prepare(q, &p) && box_circle(&p, lo, hi);
+	return circle_prepare(q, box_extent(lo, hi), &p) && box_circle(&p, lo, hi);
 }
 
 static bool node_circle(const circle_prep *p, const bvh_node *nd)
 {
-	return box_circle(p, v3(nd->lo[0], nd->lo[1], nd->lo[2]), v3(nd->hi[0], nd->hi[1], nd->hi[2]));
+	return box_circle(p, bvh_node_lo(nd), bvh_node_hi(nd));
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
 {
 	circle_prep p;
-	if (b->num_nodes == 0 || !circle_prepare(q, &p) || !node_circle(&p, &b->nodes[0]))
+	if (b->num_nodes == 0)
+		return 0;
+	const bvh_node *root = &b->nodes[0];
+	float extent = box_extent(bvh_node_lo(root), bvh_node_hi(root));
+	if (!circle_prepare(q, extent, &p) || !node_circle(&p, root))
 		return 0;
 	uint32_t stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -464,15 +527,8 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 		if (nd->count & BVH_INNER) {
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = node_circle(&p, &b->nodes[c0]), h1 = node_circle(&p, &b->nodes[c1]);
-			if (h0 && h1) {
-				stack[sp++] = c1;
-				ni = c0;
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
-			}
-			if (h0 || h1) {
-				ni = h0 ? c0 : c1;
-				continue;
-			}
 		} else {
 			const bvh_tri *tr = &b->tris[nd->first];
 			for (uint32_t i = 0; i < nd->count; i++, tr++) {

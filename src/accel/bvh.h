@@ -81,11 +81,25 @@ typedef struct bvh_node {
 #define BVH_MAX_DEPTH 62
 bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes,
 		     uint32_t *num_nodes, uint32_t *perm);
+static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }
+static inline vec3 bvh_node_hi(const bvh_node *nd) { return v3(nd->hi[0], nd->hi[1], nd->hi[2]); }
+/* One step down an unordered traversal from an inner node whose children c0, c0 + 1 were tested
+ * (h0, h1): go to the first child hit and push the other if both were. False when neither was
+ * (the caller pops). */
+static inline bool bvh_descend(bool h0, bool h1, uint32_t c0, uint32_t *stack, int *sp, uint32_t *ni)
+{
+	if (h0 && h1)
+		stack[(*sp)++] = c0 + 1;
+	if (!(h0 || h1))
+		return false;
+	*ni = h0 ? c0 : c0 + 1;
+	return true;
+}
 /* Slab test of a ray against a node, conservative against rounding: true when the box may hold
  * a hit with t in [r->tmin, tlimit]; *tnear receives the entry distance. */
 bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tnear);
-/* Conservative circle/box test: the box meets the circle's plane and the spherical shell of the
- * circle's radius (and, for a half circle, the half space cos theta >= 0). */
+/* Conservative circle/box test: the box meets the circle's own bounds, its plane and the
+ * spherical shell of its radius (and, for a half circle, the half space cos theta >= 0). */
 bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q);
 
 #endif

@@ -59,11 +59,15 @@ static inline bool tri_is_degenerate(vec3 v0, vec3 v1, vec3 v2)
 static inline bool tri_intersect(const tri_ray *r, vec3 v0, vec3 v1, vec3 v2, float tlimit, float *t,
 				 float *u, float *v)
 {
-	vec3 A = v3_sub(v0, r->org), B = v3_sub(v1, r->org), C = v3_sub(v2, r->org);
-	float Az = v3_get(A, r->kz), Bz = v3_get(B, r->kz), Cz = v3_get(C, r->kz);
-	float Ax = v3_get(A, r->kx) - r->sx * Az, Ay = v3_get(A, r->ky) - r->sy * Az;
-	float Bx = v3_get(B, r->kx) - r->sx * Bz, By = v3_get(B, r->ky) - r->sy * Bz;
-	float Cx = v3_get(C, r->kx) - r->sx * Cz, Cy = v3_get(C, r->ky) - r->sy * Cz;
+	/* Vertices relative to the origin, indexed by the ray's axis permutation (loads, not
+	 * branches: kx, ky, kz vary from ray to ray). */
+	float A[3] = {v0.x - r->org.x, v0.y - r->org.y, v0.z - r->org.z};
+	float B[3] = {v1.x - r->org.x, v1.y - r->org.y, v1.z - r->org.z};
+	float C[3] = {v2.x - r->org.x, v2.y - r->org.y, v2.z - r->org.z};
+	float Az = A[r->kz], Bz = B[r->kz], Cz = C[r->kz];
+	float Ax = A[r->kx] - r->sx * Az, Ay = A[r->ky] - r->sy * Az;
+	float Bx = B[r->kx] - r->sx * Bz, By = B[r->ky] - r->sy * Bz;
+	float Cx = C[r->kx] - r->sx * Cz, Cy = C[r->ky] - r->sy * Cz;
 	float U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
 	if (U == 0.0f || V == 0.0f || W == 0.0f) {
 		/* On an edge in float: decide in double so both neighbours agree (section 3.3). */
@@ -107,6 +111,16 @@ typedef struct tri_circle_hit {
 static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2,
 				       tri_circle_hit out[2])
 {
+	/* A float pre-test: a triangle whose vertices lie clearly on one side of the circle's plane
+	 * cannot meet it. The margin bounds the float error of m . (v - c) (a few ulps of the largest
+	 * magnitude involved), so only triangles the double test would also reject are skipped. */
+	vec3 mf = v3_cross(c->t, c->n);
+	float d0 = v3_dot(mf, v3_sub(v0, c->centre)), d1 = v3_dot(mf, v3_sub(v1, c->centre)),
+	      d2 = v3_dot(mf, v3_sub(v2, c->centre));
+	vec3 mag = v3_add(v3_add(v3_abs(v0), v3_abs(v1)), v3_add(v3_abs(v2), v3_abs(c->centre)));
+	float margin = 1e-5f * (mag.x + mag.y + mag.z);
+	if ((d0 > margin && d1 > margin && d2 > margin) || (d0 < -margin && d1 < -margin && d2 < -margin))
+		return 0;
 	dvec3 C = v3_to_d3(c->centre), T = v3_to_d3(c->t), N = v3_to_d3(c->n);
 	dvec3 M = d3_cross(T, N);
 	dvec3 P[3] = {v3_to_d3(v0), v3_to_d3(v1), v3_to_d3(v2)};

@@ -17,7 +17,7 @@ uint32_t prim_sphere_segments(float radius, float max_error);
 bool prim_box(vec3 corner1, vec3 corner2, mesh *out);
 
 /* The plane { normal, offset } (points p with dot(p, normal) = offset * |normal|, as POV-Ray),
- * clipped to the box [lo, hi] grown by 1 %: a convex polygon of 3 to 6 vertices, fanned. False
+ * clipped to the box [lo, hi] grown by 1 % of its size on each side: a convex polygon of 3 to 6 vertices, fanned. False
  * when the plane misses the box (an empty mesh is returned) or the normal is zero. */
 bool prim_plane(vec3 normal, float offset, vec3 lo, vec3 hi, mesh *out);
 

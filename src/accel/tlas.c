@@ -1,0 +1,193 @@
+/* tlas.c - the BVH over instances: rays and circles are moved into each instance's space and
+ * traced through its mesh BVH. */
+#include "accel/tlas.h"
+
+#include "base/mem.h"
+
+/* An instance as traced: world-to-object and object-to-world in float, 3x4 row-major. */
+typedef struct inst {
+	const bvh *geom;
+	float w2o[12], o2w[12];
+	float scale; /* of a similarity transform, 0 otherwise */
+} inst;
+
+struct tlas {
+	bvh_node *nodes;
+	uint32_t num_nodes;
+	uint32_t *order; /* instance index of each leaf slot */
+	inst *insts;
+	uint32_t count;
+};
+
+static vec3 mul_point(const float m[12], vec3 p)
+{
+	return v3(m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+		  m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]);
+}
+
+static vec3 mul_vector(const float m[12], vec3 v)
+{
+	return v3(m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
+		  m[8] * v.x + m[9] * v.y + m[10] * v.z);
+}
+
+tlas *tlas_build(const tlas_instance *instances, uint32_t count)
+{
+	tlas *t = mem_calloc(1, sizeof *t);
+	vec3 *lo = mem_alloc(count, sizeof *lo), *hi = mem_alloc(count, sizeof *hi);
+	bool ok = t && lo && hi;
+	if (ok) {
+		t->insts = mem_alloc(count, sizeof *t->insts);
+		t->order = mem_alloc(count, sizeof *t->order);
+		ok = t->insts && t->order;
+	}
+	for (uint32_t i = 0; ok && i < count; i++) {
+		inst *in = &t->insts[i];
+		const xform *x = &instances[i].to_world;
+		in->geom = instances[i].geom;
+		for (int r = 0; r < 3; r++)
+			for (int c = 0; c < 4; c++)
+				in->o2w[4 * r + c] = (float)x->m[r][c], in->w2o[4 * r + c] = (float)x->inv[r][c];
+		double s;
+		in->scale = xform_is_similarity(x, &s) ? (float)s : 0.0f;
+		vec3 blo, bhi;
+		if (!bvh_bounds(in->geom, &blo, &bhi)) {
+			/* Nothing to hit: an empty box far from everything is never entered. */
+			lo[i] = v3s(INFINITY), hi[i] = v3s(-INFINITY);
+			continue;
+		}
+		lo[i] = v3s(INFINITY), hi[i] = v3s(-INFINITY);
+		for (int k = 0; k < 8; k++) {
+			dvec3 p = d3(k & 1 ? bhi.x : blo.x, k & 2 ? bhi.y : blo.y, k & 4 ? bhi.z : blo.z);
+			vec3 w = d3_to_v3(xform_point(x, p));
+			lo[i] = v3_min(lo[i], w), hi[i] = v3_max(hi[i], w);
+		}
+		/* Rounding of the float transform: grow the box by a few ulps of its size. */
+		vec3 pad = v3_scale(v3_add(v3_abs(lo[i]), v3_abs(hi[i])), 1e-6f);
+		lo[i] = v3_sub(lo[i], pad), hi[i] = v3_add(hi[i], pad);
+	}
+	if (ok)
+		ok = bvh_build_nodes(lo, hi, count, &t->nodes, &t->num_nodes, t->order);
+	mem_free(lo), mem_free(hi);
+	if (!ok) {
+		tlas_free(t);
+		return NULL;
+	}
+	t->count = count;
+	return t;
+}
+
+void tlas_free(tlas *t)
+{
+	if (!t)
+		return;
+	mem_free(t->nodes), mem_free(t->order), mem_free(t->insts), mem_free(t);
+}
+
+size_t tlas_bytes(const tlas *t)
+{
+	return sizeof *t + (size_t)t->num_nodes * sizeof(bvh_node) + (size_t)t->count * (sizeof(inst) + sizeof(uint32_t));
+}
+
+bool tlas_circle_ok(const tlas *t, uint32_t i) { return i < t->count && t->insts[i].scale > 0.0f; }
+
+/* Visits the leaves of the top level whose boxes the ray reaches; for each instance calls the
+ * mesh traversal with the ray in object space. any: stop at the first hit. */
+static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
+{
+	tri_ray wr;
+	if (t->num_nodes == 0 || !tri_ray_prepare(&wr, ray->org, ray->dir, ray->tmin, ray->tmax))
+		return false;
+	float tlimit = ray->tmax, tn;
+	if (!bvh_node_hit(&t->nodes[0], &wr, tlimit, &tn))
+		return false;
+	uint32_t stack[BVH_MAX_DEPTH + 2];
+	int sp = 0;
+	uint32_t ni = 0;
+	bool found = false;
+	for (;;) {
+		const bvh_node *nd = &t->nodes[ni];
+		if (nd->count & BVH_INNER) {
+			uint32_t c0 = nd->first, c1 = c0 + 1;
+			bool h0 = bvh_node_hit(&t->nodes[c0], &wr, tlimit, &tn);
+			bool h1 = bvh_node_hit(&t->nodes[c1], &wr, tlimit, &tn);
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
+				continue;
+		} else {
+			for (uint32_t k = 0; k < nd->count; k++) {
+				uint32_t id = t->order[nd->first + k];
+				const inst *in = &t->insts[id];
+				tri_ray r;
+				if (!tri_ray_prepare(&r, mul_point(in->w2o, ray->org), mul_vector(in->w2o, ray->dir), ray->tmin,
+						     tlimit))
+					continue;
+				if (any) {
+					if (bvh_occluded_prepared(in->geom, &r))
+						return true;
+				} else if (bvh_intersect_prepared(in->geom, &r, &tlimit, hit)) {
+					hit->inst = id;
+					found = true;
+				}
+			}
+		}
+		if (sp == 0)
+			return found;
+		ni = stack[--sp];
+	}
+}
+
+bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit) { return trace(t, ray, hit, false); }
+
+bool tlas_occluded(const tlas *t, const bvh_ray *ray)
+{
+	bvh_hit unused;
+	return trace(t, ray, &unused, true);
+}
+
+/* The circle in instance space, traced there, hits moved back to world space. */
+static uint32_t circle_instance(const tlas *t, uint32_t id, const tri_circle *q, tri_circle_hit *hits, uint32_t room)
+{
+	const inst *in = &t->insts[id];
+	if (in->scale <= 0.0f)
+		return 0;
+	tri_circle oq = {mul_point(in->w2o, q->centre), v3_normalize(mul_vector(in->w2o, q->t)),
+			 v3_normalize(mul_vector(in->w2o, q->n)), q->radius / in->scale, q->full};
+	uint32_t n = bvh_circle(in->geom, &oq, hits, room);
+	for (uint32_t k = 0; k < n && k < room; k++) {
+		hits[k].pos = mul_point(in->o2w, hits[k].pos);
+		/* A similarity maps normals like vectors (up to scale). */
+		hits[k].ng = v3_normalize(mul_vector(in->o2w, hits[k].ng));
+		hits[k].inst = id;
+	}
+	return n;
+}
+
+uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits)
+{
+	if (only != TLAS_ALL_INSTANCES)
+		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
+	if (t->num_nodes == 0 || !bvh_box_circle(bvh_node_lo(&t->nodes[0]), bvh_node_hi(&t->nodes[0]), q))
+		return 0;
+	uint32_t stack[BVH_MAX_DEPTH + 2];
+	int sp = 0;
+	uint32_t ni = 0, total = 0;
+	for (;;) {
+		const bvh_node *nd = &t->nodes[ni];
+		if (nd->count & BVH_INNER) {
+			uint32_t c0 = nd->first, c1 = c0 + 1;
+			const bvh_node *a = &t->nodes[c0], *b = &t->nodes[c1];
+			bool h0 = bvh_box_circle(bvh_node_lo(a), bvh_node_hi(a), q);
+			bool h1 = bvh_box_circle(bvh_node_lo(b), bvh_node_hi(b), q);
+			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
+				continue;
+		} else {
+			for (uint32_t k = 0; k < nd->count; k++) {
+				uint32_t room = total < max_hits ? max_hits - total : 0;
+				total += circle_instance(t, t->order[nd->first + k], q, hits + (room ? total : 0), room);
+			}
+		}
+		if (sp == 0)
+			return total;
+		ni = stack[--sp];
+	}
+}

@@ -1,0 +1,40 @@
+/* tlas.h - the top level: a BVH over instances, each a mesh BVH (bvh.h) placed by an affine
+ * transform. Instances share their bvh, so memory grows with unique geometry, not with copies
+ * (about 100 bytes per instance). Read-only after the build; the bvhs must outlive the tlas. */
+#ifndef CIRCE_ACCEL_TLAS_H
+#define CIRCE_ACCEL_TLAS_H
+
+#include "accel/bvh.h"
+
+typedef struct tlas tlas;
+
+typedef struct tlas_instance {
+	const bvh *geom;
+	xform to_world;
+} tlas_instance;
+
+/* Restricts tlas_circle to no instance in particular. */
+#define TLAS_ALL_INSTANCES UINT32_MAX
+
+/* NULL when memory runs out. Instances whose bvh is empty are kept (and never hit). */
+tlas *tlas_build(const tlas_instance *instances, uint32_t count);
+void tlas_free(tlas *t);
+size_t tlas_bytes(const tlas *t);
+
+/* Closest hit over all instances, in world space: hit->inst is the instance's index, hit->prim
+ * the triangle id in its mesh, t in units of the world ray's |dir|. Rays with NaN or Inf
+ * components are rejected. */
+bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit);
+bool tlas_occluded(const tlas *t, const bvh_ray *ray);
+
+/* Every hit of the world-space circle q on instance `only` (or on all, TLAS_ALL_INSTANCES), with
+ * positions and normals in world space and inst set. A circle is traced in an instance's own
+ * space, which keeps it a circle only under a similarity transform (DESIGN.md): instances with a
+ * non-uniform scale or shear are skipped - the scene build flattens SSS objects that have one.
+ * Returns the total count; at most max_hits are written. */
+uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits);
+
+/* True when circles can be traced on instance i (its transform is a similarity). */
+bool tlas_circle_ok(const tlas *t, uint32_t i);
+
+#endif

@@ -1,0 +1,172 @@
+/* test_mesh: primitives, mesh2 arrays, the Assimp importer (OBJ, GLB, PLY) and its errors,
+ * tangents and transforms. */
+#include "check.h"
+#include "geom/mesh.h"
+#include "geom/prim.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *asset(const char *rel)
+{
+	static char buf[4096];
+	const char *top = getenv("top_srcdir");
+	snprintf(buf, sizeof buf, "%s/scenes/assets/%s", top ? top : ".", rel);
+	return buf;
+}
+
+/* Every triangle's geometric normal agrees with its vertices' shading normals and points away
+ * from `inside`; the mesh's area is returned. */
+static double check_outward(const char *name, const mesh *m, vec3 inside)
+{
+	double area = 0;
+	long bad = 0;
+	for (uint32_t f = 0; f < m->num_triangles; f++) {
+		const uint32_t *ix = m->indices + 3 * f;
+		vec3 a = m->positions[ix[0]], b = m->positions[ix[1]], c = m->positions[ix[2]];
+		vec3 ng = v3_cross(v3_sub(b, a), v3_sub(c, a));
+		area += 0.5 * v3_length(ng);
+		vec3 centre = v3_scale(v3_add(a, v3_add(b, c)), 1.0f / 3.0f);
+		bool ok = v3_dot(ng, v3_sub(centre, inside)) > 0;
+		for (int k = 0; k < 3 && m->normals; k++)
+			ok = ok && v3_dot(ng, m->normals[ix[k]]) > 0;
+		bad += !ok;
+	}
+	CHECK(bad == 0, "%s: %ld triangles face inwards", name, bad);
+	return area;
+}
+
+static void check_prims(void)
+{
+	mesh m;
+	CHECK(prim_sphere(v3(1, 2, 3), 2.0f, 64, &m), "sphere");
+	double area = check_outward("sphere", &m, v3(1, 2, 3));
+	CHECK(fabs(area - 4 * M_PI * 4) < 0.01 * 4 * M_PI * 4, "sphere area %g", area);
+	long off = 0;
+	for (uint32_t v = 0; v < m.num_vertices; v++)
+		off += fabsf(v3_length(v3_sub(m.positions[v], v3(1, 2, 3))) - 2.0f) > 1e-5f;
+	CHECK(off == 0, "%ld sphere vertices off the sphere", off);
+	mesh_free(&m);
+	CHECK(prim_sphere_segments(1.0f, 1e-3f) >= 70 && prim_sphere_segments(1.0f, 1e-3f) <= 72,
+	      "segments for 1e-3 error: %u", prim_sphere_segments(1.0f, 1e-3f));
+
+	CHECK(prim_box(v3(1, 1, 1), v3(-1, 0, 2), &m) && m.num_triangles == 12, "box");
+	area = check_outward("box", &m, v3(0, 0.5f, 1.5f));
+	CHECK_NEAR(area, 2 * (2 * 1 + 2 * 1 + 1 * 1), 1e-5);
+	mesh_free(&m);
+
+	/* The plane y = 1 cut by the box [-1, 1]^3 grown 1 % of its size on each side: a square of side 2.04. */
+	CHECK(prim_plane(v3(0, 2, 0), 1.0f, v3(-1, -1, -1), v3(1, 1, 1), &m), "plane");
+	area = 0;
+	for (uint32_t f = 0; f < m.num_triangles; f++) {
+		const uint32_t *ix = m.indices + 3 * f;
+		vec3 ng = v3_cross(v3_sub(m.positions[ix[1]], m.positions[ix[0]]), v3_sub(m.positions[ix[2]], m.positions[ix[0]]));
+		CHECK(ng.y > 0, "plane triangle %u faces along the normal", f);
+		area += 0.5 * v3_length(ng);
+	}
+	CHECK_NEAR(area, 2.04 * 2.04, 1e-4);
+	for (uint32_t v = 0; v < m.num_vertices; v++)
+		CHECK_NEAR(m.positions[v].y, 1.0, 1e-6);
+	mesh_free(&m);
+	/* A slanted plane through a box: a hexagon. */
+	CHECK(prim_plane(v3(1, 1, 1), 0.0f, v3(-1, -1, -1), v3(1, 1, 1), &m) && m.num_vertices == 6, "hexagon: %u vertices", m.num_vertices);
+	mesh_free(&m);
+	CHECK(!prim_plane(v3(0, 1, 0), 5.0f, v3(-1, -1, -1), v3(1, 1, 1), &m), "a plane missing the bounds is empty");
+	CHECK(!prim_plane(v3(0, 0, 0), 0.0f, v3(-1, -1, -1), v3(1, 1, 1), &m), "a zero normal is refused");
+}
+
+static void check_arrays(void)
+{
+	vec3 p[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+	vec3 n[1] = {{0, 0, 2}};
+	vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+	uint32_t fi[6] = {0, 1, 2, 0, 2, 3}, ni[6] = {0, 0, 0, 0, 0, 0};
+	mesh_arrays a = {p, 4, n, 1, uv, 4, fi, ni, NULL, 2};
+	diag d;
+	FILE *log = tmpfile();
+	diag_init(&d, log);
+	mesh m;
+	CHECK(mesh_from_arrays(&a, &m, &d, diag_noloc()) && m.num_vertices == 4 && m.num_triangles == 2, "mesh2 quad");
+	CHECK(m.normals && fabsf(m.normals[0].z - 1.0f) < 1e-6f, "normals normalised");
+	CHECK(mesh_generate_tangents(&m) && fabsf(m.tangents[0].t.x - 1.0f) < 1e-5f && m.tangents[0].sign == 1.0f,
+	      "tangent along +u");
+	xform t = xform_translate(d3(0, 0, 5));
+	mesh_transform(&m, &t);
+	CHECK_NEAR(m.positions[2].z, 5.0, 0);
+	xform s;
+	xform_scale(d3(-1, 1, 1), &s);
+	uint32_t before = m.indices[1];
+	mesh_transform(&m, &s);
+	CHECK(m.indices[2] == before, "a mirror flips the winding");
+	mesh_free(&m);
+	fi[4] = 7;
+	CHECK(!mesh_from_arrays(&a, &m, &d, diag_noloc()), "index out of range refused");
+	rewind(log);
+	char text[512] = {0};
+	fread(text, 1, sizeof text - 1, log);
+	CHECK(strstr(text, "face 1: vertex index 7 out of range (there are 4)") != NULL, "message: %s", text);
+	fclose(log);
+	diag_free(&d);
+}
+
+static void check_import(void)
+{
+	diag d;
+	diag_init(&d, stderr);
+	mesh obj, glb;
+	CHECK(mesh_import(asset("lee_perry_smith_head/LeePerrySmith.obj"), &obj, &d), "head OBJ");
+	CHECK(obj.num_triangles == 17684 && obj.uvs && obj.normals, "head OBJ: %u triangles", obj.num_triangles);
+	CHECK(mesh_import(asset("lee_perry_smith_head/LeePerrySmith.glb"), &glb, &d), "head GLB");
+	CHECK(glb.num_triangles == 17684 && glb.uvs && glb.normals, "head GLB: %u triangles", glb.num_triangles);
+	/* The normal map needs tangents; the files have none, so they are generated. */
+	if (!glb.tangents)
+		CHECK(mesh_generate_tangents(&glb), "tangents of the head");
+	long bad = 0;
+	for (uint32_t v = 0; glb.tangents && v < glb.num_vertices; v++)
+		bad += !(fabsf(v3_length(glb.tangents[v].t) - 1.0f) < 1e-3f && fabsf(v3_dot(glb.tangents[v].t, glb.normals[v])) < 1e-3f);
+	CHECK(bad == 0, "%ld tangents not unit or not orthogonal to the normal", bad);
+	vec3 lo1, hi1, lo2, hi2;
+	mesh_bounds(&obj, &lo1, &hi1), mesh_bounds(&glb, &lo2, &hi2);
+	CHECK(v3_length(v3_sub(hi1, lo1)) > 0 && v3_length(v3_sub(hi2, lo2)) > 0, "bounds");
+	mesh_free(&obj), mesh_free(&glb);
+
+	/* PLY, written to the build directory. */
+	FILE *f = fopen("test_mesh_quad.ply", "w");
+	fputs("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+	      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",
+	      f);
+	fclose(f);
+	mesh ply;
+	CHECK(mesh_import("test_mesh_quad.ply", &ply, &d) && ply.num_triangles == 2, "PLY quad: %u triangles", ply.num_triangles);
+	mesh_free(&ply);
+	remove("test_mesh_quad.ply");
+	diag_free(&d);
+
+	/* Errors name the file and give Assimp's reason. */
+	FILE *log = tmpfile();
+	diag_init(&d, log);
+	mesh m;
+	CHECK(!mesh_import("no/such/file.obj", &m, &d) && d.errors == 1, "a missing file is an error");
+	/* (A malformed PLY header makes Assimp 5 loop forever, so the broken file is an OBJ.) */
+	f = fopen("test_mesh_bad.obj", "w");
+	fputs("v 0 0 0\nf 1 2 3\n", f);
+	fclose(f);
+	CHECK(!mesh_import("test_mesh_bad.obj", &m, &d), "a broken OBJ is an error");
+	remove("test_mesh_bad.obj");
+	rewind(log);
+	char text[2048] = {0};
+	fread(text, 1, sizeof text - 1, log);
+	CHECK(strstr(text, "no/such/file.obj: error: cannot import mesh: ") && strstr(text, "test_mesh_bad.obj: error: cannot import mesh: OBJ: vertex index out of range"),
+	      "messages: %s", text);
+	fclose(log);
+	diag_free(&d);
+}
+
+int main(void)
+{
+	check_prims();
+	check_arrays();
+	check_import();
+	return check_done("test_mesh");
+}
