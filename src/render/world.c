@@ -248,33 +248,6 @@ static bool build_material(world *w, size_t k, const scene_material *sm, diag *d
 
 /* ---- the integrator's callbacks ---------------------------------------------------------- */
 
-/* The ray in an instance's object space; t stays the same parameter. */
-static bvh_ray inst_ray(const world_inst *in, const render_ray *ray, float tmin, float tmax)
-{
-	if (in->identity)
-		return (bvh_ray){ray->o, ray->d, tmin, tmax};
-	return (bvh_ray){d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o))),
-			 d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d))), tmin, tmax};
-}
-
-/* Slab test of a ray against a world box, within [tmin, tmax]. */
-static bool box_hit(vec3 lo, vec3 hi, const render_ray *r, float tmin, float tmax)
-{
-	for (int a = 0; a < 3; a++) {
-		float o = v3_get(r->o, a), inv = 1.0f / v3_get(r->d, a);
-		float t0 = (v3_get(lo, a) - o) * inv, t1 = (v3_get(hi, a) - o) * inv;
-		if (t0 > t1) {
-			float s = t0;
-			t0 = t1, t1 = s;
-		}
-		tmin = t0 > tmin ? t0 : tmin;
-		tmax = t1 * 1.00000024f < tmax ? t1 * 1.00000024f : tmax; /* two ulps: robust slabs */
-		if (tmin > tmax)
-			return false;
-	}
-	return true;
-}
-
 static vec3 xf_normal(const world_inst *in, vec3 n)
 {
 	return in->identity ? n : d3v(xform_normal(&in->xf, v3_to_d3(n)));
@@ -288,22 +261,11 @@ static vec3 xf_vector(const world_inst *in, vec3 v)
 static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
 {
 	const world *w = user;
-	bvh_hit best = {0};
-	int best_inst = -1;
-	for (size_t i = 0; i < w->n_insts; i++) {
-		const world_inst *in = &w->insts[i];
-		if (!in->g->b || !box_hit(in->lo, in->hi, ray, tmin, tmax))
-			continue;
-		bvh_ray r = inst_ray(in, ray, tmin, tmax);
-		bvh_hit h;
-		if (bvh_intersect(in->g->b, &r, &h) && h.t <= tmax) {
-			best = h;
-			best_inst = (int)i;
-			tmax = h.t;
-		}
-	}
-	if (best_inst < 0)
+	bvh_ray r = {ray->o, ray->d, tmin, tmax};
+	bvh_hit best;
+	if (!w->top || !tlas_intersect(w->top, &r, &best))
 		return false;
+	int best_inst = (int)w->top_inst[best.inst];
 	const world_inst *in = &w->insts[best_inst];
 	const mesh *m = &in->g->m;
 	const uint32_t *ix = m->indices + 3 * (size_t)best.prim;
@@ -338,15 +300,8 @@ static bool world_intersect(void *user, const render_ray *ray, float tmin, float
 static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
 {
 	const world *w = user;
-	for (size_t i = 0; i < w->n_insts; i++) {
-		const world_inst *in = &w->insts[i];
-		if (in->no_shadow || !in->g->b || !box_hit(in->lo, in->hi, ray, tmin, tmax))
-			continue;
-		bvh_ray r = inst_ray(in, ray, tmin, tmax);
-		if (bvh_occluded(in->g->b, &r))
-			return true;
-	}
-	return false;
+	bvh_ray r = {ray->o, ray->d, tmin, tmax};
+	return w->shadow && tlas_occluded(w->shadow, &r);
 }
 
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
@@ -443,6 +398,35 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 	w->lo = lo, w->hi = hi;
 	w->radius = 0.5f * v3_length(v3_sub(hi, lo));
 	return true;
+}
+
+/* The top-level BVHs: one over every instance with triangles, one over those casting shadows. */
+static bool build_top(world *w, diag *d)
+{
+	tlas_instance *all = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *all);
+	tlas_instance *casters = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *casters);
+	w->top_inst = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *w->top_inst);
+	bool ok = all && casters && w->top_inst;
+	uint32_t na = 0, nc = 0;
+	for (size_t i = 0; ok && i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		if (!in->g->b)
+			continue;
+		w->top_inst[na] = (uint32_t)i;
+		all[na++] = (tlas_instance){in->g->b, in->xf};
+		if (!in->no_shadow)
+			casters[nc++] = (tlas_instance){in->g->b, in->xf};
+	}
+	if (ok && na)
+		ok = (w->top = tlas_build(all, na)) != NULL;
+	if (ok && nc)
+		ok = (w->shadow = tlas_build(casters, nc)) != NULL;
+	mem_free(all), mem_free(casters);
+	if (!ok)
+		diag_error(d, diag_noloc(), "out of memory while building the top-level BVH");
+	else
+		w->stats.geometry_bytes += (w->top ? tlas_bytes(w->top) : 0) + (w->shadow ? tlas_bytes(w->shadow) : 0);
+	return ok;
 }
 
 /* Adds an emissive instance as a mesh light over its world-space triangles. */
@@ -615,6 +599,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	}
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
+	ok = ok && (o.geometry_only || build_top(w, d));
 	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_free(w);
@@ -638,6 +623,8 @@ void world_free(world *w)
 		mem_free(w->image_paths[i]);
 	}
 	light_set_free(&w->lights);
+	tlas_free(w->top), tlas_free(w->shadow);
+	mem_free(w->top_inst);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
 	memset(w, 0, sizeof *w);

@@ -8,6 +8,7 @@
 #define CIRCE_RENDER_WORLD_H
 
 #include "accel/bvh.h"
+#include "accel/tlas.h"
 #include "base/diag.h"
 #include "geom/mesh.h"
 #include "io/image.h"
@@ -67,6 +68,9 @@ typedef struct world {
 	size_t n_geoms;
 	world_inst *insts;
 	size_t n_insts;
+	tlas *top;              /* every instance with triangles */
+	uint32_t *top_inst;     /* top's instance index -> insts index */
+	tlas *shadow;           /* the instances that cast shadows (not no_shadow) */
 	bsdf_params *bsdfs;     /* indexed like materials; the last is the default grey */
 	world_material *materials;
 	size_t n_materials;
