@@ -26,6 +26,22 @@ bool mesh_alloc(mesh *m, size_t nv, size_t nt, bool normals, bool uvs, bool tang
 	return true;
 }
 
+bool mesh_copy(mesh *dst, const mesh *src)
+{
+	if (!mesh_alloc(dst, src->num_vertices, src->num_triangles, src->normals, src->uvs, src->tangents))
+		return false;
+	size_t nv = src->num_vertices;
+	memcpy(dst->positions, src->positions, nv * sizeof(vec3));
+	memcpy(dst->indices, src->indices, (size_t)src->num_triangles * 3 * sizeof(uint32_t));
+	if (src->normals)
+		memcpy(dst->normals, src->normals, nv * sizeof(vec3));
+	if (src->uvs)
+		memcpy(dst->uvs, src->uvs, nv * sizeof(vec2));
+	if (src->tangents)
+		memcpy(dst->tangents, src->tangents, nv * sizeof(mesh_tangent));
+	return true;
+}
+
 void mesh_free(mesh *m)
 {
 	mem_free(m->positions);

@@ -34,6 +34,8 @@ typedef struct mesh {
  * memory runs out or a count overflows. */
 bool mesh_alloc(mesh *m, size_t nv, size_t nt, bool normals, bool uvs, bool tangents);
 void mesh_free(mesh *m);
+/* A deep copy of src into dst (its own arrays); false when memory runs out (dst left empty). */
+bool mesh_copy(mesh *dst, const mesh *src);
 /* Bytes held by the mesh's arrays. */
 size_t mesh_bytes(const mesh *m);
 

@@ -331,6 +331,29 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 
 /* ---- building ---------------------------------------------------------------------------- */
 
+static bool is_sss(const scene_material *m)
+{
+	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
+}
+
+/* An SSS object under a non-uniform transform gets its own copy of the triangles in world space
+ * (DESIGN.md): circles stay circles only under similarities, and circle tracing runs in an
+ * instance's own space. Its geometry record is the one at index `slot` (past the scene's). */
+static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, diag_loc loc)
+{
+	world_geom *copy = &w->geoms[slot];
+	if (!mesh_copy(&copy->m, &in->g->m)) {
+		diag_error(d, loc, "out of memory while flattening an SSS object into world space");
+		return false;
+	}
+	mesh_transform(&copy->m, &in->xf);
+	in->g = copy;
+	in->xf = xform_identity();
+	in->identity = true;
+	w->stats.flattened++;
+	return true;
+}
+
 static bool build_instances(world *w, const scene *sc, diag *d)
 {
 	size_t n = scene_n_objects(sc);
@@ -349,6 +372,9 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */
 		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;
+		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&o->transform, NULL) &&
+		    !flatten_instance(w, in, sc->n_geoms + i, d, o->loc))
+			return false;
 	}
 	return true;
 }
@@ -556,7 +582,8 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	world_options o = *opt;
 	if (!o.max_memory)
 		o.max_memory = SUBD_DEFAULT_MAX_BYTES;
-	w->n_geoms = sc->n_geoms;
+	/* Room for the scene's geometry and a private copy per object (used only when flattened). */
+	w->n_geoms = sc->n_geoms + scene_n_objects(sc);
 	w->geoms = mem_calloc(w->n_geoms ? w->n_geoms : 1, sizeof *w->geoms);
 	w->n_materials = sc->n_materials + 1;
 	w->bsdfs = mem_calloc(w->n_materials, sizeof *w->bsdfs);

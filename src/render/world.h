@@ -61,10 +61,11 @@ typedef struct world_stats {
 	size_t instanced_triangles; /* counting each instance */
 	size_t geometry_bytes;  /* meshes and BVHs */
 	size_t subdiv_surfaces;
+	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
 } world_stats;
 
 typedef struct world {
-	world_geom *geoms;      /* indexed by scene_geom.id; unused records stay empty */
+	world_geom *geoms;      /* indexed by scene_geom.id; then one private copy per flattened instance */
 	size_t n_geoms;
 	world_inst *insts;
 	size_t n_insts;

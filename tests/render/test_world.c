@@ -1,0 +1,115 @@
+/* test_world: the scene IR made renderable — rays hit tessellated spheres where the analytic
+ * sphere is (within the tessellation error), instances share one mesh, an SSS object under a
+ * non-uniform scale is flattened into world space, no_shadow objects cast no shadow, textures
+ * and materials reach the hit, and bad assets are errors at their place in the scene. */
+#include "check.h"
+#include "lang/lang.h"
+#include "render/world.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static char dir[] = "/tmp/circe-test-world-XXXXXX";
+
+/* Parses text as a scene file and builds its world; false when either fails. */
+static bool build(const char *text, world *w, char **errors)
+{
+	char path[256];
+	snprintf(path, sizeof path, "%s/s.pov", dir);
+	FILE *f = fopen(path, "w");
+	fputs(text, f);
+	fclose(f);
+	size_t len = 0;
+	FILE *mem = open_memstream(errors, &len);
+	diag d;
+	diag_init(&d, mem);
+	scene *sc = NULL;
+	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK;
+	world_options o = {.width = 64, .height = 48};
+	ok = ok && world_build(w, sc, &o, &d);
+	scene_free(sc);
+	diag_free(&d);
+	fclose(mem);
+	unlink(path);
+	return ok;
+}
+
+static bool trace(const world *w, vec3 o, vec3 dir_, render_hit *h)
+{
+	render_ray r = {o, v3_normalize(dir_)};
+	return w->rs.intersect(w->rs.user, &r, 0.0f, INFINITY, h);
+}
+
+int main(void)
+{
+	if (!mkdtemp(dir))
+		return 99;
+	world w;
+	char *err = NULL;
+	/* Two instances of one declared sphere (radius 1), one scaled non-uniformly in wax (flattened),
+	 * one diffuse with no_shadow, and a plane. */
+	bool ok = build("camera { location <0, 0, -10> look_at <0, 0, 0> }\n"
+			"light_source { <0, 10, 0> color rgb 1 }\n"
+			"#declare S = sphere { <0, 0, 0>, 1 }\n"
+			"object { S translate <-3, 0, 0> material { diffuse { color rgb <0.2, 0.4, 0.6> } } no_shadow }\n"
+			"object { S scale <2, 1, 1> translate <3, 0, 0> material { wax {} } }\n"
+			"plane { y, -1 material { diffuse { color rgb 0.5 } } }\n",
+			&w, &err);
+	CHECK(ok, "world built: %s", err);
+	free(err);
+	if (!ok)
+		return check_done("test_world");
+	CHECK(w.stats.flattened == 1, "%zu instances flattened, expected 1", w.stats.flattened);
+	CHECK(w.insts[1].identity && !w.insts[0].identity, "the flattened instance has no transform left");
+	/* Sphere 0 at x = -3: a ray along +z through its centre enters at z = -1. */
+	render_hit h;
+	CHECK(trace(&w, v3(-3, 0, -5), v3(0, 0, 1), &h), "hit sphere 0");
+	CHECK_NEAR(h.t, 4.0, 1e-3);
+	CHECK_NEAR(h.ng.z, -1.0, 1e-3);
+	CHECK(h.material >= 0 && w.bsdfs[h.material].kind == BSDF_DIFFUSE &&
+		      fabsf(w.bsdfs[h.material].diffuse.y - 0.4f) < 1e-6f,
+	      "sphere 0's material reaches the hit");
+	/* The flattened ellipsoid at x = 3 has half-axis 2 along x: a ray along -x from x = 10 enters at x = 5. */
+	CHECK(trace(&w, v3(10, 0, 0), v3(-1, 0, 0), &h), "hit the ellipsoid");
+	CHECK_NEAR(h.t, 5.0, 2e-3);
+	CHECK_NEAR(h.p.x, 5.0, 2e-3);
+	CHECK(w.bsdfs[h.material].kind == BSDF_COAT, "wax wears the coat");
+	/* A ray grazing the ellipsoid at y = 0.9: x^2/4 + y^2 = 1 gives x = 3 +- 2 sqrt(0.19). */
+	CHECK(trace(&w, v3(10, 0.9f, 0), v3(-1, 0, 0), &h), "hit the ellipsoid off centre");
+	CHECK_NEAR(h.p.x, 3.0 + 2.0 * sqrt(0.19), 5e-3);
+	/* The plane under everything, at y = -1. */
+	CHECK(trace(&w, v3(0, 5, 0), v3(0, -1, 0), &h), "hit the plane");
+	CHECK_NEAR(h.p.y, -1.0, 1e-5);
+	/* Shadows: the no_shadow sphere does not occlude, the ellipsoid does. */
+	render_ray down0 = {v3(-3, 5, 0), v3(0, -1, 0)}, down1 = {v3(3, 5, 0), v3(0, -1, 0)};
+	CHECK(!w.rs.occluded(w.rs.user, &down0, 0.0f, 5.9f), "no_shadow sphere casts no shadow");
+	CHECK(w.rs.occluded(w.rs.user, &down1, 0.0f, 5.9f), "the ellipsoid casts a shadow");
+	/* Misses, and a ray with a NaN never hits. */
+	CHECK(!trace(&w, v3(0, 5, 0), v3(0, 1, 0), &h), "a ray to the sky misses");
+	CHECK(!trace(&w, v3(NAN, 0, 0), v3(1, 0, 0), &h), "a NaN ray misses");
+	/* Instances share: two objects, one sphere mesh (plus the flattened copy). */
+	CHECK(w.insts[0].g != w.insts[1].g, "the flattened object has its own mesh");
+	world_free(&w);
+
+	/* Two plain instances of one geometry share it. */
+	ok = build("#declare S = sphere { <0, 0, 0>, 1 }\nobject { S }\nobject { S translate x * 3 }\n", &w, &err);
+	CHECK(ok, "instances: %s", err);
+	free(err);
+	if (ok) {
+		CHECK(w.insts[0].g == w.insts[1].g, "object { Name } shares the mesh");
+		CHECK(w.stats.instanced_triangles == 2 * w.stats.triangles, "triangles %zu, instanced %zu",
+		      w.stats.triangles, w.stats.instanced_triangles);
+		world_free(&w);
+	}
+
+	/* Errors name the scene's place: a missing mesh file, a missing texture. */
+	ok = build("mesh { file \"nothere.obj\" }\n", &w, &err);
+	CHECK(!ok && strstr(err, "nothere.obj") && strstr(err, "s.pov:1:1: note:"), "missing mesh:\n%s", err);
+	free(err);
+	ok = build("sphere { 0, 1 material { diffuse { image \"none.png\" } } }\n", &w, &err);
+	CHECK(!ok && strstr(err, "none.png: error: cannot open") && strstr(err, "s.pov:1:"), "missing image:\n%s", err);
+	free(err);
+	rmdir(dir);
+	return check_done("test_world");
+}
