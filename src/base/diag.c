@@ -47,6 +47,24 @@ const diag_source *diag_add_source(diag *d, const char *name, const char *text, 
 	return s;
 }
 
+const diag_source *diag_adopt_source(diag *d, const char *name, char *text, size_t len)
+{
+	diag_source *s = mem_calloc(1, sizeof *s);
+	if (s)
+		s->name = mem_strdup(name);
+	if (!s || !s->name) {
+		mem_free(s);
+		mem_free(text);
+		return NULL;
+	}
+	text[len] = '\0';
+	s->text = text;
+	s->len = len;
+	s->next = d->sources;
+	d->sources = s;
+	return s;
+}
+
 static const char *kind_name(diag_kind k)
 {
 	switch (k) {

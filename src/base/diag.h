@@ -38,6 +38,10 @@ void diag_free(diag *d);
 /* Registers a copy of a source text so later reports can quote it; NULL when memory runs out. */
 const diag_source *diag_add_source(diag *d, const char *name, const char *text, size_t len);
 
+/* Like diag_add_source, but takes ownership of text (from mem_alloc, len + 1 bytes with
+ * text[len] == '\0'), so a large file is not held twice. On failure text is freed, NULL returned. */
+const diag_source *diag_adopt_source(diag *d, const char *name, char *text, size_t len);
+
 /* Reports at loc (loc.src may be NULL: then `circe: error: message`). */
 void diag_report(diag *d, diag_kind kind, diag_loc loc, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)));

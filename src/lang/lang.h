@@ -30,6 +30,7 @@ typedef struct lang_options {
 	double clock; /* the value of `clock` */
 	lang_read_fn read; /* NULL: read from the file system */
 	void *read_user;
+	long max_loop_iterations; /* per #while; 0: LANG_MAX_LOOP_ITERATIONS (a fuzzer lowers it) */
 } lang_options;
 
 typedef enum lang_status {

@@ -123,6 +123,12 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	if (!f)
 		return errno ? errno : ENOENT;
 	size_t cap = 1 << 16, n = 0;
+	if (fseek(f, 0, SEEK_END) == 0) { /* size the buffer once for a regular file */
+		long size = ftell(f);
+		if (size > 0 && (unsigned long)size < SIZE_MAX - 2)
+			cap = (size_t)size + 2;
+		rewind(f);
+	}
 	char *buf = mem_alloc(cap, 1);
 	if (!buf) {
 		fclose(f);
@@ -155,7 +161,8 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	return 0;
 }
 
-/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value. */
+/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
+ * The text is handed to diag, not copied: a 100 MB mesh is held once. */
 static int open_source(parser *p, const char *path, const diag_source **out)
 {
 	char *text = NULL;
@@ -163,11 +170,17 @@ static int open_source(parser *p, const char *path, const diag_source **out)
 	int err = p->opt.read(p->opt.read_user, path, &text, &len);
 	if (err)
 		return err;
-	const char *t = text;
-	if (len >= 3 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
-		t += 3, len -= 3;
-	*out = diag_add_source(p->d, path, t, len);
-	mem_free(text);
+	size_t skip = 0;
+	if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
+		skip = 3;
+	char *owned = mem_realloc(text, len + 1, 1); /* room for the NUL */
+	if (!owned) {
+		mem_free(text);
+		return ENOMEM;
+	}
+	if (skip)
+		memmove(owned, owned + skip, len - skip);
+	*out = diag_adopt_source(p->d, path, owned, len - skip);
 	return *out ? 0 : ENOMEM;
 }
 
@@ -471,7 +484,7 @@ static bool do_end(parser *p, diag_loc loc)
 		p->n_conds--;
 		return true;
 	}
-	long limit = LANG_MAX_LOOP_ITERATIONS;
+	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
 	if (++c->iterations >= limit)
 		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
 	if (++p->total_iterations >= DEFAULT_TOTAL_ITERATIONS)

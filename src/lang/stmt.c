@@ -798,8 +798,11 @@ static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, v
 	snprintf(ctx_s, sizeof ctx_s, "as the item count of '%s'", what);
 	diag_loc nloc = lang_peek(p)->loc;
 	TRY(lang_int(p, ctx_s, 0, UINT32_MAX / 4, &n));
-	/* Reserve what the count announces, within reason: a hostile count must not allocate. */
-	if (reserve && !vecbuf_reserve(reserve, (size_t)(n < (1 << 20) ? n : (1 << 20)) * per_item))
+	/* Reserve what the count announces, within reason: every item takes at least two bytes of
+	 * text, so a hostile count cannot make the reservation exceed the file's size. */
+	const lang_lexer *lx = &p->files[p->n_files - 1].lx;
+	size_t most = (size_t)(lx->end - lx->p) / 2, want = (size_t)n < most ? (size_t)n : most;
+	if (reserve && !vecbuf_reserve(reserve, want * per_item))
 		return lang_error(p, nloc, "out of memory");
 	uint32_t i = 0;
 	while (lang_peek(p)->kind == LTK_COMMA) {
