@@ -800,8 +800,12 @@ static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, v
 	TRY(lang_int(p, ctx_s, 0, UINT32_MAX / 4, &n));
 	/* Reserve what the count announces, within reason: every item takes at least two bytes of
 	 * text, so a hostile count cannot make the reservation exceed the file's size. */
-	const lang_lexer *lx = &p->files[p->n_files - 1].lx;
-	size_t most = (size_t)(lx->end - lx->p) / 2, want = (size_t)n < most ? (size_t)n : most;
+	size_t most = 0; /* no file left: the scene ended right after the count */
+	if (p->n_files > 0) {
+		const lang_lexer *lx = &p->files[p->n_files - 1].lx;
+		most = (size_t)(lx->end - lx->p) / 2;
+	}
+	size_t want = (size_t)n < most ? (size_t)n : most;
 	if (reserve && !vecbuf_reserve(reserve, want * per_item))
 		return lang_error(p, nloc, "out of memory");
 	uint32_t i = 0;
