@@ -827,17 +827,24 @@ typedef struct list_ctx {
 	meshbuf *b;
 	vecbuf *dst;
 	const char *what;
+	char item_ctx[48]; /* "in 'face_indices'": made once per list, not per item */
 	uint32_t limit; /* indices must be below this (0: not checked here) */
 	const char *target; /* what the indices refer to */
 } list_ctx;
+
+static const char *item_ctx(list_ctx *x)
+{
+	if (!x->item_ctx[0])
+		snprintf(x->item_ctx, sizeof x->item_ctx, "in '%s'", x->what);
+	return x->item_ctx;
+}
 
 static bool item_v3(parser *p, void *c, uint32_t i)
 {
 	list_ctx *x = c;
 	dvec3 v;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "as item %u of '%s'", i, x->what);
-	return lang_vec3(p, ctx, &v) && push_v3(p, x->dst, v);
+	(void)i;
+	return lang_vec3(p, item_ctx(x), &v) && push_v3(p, x->dst, v);
 }
 
 static bool item_uv(parser *p, void *c, uint32_t i)
@@ -860,9 +867,7 @@ static bool item_tri(parser *p, void *c, uint32_t i)
 	uint32_t idx[LANG_MAX_VECTOR];
 	int n;
 	diag_loc loc;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
-	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	TRY(lang_index_tuple(p, item_ctx(x), idx, &n, &loc));
 	if (n != 3)
 		return lang_error(p, loc, "face %u of '%s' has %d indices; mesh2 faces are triangles <a, b, c>", i, x->what, n);
 	for (int k = 0; k < 3; k++) {
@@ -881,9 +886,8 @@ static bool item_poly(parser *p, void *c, uint32_t i)
 	uint32_t idx[LANG_MAX_VECTOR];
 	int n;
 	diag_loc loc;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
-	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	(void)i;
+	TRY(lang_index_tuple(p, item_ctx(x), idx, &n, &loc));
 	uint32_t un = (uint32_t)n;
 	TRY(push(p, x->dst == &x->b->faces ? &x->b->sizes : &x->b->nidx, &un));
 	if (x->dst == &x->b->faces)
@@ -911,7 +915,7 @@ static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 		return lang_error_found(p, "expected 'vertex_vectors' first in 'mesh2'");
 	for (;;) {
 		lang_token t = *lang_peek(p);
-		list_ctx c = {b, NULL, NULL, 0, NULL};
+		list_ctx c = {b, NULL, NULL, "", 0, NULL};
 		switch (t.kind) {
 		case LTK_KW_VERTEX_VECTORS:
 			TRY(once(p, &seen[0], &t));
@@ -1052,7 +1056,7 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 	uint32_t cnt;
 	for (;;) {
 		lang_token t = *lang_peek(p);
-		list_ctx c = {b, NULL, NULL, 0, NULL};
+		list_ctx c = {b, NULL, NULL, "", 0, NULL};
 		long n;
 		double x;
 		switch (t.kind) {
