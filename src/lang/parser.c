@@ -10,6 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 enum { DEFAULT_TOTAL_ITERATIONS = 10000000 }; /* all #while loops of one parse together */
 
@@ -163,8 +167,57 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 
 /* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
  * The text is handed to diag, not copied: a 100 MB mesh is held once. */
+/* Files at least this large are mapped rather than read, and the pages the lexer has left
+ * behind are dropped as it goes: a 100 MB mesh then never holds 100 MB of text at once. */
+enum { MAP_MIN_BYTES = 1 << 20, RELEASE_STEP = 8 << 20, RELEASE_MARGIN = 1 << 20 };
+
+/* Maps a large regular file; 0, an errno value, or -1 when the file should be read instead. */
+static int map_source(parser *p, const char *path, const diag_source **out)
+{
+	int fd = open(path, O_RDONLY);
+	if (fd < 0)
+		return errno ? errno : ENOENT;
+	struct stat st;
+	if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < MAP_MIN_BYTES) {
+		close(fd);
+		return -1;
+	}
+	size_t len = (size_t)st.st_size;
+	void *map = mmap(NULL, len, PROT_READ, MAP_PRIVATE, fd, 0);
+	close(fd);
+	if (map == MAP_FAILED)
+		return -1;
+	const unsigned char *b = map;
+	size_t skip = b[0] == 0xEF && b[1] == 0xBB && b[2] == 0xBF ? 3 : 0;
+	*out = diag_adopt_mapped(p->d, path, map, len, skip);
+	return *out ? 0 : ENOMEM;
+}
+
+/* Hands the pages of a mapped source that lie well behind the lexer back to the kernel. They are
+ * clean file pages: quoting a line there, or a #while jumping back, faults them in again. */
+static void release_behind(include_frame *f)
+{
+	const diag_source *src = f->lx.src;
+	if (!src->map || f->lx.p - f->released < RELEASE_STEP)
+		return;
+	uintptr_t page = (uintptr_t)sysconf(_SC_PAGESIZE);
+	uintptr_t from = ((uintptr_t)f->released + page - 1) & ~(page - 1);
+	uintptr_t to = ((uintptr_t)f->lx.p - RELEASE_MARGIN) & ~(page - 1);
+	if (to > from) {
+#ifdef MADV_DONTNEED
+		madvise((void *)from, to - from, MADV_DONTNEED);
+#endif
+		f->released = (const char *)to;
+	}
+}
+
 static int open_source(parser *p, const char *path, const diag_source **out)
 {
+	if (p->opt.read == lang_read_file) {
+		int err = map_source(p, path, out);
+		if (err >= 0)
+			return err;
+	}
 	char *text = NULL;
 	size_t len = 0;
 	int err = p->opt.read(p->opt.read_user, path, &text, &len);
@@ -191,6 +244,7 @@ static bool push_file(parser *p, const diag_source *src, const char *path, diag_
 	f->path = path;
 	f->included_at = at;
 	f->cond_base = p->n_conds;
+	f->released = src->text;
 	return true;
 }
 
@@ -540,12 +594,14 @@ static bool fetch(parser *p, lang_token *t)
 			*t = p->eof;
 			return !p->failed;
 		}
-		if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, t)) {
+		include_frame *f = &p->files[p->n_files - 1];
+		if (!lang_lex(&f->lx, p->d, t)) {
 			p->failed = true;
 			p->eof.loc = t->loc;
 			*t = p->eof;
 			return false;
 		}
+		release_behind(f);
 		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF &&
 		    !(t->kind == LTK_UNSUPPORTED && t->text[0] == '#'))
 			return true;

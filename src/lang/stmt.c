@@ -676,6 +676,11 @@ static void meshbuf_free(meshbuf *b)
 static void *take(vecbuf *v, uint32_t *n)
 {
 	void *d = v->len ? v->data : NULL;
+	if (d && v->cap > v->len) { /* give back the growth slack */
+		void *shrunk = mem_realloc(d, v->len, v->elem);
+		if (shrunk)
+			d = shrunk;
+	}
 	if (n)
 		*n = (uint32_t)v->len;
 	if (!v->len)

@@ -35,4 +35,17 @@ expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
 expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
 expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
 grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+# A large file is mapped and its pages dropped behind the lexer: a validation error found after
+# the parse must still quote its line from the start of the file.
+{
+	printf 'subdivision_surface {\n  vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n'
+	printf '  faces { 2, <0, 1, 2>, <0, 2> }\n}\n'
+	awk 'BEGIN { for (i = 0; i < 160000; i++) print "// 0123456789012345678901234567890123456789012345678901234567" }'
+	printf 'sphere { 0, 1 }\n'
+} >"$tmp/big.pov"
+expect 3 "large mapped file" -- "$CIRCE" check "$tmp/big.pov"
+head -2 "$tmp/err" >"$tmp/got"
+printf '%s\n' "$tmp/big.pov:3:25: error: face 1 has 2 vertices; a face needs at least 3" \
+	"  faces { 2, <0, 1, 2>, <0, 2> }" | cmp -s - "$tmp/got" ||
+	{ echo "FAIL large mapped file: quoted line"; cat "$tmp/err"; fail=1; }
 exit $fail
