@@ -4,11 +4,17 @@
 #include "config.h"
 
 #include "base/diag.h"
+#include "io/compare.h"
+#include "io/exr.h"
+#include "io/merge.h"
 #include "lang/lang.h"
 #include "scene/scene.h"
 
+#include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,7 +37,7 @@ static int usage_error(const char *fmt, const char *arg)
 {
 	fprintf(stderr, "circe: error: ");
 	fprintf(stderr, fmt, arg);
-	fprintf(stderr, "\n%s", usage_text);
+	fprintf(stderr, "\nTry 'circe --help' for the options.\n");
 	return EXIT_USAGE;
 }
 
@@ -108,20 +114,356 @@ static int cmd_check(int argc, char **argv)
 	return rc;
 }
 
+/* Parses a finite float option value; false when arg is not entirely a number. */
+static bool parse_double(const char *arg, double *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(arg, &end);
+	if (end == arg || *end != '\0' || errno == ERANGE || !isfinite(v))
+		return false;
+	*out = v;
+	return true;
+}
+
+/* Everything `circe render` takes from the command line. */
+typedef struct render_cli {
+	const char *scene, *out, *png;
+	int width, height;
+	long spp;         /* 0: not given */
+	double time_s;    /* 0: not given */
+	int threads;      /* 0: all cores */
+	const char *sss;  /* NULL: each material's own method */
+	bool talk_weight; /* --circle-weight talk */
+	uint64_t seed;
+	bool has_region;
+	int region[4]; /* x0, y0, x1, y1 */
+	unsigned aovs; /* AOV_* bits */
+	int tile_i, tile_n;
+	double clock;
+	long frame; /* -1: none */
+	double checkpoint_s;
+	size_t max_memory;
+	const char *include_dirs[64];
+	int ninclude;
+	bool quiet;
+} render_cli;
+
+enum { AOV_ALBEDO = 1, AOV_NORMAL = 2, AOV_DEPTH = 4, AOV_VARIANCE = 8 };
+
+static bool parse_long(const char *arg, long lo, long hi, long *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(arg, &end, 10);
+	if (end == arg || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+		return false;
+	*out = v;
+	return true;
+}
+
+/* SIZE with an optional K, M or G suffix (powers of 1024). */
+static bool parse_size(const char *arg, size_t *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(arg, &end);
+	double unit = 1;
+	if (*end == 'K' || *end == 'k')
+		unit = 1024.0, end++;
+	else if (*end == 'M' || *end == 'm')
+		unit = 1024.0 * 1024.0, end++;
+	else if (*end == 'G' || *end == 'g')
+		unit = 1024.0 * 1024.0 * 1024.0, end++;
+	if (end == arg || *end != '\0' || errno == ERANGE || !(v > 0) || v * unit > 1e18)
+		return false;
+	*out = (size_t)(v * unit);
+	return true;
+}
+
+static bool parse_aovs(const char *arg, unsigned *out)
+{
+	static const char *names[] = {"albedo", "normal", "depth", "variance"};
+	*out = 0;
+	const char *p = arg;
+	while (*p) {
+		size_t n = strcspn(p, ",");
+		int k = 0;
+		while (k < 4 && !(strlen(names[k]) == n && !strncmp(p, names[k], n)))
+			k++;
+		if (k == 4)
+			return false;
+		*out |= 1u << k;
+		p += n;
+		if (*p == ',')
+			p++;
+	}
+	return *out != 0;
+}
+
+/* Parses `render`'s options; returns EXIT_OK or EXIT_USAGE (after printing why). */
+static int parse_render_cli(int argc, char **argv, render_cli *o)
+{
+	static const struct option opts[] = {
+		{"png", required_argument, NULL, 'P'},
+		{"spp", required_argument, NULL, 's'},
+		{"time", required_argument, NULL, 't'},
+		{"threads", required_argument, NULL, 'j'},
+		{"sss", required_argument, NULL, 'S'},
+		{"circle-weight", required_argument, NULL, 'w'},
+		{"seed", required_argument, NULL, 'e'},
+		{"region", required_argument, NULL, 'r'},
+		{"aov", required_argument, NULL, 'a'},
+		{"tile", required_argument, NULL, 'T'},
+		{"clock", required_argument, NULL, 'c'},
+		{"frame", required_argument, NULL, 'f'},
+		{"checkpoint", required_argument, NULL, 'k'},
+		{"max-memory", required_argument, NULL, 'm'},
+		{"quiet", no_argument, NULL, 'q'},
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	*o = (render_cli){.width = 640, .height = 480, .frame = -1, .checkpoint_s = 60.0,
+			  .max_memory = (size_t)1 << 30};
+	long v;
+	double f;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "o:W:H:I:h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'o':
+			o->out = optarg;
+			break;
+		case 'P':
+			o->png = optarg;
+			break;
+		case 'W':
+		case 'H':
+			if (!parse_long(optarg, 1, 65536, &v))
+				return usage_error(c == 'W' ? "-W needs a width from 1 to 65536, not '%s'"
+							    : "-H needs a height from 1 to 65536, not '%s'", optarg);
+			*(c == 'W' ? &o->width : &o->height) = (int)v;
+			break;
+		case 's':
+			if (!parse_long(optarg, 1, 1L << 30, &o->spp))
+				return usage_error("--spp needs a sample count from 1 to 2^30, not '%s'", optarg);
+			break;
+		case 't':
+			if (!parse_double(optarg, &o->time_s) || o->time_s <= 0)
+				return usage_error("--time needs a number of seconds > 0, not '%s'", optarg);
+			break;
+		case 'j':
+			if (!parse_long(optarg, 1, 1024, &v))
+				return usage_error("--threads needs a count from 1 to 1024, not '%s'", optarg);
+			o->threads = (int)v;
+			break;
+		case 'S':
+			if (strcmp(optarg, "circle") && strcmp(optarg, "fullcircle") && strcmp(optarg, "disk") &&
+			    strcmp(optarg, "volume"))
+				return usage_error("--sss must be circle, fullcircle, disk or volume, not '%s'", optarg);
+			o->sss = optarg;
+			break;
+		case 'w':
+			if (strcmp(optarg, "exact") && strcmp(optarg, "talk"))
+				return usage_error("--circle-weight must be exact or talk, not '%s'", optarg);
+			o->talk_weight = !strcmp(optarg, "talk");
+			break;
+		case 'e':
+			if (!parse_long(optarg, 0, LONG_MAX, &v))
+				return usage_error("--seed needs an integer >= 0, not '%s'", optarg);
+			o->seed = (uint64_t)v;
+			break;
+		case 'r': {
+			int n = -1;
+			if (sscanf(optarg, "%d,%d,%d,%d%n", &o->region[0], &o->region[1], &o->region[2],
+				   &o->region[3], &n) != 4 || optarg[n] != '\0' || o->region[0] < 0 ||
+			    o->region[1] < 0 || o->region[2] <= o->region[0] || o->region[3] <= o->region[1])
+				return usage_error("--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'",
+						   optarg);
+			o->has_region = true;
+			break;
+		}
+		case 'a':
+			if (!parse_aovs(optarg, &o->aovs))
+				return usage_error("--aov takes a list of albedo, normal, depth, variance, not '%s'", optarg);
+			break;
+		case 'T': {
+			int n = -1;
+			if (sscanf(optarg, "%d/%d%n", &o->tile_i, &o->tile_n, &n) != 2 || optarg[n] != '\0' ||
+			    o->tile_n < 1 || o->tile_i < 0 || o->tile_i >= o->tile_n)
+				return usage_error("--tile needs I/N with 0 <= I < N, not '%s'", optarg);
+			break;
+		}
+		case 'c':
+			if (!parse_double(optarg, &o->clock))
+				return usage_error("--clock needs a number, not '%s'", optarg);
+			break;
+		case 'f':
+			if (!parse_long(optarg, 0, 99999999, &o->frame))
+				return usage_error("--frame needs a frame number >= 0, not '%s'", optarg);
+			break;
+		case 'k':
+			if (!parse_double(optarg, &f) || f <= 0)
+				return usage_error("--checkpoint needs a number of seconds > 0, not '%s'", optarg);
+			o->checkpoint_s = f;
+			break;
+		case 'm':
+			if (!parse_size(optarg, &o->max_memory))
+				return usage_error("--max-memory needs a size such as 512M or 2G, not '%s'", optarg);
+			break;
+		case 'I':
+			if (o->ninclude == 64)
+				return usage_error("too many -I directories (limit is %s)", "64");
+			o->include_dirs[o->ninclude++] = optarg;
+			break;
+		case 'q':
+			o->quiet = true;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return -1;
+		default:
+			return usage_error("%s", "bad option for 'render'");
+		}
+	}
+	if (o->spp && o->time_s > 0)
+		return usage_error("%s", "--spp and --time exclude each other");
+	if (argc - optind != 1)
+		return usage_error("%s", argc - optind ? "'render' takes one scene" : "'render' needs a scene");
+	o->scene = argv[optind];
+	if (o->has_region && (o->region[2] > o->width || o->region[3] > o->height))
+		return usage_error("--region lies outside the %s image", "-W x -H");
+	if (o->has_region && o->tile_n)
+		return usage_error("%s", "--region and --tile exclude each other");
+	return EXIT_OK;
+}
+
 /* circe render SCENE [options]. */
 static int cmd_render(int argc, char **argv)
 {
-	(void)argc, (void)argv;
+	render_cli o;
+	int status = parse_render_cli(argc, argv, &o);
+	if (status != EXIT_OK)
+		return status < 0 ? EXIT_OK : status;
 	fprintf(stderr, "circe: error: 'render' needs the renderer, which this build lacks\n");
 	return EXIT_RUNTIME;
 }
 
-/* circe compare A.exr B.exr: error figures of A against B. */
+/* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
+ * --fail-percent of the pixels have an error above --fail, 1 otherwise or on an I/O error. */
 static int cmd_compare(int argc, char **argv)
 {
-	(void)argc, (void)argv;
-	fprintf(stderr, "circe: error: 'compare' is missing from this build\n");
-	return EXIT_RUNTIME;
+	static const struct option opts[] = {
+		{"fail", required_argument, NULL, 'f'},
+		{"fail-percent", required_argument, NULL, 'p'},
+		{"diff", required_argument, NULL, 'd'},
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	double threshold = 1e-6, percent = 0.0;
+	const char *diff_path = NULL;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'f':
+			if (!parse_double(optarg, &threshold) || threshold < 0)
+				return usage_error("--fail needs a number >= 0, not '%s'", optarg);
+			break;
+		case 'p':
+			if (!parse_double(optarg, &percent) || percent < 0 || percent > 100)
+				return usage_error("--fail-percent needs a number from 0 to 100, not '%s'", optarg);
+			break;
+		case 'd':
+			diff_path = optarg;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return EXIT_OK;
+		default:
+			return usage_error("%s", "bad option for 'compare'");
+		}
+	}
+	if (argc - optind != 2)
+		return usage_error("%s", "'compare' needs two images: A.exr B.exr");
+	const char *pa = argv[optind], *pb = argv[optind + 1];
+	diag d;
+	diag_init(&d, stderr);
+	exrfile_image a, b, diff;
+	int status = EXIT_RUNTIME;
+	if (!exrfile_read(pa, &a, &d)) {
+		diag_free(&d);
+		return EXIT_RUNTIME;
+	}
+	if (!exrfile_read(pb, &b, &d)) {
+		exrfile_free(&a);
+		diag_free(&d);
+		return EXIT_RUNTIME;
+	}
+	compare_result r;
+	if (compare_images(&a, pa, &b, pb, threshold, &r, diff_path ? &diff : NULL, &d)) {
+		double frac = r.pixels ? 100.0 * (double)r.over / (double)r.pixels : 0.0;
+		bool pass = frac <= percent;
+		printf("channels: %d\npixels: %zu\n", r.nchannels, r.pixels);
+		printf("rmse: %.9g\nrelmse: %.9g (epsilon %g)\nmean_abs: %.9g\n", r.rmse, r.relmse,
+		       COMPARE_RELMSE_EPS, r.mean_abs);
+		printf("max_abs: %.9g at %d,%d channel %s\n", r.max_abs, r.max_x, r.max_y, r.max_channel);
+		printf("psnr: %.3f dB (peak %g)\n", r.psnr, COMPARE_PSNR_PEAK);
+		printf("over_threshold: %.6g%% (%zu pixels with error > %g; allowed %g%%)\n", frac, r.over,
+		       threshold, percent);
+		printf("nonfinite_a: nan %zu inf %zu\n", r.nan_a, r.inf_a);
+		printf("result: %s\n", pass ? "PASS" : "FAIL");
+		status = pass ? EXIT_OK : EXIT_RUNTIME;
+		if (diff_path) {
+			exrfile_channel chans[64];
+			for (int k = 0; k < diff.nchannels; k++)
+				chans[k] = (exrfile_channel){diff.names[k], diff.planes[k], 1, (size_t)diff.width};
+			exrfile_attr attr = {.name = "software", .kind = EXRFILE_ATTR_STRING,
+					     .s = "circe " PACKAGE_VERSION " compare: |A - B|"};
+			exrfile_write_desc desc = {diff.display, diff.data, diff.nchannels, chans, 1, &attr};
+			if (!exrfile_write(diff_path, &desc, &d))
+				status = EXIT_RUNTIME;
+			exrfile_free(&diff);
+		}
+	}
+	exrfile_free(&a);
+	exrfile_free(&b);
+	diag_free(&d);
+	return status;
+}
+
+/* circe merge -o FULL.exr TILE.exr...: assembles tiles rendered apart. */
+static int cmd_merge(int argc, char **argv)
+{
+	static const struct option opts[] = {
+		{"help", no_argument, NULL, 'h'},
+		{NULL, 0, NULL, 0},
+	};
+	const char *out = NULL;
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+		switch (c) {
+		case 'o':
+			out = optarg;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return EXIT_OK;
+		default:
+			return usage_error("%s", "bad option for 'merge'");
+		}
+	}
+	if (!out)
+		return usage_error("%s", "'merge' needs -o FULL.exr");
+	if (optind >= argc)
+		return usage_error("%s", "'merge' needs at least one tile");
+	diag d;
+	diag_init(&d, stderr);
+	d.max_errors = 0; /* every missing rectangle is worth printing */
+	bool ok = merge_tiles(out, (const char *const *)argv + optind, argc - optind, &d);
+	diag_free(&d);
+	return ok ? EXIT_OK : EXIT_RUNTIME;
 }
 
 int main(int argc, char **argv)
@@ -144,5 +486,7 @@ int main(int argc, char **argv)
 		return cmd_check(argc - 1, argv + 1);
 	if (!strcmp(cmd, "compare"))
 		return cmd_compare(argc - 1, argv + 1);
+	if (!strcmp(cmd, "merge"))
+		return cmd_merge(argc - 1, argv + 1);
 	return usage_error("unknown subcommand '%s'", cmd);
 }

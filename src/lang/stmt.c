@@ -1102,9 +1102,9 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			TRY(once(p, &seen[7], &t));
 			lang_advance(p);
 			if (lang_accept(p, LTK_KW_CATMULL_CLARK))
-				d->scheme = SUBD_CATMULL_CLARK;
+				d->scheme = SCENE_SUBD_CATMULL_CLARK;
 			else if (lang_accept(p, LTK_KW_LOOP))
-				d->scheme = SUBD_LOOP;
+				d->scheme = SCENE_SUBD_LOOP;
 			else
 				return lang_error_found(p, "expected catmull_clark or loop after 'scheme'");
 			break;
@@ -1112,9 +1112,9 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			TRY(once(p, &seen[8], &t));
 			lang_advance(p);
 			if (lang_accept(p, LTK_KW_EDGE_ONLY))
-				d->boundary = SUBD_EDGE_ONLY;
+				d->boundary = SCENE_SUBD_EDGE_ONLY;
 			else if (lang_accept(p, LTK_KW_EDGE_AND_CORNER))
-				d->boundary = SUBD_EDGE_AND_CORNER;
+				d->boundary = SCENE_SUBD_EDGE_AND_CORNER;
 			else
 				return lang_error_found(p, "expected edge_only or edge_and_corner after 'boundary'");
 			break;
@@ -1150,7 +1150,7 @@ static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc op
 	subd_ctx sx = {p, {0}, {0}};
 	vecbuf_init(&sx.creases, sizeof(scene_crease));
 	vecbuf_init(&sx.corners, sizeof(scene_corner));
-	scene_subdiv d = {.max_edge_px = 1.5, .boundary = SUBD_EDGE_AND_CORNER};
+	scene_subdiv d = {.max_edge_px = 1.5, .boundary = SCENE_SUBD_EDGE_AND_CORNER};
 	scene_geom *g = subdiv_items(p, &b, &sx, &d, kw) ? new_geom(p, SHAPE_SUBDIV, kw) : NULL;
 	if (!g) {
 		meshbuf_free(&b);
@@ -1401,7 +1401,7 @@ static bool light_source(parser *p)
 	lang_token kw = *lang_advance(p);
 	diag_loc open;
 	TRY(open_block(p, "light_source", &open));
-	scene_light l = {.loc = kw.loc, .kind = LIGHT_POINT, .color = v3s(1), .intensity = 1,
+	scene_light l = {.loc = kw.loc, .kind = SCENE_LIGHT_POINT, .color = v3s(1), .intensity = 1,
 			 .point_at = d3(0, 0, 1), .cone_deg = 30, .falloff_deg = 45};
 	TRY(lang_vec3(p, "as the light position", &l.position));
 	lang_accept(p, LTK_COMMA);
@@ -1413,14 +1413,14 @@ static bool light_source(parser *p)
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			if (point_at && l.kind != LIGHT_SPOT && l.kind != LIGHT_PARALLEL)
+			if (point_at && l.kind != SCENE_LIGHT_SPOT && l.kind != SCENE_LIGHT_PARALLEL)
 				return lang_error(p, point_at_loc, "'point_at' needs 'spotlight' or 'parallel'");
-			if (falloff && l.kind != LIGHT_SPOT)
+			if (falloff && l.kind != SCENE_LIGHT_SPOT)
 				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight'");
-			if (l.kind == LIGHT_SPOT && l.falloff_deg < l.cone_deg)
+			if (l.kind == SCENE_LIGHT_SPOT && l.falloff_deg < l.cone_deg)
 				return lang_error(p, kw.loc, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
 						  l.falloff_deg, l.cone_deg);
-			if ((l.kind == LIGHT_SPOT || l.kind == LIGHT_PARALLEL) &&
+			if ((l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL) &&
 			    !(d3_length(d3_sub(l.point_at, l.position)) > 0))
 				return lang_error(p, kw.loc, "point_at is the light position: the light has no direction");
 			if (!vecbuf_push(&p->sc->lights, &l))
@@ -1443,14 +1443,14 @@ static bool light_source(parser *p)
 		case LTK_KW_RADIUS:
 			lang_advance(p);
 			TRY(lang_float(p, "after 'radius'", &x));
-			if (l.kind == LIGHT_SPOT) {
+			if (l.kind == SCENE_LIGHT_SPOT) {
 				TRY(in_range(p, t.loc, "spotlight radius (a cone angle)", x, 0, 90));
 				l.cone_deg = x;
 			} else {
 				if (x < 0)
 					return lang_error(p, t.loc, "light radius must be >= 0, found %g", x);
 				l.radius = x;
-				l.kind = x > 0 ? LIGHT_SPHERE : LIGHT_POINT;
+				l.kind = x > 0 ? SCENE_LIGHT_SPHERE : SCENE_LIGHT_POINT;
 			}
 			break;
 		case LTK_KW_FALLOFF:
@@ -1462,9 +1462,9 @@ static bool light_source(parser *p)
 		case LTK_KW_SPOTLIGHT:
 		case LTK_KW_PARALLEL:
 			lang_advance(p);
-			if (l.kind == LIGHT_SPOT || l.kind == LIGHT_PARALLEL)
+			if (l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL)
 				return lang_error(p, t.loc, "a light is either a spotlight or parallel, not both");
-			l.kind = t.kind == LTK_KW_SPOTLIGHT ? LIGHT_SPOT : LIGHT_PARALLEL;
+			l.kind = t.kind == LTK_KW_SPOTLIGHT ? SCENE_LIGHT_SPOT : SCENE_LIGHT_PARALLEL;
 			l.radius = 0;
 			break;
 		case LTK_KW_POINT_AT:

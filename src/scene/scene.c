@@ -134,7 +134,7 @@ static int validate_subdiv(const scene_geom *g, diag *d)
 			diag_error(d, c->face_locs[f], "face %u has %u vertices; a face needs at least 3", f, n);
 			e++;
 		}
-		if (c->scheme == SUBD_LOOP && n != 3) {
+		if (c->scheme == SCENE_SUBD_LOOP && n != 3) {
 			diag_error(d, c->face_locs[f], "face %u has %u vertices; the loop scheme needs triangles", f, n);
 			e++;
 		}
@@ -385,8 +385,8 @@ static void dump_geom(FILE *o, const scene_geom *g)
 	}
 	case SHAPE_SUBDIV: {
 		const scene_subdiv *c = &g->u.subdiv;
-		fprintf(o, " scheme %s boundary %s", c->scheme == SUBD_LOOP ? "loop" : "catmull_clark",
-			c->boundary == SUBD_EDGE_ONLY ? "edge_only" : "edge_and_corner");
+		fprintf(o, " scheme %s boundary %s", c->scheme == SCENE_SUBD_LOOP ? "loop" : "catmull_clark",
+			c->boundary == SCENE_SUBD_EDGE_ONLY ? "edge_only" : "edge_and_corner");
 		if (c->level > 0)
 			fprintf(o, " level %d", c->level);
 		else
@@ -467,11 +467,11 @@ void scene_dump(const scene *s, FILE *o)
 		dump_d3(o, "position", l->position);
 		dump_v3(o, "color", l->color);
 		fprintf(o, " intensity %g", l->intensity);
-		if (l->kind == LIGHT_SPHERE)
+		if (l->kind == SCENE_LIGHT_SPHERE)
 			fprintf(o, " radius %g", l->radius);
-		if (l->kind == LIGHT_SPOT || l->kind == LIGHT_PARALLEL)
+		if (l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL)
 			dump_d3(o, "point_at", l->point_at);
-		if (l->kind == LIGHT_SPOT)
+		if (l->kind == SCENE_LIGHT_SPOT)
 			fprintf(o, " cone %g falloff %g", l->cone_deg, l->falloff_deg);
 		fputc('\n', o);
 	}

@@ -22,7 +22,7 @@ typedef struct scene_camera {
 	bool has_focal_point;
 } scene_camera;
 
-typedef enum scene_light_kind { LIGHT_POINT, LIGHT_SPHERE, LIGHT_SPOT, LIGHT_PARALLEL } scene_light_kind;
+typedef enum scene_light_kind { SCENE_LIGHT_POINT, SCENE_LIGHT_SPHERE, SCENE_LIGHT_SPOT, SCENE_LIGHT_PARALLEL } scene_light_kind;
 
 typedef struct scene_light {
 	diag_loc loc;
@@ -59,8 +59,8 @@ typedef struct scene_mesh {
 	uint32_t n_faces;
 } scene_mesh;
 
-typedef enum scene_subd_scheme { SUBD_CATMULL_CLARK, SUBD_LOOP } scene_subd_scheme;
-typedef enum scene_subd_boundary { SUBD_EDGE_ONLY, SUBD_EDGE_AND_CORNER } scene_subd_boundary;
+typedef enum scene_subd_scheme { SCENE_SUBD_CATMULL_CLARK, SCENE_SUBD_LOOP } scene_subd_scheme;
+typedef enum scene_subd_boundary { SCENE_SUBD_EDGE_ONLY, SCENE_SUBD_EDGE_AND_CORNER } scene_subd_boundary;
 
 typedef struct scene_crease {
 	uint32_t a, b;

@@ -1,0 +1,186 @@
+/* tri.h - the exact primitive tests of circe's BVH, shared by the traversal and by the brute-force
+ * references of the tests, so both give bit-identical answers: the watertight ray/triangle test
+ * (Woop, Benthin & Wald 2013, "Watertight Ray/Triangle Intersection", JCGT 2(1)) and the
+ * circle/triangle test of circle tracing (DESIGN.md, "Circle sampling"). */
+#ifndef CIRCE_ACCEL_TRI_H
+#define CIRCE_ACCEL_TRI_H
+
+#include "base/vec.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+/* A ray ready for the watertight test: origin, direction, the closed interval [tmin, tmax], and
+ * the shear of Woop et al. (section 3): kz the dominant axis of dir, kx and ky the others in an
+ * order that keeps the winding, s = (dx/dz, dy/dz, 1/dz). */
+typedef struct tri_ray {
+	vec3 org, dir, inv_dir;
+	float tmin, tmax;
+	int kx, ky, kz;
+	float sx, sy, sz;
+} tri_ray;
+
+/* False, leaving *r unusable, when a component of org or dir is NaN or infinite, dir is zero,
+ * tmin is not finite or negative, tmax is NaN or tmax < tmin. */
+static inline bool tri_ray_prepare(tri_ray *r, vec3 org, vec3 dir, float tmin, float tmax)
+{
+	if (!v3_is_finite(org) || !v3_is_finite(dir) || !isfinite(tmin) || tmin < 0.0f ||
+	    isnan(tmax) || tmax < tmin || (dir.x == 0.0f && dir.y == 0.0f && dir.z == 0.0f))
+		return false;
+	r->org = org, r->dir = dir, r->tmin = tmin, r->tmax = tmax;
+	r->inv_dir = v3(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
+	vec3 a = v3_abs(dir);
+	int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+	int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+	if (v3_get(dir, kz) < 0.0f) {
+		int tmp = kx;
+		kx = ky, ky = tmp;
+	}
+	r->kx = kx, r->ky = ky, r->kz = kz;
+	float dz = v3_get(dir, kz);
+	r->sx = v3_get(dir, kx) / dz, r->sy = v3_get(dir, ky) / dz, r->sz = 1.0f / dz;
+	return true;
+}
+
+/* True when the triangle cannot be hit: a vertex is not finite or its area is zero in float.
+ * Such triangles are left out of the BVH, and the brute-force references skip them too. */
+static inline bool tri_is_degenerate(vec3 v0, vec3 v1, vec3 v2)
+{
+	if (!v3_is_finite(v0) || !v3_is_finite(v1) || !v3_is_finite(v2))
+		return true;
+	vec3 c = v3_cross(v3_sub(v1, v0), v3_sub(v2, v0));
+	return !(v3_length2(c) > 0.0f) || !v3_is_finite(c);
+}
+
+/* Woop, Benthin & Wald 2013, figure 10. Hits with t in [r->tmin, tlimit] and returns t and the
+ * barycentrics (u, v) of v1 and v2 (the point is (1-u-v) v0 + u v1 + v v2). Both sides hit. Edges
+ * and vertices shared by two triangles are hit by at least one of them. */
+static inline bool tri_intersect(const tri_ray *r, vec3 v0, vec3 v1, vec3 v2, float tlimit, float *t,
+				 float *u, float *v)
+{
+	vec3 A = v3_sub(v0, r->org), B = v3_sub(v1, r->org), C = v3_sub(v2, r->org);
+	float Az = v3_get(A, r->kz), Bz = v3_get(B, r->kz), Cz = v3_get(C, r->kz);
+	float Ax = v3_get(A, r->kx) - r->sx * Az, Ay = v3_get(A, r->ky) - r->sy * Az;
+	float Bx = v3_get(B, r->kx) - r->sx * Bz, By = v3_get(B, r->ky) - r->sy * Bz;
+	float Cx = v3_get(C, r->kx) - r->sx * Cz, Cy = v3_get(C, r->ky) - r->sy * Cz;
+	float U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
+	if (U == 0.0f || V == 0.0f || W == 0.0f) {
+		/* On an edge in float: decide in double so both neighbours agree (section 3.3). */
+		U = (float)((double)Cx * By - (double)Cy * Bx);
+		V = (float)((double)Ax * Cy - (double)Ay * Cx);
+		W = (float)((double)Bx * Ay - (double)By * Ax);
+	}
+	if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f))
+		return false;
+	float det = U + V + W;
+	if (det == 0.0f)
+		return false;
+	float T = U * (r->sz * Az) + V * (r->sz * Bz) + W * (r->sz * Cz);
+	float tt = T / det;
+	if (!(tt >= r->tmin && tt <= tlimit))
+		return false;
+	*t = tt, *u = V / det, *v = W / det;
+	return true;
+}
+
+/* A circle of circle tracing: c(theta) = centre + radius (cos theta t + sin theta n), t and n unit
+ * and orthogonal. A half circle keeps theta in [-pi/2, pi/2]; a full one theta in [0, 2 pi). */
+typedef struct tri_circle {
+	vec3 centre, t, n;
+	float radius;
+	bool full;
+} tri_circle;
+
+typedef struct tri_circle_hit {
+	vec3 pos;    /* on the triangle and on the circle */
+	float theta; /* circle angle of pos */
+	float u, v;  /* barycentrics of v1 and v2 */
+	vec3 ng;     /* unit geometric normal, (v1 - v0) x (v2 - v0) normalised */
+	uint32_t prim, inst;
+} tri_circle_hit;
+
+/* Exact circle/triangle test, in double: the triangle is clipped to the circle's plane, giving a
+ * segment, and the segment is solved against the circle. Writes up to two hits to out and returns
+ * their number. A triangle lying in the circle's plane gives none: the circle would run inside it,
+ * where the hit density |n_i . e_theta| is zero (DESIGN.md). Degenerate triangles give none. */
+static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2,
+				       tri_circle_hit out[2])
+{
+	dvec3 C = v3_to_d3(c->centre), T = v3_to_d3(c->t), N = v3_to_d3(c->n);
+	dvec3 M = d3_cross(T, N);
+	dvec3 P[3] = {v3_to_d3(v0), v3_to_d3(v1), v3_to_d3(v2)};
+	double d[3];
+	for (int i = 0; i < 3; i++)
+		d[i] = d3_dot(M, d3_sub(P[i], C));
+	if ((d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0) ||
+	    (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0))
+		return 0;
+	dvec3 ng = d3_cross(d3_sub(P[1], P[0]), d3_sub(P[2], P[0]));
+	if (!(d3_dot(ng, ng) > 0.0))
+		return 0;
+	/* The segment: vertices on the plane and crossings of edges whose ends lie on opposite sides,
+	 * each with its barycentrics (of v1, v2). */
+	dvec3 S[3];
+	double su[3], sv[3];
+	int ns = 0;
+	static const double bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
+	for (int i = 0; i < 3; i++) {
+		int j = i == 2 ? 0 : i + 1;
+		if (d[i] == 0.0) {
+			S[ns] = P[i], su[ns] = bu[i], sv[ns] = bv[i], ns++;
+		} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
+			double s = d[i] / (d[i] - d[j]);
+			S[ns] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
+			su[ns] = bu[i] + s * (bu[j] - bu[i]), sv[ns] = bv[i] + s * (bv[j] - bv[i]), ns++;
+		}
+	}
+	if (ns != 2)
+		return 0;
+	/* |S0 + s D - C|^2 = r^2 for s in [0, 1]. */
+	dvec3 D = d3_sub(S[1], S[0]), E = d3_sub(S[0], C);
+	double a = d3_dot(D, D), b = d3_dot(D, E), r = c->radius;
+	double cc = d3_dot(E, E) - r * r;
+	if (!(a > 0.0))
+		return 0;
+	double disc = b * b - a * cc;
+	if (disc < 0.0)
+		return 0;
+	double sq = sqrt(disc);
+	/* Stable roots: q = -(b + sign(b) sq), s = q / a and cc / q. */
+	double q = b >= 0.0 ? -(b + sq) : -(b - sq);
+	double roots[2];
+	int nr = 0;
+	if (q != 0.0) {
+		roots[nr++] = q / a;
+		if (disc > 0.0)
+			roots[nr++] = cc / q;
+	} else {
+		roots[nr++] = 0.0; /* b == 0 and disc == 0: the segment touches at S0 */
+	}
+	dvec3 ngu = d3_normalize(ng);
+	int nh = 0;
+	for (int k = 0; k < nr; k++) {
+		double s = roots[k];
+		if (!(s >= 0.0 && s <= 1.0))
+			continue;
+		dvec3 x = d3_add(S[0], d3_scale(D, s));
+		dvec3 rel = d3_sub(x, C);
+		double ct = d3_dot(rel, T), st = d3_dot(rel, N);
+		if (!c->full && ct < 0.0)
+			continue;
+		double theta = atan2(st, ct);
+		if (c->full && theta < 0.0)
+			theta += 2.0 * M_PI;
+		tri_circle_hit *h = &out[nh++];
+		h->pos = d3_to_v3(x);
+		h->theta = (float)theta;
+		h->u = (float)(su[0] + s * (su[1] - su[0]));
+		h->v = (float)(sv[0] + s * (sv[1] - sv[0]));
+		h->ng = d3_to_v3(ngu);
+		h->prim = h->inst = 0;
+	}
+	return nh;
+}
+
+#endif

@@ -1,0 +1,310 @@
+/* image.c - PNG (libpng), JPEG (libjpeg) and EXR loading to linear float RGBA; PNG writing. */
+#include "io/image.h"
+
+#include "base/mem.h"
+#include "io/atomic.h"
+#include "io/exr.h"
+
+#include <errno.h>
+#include <jpeglib.h>
+#include <math.h>
+#include <png.h>
+#include <setjmp.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+/* The largest texture side circe loads: 65536 pixels, beyond any real texture. */
+#define IMAGE_MAX_SIDE 65536
+
+float image_srgb_to_linear(float v)
+{
+	return v <= 0.04045f ? v / 12.92f : powf((v + 0.055f) / 1.055f, 2.4f);
+}
+
+float image_linear_to_srgb(float v)
+{
+	return v <= 0.0031308f ? v * 12.92f : 1.055f * powf(v, 1.0f / 2.4f) - 0.055f;
+}
+
+/* u mod 1 in [0, 1), NaN mapped to 0. */
+static float wrap01(float u)
+{
+	float w = u - floorf(u);
+	return w >= 0.0f && w < 1.0f ? w : 0.0f;
+}
+
+void image_bilinear(const image *img, float u, float v, float out[4])
+{
+	float x = wrap01(u) * (float)img->width - 0.5f, y = (1.0f - wrap01(v)) * (float)img->height - 0.5f;
+	float fx = floorf(x), fy = floorf(y);
+	float tx = x - fx, ty = y - fy;
+	int x0 = (int)fx, y0 = (int)fy;
+	int xs[2] = {x0, x0 + 1}, ys[2] = {y0, y0 + 1};
+	for (int k = 0; k < 2; k++) {
+		xs[k] = (xs[k] % img->width + img->width) % img->width;
+		ys[k] = (ys[k] % img->height + img->height) % img->height;
+	}
+	float w[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+	for (int c = 0; c < 4; c++)
+		out[c] = 0.0f;
+	for (int k = 0; k < 4; k++) {
+		const float *p = img->rgba + ((size_t)ys[k >> 1] * (size_t)img->width + (size_t)xs[k & 1]) * 4;
+		for (int c = 0; c < 4; c++)
+			out[c] += w[k] * p[c];
+	}
+}
+
+void image_free(image *img)
+{
+	mem_free(img->rgba);
+	img->rgba = NULL;
+	img->width = img->height = 0;
+}
+
+static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
+{
+	if (w <= 0 || h <= 0 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE) {
+		diag_file_error(d, path, "image size %dx%d is out of range (1 to %d per side)", w, h,
+				IMAGE_MAX_SIDE);
+		return false;
+	}
+	img->width = w;
+	img->height = h;
+	img->rgba = mem_alloc((size_t)w * (size_t)h * 4, sizeof(float));
+	if (!img->rgba) {
+		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
+		return false;
+	}
+	return true;
+}
+
+/* Fills the float image from 8- or 16-bit samples with `comps` channels (1 grey, 2 grey+alpha,
+ * 3 RGB, 4 RGBA). */
+static void from_integers(image *img, const unsigned char *px, int comps, int bytes, image_encoding enc)
+{
+	float lut[256];
+	for (int i = 0; i < 256; i++)
+		lut[i] = enc == IMAGE_SRGB ? image_srgb_to_linear(i / 255.0f) : i / 255.0f;
+	size_t n = (size_t)img->width * img->height;
+	for (size_t i = 0; i < n; i++) {
+		float v[4];
+		for (int c = 0; c < comps; c++) {
+			const unsigned char *s = px + (i * comps + c) * bytes;
+			if (bytes == 1)
+				v[c] = lut[s[0]];
+			else {
+				float f = ((s[0] << 8) | s[1]) / 65535.0f; /* PNG is big-endian */
+				v[c] = enc == IMAGE_SRGB ? image_srgb_to_linear(f) : f;
+			}
+		}
+		float *o = img->rgba + i * 4;
+		bool has_alpha = comps == 2 || comps == 4;
+		if (comps <= 2)
+			o[0] = o[1] = o[2] = v[0];
+		else
+			o[0] = v[0], o[1] = v[1], o[2] = v[2];
+		/* Alpha is linear coverage, never sRGB-encoded. */
+		if (has_alpha) {
+			const unsigned char *s = px + (i * comps + comps - 1) * bytes;
+			o[3] = bytes == 1 ? s[0] / 255.0f : ((s[0] << 8) | s[1]) / 65535.0f;
+		} else {
+			o[3] = 1.0f;
+		}
+	}
+}
+
+static bool load_png(FILE *fp, const char *path, image_encoding enc, image *out, diag *d)
+{
+	png_image pi;
+	memset(&pi, 0, sizeof pi);
+	pi.version = PNG_IMAGE_VERSION;
+	if (!png_image_begin_read_from_stdio(&pi, fp)) {
+		diag_file_error(d, path, "cannot read PNG: %s", pi.message);
+		return false;
+	}
+	/* Let libpng expand palettes and low bit depths; keep 16-bit precision when present. */
+	bool sixteen = (pi.format & PNG_FORMAT_FLAG_LINEAR) != 0;
+	int comps = PNG_IMAGE_SAMPLE_CHANNELS(pi.format);
+	pi.format = (comps >= 3 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA);
+	comps = comps >= 3 ? 4 : 2;
+	(void)sixteen;
+	if (!image_alloc(out, (int)pi.width, (int)pi.height, path, d)) {
+		png_image_free(&pi);
+		return false;
+	}
+	size_t stride = (size_t)PNG_IMAGE_ROW_STRIDE(pi);
+	unsigned char *buf = mem_alloc(stride, pi.height);
+	if (!buf || !png_image_finish_read(&pi, NULL, buf, (png_int_32)stride, NULL)) {
+		diag_file_error(d, path, "cannot read PNG: %s", buf ? pi.message : "out of memory");
+		mem_free(buf);
+		png_image_free(&pi);
+		image_free(out);
+		return false;
+	}
+	from_integers(out, buf, comps, 1, enc);
+	mem_free(buf);
+	return true;
+}
+
+struct jpeg_fail {
+	struct jpeg_error_mgr pub;
+	jmp_buf jump;
+	char msg[JMSG_LENGTH_MAX];
+};
+
+static void jpeg_on_error(j_common_ptr cinfo)
+{
+	struct jpeg_fail *f = (struct jpeg_fail *)cinfo->err;
+	(*cinfo->err->format_message)(cinfo, f->msg);
+	longjmp(f->jump, 1);
+}
+
+static void jpeg_quiet(j_common_ptr cinfo, int level) { (void)cinfo, (void)level; }
+
+/* libjpeg reports errors by longjmp; every allocation made after setjmp is freed on that path. */
+static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, image *out, diag *d)
+{
+	struct jpeg_decompress_struct cinfo;
+	struct jpeg_fail jerr;
+	unsigned char *volatile buf = NULL;
+	cinfo.err = jpeg_std_error(&jerr.pub);
+	jerr.pub.error_exit = jpeg_on_error;
+	jerr.pub.emit_message = jpeg_quiet;
+	if (setjmp(jerr.jump)) {
+		diag_file_error(d, path, "cannot read JPEG: %s", jerr.msg);
+		jpeg_destroy_decompress(&cinfo);
+		mem_free(buf);
+		image_free(out);
+		return false;
+	}
+	jpeg_create_decompress(&cinfo);
+	jpeg_stdio_src(&cinfo, fp);
+	jpeg_read_header(&cinfo, TRUE);
+	cinfo.out_color_space = cinfo.num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
+	jpeg_start_decompress(&cinfo);
+	int comps = cinfo.output_components;
+	if (!image_alloc(out, (int)cinfo.output_width, (int)cinfo.output_height, path, d)) {
+		jpeg_destroy_decompress(&cinfo);
+		return false;
+	}
+	size_t stride = (size_t)cinfo.output_width * comps;
+	buf = mem_alloc(stride, cinfo.output_height);
+	if (!buf) {
+		diag_file_error(d, path, "out of memory");
+		jpeg_destroy_decompress(&cinfo);
+		image_free(out);
+		return false;
+	}
+	while (cinfo.output_scanline < cinfo.output_height) {
+		JSAMPROW row = buf + cinfo.output_scanline * stride;
+		jpeg_read_scanlines(&cinfo, &row, 1);
+	}
+	jpeg_finish_decompress(&cinfo);
+	jpeg_destroy_decompress(&cinfo);
+	from_integers(out, buf, comps, 1, enc);
+	mem_free(buf);
+	return true;
+}
+
+static bool load_exr(const char *path, image *out, diag *d)
+{
+	exrfile_image ex;
+	if (!exrfile_read(path, &ex, d))
+		return false;
+	const float *r = exrfile_find_channel(&ex, "R"), *g = exrfile_find_channel(&ex, "G"),
+		    *b = exrfile_find_channel(&ex, "B"), *a = exrfile_find_channel(&ex, "A"),
+		    *y = exrfile_find_channel(&ex, "Y");
+	if (!(r && g && b) && !y) {
+		diag_file_error(d, path, "EXR has neither R, G, B nor Y channels");
+		exrfile_free(&ex);
+		return false;
+	}
+	if (!image_alloc(out, ex.width, ex.height, path, d)) {
+		exrfile_free(&ex);
+		return false;
+	}
+	size_t n = (size_t)ex.width * ex.height;
+	for (size_t i = 0; i < n; i++) {
+		float *o = out->rgba + i * 4;
+		if (r && g && b)
+			o[0] = r[i], o[1] = g[i], o[2] = b[i];
+		else
+			o[0] = o[1] = o[2] = y[i];
+		o[3] = a ? a[i] : 1.0f;
+	}
+	exrfile_free(&ex);
+	return true;
+}
+
+bool image_load(const char *path, image_encoding enc, image *out, diag *d)
+{
+	out->rgba = NULL;
+	out->width = out->height = 0;
+	FILE *fp = fopen(path, "rb");
+	if (!fp) {
+		diag_file_error(d, path, "cannot open: %s", strerror(errno));
+		return false;
+	}
+	unsigned char magic[8] = {0};
+	size_t got = fread(magic, 1, sizeof magic, fp);
+	rewind(fp);
+	bool ok;
+	if (got >= 8 && !png_sig_cmp(magic, 0, 8))
+		ok = load_png(fp, path, enc, out, d);
+	else if (got >= 3 && magic[0] == 0xFF && magic[1] == 0xD8 && magic[2] == 0xFF)
+		ok = load_jpeg(fp, path, enc, out, d);
+	else if (got >= 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
+		ok = load_exr(path, out, d);
+	else {
+		diag_file_error(d, path, "not a PNG, JPEG or OpenEXR image");
+		ok = false;
+	}
+	fclose(fp);
+	return ok;
+}
+
+bool png_write(const char *path, int width, int height, const float *rgb, size_t pixel_stride,
+	       size_t row_stride, float exposure_stops, diag *d)
+{
+	if (width <= 0 || height <= 0) {
+		diag_file_error(d, path, "invalid PNG size %dx%d", width, height);
+		return false;
+	}
+	unsigned char *buf = mem_alloc((size_t)width * 3, (size_t)height);
+	if (!buf) {
+		diag_file_error(d, path, "out of memory");
+		return false;
+	}
+	float gain = exp2f(exposure_stops);
+	for (int y = 0; y < height; y++)
+		for (int x = 0; x < width; x++)
+			for (int c = 0; c < 3; c++) {
+				float v = rgb[(size_t)y * row_stride + (size_t)x * pixel_stride + c] * gain;
+				v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* also maps NaN to 0 */
+				buf[((size_t)y * width + x) * 3 + c] =
+					(unsigned char)lrintf(image_linear_to_srgb(v) * 255.0f);
+			}
+	atomic_file af;
+	if (!atomic_open(&af, path, d)) {
+		mem_free(buf);
+		return false;
+	}
+	FILE *fp = fdopen(dup(af.fd), "wb");
+	png_image pi;
+	memset(&pi, 0, sizeof pi);
+	pi.version = PNG_IMAGE_VERSION;
+	pi.width = (png_uint_32)width;
+	pi.height = (png_uint_32)height;
+	pi.format = PNG_FORMAT_RGB;
+	bool ok = fp && png_image_write_to_stdio(&pi, fp, 0, buf, 0, NULL);
+	if (fp && fclose(fp) != 0)
+		ok = false;
+	mem_free(buf);
+	if (!ok) {
+		diag_file_error(d, path, "cannot write PNG: %s", fp ? pi.message : strerror(errno));
+		atomic_abort(&af);
+		return false;
+	}
+	return atomic_commit(&af, d);
+}

@@ -1,0 +1,57 @@
+/* bsdf.h - the reflection models of circe's materials, evaluated in a local shading frame whose
+ * +z is the shading normal on the side of the outgoing direction wo (the integrator flips the
+ * normal to wo's side, so every model here is two-sided). Directions point away from the surface.
+ *   BSDF_DIFFUSE  Lambert: diffuse / pi.
+ *   BSDF_PLASTIC  POV-Ray's finish { diffuse Kd specular Ks roughness r }: Kd * pigment / pi plus
+ *                 Ks * GGX(alpha) with no Fresnel (POV-Ray's highlight is a plain lobe). POV-Ray's
+ *                 roughness r is a Phong/Blinn exponent n = 1/r; the GGX alpha with the same
+ *                 highlight width is alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, sec. 5.2).
+ *   BSDF_COAT     A rough dielectric coat over a diffuse interior (skin, wax, marble until SSS):
+ *                 GGX reflection * F(ior) plus (1 - F(cos_o)) (1 - F(cos_i)) * albedo / pi.
+ * GGX uses Smith's height-correlated masking-shadowing (Heitz 2014, eq. 99) and is sampled by its
+ * visible normals (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"). */
+#ifndef CIRCE_RENDER_BSDF_H
+#define CIRCE_RENDER_BSDF_H
+
+#include "base/vec.h"
+
+#include <stdbool.h>
+
+typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT } bsdf_kind;
+
+/* A material's reflection parameters at one shading point (textures already applied). */
+typedef struct bsdf_params {
+	bsdf_kind kind;
+	vec3 diffuse;  /* reflectance of the diffuse part: Kd * pigment, or the coat's interior albedo */
+	vec3 specular; /* BSDF_PLASTIC: Ks (as a colour) */
+	float alpha;   /* GGX roughness alpha, clamped to [BSDF_MIN_ALPHA, 1] */
+	float ior;     /* BSDF_COAT: index of refraction of the coat (outside is 1) */
+} bsdf_params;
+
+/* Below this GGX's peak is too sharp for float; such surfaces are treated as this rough. */
+#define BSDF_MIN_ALPHA 1e-3f
+
+bsdf_params bsdf_diffuse(vec3 albedo);
+/* POV-Ray finish: diffuse Kd, specular Ks, roughness r (POV-Ray default 0.05) over pigment. */
+bsdf_params bsdf_pov_finish(vec3 pigment, float kd, float ks, float roughness);
+/* The coat: interior albedo, ior, roughness used as GGX alpha directly. */
+bsdf_params bsdf_coat(vec3 albedo, float ior, float roughness);
+
+/* f(wo, wi) without the cosine; zero unless both directions are above the surface (z > 0). */
+vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi);
+/* Solid-angle density of bsdf_sample returning wi. */
+float bsdf_pdf(const bsdf_params *b, vec3 wo, vec3 wi);
+/* Samples wi given wo (u_lobe chooses the lobe, u the direction). On success *f is the BSDF value
+ * and *pdf its density; false when the sample falls below the surface or has zero pdf (the pdf
+ * then integrates to less than one over the hemisphere: that mass is the failure probability). */
+bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, vec3 *f, float *pdf);
+/* The colour the albedo AOV records: the diffuse reflectance (plus Ks for plastic), clamped to 1. */
+vec3 bsdf_albedo(const bsdf_params *b);
+
+/* Unpolarised Fresnel reflectance of a dielectric seen from outside, cos_i >= 0, eta = ior. */
+float bsdf_fresnel_dielectric(float cos_i, float eta);
+/* GGX pieces, exposed for tests: the normal distribution D(h) and the visible-normal sample. */
+float bsdf_ggx_d(vec3 h, float alpha);
+vec3 bsdf_ggx_sample_vndf(vec3 wo, float alpha, vec2 u);
+
+#endif

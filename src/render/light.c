@@ -1,0 +1,426 @@
+/* light.c - sampling and evaluation of circe's lights (light.h). Solid-angle densities throughout;
+ * a mesh's area density converts by dist^2 / |cos_light| (Veach 1997, eq. 8.10). */
+#include "render/light.h"
+
+#include "base/mem.h"
+
+#include <string.h>
+
+/* Below this |cos| at the light, a mesh sample is grazing: its solid-angle pdf would overflow. */
+#define LIGHT_GRAZING_COS 1e-6f
+
+static float deg_to_rad(float d)
+{
+	return d * RENDER_PI / 180.0f;
+}
+
+light light_point(vec3 pos, vec3 intensity)
+{
+	return (light){.kind = LIGHT_POINT, .color = intensity, .pos = pos};
+}
+
+light light_spot(vec3 pos, vec3 point_at, vec3 intensity, float radius_deg, float falloff_deg)
+{
+	if (falloff_deg < radius_deg) /* POV-Ray: falloff at least radius */
+		falloff_deg = radius_deg;
+	return (light){.kind = LIGHT_SPOT,
+		       .color = intensity,
+		       .pos = pos,
+		       .dir = v3_normalize(v3_sub(point_at, pos)),
+		       .cos_hot = cosf(deg_to_rad(radius_deg)),
+		       .cos_fall = cosf(deg_to_rad(falloff_deg))};
+}
+
+light light_parallel(vec3 from, vec3 point_at, vec3 irradiance)
+{
+	return (light){
+	    .kind = LIGHT_PARALLEL, .color = irradiance, .dir = v3_normalize(v3_sub(point_at, from))};
+}
+
+light light_sphere(vec3 center, float radius, vec3 color)
+{
+	return (light){.kind = LIGHT_SPHERE,
+		       .color = v3_scale(color, 1.0f / (RENDER_PI * radius * radius)),
+		       .pos = center,
+		       .radius = radius};
+}
+
+light light_background(vec3 radiance)
+{
+	return (light){.kind = LIGHT_BACKGROUND, .color = radiance};
+}
+
+static float tri_area(const vec3 *v)
+{
+	return 0.5f * v3_length(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
+}
+
+bool light_mesh_init(light *l, const vec3 *verts, size_t tri_count, vec3 radiance)
+{
+	*l = (light){.kind = LIGHT_MESH, .color = radiance};
+	float *areas = mem_alloc(tri_count, sizeof *areas);
+	l->tri = mem_alloc(tri_count, 3 * sizeof *l->tri);
+	if (!areas || !l->tri || tri_count == 0) {
+		mem_free(areas);
+		light_free(l);
+		return false;
+	}
+	memcpy(l->tri, verts, tri_count * 3 * sizeof *l->tri);
+	l->tri_count = tri_count;
+	double total = 0.0;
+	for (size_t i = 0; i < tri_count; i++) {
+		areas[i] = tri_area(verts + 3 * i);
+		total += areas[i];
+	}
+	l->area = (float)total;
+	bool ok = total > 0.0 && render_distrib1d_init(&l->tri_select, areas, tri_count);
+	mem_free(areas);
+	if (!ok)
+		light_free(l);
+	return ok;
+}
+
+vec2 light_env_uv(vec3 d)
+{
+	float u = 0.5f + atan2f(d.x, d.z) * (0.5f * RENDER_INV_PI);
+	float v = acosf(fminf(fmaxf(d.y, -1.0f), 1.0f)) * RENDER_INV_PI;
+	return v2(u - floorf(u), fminf(v, nextafterf(1.0f, 0.0f)));
+}
+
+vec3 light_env_dir(vec2 uv)
+{
+	float theta = uv.y * RENDER_PI, phi = 2.0f * RENDER_PI * (uv.x - 0.5f);
+	float s = sinf(theta);
+	return v3(s * sinf(phi), cosf(theta), s * cosf(phi));
+}
+
+static size_t env_pixel(const light *l, vec2 uv)
+{
+	int x = (int)(uv.x * (float)l->width), y = (int)(uv.y * (float)l->height);
+	x = x < 0 ? 0 : x >= l->width ? l->width - 1 : x;
+	y = y < 0 ? 0 : y >= l->height ? l->height - 1 : y;
+	return (size_t)y * (size_t)l->width + (size_t)x;
+}
+
+static vec3 env_texel(const light *l, size_t i)
+{
+	const float *p = l->image + 3 * i;
+	return v3(p[0], p[1], p[2]);
+}
+
+bool light_envmap_init(light *l, const float *rgb, int width, int height, float scale, const xform *rot)
+{
+	*l = (light){
+	    .kind = LIGHT_ENVMAP, .color = v3s(scale), .image = rgb, .width = width, .height = height};
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			l->rot[i][j] = rot ? (float)rot->m[i][j] : (i == j ? 1.0f : 0.0f);
+	if (width <= 0 || height <= 0)
+		return false;
+	size_t n = (size_t)width * (size_t)height;
+	float *func = mem_alloc(n, sizeof *func);
+	if (!func)
+		return false;
+	for (int y = 0; y < height; y++) {
+		float sin_theta = sinf(RENDER_PI * ((float)y + 0.5f) / (float)height);
+		for (int x = 0; x < width; x++) {
+			size_t i = (size_t)y * (size_t)width + (size_t)x;
+			func[i] = v3_luminance(env_texel(l, i)) * sin_theta;
+		}
+	}
+	bool ok = render_distrib2d_init(&l->env_dist, func, (size_t)width, (size_t)height);
+	mem_free(func);
+	return ok;
+}
+
+void light_free(light *l)
+{
+	mem_free(l->tri);
+	l->tri = NULL;
+	render_distrib1d_free(&l->tri_select);
+	if (l->kind == LIGHT_ENVMAP)
+		render_distrib2d_free(&l->env_dist);
+}
+
+static vec3 rot_apply(const float r[3][3], vec3 v)
+{
+	return v3(r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z,
+		  r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
+		  r[2][0] * v.x + r[2][1] * v.y + r[2][2] * v.z);
+}
+
+static vec3 rot_apply_inverse(const float r[3][3], vec3 v)
+{
+	return v3(r[0][0] * v.x + r[1][0] * v.y + r[2][0] * v.z,
+		  r[0][1] * v.x + r[1][1] * v.y + r[2][1] * v.z,
+		  r[0][2] * v.x + r[1][2] * v.y + r[2][2] * v.z);
+}
+
+/* A vector in the frame whose +z is axis (unit), expressed in world space. */
+static vec3 from_frame(vec3 axis, vec3 local)
+{
+	vec3 b1, b2;
+	v3_basis(axis, &b1, &b2);
+	return v3_add(v3_add(v3_scale(b1, local.x), v3_scale(b2, local.y)), v3_scale(axis, local.z));
+}
+
+/* The cone a sphere light subtends from p: its axis, the distance to the centre and sin^2 of the
+ * half angle; false when p is inside. */
+static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *sin2_max)
+{
+	vec3 to = v3_sub(l->pos, p);
+	*dist = v3_length(to);
+	if (!(*dist > l->radius))
+		return false;
+	*axis = v3_scale(to, 1.0f / *dist);
+	*sin2_max = (l->radius * l->radius) / (*dist * *dist);
+	return *sin2_max > 0.0f;
+}
+
+/* POV-Ray's spot factor: cubic_spline(cos falloff, cos radius, cos theta). */
+static float spot_factor(const light *l, float cos_theta)
+{
+	if (cos_theta <= l->cos_fall)
+		return 0.0f;
+	if (cos_theta >= l->cos_hot)
+		return 1.0f;
+	float t = (cos_theta - l->cos_fall) / (l->cos_hot - l->cos_fall);
+	return t * t * (3.0f - 2.0f * t);
+}
+
+bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+	out->delta = light_is_delta(l);
+	switch (l->kind) {
+	case LIGHT_POINT:
+	case LIGHT_SPOT: {
+		vec3 to = v3_sub(l->pos, p);
+		float d2 = v3_length2(to);
+		if (!(d2 > 0.0f))
+			return false;
+		out->dist = sqrtf(d2);
+		out->wi = v3_scale(to, 1.0f / out->dist);
+		float k = l->kind == LIGHT_SPOT ? spot_factor(l, -v3_dot(out->wi, l->dir)) : 1.0f;
+		out->li = v3_scale(l->color, k / d2);
+		out->pdf = 1.0f;
+		return k > 0.0f;
+	}
+	case LIGHT_PARALLEL:
+		out->wi = v3_neg(l->dir);
+		out->dist = INFINITY;
+		out->li = l->color;
+		out->pdf = 1.0f;
+		return true;
+	case LIGHT_SPHERE: {
+		vec3 axis;
+		float dist, sin2_max;
+		if (!sphere_cone(l, p, &axis, &dist, &sin2_max))
+			return false;
+		out->wi = v3_normalize(from_frame(axis, render_uniform_cone(u, sin2_max)));
+		/* Distance to the near side: b - sqrt(r^2 - |to - b wi|^2), b = to . wi; the squared
+		 * distance of the centre from the ray avoids the cancellation of d^2 - b^2. */
+		vec3 to = v3_scale(axis, dist);
+		float b = v3_dot(to, out->wi);
+		vec3 perp = v3_sub(to, v3_scale(out->wi, b));
+		float disc = l->radius * l->radius - v3_length2(perp);
+		out->dist = b - sqrtf(fmaxf(0.0f, disc));
+		out->li = l->color;
+		out->pdf = render_uniform_cone_pdf(sin2_max);
+		return out->dist > 0.0f;
+	}
+	case LIGHT_MESH: {
+		size_t tri;
+		float x = render_distrib1d_sample(&l->tri_select, u.x, NULL, &tri);
+		float ux =
+		    fminf(x * (float)l->tri_count - (float)tri, nextafterf(1.0f, 0.0f)); /* reuse u.x */
+		vec2 b = render_uniform_triangle(v2(fmaxf(ux, 0.0f), u.y));
+		const vec3 *v = l->tri + 3 * tri;
+		vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)),
+				v3_scale(v[2], 1.0f - b.x - b.y));
+		vec3 n = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
+		vec3 to = v3_sub(y, p);
+		float d2 = v3_length2(to);
+		if (!(d2 > 0.0f))
+			return false;
+		out->dist = sqrtf(d2);
+		out->wi = v3_scale(to, 1.0f / out->dist);
+		out->li = l->color;
+		out->pdf = light_pdf(l, p, out->wi, out->dist, n);
+		return out->pdf > 0.0f;
+	}
+	case LIGHT_BACKGROUND:
+		out->wi = render_uniform_sphere(u);
+		out->dist = INFINITY;
+		out->li = l->color;
+		out->pdf = RENDER_UNIFORM_SPHERE_PDF;
+		return true;
+	case LIGHT_ENVMAP: {
+		float pdf_uv;
+		vec2 uv = render_distrib2d_sample(&l->env_dist, u, &pdf_uv);
+		vec3 local = light_env_dir(uv);
+		float sin_theta = sinf(uv.y * RENDER_PI);
+		if (!(pdf_uv > 0.0f) || !(sin_theta > 0.0f))
+			return false;
+		out->wi = rot_apply(l->rot, local);
+		out->dist = INFINITY;
+		out->li = v3_mul(l->color, env_texel(l, env_pixel(l, uv)));
+		out->pdf = pdf_uv / (2.0f * RENDER_PI * RENDER_PI * sin_theta);
+		return true;
+	}
+	}
+	return false;
+}
+
+float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n)
+{
+	switch (l->kind) {
+	case LIGHT_SPHERE: {
+		vec3 axis;
+		float d, sin2_max, t;
+		render_ray ray = {p, wi};
+		if (!sphere_cone(l, p, &axis, &d, &sin2_max) ||
+		    !light_sphere_hit(l, &ray, 0.0f, INFINITY, &t))
+			return 0.0f;
+		return render_uniform_cone_pdf(sin2_max);
+	}
+	case LIGHT_MESH: {
+		float cos_l = fabsf(v3_dot(n, wi));
+		if (cos_l < LIGHT_GRAZING_COS)
+			return 0.0f;
+		return dist * dist / (cos_l * l->area);
+	}
+	case LIGHT_BACKGROUND:
+		return RENDER_UNIFORM_SPHERE_PDF;
+	case LIGHT_ENVMAP: {
+		vec2 uv = light_env_uv(rot_apply_inverse(l->rot, wi));
+		float sin_theta = sinf(uv.y * RENDER_PI);
+		if (!(sin_theta > 0.0f))
+			return 0.0f;
+		return render_distrib2d_pdf(&l->env_dist, uv) / (2.0f * RENDER_PI * RENDER_PI * sin_theta);
+	}
+	default:
+		return 0.0f;
+	}
+}
+
+vec3 light_radiance_dir(const light *l, vec3 d)
+{
+	if (l->kind == LIGHT_BACKGROUND)
+		return l->color;
+	if (l->kind == LIGHT_ENVMAP)
+		return v3_mul(l->color,
+			      env_texel(l, env_pixel(l, light_env_uv(rot_apply_inverse(l->rot, d)))));
+	return v3s(0.0f);
+}
+
+bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float tmax, float *t)
+{
+	/* Haines et al. 2019, "Precision Improvements for Ray/Sphere Intersection" (Ray Tracing Gems
+	 * ch. 7): the discriminant from the centre's distance to the ray, the near root as c / q. */
+	vec3 oc = v3_sub(ray->o, l->pos);
+	float b = v3_dot(oc, ray->d);
+	vec3 perp = v3_sub(oc, v3_scale(ray->d, b));
+	float disc = l->radius * l->radius - v3_length2(perp);
+	if (disc < 0.0f)
+		return false;
+	float c = v3_length2(oc) - l->radius * l->radius;
+	float q = -b - copysignf(sqrtf(disc), b);
+	float t0 = q != 0.0f ? c / q : 0.0f, t1 = q;
+	if (t0 > t1) {
+		float x = t0;
+		t0 = t1;
+		t1 = x;
+	}
+	float hit = t0 > tmin ? t0 : t1;
+	if (!(hit > tmin && hit < tmax))
+		return false;
+	*t = hit;
+	return true;
+}
+
+float light_power(const light *l, float scene_radius)
+{
+	float lum = v3_luminance(l->color), r2 = scene_radius * scene_radius;
+	switch (l->kind) {
+	case LIGHT_POINT:
+		return 4.0f * RENDER_PI * lum;
+	case LIGHT_SPOT: /* the cone's solid angle, counting the falloff band as half (PBRT's choice) */
+		return 2.0f * RENDER_PI * lum * (1.0f - 0.5f * (l->cos_hot + l->cos_fall));
+	case LIGHT_PARALLEL:
+		return RENDER_PI * r2 * lum;
+	case LIGHT_SPHERE:
+		return RENDER_PI * 4.0f * RENDER_PI * l->radius * l->radius * lum;
+	case LIGHT_MESH:
+		return 2.0f * RENDER_PI * l->area * lum; /* two-sided */
+	case LIGHT_BACKGROUND:
+		return 4.0f * RENDER_PI * RENDER_PI * r2 * lum;
+	case LIGHT_ENVMAP: {
+		double sum = 0.0;
+		size_t n = (size_t)l->width * (size_t)l->height;
+		for (size_t i = 0; i < n; i++)
+			sum += v3_luminance(env_texel(l, i));
+		return 4.0f * RENDER_PI * RENDER_PI * r2 * lum * (float)(sum / (double)n);
+	}
+	}
+	return 0.0f;
+}
+
+void light_set_init(light_set *s)
+{
+	memset(s, 0, sizeof *s);
+}
+
+light *light_set_add(light_set *s, const light *l)
+{
+	if (s->count == s->cap) {
+		size_t cap = s->cap ? 2 * s->cap : 8;
+		light *grown = mem_realloc(s->lights, cap, sizeof *grown);
+		if (!grown)
+			return NULL;
+		s->lights = grown;
+		s->cap = cap;
+	}
+	s->lights[s->count] = *l;
+	return &s->lights[s->count++];
+}
+
+bool light_set_finish(light_set *s, float scene_radius)
+{
+	if (s->count == 0)
+		return true;
+	float *power = mem_alloc(s->count, sizeof *power);
+	s->infinite = mem_alloc(s->count, sizeof *s->infinite);
+	if (!power || !s->infinite) {
+		mem_free(power);
+		return false;
+	}
+	s->infinite_count = 0;
+	for (size_t i = 0; i < s->count; i++) {
+		power[i] = light_power(&s->lights[i], scene_radius);
+		if (light_is_infinite(&s->lights[i]))
+			s->infinite[s->infinite_count++] = i;
+	}
+	bool ok = render_distrib1d_init(&s->select, power, s->count);
+	mem_free(power);
+	return ok;
+}
+
+void light_set_free(light_set *s)
+{
+	for (size_t i = 0; i < s->count; i++)
+		light_free(&s->lights[i]);
+	mem_free(s->lights);
+	mem_free(s->infinite);
+	render_distrib1d_free(&s->select);
+	memset(s, 0, sizeof *s);
+}
+
+size_t light_set_pick(const light_set *s, float u, float *prob)
+{
+	return render_distrib1d_sample_discrete(&s->select, u, prob);
+}
+
+float light_set_prob(const light_set *s, size_t i)
+{
+	return render_distrib1d_discrete_prob(&s->select, i);
+}

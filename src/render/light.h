@@ -1,0 +1,139 @@
+/* light.h - circe's light sources and the set the integrator samples from.
+ *   LIGHT_POINT     POV-Ray light_source { V color C }: intensity C (W/sr per unit colour),
+ *                   irradiance C cos / d^2. Unlike POV-Ray's default (no fading), light falls off
+ *                   with the inverse square, as it must in a physically based renderer; a light
+ *                   at distance d needs d^2 times POV-Ray's colour for the same brightness.
+ *                   Delta: only light sampling finds it.
+ *   LIGHT_SPOT      a point light times POV-Ray's spot factor: 1 inside `radius`, 0 outside
+ *                   `falloff` (half-angles in degrees about point_at), a smoothstep of cos between.
+ *   LIGHT_PARALLEL  POV-Ray `parallel`: irradiance C from the fixed direction location->point_at.
+ *   LIGHT_SPHERE    POV-Ray `radius R` > 0: a sphere of radius R with uniform radiance
+ *                   Le = C / (pi R^2), so from afar it equals the point light of the same colour.
+ *                   Sampled by the cone of directions it subtends (uniform in solid angle). The
+ *                   integrator intersects it itself (it is not in the BVH) and it casts no shadow.
+ *   LIGHT_MESH      an emissive triangle mesh (`emission C`): radiance C from both faces; a
+ *                   triangle chosen by area, a uniform point on it, pdf converted to solid angle.
+ *   LIGHT_BACKGROUND  `background { color C }`: radiance C from every direction, uniform sphere
+ *                   sampling.
+ *   LIGHT_ENVMAP    `sky_sphere { image }`: a lat-long float RGB image, sampled by a 2D
+ *                   piecewise-constant distribution of luminance * sin(theta).
+ * Lat-long convention (in the map's own frame, before `rotate`): row 0 is +y (up), the last row
+ * -y; column u in [0,1) is the longitude phi = 2 pi (u - 0.5) measured from +z towards +x, so the
+ * image centre lies straight ahead of POV-Ray's default camera and +x (right) is at u = 0.75.
+ * Radiance is looked up at the nearest pixel (matching the sampling density exactly).
+ * Light selection: each light is chosen with probability proportional to its power estimate
+ * (luminance of its flux; infinite and parallel lights count over a disk or sphere of the scene's
+ * bounding radius, as PBRT does) — see light_power. Lights are read-only once the set is finished,
+ * so any number of threads may sample them. */
+#ifndef CIRCE_RENDER_LIGHT_H
+#define CIRCE_RENDER_LIGHT_H
+
+#include "base/vec.h"
+#include "render/camera.h"
+#include "render/sampling.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum light_kind {
+	LIGHT_POINT,
+	LIGHT_SPOT,
+	LIGHT_PARALLEL,
+	LIGHT_SPHERE,
+	LIGHT_MESH,
+	LIGHT_BACKGROUND,
+	LIGHT_ENVMAP
+} light_kind;
+
+typedef struct light {
+	light_kind kind;
+	vec3 color;		 /* intensity (point, spot), irradiance (parallel), radiance (the others) */
+	vec3 pos;		 /* point, spot, sphere centre */
+	vec3 dir;		 /* spot axis, or the direction parallel light travels (unit) */
+	float radius;		 /* sphere */
+	float cos_hot, cos_fall; /* spot: cosines of radius and falloff */
+	/* LIGHT_MESH: world-space triangles, three vertices each (owned). */
+	vec3 *tri;
+	size_t tri_count;
+	float area;
+	render_distrib1d tri_select;
+	/* LIGHT_ENVMAP: the caller's image, kept alive by the caller until the light is freed. */
+	const float *image; /* width * height RGB triples, row 0 = top (+y) */
+	int width, height;
+	render_distrib2d env_dist;
+	float rot[3][3]; /* world = rot * map frame (an orthonormal matrix) */
+} light;
+
+/* One light sample seen from point p: unit direction wi towards the light, the distance to the
+ * emitting point (INFINITY for lights at infinity), the incident radiance (for delta lights the
+ * irradiance-producing value, already divided by d^2), and the solid-angle pdf (1 for delta). */
+typedef struct light_sample {
+	vec3 wi;
+	float dist;
+	vec3 li;
+	float pdf;
+	bool delta;
+} light_sample;
+
+light light_point(vec3 pos, vec3 intensity);
+light light_spot(vec3 pos, vec3 point_at, vec3 intensity, float radius_deg, float falloff_deg);
+light light_parallel(vec3 from, vec3 point_at, vec3 irradiance);
+/* Sphere light with POV-Ray's light colour C: radiance C / (pi radius^2). */
+light light_sphere(vec3 center, float radius, vec3 color);
+light light_background(vec3 radiance);
+/* Emissive mesh from tri_count world-space triangles given as 3 * tri_count vertices (copied).
+ * False when memory runs out or the total area is zero. */
+bool light_mesh_init(light *l, const vec3 *verts, size_t tri_count, vec3 radiance);
+/* Lat-long environment: rgb holds width * height RGB floats (not copied), scaled by `scale`,
+ * rotated by rot (world = rot * map; xform's linear part, e.g. xform_rotate). False when memory
+ * runs out or the size is zero. */
+bool light_envmap_init(light *l, const float *rgb, int width, int height, float scale, const xform *rot);
+void light_free(light *l);
+
+/* True for point, spot and parallel lights: no surface to hit, no MIS. */
+static inline bool light_is_delta(const light *l)
+{
+	return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_PARALLEL;
+}
+static inline bool light_is_infinite(const light *l)
+{
+	return l->kind == LIGHT_BACKGROUND || l->kind == LIGHT_ENVMAP;
+}
+
+/* Samples the light from p. False when it contributes nothing there (p inside a sphere light,
+ * outside a spot cone, a grazing mesh point). */
+bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out);
+/* Solid-angle density that light_sample_from(p) picks direction wi hitting the light at distance
+ * dist where its geometric normal is n (dist and n are used by meshes only). 0 for delta lights. */
+float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n);
+/* Radiance arriving along a ray with direction d that escapes to an infinite light. */
+vec3 light_radiance_dir(const light *l, vec3 d);
+/* Ray-sphere test for a sphere light: the nearest t in (tmin, tmax), or false. */
+bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float tmax, float *t);
+/* Luminance of the light's flux (the selection weight); scene_radius bounds the scene. */
+float light_power(const light *l, float scene_radius);
+/* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
+vec2 light_env_uv(vec3 local_dir);
+vec3 light_env_dir(vec2 uv);
+
+/* All the scene's lights with the selection distribution. */
+typedef struct light_set {
+	light *lights;
+	size_t count, cap;
+	render_distrib1d select;
+	size_t *infinite; /* indices of the background and environment lights */
+	size_t infinite_count;
+} light_set;
+
+void light_set_init(light_set *s);
+/* Appends a copy of l (the set takes over what l owns); NULL when memory runs out. */
+light *light_set_add(light_set *s, const light *l);
+/* Builds the selection distribution; call once after the last add. False on memory exhaustion. */
+bool light_set_finish(light_set *s, float scene_radius);
+void light_set_free(light_set *s);
+/* Picks a light with probability proportional to its power: its index and that probability. */
+size_t light_set_pick(const light_set *s, float u, float *prob);
+float light_set_prob(const light_set *s, size_t i);
+
+#endif

@@ -1,0 +1,268 @@
+/* scheduler.c - the pass loop, the worker pool and the progress line (scheduler.h). The calling
+ * thread only coordinates: it starts a pass by bumping `generation` under the mutex, waits for
+ * `active` to reach zero (waking up to refresh progress), then commits or discards the pass. */
+#include "render/scheduler.h"
+
+#include "base/mem.h"
+
+#include <pthread.h>
+#include <stdio.h>
+#include <time.h>
+#include <unistd.h>
+
+/* How often the coordinating thread wakes to refresh progress and look at the interrupt flag. */
+#define RENDER_PROGRESS_PERIOD_S 0.25
+/* The most samples per pixel a render may reach (the sample index is 32-bit). */
+#define RENDER_MAX_SPP 0x7fffffffu
+
+typedef struct pool {
+	const render_job *job;
+	film *film;
+	int tile, tiles_x, tiles_y, tile_count;
+	uint32_t s0, s1; /* the pass's sample range, written under mu before the generation bump */
+
+	pthread_mutex_t mu;
+	pthread_cond_t start, done;
+	unsigned generation;
+	bool quit;
+	int active; /* workers still in the current pass */
+
+	_Atomic int next_tile;
+	_Atomic int tiles_done;
+	_Atomic uint64_t samples_done; /* pixel samples of the current pass, for progress */
+	_Atomic uint64_t dropped;      /* samples dropped in the current pass */
+} pool;
+
+static double now_s(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int render_default_threads(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n > 0 ? (int)n : 1;
+}
+
+static bool interrupted(const render_job *job)
+{
+	return job->interrupt && atomic_load(job->interrupt) != 0;
+}
+
+/* Renders one tile's pixels for samples [s0, s1) into film->work; false when interrupted. */
+static bool render_tile(pool *p, int tile)
+{
+	const render_job *job = p->job;
+	film *f = p->film;
+	int tx = tile % p->tiles_x, ty = tile / p->tiles_x;
+	int xa = f->x0 + tx * p->tile, ya = f->y0 + ty * p->tile;
+	int xb = xa + p->tile < f->x1 ? xa + p->tile : f->x1,
+	    yb = ya + p->tile < f->y1 ? ya + p->tile : f->y1;
+	int rw = film_region_width(f);
+	uint64_t dropped = 0;
+	for (int y = ya; y < yb; y++) {
+		if (interrupted(job))
+			return false;
+		for (int x = xa; x < xb; x++) {
+			size_t i = (size_t)(y - f->y0) * (size_t)rw + (size_t)(x - f->x0);
+			film_pixel px = f->acc[i];
+			for (uint32_t s = p->s0; s < p->s1; s++) {
+				rng g = rng_for_sample(job->seed, (uint32_t)x, (uint32_t)y, s);
+				vec2 pu = v2(rng_float(&g), rng_float(&g));
+				vec2 lu = v2(rng_float(&g), rng_float(&g));
+				render_ray ray = cam_ray(job->camera, x, y, pu, lu);
+				render_sample smp = render_path(job->scene, &job->settings, ray, &g);
+				if (!film_pixel_add(&px, &smp)) {
+					render_sample zero = {0};
+					film_pixel_add(&px, &zero);
+					dropped++;
+				}
+			}
+			f->work[i] = px;
+		}
+		atomic_fetch_add(&p->samples_done, (uint64_t)(xb - xa) * (p->s1 - p->s0));
+	}
+	atomic_fetch_add(&p->dropped, dropped);
+	return true;
+}
+
+static void *worker(void *arg)
+{
+	pool *p = arg;
+	unsigned seen = 0;
+	for (;;) {
+		pthread_mutex_lock(&p->mu);
+		while (p->generation == seen && !p->quit)
+			pthread_cond_wait(&p->start, &p->mu);
+		bool quit = p->quit;
+		seen = p->generation;
+		pthread_mutex_unlock(&p->mu);
+		if (quit)
+			return NULL;
+		for (;;) {
+			if (interrupted(p->job))
+				break;
+			int t = atomic_fetch_add(&p->next_tile, 1);
+			if (t >= p->tile_count || !render_tile(p, t))
+				break;
+			atomic_fetch_add(&p->tiles_done, 1);
+		}
+		pthread_mutex_lock(&p->mu);
+		if (--p->active == 0)
+			pthread_cond_signal(&p->done);
+		pthread_mutex_unlock(&p->mu);
+	}
+}
+
+static void format_time(char *buf, size_t n, double s)
+{
+	long t = s > 0 && s < 1e9 ? (long)(s + 0.5) : 0;
+	snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+}
+
+/* One progress line; fraction in [0,1]. */
+static void show_progress(double fraction, double rate, double elapsed)
+{
+	char el[32], left[32];
+	format_time(el, sizeof el, elapsed);
+	if (fraction > 0.0)
+		format_time(left, sizeof left, elapsed * (1.0 - fraction) / fraction);
+	else
+		snprintf(left, sizeof left, "?");
+	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * fraction,
+		rate, el, left);
+	fflush(stderr);
+}
+
+/* Samples per pixel of the next pass: double the last, capped by the target, by RENDER_PASS_MAX_S
+ * and by the time budget left at the measured rate (pixel samples per second). */
+static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t last, double rate_px,
+			       double left_s)
+{
+	uint64_t want = last ? 2u * (uint64_t)last : 1u;
+	if (rate_px > 0.0) {
+		double limit = RENDER_PASS_MAX_S;
+		if (job->time_budget_s > 0.0 && left_s < limit)
+			limit = left_s;
+		double fit = rate_px * limit;
+		if (fit < (double)want)
+			want = fit < 1.0 ? 1u : (uint64_t)fit;
+	}
+	uint64_t cap = job->spp ? job->spp : RENDER_MAX_SPP;
+	if (done + want > cap)
+		want = cap - done;
+	return (uint32_t)want;
+}
+
+render_status render_run(const render_job *job, film *f, render_stats *stats)
+{
+	if (!job->scene || !job->camera || (job->spp == 0 && !(job->time_budget_s > 0.0)) ||
+	    job->camera->width != f->width || job->camera->height != f->height ||
+	    job->settings.max_trace_level < 1)
+		return RENDER_ERROR;
+	double t0 = now_s();
+	int threads = job->threads > 0 ? job->threads : render_default_threads();
+	pool p = {.job = job, .film = f, .tile = job->tile_size > 0 ? job->tile_size : RENDER_DEFAULT_TILE};
+	p.tiles_x = (film_region_width(f) + p.tile - 1) / p.tile;
+	p.tiles_y = (film_region_height(f) + p.tile - 1) / p.tile;
+	p.tile_count = p.tiles_x * p.tiles_y;
+	pthread_t *tid = mem_alloc((size_t)threads, sizeof *tid);
+	if (!tid)
+		return RENDER_ERROR;
+	pthread_mutex_init(&p.mu, NULL);
+	pthread_cond_init(&p.start, NULL);
+	pthread_cond_init(&p.done, NULL);
+	int started = 0;
+	while (started < threads && pthread_create(&tid[started], NULL, worker, &p) == 0)
+		started++;
+
+	render_status status = started > 0 ? RENDER_DONE : RENDER_ERROR;
+	bool show = !job->quiet && isatty(fileno(stderr));
+	double npix = (double)film_region_width(f) * film_region_height(f);
+	double rate_px = 0.0, last_checkpoint = t0;
+	uint32_t last = 0;
+	int passes = 0;
+	while (status == RENDER_DONE) {
+		double elapsed = now_s() - t0;
+		if ((job->spp && f->spp >= job->spp) ||
+		    (job->time_budget_s > 0.0 && elapsed >= job->time_budget_s) || f->spp >= RENDER_MAX_SPP)
+			break;
+		if (interrupted(job)) {
+			status = RENDER_INTERRUPTED;
+			break;
+		}
+		uint32_t n = next_pass_size(job, f->spp, last, rate_px, job->time_budget_s - elapsed);
+		double pass_start = now_s();
+		pthread_mutex_lock(&p.mu);
+		p.s0 = f->spp;
+		p.s1 = f->spp + n;
+		atomic_store(&p.next_tile, 0);
+		atomic_store(&p.tiles_done, 0);
+		atomic_store(&p.samples_done, 0);
+		atomic_store(&p.dropped, 0);
+		p.active = started;
+		p.generation++;
+		pthread_cond_broadcast(&p.start);
+		while (p.active > 0) {
+			struct timespec ts;
+			clock_gettime(CLOCK_REALTIME, &ts);
+			long ns = ts.tv_nsec + (long)(RENDER_PROGRESS_PERIOD_S * 1e9);
+			ts.tv_sec += ns / 1000000000L;
+			ts.tv_nsec = ns % 1000000000L;
+			pthread_cond_timedwait(&p.done, &p.mu, &ts);
+			if (show && p.active > 0) {
+				double el = now_s() - t0;
+				double done_px = (double)f->spp * npix + (double)atomic_load(&p.samples_done);
+				double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
+				if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
+					frac = el / job->time_budget_s;
+				show_progress(frac > 1.0 ? 1.0 : frac, el > 0 ? done_px / el : 0.0, el);
+			}
+		}
+		pthread_mutex_unlock(&p.mu);
+		if (atomic_load(&p.tiles_done) < p.tile_count) { /* interrupted: discard the pass */
+			status = RENDER_INTERRUPTED;
+			break;
+		}
+		film_commit(f, p.s1);
+		f->dropped += atomic_load(&p.dropped);
+		passes++;
+		last = n;
+		double pass_s = now_s() - pass_start;
+		if (pass_s > 0.0)
+			rate_px = (double)n / pass_s;
+		if (job->checkpoint && job->checkpoint_interval_s > 0.0 &&
+		    now_s() - last_checkpoint >= job->checkpoint_interval_s) {
+			job->checkpoint(job->checkpoint_user, f);
+			last_checkpoint = now_s();
+		}
+	}
+	pthread_mutex_lock(&p.mu);
+	p.quit = true;
+	pthread_cond_broadcast(&p.start);
+	pthread_mutex_unlock(&p.mu);
+	for (int i = 0; i < started; i++)
+		pthread_join(tid[i], NULL);
+	mem_free(tid);
+	pthread_mutex_destroy(&p.mu);
+	pthread_cond_destroy(&p.start);
+	pthread_cond_destroy(&p.done);
+
+	double seconds = now_s() - t0;
+	if (show) {
+		show_progress(job->spp ? (double)f->spp / job->spp : 1.0,
+			      seconds > 0 ? f->spp * npix / seconds : 0.0, seconds);
+		fputc('\n', stderr);
+	}
+	if (stats) {
+		stats->spp = f->spp;
+		stats->dropped = f->dropped;
+		stats->seconds = seconds;
+		stats->samples_per_s = seconds > 0.0 ? (double)f->spp * npix / seconds : 0.0;
+		stats->passes = passes;
+		stats->threads = started;
+	}
+	return status;
+}

@@ -1,0 +1,73 @@
+/* scheduler.h - progressive, multi-threaded rendering into a film.
+ * A render is a sequence of passes; pass k adds samples [s0, s1) to every pixel of the region.
+ * The first pass has 1 sample per pixel; each next pass doubles, capped so that a pass should take
+ * at most RENDER_PASS_MAX_S seconds (and no more than the time budget left), so checkpoints and
+ * the time budget are honoured within about one pass. Within a pass, tiles of tile_size^2 pixels
+ * are taken from an atomic counter by `threads` worker threads. Because each pixel's samples are
+ * summed one by one in sample order from rng_for_sample(seed, x, y, s), the image is
+ * bit-identical for any thread count, tile size, region and pass schedule.
+ *
+ * Stopping: after the pass that reaches `spp`, or after the first pass that ends at or past
+ * `time_budget_s` (the budget is a target: the last pass is sized to end near it), or on interrupt.
+ * Interrupt: when *interrupt becomes non-zero the workers start nothing new (they leave even the
+ * tile in hand), the pass in progress is discarded unless it already completed, and render_run
+ * returns RENDER_INTERRUPTED with the film holding the last committed pass: every pixel has the
+ * same film->spp samples. The flag may be set from a signal handler (atomic_store on a lock-free
+ * _Atomic int is async-signal-safe):
+ *     static _Atomic int stop;  static void on_signal(int sig) { (void)sig; atomic_store(&stop, 1); }
+ * Checkpoints: every checkpoint_interval_s seconds (checked between passes) the callback is called
+ * on the calling thread with the consistent film; it may read it (film_read) and write a file.
+ * Progress: a line on stderr, refreshed about 4 times a second, only when stderr is a terminal and
+ * quiet is false. Threads share only atomics and mutex-protected state; the scene's callbacks
+ * must be thread-safe. */
+#ifndef CIRCE_RENDER_SCHEDULER_H
+#define CIRCE_RENDER_SCHEDULER_H
+
+#include "render/camera.h"
+#include "render/film.h"
+#include "render/integrator.h"
+
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#define RENDER_PASS_MAX_S   2.0
+#define RENDER_DEFAULT_TILE 16
+
+typedef struct render_job {
+	const render_scene *scene;
+	const cam *camera;
+	render_settings settings;
+	uint64_t seed;
+	uint32_t spp;		      /* target samples per pixel; 0: none (then a time budget is needed) */
+	double time_budget_s;	      /* 0: none */
+	int threads;		      /* 0: all online cores */
+	int tile_size;		      /* 0: RENDER_DEFAULT_TILE */
+	bool quiet;		      /* no progress line even on a terminal */
+	double checkpoint_interval_s; /* 0: no checkpoints */
+	void (*checkpoint)(void *user, const film *f); /* may be NULL */
+	void *checkpoint_user;
+	_Atomic int *interrupt; /* may be NULL */
+} render_job;
+
+typedef enum render_status { RENDER_DONE, RENDER_INTERRUPTED, RENDER_ERROR } render_status;
+
+typedef struct render_stats {
+	uint32_t spp;	      /* samples per pixel completed (= film->spp) */
+	uint64_t dropped;     /* non-finite samples dropped (= film->dropped); should be 0 */
+	double seconds;	      /* wall time of render_run */
+	double samples_per_s; /* pixel samples committed per second */
+	int passes;	      /* committed passes */
+	int threads;
+} render_stats;
+
+/* Renders job into f (from film_init). A film that already holds spp samples of the same job
+ * (an interrupted or time-limited render) is continued from sample spp on, and ends bit-identical
+ * to an uninterrupted render. Returns RENDER_ERROR (with f untouched) for an invalid job (no spp and no time
+ * budget, no scene or camera, a camera whose size differs from the film's) or when threads cannot be started.
+ * stats may be NULL. */
+render_status render_run(const render_job *job, film *f, render_stats *stats);
+/* Number of online cores (at least 1). */
+int render_default_threads(void);
+
+#endif

@@ -1,0 +1,107 @@
+/* test_bvh: ray and circle traversal of the BVH equal brute force over every triangle, exactly. */
+#include "accel/bvh.h"
+#include "check.h"
+#include "brute.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Rays with NaN or Inf components are refused before traversal; so are circles. */
+static void check_bad_input(void)
+{
+	vec3 p[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+	uint32_t ix[3] = {0, 1, 2};
+	bvh *b = bvh_build(p, 3, ix, 1);
+	bvh_hit h;
+	float bad[] = {NAN, INFINITY, -INFINITY};
+	for (int i = 0; i < 3; i++) {
+		bvh_ray r = {{0.2f, 0.2f, 1}, {0, 0, -1}, 0, INFINITY};
+		CHECK(bvh_intersect(b, &r, &h), "the good ray hits");
+		bvh_ray r1 = r, r2 = r, r3 = r;
+		r1.org.x = bad[i], r2.dir.y = bad[i], r3.tmin = bad[i];
+		CHECK(!bvh_intersect(b, &r1, &h) && !bvh_occluded(b, &r1), "origin %g refused", bad[i]);
+		CHECK(!bvh_intersect(b, &r2, &h) && !bvh_occluded(b, &r2), "direction %g refused", bad[i]);
+		CHECK(!bvh_intersect(b, &r3, &h), "tmin %g refused", bad[i]);
+		tri_circle q = {{0.2f, 0.2f, 0}, {1, 0, 0}, {0, 0, 1}, bad[i], false};
+		tri_circle_hit ch[4];
+		CHECK(bvh_circle(b, &q, ch, 4) == 0, "radius %g gives no hits", bad[i]);
+	}
+	bvh_ray zero = {{0.2f, 0.2f, 1}, {0, 0, 0}, 0, INFINITY};
+	CHECK(!bvh_intersect(b, &zero, &h), "zero direction refused");
+	uint32_t oob[3] = {0, 1, 3};
+	CHECK(bvh_build(p, 3, oob, 1) == NULL, "index out of range refused");
+	bvh_free(b);
+	bvh *e = bvh_build(p, 3, ix, 0);
+	bvh_ray r = {{0.2f, 0.2f, 1}, {0, 0, -1}, 0, INFINITY};
+	CHECK(e && !bvh_intersect(e, &r, &h) && !bvh_occluded(e, &r), "an empty bvh hits nothing");
+	bvh_free(e);
+}
+
+/* Degenerate (collinear, zero-area, NaN) and duplicated triangles never crash and never hit; of
+ * duplicates, the lower id wins. */
+static void check_degenerate(void)
+{
+	enum { N = 4000 };
+	vec3 *p = malloc(3 * N * sizeof *p);
+	uint32_t *ix = malloc(3 * N * sizeof *ix);
+	rng g;
+	rng_seed(&g, 5, 5);
+	for (uint32_t f = 0; f < N; f++) {
+		vec3 a = v3(rng_float(&g), rng_float(&g), rng_float(&g)), b = v3(rng_float(&g), rng_float(&g), rng_float(&g));
+		switch (f % 5) {
+		case 0: /* a point */
+			p[3 * f] = p[3 * f + 1] = p[3 * f + 2] = a;
+			break;
+		case 1: /* collinear along an axis, and two equal vertices */
+			p[3 * f] = a, p[3 * f + 1] = v3(b.x, a.y, a.z), p[3 * f + 2] = v3(rng_float(&g), a.y, a.z);
+			if (f % 2)
+				p[3 * f + 2] = b, p[3 * f + 1] = b;
+			break;
+		case 2: /* NaN vertex */
+			p[3 * f] = a, p[3 * f + 1] = b, p[3 * f + 2] = v3(NAN, 0, 0);
+			break;
+		case 3: /* a proper triangle */
+			p[3 * f] = a, p[3 * f + 1] = b, p[3 * f + 2] = v3(rng_float(&g), rng_float(&g), rng_float(&g));
+			break;
+		case 4: /* the previous one again */
+			p[3 * f] = p[3 * f - 3], p[3 * f + 1] = p[3 * f - 2], p[3 * f + 2] = p[3 * f - 1];
+			break;
+		}
+		ix[3 * f] = 3 * f, ix[3 * f + 1] = 3 * f + 1, ix[3 * f + 2] = 3 * f + 2;
+	}
+	mesh m = {.num_vertices = 3 * N, .num_triangles = N, .positions = p, .indices = ix};
+	bvh *b = bvh_build(p, 3 * N, ix, N);
+	brute bf = brute_make(&m);
+	CHECK(b != NULL, "bvh over degenerate triangles");
+	long bad = 0, hits = 0;
+	for (int i = 0; i < 20000 && b; i++) {
+		bvh_ray r = test_random_ray(&m, v3s(0), v3s(1), &g);
+		bvh_hit hb, hr;
+		bool fb = bvh_intersect(b, &r, &hb), fr = brute_intersect(&bf, &r, &hr);
+		hits += fb;
+		if (fb != fr || (fb && (hb.prim != hr.prim || hb.t != hr.t)) || (fb && hb.prim % 5 != 3)) {
+			if (bad++ < 5)
+				CHECK(0, "ray %d: bvh %d prim %u t %g, brute %d prim %u t %g", i, fb, hb.prim, hb.t, fr,
+				      hr.prim, hr.t);
+		}
+		tri_circle q = test_random_circle(&m, 1.0f, &g);
+		static tri_circle_hit ch[MAX_HITS];
+		uint32_t nc = bvh_circle(b, &q, ch, MAX_HITS);
+		for (uint32_t k = 0; k < nc && k < MAX_HITS; k++)
+			if (ch[k].prim % 5 != 3 && ch[k].prim % 5 != 4 && bad++ < 5)
+				CHECK(0, "circle %d hits degenerate triangle %u", i, ch[k].prim);
+	}
+	CHECK(bad == 0 && hits > 0, "%ld bad answers among degenerate triangles (%ld hits)", bad, hits);
+	bvh_free(b);
+	brute_free(&bf);
+	free(p), free(ix);
+}
+
+int main(void)
+{
+	check_bad_input();
+	check_degenerate();
+	check_mesh_file("scenes/assets/bunny/bunny_npm.obj", test_count(100000), test_count(100000));
+	return check_done("test_bvh");
+}

@@ -1,0 +1,195 @@
+/* test_circle: circle hits on a plane, a sphere and a cylinder land on the analytic intersections. */
+#include "check.h"
+#include "brute.h"
+#include "geom/prim.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#define PI 3.14159265358979323846
+
+/* |a - b| modulo 2 pi. */
+static double angle_diff(double a, double b)
+{
+	double d = fmod(fabs(a - b), 2 * PI);
+	return fmin(d, 2 * PI - d);
+}
+
+static tri_circle circle_at(vec3 c, vec3 n, double phi, float r, bool full)
+{
+	vec3 b1, b2;
+	v3_basis(n, &b1, &b2);
+	vec3 t = v3_normalize(v3_add(v3_scale(b1, (float)cos(phi)), v3_scale(b2, (float)sin(phi))));
+	return (tri_circle){c, t, n, r, full};
+}
+
+/* The plane y = 0 (a big quad): a half circle centred on it hits once, at theta 0, at distance r;
+ * a full circle twice (0 and pi); a tilted circle above it where c_y + r sin(...) = 0. */
+static void check_plane(long count)
+{
+	vec3 p[4] = {{-100, 0, -100}, {100, 0, -100}, {100, 0, 100}, {-100, 0, 100}};
+	uint32_t ix[6] = {0, 2, 1, 0, 3, 2};
+	bvh *b = bvh_build(p, 4, ix, 2);
+	rng g;
+	rng_seed(&g, 1, 1);
+	long bad = 0;
+	for (long i = 0; i < count; i++) {
+		vec3 c = v3(20.0f * rng_float(&g) - 10.0f, 0.0f, 20.0f * rng_float(&g) - 10.0f);
+		float r = 0.01f + 5.0f * rng_float(&g);
+		bool full = i % 2;
+		tri_circle q = circle_at(c, v3(0, 1, 0), 2 * PI * rng_float(&g), r, full);
+		tri_circle_hit h[8];
+		uint32_t n = bvh_circle(b, &q, h, 8);
+		/* A hit exactly on the quad's diagonal counts for both triangles: merge equal thetas. */
+		uint32_t distinct = 0;
+		for (uint32_t k = 0; k < n; k++) {
+			bool dup = false;
+			for (uint32_t j = 0; j < k; j++)
+				dup |= fabsf(h[j].theta - h[k].theta) < 1e-6f;
+			distinct += !dup;
+			vec3 want = v3_madd(c, q.t, cosf(h[k].theta) * r);
+			float err = v3_length(v3_sub(h[k].pos, want));
+			bool ok = err <= 2e-6f * (r + 15.0f) && fabsf(h[k].pos.y) <= 1e-6f &&
+				  (fabsf(h[k].theta) <= 1e-6f || fabsf(h[k].theta - (float)PI) <= 1e-6f) &&
+				  fabsf(fabsf(h[k].ng.y) - 1.0f) <= 1e-6f;
+			if (!ok && bad++ < 5)
+				CHECK(0, "plane circle %ld: hit theta %g at distance %g from the analytic point", i, h[k].theta, err);
+		}
+		if (distinct != (full ? 2u : 1u) && bad++ < 5)
+			CHECK(0, "plane circle %ld (%s): %u hits", i, full ? "full" : "half", distinct);
+	}
+	/* Tilted circles above the plane: centre at height hgt, normal tilted by alpha from y in the
+	 * (t, y) plane: sin(theta) cos(alpha) ... solve c_y + r (cos theta t_y + sin theta n_y) = 0. */
+	for (long i = 0; i < count; i++) {
+		float hgt = 0.5f * rng_float(&g), r = 1.0f + rng_float(&g), alpha = 1.2f * (rng_float(&g) - 0.5f);
+		vec3 c = v3(0, hgt, 0);
+		vec3 n = v3(sinf(alpha), cosf(alpha), 0), t = v3(cosf(alpha), -sinf(alpha), 0);
+		tri_circle q = {c, t, n, r, true};
+		tri_circle_hit h[8];
+		uint32_t k = bvh_circle(b, &q, h, 8);
+		/* hgt + r (cos th t_y + sin th n_y) = 0 with t_y = -sin a, n_y = cos a:
+		 * hgt + r sin(th - a) = 0, so th = a + asin(-hgt / r) or a + pi - asin(-hgt / r). */
+		double s = asin(-(double)hgt / r);
+		double want[2] = {fmod(alpha + s + 2 * PI, 2 * PI), fmod(alpha + PI - s + 2 * PI, 2 * PI)};
+		int matched = 0;
+		for (uint32_t j = 0; j < k; j++)
+			for (int w = 0; w < 2; w++)
+				matched += fabs(h[j].theta - want[w]) < 2e-6 && fabsf(h[j].pos.y) < 1e-6f;
+		if ((k != 2 || matched != 2) && bad++ < 5)
+			CHECK(0, "tilted circle %ld: %u hits, %d match (%g %g)", i, k, matched, want[0], want[1]);
+	}
+	CHECK(bad == 0, "plane: %ld bad circles", bad);
+	bvh_free(b);
+}
+
+/* A finely tessellated unit sphere: a circle at a surface point x with n the normal meets the
+ * great circle at angle a = 2 asin(r / 2) from x, at theta = atan2(cos a - 1, sin a) (and, for
+ * a full circle, pi - that). */
+static void check_sphere(long count)
+{
+	mesh m;
+	const uint32_t seg = 1024;
+	CHECK(prim_sphere(v3(0, 0, 0), 1.0f, seg, &m), "sphere");
+	bvh *b = bvh_build(m.positions, m.num_vertices, m.indices, m.num_triangles);
+	/* Chordal error of the tessellation (rings are seg / 2 apart in latitude, so both directions
+	 * count) bounds how far a hit can be from the true sphere. */
+	double chord = 2.0 * (1.0 - cos(2.0 * PI / seg)) + 1e-6;
+	rng g;
+	rng_seed(&g, 2, 2);
+	long bad = 0;
+	for (long i = 0; i < count; i++) {
+		vec3 n = test_unit_vector(&g);
+		if (fabsf(n.y) > 0.9f)
+			continue; /* near the poles the fans are thin; the rest suffices */
+		vec3 x = n;
+		float r = 0.05f + 1.5f * rng_float(&g);
+		bool full = i % 2;
+		tri_circle q = circle_at(x, n, 2 * PI * rng_float(&g), r, full);
+		tri_circle_hit h[16];
+		uint32_t k = bvh_circle(b, &q, h, 16);
+		double a = 2.0 * asin(r / 2.0), th = atan2(cos(a) - 1.0, sin(a));
+		double want[2] = {th, PI - th};
+		for (uint32_t j = 0; j < k && j < 16; j++) {
+			float rad = v3_length(h[j].pos);
+			double dt = fmin(angle_diff(h[j].theta, want[0]), angle_diff(h[j].theta, want[1]));
+			float dist = v3_length(v3_sub(h[j].pos, x));
+			bool ok = fabs(rad - 1.0) <= chord && fabs(dist - r) <= 1e-5 && dt <= 4 * chord / r + 1e-5;
+			if (!ok && bad++ < 5)
+				CHECK(0, "sphere circle %ld: |p| %g, |p - x| %g vs r %g, theta %g vs %g / %g", i, rad, dist, r,
+				      h[j].theta, want[0], want[1]);
+		}
+		if ((k < 1 || (full && k < 2)) && bad++ < 5)
+			CHECK(0, "sphere circle %ld: %u hits", i, k);
+	}
+	CHECK(bad == 0, "sphere: %ld bad circles", bad);
+	bvh_free(b);
+	mesh_free(&m);
+}
+
+/* A cylinder x^2 + z^2 = 1, |y| <= 4, of 2048 segments: a circle at x = (1, 0, 0) with n = x and
+ * t in the tangent plane hits it where |c(theta)|_xz = 1, found here by bisection in double. */
+static void check_cylinder(long count)
+{
+	const uint32_t seg = 2048;
+	vec3 *p = malloc(2 * seg * sizeof *p);
+	uint32_t *ix = malloc(6 * seg * sizeof *ix);
+	for (uint32_t i = 0; i < seg; i++) {
+		double a = 2 * PI * i / seg;
+		p[2 * i] = v3((float)cos(a), -4.0f, (float)sin(a));
+		p[2 * i + 1] = v3((float)cos(a), 4.0f, (float)sin(a));
+		uint32_t j = (i + 1) % seg;
+		uint32_t *t = ix + 6 * i;
+		t[0] = 2 * i, t[1] = 2 * i + 1, t[2] = 2 * j, t[3] = 2 * j, t[4] = 2 * i + 1, t[5] = 2 * j + 1;
+	}
+	bvh *b = bvh_build(p, 2 * seg, ix, 2 * seg);
+	double chord = 1.0 - cos(PI / seg) + 1e-6;
+	rng g;
+	rng_seed(&g, 3, 3);
+	long bad = 0;
+	for (long i = 0; i < count; i++) {
+		vec3 x = v3(1, 0, 0), n = v3(1, 0, 0);
+		double phi = 2 * PI * rng_float(&g);
+		vec3 t = v3(0, (float)cos(phi), (float)sin(phi));
+		float r = 0.05f + 1.5f * rng_float(&g);
+		tri_circle q = {x, t, n, r, false};
+		tri_circle_hit h[16];
+		uint32_t k = bvh_circle(b, &q, h, 16);
+		/* f(theta) = |c(theta)|_xz^2 - 1 changes sign once on (0, pi/2] and once on [-pi/2, 0). */
+		double want[2];
+		for (int side = 0; side < 2; side++) {
+			double lo = side ? -PI / 2 : 1e-9, hi = side ? -1e-9 : PI / 2;
+			for (int it = 0; it < 200; it++) {
+				double mid = 0.5 * (lo + hi);
+				double cx = 1.0 + r * sin(mid) * 1.0, cz = r * cos(mid) * t.z;
+				double cxl = 1.0 + r * sin(lo), czl = r * cos(lo) * t.z;
+				double fm = cx * cx + cz * cz - 1.0, fl = cxl * cxl + czl * czl - 1.0;
+				if ((fm < 0) == (fl < 0))
+					lo = mid;
+				else
+					hi = mid;
+			}
+			want[side] = 0.5 * (lo + hi);
+		}
+		for (uint32_t j = 0; j < k && j < 16; j++) {
+			double rad = sqrt((double)h[j].pos.x * h[j].pos.x + (double)h[j].pos.z * h[j].pos.z);
+			double dt = fmin(angle_diff(h[j].theta, want[0]), angle_diff(h[j].theta, want[1]));
+			bool ok = fabs(rad - 1.0) <= chord && dt <= 8 * chord / r + 1e-5 &&
+				  fabs(v3_length(v3_sub(h[j].pos, x)) - r) <= 1e-5;
+			if (!ok && bad++ < 5)
+				CHECK(0, "cylinder circle %ld: rho %.9g theta %g want %g / %g", i, rad, h[j].theta, want[0], want[1]);
+		}
+		if (k < 1 && bad++ < 5)
+			CHECK(0, "cylinder circle %ld: no hit", i);
+	}
+	CHECK(bad == 0, "cylinder: %ld bad circles", bad);
+	bvh_free(b);
+	free(p), free(ix);
+}
+
+int main(void)
+{
+	check_plane(test_count(20000));
+	check_sphere(test_count(5000));
+	check_cylinder(test_count(5000));
+	return check_done("test_circle");
+}

@@ -1,0 +1,105 @@
+/* test_bsdf: each BSDF samples the density its pdf states (chi-square over the sphere), the pdf
+ * integrates to the probability of a successful sample, eval is reciprocal and never creates
+ * energy, and the Fresnel and POV-Ray roughness mappings have their documented values. */
+#include "chi2.h"
+#include "render/bsdf.h"
+#include "render/sampling.h"
+
+typedef struct bctx {
+	bsdf_params b;
+	vec3 wo;
+} bctx;
+
+static bool s_bsdf(void *ctx, rng *g, vec3 *d)
+{
+	bctx *c = ctx;
+	vec3 f;
+	float pdf;
+	float ul = rng_float(g);
+	vec2 u = v2(rng_float(g), rng_float(g));
+	if (!bsdf_sample(&c->b, c->wo, ul, u, d, &f, &pdf))
+		return false;
+	/* The sample's own pdf and value agree with pdf() and eval(). */
+	float p2 = bsdf_pdf(&c->b, c->wo, *d);
+	vec3 f2 = bsdf_eval(&c->b, c->wo, *d);
+	CHECK(fabsf(pdf - p2) <= 1e-4f * p2 && fabsf(f.x - f2.x) <= 1e-5f * f2.x,
+	      "sample pdf %g vs %g, f %g vs %g", pdf, p2, f.x, f2.x);
+	return true;
+}
+
+static double p_bsdf(void *ctx, vec3 d)
+{
+	bctx *c = ctx;
+	return bsdf_pdf(&c->b, c->wo, d);
+}
+
+static vec3 dir_at(float theta_deg)
+{
+	float t = theta_deg * RENDER_PI / 180.0f;
+	return v3(sinf(t), 0.0f, cosf(t));
+}
+
+/* Integral of f cos over the hemisphere (the directional albedo) by stratified quadrature. */
+static double albedo_of(const bsdf_params *b, vec3 wo)
+{
+	const int nz = 400, np = 200;
+	double s = 0.0;
+	for (int i = 0; i < nz; i++)
+		for (int j = 0; j < np; j++) {
+			double z = (i + 0.5) / nz, phi = 2 * M_PI * (j + 0.5) / np, r = sqrt(1 - z * z);
+			vec3 wi = v3((float)(r * cos(phi)), (float)(r * sin(phi)), (float)z);
+			s += bsdf_eval(b, wo, wi).x * z;
+		}
+	return s * 2 * M_PI / ((double)nz * np);
+}
+
+int main(void)
+{
+	long n = test_samples(1000000);
+	vec3 z = v3(0, 0, 1);
+	bctx c = {bsdf_diffuse(v3(0.8f, 0.5f, 0.2f)), dir_at(40)};
+	chi2_sphere("bsdf diffuse", s_bsdf, p_bsdf, &c, z, -1.0, 16, 32, 8, n, 10);
+	c.b = bsdf_pov_finish(v3(0.6f, 0.6f, 0.6f), 0.5f, 0.6f, 0.1f);
+	c.wo = dir_at(30);
+	chi2_sphere("bsdf plastic, alpha 0.41, 30 deg", s_bsdf, p_bsdf, &c, z, -1.0, 16, 32, 12, n, 11);
+	c.b.alpha = 0.6f;
+	c.wo = dir_at(75);
+	chi2_sphere("bsdf plastic, alpha 0.6, 75 deg", s_bsdf, p_bsdf, &c, z, -1.0, 16, 32, 12, n, 12);
+	c.b = bsdf_coat(v3(0.9f, 0.6f, 0.5f), 1.4f, 0.35f);
+	c.wo = dir_at(20);
+	chi2_sphere("bsdf coat, alpha 0.35, 20 deg", s_bsdf, p_bsdf, &c, z, -1.0, 16, 32, 12, n, 13);
+	c.wo = dir_at(80);
+	chi2_sphere("bsdf coat, alpha 0.35, 80 deg", s_bsdf, p_bsdf, &c, z, -1.0, 16, 32, 12, n, 14);
+
+	/* Fresnel: ((n - 1) / (n + 1))^2 at normal incidence, 1 at grazing. */
+	CHECK_NEAR(bsdf_fresnel_dielectric(1.0f, 1.5f), 0.04, 1e-6);
+	CHECK_NEAR(bsdf_fresnel_dielectric(0.0f, 1.5f), 1.0, 1e-6);
+	/* POV-Ray roughness 0.05: Blinn exponent 20, alpha sqrt(2 / 22). */
+	CHECK_NEAR(bsdf_pov_finish(v3s(1), 0.6f, 0.4f, 0.05f).alpha, sqrt(2.0 / 22.0), 1e-6);
+
+	/* GGX D integrates to one over projected area: int D(h) cos dh = 1. */
+	double dsum = 0;
+	for (int i = 0; i < 2000; i++) {
+		double zz = (i + 0.5) / 2000;
+		dsum += bsdf_ggx_d(v3((float)sqrt(1 - zz * zz), 0, (float)zz), 0.3f) * zz;
+	}
+	CHECK_NEAR(dsum * 2 * M_PI / 2000, 1.0, 2e-3);
+
+	/* Energy: a white Lambertian reflects everything; GGX alone and the coat never exceed one. */
+	bsdf_params white = bsdf_diffuse(v3s(1));
+	CHECK_NEAR(albedo_of(&white, dir_at(50)), 1.0, 1e-3);
+	for (float th = 0; th < 90; th += 22.5f) {
+		bsdf_params spec = bsdf_pov_finish(v3s(0), 0.0f, 1.0f, 0.02f);
+		bsdf_params coat = bsdf_coat(v3s(1), 1.4f, 0.3f);
+		double a1 = albedo_of(&spec, dir_at(th)), a2 = albedo_of(&coat, dir_at(th));
+		CHECK(a1 <= 1.0 && a1 > 0.5, "GGX albedo at %g deg: %g", th, a1);
+		CHECK(a2 <= 1.0 && a2 > 0.7, "coat albedo at %g deg: %g", th, a2);
+	}
+
+	/* Reciprocity and the lower hemisphere. */
+	bsdf_params coat = bsdf_coat(v3(0.7f, 0.5f, 0.3f), 1.33f, 0.2f);
+	vec3 a = v3_normalize(v3(0.3f, -0.2f, 0.8f)), b = v3_normalize(v3(-0.5f, 0.1f, 0.4f));
+	CHECK_NEAR(bsdf_eval(&coat, a, b).y, bsdf_eval(&coat, b, a).y, 1e-6);
+	CHECK(bsdf_eval(&coat, a, v3(0, 0.6f, -0.8f)).x == 0.0f, "light through the surface");
+	return check_done("test_bsdf");
+}

@@ -1,0 +1,87 @@
+/* test_camera: the centre ray points at look_at, `angle` is the horizontal field of view, the image
+ * is upright and not mirrored in POV-Ray's left-handed frame, and the thin lens focuses. */
+#include "base/rng.h"
+#include "check.h"
+#include "render/camera.h"
+
+static double angle_deg(vec3 a, vec3 b)
+{
+	double c = v3_dot(v3_normalize(a), v3_normalize(b));
+	return acos(c > 1 ? 1 : c < -1 ? -1 : c) * 180.0 / M_PI;
+}
+
+int main(void)
+{
+	cam c;
+	cam_params p = cam_params_default();
+	p.location = v3(1, 2, -5);
+	p.look_at = v3(0.5f, 1, 3);
+	p.angle_deg = 60;
+	CHECK(cam_init(&c, &p, 641, 481), "cam_init");
+	render_ray r = cam_ray(&c, 320, 240, v2(0.5f, 0.5f), v2(0, 0));
+	vec3 want = v3_normalize(v3_sub(p.look_at, p.location));
+	CHECK(angle_deg(r.d, want) < 1e-3, "centre ray (%g %g %g) vs look_at direction (%g %g %g)", r.d.x,
+	      r.d.y, r.d.z, want.x, want.y, want.z);
+
+	/* Horizontal FOV: the left and right image edges through the middle row span `angle`. */
+	for (float a = 30; a <= 150; a += 40) {
+		p.angle_deg = a;
+		CHECK(cam_init(&c, &p, 640, 480), "cam_init angle %g", a);
+		render_ray l = cam_ray(&c, 0, 240, v2(0, 0), v2(0, 0));
+		render_ray rr = cam_ray(&c, 639, 240, v2(1, 0), v2(0, 0)); /* right edge of the last pixel */
+		CHECK_NEAR(angle_deg(l.d, rr.d), a, 1e-2);
+		/* Vertical FOV from the aspect: tan(v/2) = tan(h/2) * 480/640. */
+		render_ray top = cam_ray(&c, 320, 0, v2(0, 0), v2(0, 0));
+		render_ray bottom = cam_ray(&c, 320, 479, v2(0, 1), v2(0, 0));
+		double v = 2 * atan(tan(a * M_PI / 360) * 0.75) * 180 / M_PI;
+		CHECK_NEAR(angle_deg(top.d, bottom.d), v, 1e-2);
+	}
+
+	/* Default camera: looks along +z, pixel x grows towards +x, pixel y grows towards -y. */
+	p = cam_params_default();
+	CHECK(cam_init(&c, &p, 100, 100), "default camera");
+	render_ray left = cam_ray(&c, 0, 50, v2(0.5f, 0.5f), v2(0, 0));
+	render_ray top = cam_ray(&c, 50, 0, v2(0.5f, 0.5f), v2(0, 0));
+	CHECK(left.d.x < 0 && left.d.z > 0, "left column looks to -x: (%g %g %g)", left.d.x, left.d.y,
+	      left.d.z);
+	CHECK(top.d.y > 0, "top row looks up: (%g %g %g)", top.d.x, top.d.y, top.d.z);
+	CHECK_NEAR(angle_deg(cam_ray(&c, 0, 50, v2(0, 0.5f), v2(0, 0)).d, v3(0, 0, 1)), 45, 1e-2);
+
+	/* right = -x mirrors (POV-Ray's right-handed camera); |right| and |up| set the aspect. */
+	p.right = v3(-2, 0, 0);
+	p.up = v3(0, 1, 0);
+	CHECK(cam_init(&c, &p, 100, 100), "mirrored camera");
+	left = cam_ray(&c, 0, 50, v2(0.5f, 0.5f), v2(0, 0));
+	CHECK(left.d.x > 0, "mirrored: left column looks to +x: (%g %g %g)", left.d.x, left.d.y, left.d.z);
+	render_ray top2 = cam_ray(&c, 50, 0, v2(0.5f, 0), v2(0, 0));
+	CHECK_NEAR(angle_deg(top2.d, v3(0, 0, 1)), atan(0.5) * 180 / M_PI, 1e-2);
+
+	/* Degenerate input is refused. */
+	p.look_at = p.location;
+	CHECK(!cam_init(&c, &p, 10, 10), "look_at == location accepted");
+	p = cam_params_default();
+	p.look_at = v3(0, 5, 0);
+	CHECK(!cam_init(&c, &p, 10, 10), "view parallel to sky accepted");
+
+	/* Thin lens: rays from anywhere on the lens through one pixel meet on the focal plane, and
+	 * their origins lie within aperture / 2 of the location. */
+	p = cam_params_default();
+	p.aperture = 0.5f;
+	p.focal_point = v3(0, 0, 4);
+	CHECK(cam_init(&c, &p, 64, 64), "thin lens");
+	rng g;
+	rng_seed(&g, 3, 4);
+	render_ray pin = cam_ray(&c, 10, 20, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
+	vec3 focus = v3_madd(pin.o, pin.d, 4.0f / pin.d.z);
+	float max_off = 0;
+	for (int i = 0; i < 1000; i++) {
+		render_ray lr = cam_ray(&c, 10, 20, v2(0.5f, 0.5f), v2(rng_float(&g), rng_float(&g)));
+		vec3 q = v3_madd(lr.o, lr.d, (4.0f - lr.o.z) / lr.d.z);
+		CHECK(v3_length(v3_sub(q, focus)) < 1e-4f, "lens ray misses focus by %g",
+		      v3_length(v3_sub(q, focus)));
+		CHECK(v3_length(lr.o) <= 0.25f + 1e-6f, "lens origin %g from the centre", v3_length(lr.o));
+		max_off = fmaxf(max_off, v3_length(lr.o));
+	}
+	CHECK(max_off > 0.2f, "lens samples cover the aperture: max offset %g", max_off);
+	return check_done("test_camera");
+}

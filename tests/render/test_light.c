@@ -1,0 +1,282 @@
+/* test_light: each light samples the density its pdf states (chi-square over directions or over
+ * the light's own domain), the pdfs integrate to one, the radiance a sample reports matches what a
+ * ray sees, and delta lights follow POV-Ray's point/spot/parallel laws. */
+#include "chi2.h"
+#include "render/light.h"
+#include "scenes.h"
+
+typedef struct lctx {
+	const light *l;
+	vec3 p;
+} lctx;
+
+static bool s_light(void *ctx, rng *g, vec3 *d)
+{
+	lctx *c = ctx;
+	light_sample ls;
+	if (!light_sample_from(c->l, c->p, v2(rng_float(g), rng_float(g)), &ls))
+		return false;
+	*d = ls.wi;
+	return true;
+}
+
+static double p_light(void *ctx, vec3 d)
+{
+	lctx *c = ctx;
+	return light_pdf(c->l, c->p, d, INFINITY, v3s(0));
+}
+
+static void test_sphere_light(long n)
+{
+	light l = light_sphere(v3(1, 2, 3), 0.8f, v3(2, 2, 2));
+	lctx c = {&l, v3(0.2f, -0.5f, 0.1f)};
+	vec3 axis = v3_normalize(v3_sub(l.pos, c.p));
+	float d = v3_length(v3_sub(l.pos, c.p));
+	double cos_max = sqrt(1.0 - 0.64 / ((double)d * d));
+	chi2_sphere("sphere light", s_light, p_light, &c, axis, cos_max, 10, 32, 4, n, 20);
+	/* Sampled points lie on the near side of the sphere, and pdf() agrees with the sample. */
+	rng g;
+	rng_seed(&g, 1, 1);
+	for (int i = 0; i < 1000; i++) {
+		light_sample ls;
+		CHECK(light_sample_from(&l, c.p, v2(rng_float(&g), rng_float(&g)), &ls),
+		      "sphere sample failed");
+		vec3 y = v3_madd(c.p, ls.wi, ls.dist);
+		CHECK_NEAR(v3_length(v3_sub(y, l.pos)), 0.8, 1e-4);
+		CHECK(v3_dot(v3_sub(y, l.pos), ls.wi) <= 1e-4f, "sample on the far side");
+		CHECK_NEAR(ls.pdf, light_pdf(&l, c.p, ls.wi, ls.dist, v3s(0)), 1e-3 * ls.pdf);
+		float t;
+		render_ray r = {c.p, ls.wi};
+		CHECK(light_sphere_hit(&l, &r, 0, INFINITY, &t) && fabsf(t - ls.dist) < 1e-3f * ls.dist,
+		      "ray misses: %g vs %g", t, ls.dist);
+	}
+	/* Far away a sphere light gives the irradiance of the point light of the same colour. */
+	light far = light_sphere(v3(0, 50, 0), 0.5f, v3(100, 100, 100));
+	double e = 0;
+	for (int i = 0; i < 10000; i++) {
+		light_sample ls;
+		if (light_sample_from(&far, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+			e += ls.li.x * ls.wi.y / ls.pdf;
+	}
+	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
+	/* A tiny, distant sphere (r / d = 1e-3, cos_max within 4 ulps of 1) keeps its cone exact:
+	 * every sample hits it, pdf() agrees, and the irradiance is the point light's. */
+	light tiny = light_sphere(v3(0, 50, 0), 0.05f, v3(100, 100, 100));
+	e = 0;
+	int misses = 0;
+	for (int i = 0; i < 10000; i++) {
+		light_sample ls;
+		float t;
+		if (!light_sample_from(&tiny, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		render_ray r = {v3s(0), ls.wi};
+		misses += !light_sphere_hit(&tiny, &r, 0, INFINITY, &t) ||
+			  light_pdf(&tiny, v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
+		e += ls.li.x * ls.wi.y / ls.pdf;
+	}
+	CHECK(misses == 0, "tiny sphere light: %d of 10000 samples miss it or disagree on the pdf", misses);
+	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
+	light_sample ls;
+	CHECK(!light_sample_from(&l, l.pos, v2(0.5f, 0.5f), &ls), "sampling from inside a sphere light");
+}
+
+static void test_background(long n)
+{
+	light l = light_background(v3(0.5f, 1, 2));
+	lctx c = {&l, v3(3, 1, 2)};
+	chi2_sphere("background", s_light, p_light, &c, v3(0, 1, 0), -1.0, 16, 32, 4, n, 21);
+	CHECK_NEAR(light_radiance_dir(&l, v3(0, 0, 1)).z, 2.0, 0);
+}
+
+static void test_envmap(long n)
+{
+	enum { W = 16, H = 8 };
+	float img[W * H * 3];
+	for (int i = 0; i < W * H; i++) {
+		float v = (float)((i * 37) % 11) * 0.1f; /* includes zeros */
+		img[3 * i] = v;
+		img[3 * i + 1] = 0.5f * v;
+		img[3 * i + 2] = 2.0f * v;
+	}
+	img[3 * (3 * W + 5) + 1] = 40.0f; /* a sun */
+	xform rot = xform_rotate(d3(20, 75, -10));
+	light l;
+	CHECK(light_envmap_init(&l, img, W, H, 1.5f, &rot), "envmap init");
+
+	/* (u, v) cells are drawn in proportion to luminance * sin(theta at the row centre). */
+	double obs[W * H] = {0}, ex[W * H], sum = 0;
+	for (int i = 0; i < W * H; i++) {
+		const float *p = img + 3 * i;
+		ex[i] = v3_luminance(v3(p[0], p[1], p[2])) * sin(M_PI * (i / W + 0.5) / H);
+		sum += ex[i];
+	}
+	rng g;
+	rng_seed(&g, 9, 2);
+	xform inv = {0};
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			inv.m[i][j] = rot.m[j][i];
+	for (long i = 0; i < n; i++) {
+		light_sample ls;
+		if (!light_sample_from(&l, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		vec3 local = d3_to_v3(xform_vector(&inv, v3_to_d3(ls.wi)));
+		vec2 uv = light_env_uv(local);
+		int x = (int)(uv.x * W), y = (int)(uv.y * H);
+		x = x >= W ? W - 1 : x;
+		y = y >= H ? H - 1 : y;
+		obs[y * W + x] += 1;
+		if (i < 2000) {
+			CHECK_NEAR(ls.pdf, light_pdf(&l, v3s(0), ls.wi, INFINITY, v3s(0)), 2e-3 * ls.pdf);
+			vec3 seen = light_radiance_dir(&l, ls.wi);
+			CHECK_NEAR(seen.y, ls.li.y, 1e-5);
+		}
+	}
+	for (int i = 0; i < W * H; i++)
+		ex[i] *= n / sum;
+	chi2_counts("environment map (u,v cells)", obs, ex, W * H);
+
+	/* The solid-angle pdf integrates to one over the sphere (midpoint rule in (u, v)). */
+	double integral = 0;
+	const int NU = 8 * W, NV = 8 * H;
+	for (int j = 0; j < NV; j++)
+		for (int i = 0; i < NU; i++) {
+			vec2 uv = v2((i + 0.5f) / NU, (j + 0.5f) / NV);
+			vec3 wd = d3_to_v3(xform_vector(&rot, v3_to_d3(light_env_dir(uv))));
+			float st = sinf(uv.y * RENDER_PI);
+			integral += light_pdf(&l, v3s(0), wd, INFINITY, v3s(0)) * st * 2 * M_PI * M_PI /
+				    ((double)NU * NV);
+		}
+	CHECK_NEAR(integral, 1.0, 1e-3);
+
+	/* The convention: the map's centre is straight ahead (+z), row 0 is up, u = 0.75 is +x. */
+	vec3 ahead = light_env_dir(v2(0.5f, 0.5f)), up = light_env_dir(v2(0.3f, 0.0f)),
+	     right = light_env_dir(v2(0.75f, 0.5f));
+	CHECK(ahead.z > 0.999f && up.y > 0.999f && right.x > 0.999f,
+	      "ahead (%g %g %g) up (%g %g %g) right (%g %g %g)", ahead.x, ahead.y, ahead.z, up.x, up.y, up.z,
+	      right.x, right.y, right.z);
+	vec2 back = light_env_uv(light_env_dir(v2(0.3f, 0.6f)));
+	CHECK(fabsf(back.x - 0.3f) < 1e-5f && fabsf(back.y - 0.6f) < 1e-5f, "uv round trip (%g %g)", back.x,
+	      back.y);
+	light_free(&l);
+}
+
+static void test_mesh(long n)
+{
+	/* Three triangles far apart, of areas 0.5, 2 and 4.5, one of them seen from behind. */
+	vec3 v[9] = {v3(0, 2, 0), v3(1, 2, 0),	 v3(0, 2, 1),  v3(3, 0, -1), v3(3, 2, -1),
+		     v3(3, 0, 1), v3(-2, -1, 4), v3(1, -1, 4), v3(-2, 2, 4)};
+	light l;
+	CHECK(light_mesh_init(&l, v, 3, v3(1, 2, 3)), "mesh init");
+	CHECK_NEAR(l.area, 7.0, 1e-5);
+	vec3 p = v3(0.5f, 0.3f, 0.2f);
+	enum { NB = 6, NBIN = 3 * NB * NB };
+	double obs[NBIN] = {0}, ex[NBIN];
+	rng g;
+	rng_seed(&g, 4, 4);
+	for (long i = 0; i < n; i++) {
+		light_sample ls;
+		if (!light_sample_from(&l, p, v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		vec3 y = v3_madd(p, ls.wi, ls.dist);
+		int k = y.y > 1.99f ? 0 : y.x > 2.99f ? 1 : 2; /* which triangle, by its plane */
+		const vec3 *t = v + 3 * k;
+		/* Barycentric of vertex 0 and vertex 1 from sub-triangle areas. */
+		vec3 nrm = v3_cross(v3_sub(t[1], t[0]), v3_sub(t[2], t[0]));
+		float a = v3_length(nrm);
+		float b0 = v3_length(v3_cross(v3_sub(t[1], y), v3_sub(t[2], y))) / a;
+		float b1 = v3_length(v3_cross(v3_sub(t[2], y), v3_sub(t[0], y))) / a;
+		int i0 = (int)(b0 * NB), i1 = (int)(b1 / fmaxf(1e-6f, 1 - b0) * NB);
+		i0 = i0 >= NB ? NB - 1 : i0;
+		i1 = i1 >= NB ? NB - 1 : i1;
+		obs[k * NB * NB + i0 * NB + i1] += 1;
+		if (i < 1000) {
+			float pdf = light_pdf(&l, p, ls.wi, ls.dist, v3_normalize(nrm));
+			CHECK_NEAR(ls.pdf, pdf, 1e-3 * pdf);
+		}
+	}
+	const double area[3] = {0.5, 2.0, 4.5};
+	for (int k = 0; k < 3; k++)
+		for (int i0 = 0; i0 < NB; i0++)
+			for (int i1 = 0; i1 < NB; i1++) {
+				double lo = (double)i0 / NB, hi = (double)(i0 + 1) / NB;
+				ex[k * NB * NB + i0 * NB + i1] =
+				    n * area[k] / 7.0 * ((1 - lo) * (1 - lo) - (1 - hi) * (1 - hi)) / NB;
+			}
+	chi2_counts("mesh light (triangle, barycentrics)", obs, ex, NBIN);
+
+	/* The solid-angle pdf integrates to one: 4 pi E[pdf(d)] over uniform directions d that hit. */
+	double sum = 0, sum2 = 0;
+	long m = test_samples(400000);
+	for (long i = 0; i < m; i++) {
+		vec3 d = render_uniform_sphere(v2(rng_float(&g), rng_float(&g)));
+		render_ray r = {p, d};
+		double best = INFINITY, pdf = 0;
+		for (int k = 0; k < 3; k++) {
+			float t;
+			if (ts_tri_hit(v + 3 * k, &r, 0, (float)best, &t)) {
+				best = t;
+				vec3 nrm = v3_normalize(
+				    v3_cross(v3_sub(v[3 * k + 1], v[3 * k]), v3_sub(v[3 * k + 2], v[3 * k])));
+				pdf = light_pdf(&l, p, d, t, nrm);
+			}
+		}
+		sum += pdf * 4 * M_PI;
+		sum2 += pdf * pdf * 16 * M_PI * M_PI;
+	}
+	double mean = sum / m, se = sqrt((sum2 / m - mean * mean) / m);
+	CHECK(fabs(mean - 1.0) < 5 * se + 1e-3, "mesh pdf integrates to %g +- %g", mean, se);
+	light_free(&l);
+}
+
+static void test_delta_and_set(void)
+{
+	light pt = light_point(v3(0, 4, 0), v3(8, 8, 8));
+	light_sample ls;
+	CHECK(light_sample_from(&pt, v3(0, 2, 0), v2(0, 0), &ls) && ls.delta, "point sample");
+	CHECK_NEAR(ls.li.x, 2.0, 1e-6);
+	CHECK_NEAR(ls.dist, 2.0, 1e-6);
+
+	/* Spot: radius 20, falloff 40 degrees about -y; full at 10 deg, zero at 45, smoothstep at 30. */
+	light sp = light_spot(v3(0, 1, 0), v3(0, 0, 0), v3s(1), 20, 40);
+	for (float deg = 10; deg <= 45; deg += 5) {
+		float r = deg * RENDER_PI / 180;
+		vec3 q = v3(sinf(r), 1 - cosf(r), 0); /* at distance 1 from the light */
+		bool ok = light_sample_from(&sp, q, v2(0, 0), &ls);
+		float c20 = cosf(20 * RENDER_PI / 180), c40 = cosf(40 * RENDER_PI / 180),
+		      t = (cosf(r) - c40) / (c20 - c40);
+		double want = deg <= 20 ? 1.0 : deg >= 40 ? 0.0 : t * t * (3 - 2 * t);
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "spot at %g deg: %g, want %g", deg,
+		      ok ? ls.li.x : 0.0, want);
+	}
+
+	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));
+	CHECK(light_sample_from(&par, v3(5, 5, 5), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
+	CHECK(fabsf(ls.wi.y - sqrtf(0.5f)) < 1e-6f && fabsf(ls.wi.z + sqrtf(0.5f)) < 1e-6f && ls.li.y == 3.0f,
+	      "parallel wi (%g %g %g) li %g", ls.wi.x, ls.wi.y, ls.wi.z, ls.li.y);
+
+	/* Selection by power: a point light of intensity I has power 4 pi I. */
+	light_set s;
+	light_set_init(&s);
+	light a = light_point(v3s(0), v3s(1)), b = light_point(v3s(1), v3s(3)), bg = light_background(v3s(1));
+	light_set_add(&s, &a);
+	light_set_add(&s, &b);
+	light_set_add(&s, &bg);
+	CHECK(light_set_finish(&s, 1.0f), "set finish");
+	double total = 4 * M_PI * 4 + 4 * M_PI * M_PI;
+	CHECK_NEAR(light_set_prob(&s, 1), 4 * M_PI * 3 / total, 1e-6);
+	CHECK_NEAR(light_set_prob(&s, 2), 4 * M_PI * M_PI / total, 1e-6);
+	CHECK(s.infinite_count == 1 && s.infinite[0] == 2, "infinite lights: %zu", s.infinite_count);
+	light_set_free(&s);
+}
+
+int main(void)
+{
+	long n = test_samples(1000000);
+	test_sphere_light(n);
+	test_background(n);
+	test_envmap(n);
+	test_mesh(n);
+	test_delta_and_set();
+	return check_done("test_light");
+}
