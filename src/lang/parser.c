@@ -541,9 +541,9 @@ static bool do_end(parser *p, diag_loc loc)
 	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
 	if (++c->iterations >= limit)
 		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
-	if (++p->total_iterations >= DEFAULT_TOTAL_ITERATIONS)
-		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %d in all)",
-				  DEFAULT_TOTAL_ITERATIONS);
+	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
+	if (++p->total_iterations >= total)
+		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	lang_lexer after_end = *lx;
 	*lx = c->restart;

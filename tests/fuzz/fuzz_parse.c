@@ -44,7 +44,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		p = z + 1;
 	}
 	/* A lower loop bound keeps every input fast; the limit's own error path is still reached. */
-	lang_options opt = {.read = read_chunk, .read_user = &c, .max_loop_iterations = 2000};
+	lang_options opt = {.read = read_chunk, .read_user = &c, .max_loop_iterations = 200};
 	diag d;
 	diag_init(&d, NULL);
 	scene *sc = NULL;
