@@ -193,6 +193,7 @@ typedef struct scene_stats {
 	size_t materials_by_kind[MAT_KIND_COUNT];
 	size_t mesh_triangles; /* explicit triangles only; tessellation comes later */
 	size_t subdiv_faces;
+	size_t sss_nonuniform; /* SSS objects under a non-uniform transform: flattened at build */
 	size_t memory_bytes; /* estimated IR memory */
 } scene_stats;
 void scene_stats_get(const scene *s, scene_stats *st);

@@ -35,6 +35,10 @@ expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
 expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
 expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
 grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+printf 'sphere { 0, 1 scale <1, 2, 1> material { skin {} } }\nsphere { 0, 1 scale 2 material { wax {} } }\n' >"$tmp/nu.pov"
+expect 0 "non-uniform SSS" -- "$CIRCE" check "$tmp/nu.pov"
+grep -q "SSS objects under a non-uniform scale: 1 " "$tmp/out" || { echo "FAIL non-uniform SSS not reported"; fail=1; }
+
 # A large file is mapped and its pages dropped behind the lexer: a validation error found after
 # the parse must still quote its line from the start of the file.
 {
