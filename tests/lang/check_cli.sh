@@ -18,7 +18,7 @@ expect() { # expect STATUS DESCRIPTION -- command...
 }
 good="$srcdir/tests/good"
 expect 0 "good scene" -- "$CIRCE" check -I "$good/inc" "$good/include_path.pov"
-grep -q "objects:    4" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
+grep -q "objects:    5" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
 grep -q "triangles after tessellation: (tessellation not yet built)" "$tmp/out" ||
 	{ echo "FAIL summary lacks the honest triangle line"; fail=1; }
 expect 1 "missing file" -- "$CIRCE" check "$tmp/none.pov"
