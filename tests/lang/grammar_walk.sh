@@ -1,6 +1,6 @@
 #!/bin/sh
 # grammar_walk: every rule of grammar/scene.ebnf is named in a `// rule:` comment of
-# tests/good/grammar_walk.pov, and that scene parses (its IR is compared by tests/good/run.sh).
+# tests/good/grammar_walk.pov, and that scene parses (its IR is compared by tests/lang/good_scenes.sh).
 set -u
 : "${CIRCE:?}" "${srcdir:?}"
 ebnf="$srcdir/grammar/scene.ebnf"
