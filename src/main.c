@@ -68,6 +68,9 @@ static void print_check_summary(const char *path, const scene *sc)
 	printf("%s\n", total ? "" : " none");
 	printf("  mesh triangles given: %zu, subdivision cage faces: %zu\n", st.mesh_triangles, st.subdiv_faces);
 	printf("  triangles after tessellation: (tessellation not yet built)\n");
+	if (st.sss_nonuniform)
+		printf("  SSS objects under a non-uniform scale: %zu (circles become ellipses there: their "
+		       "triangles are flattened into world space at build)\n", st.sss_nonuniform);
 	printf("  estimated IR memory: %.1f KiB\n", (double)st.memory_bytes / 1024.0);
 }
 

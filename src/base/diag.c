@@ -4,6 +4,7 @@
 #include "base/mem.h"
 
 #include <string.h>
+#include <sys/mman.h>
 
 void diag_init(diag *d, FILE *out)
 {
@@ -19,7 +20,10 @@ void diag_free(diag *d)
 	while (s) {
 		diag_source *next = s->next;
 		mem_free(s->name);
-		mem_free(s->text);
+		if (s->map)
+			munmap(s->map, s->map_len);
+		else
+			mem_free(s->text);
 		mem_free(s);
 		s = next;
 	}
@@ -42,6 +46,43 @@ const diag_source *diag_add_source(diag *d, const char *name, const char *text, 
 	memcpy(s->text, text, len);
 	s->text[len] = '\0';
 	s->len = len;
+	s->next = d->sources;
+	d->sources = s;
+	return s;
+}
+
+const diag_source *diag_adopt_source(diag *d, const char *name, char *text, size_t len)
+{
+	diag_source *s = mem_calloc(1, sizeof *s);
+	if (s)
+		s->name = mem_strdup(name);
+	if (!s || !s->name) {
+		mem_free(s);
+		mem_free(text);
+		return NULL;
+	}
+	text[len] = '\0';
+	s->text = text;
+	s->len = len;
+	s->next = d->sources;
+	d->sources = s;
+	return s;
+}
+
+const diag_source *diag_adopt_mapped(diag *d, const char *name, void *map, size_t map_len, size_t skip)
+{
+	diag_source *s = mem_calloc(1, sizeof *s);
+	if (s)
+		s->name = mem_strdup(name);
+	if (!s || !s->name) {
+		mem_free(s);
+		munmap(map, map_len);
+		return NULL;
+	}
+	s->map = map;
+	s->map_len = map_len;
+	s->text = (char *)map + skip;
+	s->len = map_len - skip;
 	s->next = d->sources;
 	d->sources = s;
 	return s;

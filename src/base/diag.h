@@ -12,8 +12,10 @@
 
 typedef struct diag_source {
 	char *name; /* as the user wrote it (or as found on the search path) */
-	char *text; /* the bytes of the file, NUL-terminated */
+	char *text; /* the bytes of the file, NUL-terminated unless mapped */
 	size_t len;
+	void *map; /* non-NULL: text lies in this read-only file mapping of map_len bytes */
+	size_t map_len;
 	struct diag_source *next;
 } diag_source;
 
@@ -37,6 +39,15 @@ void diag_free(diag *d);
 
 /* Registers a copy of a source text so later reports can quote it; NULL when memory runs out. */
 const diag_source *diag_add_source(diag *d, const char *name, const char *text, size_t len);
+
+/* Like diag_add_source, but takes ownership of text (from mem_alloc, len + 1 bytes with
+ * text[len] == '\0'), so a large file is not held twice. On failure text is freed, NULL returned. */
+const diag_source *diag_adopt_source(diag *d, const char *name, char *text, size_t len);
+
+/* Registers a read-only file mapping (mmap) as a source: text is map + skip, len map_len - skip,
+ * and no NUL follows it (readers must stop at len). diag_free unmaps it; NULL on failure (the
+ * mapping is then unmapped). Its pages may be dropped (madvise) and fault back in when quoted. */
+const diag_source *diag_adopt_mapped(diag *d, const char *name, void *map, size_t map_len, size_t skip);
 
 /* Reports at loc (loc.src may be NULL: then `circe: error: message`). */
 void diag_report(diag *d, diag_kind kind, diag_loc loc, const char *fmt, ...)

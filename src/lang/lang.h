@@ -30,6 +30,8 @@ typedef struct lang_options {
 	double clock; /* the value of `clock` */
 	lang_read_fn read; /* NULL: read from the file system */
 	void *read_user;
+	long max_loop_iterations; /* per #while (and 10x that in all); 0: LANG_MAX_LOOP_ITERATIONS and
+				     10,000,000 in all. A fuzzer lowers it to keep inputs fast. */
 } lang_options;
 
 typedef enum lang_status {

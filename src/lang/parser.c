@@ -10,6 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 enum { DEFAULT_TOTAL_ITERATIONS = 10000000 }; /* all #while loops of one parse together */
 
@@ -123,6 +127,12 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	if (!f)
 		return errno ? errno : ENOENT;
 	size_t cap = 1 << 16, n = 0;
+	if (fseek(f, 0, SEEK_END) == 0) { /* size the buffer once for a regular file */
+		long size = ftell(f);
+		if (size > 0 && (unsigned long)size < SIZE_MAX - 2)
+			cap = (size_t)size + 2;
+		rewind(f);
+	}
 	char *buf = mem_alloc(cap, 1);
 	if (!buf) {
 		fclose(f);
@@ -155,19 +165,75 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	return 0;
 }
 
-/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value. */
+/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
+ * The text is handed to diag, not copied: a 100 MB mesh is held once. */
+/* Files at least this large are mapped rather than read, and the pages the lexer has left
+ * behind are dropped as it goes: a 100 MB mesh then never holds 100 MB of text at once. */
+enum { MAP_MIN_BYTES = 1 << 20, RELEASE_STEP = 8 << 20, RELEASE_MARGIN = 1 << 20 };
+
+/* Maps a large regular file; 0, an errno value, or -1 when the file should be read instead. */
+static int map_source(parser *p, const char *path, const diag_source **out)
+{
+	int fd = open(path, O_RDONLY);
+	if (fd < 0)
+		return errno ? errno : ENOENT;
+	struct stat st;
+	if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < MAP_MIN_BYTES) {
+		close(fd);
+		return -1;
+	}
+	size_t len = (size_t)st.st_size;
+	void *map = mmap(NULL, len, PROT_READ, MAP_PRIVATE, fd, 0);
+	close(fd);
+	if (map == MAP_FAILED)
+		return -1;
+	const unsigned char *b = map;
+	size_t skip = b[0] == 0xEF && b[1] == 0xBB && b[2] == 0xBF ? 3 : 0;
+	*out = diag_adopt_mapped(p->d, path, map, len, skip);
+	return *out ? 0 : ENOMEM;
+}
+
+/* Hands the pages of a mapped source that lie well behind the lexer back to the kernel. They are
+ * clean file pages: quoting a line there, or a #while jumping back, faults them in again. */
+static void release_behind(include_frame *f)
+{
+	const diag_source *src = f->lx.src;
+	if (!src->map || f->lx.p - f->released < RELEASE_STEP)
+		return;
+	uintptr_t page = (uintptr_t)sysconf(_SC_PAGESIZE);
+	uintptr_t from = ((uintptr_t)f->released + page - 1) & ~(page - 1);
+	uintptr_t to = ((uintptr_t)f->lx.p - RELEASE_MARGIN) & ~(page - 1);
+	if (to > from) {
+#ifdef MADV_DONTNEED
+		madvise((void *)from, to - from, MADV_DONTNEED);
+#endif
+		f->released = (const char *)to;
+	}
+}
+
 static int open_source(parser *p, const char *path, const diag_source **out)
 {
+	if (p->opt.read == lang_read_file) {
+		int err = map_source(p, path, out);
+		if (err >= 0)
+			return err;
+	}
 	char *text = NULL;
 	size_t len = 0;
 	int err = p->opt.read(p->opt.read_user, path, &text, &len);
 	if (err)
 		return err;
-	const char *t = text;
-	if (len >= 3 && (unsigned char)t[0] == 0xEF && (unsigned char)t[1] == 0xBB && (unsigned char)t[2] == 0xBF)
-		t += 3, len -= 3;
-	*out = diag_add_source(p->d, path, t, len);
-	mem_free(text);
+	size_t skip = 0;
+	if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
+		skip = 3;
+	char *owned = mem_realloc(text, len + 1, 1); /* room for the NUL */
+	if (!owned) {
+		mem_free(text);
+		return ENOMEM;
+	}
+	if (skip)
+		memmove(owned, owned + skip, len - skip);
+	*out = diag_adopt_source(p->d, path, owned, len - skip);
 	return *out ? 0 : ENOMEM;
 }
 
@@ -178,6 +244,7 @@ static bool push_file(parser *p, const diag_source *src, const char *path, diag_
 	f->path = path;
 	f->included_at = at;
 	f->cond_base = p->n_conds;
+	f->released = src->text;
 	return true;
 }
 
@@ -471,12 +538,12 @@ static bool do_end(parser *p, diag_loc loc)
 		p->n_conds--;
 		return true;
 	}
-	long limit = LANG_MAX_LOOP_ITERATIONS;
+	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
 	if (++c->iterations >= limit)
 		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
-	if (++p->total_iterations >= DEFAULT_TOTAL_ITERATIONS)
-		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %d in all)",
-				  DEFAULT_TOTAL_ITERATIONS);
+	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
+	if (++p->total_iterations >= total)
+		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	lang_lexer after_end = *lx;
 	*lx = c->restart;
@@ -527,12 +594,14 @@ static bool fetch(parser *p, lang_token *t)
 			*t = p->eof;
 			return !p->failed;
 		}
-		if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, t)) {
+		include_frame *f = &p->files[p->n_files - 1];
+		if (!lang_lex(&f->lx, p->d, t)) {
 			p->failed = true;
 			p->eof.loc = t->loc;
 			*t = p->eof;
 			return false;
 		}
+		release_behind(f);
 		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF &&
 		    !(t->kind == LTK_UNSUPPORTED && t->text[0] == '#'))
 			return true;

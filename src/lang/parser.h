@@ -33,6 +33,7 @@ typedef struct include_frame {
 	const char *path; /* as resolved; the folder of later includes */
 	diag_loc included_at; /* the #include directive (no source for the main file) */
 	int cond_base; /* the conditional stack depth when the file was entered */
+	const char *released; /* mapped sources: text before this was handed back to the kernel */
 } include_frame;
 
 typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE } cond_kind;

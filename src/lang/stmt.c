@@ -46,6 +46,29 @@ static bool in_range(parser *p, diag_loc loc, const char *what, double x, double
 	return lang_error(p, loc, "%s must be in [%g, %g], found %g", what, lo, hi, x);
 }
 
+/* A file named by the scene (mesh, cage, image, normal map): a relative path is resolved against
+ * the folder of the file that names it, as #include does, so the IR holds paths that open as is. */
+static bool asset_path(parser *p, const char *what, const char **out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	const char *name;
+	TRY(lang_string(p, what, &name));
+	const char *from = loc.src ? loc.src->name : "";
+	const char *slash = strrchr(from, '/');
+	if (name[0] == '/' || !slash) {
+		*out = name;
+		return true;
+	}
+	size_t dlen = (size_t)(slash - from) + 1, nlen = strlen(name);
+	char *path = arena_alloc(&p->sc->arena, dlen + nlen + 1, 1, 1);
+	if (!path)
+		return lang_error(p, loc, "out of memory");
+	memcpy(path, from, dlen);
+	memcpy(path + dlen, name, nlen + 1);
+	*out = path;
+	return true;
+}
+
 /* ---- materials --------------------------------------------------------------------------- */
 
 static scene_material *new_material(parser *p, diag_loc loc, scene_material_kind kind)
@@ -88,7 +111,7 @@ static bool pigment(parser *p, scene_material *m)
 		if (k != LTK_KW_PNG && k != LTK_KW_JPEG && k != LTK_KW_EXR)
 			return lang_error_found(p, "expected the image type (png, jpeg or exr) in 'image_map'");
 		lang_advance(p);
-		TRY(lang_string(p, "as the image file", &m->image));
+		TRY(asset_path(p, "as the image file", &m->image));
 		TRY(lang_expect_close(p, io, "image_map"));
 	} else {
 		TRY(lang_color(p, "as the pigment colour", &m->color));
@@ -288,7 +311,7 @@ static bool sss_block(parser *p, scene_material *m)
 		case LTK_KW_IMAGE:
 			lang_advance(p);
 			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(lang_string(p, "after 'image'", &s->albedo_image));
+			TRY(asset_path(p, "after 'image'", &s->albedo_image));
 			break;
 		case LTK_KW_RADIUS:
 			lang_advance(p);
@@ -345,7 +368,7 @@ static bool sss_block(parser *p, scene_material *m)
 		}
 		case LTK_KW_NORMAL_MAP:
 			lang_advance(p);
-			TRY(lang_string(p, "after 'normal_map'", &s->normal_map));
+			TRY(asset_path(p, "after 'normal_map'", &s->normal_map));
 			if (lang_peek(p)->kind == LTK_KW_STRENGTH) {
 				lang_advance(p);
 				TRY(lang_float(p, "after 'strength'", &x));
@@ -402,7 +425,7 @@ static bool material(parser *p, const scene_material **out)
 			TRY(open_block(p, "diffuse", &dopen));
 			m->kind = MAT_DIFFUSE;
 			if (lang_accept(p, LTK_KW_IMAGE))
-				TRY(lang_string(p, "after 'image'", &m->image));
+				TRY(asset_path(p, "after 'image'", &m->image));
 			else
 				TRY(lang_color(p, "as the diffuse colour", &m->color));
 			TRY(lang_expect_close(p, dopen, "diffuse"));
@@ -676,6 +699,11 @@ static void meshbuf_free(meshbuf *b)
 static void *take(vecbuf *v, uint32_t *n)
 {
 	void *d = v->len ? v->data : NULL;
+	if (d && v->cap > v->len) { /* give back the growth slack */
+		void *shrunk = mem_realloc(d, v->len, v->elem);
+		if (shrunk)
+			d = shrunk;
+	}
 	if (n)
 		*n = (uint32_t)v->len;
 	if (!v->len)
@@ -748,7 +776,7 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	if (lang_accept(p, LTK_KW_FILE)) {
 		scene_geom *g;
 		TRY(g = new_geom(p, SHAPE_MESH_FILE, kw));
-		TRY(lang_string(p, "after 'file'", &g->u.file.path));
+		TRY(asset_path(p, "after 'file'", &g->u.file.path));
 		size_t start = out->len;
 		TRY(place(p, out, g, kw));
 		return object_tail(p, out, start, open, "mesh");
@@ -798,8 +826,15 @@ static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, v
 	snprintf(ctx_s, sizeof ctx_s, "as the item count of '%s'", what);
 	diag_loc nloc = lang_peek(p)->loc;
 	TRY(lang_int(p, ctx_s, 0, UINT32_MAX / 4, &n));
-	/* Reserve what the count announces, within reason: a hostile count must not allocate. */
-	if (reserve && !vecbuf_reserve(reserve, (size_t)(n < (1 << 20) ? n : (1 << 20)) * per_item))
+	/* Reserve what the count announces, within reason: every item takes at least two bytes of
+	 * text, so a hostile count cannot make the reservation exceed the file's size. */
+	size_t most = 0; /* no file left: the scene ended right after the count */
+	if (p->n_files > 0) {
+		const lang_lexer *lx = &p->files[p->n_files - 1].lx;
+		most = (size_t)(lx->end - lx->p) / 2;
+	}
+	size_t want = (size_t)n < most ? (size_t)n : most;
+	if (reserve && !vecbuf_reserve(reserve, want * per_item))
 		return lang_error(p, nloc, "out of memory");
 	uint32_t i = 0;
 	while (lang_peek(p)->kind == LTK_COMMA) {
@@ -820,17 +855,24 @@ typedef struct list_ctx {
 	meshbuf *b;
 	vecbuf *dst;
 	const char *what;
+	char item_ctx[48]; /* "in 'face_indices'": made once per list, not per item */
 	uint32_t limit; /* indices must be below this (0: not checked here) */
 	const char *target; /* what the indices refer to */
 } list_ctx;
+
+static const char *item_ctx(list_ctx *x)
+{
+	if (!x->item_ctx[0])
+		snprintf(x->item_ctx, sizeof x->item_ctx, "in '%s'", x->what);
+	return x->item_ctx;
+}
 
 static bool item_v3(parser *p, void *c, uint32_t i)
 {
 	list_ctx *x = c;
 	dvec3 v;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "as item %u of '%s'", i, x->what);
-	return lang_vec3(p, ctx, &v) && push_v3(p, x->dst, v);
+	(void)i;
+	return lang_vec3(p, item_ctx(x), &v) && push_v3(p, x->dst, v);
 }
 
 static bool item_uv(parser *p, void *c, uint32_t i)
@@ -853,9 +895,7 @@ static bool item_tri(parser *p, void *c, uint32_t i)
 	uint32_t idx[LANG_MAX_VECTOR];
 	int n;
 	diag_loc loc;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
-	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	TRY(lang_index_tuple(p, item_ctx(x), idx, &n, &loc));
 	if (n != 3)
 		return lang_error(p, loc, "face %u of '%s' has %d indices; mesh2 faces are triangles <a, b, c>", i, x->what, n);
 	for (int k = 0; k < 3; k++) {
@@ -874,9 +914,8 @@ static bool item_poly(parser *p, void *c, uint32_t i)
 	uint32_t idx[LANG_MAX_VECTOR];
 	int n;
 	diag_loc loc;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "in item %u of '%s'", i, x->what);
-	TRY(lang_index_tuple(p, ctx, idx, &n, &loc));
+	(void)i;
+	TRY(lang_index_tuple(p, item_ctx(x), idx, &n, &loc));
 	uint32_t un = (uint32_t)n;
 	TRY(push(p, x->dst == &x->b->faces ? &x->b->sizes : &x->b->nidx, &un));
 	if (x->dst == &x->b->faces)
@@ -904,7 +943,7 @@ static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 		return lang_error_found(p, "expected 'vertex_vectors' first in 'mesh2'");
 	for (;;) {
 		lang_token t = *lang_peek(p);
-		list_ctx c = {b, NULL, NULL, 0, NULL};
+		list_ctx c = {b, NULL, NULL, "", 0, NULL};
 		switch (t.kind) {
 		case LTK_KW_VERTEX_VECTORS:
 			TRY(once(p, &seen[0], &t));
@@ -1045,14 +1084,14 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 	uint32_t cnt;
 	for (;;) {
 		lang_token t = *lang_peek(p);
-		list_ctx c = {b, NULL, NULL, 0, NULL};
+		list_ctx c = {b, NULL, NULL, "", 0, NULL};
 		long n;
 		double x;
 		switch (t.kind) {
 		case LTK_KW_FILE:
 			TRY(once(p, &seen[0], &t));
 			lang_advance(p);
-			TRY(lang_string(p, "after 'file'", &d->file));
+			TRY(asset_path(p, "after 'file'", &d->file));
 			break;
 		case LTK_KW_VERTEX_VECTORS:
 			TRY(once(p, &seen[1], &t));
@@ -1494,7 +1533,7 @@ static bool sky_sphere(parser *p)
 			return true;
 		case LTK_KW_IMAGE:
 			lang_advance(p);
-			TRY(lang_string(p, "after 'image'", &s->image));
+			TRY(asset_path(p, "after 'image'", &s->image));
 			break;
 		case LTK_KW_INTENSITY:
 			lang_advance(p);

@@ -61,7 +61,7 @@ typedef struct scene_material {
 	uint32_t id;
 	const char *name; /* the #declare name, or NULL */
 	vec3 color; /* diffuse / texture albedo */
-	const char *image; /* albedo texture path, or NULL */
+	const char *image; /* albedo texture path (resolved against the naming file's folder), or NULL */
 	float diffuse, specular, roughness; /* texture finish; diffuse material: 1, 0, 1 */
 	float ior; /* texture interior { ior }; 0 when none */
 	vec3 emission; /* any kind may emit */

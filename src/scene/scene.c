@@ -266,8 +266,13 @@ void scene_stats_get(const scene *s, scene_stats *st)
 	st->objects = scene_n_objects(s);
 	st->lights = scene_n_lights(s);
 	st->geoms = s->n_geoms;
-	for (size_t i = 0; i < st->objects; i++)
-		st->instances += scene_object_at(s, i)->instance;
+	for (size_t i = 0; i < st->objects; i++) {
+		const scene_object *o = scene_object_at(s, i);
+		double scale;
+		st->instances += o->instance;
+		if (o->material && o->material->kind >= MAT_SKIN && !xform_is_similarity(&o->transform, &scale))
+			st->sss_nonuniform++;
+	}
 	for (const scene_material *m = s->materials; m; m = m->next)
 		st->materials_by_kind[m->kind]++;
 	st->memory_bytes = sizeof *s + s->arena.total + s->objects.cap * s->objects.elem +

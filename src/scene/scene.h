@@ -76,7 +76,7 @@ typedef struct scene_corner {
 
 /* A subdivision cage: either a file or inline vertices and faces of any size >= 3. */
 typedef struct scene_subdiv {
-	const char *file; /* NULL for an inline cage */
+	const char *file; /* NULL for an inline cage; resolved like scene_geom's file path */
 	vec3 *vertices;
 	uint32_t n_vertices;
 	uint32_t *face_sizes; /* n_faces entries */
@@ -116,7 +116,7 @@ typedef struct scene_geom {
 		} plane;
 		scene_mesh mesh;
 		struct {
-			const char *path; /* as written; resolved against the scene's folder by the importer */
+			const char *path; /* resolved against the folder of the file that names it */
 		} file;
 		scene_subdiv subdiv;
 	} u;
@@ -193,6 +193,7 @@ typedef struct scene_stats {
 	size_t materials_by_kind[MAT_KIND_COUNT];
 	size_t mesh_triangles; /* explicit triangles only; tessellation comes later */
 	size_t subdiv_faces;
+	size_t sss_nonuniform; /* SSS objects under a non-uniform transform: flattened at build */
 	size_t memory_bytes; /* estimated IR memory */
 } scene_stats;
 void scene_stats_get(const scene *s, scene_stats *st);

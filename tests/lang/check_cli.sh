@@ -18,7 +18,7 @@ expect() { # expect STATUS DESCRIPTION -- command...
 }
 good="$srcdir/tests/good"
 expect 0 "good scene" -- "$CIRCE" check -I "$good/inc" "$good/include_path.pov"
-grep -q "objects:    4" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
+grep -q "objects:    5" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
 grep -q "triangles after tessellation: (tessellation not yet built)" "$tmp/out" ||
 	{ echo "FAIL summary lacks the honest triangle line"; fail=1; }
 expect 1 "missing file" -- "$CIRCE" check "$tmp/none.pov"
@@ -35,4 +35,21 @@ expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
 expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
 expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
 grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+printf 'sphere { 0, 1 scale <1, 2, 1> material { skin {} } }\nsphere { 0, 1 scale 2 material { wax {} } }\n' >"$tmp/nu.pov"
+expect 0 "non-uniform SSS" -- "$CIRCE" check "$tmp/nu.pov"
+grep -q "SSS objects under a non-uniform scale: 1 " "$tmp/out" || { echo "FAIL non-uniform SSS not reported"; fail=1; }
+
+# A large file is mapped and its pages dropped behind the lexer: a validation error found after
+# the parse must still quote its line from the start of the file.
+{
+	printf 'subdivision_surface {\n  vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n'
+	printf '  faces { 2, <0, 1, 2>, <0, 2> }\n}\n'
+	awk 'BEGIN { for (i = 0; i < 160000; i++) print "// 0123456789012345678901234567890123456789012345678901234567" }'
+	printf 'sphere { 0, 1 }\n'
+} >"$tmp/big.pov"
+expect 3 "large mapped file" -- "$CIRCE" check "$tmp/big.pov"
+head -2 "$tmp/err" >"$tmp/got"
+printf '%s\n' "$tmp/big.pov:3:25: error: face 1 has 2 vertices; a face needs at least 3" \
+	"  faces { 2, <0, 1, 2>, <0, 2> }" | cmp -s - "$tmp/got" ||
+	{ echo "FAIL large mapped file: quoted line"; cat "$tmp/err"; fail=1; }
 exit $fail

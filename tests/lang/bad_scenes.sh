@@ -1,5 +1,5 @@
 #!/bin/sh
-# run.sh: every tests/bad/*.pov must make `circe check` exit 3 (never crash) with exactly the
+# bad_scenes: every tests/bad/*.pov must make `circe check` exit 3 (never crash) with exactly the
 # diagnostics of its .err sidecar: the header lines `file:line:col: error|note: message`.
 # With CIRCE_VALGRIND=1 (and $VALGRIND from configure) each case also runs under valgrind.
 set -u

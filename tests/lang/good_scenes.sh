@@ -1,5 +1,5 @@
 #!/bin/sh
-# run.sh: every tests/good/*.pov parses (`circe check --dump`, -I tests/good/inc) to exactly the IR
+# good_scenes: every tests/good/*.pov parses (`circe check --dump`, -I tests/good/inc) to exactly the IR
 # in its .dump golden file. CIRCE_UPDATE_GOLDEN=1 rewrites the goldens (a developer's act: it
 # writes into the source tree, so never in make check).
 set -u

@@ -1,0 +1,2 @@
+mesh2 {
+  vertex_vectors { 3

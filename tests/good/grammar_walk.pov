@@ -1,0 +1,64 @@
+// grammar_walk: one example of every rule of grammar/scene.ebnf; each `rule:` comment names the
+// rules the next lines use (tests/lang/grammar_walk.sh checks that none is missing).
+// rule: comment, scene, statement
+/* a block comment */
+// rule: directive, version, number
+#version 3.7;
+// rule: declare, identifier, expression, and, comparison, additive, term, unary, primary, float
+#declare A = -(1 + 2) * 3 / 3 + !0 - (1 < 2 & 2 <= 2 | 1 = 1 & 1 != 2 & 2 >= 1 & 2 > 1);
+// rule: vector_literal, vector, call, function, string, colour
+#declare V = <vlength(<3, 4, 0>), sin(0), clock>;
+#declare S = "tex.png";
+#declare C = color rgb <1, 0.5, 0.25>;
+// rule: block_value
+#declare Ball = sphere { 0, 1 }
+// rule: if, token
+#if (A < 0) sphere { 0, 2 } #else sphere { 0, 3 } #end
+// rule: while
+#declare I = 0;
+#while (I < 2) #declare I = I + 1; #end
+// rule: include
+#include "walk.inc"
+// rule: global_settings, integer
+global_settings { mm_per_unit 10 max_trace_level 4 assumed_gamma 1 }
+// rule: camera
+camera { perspective location <0, 1, -5> look_at 0 sky y angle 50 right x up y aperture 0.1 focal_point 0 }
+// rule: light_source
+light_source { <0, 5, 0>, color C intensity 2 radius 0.5 }
+light_source { <0, 5, 0> rgb 1 spotlight point_at 0 radius 10 falloff 20 }
+light_source { <0, 5, 0> rgb 1 parallel point_at 0 }
+// rule: background
+background { rgb 0.1 }
+// rule: sky_sphere
+sky_sphere { image "sky.exr" intensity 1 rotate y * 10 }
+// rule: object_item, sphere, modifier
+sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0> no_shadow }
+// rule: box, plane
+box { -1, 1 }
+plane { y, 0 }
+// rule: mesh, triangle, smooth_triangle
+mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z } }
+mesh { file "model.obj" }
+// rule: mesh2, list
+mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, -z } uv_vectors { 3, <0, 0>, <1, 0>, <0, 1> }
+        face_indices { 1, <0, 1, 2> } normal_indices { 1, <0, 0, 0> } uv_indices { 1, <0, 1, 2> } }
+// rule: subdivision_surface, subd_item, crease_list, corner_list
+subdivision_surface {
+  vertex_vectors { 4, 0, x, x + y, y } faces { 1, <0, 1, 2, 3> }
+  uv_vectors { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> } uv_faces { 1, <0, 1, 2, 3> }
+  creases { 1, <0, 1>, 2 } corners { 1, 2, 1 } scheme catmull_clark boundary edge_only level 2
+}
+subdivision_surface { file "cage.obj" scheme loop boundary edge_and_corner max_edge 1 }
+// rule: instance, union
+union { object { Ball } sphere { x, 0.5 } translate y }
+// rule: material, material_item, sss_block, sss_param
+sphere { 0, 1 material { diffuse { color C } } }
+sphere { 0, 1 material { diffuse { image S } emission rgb 0.5 } }
+sphere { 0, 1 material { skin { preset "skin2" sigma_a <0.1, 0.2, 0.3> ior 1.3 roughness 0.3 profile dipole
+  normal_map "n.png" strength 0.5 anisotropy 0.1 method circle group "g" } } }
+sphere { 0, 1 material { wax { color rgb 0.5 radius <1, 2, 3> profile gaussian method fullcircle } } }
+sphere { 0, 1 material { marble { image "m.png" radius 2 profile burley method disk } } }
+sphere { 0, 1 material { marble { sigma_s 0 + 2 sigma_a 0.01 } } }
+// rule: texture, pigment, finish, interior
+sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.5 specular 0.2 roughness 0.1 } } interior { ior 1.3 } }
+sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } interior { ior 1.2 } } }
