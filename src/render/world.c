@@ -11,35 +11,15 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 /* The grey of an object without a material: mid-grey diffuse. */
 #define WORLD_DEFAULT_GREY 0.5f
 
-/* A path written in the scene, resolved against the folder of the file it was written in; when
- * no such file exists there, the path as written (relative to the working directory). */
-static char *resolve_path(diag_loc loc, const char *path)
-{
-	if (path[0] == '/' || !loc.src)
-		return mem_strdup(path);
-	const char *name = loc.src->name, *slash = strrchr(name, '/');
-	if (!slash)
-		return mem_strdup(path);
-	size_t n = (size_t)(slash - name) + 1 + strlen(path) + 1;
-	char *full = mem_alloc(n, 1);
-	if (!full)
-		return NULL;
-	snprintf(full, n, "%.*s%s", (int)(slash - name + 1), name, path);
-	if (access(full, F_OK) == 0)
-		return full;
-	mem_free(full);
-	return mem_strdup(path);
-}
-
-/* The image at path (resolved at loc), loaded once per world; NULL after reporting an error. */
+/* The image at path (the language resolved it against the scene's folders), loaded once per
+ * world; NULL after reporting an error at loc. */
 static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d)
 {
-	char *full = resolve_path(loc, path);
+	char *full = mem_strdup(path);
 	if (!full) {
 		diag_error(d, loc, "out of memory");
 		return NULL;
@@ -165,11 +145,9 @@ static bool build_geom(world *w, const scene *sc, const scene_geom *g, const wor
 		return mesh_from_arrays(&a, m, d, g->loc);
 	}
 	case SHAPE_MESH_FILE: {
-		char *path = resolve_path(g->loc, g->u.file.path);
-		bool ok = path && mesh_import(path, m, d);
-		if (path && !ok)
+		bool ok = mesh_import(g->u.file.path, m, d);
+		if (!ok)
 			diag_note(d, g->loc, "the mesh file was named here");
-		mem_free(path);
 		return ok;
 	}
 	case SHAPE_SUBDIV:
