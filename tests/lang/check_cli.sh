@@ -19,8 +19,12 @@ expect() { # expect STATUS DESCRIPTION -- command...
 good="$srcdir/tests/good"
 expect 0 "good scene" -- "$CIRCE" check -I "$good/inc" "$good/include_path.pov"
 grep -q "objects:    5" "$tmp/out" || { echo "FAIL summary lacks the object count"; cat "$tmp/out"; fail=1; }
-grep -q "triangles after tessellation: (tessellation not yet built)" "$tmp/out" ||
-	{ echo "FAIL summary lacks the honest triangle line"; fail=1; }
+grep -Eq "triangles after tessellation: [1-9][0-9]* unique" "$tmp/out" ||
+	{ echo "FAIL summary lacks the tessellated triangle count"; cat "$tmp/out"; fail=1; }
+printf 'mesh { file "missing.obj" }\n' >"$tmp/nofile.pov"
+expect 3 "missing mesh file is a scene error" -- "$CIRCE" check "$tmp/nofile.pov"
+grep -q "nofile.pov:1:1: note: the mesh file was named here" "$tmp/err" ||
+	{ echo "FAIL missing mesh file message:"; cat "$tmp/err"; fail=1; }
 expect 1 "missing file" -- "$CIRCE" check "$tmp/none.pov"
 grep -qx "$tmp/none.pov: error: cannot open: No such file or directory" "$tmp/err" ||
 	{ echo "FAIL missing-file message:"; cat "$tmp/err"; fail=1; }
