@@ -28,6 +28,16 @@ static int check_count, check_failed;
 		      check_a_, #b, check_b_, (double)(tol));                              \
 	} while (0)
 
+/* A path inside dir, in one of four rotating buffers (so a call can take several). */
+static inline const char *check_path(const char *dir, const char *name)
+{
+	static char buf[4][256];
+	static int k;
+	k = (k + 1) % 4;
+	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+	return buf[k];
+}
+
 static inline int check_done(const char *name)
 {
 	printf("%s: %d checks, %d failed\n", name, check_count, check_failed);

@@ -12,14 +12,7 @@
 
 static char dir[] = "/tmp/circe-test-image-XXXXXX";
 
-static char *path(const char *name)
-{
-	static char buf[4][256];
-	static int k;
-	k = (k + 1) % 4;
-	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
-	return buf[k];
-}
+static const char *path(const char *name) { return check_path(dir, name); }
 
 static void write_jpeg(const char *p, int w, int h)
 {

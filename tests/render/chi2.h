@@ -11,6 +11,7 @@
 #include "base/rng.h"
 #include "base/vec.h"
 #include "check.h"
+#include "stats.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -35,42 +36,6 @@ static inline long test_samples(long n)
 	return m < 1000 ? 1000 : m;
 }
 
-/* Regularised upper incomplete gamma Q(a, x) (Numerical Recipes 6.2: series below a + 1,
- * continued fraction above). */
-static inline double chi2_gammq(double a, double x)
-{
-	if (x <= 0.0)
-		return 1.0;
-	double gln = lgamma(a);
-	if (x < a + 1.0) {
-		double ap = a, sum = 1.0 / a, del = sum;
-		for (int i = 0; i < 10000; i++) {
-			ap += 1.0;
-			del *= x / ap;
-			sum += del;
-			if (fabs(del) < fabs(sum) * 1e-15)
-				break;
-		}
-		return 1.0 - sum * exp(-x + a * log(x) - gln);
-	}
-	double b = x + 1.0 - a, c = 1.0 / 1e-300, d = 1.0 / b, h = d;
-	for (int i = 1; i < 10000; i++) {
-		double an = -i * (i - a);
-		b += 2.0;
-		d = an * d + b;
-		if (fabs(d) < 1e-300)
-			d = 1e-300;
-		c = b + an / c;
-		if (fabs(c) < 1e-300)
-			c = 1e-300;
-		d = 1.0 / d;
-		double del = d * c;
-		h *= del;
-		if (fabs(del - 1.0) < 1e-15)
-			break;
-	}
-	return exp(-x + a * log(x) - gln) * h;
-}
 
 static inline double chi2_alpha(void)
 {
@@ -112,7 +77,7 @@ static inline double chi2_counts(const char *name, const double *obs, const doub
 		bins++;
 	}
 	mem_free(pair);
-	double p = bins > 1 ? chi2_gammq(0.5 * (bins - 1), 0.5 * stat) : 1.0;
+	double p = bins > 1 ? stats_gamma_q(0.5 * (bins - 1), 0.5 * stat) : 1.0;
 	CHECK(p > chi2_alpha(), "%s: chi2 = %g over %d bins, p = %g below alpha %g", name, stat, bins, p,
 	      chi2_alpha());
 	printf("  %-40s chi2 %10.2f  dof %4d  p %.4f\n", name, stat, bins - 1, p);
