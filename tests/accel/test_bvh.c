@@ -77,7 +77,7 @@ static void check_degenerate(void)
 	long bad = 0, hits = 0;
 	for (int i = 0; i < 20000 && b; i++) {
 		bvh_ray r = test_random_ray(&m, v3s(0), v3s(1), &g);
-		bvh_hit hb, hr;
+		bvh_hit hb = {0}, hr = {0};
 		bool fb = bvh_intersect(b, &r, &hb), fr = brute_intersect(&bf, &r, &hr);
 		hits += fb;
 		if (fb != fr || (fb && (hb.prim != hr.prim || hb.t != hr.t)) || (fb && hb.prim % 5 != 3)) {
