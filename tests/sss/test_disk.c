@@ -7,6 +7,7 @@
 #include "check.h"
 #include "geom/prim.h"
 #include "sss/disk.h"
+#include "mean3.h"
 #include "sss_test.h"
 
 #include <stdio.h>
@@ -101,22 +102,9 @@ static sss_profile profile(sss_profile_kind kind, const double albedo[3], const 
 /* ---- the estimator --------------------------------------------------------------------------- */
 
 typedef struct estimate {
-	double s[3], s2[3];
-	long n, no_hit, more;
+	test_mean3 m;
+	long no_hit, more;
 } estimate;
-
-static void est_add(estimate *e, const double v[3])
-{
-	e->n++;
-	for (int c = 0; c < 3; c++)
-		e->s[c] += v[c], e->s2[c] += v[c] * v[c];
-}
-static double est_mean(const estimate *e, int c) { return e->s[c] / e->n; }
-static double est_se(const estimate *e, int c)
-{
-	double m = est_mean(e, c);
-	return sqrt(fmax(0.0, e->s2[c] / e->n - m * m) / (e->n - 1));
-}
 
 /* Mean of sum over hits of w_i g(y_i) (force_axis < 0: the MIS sampler; else that axis alone,
  * weighted by its own density), or with choose, the resampled single hit. */
@@ -161,7 +149,7 @@ static estimate run(const sss_profile *p, double mm_per_unit, const sss_disk_fra
 					v[c] += v3_get(w, c) * g_smooth(hits[j].p);
 			}
 		}
-		est_add(&e, v);
+		test_mean3_add(&e.m, v);
 	}
 	return e;
 }
@@ -169,9 +157,9 @@ static estimate run(const sss_profile *p, double mm_per_unit, const sss_disk_fra
 static void compare(const char *name, const estimate *e, const double want[3], int channels)
 {
 	for (int c = 0; c < channels; c++) {
-		double got = est_mean(e, c), se = est_se(e, c);
+		double got = test_mean3_mean(&e->m, c), se = test_mean3_se(&e->m, c);
 		printf("%-34s ch %d: quadrature %.6f, disk %.6f +- %.6f (%+.2f SE), no-hit %.3f\n", name, c, want[c], got,
-		       se, (got - want[c]) / se, (double)e->no_hit / e->n);
+		       se, (got - want[c]) / se, (double)e->no_hit / e->m.n);
 		CHECK(fabs(got - want[c]) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", name, c, got, se, want[c]);
 	}
 	CHECK(e->more == 0, "%s: %ld probes with more than %d hits", name, e->more, SSS_DISK_MAX_HITS);
@@ -207,13 +195,13 @@ static void check_plane(void)
 			for (int j = 0; j < h; j++)
 				for (int c = 0; c < 3; c++)
 					v[c] += v3_get(hits[j].weight, c);
-			est_add(&e, v);
+			test_mean3_add(&e.m, v);
 		}
 		const double *A = k == 0 ? grey : rgb;
 		for (int c = 0; c < 3; c++) {
-			double got = est_mean(&e, c), se = est_se(&e, c), sd = se * sqrt((double)e.n);
+			double got = test_mean3_mean(&e.m, c), se = test_mean3_se(&e.m, c), sd = se * sqrt((double)e.m.n);
 			printf("%-34s ch %d: A %.3f, disk %.6f +- %.6f (%+.2f SE), sample sd %.3f, no-hit %.3f\n", names[k], c,
-			       A[c], got, se, (got - A[c]) / se, sd, (double)e.no_hit / e.n);
+			       A[c], got, se, (got - A[c]) / se, sd, (double)e.no_hit / e.m.n);
 			CHECK(fabs(got - A[c]) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", names[k], c, got, se, A[c]);
 			CHECK(sd > 0.1 * A[c], "%s: no variance (sd %g): the disk is not exact on a plane", names[k], sd);
 		}

@@ -7,6 +7,7 @@
 #include "check.h"
 #include "geom/prim.h"
 #include "sss/walk.h"
+#include "mean3.h"
 #include "sss_test.h"
 
 #include <stdio.h>
@@ -44,27 +45,18 @@ static void object_free(object *o)
 /* ---- statistics ------------------------------------------------------------------------------ */
 
 typedef struct stat3 {
-	double s[3], s2[3];
-	long n;
+	test_mean3 m;
 	long count[SSS_WALK_BAD_INPUT + 1];
 	long steps, reentries;
 } stat3;
 
 static void stat_add(stat3 *st, const sss_walk_result *r, bool counts)
 {
-	st->n++;
 	st->count[r->status]++;
 	st->steps += r->steps;
 	st->reentries += r->reentries;
 	double w[3] = {counts ? r->weight.x : 0.0, counts ? r->weight.y : 0.0, counts ? r->weight.z : 0.0};
-	for (int c = 0; c < 3; c++)
-		st->s[c] += w[c], st->s2[c] += w[c] * w[c];
-}
-static double stat_mean(const stat3 *st, int c) { return st->s[c] / st->n; }
-static double stat_se(const stat3 *st, int c)
-{
-	double m = stat_mean(st, c);
-	return sqrt(fmax(0.0, st->s2[c] / st->n - m * m) / (st->n - 1));
+	test_mean3_add(&st->m, w);
 }
 
 /* ---- Chandrasekhar's H-function of isotropic scattering -------------------------------------- */
@@ -200,13 +192,13 @@ static void check_semi_infinite(const char *name, const double albedo[3], const 
 		stat_add(&st, &res, top);
 	}
 	for (int c = 0; c < 3; c++) {
-		double want = plane_albedo(albedo[c], 1.0), got = stat_mean(&st, c), se = stat_se(&st, c);
+		double want = plane_albedo(albedo[c], 1.0), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
 		printf("semi-infinite %s ch %d: albedo %.3f: walk %.5f +- %.5f, Chandrasekhar %.5f (%+.2f SE)\n", name,
 		       c, albedo[c], got, se, want, (got - want) / se);
 		CHECK(fabs(got - want) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", name, c, got, se, want);
 	}
-	printf("  %ld walks, %.1f interactions each, lost %ld, step limit %ld, re-entries %ld\n", st.n,
-	       (double)st.steps / st.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT], st.reentries);
+	printf("  %ld walks, %.1f interactions each, lost %ld, step limit %ld, re-entries %ld\n", st.m.n,
+	       (double)st.steps / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT], st.reentries);
 	CHECK(st.count[SSS_WALK_LOST] == 0 && st.count[SSS_WALK_STEP_LIMIT] == 0, "lost %ld, step limit %ld",
 	      st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
 	object_free(&o);
@@ -236,14 +228,14 @@ static void check_energy(const char *name, object *o, vec3 entry, vec3 ng, const
 		stat_add(&st, &res, true);
 	}
 	for (int c = 0; c < 3; c++) {
-		double got = stat_mean(&st, c), se = stat_se(&st, c);
+		double got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
 		printf("energy %s ch %d: %.5f +- %.5f\n", name, c, got, se);
 		CHECK(fabs(got - 1.0) <= 3.0 * se + 1e-6, "%s ch %d: %g +- %g, want 1", name, c, got, se);
 	}
-	printf("  %ld walks, %.1f interactions, %.2f internal reflections each; lost %ld, step limit %ld\n", st.n,
-	       (double)st.steps / st.n, (double)refl / st.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
-	CHECK(st.count[SSS_WALK_EXITED] == st.n, "%s: %ld of %ld exited (lost %ld, limit %ld)", name,
-	      st.count[SSS_WALK_EXITED], st.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
+	printf("  %ld walks, %.1f interactions, %.2f internal reflections each; lost %ld, step limit %ld\n", st.m.n,
+	       (double)st.steps / st.m.n, (double)refl / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
+	CHECK(st.count[SSS_WALK_EXITED] == st.m.n, "%s: %ld of %ld exited (lost %ld, limit %ld)", name,
+	      st.count[SSS_WALK_EXITED], st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
 }
 
 /* A pure absorber transmits e^{-sigma_a L / cos} along a straight line through a slab. */
@@ -267,7 +259,7 @@ static void check_beer_lambert(void)
 		stat_add(&st, &res, bottom);
 	}
 	for (int c = 0; c < 3; c++) {
-		double want = exp(-sa[c] * thick / cos_i), got = stat_mean(&st, c), se = stat_se(&st, c);
+		double want = exp(-sa[c] * thick / cos_i), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
 		printf("Beer-Lambert ch %d: %.5f +- %.5f, exp(-sigma_a L / cos) %.5f\n", c, got, se, want);
 		CHECK(fabs(got - want) <= 3.0 * se, "ch %d: %g +- %g, want %g", c, got, se, want);
 	}
