@@ -1,0 +1,96 @@
+/* walk.h - the volumetric reference of `--sss volume` (DESIGN.md, "The two comparators"): a random
+ * walk inside a closed mesh with scattering sigma_s, absorption sigma_a, a Henyey-Greenstein phase
+ * and a smooth dielectric boundary, with one-sample MIS over the RGB channels for the free paths.
+ * Also the check that a mesh is closed (an open mesh cannot hold a volume). Formulas and sources:
+ * src/sss/README.md, "The volume random walk". Thread-safe; the walk allocates nothing. */
+#ifndef CIRCE_SSS_WALK_H
+#define CIRCE_SSS_WALK_H
+
+#include "base/rng.h"
+#include "base/vec.h"
+#include "geom/mesh.h"
+#include "sss/probe.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+/* The medium, in scene units (the caller converts from mm: sss_walk_medium_from_reduced). */
+typedef struct sss_walk_medium {
+	double sigma_s[3]; /* scattering coefficient per channel, per scene unit, >= 0 */
+	double sigma_a[3]; /* absorption coefficient per channel, per scene unit, >= 0 */
+	double g;	   /* Henyey-Greenstein anisotropy (mean cosine), in (-1, 1) */
+	double eta;	   /* index of refraction of the medium over that outside, > 0; 1: index-matched */
+} sss_walk_medium;
+
+/* The medium of a material given in the physical form (src/scene: sigma_s' and sigma_a per mm,
+ * HG g, ior): sigma_s = sigma_s' / (1 - g) by the similarity relation (sigma_s' = sigma_s (1 - g),
+ * e.g. Jensen et al. 2001, section 2.1), each coefficient multiplied by mm_per_unit (> 0) to
+ * become per scene unit. False (and *m untouched) for negative or non-finite coefficients,
+ * |g| >= 1, eta <= 0 or mm_per_unit <= 0. */
+bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
+				  const double sigma_a_per_mm[3], double g, double eta, double mm_per_unit);
+
+/* How a walk ended. Every status but SSS_WALK_EXITED has weight 0; the caller counts the two
+ * failures (STEP_LIMIT, LOST) and reports them like circle tracing's no-hit rate. */
+typedef enum sss_walk_status {
+	SSS_WALK_EXITED,     /* refracted out of the medium: the exit fields are valid */
+	SSS_WALK_ABSORBED,   /* the throughput became zero or Russian roulette ended it (unbiased) */
+	SSS_WALK_STEP_LIMIT, /* max_steps interactions without leaving: dropped, biased low, counted */
+	SSS_WALK_LOST,	     /* a ray inside the medium found no surface (open mesh, crack): counted */
+	SSS_WALK_BAD_INPUT,  /* non-finite point or direction, zero direction, or max_steps < 1 */
+} sss_walk_status;
+
+typedef struct sss_walk_result {
+	sss_walk_status status;
+	vec3 p;		/* exit point, on the exit triangle */
+	vec3 ng;	/* the exit triangle's unit geometric normal, as the probe reports it */
+	vec3 dir;	/* unit exit direction, outside the medium */
+	uint32_t prim;	/* exit triangle and barycentrics (for textures at the exit) */
+	float u, v;
+	vec3 weight;	/* RGB throughput of the walk (0 unless EXITED) */
+	int steps;	/* interactions: scattering events plus boundary hits */
+	int reflections; /* boundary hits that reflected back inside (Fresnel or total internal) */
+	int reentries;	 /* boundary hits from outside, after a collision point rounded across the
+			  * surface: the walk steps back in (README.md); about 1 in 10^6 interactions */
+} sss_walk_result;
+
+/* The default bound on interactions per walk: about 50 times the mean of a wax-like medium
+ * (albedo 0.999 in a 5 mean-free-path slab); reaching it is counted, never silent. */
+#define SSS_WALK_MAX_STEPS 4096
+/* Russian roulette starts after this many interactions, with survival probability
+ * min(1, max channel of the throughput): unbiased; keeps absorbing walks short. */
+#define SSS_WALK_RR_START 16
+
+/* One walk. x is the entry point on the object's surface, ng its geometric normal (either
+ * orientation: the walk takes the mesh's orientation from it, so the mesh's winding must be
+ * consistent, as a closed mesh's is; otherwise walks end LOST), w the unit direction into the medium (already refracted by the caller's
+ * dielectric at the entry); pr traces the object alone. Random numbers come from g (the caller's
+ * per-sample stream: deterministic). At each boundary hit the walk reflects with probability
+ * F (Fresnel of eta, 1 under total internal reflection) and refracts out otherwise, so the
+ * boundary's weight is 1 and the radiance scale eta^2 of entering cancels at the exit. */
+sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, vec3 w, rng *g,
+			 int max_steps);
+
+/* Unpolarised dielectric Fresnel reflectance at cos(incidence) cos_i in [0, 1], eta = n_t / n_i;
+ * 1 under total internal reflection. */
+double sss_walk_fresnel(double cos_i, double eta);
+
+/* A direction about w (unit) whose cosine with w follows Henyey-Greenstein with mean cosine g:
+ * cos = (1 + g^2 - ((1 - g^2)/(1 - g + 2 g u1))^2) / (2 g) (the inverse CDF), phi = 2 pi u2. */
+vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2);
+
+/* ---- closed meshes ---------------------------------------------------------------------------- */
+
+typedef enum sss_mesh_closure {
+	SSS_MESH_CLOSED,    /* every edge is shared by exactly two triangles */
+	SSS_MESH_OPEN,	    /* an edge of one triangle (a border) or of three or more, or no triangles */
+	SSS_MESH_NO_MEMORY, /* the check's scratch arrays could not be allocated */
+} sss_mesh_closure;
+
+/* Whether m bounds a volume: positions are welded by exact equality (primitives and imported
+ * meshes duplicate vertices along seams), triangles that collapse under welding are skipped, and
+ * every remaining edge must belong to exactly two triangles. *open_edges (may be NULL) receives
+ * the number of edges that do not. Allocates scratch memory (O(triangles)) and frees it. */
+sss_mesh_closure sss_walk_mesh_closure(const mesh *m, uint64_t *open_edges);
+
+#endif

@@ -1,0 +1,358 @@
+/* test_walk: the volume random walk against closed forms: Chandrasekhar's albedo of a semi-infinite
+ * isotropic medium (grey and RGB, spectral MIS), energy conservation without absorption (box and
+ * sphere, Fresnel boundary), Beer-Lambert through a pure absorber; the step bound and lost walks are
+ * reported; the closed-mesh check on closed and open meshes. */
+#include "accel/bvh.h"
+#include "base/rng.h"
+#include "check.h"
+#include "geom/prim.h"
+#include "sss/walk.h"
+#include "mean3.h"
+#include "sss_test.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* ---- geometry through the probe interface ----------------------------------------------------- */
+
+typedef struct object {
+	mesh m;
+	bvh *b;
+	sss_probe_mesh pm;
+	sss_probe pr;
+} object;
+
+static void object_init(object *o)
+{
+	o->b = bvh_build(o->m.positions, o->m.num_vertices, o->m.indices, o->m.num_triangles);
+	CHECK(o->b != NULL, "bvh_build failed");
+	o->pm = (sss_probe_mesh){o->b, &o->m};
+	o->pr = sss_probe_of_mesh(&o->pm);
+}
+
+static void object_box(object *o, vec3 lo, vec3 hi)
+{
+	CHECK(prim_box(lo, hi, &o->m), "prim_box failed");
+	object_init(o);
+}
+
+static void object_free(object *o)
+{
+	bvh_free(o->b);
+	mesh_free(&o->m);
+}
+
+/* ---- statistics ------------------------------------------------------------------------------ */
+
+typedef struct stat3 {
+	test_mean3 m;
+	long count[SSS_WALK_BAD_INPUT + 1];
+	long steps, reentries;
+} stat3;
+
+static void stat_add(stat3 *st, const sss_walk_result *r, bool counts)
+{
+	st->count[r->status]++;
+	st->steps += r->steps;
+	st->reentries += r->reentries;
+	double w[3] = {counts ? r->weight.x : 0.0, counts ? r->weight.y : 0.0, counts ? r->weight.z : 0.0};
+	test_mean3_add(&st->m, w);
+}
+
+/* ---- Chandrasekhar's H-function of isotropic scattering -------------------------------------- */
+
+#define H_NODES 256
+static double h_x[H_NODES], h_w[H_NODES], h_val[H_NODES];
+
+/* H on Gauss-Legendre nodes of [0, 1], iterating 1/H(mu) = sqrt(1 - a) + a/2 integral_0^1
+ * mu' H(mu') / (mu + mu') dmu' (Chandrasekhar 1960, Radiative Transfer, eq. V.(32)'s alternative
+ * form, which converges for every albedo a); returns H(mu) by the same quadrature. */
+static double h_function(double a, double mu)
+{
+	double x[H_NODES], w[H_NODES];
+	gauss_legendre(H_NODES, x, w);
+	for (int i = 0; i < H_NODES; i++)
+		h_x[i] = 0.5 * (x[i] + 1.0), h_w[i] = 0.5 * w[i], h_val[i] = 1.0;
+	for (int it = 0; it < 2000; it++) {
+		double next[H_NODES], change = 0.0;
+		for (int i = 0; i < H_NODES; i++) {
+			double s = 0.0;
+			for (int j = 0; j < H_NODES; j++)
+				s += h_w[j] * h_x[j] * h_val[j] / (h_x[i] + h_x[j]);
+			next[i] = 1.0 / (sqrt(1.0 - a) + 0.5 * a * s);
+			change = fmax(change, fabs(next[i] - h_val[i]));
+		}
+		memcpy(h_val, next, sizeof next);
+		if (change < 1e-13)
+			break;
+	}
+	double s = 0.0;
+	for (int j = 0; j < H_NODES; j++)
+		s += h_w[j] * h_x[j] * h_val[j] / (mu + h_x[j]);
+	return 1.0 / (sqrt(1.0 - a) + 0.5 * a * s);
+}
+
+/* The plane albedo of a semi-infinite isotropic medium of single-scattering albedo a lit at
+ * cos(incidence) mu: 1 - H(mu) sqrt(1 - a) (Chandrasekhar 1960, eq. IV.(42)-(43)). */
+static double plane_albedo(double a, double mu)
+{
+	return 1.0 - h_function(a, mu) * sqrt(1.0 - a);
+}
+
+/* ---- the checks ------------------------------------------------------------------------------ */
+
+static void check_basics(void)
+{
+	/* Fresnel: normal incidence ((eta - 1)/(eta + 1))^2, total internal reflection, eta = 1 */
+	CHECK_NEAR(sss_walk_fresnel(1.0, 1.5), 0.04, 1e-12);
+	CHECK_NEAR(sss_walk_fresnel(0.3, 1.0 / 1.5), 1.0, 0.0);
+	CHECK_NEAR(sss_walk_fresnel(0.3, 1.0), 0.0, 1e-15);
+
+	/* the reduced form: sigma_s = sigma_s' / (1 - g), per scene unit */
+	double ss[3] = {1.0, 2.0, 0.5}, sa[3] = {0.1, 0.0, 0.3};
+	sss_walk_medium m;
+	CHECK(sss_walk_medium_from_reduced(&m, ss, sa, 0.5, 1.4, 10.0), "refused");
+	CHECK_NEAR(m.sigma_s[0], 20.0, 1e-12);
+	CHECK_NEAR(m.sigma_s[2], 10.0, 1e-12);
+	CHECK_NEAR(m.sigma_a[2], 3.0, 1e-12);
+	CHECK(!sss_walk_medium_from_reduced(&m, ss, sa, 1.0, 1.4, 10.0), "g = 1 accepted");
+	CHECK(!sss_walk_medium_from_reduced(&m, ss, sa, 0.5, 0.0, 10.0), "eta = 0 accepted");
+	sa[1] = -1.0;
+	CHECK(!sss_walk_medium_from_reduced(&m, ss, sa, 0.5, 1.4, 10.0), "negative sigma_a accepted");
+	sa[1] = NAN;
+	CHECK(!sss_walk_medium_from_reduced(&m, ss, sa, 0.5, 1.4, 10.0), "NaN sigma_a accepted");
+
+	/* Henyey-Greenstein: the mean cosine is g, the second moment (1 + 2 g^2)/3 */
+	const double gs[] = {0.0, 0.5, -0.3, 0.9, 0.99};
+	rng r;
+	rng_seed(&r, 7, 1);
+	long n = test_scaled(200000);
+	for (size_t k = 0; k < sizeof gs / sizeof gs[0]; k++) {
+		vec3 w = v3_normalize(v3(0.3f, -0.5f, 0.8f));
+		double s = 0.0, s2 = 0.0, s4 = 0.0;
+		for (long i = 0; i < n; i++) {
+			vec3 d = sss_walk_sample_hg(w, gs[k], rng_double(&r), rng_double(&r));
+			double mu = v3_dot(d, w);
+			CHECK(fabsf(v3_length(d) - 1.0f) < 1e-5f, "|d| = %g", v3_length(d));
+			s += mu, s2 += mu * mu, s4 += mu * mu * mu * mu;
+		}
+		double mean = s / n, se = sqrt((s2 / n - mean * mean) / n);
+		double m2 = s2 / n, se2 = sqrt((s4 / n - m2 * m2) / n), want2 = (1.0 + 2.0 * gs[k] * gs[k]) / 3.0;
+		CHECK(fabs(mean - gs[k]) <= 3.0 * se + 1e-12, "g %g: mean cosine %g +- %g", gs[k], mean, se);
+		CHECK(fabs(m2 - want2) <= 3.0 * se2 + 1e-12, "g %g: <mu^2> %g +- %g, want %g", gs[k], m2, se2, want2);
+	}
+}
+
+static void check_closure(void)
+{
+	object o;
+	uint64_t open;
+	CHECK(prim_box(v3(-1, -1, -1), v3(1, 2, 3), &o.m), "prim_box");
+	CHECK(sss_walk_mesh_closure(&o.m, &open) == SSS_MESH_CLOSED && open == 0, "box: open edges %llu",
+	      (unsigned long long)open);
+	o.m.num_triangles--; /* a box without its last triangle has a hole of three edges */
+	CHECK(sss_walk_mesh_closure(&o.m, &open) == SSS_MESH_OPEN && open == 3, "box - 1: open edges %llu",
+	      (unsigned long long)open);
+	mesh_free(&o.m);
+
+	CHECK(prim_sphere(v3(0, 0, 0), 1.0f, 24, &o.m), "prim_sphere");
+	CHECK(sss_walk_mesh_closure(&o.m, &open) == SSS_MESH_CLOSED && open == 0, "sphere: open edges %llu",
+	      (unsigned long long)open);
+	mesh_free(&o.m);
+
+	CHECK(prim_plane(v3(0, 0, 1), 0.0f, v3(-1, -1, -1), v3(1, 1, 1), &o.m), "prim_plane");
+	CHECK(sss_walk_mesh_closure(&o.m, &open) == SSS_MESH_OPEN && open > 0, "plane: open edges %llu",
+	      (unsigned long long)open);
+	mesh_free(&o.m);
+
+	mesh empty = {0};
+	CHECK(sss_walk_mesh_closure(&empty, &open) == SSS_MESH_OPEN, "empty mesh called closed");
+}
+
+/* The albedo of a large box (200 mean free paths of the thinnest channel on each side) lit at
+ * normal incidence in the middle of its top face: light leaving through the top. */
+static void check_semi_infinite(const char *name, const double albedo[3], const double sigma_t[3])
+{
+	double lmax = 200.0 / fmin(sigma_t[0], fmin(sigma_t[1], sigma_t[2]));
+	object o;
+	object_box(&o, v3((float)-lmax, (float)-lmax, (float)-lmax), v3((float)lmax, (float)lmax, 0.0f));
+	sss_walk_medium m = {{0}, {0}, 0.0, 1.0};
+	for (int c = 0; c < 3; c++)
+		m.sigma_s[c] = albedo[c] * sigma_t[c], m.sigma_a[c] = (1.0 - albedo[c]) * sigma_t[c];
+	rng r;
+	rng_seed(&r, 11, 2);
+	stat3 st = {0};
+	long n = test_scaled(200000);
+	for (long i = 0; i < n; i++) {
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
+		bool top = res.status == SSS_WALK_EXITED && res.p.z == 0.0f;
+		if (top)
+			CHECK(res.dir.z > 0.0f && fabsf(v3_length(res.dir) - 1.0f) < 1e-5f, "i %ld steps %d p %g %g %g ng %g %g %g exit dir %g %g %g", i, res.steps, res.p.x, res.p.y, res.p.z, res.ng.x, res.ng.y, res.ng.z,
+			      res.dir.x, res.dir.y, res.dir.z);
+		stat_add(&st, &res, top);
+	}
+	for (int c = 0; c < 3; c++) {
+		double want = plane_albedo(albedo[c], 1.0), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
+		printf("semi-infinite %s ch %d: albedo %.3f: walk %.5f +- %.5f, Chandrasekhar %.5f (%+.2f SE)\n", name,
+		       c, albedo[c], got, se, want, (got - want) / se);
+		CHECK(fabs(got - want) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", name, c, got, se, want);
+	}
+	printf("  %ld walks, %.1f interactions each, lost %ld, step limit %ld, re-entries %ld\n", st.m.n,
+	       (double)st.steps / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT], st.reentries);
+	CHECK(st.count[SSS_WALK_LOST] == 0 && st.count[SSS_WALK_STEP_LIMIT] == 0, "lost %ld, step limit %ld",
+	      st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
+	object_free(&o);
+}
+
+/* Without absorption every walk leaves: grey, each weight is exactly 1; RGB, 1 in expectation. */
+static void check_energy(const char *name, object *o, vec3 entry, vec3 ng, const double sigma_s[3], double g,
+			 double eta)
+{
+	sss_walk_medium m = {{sigma_s[0], sigma_s[1], sigma_s[2]}, {0, 0, 0}, g, eta};
+	bool grey = sigma_s[0] == sigma_s[1] && sigma_s[1] == sigma_s[2];
+	rng r;
+	rng_seed(&r, 13, 3);
+	stat3 st = {0};
+	long n = test_scaled(50000), refl = 0;
+	for (long i = 0; i < n; i++) {
+		/* refracted from a cosine-distributed incident direction */
+		double u1 = rng_double(&r), u2 = rng_double(&r), st_ = sqrt(u1) / eta, ct = sqrt(1.0 - st_ * st_);
+		vec3 b1, b2;
+		v3_basis(ng, &b1, &b2);
+		vec3 w = v3_add(v3_scale(ng, (float)-ct), v3_add(v3_scale(b1, (float)(st_ * cos(2 * PI * u2))),
+								    v3_scale(b2, (float)(st_ * sin(2 * PI * u2)))));
+		sss_walk_result res = sss_walk(&m, &o->pr, entry, ng, w, &r, SSS_WALK_MAX_STEPS);
+		if (grey && res.status == SSS_WALK_EXITED)
+			CHECK(fabsf(res.weight.x - 1.0f) < 1e-4f, "%s: grey weight %g", name, res.weight.x);
+		refl += res.reflections;
+		stat_add(&st, &res, true);
+	}
+	for (int c = 0; c < 3; c++) {
+		double got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
+		printf("energy %s ch %d: %.5f +- %.5f\n", name, c, got, se);
+		CHECK(fabs(got - 1.0) <= 3.0 * se + 1e-6, "%s ch %d: %g +- %g, want 1", name, c, got, se);
+	}
+	printf("  %ld walks, %.1f interactions, %.2f internal reflections each; lost %ld, step limit %ld\n", st.m.n,
+	       (double)st.steps / st.m.n, (double)refl / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
+	CHECK(st.count[SSS_WALK_EXITED] == st.m.n, "%s: %ld of %ld exited (lost %ld, limit %ld)", name,
+	      st.count[SSS_WALK_EXITED], st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
+}
+
+/* A pure absorber transmits e^{-sigma_a L / cos} along a straight line through a slab. */
+static void check_beer_lambert(void)
+{
+	const double thick = 1.5, sa[3] = {0.2, 0.7, 1.5}, cos_i = 0.6;
+	object o;
+	object_box(&o, v3(-50, -50, (float)-thick), v3(50, 50, 0));
+	sss_walk_medium m = {{0, 0, 0}, {sa[0], sa[1], sa[2]}, 0.0, 1.0};
+	vec3 w = v3((float)sqrt(1.0 - cos_i * cos_i), 0.0f, (float)-cos_i);
+	rng r;
+	rng_seed(&r, 17, 4);
+	stat3 st = {0};
+	long n = test_scaled(100000);
+	for (long i = 0; i < n; i++) {
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), w, &r, SSS_WALK_MAX_STEPS);
+		bool bottom = res.status == SSS_WALK_EXITED && res.p.z == (float)-thick;
+		if (res.status == SSS_WALK_EXITED)
+			CHECK(bottom && v3_length(v3_sub(res.dir, w)) < 1e-5f, "exit at z %g, dir %g %g %g", res.p.z,
+			      res.dir.x, res.dir.y, res.dir.z);
+		stat_add(&st, &res, bottom);
+	}
+	for (int c = 0; c < 3; c++) {
+		double want = exp(-sa[c] * thick / cos_i), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
+		printf("Beer-Lambert ch %d: %.5f +- %.5f, exp(-sigma_a L / cos) %.5f\n", c, got, se, want);
+		CHECK(fabs(got - want) <= 3.0 * se, "ch %d: %g +- %g, want %g", c, got, se, want);
+	}
+	object_free(&o);
+}
+
+/* The bound on steps and the lost walks are statuses, counted by the caller. */
+static void check_failures(void)
+{
+	object o;
+	object_box(&o, v3(-5, -5, -5), v3(5, 5, 5));
+	sss_walk_medium m = {{10, 10, 10}, {0, 0, 0}, 0.0, 1.4};
+	rng r;
+	rng_seed(&r, 19, 5);
+	long limit = 0;
+	for (int i = 0; i < 1000; i++) {
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(0, 0, -1), &r, 5);
+		CHECK(res.steps <= 5 && (res.status == SSS_WALK_EXITED || res.status == SSS_WALK_STEP_LIMIT),
+		      "steps %d, status %d", res.steps, res.status);
+		if (res.status == SSS_WALK_STEP_LIMIT) {
+			limit++;
+			CHECK(res.steps == 5 && res.weight.x == 0.0f, "step limit with %d steps, weight %g", res.steps,
+			      res.weight.x);
+		}
+	}
+	printf("step bound 5 in a 100 mean-free-path box: %ld of 1000 walks reported STEP_LIMIT\n", limit);
+	CHECK(limit > 500, "only %ld walks reached the bound", limit);
+	sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(NAN, 0, -1), &r, 5);
+	CHECK(res.status == SSS_WALK_BAD_INPUT && res.weight.x == 0.0f, "NaN direction: status %d", res.status);
+	res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(0, 0, -1), &r, 0);
+	CHECK(res.status == SSS_WALK_BAD_INPUT, "max_steps 0: status %d", res.status);
+	object_free(&o);
+
+	/* an open mesh: the walk below a plane finds no surface and says so */
+	CHECK(prim_plane(v3(0, 0, 1), 0.0f, v3(-1, -1, -1), v3(1, 1, 1), &o.m), "prim_plane");
+	object_init(&o);
+	long lost = 0;
+	for (int i = 0; i < 100; i++) {
+		res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
+		lost += res.status == SSS_WALK_LOST;
+		CHECK(res.status == SSS_WALK_LOST || res.status == SSS_WALK_EXITED, "open mesh: status %d", res.status);
+		CHECK(v3_is_finite(res.weight), "non-finite weight");
+	}
+	CHECK(lost > 50, "open mesh: only %ld of 100 walks lost", lost);
+	object_free(&o);
+
+	/* albedo 0 and 1 exactly, eta 1 and 3, extreme coefficients: finite weights */
+	object_box(&o, v3(-1, -1, -1), v3(1, 1, 1));
+	const double coef[] = {0.0, 1e-6, 1.0, 1e4};
+	for (int a = 0; a < 4; a++)
+		for (int b = 0; b < 4; b++)
+			for (int e = 0; e < 2; e++) {
+				sss_walk_medium mm = {{coef[a], coef[b], 0}, {coef[b], 0, coef[a]}, 0.3, e ? 3.0 : 1.0};
+				for (int i = 0; i < 20; i++) {
+					res = sss_walk(&mm, &o.pr, v3(0, 0, 1), v3(0, 0, 1), v3(0.6f, 0, -0.8f), &r,
+						       SSS_WALK_MAX_STEPS);
+					CHECK(v3_is_finite(res.weight) && v3_min_comp(res.weight) >= 0.0f,
+					      "coef %g %g eta %d: weight %g %g %g", coef[a], coef[b], e, res.weight.x,
+					      res.weight.y, res.weight.z);
+				}
+			}
+	object_free(&o);
+}
+
+int main(void)
+{
+	check_basics();
+	check_closure();
+
+	const double grey[3] = {0.8, 0.8, 0.8}, ones[3] = {1, 1, 1};
+	check_semi_infinite("grey 0.8", grey, ones);
+	const double rgb_albedo[3] = {0.99, 0.8, 0.3}, rgb_sigma[3] = {1.0, 2.0, 0.5};
+	check_semi_infinite("rgb", rgb_albedo, rgb_sigma);
+
+	object box, sphere;
+	object_box(&box, v3(-1, -1, -1), v3(1, 1, 1));
+	const double s_grey[3] = {3, 3, 3}, s_rgb[3] = {1, 3, 6};
+	check_energy("box grey g 0.7 eta 1.4", &box, v3(0.2f, -0.3f, 1.0f), v3(0, 0, 1), s_grey, 0.7, 1.4);
+	check_energy("box rgb g 0 eta 1.4", &box, v3(0.2f, -0.3f, 1.0f), v3(0, 0, 1), s_rgb, 0.0, 1.4);
+	object_free(&box);
+	CHECK(prim_sphere(v3(0, 0, 0), 1.0f, 48, &sphere.m), "prim_sphere");
+	object_init(&sphere);
+	/* the entry at a vertex-free point of the tessellated sphere: the first triangle's centroid */
+	const uint32_t *ix = sphere.m.indices + 3 * 100;
+	vec3 a = sphere.m.positions[ix[0]], b = sphere.m.positions[ix[1]], c = sphere.m.positions[ix[2]];
+	vec3 centroid = v3_scale(v3_add(a, v3_add(b, c)), 1.0f / 3.0f);
+	vec3 n = v3_normalize(v3_cross(v3_sub(b, a), v3_sub(c, a)));
+	if (v3_dot(n, centroid) < 0.0f)
+		n = v3_neg(n);
+	check_energy("sphere rgb g -0.3 eta 1.3", &sphere, centroid, n, s_rgb, -0.3, 1.3);
+	object_free(&sphere);
+
+	check_beer_lambert();
+	check_failures();
+	return check_done("test_walk");
+}
