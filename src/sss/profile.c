@@ -38,7 +38,7 @@ static const double sog_skin_w[3][6] = {
 /* ---- Fresnel and the dipole's albedo ---------------------------------------------------------- */
 
 /* Unpolarised dielectric Fresnel reflectance for cos(incidence) mu, eta = n_t / n_i. */
-static double fresnel_dielectric(double mu, double eta)
+double sss_fresnel_dielectric(double mu, double eta)
 {
 	double sin2_t = (1.0 - mu * mu) / (eta * eta);
 	if (sin2_t >= 1.0)
@@ -59,7 +59,7 @@ static double fm1_simpson(double mu_c, double k, double eta)
 	for (int i = 0; i <= SSS_FM1_INTERVALS; i++) {
 		double x = h * i, mu = sqrt(mu_c * mu_c + k * k * x * x);
 		double w = (i == 0 || i == SSS_FM1_INTERVALS) ? 1.0 : (i % 2 ? 4.0 : 2.0);
-		s += w * fresnel_dielectric(fmin(mu, 1.0), eta) * x;
+		s += w * sss_fresnel_dielectric(fmin(mu, 1.0), eta) * x;
 	}
 	return k * k * s * h / 3.0;
 }

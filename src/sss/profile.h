@@ -64,6 +64,9 @@ typedef struct sss_profile {
 
 /* ---- the medium -> profile links (README.md: "Parameters") ----------------------------------- */
 
+/* Unpolarised Fresnel reflectance of a smooth dielectric boundary for incidence cosine mu >= 0
+ * and relative index eta (transmitted over incident side); 1 under total internal reflection. */
+double sss_fresnel_dielectric(double mu, double eta);
 /* First Fresnel moment FM1(eta) = integral_0^1 F(mu) mu dmu of the exact unpolarised dielectric
  * Fresnel reflectance, eta = n_transmitted / n_incident (> 0). Light inside a medium of index
  * eta hitting its boundary sees FM1(1/eta); its diffuse reflectance is F_dr = 2 FM1(1/eta). */

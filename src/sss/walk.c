@@ -3,6 +3,7 @@
 #include "sss/walk.h"
 
 #include "base/mem.h"
+#include "sss/profile.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -35,17 +36,6 @@ bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime
 	m->g = g;
 	m->eta = eta;
 	return true;
-}
-
-double sss_walk_fresnel(double cos_i, double eta)
-{
-	double sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
-	if (sin2_t >= 1.0)
-		return 1.0;
-	double cos_t = sqrt(1.0 - sin2_t);
-	double rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-	double rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-	return 0.5 * (rs * rs + rp * rp);
 }
 
 vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2)
@@ -162,7 +152,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			}
 			double cos_i = fmin(1.0, (double)v3_dot(w, n_out));
 			double eta = 1.0 / m->eta; /* from the medium (eta) to outside (1) */
-			if (rng_double(g) < sss_walk_fresnel(cos_i, eta)) {
+			if (rng_double(g) < sss_fresnel_dielectric(cos_i, eta)) {
 				w = v3_normalize(v3_madd(w, n_out, (float)(-2.0 * cos_i)));
 				org = bvh_offset_origin(h.p, v3_neg(n_out));
 				res.reflections++;

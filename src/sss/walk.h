@@ -71,10 +71,6 @@ typedef struct sss_walk_result {
 sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, vec3 w, rng *g,
 			 int max_steps);
 
-/* Unpolarised dielectric Fresnel reflectance at cos(incidence) cos_i in [0, 1], eta = n_t / n_i;
- * 1 under total internal reflection. */
-double sss_walk_fresnel(double cos_i, double eta);
-
 /* A direction about w (unit) whose cosine with w follows Henyey-Greenstein with mean cosine g:
  * cos = (1 + g^2 - ((1 - g^2)/(1 - g + 2 g u1))^2) / (2 g) (the inverse CDF), phi = 2 pi u2. */
 vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2);

@@ -6,6 +6,7 @@
 #include "base/rng.h"
 #include "check.h"
 #include "geom/prim.h"
+#include "sss/profile.h"
 #include "sss/walk.h"
 #include "mean3.h"
 #include "sss_test.h"
@@ -104,9 +105,9 @@ static double plane_albedo(double a, double mu)
 static void check_basics(void)
 {
 	/* Fresnel: normal incidence ((eta - 1)/(eta + 1))^2, total internal reflection, eta = 1 */
-	CHECK_NEAR(sss_walk_fresnel(1.0, 1.5), 0.04, 1e-12);
-	CHECK_NEAR(sss_walk_fresnel(0.3, 1.0 / 1.5), 1.0, 0.0);
-	CHECK_NEAR(sss_walk_fresnel(0.3, 1.0), 0.0, 1e-15);
+	CHECK_NEAR(sss_fresnel_dielectric(1.0, 1.5), 0.04, 1e-12);
+	CHECK_NEAR(sss_fresnel_dielectric(0.3, 1.0 / 1.5), 1.0, 0.0);
+	CHECK_NEAR(sss_fresnel_dielectric(0.3, 1.0), 0.0, 1e-15);
 
 	/* the reduced form: sigma_s = sigma_s' / (1 - g), per scene unit */
 	double ss[3] = {1.0, 2.0, 0.5}, sa[3] = {0.1, 0.0, 0.3};
