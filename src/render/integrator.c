@@ -1,4 +1,5 @@
-/* integrator.c - path tracing with NEE and MIS (integrator.h). The shading frame's +z is the
+/* integrator.c - path tracing with NEE and MIS, and the BSSRDF step of subsurface materials
+ * (integrator.h). The shading frame's +z is the
  * shading normal turned to the side of the outgoing direction; a direction on the far side of the
  * geometric normal is rejected so shading normals cannot leak light through a surface. */
 #include "render/integrator.h"
