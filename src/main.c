@@ -443,6 +443,24 @@ static void on_checkpoint(void *user, const film *f)
 	output_write_exr(c->path, f, c->info, c->d);
 }
 
+/* The SSS method the EXR header records: --sss, else the materials' one, "mixed" when they
+ * differ, "none" without SSS materials. */
+static const char *sss_method_name(const world *w)
+{
+	static const char *names[] = {[RENDER_SSS_CIRCLE] = "circle", [RENDER_SSS_FULLCIRCLE] = "fullcircle",
+				      [RENDER_SSS_DISK] = "disk", [RENDER_SSS_VOLUME] = "volume"};
+	const char *name = "none";
+	for (size_t i = 0; i < w->n_materials; i++) {
+		if (!w->sss_of[i])
+			continue;
+		const char *m = names[w->sss_of[i]->method];
+		if (strcmp(name, "none") && strcmp(name, m))
+			return "mixed";
+		name = m;
+	}
+	return name;
+}
+
 /* circe render SCENE [options]. */
 static int cmd_render(int argc, char **argv)
 {
@@ -466,7 +484,12 @@ static int cmd_render(int argc, char **argv)
 	char *out = frame_name(o.out ? o.out : out_default, o.frame);
 	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
 	world w;
-	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory};
+	scene_sss_method sss = !o.sss			 ? SSS_METHOD_DEFAULT
+			       : !strcmp(o.sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
+			       : !strcmp(o.sss, "disk")	 ? SSS_METHOD_DISK
+			       : !strcmp(o.sss, "volume")	 ? SSS_METHOD_VOLUME
+							 : SSS_METHOD_CIRCLE;
+	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory, .sss_method = sss};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
 	if (!out || (o.png && !png) || !world_build(&w, sc, &wo, &d)) {
@@ -496,20 +519,21 @@ static int cmd_render(int argc, char **argv)
 		world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return EXIT_RUNTIME;
 	}
-	if (w.has_sss && !o.quiet)
-		fprintf(stderr, "circe: note: subsurface scattering is not in this build yet: skin, wax and "
-				"marble render as their coat over a diffuse interior of the material's albedo\n");
+	if (w.sss_stand_in)
+		fprintf(stderr, "circe: note: the disk and volume SSS methods are not in this build yet: %zu "
+				"material(s) asking for them render with circle\n", w.sss_stand_in);
 	char hash[17];
 	scene_hash(&d, hash);
 	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
-			    .sss_method = o.sss ? o.sss : "circle", .clock = o.clock, .tile = tile[0] ? tile : NULL,
+			    .sss_method = sss_method_name(&w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
 			    .aovs = o.aovs};
 	checkpoint_ctx cp = {out, &info, &d, start};
 	render_job job = {
 		.scene = &w.rs, .camera = &w.camera,
 		.settings = {.max_trace_level = sc->global.max_trace_level > 0 ? sc->global.max_trace_level
 									: RENDER_DEFAULT_MAX_TRACE_LEVEL,
-			     .mode = RENDER_MIS},
+			     .mode = RENDER_MIS,
+			     .circle_weight = o.talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
 		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
 		.threads = o.threads, .quiet = o.quiet, .checkpoint_interval_s = o.checkpoint_s,
 		.checkpoint = on_checkpoint, .checkpoint_user = &cp, .interrupt = &interrupted};
@@ -538,6 +562,10 @@ static int cmd_render(int argc, char **argv)
 					"render %.3f s\n",
 				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
 				(unsigned long long)stats.dropped, parse_s, build_s, w.stats.triangles, stats.seconds);
+		if (!o.quiet && stats.sss_circles)
+			fprintf(stderr, "circe: sss: %llu circles, %llu with no hit (no-hit rate %.4g)\n",
+				(unsigned long long)stats.sss_circles, (unsigned long long)stats.sss_nohit,
+				(double)stats.sss_nohit / (double)stats.sss_circles);
 		rc = !ok ? EXIT_RUNTIME : info.interrupted ? 130 : EXIT_OK;
 	}
 	film_free(&f);

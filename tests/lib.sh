@@ -10,3 +10,17 @@ expect_status() {
 	got=$?
 	[ "$got" = "$want" ] || fail "'$*' exited $got, expected $want; stdout: $(cat out); stderr: $(cat err)"
 }
+# seed_noise A.exr B.exr: the RMSE of A against B (two renders that differ only in the seed).
+seed_noise() {
+	expect_status 1 "$CIRCE" compare "$1" "$2"
+	sed -n 's/^rmse: //p' out
+}
+# expect_same_within_noise NAME A.exr B.exr NOISE DIVISOR: fails unless the RMSE of A against B
+# is under NOISE / DIVISOR (the same image up to rounding, when NOISE is the seed-to-seed RMSE).
+expect_same_within_noise() {
+	"$CIRCE" compare "$2" "$3" >out 2>&1
+	rmse=$(sed -n 's/^rmse: //p' out)
+	awk -v a="$rmse" -v b="$4" -v k="$5" 'BEGIN { exit !(a < b / k) }' ||
+		fail "$1: rmse $rmse against $3, noise between seeds $4: $(cat out)"
+	echo "$1: rmse $rmse against $3; between seeds $4"
+}

@@ -133,6 +133,8 @@ vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi)
 			  (1.0f - bsdf_fresnel_dielectric(wi.z, b->ior));
 		return v3_add(v3_scale(b->diffuse, t * RENDER_INV_PI), v3s(s));
 	}
+	case BSDF_SSS_ENTRY:
+		return v3_scale(b->diffuse, (1.0f - bsdf_fresnel_dielectric(wi.z, b->ior)) * RENDER_INV_PI);
 	}
 	return v3s(0.0f);
 }

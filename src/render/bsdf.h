@@ -8,6 +8,9 @@
  *                 highlight width is alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, sec. 5.2).
  *   BSDF_COAT     A rough dielectric coat over a diffuse interior (skin, wax, marble until SSS):
  *                 GGX reflection * F(ior) plus (1 - F(cos_o)) (1 - F(cos_i)) * albedo / pi.
+ *   BSDF_SSS_ENTRY The light entering a subsurface material at its entry point x_i (DESIGN.md's f_t
+ *                 at x_i): diffuse * (1 - F(cos_i)) / pi, sampled by the cosine lobe; the integrator
+ *                 sets diffuse to 1/c, c the normalisation that makes the lobe integrate to 1.
  * GGX uses Smith's height-correlated masking-shadowing (Heitz 2014, eq. 99) and is sampled by its
  * visible normals (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"). */
 #ifndef CIRCE_RENDER_BSDF_H
@@ -17,7 +20,7 @@
 
 #include <stdbool.h>
 
-typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT } bsdf_kind;
+typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT, BSDF_SSS_ENTRY } bsdf_kind;
 
 /* A material's reflection parameters at one shading point (textures already applied). */
 typedef struct bsdf_params {

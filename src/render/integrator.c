@@ -1,4 +1,5 @@
-/* integrator.c - path tracing with NEE and MIS (integrator.h). The shading frame's +z is the
+/* integrator.c - path tracing with NEE and MIS, and the BSSRDF step of subsurface materials
+ * (integrator.h). The shading frame's +z is the
  * shading normal turned to the side of the outgoing direction; a direction on the far side of the
  * geometric normal is rejected so shading normals cannot leak light through a surface. */
 #include "render/integrator.h"
@@ -7,6 +8,11 @@
 
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
+
+/* The least probability of the subsurface branch at a subsurface material whose coat transmits
+ * anything: the branch is chosen by the albedo at the exit, but an albedo texture at the entry
+ * point may be brighter, and every contribution must keep a chance. */
+#define RENDER_SSS_MIN_PROB 0.1f
 
 typedef struct frame {
 	vec3 t, b, n;
@@ -92,6 +98,81 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	return v3_scale(v3_mul(fval, ls_out.li), w * fabsf(wi_local.z) / light_pdf);
 }
 
+/* ---- subsurface scattering ----------------------------------------------------------------- */
+
+/* An entry point found by a method: the surface there (normals facing out of the medium) and the
+ * weight R(r) f_leak / (p_A P) of the BSSRDF's spatial part (DESIGN.md). */
+typedef struct sss_entry {
+	render_hit hit;
+	vec3 weight;
+} sss_entry;
+
+/* Circle tracing (Legros & Corvazier 2016; src/sss/README.md "Plugging in"): r from the profile,
+ * the circle of that radius about the exit x in a plane through its normal n_out, every hit on
+ * the same SSS volume, one chosen by resampling proportional to its full weight. */
+static bool circle_entry(const render_scene *s, const render_settings *set, const render_sss *m,
+			 const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
+{
+	sss_circle_opts o = sss_circle_default_opts();
+	o.kind = m->method == RENDER_SSS_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
+	o.weight = set->circle_weight;
+	float u_channel = rng_float(g), u_r = rng_float(g), u_phi = rng_float(g), u_pick = rng_float(g);
+	double r_mm = sss_profile_sample(&m->profile, u_channel, u_r);
+	sss_circle c = sss_circle_make(exit->p, n_out, (float)(r_mm * m->units_per_mm), 0.0f, u_phi, &o);
+	tri_circle q = {c.center, c.t, c.axis, c.radius, o.kind == SSS_CIRCLE_FULL};
+	render_hit hits[RENDER_SSS_MAX_HITS];
+	float theta[RENDER_SSS_MAX_HITS];
+	sss_circle_hit ch[RENDER_SSS_MAX_HITS];
+	out->sss_circles++;
+	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS) : 0;
+	if (k > RENDER_SSS_MAX_HITS)
+		k = RENDER_SSS_MAX_HITS;
+	/* The scene's normals keep the mesh's orientation: turn them all as the exit's was turned to
+	 * the outside (the viewer's side), so the leak filter sees outward normals everywhere. */
+	float side = v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f;
+	for (uint32_t i = 0; i < k; i++) {
+		hits[i].ng = v3_scale(hits[i].ng, side);
+		hits[i].ns = v3_scale(hits[i].ns, side);
+		ch[i] = (sss_circle_hit){hits[i].p, hits[i].ng, theta[i]};
+	}
+	vec3 w;
+	float prob;
+	int i = sss_circle_choose(&c, sss_profile_ratio(&m->profile, r_mm), ch, (int)k, u_pick, &o, &w, &prob);
+	if (i < 0 || !v3_is_finite(w)) {
+		out->sss_nohit++;
+		return false;
+	}
+	e->hit = hits[i];
+	e->weight = w;
+	return true;
+}
+
+/* The one place where a method is chosen. disk and volume are not built in yet: circle stands in
+ * (world.h's world_build reports it). */
+static bool sss_find_entry(const render_scene *s, const render_settings *set, const render_sss *m,
+			   const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
+{
+	switch (m->method) {
+	case RENDER_SSS_CIRCLE:
+	case RENDER_SSS_FULLCIRCLE:
+	case RENDER_SSS_DISK:
+	case RENDER_SSS_VOLUME:
+		break;
+	}
+	return circle_entry(s, set, m, exit, n_out, g, e, out);
+}
+
+static float ratio_or_zero(float a, float b) { return b > 0.0f ? a / b : 0.0f; }
+
+/* Probability of taking the subsurface branch at an SSS material: the coat's transmitted weight
+ * (1 - F) A against its reflected F, with a floor while anything is transmitted. */
+static float sss_branch_prob(float fresnel, vec3 albedo)
+{
+	float ws = fresnel, wd = (1.0f - fresnel) * v3_luminance(albedo);
+	float p = ws + wd > 0.0f ? wd / (ws + wd) : 0.5f;
+	return fresnel < 1.0f ? fmaxf(p, RENDER_SSS_MIN_PROB) : 0.0f;
+}
+
 render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
 {
 	render_sample out = {0};
@@ -145,11 +226,51 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			f.n = ng_out;
 		v3_basis(f.n, &f.t, &f.b);
 		vec3 wo_local = to_local(&f, wo);
+		vec3 p = hit.p;
 
-		if (set->mode != RENDER_BSDF_ONLY)
-			radiance =
-			    v3_add(radiance,
-				   v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, hit.p, wo_local, g)));
+		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
+		if (sm) {
+			/* The coat's reflection is a lobe of its own; its transmission, the BSSRDF. */
+			float fr = bsdf_fresnel_dielectric(wo_local.z, sm->ior);
+			float p_sss = sss_branch_prob(fr, b.diffuse);
+			bsdf_params spec = b;
+			spec.diffuse = v3s(0.0f);
+			if (set->mode != RENDER_BSDF_ONLY)
+				radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &spec, &f, ng_out, p,
+										     wo_local, g)));
+			if (!(rng_float(g) < p_sss)) {
+				b = spec;
+				beta = v3_scale(beta, 1.0f / (1.0f - p_sss));
+			} else {
+				sss_entry e;
+				if (!sss_find_entry(s, set, sm, &hit, ng_out, g, &e, &out))
+					break;
+				bsdf_params at = s->materials[e.hit.material];
+				vec3 ns_i = e.hit.ns;
+				if (s->shade)
+					s->shade(s->user, &e.hit, &at, &ns_i);
+				vec3 w = v3_scale(e.weight, (1.0f - fr) / p_sss);
+				/* Diffuse colour blurring: the albedo texture at x_i, not at x. */
+				if (sm->textured)
+					w = v3_mul(w, v3(ratio_or_zero(at.diffuse.x, sm->albedo.x),
+							 ratio_or_zero(at.diffuse.y, sm->albedo.y),
+							 ratio_or_zero(at.diffuse.z, sm->albedo.z)));
+				beta = v3_mul(beta, w);
+				/* From here on the path leaves x_i through the entry lobe, outside the medium. */
+				p = e.hit.p;
+				ng_out = e.hit.ng;
+				f.n = v3_dot(ns_i, ng_out) > 0.0f ? ns_i : ng_out;
+				v3_basis(f.n, &f.t, &f.b);
+				wo_local = v3(0.0f, 0.0f, 1.0f);
+				b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm),
+						  .alpha = 1.0f, .ior = sm->ior};
+				if (set->mode != RENDER_BSDF_ONLY)
+					radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out,
+											     p, wo_local, g)));
+			}
+		} else if (set->mode != RENDER_BSDF_ONLY) {
+			radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, p, wo_local, g)));
+		}
 
 		float u_lobe = rng_float(g);
 		vec2 u = v2(rng_float(g), rng_float(g));
@@ -163,14 +284,14 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		beta = v3_mul(beta, v3_scale(fval, fabsf(wi_local.z) / pdf));
 		prev_pdf = pdf;
 		prev_delta = false;
-		prev_p = hit.p;
+		prev_p = p;
 		if (bounce + 1 >= RENDER_RR_DEPTH) {
 			float q = fminf(1.0f, v3_max_comp(beta));
 			if (!(rng_float(g) < q))
 				break;
 			beta = v3_scale(beta, 1.0f / q);
 		}
-		ray = (render_ray){offset_origin(hit.p, ng_out), v3_normalize(wi)};
+		ray = (render_ray){offset_origin(p, ng_out), v3_normalize(wi)};
 	}
 	out.radiance = radiance;
 	return out;

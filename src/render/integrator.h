@@ -10,15 +10,26 @@
  * cannot see delta lights). Russian roulette starts after RENDER_RR_DEPTH scattering events, with
  * survival probability min(1, max component of the path throughput). max_trace_level is the most
  * scattering events of a path (POV-Ray's meaning: 1 is direct light only); emission reached after
- * the last event still counts. All randomness comes from the rng given per sample. */
+ * the last event still counts. All randomness comes from the rng given per sample.
+ *
+ * Subsurface scattering (DESIGN.md, "Subsurface scattering"): at a material with a render_sss the
+ * coat's specular reflection stays a BSDF lobe; the light it transmits, 1 - F(w_o), goes through
+ * the BSSRDF instead of the coat's diffuse interior. One of the two continues the path, chosen by
+ * their estimated weights. The BSSRDF samples an entry point x_i (render_sss_method picks how: the
+ * dispatch is in integrator.c) and the path goes on from x_i through the entry lobe
+ * (1 - F(w_i)) / (c pi) with the shading normal and textures evaluated at x_i; the whole exit-entry
+ * step counts as one scattering event. */
 #ifndef CIRCE_RENDER_INTEGRATOR_H
 #define CIRCE_RENDER_INTEGRATOR_H
 
+#include "accel/tri.h"
 #include "base/rng.h"
 #include "base/vec.h"
 #include "render/bsdf.h"
 #include "render/camera.h"
 #include "render/light.h"
+#include "sss/circle.h"
+#include "sss/profile.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -37,6 +48,29 @@ typedef struct render_hit {
 	vec2 bary;     /* barycentrics of the triangle's second and third vertex, for shade() */
 } render_hit;
 
+/* How a subsurface material finds its entry point. disk and volume are other modules
+ * (src/sss/disk.*, src/sss/walk.*); until they are built in, circle stands in for them. */
+typedef enum render_sss_method {
+	RENDER_SSS_CIRCLE,     /* half circles (Legros & Corvazier 2016) */
+	RENDER_SSS_FULLCIRCLE, /* full circles */
+	RENDER_SSS_DISK,       /* King et al. 2013 probe segments */
+	RENDER_SSS_VOLUME,     /* random walk in the medium */
+} render_sss_method;
+
+/* The BSSRDF of one material (plain data, built once per material). */
+typedef struct render_sss {
+	render_sss_method method;
+	sss_profile profile; /* radii in mm, channel albedos A = the material's albedo */
+	float units_per_mm;  /* scene units per mm (1 / mm_per_unit): a profile radius to the scene */
+	float ior;	     /* of the boundary; the coat's */
+	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
+	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
+	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
+} render_sss;
+
+/* The most circle hits kept per circle (more are counted by the traversal and dropped). */
+#define RENDER_SSS_MAX_HITS 64
+
 typedef struct render_scene {
 	void *user; /* handed to every callback */
 	/* Nearest hit with t in (tmin, tmax); fills *hit. Must be thread-safe (called concurrently). */
@@ -49,6 +83,14 @@ typedef struct render_scene {
 	const bsdf_params *materials;
 	size_t material_count;
 	const light_set *lights; /* finished (light_set_finish); sphere lights are traced here */
+	/* Indexed like materials: the BSSRDF of a subsurface material (NULL for the others), or NULL
+	 * for the whole table when no material is subsurface. */
+	const render_sss *const *sss;
+	/* Every hit of the world-space circle q on the SSS volume of the surface `at` (its object or
+	 * its SSS group), filled like intersect's (t is 0) with the circle angle of each in theta.
+	 * Returns how many were written (at most max). Needed when sss is not NULL. Thread-safe. */
+	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, render_hit *hits,
+			   float *theta, uint32_t max);
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;
@@ -59,6 +101,7 @@ typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } ren
 typedef struct render_settings {
 	int max_trace_level; /* >= 1 */
 	render_mode mode;
+	sss_circle_weight circle_weight; /* exact (default, 0) or the talk's, for comparison */
 } render_settings;
 
 /* One camera sample: radiance and the AOVs of the first surface hit (zero where the ray escapes). */
@@ -67,6 +110,8 @@ typedef struct render_sample {
 	vec3 albedo; /* bsdf_albedo of the first hit */
 	vec3 normal; /* world shading normal of the first hit, facing the camera */
 	float depth; /* distance from the camera to the first hit, 0 when none */
+	uint32_t sss_circles; /* circles traced by this path */
+	uint32_t sss_nohit;   /* of them, those that found no entry point (the path ends there) */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number. May return non-finite

@@ -6,6 +6,7 @@
 #include "geom/prim.h"
 #include "geom/subdiv.h"
 #include "render/shading.h"
+#include "sss/profile.h"
 
 #include <float.h>
 #include <math.h>
@@ -186,8 +187,47 @@ static bool is_identity(const xform *t)
 	return !memcmp(t->m, id.m, sizeof id.m);
 }
 
+/* The BSSRDF of an SSS material: its profile from the artist form (the albedo the coat shows and
+ * a texture scales), the method (the command line's over the material's), and f_t's normalisation. */
+static bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
+		      diag *d)
+{
+	static const sss_profile_kind kinds[] = {[PROFILE_GAUSSIAN] = SSS_PROFILE_GAUSSIAN,
+						 [PROFILE_SUM_OF_GAUSSIANS] = SSS_PROFILE_SUM_OF_GAUSSIANS,
+						 [PROFILE_BURLEY] = SSS_PROFILE_BURLEY,
+						 [PROFILE_DIPOLE] = SSS_PROFILE_DIPOLE};
+	const scene_sss *ss = &sm->sss;
+	render_sss *r = &w->sss[k];
+	double albedo[3] = {ss->albedo.x, ss->albedo.y, ss->albedo.z};
+	double ld_mm[3] = {ss->radius_mm.x, ss->radius_mm.y, ss->radius_mm.z};
+	if (!sss_profile_from_artist(&r->profile, kinds[ss->profile], albedo, ld_mm, ss->ior)) {
+		diag_error(d, sm->loc, "the subsurface medium is out of range (albedo %g %g %g, radius %g %g %g mm, ior %g)",
+			   albedo[0], albedo[1], albedo[2], ld_mm[0], ld_mm[1], ld_mm[2], (double)ss->ior);
+		return false;
+	}
+	scene_sss_method m = opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : ss->method;
+	r->method = m == SSS_METHOD_FULLCIRCLE ? RENDER_SSS_FULLCIRCLE
+		    : m == SSS_METHOD_DISK     ? RENDER_SSS_DISK
+		    : m == SSS_METHOD_VOLUME   ? RENDER_SSS_VOLUME
+					       : RENDER_SSS_CIRCLE;
+	if (r->method == RENDER_SSS_DISK || r->method == RENDER_SSS_VOLUME)
+		w->sss_stand_in++;
+	r->units_per_mm = (float)(1.0 / sc->global.mm_per_unit);
+	r->ior = ss->ior;
+	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
+	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
+	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
+	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
+	r->albedo = ss->albedo;
+	r->textured = ss->albedo_image != NULL;
+	w->sss_of[k] = r;
+	w->has_sss = true;
+	return true;
+}
+
 /* BSDF parameters and textures of a scene material. */
-static bool build_material(world *w, size_t k, const scene_material *sm, diag *d)
+static bool build_material(world *w, size_t k, const scene *sc, const world_options *opt,
+			   const scene_material *sm, diag *d)
 {
 	world_material *wm = &w->materials[k];
 	switch (sm->kind) {
@@ -203,10 +243,11 @@ static bool build_material(world *w, size_t k, const scene_material *sm, diag *d
 	case MAT_SKIN:
 	case MAT_WAX:
 	case MAT_MARBLE:
-		/* Until subsurface scattering lands, the interior under the coat is a diffuse of the
-		 * medium's multiple-scattering albedo (the artist form). */
+		/* The coat's reflection; its diffuse interior is replaced by the BSSRDF in the
+		 * integrator, but keeps the albedo for the AOV and the choice of lobe. */
 		w->bsdfs[k] = bsdf_coat(sm->sss.albedo, sm->sss.ior, sm->sss.roughness);
-		w->has_sss = true;
+		if (!build_sss(w, k, sc, opt, sm, d))
+			return false;
 		break;
 	default:
 		w->bsdfs[k] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
@@ -236,24 +277,20 @@ static vec3 xf_vector(const world_inst *in, vec3 v)
 	return in->identity ? v : d3v(xform_vector(&in->xf, v3_to_d3(v)));
 }
 
-static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
+/* The surface of instance `inst` at triangle prim, barycentrics (u, v) of its second and third
+ * vertex: world position, normals (both in one hemisphere), uv. */
+static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, float v, render_hit *hit)
 {
-	const world *w = user;
-	bvh_ray r = {ray->o, ray->d, tmin, tmax};
-	bvh_hit best;
-	if (!w->top || !tlas_intersect(w->top, &r, &best))
-		return false;
-	int best_inst = (int)w->top_inst[best.inst];
-	const world_inst *in = &w->insts[best_inst];
+	const world_inst *in = &w->insts[inst];
 	const mesh *m = &in->g->m;
-	const uint32_t *ix = m->indices + 3 * (size_t)best.prim;
-	float b0 = 1.0f - best.u - best.v;
+	const uint32_t *ix = m->indices + 3 * (size_t)prim;
+	float b0 = 1.0f - u - v;
 	vec3 p0 = m->positions[ix[0]], p1 = m->positions[ix[1]], p2 = m->positions[ix[2]];
 	vec3 ng = v3_normalize(xf_normal(in, v3_cross(v3_sub(p1, p0), v3_sub(p2, p0))));
 	vec3 ns = ng;
 	if (m->normals) {
-		vec3 n = v3_add(v3_add(v3_scale(m->normals[ix[0]], b0), v3_scale(m->normals[ix[1]], best.u)),
-				v3_scale(m->normals[ix[2]], best.v));
+		vec3 n = v3_add(v3_add(v3_scale(m->normals[ix[0]], b0), v3_scale(m->normals[ix[1]], u)),
+				v3_scale(m->normals[ix[2]], v));
 		n = v3_normalize(xf_normal(in, n));
 		if (v3_is_finite(n) && v3_length2(n) > 0.5f)
 			ns = n;
@@ -262,17 +299,53 @@ static bool world_intersect(void *user, const render_ray *ray, float tmin, float
 	}
 	vec2 uv = v2(0.0f, 0.0f);
 	if (m->uvs)
-		uv = v2(b0 * m->uvs[ix[0]].x + best.u * m->uvs[ix[1]].x + best.v * m->uvs[ix[2]].x,
-			b0 * m->uvs[ix[0]].y + best.u * m->uvs[ix[1]].y + best.v * m->uvs[ix[2]].y);
+		uv = v2(b0 * m->uvs[ix[0]].x + u * m->uvs[ix[1]].x + v * m->uvs[ix[2]].x,
+			b0 * m->uvs[ix[0]].y + u * m->uvs[ix[1]].y + v * m->uvs[ix[2]].y);
 	/* The position from the triangle: its error is that of the vertices, which the ray offset
 	 * covers; o + t d would carry the error of the whole ray. */
-	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, best.u)), v3_scale(p2, best.v));
+	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, u)), v3_scale(p2, v));
 	if (!in->identity)
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
-	*hit = (render_hit){.t = best.t, .p = p, .ng = ng, .ns = ns, .uv = uv,
-			    .material = in->material, .light = in->light, .object = (uint32_t)best_inst,
-			    .prim = best.prim, .bary = v2(best.u, best.v)};
+	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
+			    .object = inst, .prim = prim, .bary = v2(u, v)};
+}
+
+static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
+{
+	const world *w = user;
+	bvh_ray r = {ray->o, ray->d, tmin, tmax};
+	bvh_hit best;
+	if (!w->top || !tlas_intersect(w->top, &r, &best))
+		return false;
+	fill_hit(w, w->top_inst[best.inst], best.prim, best.u, best.v, hit);
+	hit->t = best.t;
 	return true;
+}
+
+/* Every hit of the circle on the SSS volume of `at`: its instance alone, or every member of its
+ * group (traced over all instances, then filtered). The position is the circle's exact one. */
+static uint32_t world_circle(void *user, const render_hit *at, const tri_circle *q, render_hit *hits, float *theta,
+			     uint32_t max)
+{
+	const world *w = user;
+	if (!w->top || at->object >= w->n_insts || w->inst_top[at->object] == UINT32_MAX)
+		return 0;
+	tri_circle_hit th[RENDER_SSS_MAX_HITS];
+	int group = w->sss_group[at->object];
+	uint32_t only = group < 0 ? w->inst_top[at->object] : TLAS_ALL_INSTANCES;
+	uint32_t n = tlas_circle(w->top, q, only, th, RENDER_SSS_MAX_HITS);
+	if (n > RENDER_SSS_MAX_HITS)
+		n = RENDER_SSS_MAX_HITS;
+	uint32_t k = 0;
+	for (uint32_t i = 0; i < n && k < max; i++) {
+		uint32_t inst = w->top_inst[th[i].inst];
+		if (group >= 0 && w->sss_group[inst] != group)
+			continue;
+		fill_hit(w, inst, th[i].prim, th[i].u, th[i].v, &hits[k]);
+		hits[k].p = th[i].pos;
+		theta[k++] = th[i].theta;
+	}
+	return k;
 }
 
 static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
@@ -332,11 +405,28 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, dia
 	return true;
 }
 
+/* The SSS volume of each instance: alone (-1), or the first instance of its material's group. */
+static void build_groups(world *w, const scene *sc)
+{
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_material *m = scene_object_at(sc, i)->material;
+		w->sss_group[i] = -1;
+		for (size_t j = 0; is_sss(m) && m->sss.group && j <= i; j++) {
+			const scene_material *mj = scene_object_at(sc, j)->material;
+			if (is_sss(mj) && mj->sss.group && !strcmp(mj->sss.group, m->sss.group)) {
+				w->sss_group[i] = (int)j;
+				break;
+			}
+		}
+	}
+}
+
 static bool build_instances(world *w, const scene *sc, diag *d)
 {
 	size_t n = scene_n_objects(sc);
 	w->insts = mem_calloc(n ? n : 1, sizeof *w->insts);
-	if (!w->insts) {
+	w->sss_group = mem_calloc(n ? n : 1, sizeof *w->sss_group);
+	if (!w->insts || !w->sss_group) {
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
@@ -354,6 +444,7 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 		    !flatten_instance(w, in, sc->n_geoms + i, d, o->loc))
 			return false;
 	}
+	build_groups(w, sc);
 	return true;
 }
 
@@ -410,12 +501,15 @@ static bool build_top(world *w, diag *d)
 	tlas_instance *all = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *all);
 	tlas_instance *casters = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *casters);
 	w->top_inst = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *w->top_inst);
-	bool ok = all && casters && w->top_inst;
+	w->inst_top = mem_alloc(w->n_insts ? w->n_insts : 1, sizeof *w->inst_top);
+	bool ok = all && casters && w->top_inst && w->inst_top;
 	uint32_t na = 0, nc = 0;
 	for (size_t i = 0; ok && i < w->n_insts; i++) {
 		const world_inst *in = &w->insts[i];
+		w->inst_top[i] = UINT32_MAX;
 		if (!in->g->b)
 			continue;
+		w->inst_top[i] = na;
 		w->top_inst[na] = (uint32_t)i;
 		all[na++] = (tlas_instance){in->g->b, in->xf};
 		if (!in->no_shadow)
@@ -566,7 +660,9 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	w->n_materials = sc->n_materials + 1;
 	w->bsdfs = mem_calloc(w->n_materials, sizeof *w->bsdfs);
 	w->materials = mem_calloc(w->n_materials, sizeof *w->materials);
-	if (!w->geoms || !w->bsdfs || !w->materials) {
+	w->sss = mem_calloc(w->n_materials, sizeof *w->sss);
+	w->sss_of = mem_calloc(w->n_materials, sizeof *w->sss_of);
+	if (!w->geoms || !w->bsdfs || !w->materials || !w->sss || !w->sss_of) {
 		diag_error(d, diag_noloc(), "out of memory");
 		world_free(w);
 		return false;
@@ -577,7 +673,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	ok = ok && build_instances(w, sc, d) && build_planes(w, sc, d);
 	/* Normal maps need tangents; meshes without them get generated ones. */
 	for (const scene_material *m = sc->materials; ok && m; m = m->next)
-		ok = o.geometry_only || build_material(w, m->id, m, d);
+		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
 	if (ok)
 		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
 	for (size_t i = 0; ok && !o.geometry_only && i < w->n_insts; i++) {
@@ -612,7 +708,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	}
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
-			       .lights = &w->lights};
+			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle};
 	return true;
 }
 
@@ -629,7 +725,8 @@ void world_free(world *w)
 	}
 	light_set_free(&w->lights);
 	tlas_free(w->top), tlas_free(w->shadow);
-	mem_free(w->top_inst);
+	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
+	mem_free(w->sss), mem_free(w->sss_of);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
 	memset(w, 0, sizeof *w);

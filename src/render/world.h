@@ -29,6 +29,7 @@ typedef struct world_options {
 	int width, height;    /* the image, for the camera and adaptive tessellation */
 	size_t max_memory;    /* tessellation limit in bytes (0: 1 GiB) */
 	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
+	scene_sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
 } world_options;
 
 /* One geometry record made triangles: its mesh and BVH (object space). */
@@ -83,7 +84,12 @@ typedef struct world {
 	cam camera;
 	vec3 lo, hi;            /* world bounds of the objects */
 	float radius;           /* of the bounding sphere, for the lights */
-	bool has_sss;           /* some material's interior stands in for subsurface scattering */
+	bool has_sss;           /* some material scatters below its surface */
+	render_sss *sss;        /* indexed like materials; meaningful where sss_of is not NULL */
+	const render_sss **sss_of; /* the integrator's table: NULL for materials without SSS */
+	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
+	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index */
+	size_t sss_stand_in;    /* SSS materials asking for disk or volume, rendered by circle for now */
 	world_stats stats;
 	render_scene rs;        /* the integrator's view of this world */
 } world;
