@@ -16,6 +16,6 @@ done
 for c in $covered; do
 	echo "$rules" | grep -qx "$c" || { echo "FAIL: grammar_walk.pov names '$c', which scene.ebnf lacks"; fail=1; }
 done
-"$CIRCE" check "$walk" >/dev/null || { echo "FAIL: grammar_walk.pov does not parse"; fail=1; }
+"$CIRCE" check --dump "$walk" >/dev/null || { echo "FAIL: grammar_walk.pov does not parse"; fail=1; }
 echo "grammar rules: $n"
 exit $fail
