@@ -90,14 +90,21 @@ static inline vec3 m128_to_v3(__m128 a)
 	return v3(f[0], f[1], f[2]);
 }
 
-static float half_area4(__m128 lo, __m128 hi) { return half_area(m128_to_v3(lo), m128_to_v3(hi)); }
+/* half_area of boxes held in registers (lanes x, y, z), without a trip through memory. */
+static inline float half_area4(__m128 lo, __m128 hi)
+{
+	__m128 e = _mm_sub_ps(hi, lo);
+	__m128 p = _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1))); /* xy yz zx */
+	__m128 s = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+	return _mm_cvtss_f32(_mm_add_ss(s, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 2, 2, 2))));
+}
 
 /* The bins of the three axes for the doubled centroid c: (c - cmin) scale, clamped to the bins in
  * float before truncation (the same bin as truncating then clamping, for finite input). */
-static inline __m128i bins_of(__m128 c, __m128 cmin, __m128 scale)
+static inline __m128i bins_of(__m128 c, __m128 cmin, __m128 scale, __m128 last_bin)
 {
 	__m128 f = _mm_mul_ps(_mm_sub_ps(c, cmin), scale);
-	f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps((float)(SAH_BINS - 1)));
+	f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), last_bin);
 	return _mm_cvttps_epi32(f);
 }
 
@@ -109,38 +116,43 @@ static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 
 typedef struct split {
 	int axis, bin; /* refs whose bin on axis is below bin go left */
-	__m128 cmin, scale;
+	__m128 cmin, scale, last_bin;
 } split;
 
 /* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
- * (or none exists). */
+ * (or none exists). Small nodes get fewer bins (twice their count): most nodes are small, and
+ * clearing and sweeping 16 bins would cost them more than their refs do. Costs are compared
+ * multiplied by the node's area, which saves a division per candidate. */
 static bool find_split(const build_ref *refs, const build_task *tk, split *out)
 {
 	uint32_t count = tk->end - tk->begin;
-	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY; /* the leaf */
 	float node_area = half_area4(tk->lo, tk->hi);
+	/* The leaf, and the inner node: SAH_TRAVERSAL_COST + SAH_INTERSECTION_COST * sum / node_area
+	 * < best exactly when sum < best_sum. */
+	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY;
+	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
 	bool found = false;
+	int nb = count < SAH_BINS / 2 ? 2 * (int)count : SAH_BINS;
 	__m128 ext = _mm_sub_ps(tk->chi, tk->clo);
 	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
-	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)SAH_BINS * (1.0f - 1e-6f)), ext));
+	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
+	__m128 last_bin = _mm_set1_ps((float)(nb - 1));
 	int usable_mask = _mm_movemask_ps(usable);
-	uint32_t cnt[3][SAH_BINS] = {{0}};
+	uint32_t cnt[3][SAH_BINS];
 	__m128 blo[3][SAH_BINS], bhi[3][SAH_BINS];
 	for (int ax = 0; ax < 3; ax++)
-		for (int i = 0; i < SAH_BINS; i++)
-			blo[ax][i] = _mm_set1_ps(INFINITY), bhi[ax][i] = _mm_set1_ps(-INFINITY);
+		for (int i = 0; i < nb; i++)
+			cnt[ax][i] = 0, blo[ax][i] = _mm_set1_ps(INFINITY), bhi[ax][i] = _mm_set1_ps(-INFINITY);
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		__m128 lo = refs[i].lo, hi = refs[i].hi;
 		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(_mm_add_ps(lo, hi), tk->clo, scale));
+		_mm_storeu_si128((__m128i *)k, bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin));
 		for (int ax = 0; ax < 3; ax++) {
 			cnt[ax][k[ax]]++;
 			blo[ax][k[ax]] = _mm_min_ps(blo[ax][k[ax]], lo);
 			bhi[ax][k[ax]] = _mm_max_ps(bhi[ax][k[ax]], hi);
 		}
 	}
-	float sc[4];
-	_mm_storeu_ps(sc, scale);
 	for (int ax = 0; ax < 3; ax++) {
 		if (!(usable_mask >> ax & 1))
 			continue;
@@ -148,24 +160,23 @@ static bool find_split(const build_ref *refs, const build_task *tk, split *out)
 		float right_cost[SAH_BINS];
 		__m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
 		uint32_t n = 0;
-		for (int i = SAH_BINS - 1; i > 0; i--) {
+		for (int i = nb - 1; i > 0; i--) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
 			right_cost[i] = n ? half_area4(lo, hi) * (float)n : 0.0f;
 		}
 		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
-		for (int i = 0; i < SAH_BINS - 1; i++) {
+		for (int i = 0; i < nb - 1; i++) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
 			if (n == 0 || n == count)
 				continue;
-			float cost = SAH_TRAVERSAL_COST +
-				     SAH_INTERSECTION_COST * (half_area4(lo, hi) * (float)n + right_cost[i + 1]) / node_area;
-			if (cost < best) {
-				best = cost, out->axis = ax, out->bin = i + 1;
+			float sum = half_area4(lo, hi) * (float)n + right_cost[i + 1];
+			if (sum < best_sum) {
+				best_sum = sum, out->axis = ax, out->bin = i + 1;
 				found = true;
 			}
 		}
 	}
-	out->cmin = tk->clo, out->scale = scale;
+	out->cmin = tk->clo, out->scale = scale, out->last_bin = last_bin;
 	return found;
 }
 
@@ -197,7 +208,7 @@ static uint32_t partition(build_ref *refs, const build_task *tk, const split *s,
 		build_ref ref = refs[i];
 		__m128 c = _mm_add_ps(ref.lo, ref.hi);
 		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(c, s->cmin, s->scale));
+		_mm_storeu_si128((__m128i *)k, bins_of(c, s->cmin, s->scale, s->last_bin));
 		build_task *t;
 		if (k[s->axis] < s->bin) {
 			t = l, i++;

@@ -77,7 +77,7 @@ static void check_degenerate(void)
 	long bad = 0, hits = 0;
 	for (int i = 0; i < 20000 && b; i++) {
 		bvh_ray r = test_random_ray(&m, v3s(0), v3s(1), &g);
-		bvh_hit hb, hr;
+		bvh_hit hb = {0}, hr = {0};
 		bool fb = bvh_intersect(b, &r, &hb), fr = brute_intersect(&bf, &r, &hr);
 		hits += fb;
 		if (fb != fr || (fb && (hb.prim != hr.prim || hb.t != hr.t)) || (fb && hb.prim % 5 != 3)) {
@@ -98,10 +98,43 @@ static void check_degenerate(void)
 	free(p), free(ix);
 }
 
+/* Meshes of a few triangles: a root that is a leaf, 4-wide nodes with empty slots, leaves of every
+ * size, and few-binned splits. */
+static void check_small_meshes(void)
+{
+	static const uint32_t sizes[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 31, 64, 257};
+	rng g;
+	rng_seed(&g, 9, 9);
+	for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++) {
+		uint32_t n = sizes[s];
+		vec3 *p = malloc(3 * n * sizeof *p);
+		uint32_t *ix = malloc(3 * n * sizeof *ix);
+		for (uint32_t i = 0; i < 3 * n; i++) {
+			vec3 c = v3(rng_float(&g), rng_float(&g), rng_float(&g));
+			p[i] = i % 3 ? v3_add(p[i - i % 3], v3_scale(v3_sub(c, v3s(0.5f)), 0.4f)) : c;
+			ix[i] = i;
+		}
+		mesh m = {.num_vertices = 3 * n, .num_triangles = n, .positions = p, .indices = ix};
+		bvh *b = bvh_build(p, 3 * n, ix, n);
+		CHECK(b != NULL, "bvh of %u triangles", n);
+		if (b) {
+			char name[32];
+			snprintf(name, sizeof name, "%u triangles", n);
+			brute bf = brute_make(&m);
+			check_rays(name, &m, &bf, b, 2000, 21 + s);
+			check_circles(name, &m, &bf, b, 2000, 500, 22 + s); /* a soup: some circles miss */
+			brute_free(&bf);
+		}
+		bvh_free(b);
+		free(p), free(ix);
+	}
+}
+
 int main(void)
 {
 	check_bad_input();
 	check_degenerate();
+	check_small_meshes();
 	check_mesh_file("scenes/assets/bunny/bunny_npm.obj", test_count(100000), test_count(100000));
 	return check_done("test_bvh");
 }
