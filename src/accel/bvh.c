@@ -380,7 +380,8 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
-		b->tris = mem_alloc(n, sizeof *b->tris);
+		/* One entry of padding: the four-wide triangle test loads 8 bytes past a triangle. */
+		b->tris = mem_calloc((size_t)n + 1, sizeof *b->tris);
 		ok = b->tris != NULL;
 	}
 	if (ok && n > 0) {
@@ -419,7 +420,8 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 
 size_t bvh_bytes(const bvh *b)
 {
-	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) + (size_t)b->num_tris * sizeof(bvh_tri);
+	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) +
+	       (b->num_tris ? (size_t)b->num_tris + 1 : 0) * sizeof(bvh_tri);
 }
 
 uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
@@ -509,7 +511,84 @@ typedef struct stack_entry {
 	float tnear;
 } stack_entry;
 
+/* The watertight test (tri_intersect) of up to four triangles of a leaf at once: the same
+ * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
+ * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
+ * Returns the lanes that hit with t in [tmin, tlimit] (bits below n only) in *hit_mask and those
+ * left to the scalar test in the result; t, u, v receive the lanes' values. */
+typedef struct tri_ray4 {
+	__m128 org[3], sx, sy, sz, tmin;
+	int kx, ky, kz;
+} tri_ray4;
+
+static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
+{
+	q->org[0] = _mm_set1_ps(r->org.x), q->org[1] = _mm_set1_ps(r->org.y), q->org[2] = _mm_set1_ps(r->org.z);
+	q->sx = _mm_set1_ps(r->sx), q->sy = _mm_set1_ps(r->sy), q->sz = _mm_set1_ps(r->sz);
+	q->tmin = _mm_set1_ps(r->tmin);
+	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
+}
+
+/* Triangles tr[0, n), n in 1..4; the triangle array has one entry of padding after its end, so the
+ * 16-byte loads below stay inside it. */
+static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, float tlimit, int *hit_mask,
+				 float t[4], float u[4], float v[4])
+{
+	const float *p[4];
+	for (int j = 0; j < 4; j++)
+		p[j] = (const float *)&tr[j < n ? j : 0];
+	__m128 a0 = _mm_loadu_ps(p[0]), a1 = _mm_loadu_ps(p[1]), a2 = _mm_loadu_ps(p[2]), a3 = _mm_loadu_ps(p[3]);
+	__m128 b0 = _mm_loadu_ps(p[0] + 4), b1 = _mm_loadu_ps(p[1] + 4), b2 = _mm_loadu_ps(p[2] + 4),
+	       b3 = _mm_loadu_ps(p[3] + 4);
+	__m128 c0 = _mm_loadu_ps(p[0] + 8), c1 = _mm_loadu_ps(p[1] + 8), c2 = _mm_loadu_ps(p[2] + 8),
+	       c3 = _mm_loadu_ps(p[3] + 8);
+	_MM_TRANSPOSE4_PS(a0, a1, a2, a3); /* v0 x y z, v1 x */
+	_MM_TRANSPOSE4_PS(b0, b1, b2, b3); /* v1 y z, v2 x y */
+	/* v2 z: the first word of each c. */
+	__m128 c01 = _mm_unpacklo_ps(c0, c1), c23 = _mm_unpacklo_ps(c2, c3);
+	__m128 v2z = _mm_movelh_ps(c01, c23);
+	__m128 A[3], B[3], C[3];
+	A[0] = _mm_sub_ps(a0, q->org[0]), A[1] = _mm_sub_ps(a1, q->org[1]), A[2] = _mm_sub_ps(a2, q->org[2]);
+	B[0] = _mm_sub_ps(a3, q->org[0]), B[1] = _mm_sub_ps(b0, q->org[1]), B[2] = _mm_sub_ps(b1, q->org[2]);
+	C[0] = _mm_sub_ps(b2, q->org[0]), C[1] = _mm_sub_ps(b3, q->org[1]), C[2] = _mm_sub_ps(v2z, q->org[2]);
+	__m128 Az = A[q->kz], Bz = B[q->kz], Cz = C[q->kz];
+	__m128 Ax = _mm_sub_ps(A[q->kx], _mm_mul_ps(q->sx, Az)), Ay = _mm_sub_ps(A[q->ky], _mm_mul_ps(q->sy, Az));
+	__m128 Bx = _mm_sub_ps(B[q->kx], _mm_mul_ps(q->sx, Bz)), By = _mm_sub_ps(B[q->ky], _mm_mul_ps(q->sy, Bz));
+	__m128 Cx = _mm_sub_ps(C[q->kx], _mm_mul_ps(q->sx, Cz)), Cy = _mm_sub_ps(C[q->ky], _mm_mul_ps(q->sy, Cz));
+	__m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
+	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
+	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
+	const __m128 zero = _mm_setzero_ps();
+	int lanes = (1 << n) - 1;
+	int scalar = _mm_movemask_ps(_mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)),
+					       _mm_cmpeq_ps(W, zero))) & lanes;
+	__m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
+	__m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+	__m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
+	__m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(q->sz, Az)), _mm_mul_ps(V, _mm_mul_ps(q->sz, Bz))),
+			      _mm_mul_ps(W, _mm_mul_ps(q->sz, Cz)));
+	__m128 tt = _mm_div_ps(T, det);
+	__m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(det, zero));
+	ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(tt, q->tmin), _mm_cmple_ps(tt, _mm_set1_ps(tlimit))));
+	*hit_mask = _mm_movemask_ps(ok) & lanes & ~scalar;
+	if (*hit_mask) {
+		_mm_storeu_ps(t, tt);
+		_mm_storeu_ps(u, _mm_div_ps(V, det));
+		_mm_storeu_ps(v, _mm_div_ps(W, det));
+	}
+	return scalar;
+}
+
 #define LEAF_END(tr) (((tr)->id & BVH_TRI_LAST) != 0)
+
+/* How many of the leaf's triangles from tr on to test together: up to four. */
+static inline int leaf_run(const bvh_tri *tr)
+{
+	int n = 1;
+	while (n < 4 && !LEAF_END(&tr[n - 1]))
+		n++;
+	return n;
+}
 
 bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
 {
@@ -517,6 +596,8 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 		return false;
 	slab_ray4 sr;
 	slab_prepare4(&sr, r);
+	tri_ray4 q4;
+	tri_ray_prepare4(&q4, r);
 	stack_entry stack[BVH4_STACK];
 	int sp = 0;
 	uint32_t ref = 0;
@@ -566,19 +647,29 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 				continue;
 			}
 		} else {
+			/* Four triangles at a time; the hits are then taken in leaf order, as the loop
+			 * over triangles with tri_intersect takes them. */
 			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;; tr++) {
-				float t, u, v;
-				uint32_t id = tr->id & ~BVH_TRI_LAST;
-				if (tri_intersect(r, tr->v0, tr->v1, tr->v2, *tlimit, &t, &u, &v) &&
-				    (t < *tlimit || id < best_id)) {
-					*tlimit = t;
-					best_id = id;
-					hit->t = t, hit->u = u, hit->v = v, hit->prim = id;
-					found = true;
+			for (;;) {
+				int n = leaf_run(tr);
+				float t4[4], u4[4], v4[4];
+				int hm, sc = tri4_intersect(&q4, tr, n, *tlimit, &hm, t4, u4, v4);
+				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
+					int j = lowest_bit(todo);
+					float t = t4[j], u = u4[j], v = v4[j];
+					bool h = sc >> j & 1 ? tri_intersect(r, tr[j].v0, tr[j].v1, tr[j].v2, *tlimit, &t, &u, &v)
+							     : t <= *tlimit;
+					uint32_t id = tr[j].id & ~BVH_TRI_LAST;
+					if (h && (t < *tlimit || id < best_id)) {
+						*tlimit = t;
+						best_id = id;
+						hit->t = t, hit->u = u, hit->v = v, hit->prim = id;
+						found = true;
+					}
 				}
-				if (LEAF_END(tr))
+				if (LEAF_END(&tr[n - 1]))
 					break;
+				tr += n;
 			}
 		}
 		/* Pop the next entry that can still hold a hit no farther than the best. */
@@ -600,6 +691,8 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 		return false;
 	slab_ray4 sr;
 	slab_prepare4(&sr, r);
+	tri_ray4 q4;
+	tri_ray_prepare4(&q4, r);
 	uint32_t stack[BVH4_STACK];
 	int sp = 0;
 	uint32_t ref = 0;
@@ -616,12 +709,21 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 			}
 		} else {
 			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;; tr++) {
-				float t, u, v;
-				if (tri_intersect(r, tr->v0, tr->v1, tr->v2, r->tmax, &t, &u, &v))
+			for (;;) {
+				int n = leaf_run(tr);
+				float t4[4], u4[4], v4[4];
+				int hm, sc = tri4_intersect(&q4, tr, n, r->tmax, &hm, t4, u4, v4);
+				if (hm)
 					return true;
-				if (LEAF_END(tr))
+				for (; sc != 0; sc &= sc - 1) {
+					const bvh_tri *s1 = &tr[lowest_bit(sc)];
+					float t, u, v;
+					if (tri_intersect(r, s1->v0, s1->v1, s1->v2, r->tmax, &t, &u, &v))
+						return true;
+				}
+				if (LEAF_END(&tr[n - 1]))
 					break;
+				tr += n;
 			}
 		}
 		if (sp == 0)
