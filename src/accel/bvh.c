@@ -1,10 +1,12 @@
-/* bvh.c - binned-SAH build of a binary BVH and its ray and circle traversals.
- * Nodes are 32 bytes; children are stored as a pair (first, first + 1). Leaves point into an
- * array of triangle copies (three vertices and the id, 40 bytes) in leaf order. */
+/* bvh.c - binned-SAH build of a binary BVH, collapsed into a 4-wide one, and its ray and circle
+ * traversals. A 4-wide node holds its children's boxes as struct-of-arrays, so one SSE register
+ * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into an array of triangle
+ * copies (three vertices and the id, 40 bytes) in leaf order. */
 #include "accel/bvh.h"
 
 #include "base/mem.h"
 
+#include <emmintrin.h>
 #include <string.h>
 
 /* SAH: the costs of a node visit (two box tests) and of a triangle test. Their ratio sets the
@@ -24,23 +26,39 @@ typedef struct bvh_tri {
 	uint32_t id;
 } bvh_tri;
 
+/* A 4-wide node, 112 bytes: b[plane][child] with planes lo x, lo y, lo z, hi x, hi y, hi z. A child
+ * is an inner node's index, BVH4_LEAF | its first triangle, or BVH4_EMPTY (then its box is empty,
+ * lo = +inf and hi = -inf, and no ray or circle test passes it). A leaf runs from its first
+ * triangle to the one whose id carries BVH_TRI_LAST. */
+typedef struct bvh4_node {
+	float b[6][4];
+	uint32_t child[4];
+} bvh4_node;
+#define BVH_TRI_LAST 0x80000000u
+#define BVH4_LEAF 0x80000000u
+#define BVH4_EMPTY 0xffffffffu
+/* Entries of a traversal stack: a visit pushes at most three. */
+#define BVH4_STACK (3 * BVH_MAX_DEPTH + 4)
+
 struct bvh {
-	bvh_node *nodes;
+	bvh4_node *nodes; /* node 0 is the root */
 	uint32_t num_nodes;
 	bvh_tri *tris;
 	uint32_t num_tris;
+	vec3 lo, hi; /* bounds of all triangles */
 };
 
-/* A primitive reference during the build: its box, and its index in the input. */
+/* A primitive reference during the build: its box (lane 3 unused), and its index in the input. */
 typedef struct build_ref {
-	vec3 lo;
+	__m128 lo, hi;
 	uint32_t id;
-	vec3 hi;
-	uint32_t pad;
 } build_ref;
 
+/* A node to build: refs[begin, end), their box and the box of their centroids (doubled: lo + hi),
+ * computed by the parent's partition so no pass over the refs is spent on them. */
 typedef struct build_task {
 	uint32_t node, begin, end, depth;
+	__m128 lo, hi, clo, chi;
 } build_task;
 
 /* Component min and max as compare-and-select (minss/maxss): vec.h's fminf-based ones are
@@ -65,10 +83,29 @@ static float half_area(vec3 lo, vec3 hi)
 	return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-static int bin_of(float c, float cmin, float scale)
+static inline vec3 m128_to_v3(__m128 a)
 {
-	int b = (int)((c - cmin) * scale);
-	return b < 0 ? 0 : b >= SAH_BINS ? SAH_BINS - 1 : b;
+	float f[4];
+	_mm_storeu_ps(f, a);
+	return v3(f[0], f[1], f[2]);
+}
+
+/* half_area of boxes held in registers (lanes x, y, z), without a trip through memory. */
+static inline float half_area4(__m128 lo, __m128 hi)
+{
+	__m128 e = _mm_sub_ps(hi, lo);
+	__m128 p = _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1))); /* xy yz zx */
+	__m128 s = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+	return _mm_cvtss_f32(_mm_add_ss(s, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 2, 2, 2))));
+}
+
+/* The bins of the three axes for the doubled centroid c: (c - cmin) scale, clamped to the bins in
+ * float before truncation (the same bin as truncating then clamping, for finite input). */
+static inline __m128i bins_of(__m128 c, __m128 cmin, __m128 scale, __m128 last_bin)
+{
+	__m128 f = _mm_mul_ps(_mm_sub_ps(c, cmin), scale);
+	f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), last_bin);
+	return _mm_cvttps_epi32(f);
 }
 
 static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
@@ -77,61 +114,112 @@ static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 	nd->count = count;
 }
 
-/* Chooses the best binned-SAH split of refs[b, e) with centroid (doubled: lo + hi) bounds
- * [clo, chi]. Returns false when no split beats a leaf (or none exists); else sets axis and the
- * first bin of the right side. */
-static bool find_split(const build_ref *refs, uint32_t b, uint32_t e, vec3 clo, vec3 chi, float node_area,
-		       int *axis, int *split_bin, float *scale_out)
+typedef struct split {
+	int axis, bin; /* refs whose bin on axis is below bin go left */
+	__m128 cmin, scale, last_bin;
+} split;
+
+/* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
+ * (or none exists). Small nodes get fewer bins (twice their count): most nodes are small, and
+ * clearing and sweeping 16 bins would cost them more than their refs do. Costs are compared
+ * multiplied by the node's area, which saves a division per candidate. */
+static bool find_split(const build_ref *refs, const build_task *tk, split *out)
 {
-	uint32_t count = e - b;
-	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY; /* the leaf */
+	uint32_t count = tk->end - tk->begin;
+	float node_area = half_area4(tk->lo, tk->hi);
+	/* The leaf, and the inner node: SAH_TRAVERSAL_COST + SAH_INTERSECTION_COST * sum / node_area
+	 * < best exactly when sum < best_sum. */
+	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY;
+	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
 	bool found = false;
-	float cmin[3] = {clo.x, clo.y, clo.z}, scale[3];
-	bool usable[3];
-	for (int ax = 0; ax < 3; ax++) {
-		float ext = v3_get(chi, ax) - cmin[ax];
-		usable[ax] = ext > 0.0f;
-		scale[ax] = usable[ax] ? (float)SAH_BINS * (1.0f - 1e-6f) / ext : 0.0f;
-	}
-	uint32_t cnt[3][SAH_BINS] = {{0}};
-	vec3 blo[3][SAH_BINS], bhi[3][SAH_BINS];
+	int nb = count < SAH_BINS / 2 ? 2 * (int)count : SAH_BINS;
+	__m128 ext = _mm_sub_ps(tk->chi, tk->clo);
+	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
+	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
+	__m128 last_bin = _mm_set1_ps((float)(nb - 1));
+	int usable_mask = _mm_movemask_ps(usable);
+	uint32_t cnt[3][SAH_BINS];
+	__m128 blo[3][SAH_BINS], bhi[3][SAH_BINS];
 	for (int ax = 0; ax < 3; ax++)
-		for (int i = 0; i < SAH_BINS; i++)
-			blo[ax][i] = v3s(INFINITY), bhi[ax][i] = v3s(-INFINITY);
-	for (uint32_t i = b; i < e; i++) {
-		const build_ref *r = &refs[i];
-		vec3 c = v3_add(r->lo, r->hi);
-		int k0 = bin_of(c.x, cmin[0], scale[0]), k1 = bin_of(c.y, cmin[1], scale[1]), k2 = bin_of(c.z, cmin[2], scale[2]);
-		cnt[0][k0]++, cnt[1][k1]++, cnt[2][k2]++;
-		blo[0][k0] = vmin(blo[0][k0], r->lo), bhi[0][k0] = vmax(bhi[0][k0], r->hi);
-		blo[1][k1] = vmin(blo[1][k1], r->lo), bhi[1][k1] = vmax(bhi[1][k1], r->hi);
-		blo[2][k2] = vmin(blo[2][k2], r->lo), bhi[2][k2] = vmax(bhi[2][k2], r->hi);
+		for (int i = 0; i < nb; i++)
+			cnt[ax][i] = 0, blo[ax][i] = _mm_set1_ps(INFINITY), bhi[ax][i] = _mm_set1_ps(-INFINITY);
+	for (uint32_t i = tk->begin; i < tk->end; i++) {
+		__m128 lo = refs[i].lo, hi = refs[i].hi;
+		int k[4];
+		_mm_storeu_si128((__m128i *)k, bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin));
+		for (int ax = 0; ax < 3; ax++) {
+			cnt[ax][k[ax]]++;
+			blo[ax][k[ax]] = _mm_min_ps(blo[ax][k[ax]], lo);
+			bhi[ax][k[ax]] = _mm_max_ps(bhi[ax][k[ax]], hi);
+		}
 	}
 	for (int ax = 0; ax < 3; ax++) {
-		if (!usable[ax])
+		if (!(usable_mask >> ax & 1))
 			continue;
 		/* Sweep from the right, then from the left. */
 		float right_cost[SAH_BINS];
-		vec3 lo = v3s(INFINITY), hi = v3s(-INFINITY);
+		__m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
 		uint32_t n = 0;
-		for (int i = SAH_BINS - 1; i > 0; i--) {
-			lo = vmin(lo, blo[ax][i]), hi = vmax(hi, bhi[ax][i]), n += cnt[ax][i];
-			right_cost[i] = n ? half_area(lo, hi) * (float)n : 0.0f;
+		for (int i = nb - 1; i > 0; i--) {
+			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
+			right_cost[i] = n ? half_area4(lo, hi) * (float)n : 0.0f;
 		}
-		lo = v3s(INFINITY), hi = v3s(-INFINITY), n = 0;
-		for (int i = 0; i < SAH_BINS - 1; i++) {
-			lo = vmin(lo, blo[ax][i]), hi = vmax(hi, bhi[ax][i]), n += cnt[ax][i];
+		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
+		for (int i = 0; i < nb - 1; i++) {
+			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
 			if (n == 0 || n == count)
 				continue;
-			float cost = SAH_TRAVERSAL_COST +
-				     SAH_INTERSECTION_COST * (half_area(lo, hi) * (float)n + right_cost[i + 1]) / node_area;
-			if (cost < best) {
-				best = cost, *axis = ax, *split_bin = i + 1, *scale_out = scale[ax];
+			float sum = half_area4(lo, hi) * (float)n + right_cost[i + 1];
+			if (sum < best_sum) {
+				best_sum = sum, out->axis = ax, out->bin = i + 1;
 				found = true;
 			}
 		}
 	}
+	out->cmin = tk->clo, out->scale = scale, out->last_bin = last_bin;
 	return found;
+}
+
+/* The two children of a task split at mid, their boxes and centroid boxes filled. */
+static void child_tasks(const build_ref *refs, const build_task *tk, uint32_t left, uint32_t mid,
+			build_task *l, build_task *r)
+{
+	*l = (build_task){left, tk->begin, mid, tk->depth + 1, _mm_set1_ps(INFINITY),
+			  _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY)};
+	*r = (build_task){left + 1, mid, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
+	for (uint32_t i = tk->begin; i < tk->end; i++) {
+		build_task *t = i < mid ? l : r;
+		__m128 c = _mm_add_ps(refs[i].lo, refs[i].hi);
+		t->lo = _mm_min_ps(t->lo, refs[i].lo), t->hi = _mm_max_ps(t->hi, refs[i].hi);
+		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
+	}
+}
+
+/* Moves the refs of split s's left side to the front of the task's range, returns where the right
+ * side starts, and fills the children's boxes as it goes. */
+static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left,
+			  build_task *l, build_task *r)
+{
+	*l = (build_task){left, tk->begin, 0, tk->depth + 1, _mm_set1_ps(INFINITY),
+			  _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY)};
+	*r = (build_task){left + 1, 0, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
+	uint32_t i = tk->begin, j = tk->end;
+	while (i < j) {
+		build_ref ref = refs[i];
+		__m128 c = _mm_add_ps(ref.lo, ref.hi);
+		int k[4];
+		_mm_storeu_si128((__m128i *)k, bins_of(c, s->cmin, s->scale, s->last_bin));
+		build_task *t;
+		if (k[s->axis] < s->bin) {
+			t = l, i++;
+		} else {
+			t = r, refs[i] = refs[--j], refs[j] = ref;
+		}
+		t->lo = _mm_min_ps(t->lo, ref.lo), t->hi = _mm_max_ps(t->hi, ref.hi);
+		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
+	}
+	l->end = r->begin = i;
+	return i;
 }
 
 bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes_out,
@@ -146,21 +234,23 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 		mem_free(refs), mem_free(nodes);
 		return false;
 	}
-	for (uint32_t i = 0; i < n; i++)
-		refs[i] = (build_ref){lo[i], i, hi[i], 0};
+	build_task root = {0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
+			   _mm_set1_ps(-INFINITY)};
+	for (uint32_t i = 0; i < n; i++) {
+		__m128 l = _mm_setr_ps(lo[i].x, lo[i].y, lo[i].z, 0.0f), h = _mm_setr_ps(hi[i].x, hi[i].y, hi[i].z, 0.0f);
+		__m128 c = _mm_add_ps(l, h);
+		refs[i] = (build_ref){l, h, i};
+		root.lo = _mm_min_ps(root.lo, l), root.hi = _mm_max_ps(root.hi, h);
+		root.clo = _mm_min_ps(root.clo, c), root.chi = _mm_max_ps(root.chi, c);
+	}
 	uint32_t used = 1;
 	build_task stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
-	stack[sp++] = (build_task){0, 0, n, 0};
+	stack[sp++] = root;
 	while (sp > 0) {
 		build_task tk = stack[--sp];
 		bvh_node *nd = &nodes[tk.node];
-		vec3 blo = v3s(INFINITY), bhi = v3s(-INFINITY), clo = blo, chi = bhi;
-		for (uint32_t i = tk.begin; i < tk.end; i++) {
-			blo = vmin(blo, refs[i].lo), bhi = vmax(bhi, refs[i].hi);
-			vec3 c = v3_add(refs[i].lo, refs[i].hi);
-			clo = vmin(clo, c), chi = vmax(chi, c);
-		}
+		vec3 blo = m128_to_v3(tk.lo), bhi = m128_to_v3(tk.hi);
 		nd->lo[0] = blo.x, nd->lo[1] = blo.y, nd->lo[2] = blo.z;
 		nd->hi[0] = bhi.x, nd->hi[1] = bhi.y, nd->hi[2] = bhi.z;
 		uint32_t count = tk.end - tk.begin;
@@ -168,37 +258,23 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 			make_leaf(nd, tk.begin, count);
 			continue;
 		}
-		int axis = 0, split_bin = 0;
-		float scale = 0.0f;
-		uint32_t mid;
-		if (find_split(refs, tk.begin, tk.end, clo, chi, half_area(blo, bhi), &axis, &split_bin,
-			       &scale)) {
-			float cmin = v3_get(clo, axis);
-			uint32_t i = tk.begin, j = tk.end;
-			while (i < j) {
-				const build_ref *r = &refs[i];
-				if (bin_of(v3_get(r->lo, axis) + v3_get(r->hi, axis), cmin, scale) < split_bin) {
-					i++;
-				} else {
-					build_ref tmp = refs[i];
-					refs[i] = refs[--j];
-					refs[j] = tmp;
-				}
-			}
-			mid = i;
+		split s = {0};
+		uint32_t left = used;
+		build_task l, r;
+		if (find_split(refs, &tk, &s)) {
+			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
 			continue;
 		} else {
 			/* All centroids coincide (or no split helps): halve by position in the array. */
-			mid = tk.begin + count / 2;
+			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
 		}
-		uint32_t left = used;
 		used += 2;
 		nd->first = left;
-		nd->count = BVH_INNER | (uint32_t)axis;
-		stack[sp++] = (build_task){left + 1, mid, tk.end, tk.depth + 1};
-		stack[sp++] = (build_task){left, tk.begin, mid, tk.depth + 1};
+		nd->count = BVH_INNER | (uint32_t)s.axis;
+		stack[sp++] = r;
+		stack[sp++] = l;
 	}
 	for (uint32_t i = 0; i < n; i++)
 		perm[i] = refs[i].id;
@@ -209,16 +285,84 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 	return true;
 }
 
+/* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
+ * two children and keeps opening the inner one of largest area until it has four (Wald et al.
+ * 2008, "Getting Rid of Packets", section 3). Every 4-wide node consumes at least one binary
+ * inner node, so there are at most max(1, inner) of them. Marks the last triangle of each leaf. */
+static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_node **out, uint32_t *num_out)
+{
+	uint32_t cap = num_bin / 2 + 1;
+	bvh4_node *nodes = mem_alloc(cap, sizeof *nodes);
+	uint32_t *src = mem_alloc(cap, sizeof *src); /* the binary node each 4-wide node stands for */
+	if (!nodes || !src) {
+		mem_free(nodes), mem_free(src);
+		return false;
+	}
+	uint32_t used = 1;
+	src[0] = 0;
+	for (uint32_t i = 0; i < used; i++) {
+		const bvh_node *s = &bin[src[i]];
+		uint32_t slot[4], n = 0;
+		if (s->count & BVH_INNER)
+			slot[n++] = s->first, slot[n++] = s->first + 1;
+		else
+			slot[n++] = src[i]; /* the root is a leaf */
+		while (n < 4) {
+			int open = -1;
+			float best = -1.0f;
+			for (uint32_t k = 0; k < n; k++) {
+				const bvh_node *c = &bin[slot[k]];
+				float a = half_area(bvh_node_lo(c), bvh_node_hi(c));
+				if ((c->count & BVH_INNER) && a > best)
+					best = a, open = (int)k;
+			}
+			if (open < 0)
+				break;
+			uint32_t c0 = bin[slot[open]].first;
+			slot[open] = c0, slot[n++] = c0 + 1;
+		}
+		bvh4_node *nd = &nodes[i];
+		for (uint32_t k = 0; k < 4; k++) {
+			if (k >= n) {
+				for (int p = 0; p < 3; p++)
+					nd->b[p][k] = INFINITY, nd->b[3 + p][k] = -INFINITY;
+				nd->child[k] = BVH4_EMPTY;
+				continue;
+			}
+			const bvh_node *c = &bin[slot[k]];
+			for (int p = 0; p < 3; p++)
+				nd->b[p][k] = c->lo[p], nd->b[3 + p][k] = c->hi[p];
+			if (c->count & BVH_INNER) {
+				src[used] = slot[k];
+				nd->child[k] = used++;
+			} else {
+				nd->child[k] = BVH4_LEAF | c->first;
+				tris[c->first + c->count - 1].id |= BVH_TRI_LAST;
+			}
+		}
+	}
+	mem_free(src);
+	bvh4_node *shrunk = mem_realloc(nodes, used, sizeof *nodes);
+	*out = shrunk ? shrunk : nodes;
+	*num_out = used;
+	return true;
+}
+
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles)
 {
 	for (size_t i = 0; i < 3 * (size_t)num_triangles; i++)
 		if (indices[i] >= num_vertices)
 			return NULL;
+	/* Leaf references and triangle ids keep their top bit for flags. */
+	if (num_triangles >= BVH4_LEAF)
+		return NULL;
 	bvh *b = mem_calloc(1, sizeof *b);
 	uint32_t *keep = mem_alloc(num_triangles, sizeof *keep);
 	vec3 *lo = mem_alloc(num_triangles, sizeof *lo), *hi = mem_alloc(num_triangles, sizeof *hi);
 	uint32_t *perm = mem_alloc(num_triangles, sizeof *perm);
+	bvh_node *bin = NULL;
+	uint32_t num_bin = 0;
 	bool ok = b && keep && lo && hi && perm;
 	uint32_t n = 0;
 	if (ok) {
@@ -232,21 +376,24 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			hi[n] = vmax(a, vmax(c, d));
 			n++;
 		}
-		ok = bvh_build_nodes(lo, hi, n, &b->nodes, &b->num_nodes, perm);
+		ok = bvh_build_nodes(lo, hi, n, &bin, &num_bin, perm);
 	}
 	if (ok && n > 0) {
-		b->tris = mem_alloc(n, sizeof *b->tris);
+		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
+		/* One entry of padding: the four-wide triangle test loads 8 bytes past a triangle. */
+		b->tris = mem_calloc((size_t)n + 1, sizeof *b->tris);
 		ok = b->tris != NULL;
 	}
-	if (ok) {
+	if (ok && n > 0) {
 		for (uint32_t i = 0; i < n; i++) {
 			uint32_t f = keep[perm[i]];
 			const uint32_t *ix = indices + 3 * f;
 			b->tris[i] = (bvh_tri){positions[ix[0]], positions[ix[1]], positions[ix[2]], f};
 		}
 		b->num_tris = n;
+		ok = collapse(bin, num_bin, b->tris, &b->nodes, &b->num_nodes);
 	}
-	mem_free(keep), mem_free(lo), mem_free(hi), mem_free(perm);
+	mem_free(keep), mem_free(lo), mem_free(hi), mem_free(perm), mem_free(bin);
 	if (!ok) {
 		bvh_free(b);
 		return NULL;
@@ -267,14 +414,14 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 {
 	if (b->num_nodes == 0)
 		return false;
-	*lo = bvh_node_lo(&b->nodes[0]);
-	*hi = bvh_node_hi(&b->nodes[0]);
+	*lo = b->lo, *hi = b->hi;
 	return true;
 }
 
 size_t bvh_bytes(const bvh *b)
 {
-	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh_node) + (size_t)b->num_tris * sizeof(bvh_tri);
+	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) +
+	       (b->num_tris ? (size_t)b->num_tris + 1 : 0) * sizeof(bvh_tri);
 }
 
 uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
@@ -323,61 +470,206 @@ bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tne
 	return node_hit(nd, &s, tlimit, tnear);
 }
 
+/* The slab test of four boxes at once: the same operations as node_hit, in the same order, so
+ * each lane rounds as the scalar test does (_mm_max_ps(a, t) is a > t ? a : t, max_nan). */
+typedef struct slab_ray4 {
+	__m128 org[3], inv[3], tmin, slack;
+	int near_plane[3], far_plane[3];
+} slab_ray4;
+
+static inline void slab_prepare4(slab_ray4 *s, const tri_ray *r)
+{
+	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
+	for (int i = 0; i < 3; i++) {
+		s->org[i] = _mm_set1_ps(o[i]), s->inv[i] = _mm_set1_ps(d[i]);
+		int neg = d[i] < 0.0f;
+		s->near_plane[i] = 3 * neg + i, s->far_plane[i] = 3 * (1 - neg) + i;
+	}
+	s->tmin = _mm_set1_ps(r->tmin);
+	s->slack = _mm_set1_ps(BVH_SLAB_SLACK);
+}
+
+/* Bit k of the result is set when child k's box may hold a hit with t in [tmin, tlimit]; tnear
+ * receives the entry distances. */
+static inline int node4_hit(const bvh4_node *nd, const slab_ray4 *s, float tlimit, float tnear[4])
+{
+	__m128 tn = s->tmin, tf = _mm_set1_ps(tlimit);
+	for (int i = 0; i < 3; i++) {
+		__m128 a = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nd->b[s->near_plane[i]]), s->org[i]), s->inv[i]);
+		__m128 b = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nd->b[s->far_plane[i]]), s->org[i]), s->inv[i]);
+		tn = _mm_max_ps(a, tn), tf = _mm_min_ps(b, tf);
+	}
+	_mm_storeu_ps(tnear, tn);
+	return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, s->slack)));
+}
+
+/* Index of the lowest set bit of a non-zero mask of four bits. */
+static inline int lowest_bit(int mask) { return __builtin_ctz((unsigned)mask); }
+
 typedef struct stack_entry {
-	uint32_t node;
+	uint32_t ref;
 	float tnear;
 } stack_entry;
+
+/* The watertight test (tri_intersect) of up to four triangles of a leaf at once: the same
+ * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
+ * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
+ * Returns the lanes that hit with t in [tmin, tlimit] (bits below n only) in *hit_mask and those
+ * left to the scalar test in the result; t, u, v receive the lanes' values. */
+typedef struct tri_ray4 {
+	__m128 org[3], sx, sy, sz, tmin;
+	int kx, ky, kz;
+} tri_ray4;
+
+static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
+{
+	q->org[0] = _mm_set1_ps(r->org.x), q->org[1] = _mm_set1_ps(r->org.y), q->org[2] = _mm_set1_ps(r->org.z);
+	q->sx = _mm_set1_ps(r->sx), q->sy = _mm_set1_ps(r->sy), q->sz = _mm_set1_ps(r->sz);
+	q->tmin = _mm_set1_ps(r->tmin);
+	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
+}
+
+/* Triangles tr[0, n), n in 1..4; the triangle array has one entry of padding after its end, so the
+ * 16-byte loads below stay inside it. */
+static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, float tlimit, int *hit_mask,
+				 float t[4], float u[4], float v[4])
+{
+	const float *p[4];
+	for (int j = 0; j < 4; j++)
+		p[j] = (const float *)&tr[j < n ? j : 0];
+	__m128 a0 = _mm_loadu_ps(p[0]), a1 = _mm_loadu_ps(p[1]), a2 = _mm_loadu_ps(p[2]), a3 = _mm_loadu_ps(p[3]);
+	__m128 b0 = _mm_loadu_ps(p[0] + 4), b1 = _mm_loadu_ps(p[1] + 4), b2 = _mm_loadu_ps(p[2] + 4),
+	       b3 = _mm_loadu_ps(p[3] + 4);
+	__m128 c0 = _mm_loadu_ps(p[0] + 8), c1 = _mm_loadu_ps(p[1] + 8), c2 = _mm_loadu_ps(p[2] + 8),
+	       c3 = _mm_loadu_ps(p[3] + 8);
+	_MM_TRANSPOSE4_PS(a0, a1, a2, a3); /* v0 x y z, v1 x */
+	_MM_TRANSPOSE4_PS(b0, b1, b2, b3); /* v1 y z, v2 x y */
+	/* v2 z: the first word of each c. */
+	__m128 c01 = _mm_unpacklo_ps(c0, c1), c23 = _mm_unpacklo_ps(c2, c3);
+	__m128 v2z = _mm_movelh_ps(c01, c23);
+	__m128 A[3], B[3], C[3];
+	A[0] = _mm_sub_ps(a0, q->org[0]), A[1] = _mm_sub_ps(a1, q->org[1]), A[2] = _mm_sub_ps(a2, q->org[2]);
+	B[0] = _mm_sub_ps(a3, q->org[0]), B[1] = _mm_sub_ps(b0, q->org[1]), B[2] = _mm_sub_ps(b1, q->org[2]);
+	C[0] = _mm_sub_ps(b2, q->org[0]), C[1] = _mm_sub_ps(b3, q->org[1]), C[2] = _mm_sub_ps(v2z, q->org[2]);
+	__m128 Az = A[q->kz], Bz = B[q->kz], Cz = C[q->kz];
+	__m128 Ax = _mm_sub_ps(A[q->kx], _mm_mul_ps(q->sx, Az)), Ay = _mm_sub_ps(A[q->ky], _mm_mul_ps(q->sy, Az));
+	__m128 Bx = _mm_sub_ps(B[q->kx], _mm_mul_ps(q->sx, Bz)), By = _mm_sub_ps(B[q->ky], _mm_mul_ps(q->sy, Bz));
+	__m128 Cx = _mm_sub_ps(C[q->kx], _mm_mul_ps(q->sx, Cz)), Cy = _mm_sub_ps(C[q->ky], _mm_mul_ps(q->sy, Cz));
+	__m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
+	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
+	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
+	const __m128 zero = _mm_setzero_ps();
+	int lanes = (1 << n) - 1;
+	int scalar = _mm_movemask_ps(_mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)),
+					       _mm_cmpeq_ps(W, zero))) & lanes;
+	__m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
+	__m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+	__m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
+	__m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(q->sz, Az)), _mm_mul_ps(V, _mm_mul_ps(q->sz, Bz))),
+			      _mm_mul_ps(W, _mm_mul_ps(q->sz, Cz)));
+	__m128 tt = _mm_div_ps(T, det);
+	__m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(det, zero));
+	ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(tt, q->tmin), _mm_cmple_ps(tt, _mm_set1_ps(tlimit))));
+	*hit_mask = _mm_movemask_ps(ok) & lanes & ~scalar;
+	if (*hit_mask) {
+		_mm_storeu_ps(t, tt);
+		_mm_storeu_ps(u, _mm_div_ps(V, det));
+		_mm_storeu_ps(v, _mm_div_ps(W, det));
+	}
+	return scalar;
+}
+
+#define LEAF_END(tr) (((tr)->id & BVH_TRI_LAST) != 0)
+
+/* How many of the leaf's triangles from tr on to test together: up to four. */
+static inline int leaf_run(const bvh_tri *tr)
+{
+	int n = 1;
+	while (n < 4 && !LEAF_END(&tr[n - 1]))
+		n++;
+	return n;
+}
 
 bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
 {
 	if (b->num_nodes == 0)
 		return false;
-	float tn0, tn1;
-	slab_ray sr;
-	slab_prepare(&sr, r);
-	if (!node_hit(&b->nodes[0], &sr, *tlimit, &tn0))
-		return false;
-	stack_entry stack[BVH_MAX_DEPTH + 2];
+	slab_ray4 sr;
+	slab_prepare4(&sr, r);
+	tri_ray4 q4;
+	tri_ray_prepare4(&q4, r);
+	stack_entry stack[BVH4_STACK];
 	int sp = 0;
-	uint32_t ni = 0;
+	uint32_t ref = 0;
 	bool found = false;
 	uint32_t best_id = UINT32_MAX;
 	for (;;) {
-		const bvh_node *nd = &b->nodes[ni];
-		if (nd->count & BVH_INNER) {
-			uint32_t c0 = nd->first, c1 = c0 + 1;
-			bool h0 = node_hit(&b->nodes[c0], &sr, *tlimit, &tn0);
-			bool h1 = node_hit(&b->nodes[c1], &sr, *tlimit, &tn1);
-			if (h0 && h1) {
-				if (tn1 < tn0) {
-					uint32_t tc = c0;
-					c0 = c1, c1 = tc;
-					float tt = tn0;
-					tn0 = tn1, tn1 = tt;
+		if (!(ref & BVH4_LEAF)) {
+			const bvh4_node *nd = &b->nodes[ref];
+			float tn[4];
+			int mask = node4_hit(nd, &sr, *tlimit, tn);
+			if (mask != 0) {
+				int k0 = lowest_bit(mask);
+				mask &= mask - 1;
+				if (mask == 0) {
+					ref = nd->child[k0];
+					continue;
 				}
-				stack[sp++] = (stack_entry){c1, tn1};
-				ni = c0;
-				continue;
-			}
-			if (h0) {
-				ni = c0;
-				continue;
-			}
-			if (h1) {
-				ni = c1;
+				int k1 = lowest_bit(mask);
+				mask &= mask - 1;
+				if (mask == 0) {
+					/* Two: go to the nearer, keep the other. */
+					if (tn[k1] < tn[k0]) {
+						int tk = k0;
+						k0 = k1, k1 = tk;
+					}
+					stack[sp++] = (stack_entry){nd->child[k1], tn[k1]};
+					ref = nd->child[k0];
+					continue;
+				}
+				/* Three or four: push all sorted, the nearest on top, and take it. */
+				int base = sp;
+				stack[sp++] = (stack_entry){nd->child[k0], tn[k0]};
+				stack[sp++] = (stack_entry){nd->child[k1], tn[k1]};
+				do {
+					int k = lowest_bit(mask);
+					mask &= mask - 1;
+					stack[sp++] = (stack_entry){nd->child[k], tn[k]};
+				} while (mask != 0);
+				for (int i = base + 1; i < sp; i++) {
+					stack_entry e = stack[i];
+					int j = i;
+					for (; j > base && stack[j - 1].tnear < e.tnear; j--)
+						stack[j] = stack[j - 1];
+					stack[j] = e;
+				}
+				ref = stack[--sp].ref;
 				continue;
 			}
 		} else {
-			const bvh_tri *tr = &b->tris[nd->first];
-			for (uint32_t i = 0; i < nd->count; i++, tr++) {
-				float t, u, v;
-				if (tri_intersect(r, tr->v0, tr->v1, tr->v2, *tlimit, &t, &u, &v) &&
-				    (t < *tlimit || tr->id < best_id)) {
-					*tlimit = t;
-					best_id = tr->id;
-					hit->t = t, hit->u = u, hit->v = v, hit->prim = tr->id;
-					found = true;
+			/* Four triangles at a time; the hits are then taken in leaf order, as the loop
+			 * over triangles with tri_intersect takes them. */
+			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
+			for (;;) {
+				int n = leaf_run(tr);
+				float t4[4], u4[4], v4[4];
+				int hm, sc = tri4_intersect(&q4, tr, n, *tlimit, &hm, t4, u4, v4);
+				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
+					int j = lowest_bit(todo);
+					float t = t4[j], u = u4[j], v = v4[j];
+					bool h = sc >> j & 1 ? tri_intersect(r, tr[j].v0, tr[j].v1, tr[j].v2, *tlimit, &t, &u, &v)
+							     : t <= *tlimit;
+					uint32_t id = tr[j].id & ~BVH_TRI_LAST;
+					if (h && (t < *tlimit || id < best_id)) {
+						*tlimit = t;
+						best_id = id;
+						hit->t = t, hit->u = u, hit->v = v, hit->prim = id;
+						found = true;
+					}
 				}
+				if (LEAF_END(&tr[n - 1]))
+					break;
+				tr += n;
 			}
 		}
 		/* Pop the next entry that can still hold a hit no farther than the best. */
@@ -386,7 +678,7 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 				return found;
 			stack_entry e = stack[--sp];
 			if (e.tnear <= *tlimit * BVH_SLAB_SLACK) {
-				ni = e.node;
+				ref = e.ref;
 				break;
 			}
 		}
@@ -397,33 +689,46 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 {
 	if (b->num_nodes == 0)
 		return false;
-	float tn;
-	slab_ray sr;
-	slab_prepare(&sr, r);
-	if (!node_hit(&b->nodes[0], &sr, r->tmax, &tn))
-		return false;
-	uint32_t stack[BVH_MAX_DEPTH + 2];
+	slab_ray4 sr;
+	slab_prepare4(&sr, r);
+	tri_ray4 q4;
+	tri_ray_prepare4(&q4, r);
+	uint32_t stack[BVH4_STACK];
 	int sp = 0;
-	uint32_t ni = 0;
+	uint32_t ref = 0;
 	for (;;) {
-		const bvh_node *nd = &b->nodes[ni];
-		if (nd->count & BVH_INNER) {
-			uint32_t c0 = nd->first, c1 = c0 + 1;
-			bool h0 = node_hit(&b->nodes[c0], &sr, r->tmax, &tn);
-			bool h1 = node_hit(&b->nodes[c1], &sr, r->tmax, &tn);
-			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
+		if (!(ref & BVH4_LEAF)) {
+			const bvh4_node *nd = &b->nodes[ref];
+			float tn[4];
+			int mask = node4_hit(nd, &sr, r->tmax, tn);
+			if (mask != 0) {
+				ref = nd->child[lowest_bit(mask)];
+				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+					stack[sp++] = nd->child[lowest_bit(mask)];
 				continue;
+			}
 		} else {
-			const bvh_tri *tr = &b->tris[nd->first];
-			for (uint32_t i = 0; i < nd->count; i++, tr++) {
-				float t, u, v;
-				if (tri_intersect(r, tr->v0, tr->v1, tr->v2, r->tmax, &t, &u, &v))
+			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
+			for (;;) {
+				int n = leaf_run(tr);
+				float t4[4], u4[4], v4[4];
+				int hm, sc = tri4_intersect(&q4, tr, n, r->tmax, &hm, t4, u4, v4);
+				if (hm)
 					return true;
+				for (; sc != 0; sc &= sc - 1) {
+					const bvh_tri *s1 = &tr[lowest_bit(sc)];
+					float t, u, v;
+					if (tri_intersect(r, s1->v0, s1->v1, s1->v2, r->tmax, &t, &u, &v))
+						return true;
+				}
+				if (LEAF_END(&tr[n - 1]))
+					break;
+				tr += n;
 			}
 		}
 		if (sp == 0)
 			return false;
-		ni = stack[--sp];
+		ref = stack[--sp];
 	}
 }
 
@@ -505,9 +810,56 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 	return circle_prepare(q, box_extent(lo, hi), &p) && box_circle(&p, lo, hi);
 }
 
-static bool node_circle(const circle_prep *p, const bvh_node *nd)
+/* box_circle on the four children of a node, lane by lane with the same operations in the same
+ * order, so each lane is exactly as conservative as the scalar test. An empty child fails the
+ * bounds test (lo = +inf). */
+typedef struct circle_prep4 {
+	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3];
+	__m128 slack, neg_slack, rmax2, rmin2;
+	bool full;
+} circle_prep4;
+
+static void circle_prepare4(const circle_prep *p, circle_prep4 *q)
 {
-	return box_circle(p, bvh_node_lo(nd), bvh_node_hi(nd));
+	vec3 am = v3_abs(p->m), at = v3_abs(p->t);
+	for (int i = 0; i < 3; i++) {
+		q->lo[i] = _mm_set1_ps(v3_get(p->lo, i)), q->hi[i] = _mm_set1_ps(v3_get(p->hi, i));
+		q->c[i] = _mm_set1_ps(v3_get(p->c, i));
+		q->m[i] = _mm_set1_ps(v3_get(p->m, i)), q->abs_m[i] = _mm_set1_ps(v3_get(am, i));
+		q->t[i] = _mm_set1_ps(v3_get(p->t, i)), q->abs_t[i] = _mm_set1_ps(v3_get(at, i));
+	}
+	q->slack = _mm_set1_ps(p->slack), q->neg_slack = _mm_set1_ps(-p->slack);
+	q->rmax2 = _mm_set1_ps(p->rmax2), q->rmin2 = _mm_set1_ps(p->rmin2);
+	q->full = p->full;
+}
+
+static inline __m128 abs4(__m128 x) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), x); }
+static inline __m128 dot4(const __m128 a[3], const __m128 b[3])
+{
+	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a[0], b[0]), _mm_mul_ps(a[1], b[1])), _mm_mul_ps(a[2], b[2]));
+}
+
+static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
+{
+	const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps();
+	__m128 ok = _mm_castsi128_ps(_mm_set1_epi32(-1));
+	__m128 e[3], rel[3], a[3], dn[3], df[3];
+	for (int i = 0; i < 3; i++) {
+		__m128 lo = _mm_load_ps(nd->b[i]), hi = _mm_load_ps(nd->b[3 + i]);
+		ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmple_ps(lo, p->hi[i]), _mm_cmpge_ps(hi, p->lo[i])));
+		e[i] = _mm_mul_ps(_mm_sub_ps(hi, lo), half);
+		rel[i] = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(lo, hi), half), p->c[i]);
+		a[i] = abs4(rel[i]);
+		dn[i] = _mm_max_ps(_mm_sub_ps(a[i], e[i]), zero);
+		df[i] = _mm_add_ps(a[i], e[i]);
+	}
+	__m128 plane = _mm_cmple_ps(abs4(dot4(p->m, rel)), _mm_add_ps(dot4(p->abs_m, e), p->slack));
+	ok = _mm_and_ps(ok, plane);
+	if (!p->full)
+		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(dot4(p->t, rel), dot4(p->abs_t, e)), p->neg_slack));
+	ok = _mm_and_ps(ok, _mm_cmple_ps(dot4(dn, dn), p->rmax2));
+	ok = _mm_and_ps(ok, _mm_cmpge_ps(dot4(df, df), p->rmin2));
+	return _mm_movemask_ps(ok);
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
@@ -515,36 +867,41 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 	circle_prep p;
 	if (b->num_nodes == 0)
 		return 0;
-	const bvh_node *root = &b->nodes[0];
-	float extent = box_extent(bvh_node_lo(root), bvh_node_hi(root));
-	if (!circle_prepare(q, extent, &p) || !node_circle(&p, root))
+	if (!circle_prepare(q, box_extent(b->lo, b->hi), &p) || !box_circle(&p, b->lo, b->hi))
 		return 0;
-	uint32_t stack[BVH_MAX_DEPTH + 2];
+	circle_prep4 p4;
+	circle_prepare4(&p, &p4);
+	uint32_t stack[BVH4_STACK];
 	int sp = 0;
-	uint32_t ni = 0, total = 0;
+	uint32_t ref = 0, total = 0;
 	for (;;) {
-		const bvh_node *nd = &b->nodes[ni];
-		if (nd->count & BVH_INNER) {
-			uint32_t c0 = nd->first, c1 = c0 + 1;
-			bool h0 = node_circle(&p, &b->nodes[c0]), h1 = node_circle(&p, &b->nodes[c1]);
-			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
+		if (!(ref & BVH4_LEAF)) {
+			const bvh4_node *nd = &b->nodes[ref];
+			int mask = node4_circle(nd, &p4);
+			if (mask != 0) {
+				ref = nd->child[lowest_bit(mask)];
+				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+					stack[sp++] = nd->child[lowest_bit(mask)];
 				continue;
+			}
 		} else {
-			const bvh_tri *tr = &b->tris[nd->first];
-			for (uint32_t i = 0; i < nd->count; i++, tr++) {
+			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
+			for (;; tr++) {
 				tri_circle_hit h[2];
 				int nh = tri_circle_intersect(q, tr->v0, tr->v1, tr->v2, h);
 				for (int k = 0; k < nh; k++, total++) {
 					if (total < max_hits) {
 						hits[total] = h[k];
-						hits[total].prim = tr->id;
+						hits[total].prim = tr->id & ~BVH_TRI_LAST;
 					}
 				}
+				if (LEAF_END(tr))
+					break;
 			}
 		}
 		if (sp == 0)
 			return total;
-		ni = stack[--sp];
+		ref = stack[--sp];
 	}
 }
 

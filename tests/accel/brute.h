@@ -187,7 +187,9 @@ static inline void check_rays(const char *name, const mesh *m, const brute *bf, 
 	printf("%s: %ld rays, %ld hits, %ld differ\n", name, count, hits, bad);
 }
 
-static inline void check_circles(const char *name, const mesh *m, const brute *bf, const bvh *b, long count, uint64_t seed)
+/* min_hits: the fewest hits the circles must make in all (a closed mesh: about one per circle). */
+static inline void check_circles(const char *name, const mesh *m, const brute *bf, const bvh *b, long count,
+				 long min_hits, uint64_t seed)
 {
 	vec3 lo, hi;
 	mesh_bounds(m, &lo, &hi);
@@ -211,7 +213,7 @@ static inline void check_circles(const char *name, const mesh *m, const brute *b
 			      q.full ? "full" : "half", nb, nr);
 	}
 	CHECK(bad == 0, "%s: %ld of %ld circles differ", name, bad, count);
-	CHECK(total >= count, "%s: %ld hits for %ld circles", name, total, count);
+	CHECK(total >= min_hits, "%s: %ld hits for %ld circles", name, total, count);
 	printf("%s: %ld circles, %ld hits, %ld differ\n", name, count, total, bad);
 }
 
@@ -231,7 +233,7 @@ static inline void check_mesh_file(const char *rel, long rays, long circles)
 	if (b) {
 		brute bf = brute_make(&m);
 		check_rays(rel, &m, &bf, b, rays, 11);
-		check_circles(rel, &m, &bf, b, circles, 12);
+		check_circles(rel, &m, &bf, b, circles, circles, 12);
 		brute_free(&bf);
 		bvh_free(b);
 	}

@@ -98,10 +98,86 @@ static void check_degenerate(void)
 	free(p), free(ix);
 }
 
+/* Meshes of a few triangles: a root that is a leaf, 4-wide nodes with empty slots, leaves of every
+ * size, and few-binned splits. */
+static void check_small_meshes(void)
+{
+	static const uint32_t sizes[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 31, 64, 257};
+	rng g;
+	rng_seed(&g, 9, 9);
+	for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++) {
+		uint32_t n = sizes[s];
+		vec3 *p = malloc(3 * n * sizeof *p);
+		uint32_t *ix = malloc(3 * n * sizeof *ix);
+		for (uint32_t i = 0; i < 3 * n; i++) {
+			vec3 c = v3(rng_float(&g), rng_float(&g), rng_float(&g));
+			p[i] = i % 3 ? v3_add(p[i - i % 3], v3_scale(v3_sub(c, v3s(0.5f)), 0.4f)) : c;
+			ix[i] = i;
+		}
+		mesh m = {.num_vertices = 3 * n, .num_triangles = n, .positions = p, .indices = ix};
+		bvh *b = bvh_build(p, 3 * n, ix, n);
+		CHECK(b != NULL, "bvh of %u triangles", n);
+		if (b) {
+			char name[32];
+			snprintf(name, sizeof name, "%u triangles", n);
+			brute bf = brute_make(&m);
+			check_rays(name, &m, &bf, b, 2000, 21 + s);
+			check_circles(name, &m, &bf, b, 2000, 500, 22 + s); /* a soup: some circles miss */
+			brute_free(&bf);
+		}
+		bvh_free(b);
+		free(p), free(ix);
+	}
+}
+
+/* Rays aimed exactly at vertices and edge midpoints, where U, V or W of the watertight test is
+ * zero in float and the double-precision decision runs (in the four-wide leaf test, those lanes
+ * fall back to tri_intersect). */
+static void check_edge_rays(const char *rel)
+{
+	mesh m;
+	diag d;
+	diag_init(&d, stderr);
+	if (!mesh_import(test_path(rel), &m, &d)) {
+		CHECK(0, "cannot read %s", rel);
+		diag_free(&d);
+		return;
+	}
+	bvh *b = bvh_build(m.positions, m.num_vertices, m.indices, m.num_triangles);
+	brute bf = brute_make(&m);
+	vec3 lo, hi;
+	mesh_bounds(&m, &lo, &hi);
+	rng g;
+	rng_seed(&g, 31, 31);
+	long bad = 0, hits = 0, n = test_count(20000);
+	for (long i = 0; i < n && b; i++) {
+		uint32_t f = rng_below(&g, m.num_triangles);
+		vec3 v0 = test_tri_vertex(&m, f, 0), v1 = test_tri_vertex(&m, f, 1);
+		vec3 target = i % 2 ? v0 : v3_scale(v3_add(v0, v1), 0.5f);
+		bvh_ray r = test_random_ray(&m, lo, hi, &g);
+		r.dir = v3_sub(target, r.org);
+		bvh_hit hb = {0}, hr = {0};
+		bool fb = bvh_intersect(b, &r, &hb), fr = brute_intersect(&bf, &r, &hr), occ = bvh_occluded(b, &r);
+		hits += fr;
+		if ((fb != fr || occ != fr || (fr && (hb.t != hr.t || hb.u != hr.u || hb.v != hr.v || hb.prim != hr.prim))) &&
+		    bad++ < 5)
+			CHECK(0, "%s edge ray %ld: bvh %d (t %.9g prim %u) occluded %d, brute %d (t %.9g prim %u)", rel, i, fb,
+			      hb.t, hb.prim, occ, fr, hr.t, hr.prim);
+	}
+	CHECK(b && bad == 0 && hits > n / 2, "%s: %ld of %ld edge rays differ (%ld hits)", rel, bad, n, hits);
+	printf("%s: %ld rays at vertices and edges, %ld hits, %ld differ\n", rel, n, hits, bad);
+	brute_free(&bf);
+	bvh_free(b);
+	mesh_free(&m);
+	diag_free(&d);
+}
+
 int main(void)
 {
 	check_bad_input();
 	check_degenerate();
+	check_small_meshes();
+	check_edge_rays("scenes/assets/bunny/bunny_npm.obj");
 	check_mesh_file("scenes/assets/bunny/bunny_npm.obj", test_count(100000), test_count(100000));
 	return check_done("test_bvh");
 }

@@ -20,7 +20,7 @@ int main(void)
 		brute bf = brute_make(&m);
 		printf("pawn level 2: %u triangles\n", m.num_triangles);
 		check_rays("pawn", &m, &bf, b, test_count(100000), 21);
-		check_circles("pawn", &m, &bf, b, test_count(100000), 22);
+		check_circles("pawn", &m, &bf, b, test_count(100000), test_count(100000), 22);
 		brute_free(&bf);
 		bvh_free(b);
 		mesh_free(&m);
