@@ -4,6 +4,7 @@
 #include "render/bsdf.h"
 
 #include "render/sampling.h"
+#include "sss/profile.h"
 
 static float clamp_alpha(float a)
 {
@@ -32,16 +33,10 @@ bsdf_params bsdf_coat(vec3 albedo, float ior, float roughness)
 	    .kind = BSDF_COAT, .diffuse = albedo, .alpha = clamp_alpha(roughness), .ior = ior};
 }
 
+/* One Fresnel formula for circe: the SSS module's, in double. */
 float bsdf_fresnel_dielectric(float cos_i, float eta)
 {
-	cos_i = fminf(fmaxf(cos_i, 0.0f), 1.0f);
-	float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
-	if (sin2_t >= 1.0f)
-		return 1.0f;
-	float cos_t = sqrtf(1.0f - sin2_t);
-	float rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-	float rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-	return 0.5f * (rs * rs + rp * rp);
+	return (float)sss_fresnel_dielectric(fmin(fmax(cos_i, 0.0), 1.0), eta);
 }
 
 /* Trowbridge-Reitz / GGX: D(h) = alpha^2 / (pi ((alpha^2 - 1) cos^2 + 1)^2) (Walter et al. 2007, eq. 33). */
