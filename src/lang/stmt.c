@@ -14,6 +14,18 @@
 
 /* Reports "expected EXPECT or '}' to close 'what'" at the lookahead, with a note at the opening
  * brace when the file ended. */
+
+/* The index in kws of the keyword that comes next (consumed), or -1 after reporting msg: the
+ * choice of one keyword among a few (profile, method, scheme, boundary), enum values in kws order. */
+static int one_of(parser *p, const lang_tok *kws, int n, const char *msg)
+{
+	for (int i = 0; i < n; i++)
+		if (lang_accept(p, kws[i]))
+			return i;
+	lang_error_found(p, "%s", msg);
+	return -1;
+}
+
 static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
 {
 	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
@@ -335,35 +347,20 @@ static bool sss_block(parser *p, scene_material *m)
 			s->anisotropy = (float)x;
 			break;
 		case LTK_KW_PROFILE: {
+			static const lang_tok kinds[] = {LTK_KW_GAUSSIAN, LTK_KW_SUM_OF_GAUSSIANS, LTK_KW_BURLEY,
+							 LTK_KW_DIPOLE};
 			lang_advance(p);
-			lang_tok k = lang_peek(p)->kind;
-			if (k == LTK_KW_GAUSSIAN)
-				s->profile = PROFILE_GAUSSIAN;
-			else if (k == LTK_KW_SUM_OF_GAUSSIANS)
-				s->profile = PROFILE_SUM_OF_GAUSSIANS;
-			else if (k == LTK_KW_BURLEY)
-				s->profile = PROFILE_BURLEY;
-			else if (k == LTK_KW_DIPOLE)
-				s->profile = PROFILE_DIPOLE;
-			else
-				return lang_error_found(p, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
-			lang_advance(p);
+			int i = one_of(p, kinds, 4, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
+			TRY(i >= 0);
+			s->profile = (scene_sss_profile)(PROFILE_GAUSSIAN + i);
 			break;
 		}
 		case LTK_KW_METHOD: {
+			static const lang_tok kinds[] = {LTK_KW_CIRCLE, LTK_KW_FULLCIRCLE, LTK_KW_DISK, LTK_KW_VOLUME};
 			lang_advance(p);
-			lang_tok k = lang_peek(p)->kind;
-			if (k == LTK_KW_CIRCLE)
-				s->method = SSS_METHOD_CIRCLE;
-			else if (k == LTK_KW_FULLCIRCLE)
-				s->method = SSS_METHOD_FULLCIRCLE;
-			else if (k == LTK_KW_DISK)
-				s->method = SSS_METHOD_DISK;
-			else if (k == LTK_KW_VOLUME)
-				s->method = SSS_METHOD_VOLUME;
-			else
-				return lang_error_found(p, "expected circle, fullcircle, disk or volume after 'method'");
-			lang_advance(p);
+			int i = one_of(p, kinds, 4, "expected circle, fullcircle, disk or volume after 'method'");
+			TRY(i >= 0);
+			s->method = (scene_sss_method)(SSS_METHOD_CIRCLE + i);
 			break;
 		}
 		case LTK_KW_NORMAL_MAP:
@@ -1121,26 +1118,24 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			TRY(once(p, &seen[6], &t));
 			TRY(counted_list(p, "corners", item_corner, sx, NULL, 1, &cnt));
 			break;
-		case LTK_KW_SCHEME:
+		case LTK_KW_SCHEME: {
 			TRY(once(p, &seen[7], &t));
 			lang_advance(p);
-			if (lang_accept(p, LTK_KW_CATMULL_CLARK))
-				d->scheme = SCENE_SUBD_CATMULL_CLARK;
-			else if (lang_accept(p, LTK_KW_LOOP))
-				d->scheme = SCENE_SUBD_LOOP;
-			else
-				return lang_error_found(p, "expected catmull_clark or loop after 'scheme'");
+			int i = one_of(p, (const lang_tok[]){LTK_KW_CATMULL_CLARK, LTK_KW_LOOP}, 2,
+				   "expected catmull_clark or loop after 'scheme'");
+			TRY(i >= 0);
+			d->scheme = (scene_subd_scheme)(SCENE_SUBD_CATMULL_CLARK + i);
 			break;
-		case LTK_KW_BOUNDARY:
+		}
+		case LTK_KW_BOUNDARY: {
 			TRY(once(p, &seen[8], &t));
 			lang_advance(p);
-			if (lang_accept(p, LTK_KW_EDGE_ONLY))
-				d->boundary = SCENE_SUBD_EDGE_ONLY;
-			else if (lang_accept(p, LTK_KW_EDGE_AND_CORNER))
-				d->boundary = SCENE_SUBD_EDGE_AND_CORNER;
-			else
-				return lang_error_found(p, "expected edge_only or edge_and_corner after 'boundary'");
+			int i = one_of(p, (const lang_tok[]){LTK_KW_EDGE_ONLY, LTK_KW_EDGE_AND_CORNER}, 2,
+				   "expected edge_only or edge_and_corner after 'boundary'");
+			TRY(i >= 0);
+			d->boundary = (scene_subd_boundary)(SCENE_SUBD_EDGE_ONLY + i);
 			break;
+		}
 		case LTK_KW_LEVEL:
 			TRY(once(p, &seen[9], &t));
 			lang_advance(p);
