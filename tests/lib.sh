@@ -24,3 +24,9 @@ expect_same_within_noise() {
 		fail "$1: rmse $rmse against $3, noise between seeds $4: $(cat out)"
 	echo "$1: rmse $rmse against $3; between seeds $4"
 }
+# enter_workdir: makes a temporary folder, removed when the test exits, and works in it ($work).
+enter_workdir() {
+	work=$(mktemp -d) || exit 99
+	trap 'rm -rf "$work"' EXIT
+	cd "$work" || exit 99
+}

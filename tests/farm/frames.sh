@@ -4,9 +4,7 @@
 # and the EXR header records the clock.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/anim.pov"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 opts="-W 32 -H 24 --spp 4 --quiet"
 # shellcheck disable=SC2086
 expect_status 0 "$CIRCE" render "$scene" --clock 0 --frame 3 -o 'anim.####.exr' $opts

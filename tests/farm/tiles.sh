@@ -3,9 +3,7 @@
 # bit-identical to the frame rendered whole in one process.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/farm.pov"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 opts="-W 48 -H 36 --spp 4 --seed 11 --quiet"
 # shellcheck disable=SC2086
 "$CIRCE" render "$scene" -o whole.exr --threads 2 $opts >log 2>&1 ||

@@ -3,9 +3,7 @@
 # --region quarters assembled equal the whole image bit-exactly; another seed gives another image.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/farm.pov"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 opts="-W 40 -H 30 --spp 8 --seed 3 --quiet --aov albedo,normal,depth,variance"
 # shellcheck disable=SC2086
 "$CIRCE" render "$scene" -o t1.exr --threads 1 $opts >log 2>&1 ||

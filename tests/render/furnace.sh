@@ -5,9 +5,7 @@
 # background, so its radiance is its albedo). One MIS sample here has a standard deviation of
 # about 0.22, so 8192 samples put 1 % at over 4 standard deviations of a pixel.
 . "$top_srcdir/tests/lib.sh"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 MKEXR="$top_builddir/tests/io/mkexr"
 for a in 1 0.5; do
 	cat >f.pov <<EOS

@@ -3,9 +3,7 @@
 # so far with their count in the header, exits 130, and leaves no temporary file; SIGTERM too.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/farm.pov"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 "$CIRCE" render "$scene" -o probe.exr -W 8 -H 8 --spp 1 --quiet >log 2>&1 ||
 	{ grep -q "which this build lacks" log && skip "circe render is not in this build yet"; fail "render: $(cat log)"; }
 rm -f probe.exr

@@ -4,9 +4,7 @@
 # within float rounding: paths that diverge by rounding make a difference far below the noise, so
 # the RMSE against scale 1 must be under a quarter of the RMSE between two seeds.
 . "$top_srcdir/tests/lib.sh"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 for s in 1 0.001 1000; do
 	cat >s$s.pov <<EOS
 camera { location <0, 1.2, -4> * $s look_at <0, 0.5, 0> * $s angle 50 }

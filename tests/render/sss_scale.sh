@@ -5,9 +5,7 @@
 # float precision. "The same" within rounding: the RMSE against scale 1 must be under half the
 # RMSE between two seeds. Also checks that the no-hit rate is printed.
 . "$top_srcdir/tests/lib.sh"
-work=$(mktemp -d) || exit 99
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 99
+enter_workdir
 for s in 1 0.001 1000; do
 	cat >s$s.pov <<EOS
 global_settings { mm_per_unit 10 / $s }
