@@ -4,6 +4,7 @@
 #include "config.h"
 
 #include "base/diag.h"
+#include "base/mem.h"
 #include "io/compare.h"
 #include "io/exr.h"
 #include "io/merge.h"
@@ -37,6 +38,7 @@ static const char usage_text[] =
 	"                    [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR] [--quiet]\n"
 	"       circe check SCENE [-I DIR] [--clock F] [--dump]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
+	"                     [--channels R,G,B]\n"
 	"       circe merge -o FULL.exr TILE.exr...\n"
 	"       circe --help | --version\n";
 
@@ -576,6 +578,46 @@ static int cmd_render(int argc, char **argv)
 	return rc;
 }
 
+/* Restricts the reference b to the channels named in the comma-separated list (each must be in
+ * both images): compare_images then sees only those. The view shares b's planes; the caller
+ * frees view->names and view->planes only. False, with a message, for a channel not found. */
+static bool compare_channel_view(const exrfile_image *a, const char *pa, const exrfile_image *b,
+				 const char *pb, const char *list, exrfile_image *view)
+{
+	*view = *b;
+	view->nchannels = 0;
+	view->names = mem_calloc((size_t)b->nchannels + 1, sizeof(char *));
+	view->planes = mem_calloc((size_t)b->nchannels + 1, sizeof(float *));
+	if (!view->names || !view->planes) {
+		fprintf(stderr, "circe: error: out of memory\n");
+		return false;
+	}
+	for (const char *p = list; *p;) {
+		size_t len = strcspn(p, ",");
+		int found = -1;
+		for (int c = 0; c < b->nchannels; c++)
+			if (strlen(b->names[c]) == len && !strncmp(b->names[c], p, len))
+				found = c;
+		bool in_a = false;
+		for (int c = 0; c < a->nchannels; c++)
+			in_a |= strlen(a->names[c]) == len && !strncmp(a->names[c], p, len);
+		if (found < 0 || !in_a) {
+			fprintf(stderr, "%s: error: no channel '%.*s' (asked by --channels)\n", found < 0 ? pb : pa,
+				(int)len, p);
+			return false;
+		}
+		bool dup = false;
+		for (int k = 0; k < view->nchannels; k++)
+			dup |= view->planes[k] == b->planes[found];
+		if (!dup) {
+			view->names[view->nchannels] = b->names[found];
+			view->planes[view->nchannels++] = b->planes[found];
+		}
+		p += len + (p[len] == ',');
+	}
+	return true;
+}
+
 /* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
  * --fail-percent of the pixels have an error above --fail, 1 otherwise or on an I/O error. */
 static int cmd_compare(int argc, char **argv)
@@ -584,11 +626,12 @@ static int cmd_compare(int argc, char **argv)
 		{"fail", required_argument, NULL, 'f'},
 		{"fail-percent", required_argument, NULL, 'p'},
 		{"diff", required_argument, NULL, 'd'},
+		{"channels", required_argument, NULL, 'c'},
 		{"help", no_argument, NULL, 'h'},
 		{NULL, 0, NULL, 0},
 	};
 	double threshold = 1e-6, percent = 0.0;
-	const char *diff_path = NULL;
+	const char *diff_path = NULL, *channels = NULL;
 	int c;
 	optind = 1;
 	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
@@ -603,6 +646,13 @@ static int cmd_compare(int argc, char **argv)
 			break;
 		case 'd':
 			diff_path = optarg;
+			break;
+		case 'c':
+			if (!*optarg || strspn(optarg, ",") == strlen(optarg) || strstr(optarg, ",,") ||
+			    optarg[strlen(optarg) - 1] == ',')
+				return usage_error("--channels needs a list of channel names such as R,G,B, not '%s'",
+						   optarg);
+			channels = optarg;
 			break;
 		case 'h':
 			fputs(usage_text, stdout);
@@ -627,8 +677,14 @@ static int cmd_compare(int argc, char **argv)
 		diag_free(&d);
 		return EXIT_RUNTIME;
 	}
+	exrfile_image ref = b;
+	if (channels && !compare_channel_view(&a, pa, &b, pb, channels, &ref)) {
+		mem_free(ref.names), mem_free(ref.planes);
+		exrfile_free(&a), exrfile_free(&b), diag_free(&d);
+		return EXIT_RUNTIME;
+	}
 	compare_result r;
-	if (compare_images(&a, pa, &b, pb, threshold, &r, diff_path ? &diff : NULL, &d)) {
+	if (compare_images(&a, pa, &ref, pb, threshold, &r, diff_path ? &diff : NULL, &d)) {
 		double frac = r.pixels ? 100.0 * (double)r.over / (double)r.pixels : 0.0;
 		bool pass = frac <= percent;
 		printf("channels: %d\npixels: %zu\n", r.nchannels, r.pixels);
@@ -653,6 +709,8 @@ static int cmd_compare(int argc, char **argv)
 			exrfile_free(&diff);
 		}
 	}
+	if (channels)
+		mem_free(ref.names), mem_free(ref.planes);
 	exrfile_free(&a);
 	exrfile_free(&b);
 	diag_free(&d);

@@ -1,7 +1,8 @@
 #!/bin/sh
 # compare.sh: `circe compare` gives 0 for identical images, finds one changed pixel with its value
-# and position, lets --fail/--fail-percent decide the exit status, counts NaN, writes --diff, and
-# reports size mismatches, unreadable files and bad options clearly.
+# and position, lets --fail/--fail-percent decide the exit status, counts NaN, writes --diff,
+# restricts itself to --channels, and reports size mismatches, unreadable files and bad options
+# clearly.
 . "$top_srcdir/tests/lib.sh"
 MKEXR="$top_builddir/tests/io/mkexr"
 cd "$(mktemp -d)" || exit 99
@@ -24,6 +25,20 @@ expect_status 0 "$CIRCE" compare c.exr a.exr --fail 0.1 --fail-percent 1
 expect_status 1 "$CIRCE" compare c.exr a.exr --fail 0.1 --fail-percent 0.5
 # rmse over 16*8*4 values with one error of 0.5
 grep -qx 'rmse: 0.0220970869' out || fail "rmse: $(cat out)"
+
+# --channels restricts every figure to the channels named (each must be in both images).
+expect_status 0 "$CIRCE" compare c.exr a.exr --channels R,B
+grep -qx 'channels: 2' out || fail "--channels R,B: $(cat out)"
+grep -qx 'rmse: 0' out || fail "--channels R,B sees the G error: $(cat out)"
+expect_status 1 "$CIRCE" compare c.exr a.exr --channels G
+grep -qx 'rmse: 0.0441941738' out || fail "--channels G: rmse over 16*8 values: $(cat out)"
+expect_status 1 "$CIRCE" compare c.exr a.exr --channels R,G,G
+grep -qx 'channels: 2' out || fail "--channels R,G,G counts G twice: $(cat out)"
+expect_status 1 "$CIRCE" compare c.exr a.exr --channels R,Z
+grep -q "^a.exr: error: no channel 'Z' (asked by --channels)$" err || fail "unknown channel: $(cat err)"
+expect_status 2 "$CIRCE" compare c.exr a.exr --channels R,,G
+grep -q "channels needs a list" err || fail "bad --channels list: $(cat err)"
+expect_status 2 "$CIRCE" compare c.exr a.exr --channels ''
 
 # --diff writes |A - B|, found again against a black image.
 expect_status 1 "$CIRCE" compare c.exr a.exr --diff d.exr
