@@ -691,6 +691,7 @@ static int cmd_compare(int argc, char **argv)
 		printf("rmse: %.9g\nrelmse: %.9g (epsilon %g)\nmean_abs: %.9g\n", r.rmse, r.relmse,
 		       COMPARE_RELMSE_EPS, r.mean_abs);
 		printf("max_abs: %.9g at %d,%d channel %s\n", r.max_abs, r.max_x, r.max_y, r.max_channel);
+		printf("mean: a %.9g b %.9g\n", r.mean_a, r.mean_b);
 		printf("psnr: %.3f dB (peak %g)\n", r.psnr, COMPARE_PSNR_PEAK);
 		printf("over_threshold: %.6g%% (%zu pixels with error > %g; allowed %g%%)\n", frac, r.over,
 		       threshold, percent);

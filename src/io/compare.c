@@ -64,7 +64,7 @@ bool compare_images(const exrfile_image *a, const char *name_a, const exrfile_im
 		}
 	}
 	size_t npix = (size_t)a->width * a->height;
-	double se = 0, rel = 0, abs_sum = 0;
+	double se = 0, rel = 0, abs_sum = 0, sum_a = 0, sum_b = 0;
 	size_t finite_values = 0;
 	r->max_abs = -1;
 	for (size_t i = 0; i < npix; i++) {
@@ -86,6 +86,8 @@ bool compare_images(const exrfile_image *a, const char *name_a, const exrfile_im
 			se += e * e;
 			rel += e * e / (vb * vb + COMPARE_RELMSE_EPS);
 			abs_sum += e;
+			sum_a += va;
+			sum_b += vb;
 			finite_values++;
 			if (e > worst)
 				worst = e;
@@ -111,6 +113,8 @@ bool compare_images(const exrfile_image *a, const char *name_a, const exrfile_im
 	r->rmse = sqrt(mse);
 	r->relmse = finite_values ? rel / (double)finite_values : INFINITY;
 	r->mean_abs = finite_values ? abs_sum / (double)finite_values : INFINITY;
+	r->mean_a = finite_values ? sum_a / (double)finite_values : NAN;
+	r->mean_b = finite_values ? sum_b / (double)finite_values : NAN;
 	r->psnr = mse > 0 ? 10.0 * log10(COMPARE_PSNR_PEAK * COMPARE_PSNR_PEAK / mse) : INFINITY;
 	return true;
 }

@@ -20,6 +20,7 @@ typedef struct compare_result {
 	int nchannels;         /* channels compared */
 	size_t pixels;         /* pixels compared */
 	double rmse, relmse, mean_abs, max_abs, psnr;
+	double mean_a, mean_b; /* mean values of A and of B (over A's finite values): a signed bias */
 	int max_x, max_y;      /* where max_abs was found (image coordinates) */
 	const char *max_channel;
 	size_t over;           /* pixels with error > threshold (or a non-finite value in A) */

@@ -32,6 +32,8 @@ grep -qx 'channels: 2' out || fail "--channels R,B: $(cat out)"
 grep -qx 'rmse: 0' out || fail "--channels R,B sees the G error: $(cat out)"
 expect_status 1 "$CIRCE" compare c.exr a.exr --channels G
 grep -qx 'rmse: 0.0441941738' out || fail "--channels G: rmse over 16*8 values: $(cat out)"
+# mean: c.exr's G plane is a.exr's (mean 0.4375) plus 0.5 at one pixel of 128.
+grep -qx 'mean: a 0.44140625 b 0.4375' out || fail "--channels G: means: $(cat out)"
 expect_status 1 "$CIRCE" compare c.exr a.exr --channels R,G,G
 grep -qx 'channels: 2' out || fail "--channels R,G,G counts G twice: $(cat out)"
 expect_status 1 "$CIRCE" compare c.exr a.exr --channels R,Z
