@@ -14,7 +14,7 @@ usage: bench/sss/run.sh [--quick] [--size WxH] [--max-spp N] [--ref-spp N] [--vo
   --quick            smoke test: 48x36, 1 to 8 spp, references at 128 spp, results in WORK/quick
   --size WxH         image size (default 128x96)
   --max-spp N        the series renders 1, 2, 4, ... N samples per pixel (default 64)
-  --ref-spp N        samples of each method's own reference (default 2048)
+  --ref-spp N        samples of each method's own reference (default 1024)
   --volume-ref-spp N samples of the volume reference, the model-bias yardstick (default: --ref-spp)
   --volume-max-spp N cap of the volume method's series (default: --max-spp)
   --scenes LIST      among: slab sphere bunny head lips finger (default: all)
@@ -33,7 +33,7 @@ circe=${CIRCE:-./circe}
 quick=0
 size=128x96
 max_spp=64
-ref_spp=2048
+ref_spp=1024
 vol_ref_spp=
 vol_max_spp=
 scenes="slab sphere bunny head lips finger"
@@ -88,8 +88,13 @@ out=$(cd "$out" && pwd)
 circe_sum=$(cksum <"$(command -v "$circe" || echo "$circe")" | cut -d' ' -f1)
 now() { date +%s.%N; }
 run_start=$(now)
-# Seeds: the references use their own seed, so a series render never shares samples with them.
-REF_SEED=900001
+# Seeds: each method's reference has a seed of its own, never a series render's (1 to max-spp),
+# so a reference shares no samples with the renders measured against it nor with another method's
+# reference (their difference is then bias plus independent noise, as bias.csv assumes).
+ref_seed() {
+	case $1 in circle) echo 900001 ;; fullcircle) echo 900002 ;; talk) echo 900003 ;;
+	disk) echo 900004 ;; *) echo 900005 ;; esac
+}
 log() { printf '%s\n' "$*" >&2; }
 
 # sss_options METHOD: circe's options for a method of the benchmark.
@@ -131,13 +136,14 @@ metrics() {
 # The cache key holds the scene text, the image size, samples, seed, method and circe's checksum.
 reference() {
 	key=$(cat "$here/scenes/$1.pov" | cksum | cut -d' ' -f1)
-	ref="$work/refs/$1.$2.${W}x$H.$3spp.s$REF_SEED.$key.$circe_sum.exr"
+	seed=$(ref_seed "$2")
+	ref="$work/refs/$1.$2.${W}x$H.$3spp.s$seed.$key.$circe_sum.exr"
 	rlog="$work/logs/ref.$1.$2.log"
 	if [ -f "$ref" ]; then
 		log "  reference $1 $2 $3 spp: cached"
 	else
 		log "  reference $1 $2 $3 spp ($ref_threads threads) ..."
-		render "$1" "$2" "$3" "$REF_SEED" "$ref_threads" "$ref.tmp.exr" "$rlog"
+		render "$1" "$2" "$3" "$seed" "$ref_threads" "$ref.tmp.exr" "$rlog"
 		if [ "$r_rc" != 0 ]; then
 			log "  reference $1 $2 failed (exit $r_rc): $(grep -m1 error "$rlog")"
 			rm -f "$ref.tmp.exr"
@@ -213,7 +219,7 @@ done
 
 # ---- model bias: each method's reference against volume's; and against circle's, which every
 # BSSRDF method must match up to noise (the same model), except the talk's biased weight
-echo "scene,material,method,against,rmse,relmse,noise_rmse" >"$bias"
+echo "scene,material,method,against,rmse,relmse,noise_rmse,bias_rmse" >"$bias"
 for s in $scenes; do
 	mat=$(material_of "$s")
 	for m in $methods; do
@@ -224,14 +230,19 @@ for s in $scenes; do
 			r=$(ref_of "$s" "$against")
 			[ -n "$self" ] && [ -n "$r" ] || continue
 			set -- $(metrics "$self" "$r")
-			# The references' own noise: the series' MSE at its highest count, scaled to the
-			# reference counts of both images (MSE ~ 1/N), so a bias below it is not resolved.
-			noise=$(awk -F, -v s="$s" -v m="$m" -v a="$against" -v n1="$ref_spp" -v nv="$vol_ref_spp" '
-				$1 == s && $12 == "self" && ($3 == m || $3 == a) && $7 != "NA" {
-					if ($4 + 0 >= top[$3]) { top[$3] = $4 + 0; v[$3] = $7 * $7 * $4 } }
-				END { t = n = 0; for (k in v) { n++; t += v[k] / (k == "volume" ? nv : n1) }
-				      if (n < 2) print "NA"; else printf "%.6g", sqrt(t) }' "$csv")
-			echo "$s,$mat,$m,$against,$1,$2,$noise" >>"$bias"
+			# The references' own noise: each method's variance per sample, the mean of MSE x spp
+			# over its series (counts >= 4), divided by its reference's count; the two references
+			# are independent, so their variances add. bias_rmse = sqrt(rmse^2 - noise^2): the part
+			# of the difference that noise does not explain (0 when none).
+			awk -F, -v s="$s" -v m="$m" -v a="$against" -v n1="$ref_spp" -v nv="$vol_ref_spp" \
+				-v r="$1" -v q="$2" -v out="$s,$mat,$m,$against" '
+				$1 == s && $12 == "self" && ($3 == m || $3 == a) && $4 >= 4 && $7 != "NA" {
+					v[$3] += $7 * $7 * $4; c[$3]++ }
+				END { t = n = 0
+				      for (k in v) { n++; t += v[k] / c[k] / (k == "volume" ? nv : n1) }
+				      if (n < 2 || r == "NA") { print out "," r "," q ",NA,NA"; exit }
+				      b = r * r - t
+				      printf "%s,%s,%s,%.6g,%.6g\n", out, r, q, sqrt(t), (b > 0 ? sqrt(b) : 0) }' "$csv" >>"$bias"
 		done
 	done
 done
