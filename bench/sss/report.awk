@@ -19,10 +19,10 @@ file == 1 {
 	next
 }
 
-# bias.csv: scene,material,method,against,rmse,relmse,noise_rmse,bias_rmse
+# bias.csv: scene,material,method,against,rmse,relmse,noise_rmse,bias_rmse,mean_ratio
 file == 2 {
 	nb++; b_s[nb] = $1; b_mat[nb] = $2; b_m[nb] = $3; b_a[nb] = $4; b_r[nb] = $5; b_q[nb] = $6
-	b_n[nb] = $7; b_b[nb] = $8
+	b_n[nb] = $7; b_b[nb] = $8; b_mr[nb] = $9
 }
 
 function num(x) { return x != "NA" && x != "" && x + 0 > 0 }
@@ -132,14 +132,16 @@ END {
 	if (nb) {
 		print "### Bias: each method's reference against volume's (model) and circle's (estimator)"
 		print ""
-		print "| scene | material | method | against | RMSE | relMSE | noise RMSE of the two references | bias RMSE (beyond noise) |"
-		print "|---|---|---|---|---|---|---|---|"
+		print "| scene | material | method | against | RMSE | relMSE | noise RMSE of the two references | bias RMSE (beyond noise) | mean brightness |"
+		print "|---|---|---|---|---|---|---|---|---|"
 		for (k = 1; k <= nb; k++)
-			printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", b_s[k], b_mat[k], b_m[k], b_a[k], f3(b_r[k]),
-				f3(b_q[k]), f3(b_n[k]), b_b[k] == 0 ? "0" : f3(b_b[k])
+			printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", b_s[k], b_mat[k], b_m[k], b_a[k], f3(b_r[k]),
+				f3(b_q[k]), f3(b_n[k]), b_b[k] == 0 ? "0" : f3(b_b[k]),
+				num(b_mr[k]) ? sprintf("%+.1f %%", 100 * (b_mr[k] - 1)) : "–"
 		print ""
 		print "bias RMSE = sqrt(RMSE^2 - noise^2): the part of the difference the references' noise does not"
-		print "explain (0: none resolved). It is only as good as the noise estimate (see the caveats)."
+		print "explain (0: none resolved); it is only as good as the noise estimate (see the caveats). Mean"
+		print "brightness: the mean of the method's image over the other's, minus 1 (negative: darker)."
 		print ""
 	}
 

@@ -126,10 +126,12 @@ render() {
 # stand_in LOG: true when circe rendered a method with another one standing in for it.
 stand_in() { grep -q "not in this build yet" "$1"; }
 
-# metrics A.exr B.exr: prints "rmse relmse" of A against B over R, G, B (alpha left out).
+# metrics A.exr B.exr: prints "rmse relmse mean_a mean_b" of A against B over R, G, B (alpha left
+# out), NA for what compare did not print.
 metrics() {
 	"$circe" compare "$1" "$2" --channels R,G,B --fail 1e30 2>/dev/null |
-		awk '/^rmse:/ { r = $2 } /^relmse:/ { q = $2 } END { if (r == "" || q == "") print "NA NA"; else print r, q }'
+		awk '/^rmse:/ { r = $2 } /^relmse:/ { q = $2 } /^mean:/ { a = $3; b = $5 }
+		     END { print (r == "" ? "NA" : r), (q == "" ? "NA" : q), (a == "" ? "NA" : a), (b == "" ? "NA" : b) }'
 }
 
 # reference SCENE METHOD SPP: makes (or finds in the cache) the reference EXR, prints its path.
@@ -219,7 +221,7 @@ done
 
 # ---- model bias: each method's reference against volume's; and against circle's, which every
 # BSSRDF method must match up to noise (the same model), except the talk's biased weight
-echo "scene,material,method,against,rmse,relmse,noise_rmse,bias_rmse" >"$bias"
+echo "scene,material,method,against,rmse,relmse,noise_rmse,bias_rmse,mean_ratio" >"$bias"
 for s in $scenes; do
 	mat=$(material_of "$s")
 	for m in $methods; do
@@ -233,16 +235,18 @@ for s in $scenes; do
 			# The references' own noise: each method's variance per sample, the mean of MSE x spp
 			# over its series (counts >= 4), divided by its reference's count; the two references
 			# are independent, so their variances add. bias_rmse = sqrt(rmse^2 - noise^2): the part
-			# of the difference that noise does not explain (0 when none).
+			# of the difference that noise does not explain (0 when none). mean_ratio: the mean
+			# of the method's image over the other's, a signed bias of the whole image.
 			awk -F, -v s="$s" -v m="$m" -v a="$against" -v n1="$ref_spp" -v nv="$vol_ref_spp" \
-				-v r="$1" -v q="$2" -v out="$s,$mat,$m,$against" '
+				-v r="$1" -v q="$2" -v ma="$3" -v mb="$4" -v out="$s,$mat,$m,$against" '
 				$1 == s && $12 == "self" && ($3 == m || $3 == a) && $4 >= 4 && $7 != "NA" {
 					v[$3] += $7 * $7 * $4; c[$3]++ }
 				END { t = n = 0
 				      for (k in v) { n++; t += v[k] / c[k] / (k == "volume" ? nv : n1) }
-				      if (n < 2 || r == "NA") { print out "," r "," q ",NA,NA"; exit }
+				      mr = (ma != "NA" && mb + 0 > 0) ? sprintf("%.6g", ma / mb) : "NA"
+				      if (n < 2 || r == "NA") { print out "," r "," q ",NA,NA," mr; exit }
 				      b = r * r - t
-				      printf "%s,%s,%s,%.6g,%.6g\n", out, r, q, sqrt(t), (b > 0 ? sqrt(b) : 0) }' "$csv" >>"$bias"
+				      printf "%s,%s,%s,%.6g,%.6g,%s\n", out, r, q, sqrt(t), (b > 0 ? sqrt(b) : 0), mr }' "$csv" >>"$bias"
 		done
 	done
 done
