@@ -521,9 +521,6 @@ static int cmd_render(int argc, char **argv)
 		world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return EXIT_RUNTIME;
 	}
-	if (w.sss_stand_in)
-		fprintf(stderr, "circe: note: the disk and volume SSS methods are not in this build yet: %zu "
-				"material(s) asking for them render with circle\n", w.sss_stand_in);
 	char hash[17];
 	scene_hash(&d, hash);
 	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
@@ -564,10 +561,12 @@ static int cmd_render(int argc, char **argv)
 					"render %.3f s\n",
 				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
 				(unsigned long long)stats.dropped, parse_s, build_s, w.stats.triangles, stats.seconds);
-		if (!o.quiet && stats.sss_circles)
-			fprintf(stderr, "circe: sss: %llu circles, %llu with no hit (no-hit rate %.4g)\n",
-				(unsigned long long)stats.sss_circles, (unsigned long long)stats.sss_nohit,
-				(double)stats.sss_nohit / (double)stats.sss_circles);
+		if (!o.quiet && stats.sss_searches)
+			fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g), "
+					"%llu with more hits than kept\n",
+				(unsigned long long)stats.sss_searches, (unsigned long long)stats.sss_nohit,
+				(double)stats.sss_nohit / (double)stats.sss_searches,
+				(unsigned long long)stats.sss_overflow);
 		rc = !ok ? EXIT_RUNTIME : info.interrupted ? 130 : EXIT_OK;
 	}
 	film_free(&f);

@@ -5,6 +5,8 @@
 #include "render/integrator.h"
 
 #include "accel/bvh.h"
+#include "sss/disk.h"
+#include "sss/probe.h"
 
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
@@ -107,6 +109,14 @@ typedef struct sss_entry {
 	vec3 weight;
 } sss_entry;
 
+/* The scene's normals keep the mesh's orientation: `side` turns them as the exit's was turned to
+ * the outside (the viewer's side), so the leak filter sees outward normals everywhere. */
+static void turn_hit(render_hit *h, float side)
+{
+	h->ng = v3_scale(h->ng, side);
+	h->ns = v3_scale(h->ns, side);
+}
+
 /* Circle tracing (Legros & Corvazier 2016; src/sss/README.md "Plugging in"): r from the profile,
  * the circle of that radius about the exit x in a plane through its normal n_out, every hit on
  * the same SSS volume, one chosen by resampling proportional to its full weight. */
@@ -123,16 +133,13 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 	render_hit hits[RENDER_SSS_MAX_HITS];
 	float theta[RENDER_SSS_MAX_HITS];
 	sss_circle_hit ch[RENDER_SSS_MAX_HITS];
-	out->sss_circles++;
-	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS) : 0;
-	if (k > RENDER_SSS_MAX_HITS)
-		k = RENDER_SSS_MAX_HITS;
-	/* The scene's normals keep the mesh's orientation: turn them all as the exit's was turned to
-	 * the outside (the viewer's side), so the leak filter sees outward normals everywhere. */
+	bool more = false;
+	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS, &more) : 0;
+	if (more)
+		out->sss_overflow++;
 	float side = v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f;
 	for (uint32_t i = 0; i < k; i++) {
-		hits[i].ng = v3_scale(hits[i].ng, side);
-		hits[i].ns = v3_scale(hits[i].ns, side);
+		turn_hit(&hits[i], side);
 		ch[i] = (sss_circle_hit){hits[i].p, hits[i].ng, theta[i]};
 	}
 	vec3 w;
@@ -147,19 +154,126 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 	return true;
 }
 
-/* The one place where a method is chosen. disk and volume are not built in yet: circle stands in
- * (world.h's world_build reports it). */
-static bool sss_find_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-			   const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
+/* The comparators see the SSS volume through src/sss's probe: the scene's sss_closest, with the
+ * surface of every hit kept in order (slot min(n, cap - 1): a walk needs only the last one, its
+ * exit) so the chosen hit can be shaded like any other. */
+typedef struct probe_ctx {
+	const render_scene *s;
+	const render_hit *at; /* the exit point: its SSS volume is the one traced */
+	float side;	      /* turn_hit's */
+	render_hit *log;
+	int cap, *n;
+} probe_ctx;
+
+static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 {
+	const probe_ctx *c = ctx;
+	render_hit rh;
+	render_ray r = {ray->org, ray->dir};
+	if (!c->s->sss_closest(c->s->user, c->at, &r, ray->tmin, ray->tmax, &rh))
+		return false;
+	turn_hit(&rh, c->side);
+	*h = (sss_probe_hit){.t = rh.t, .p = rh.p, .ng = rh.ng, .prim = rh.prim, .u = rh.bary.x, .v = rh.bary.y};
+	c->log[*c->n < c->cap ? *c->n : c->cap - 1] = rh;
+	++*c->n;
+	return true;
+}
+
+/* The disk comparator (King et al. 2013; src/sss/README.md "The disk comparator"): a probe
+ * segment along n, t or b through the sphere of r_max, every hit on the same volume weighed by
+ * MIS over the axes, one chosen by resampling as circle_entry does. */
+static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out, rng *g,
+		       sss_entry *e, render_sample *out)
+{
+	double u[4] = {rng_double(g), rng_double(g), rng_double(g), rng_double(g)};
+	float u_pick = rng_float(g);
+	double mm_per_unit = 1.0 / m->units_per_mm;
+	sss_disk_frame f = sss_disk_frame_make(exit->p, n_out);
+	sss_disk_probe q = sss_disk_probe_make(&m->profile, mm_per_unit, &f, u);
+	render_hit log[SSS_DISK_MAX_HITS + 1];
+	int n = 0;
+	probe_ctx ctx = {s, exit, v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f, log, SSS_DISK_MAX_HITS + 1, &n};
+	sss_probe pr = {probe_closest, &ctx};
+	sss_disk_hit hits[SSS_DISK_MAX_HITS];
+	bool more;
+	int k = sss_disk_gather(&m->profile, mm_per_unit, &f, &q, &pr, hits, SSS_DISK_MAX_HITS, &more);
+	if (more)
+		out->sss_overflow++;
+	vec3 w;
+	float prob;
+	int i = sss_disk_choose(hits, k, u_pick, &w, &prob);
+	if (i < 0 || !v3_is_finite(w)) {
+		out->sss_nohit++;
+		return false;
+	}
+	e->hit = log[i];
+	e->weight = w;
+	return true;
+}
+
+/* The direction of wo (unit, on n's side) refracted into a medium of relative index ior through
+ * the unit normal n; false under total internal reflection. */
+static bool refract_in(vec3 wo, vec3 n, float ior, vec3 *wt)
+{
+	float cos_i = v3_dot(wo, n), inv = 1.0f / ior;
+	float sin2_t = inv * inv * fmaxf(0.0f, 1.0f - cos_i * cos_i);
+	if (!(sin2_t < 1.0f))
+		return false;
+	float cos_t = sqrtf(1.0f - sin2_t);
+	*wt = v3_normalize(v3_add(v3_scale(wo, -inv), v3_scale(n, inv * cos_i - cos_t)));
+	return true;
+}
+
+/* The volumetric reference: the light the coat transmits at x refracts into the medium (Snell,
+ * through the shading normal when that keeps it inside) and random-walks to where it leaves
+ * (sss_walk: scattering, absorption, Fresnel reflection at every boundary hit from inside). The
+ * position and weight of the exit are the walk's; the direction it leaves in is not followed:
+ * the path goes on through the same entry lobe (1 - F(w_i)) cos / (c pi) as the BSSRDF methods,
+ * the angular form every diffusion profile assumes, so light sampling works at the exit (a
+ * smooth boundary's one refracted direction never finds a point light) and the comparison with
+ * the profiles measures their spatial and total albedo error, not an angular one. */
+static bool volume_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_shade,
+			 vec3 n_out, vec3 wo, rng *g, sss_entry *e, render_sample *out)
+{
+	vec3 w_in;
+	if (!refract_in(wo, n_shade, m->ior, &w_in) || v3_dot(w_in, n_out) >= 0.0f)
+		if (!refract_in(wo, n_out, m->ior, &w_in))
+			return false;
+	render_hit last;
+	int n = 0;
+	probe_ctx ctx = {s, exit, 1.0f, &last, 1, &n};
+	sss_probe pr = {probe_closest, &ctx};
+	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, w_in, g, SSS_WALK_MAX_STEPS);
+	if (r.status == SSS_WALK_ABSORBED)
+		return false; /* an outcome of the walk, not a failure */
+	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {
+		out->sss_nohit++; /* lost, at the step bound, or bad input */
+		return false;
+	}
+	if (v3_dot(last.ng, r.dir) < 0.0f)
+		turn_hit(&last, -1.0f);
+	e->hit = last;
+	e->weight = r.weight;
+	return true;
+}
+
+/* The one place where a method is chosen. False when no entry point was found: the path ends
+ * there (each method counts its failures in out->sss_nohit; an absorbed walk is not one). */
+static bool sss_find_entry(const render_scene *s, const render_settings *set, const render_sss *m,
+			   const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, rng *g, sss_entry *e,
+			   render_sample *out)
+{
+	out->sss_searches++;
 	switch (m->method) {
 	case RENDER_SSS_CIRCLE:
 	case RENDER_SSS_FULLCIRCLE:
+		return circle_entry(s, set, m, exit, n_out, g, e, out);
 	case RENDER_SSS_DISK:
+		return disk_entry(s, m, exit, n_out, g, e, out);
 	case RENDER_SSS_VOLUME:
-		break;
+		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
 	}
-	return circle_entry(s, set, m, exit, n_out, g, e, out);
+	return false;
 }
 
 static float ratio_or_zero(float a, float b) { return b > 0.0f ? a / b : 0.0f; }
@@ -243,7 +357,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 				beta = v3_scale(beta, 1.0f / (1.0f - p_sss));
 			} else {
 				sss_entry e;
-				if (!sss_find_entry(s, set, sm, &hit, ng_out, g, &e, &out))
+				if (!sss_find_entry(s, set, sm, &hit, f.n, ng_out, wo, g, &e, &out))
 					break;
 				bsdf_params at = s->materials[e.hit.material];
 				vec3 ns_i = e.hit.ns;

@@ -30,6 +30,7 @@
 #include "render/light.h"
 #include "sss/circle.h"
 #include "sss/profile.h"
+#include "sss/walk.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -48,13 +49,12 @@ typedef struct render_hit {
 	vec2 bary;     /* barycentrics of the triangle's second and third vertex, for shade() */
 } render_hit;
 
-/* How a subsurface material finds its entry point. disk and volume are other modules
- * (src/sss/disk.*, src/sss/walk.*); until they are built in, circle stands in for them. */
+/* How a subsurface material finds its entry point (src/sss: circle.*, disk.*, walk.*). */
 typedef enum render_sss_method {
 	RENDER_SSS_CIRCLE,     /* half circles (Legros & Corvazier 2016) */
 	RENDER_SSS_FULLCIRCLE, /* full circles */
 	RENDER_SSS_DISK,       /* King et al. 2013 probe segments */
-	RENDER_SSS_VOLUME,     /* random walk in the medium */
+	RENDER_SSS_VOLUME,     /* random walk in the medium: the reference the profiles approximate */
 } render_sss_method;
 
 /* The BSSRDF of one material (plain data, built once per material). */
@@ -64,11 +64,13 @@ typedef struct render_sss {
 	float units_per_mm;  /* scene units per mm (1 / mm_per_unit): a profile radius to the scene */
 	float ior;	     /* of the boundary; the coat's */
 	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
+	sss_walk_medium medium; /* RENDER_SSS_VOLUME: the medium's coefficients per scene unit */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;
 
-/* The most circle hits kept per circle (more are counted by the traversal and dropped). */
+/* The most circle hits kept per circle; a circle with more keeps the first ones, and is counted
+ * (render_sample.sss_overflow, printed at the end of a render). */
 #define RENDER_SSS_MAX_HITS 64
 
 typedef struct render_scene {
@@ -88,9 +90,15 @@ typedef struct render_scene {
 	const render_sss *const *sss;
 	/* Every hit of the world-space circle q on the SSS volume of the surface `at` (its object or
 	 * its SSS group), filled like intersect's (t is 0) with the circle angle of each in theta.
-	 * Returns how many were written (at most max). Needed when sss is not NULL. Thread-safe. */
+	 * Returns how many were written (at most max); *more tells whether there were others.
+	 * Needed when sss is not NULL. Thread-safe. */
 	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, render_hit *hits,
-			   float *theta, uint32_t max);
+			   float *theta, uint32_t max, bool *more);
+	/* The nearest hit with t in [tmin, tmax] of a ray on the SSS volume of the surface `at`
+	 * alone (other objects are transparent to it), filled like intersect's: the disk's probes
+	 * and the volume's walk. Needed when a material uses disk or volume. Thread-safe. */
+	bool (*sss_closest)(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
+			    render_hit *hit);
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;
@@ -110,8 +118,10 @@ typedef struct render_sample {
 	vec3 albedo; /* bsdf_albedo of the first hit */
 	vec3 normal; /* world shading normal of the first hit, facing the camera */
 	float depth; /* distance from the camera to the first hit, 0 when none */
-	uint32_t sss_circles; /* circles traced by this path */
-	uint32_t sss_nohit;   /* of them, those that found no entry point (the path ends there) */
+	uint32_t sss_searches; /* entry-point searches of this path: circles, disk probes or walks */
+	uint32_t sss_nohit;    /* of them, those that found no entry point (no hit; a walk lost or at
+				* its step bound): the path ends there */
+	uint32_t sss_overflow; /* searches with more hits than kept (the first ones are used) */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number. May return non-finite

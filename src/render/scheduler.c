@@ -31,7 +31,7 @@ typedef struct pool {
 	_Atomic int tiles_done;
 	_Atomic uint64_t samples_done; /* pixel samples of the current pass, for progress */
 	_Atomic uint64_t dropped;      /* samples dropped in the current pass */
-	_Atomic uint64_t sss_circles, sss_nohit; /* of the current pass */
+	_Atomic uint64_t sss_searches, sss_nohit, sss_overflow; /* of the current pass */
 } pool;
 
 static double now_s(void)
@@ -62,7 +62,7 @@ static bool render_tile(pool *p, int tile)
 	int xb = xa + p->tile < f->x1 ? xa + p->tile : f->x1,
 	    yb = ya + p->tile < f->y1 ? ya + p->tile : f->y1;
 	int rw = film_region_width(f);
-	uint64_t dropped = 0, circles = 0, nohit = 0;
+	uint64_t dropped = 0, searches = 0, nohit = 0, overflow = 0;
 	for (int y = ya; y < yb; y++) {
 		if (interrupted(job))
 			return false;
@@ -75,8 +75,9 @@ static bool render_tile(pool *p, int tile)
 				vec2 lu = v2(rng_float(&g), rng_float(&g));
 				render_ray ray = cam_ray(job->camera, x, y, pu, lu);
 				render_sample smp = render_path(job->scene, &job->settings, ray, &g);
-				circles += smp.sss_circles;
+				searches += smp.sss_searches;
 				nohit += smp.sss_nohit;
+				overflow += smp.sss_overflow;
 				if (!film_pixel_add(&px, &smp)) {
 					render_sample zero = {0};
 					film_pixel_add(&px, &zero);
@@ -88,8 +89,9 @@ static bool render_tile(pool *p, int tile)
 		atomic_fetch_add(&p->samples_done, (uint64_t)(xb - xa) * (p->s1 - p->s0));
 	}
 	atomic_fetch_add(&p->dropped, dropped);
-	atomic_fetch_add(&p->sss_circles, circles);
+	atomic_fetch_add(&p->sss_searches, searches);
 	atomic_fetch_add(&p->sss_nohit, nohit);
+	atomic_fetch_add(&p->sss_overflow, overflow);
 	return true;
 }
 
@@ -189,7 +191,7 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	double rate_px = 0.0, last_checkpoint = t0;
 	uint32_t last = 0;
 	int passes = 0;
-	uint64_t sss_circles = 0, sss_nohit = 0;
+	uint64_t sss_searches = 0, sss_nohit = 0, sss_overflow = 0;
 	while (status == RENDER_DONE) {
 		double elapsed = now_s() - t0;
 		if ((job->spp && f->spp >= job->spp) ||
@@ -208,8 +210,9 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 		atomic_store(&p.tiles_done, 0);
 		atomic_store(&p.samples_done, 0);
 		atomic_store(&p.dropped, 0);
-		atomic_store(&p.sss_circles, 0);
+		atomic_store(&p.sss_searches, 0);
 		atomic_store(&p.sss_nohit, 0);
+		atomic_store(&p.sss_overflow, 0);
 		p.active = started;
 		p.generation++;
 		pthread_cond_broadcast(&p.start);
@@ -236,8 +239,9 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 		}
 		film_commit(f, p.s1);
 		f->dropped += atomic_load(&p.dropped);
-		sss_circles += atomic_load(&p.sss_circles);
+		sss_searches += atomic_load(&p.sss_searches);
 		sss_nohit += atomic_load(&p.sss_nohit);
+		sss_overflow += atomic_load(&p.sss_overflow);
 		passes++;
 		last = n;
 		double pass_s = now_s() - pass_start;
@@ -269,8 +273,9 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	if (stats) {
 		stats->spp = f->spp;
 		stats->dropped = f->dropped;
-		stats->sss_circles = sss_circles;
+		stats->sss_searches = sss_searches;
 		stats->sss_nohit = sss_nohit;
+		stats->sss_overflow = sss_overflow;
 		stats->seconds = seconds;
 		stats->samples_per_s = seconds > 0.0 ? (double)f->spp * npix / seconds : 0.0;
 		stats->passes = passes;

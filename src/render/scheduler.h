@@ -55,8 +55,9 @@ typedef enum render_status { RENDER_DONE, RENDER_INTERRUPTED, RENDER_ERROR } ren
 typedef struct render_stats {
 	uint32_t spp;	      /* samples per pixel completed (= film->spp) */
 	uint64_t dropped;     /* non-finite samples dropped (= film->dropped); should be 0 */
-	uint64_t sss_circles; /* SSS circles traced in this run's committed passes */
-	uint64_t sss_nohit;   /* of them, those that hit nothing (their paths end: the no-hit rate) */
+	uint64_t sss_searches; /* SSS entry searches (circles, probes, walks) of the committed passes */
+	uint64_t sss_nohit;    /* of them, those that found no entry (their paths end: the no-hit rate) */
+	uint64_t sss_overflow; /* of them, those with more hits than kept */
 	double seconds;	      /* wall time of render_run */
 	double samples_per_s; /* pixel samples committed per second */
 	int passes;	      /* committed passes */

@@ -7,6 +7,7 @@
 #include "geom/subdiv.h"
 #include "render/shading.h"
 #include "sss/profile.h"
+#include "sss/walk.h"
 
 #include <float.h>
 #include <math.h>
@@ -187,6 +188,16 @@ static bool is_identity(const xform *t)
 	return !memcmp(t->m, id.m, sizeof id.m);
 }
 
+static bool is_sss(const scene_material *m)
+{
+	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
+}
+
+static scene_sss_method sss_method_of(const scene_material *m, const world_options *opt)
+{
+	return opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : m->sss.method;
+}
+
 /* The BSSRDF of an SSS material: its profile from the artist form (the albedo the coat shows and
  * a texture scales), the method (the command line's over the material's), and f_t's normalisation. */
 static bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
@@ -205,14 +216,25 @@ static bool build_sss(world *w, size_t k, const scene *sc, const world_options *
 			   albedo[0], albedo[1], albedo[2], ld_mm[0], ld_mm[1], ld_mm[2], (double)ss->ior);
 		return false;
 	}
-	scene_sss_method m = opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : ss->method;
+	scene_sss_method m = sss_method_of(sm, opt);
 	r->method = m == SSS_METHOD_FULLCIRCLE ? RENDER_SSS_FULLCIRCLE
 		    : m == SSS_METHOD_DISK     ? RENDER_SSS_DISK
 		    : m == SSS_METHOD_VOLUME   ? RENDER_SSS_VOLUME
 					       : RENDER_SSS_CIRCLE;
-	if (r->method == RENDER_SSS_DISK || r->method == RENDER_SSS_VOLUME)
-		w->sss_stand_in++;
 	r->units_per_mm = (float)(1.0 / sc->global.mm_per_unit);
+	/* The walk's medium from the physical form the scene derived from the artist one: the same
+	 * coefficients the dipole's albedo comes from, so volume against the profiles measures the
+	 * diffusion models' error and nothing else. */
+	double ss_mm[3] = {ss->sigma_s_per_mm.x, ss->sigma_s_per_mm.y, ss->sigma_s_per_mm.z};
+	double sa_mm[3] = {ss->sigma_a_per_mm.x, ss->sigma_a_per_mm.y, ss->sigma_a_per_mm.z};
+	if (r->method == RENDER_SSS_VOLUME &&
+	    !sss_walk_medium_from_reduced(&r->medium, ss_mm, sa_mm, ss->anisotropy, ss->ior, sc->global.mm_per_unit)) {
+		diag_error(d, sm->loc, "the subsurface medium is out of range for the volume method (sigma_s' %g %g %g, "
+				       "sigma_a %g %g %g per mm, anisotropy %g, ior %g)",
+			   ss_mm[0], ss_mm[1], ss_mm[2], sa_mm[0], sa_mm[1], sa_mm[2], (double)ss->anisotropy,
+			   (double)ss->ior);
+		return false;
+	}
 	r->ior = ss->ior;
 	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
@@ -325,7 +347,7 @@ static bool world_intersect(void *user, const render_ray *ray, float tmin, float
 /* Every hit of the circle on the SSS volume of `at`: its instance alone, or every member of its
  * group (traced over all instances, then filtered). The position is the circle's exact one. */
 static uint32_t world_circle(void *user, const render_hit *at, const tri_circle *q, render_hit *hits, float *theta,
-			     uint32_t max)
+			     uint32_t max, bool *more)
 {
 	const world *w = user;
 	if (!w->top || at->object >= w->n_insts || w->inst_top[at->object] == UINT32_MAX)
@@ -333,19 +355,59 @@ static uint32_t world_circle(void *user, const render_hit *at, const tri_circle 
 	tri_circle_hit th[RENDER_SSS_MAX_HITS];
 	int group = w->sss_group[at->object];
 	uint32_t only = group < 0 ? w->inst_top[at->object] : TLAS_ALL_INSTANCES;
-	uint32_t n = tlas_circle(w->top, q, only, th, RENDER_SSS_MAX_HITS);
-	if (n > RENDER_SSS_MAX_HITS)
-		n = RENDER_SSS_MAX_HITS;
+	uint32_t total = tlas_circle(w->top, q, only, th, RENDER_SSS_MAX_HITS);
+	uint32_t n = total < RENDER_SSS_MAX_HITS ? total : RENDER_SSS_MAX_HITS;
 	uint32_t k = 0;
-	for (uint32_t i = 0; i < n && k < max; i++) {
+	*more = total > n; /* beyond the traversal's buffer: known only by count */
+	for (uint32_t i = 0; i < n; i++) {
 		uint32_t inst = w->top_inst[th[i].inst];
 		if (group >= 0 && w->sss_group[inst] != group)
 			continue;
+		if (k == max) {
+			*more = true;
+			break;
+		}
 		fill_hit(w, inst, th[i].prim, th[i].u, th[i].v, &hits[k]);
 		hits[k].p = th[i].pos;
 		theta[k++] = th[i].theta;
 	}
 	return k;
+}
+
+/* The nearest hit of a ray on the SSS volume of `at`: its instance, or each member of its group
+ * in turn (the ray moved into each one's object space: t is kept, the direction not being
+ * renormalised). Groups are found by a scan of the instances, which is fine for the few objects
+ * a scene's SSS groups hold. */
+static bool world_sss_closest(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
+			      render_hit *hit)
+{
+	const world *w = user;
+	if (at->object >= w->n_insts)
+		return false;
+	int group = w->sss_group[at->object];
+	size_t first = group < 0 ? at->object : 0, last = group < 0 ? at->object + 1 : w->n_insts;
+	bvh_hit best;
+	uint32_t best_inst = UINT32_MAX;
+	for (size_t i = first; i < last; i++) {
+		const world_inst *in = &w->insts[i];
+		if ((group >= 0 && w->sss_group[i] != group) || !in->g->b)
+			continue;
+		bvh_ray r = {ray->o, ray->d, tmin, tmax};
+		if (!in->identity) {
+			r.org = d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o)));
+			r.dir = d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d)));
+		}
+		bvh_hit h;
+		if (bvh_intersect(in->g->b, &r, &h)) {
+			best = h, best_inst = (uint32_t)i;
+			tmax = h.t;
+		}
+	}
+	if (best_inst == UINT32_MAX)
+		return false;
+	fill_hit(w, best_inst, best.prim, best.u, best.v, hit);
+	hit->t = best.t;
+	return true;
 }
 
 static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
@@ -382,10 +444,6 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 
 /* ---- building ---------------------------------------------------------------------------- */
 
-static bool is_sss(const scene_material *m)
-{
-	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
-}
 
 /* An SSS object under a non-uniform transform gets its own copy of the triangles in world space
  * (DESIGN.md): circles stay circles only under similarities, and circle tracing runs in an
@@ -403,6 +461,54 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, dia
 	in->identity = true;
 	w->stats.flattened++;
 	return true;
+}
+
+
+/* The volume method walks inside the object: an SSS object rendered by it must bound a volume
+ * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
+static bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	bool ok = true;
+	int8_t *closed = mem_calloc(w->n_geoms ? w->n_geoms : 1, 1); /* 0 unknown, 1 closed, -1 open */
+	if (!closed) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		if (!is_sss(o->material) || sss_method_of(o->material, opt) != SSS_METHOD_VOLUME)
+			continue;
+		const world_geom *g = w->insts[i].g;
+		size_t gi = (size_t)(g - w->geoms);
+		uint64_t open_edges = 0;
+		if (!closed[gi]) {
+			sss_mesh_closure c = sss_walk_mesh_closure(&g->m, &open_edges);
+			if (c == SSS_MESH_NO_MEMORY) {
+				diag_error(d, o->loc, "out of memory while checking that the object is closed");
+				ok = false;
+				break;
+			}
+			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+		}
+		if (closed[gi] < 0) {
+			if (o->geom->kind == SHAPE_PLANE)
+				diag_error(d, o->loc, "the volume SSS method needs a closed object, and a plane bounds "
+						      "no volume");
+			else
+				diag_error(d, o->loc, "the volume SSS method needs a closed object: this one has %llu "
+						      "edge(s) not shared by exactly two triangles",
+					   (unsigned long long)open_edges);
+			if (opt->sss_method == SSS_METHOD_VOLUME)
+				diag_note(d, diag_noloc(), "--sss volume applies to every SSS material; render this "
+							   "scene with circle, fullcircle or disk");
+			else
+				diag_note(d, o->material->loc, "its material is here; give it method circle, fullcircle "
+							      "or disk for an open surface");
+			ok = false;
+		}
+	}
+	mem_free(closed);
+	return ok;
 }
 
 /* The SSS volume of each instance: alone (-1), or the first instance of its material's group. */
@@ -670,7 +776,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	bool ok = true;
 	for (const scene_geom *g = sc->geoms; g && ok; g = g->next)
 		ok = build_geom(w, sc, g, &o, d);
-	ok = ok && build_instances(w, sc, d) && build_planes(w, sc, d);
+	ok = ok && build_instances(w, sc, d) && build_planes(w, sc, d) && check_volumes(w, sc, &o, d);
 	/* Normal maps need tangents; meshes without them get generated ones. */
 	for (const scene_material *m = sc->materials; ok && m; m = m->next)
 		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
@@ -708,7 +814,8 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	}
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
-			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle};
+			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
+			       .sss_closest = world_sss_closest};
 	return true;
 }
 

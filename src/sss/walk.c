@@ -20,6 +20,10 @@
  * the order sigma_t * 1e-6 * |coordinates|, negligible. */
 #define WALK_SKIN 1e-6
 
+/* Stepping back in after a reentry: from the second in a row on, this fraction of the point's
+ * scale (about 4 float ulps), doubled at each further try: a few tries clear any rounding. */
+#define WALK_STEP_IN_FIRST 2.4e-7f
+
 bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
 				  const double sigma_a_per_mm[3], double g, double eta, double mm_per_unit)
 {
@@ -85,6 +89,16 @@ static vec3 walk_side(vec3 ng, vec3 w)
 	return v3_dot(ng, w) >= 0.0f ? ng : v3_neg(ng);
 }
 
+/* The k-th try in a row to start inside again from the boundary point p (n_in pointing into the
+ * medium): the ray offset first, then WALK_STEP_IN_FIRST of p's scale doubled k - 1 times. */
+static vec3 walk_step_in(vec3 p, vec3 n_in, int k)
+{
+	if (k <= 1)
+		return bvh_offset_origin(p, n_in);
+	float scale = fmaxf(1.0f, fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z))));
+	return v3_madd(p, n_in, scale * ldexpf(WALK_STEP_IN_FIRST, k - 2 < 30 ? k - 2 : 30));
+}
+
 sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, vec3 w, rng *g,
 			 int max_steps)
 {
@@ -101,6 +115,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	vec3 org = bvh_offset_origin(x, walk_side(ng, w));
 	/* the mesh's orientation, from the entry: +1 when ng points out of the medium */
 	float outward = v3_dot(w, ng) <= 0.0f ? 1.0f : -1.0f;
+	int stuck = 0; /* reentries in a row */
 	for (res.steps = 0; res.steps < max_steps;) {
 		bvh_ray ray = {org, w, 0.0f, INFINITY};
 		sss_probe_hit h;
@@ -145,11 +160,15 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			vec3 n_out = walk_side(h.ng, w); /* points out of the medium along w */
 			if (outward * v3_dot(w, h.ng) < 0.0f) {
 				/* the surface seen from outside: a collision point rounded across the
-				 * boundary (closer to it than a float resolves). Step back in. */
-				org = bvh_offset_origin(h.p, n_out);
+				 * boundary (closer to it than a float resolves), or a ray leaving a large
+				 * triangle from behind that the triangle test still reports at t ~ 0 (its
+				 * error grows with the triangle's size, not with |p|). Step back in, each
+				 * time in a row twice as far. */
+				org = walk_step_in(h.p, n_out, ++stuck);
 				res.reentries++;
 				continue;
 			}
+			stuck = 0;
 			double cos_i = fmin(1.0, (double)v3_dot(w, n_out));
 			double eta = 1.0 / m->eta; /* from the medium (eta) to outside (1) */
 			if (rng_double(g) < sss_fresnel_dielectric(cos_i, eta)) {

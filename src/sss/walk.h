@@ -54,9 +54,10 @@ typedef struct sss_walk_result {
 			  * surface: the walk steps back in (README.md); about 1 in 10^6 interactions */
 } sss_walk_result;
 
-/* The default bound on interactions per walk: about 50 times the mean of a wax-like medium
- * (albedo 0.999 in a 5 mean-free-path slab); reaching it is counted, never silent. */
-#define SSS_WALK_MAX_STEPS 4096
+/* The default bound on interactions per walk; reaching it is counted, never silent. Measured on
+ * the wax preset in a slab 200 mm deep (red albedo 0.95, the longest walks of the presets): 4096
+ * dropped 1.7 % of the walks and 1.5 % of the red light, 65536 drops 0.011 %. */
+#define SSS_WALK_MAX_STEPS 65536
 /* Russian roulette starts after this many interactions, with survival probability
  * min(1, max channel of the throughput): unbiased; keeps absorbing walks short. */
 #define SSS_WALK_RR_START 16
