@@ -8,15 +8,19 @@ set -u
 
 usage() {
 	cat <<'EOF'
-usage: bench/sss/run.sh [--quick] [--size WxH] [--max-spp N] [--ref-spp N] [--volume-ref-spp N]
-                        [--volume-max-spp N] [--scenes "slab sphere ..."] [--methods "circle disk ..."]
-                        [--ref-threads N] [--work DIR] [--out DIR] [--circe PATH]
-  --quick            smoke test: 48x36, 1 to 8 spp, references at 128 spp, results in WORK/quick
-  --size WxH         image size (default 128x96)
-  --max-spp N        the series renders 1, 2, 4, ... N samples per pixel (default 64)
-  --ref-spp N        samples of each method's own reference (default 1024)
-  --volume-ref-spp N samples of the volume reference, the model-bias yardstick (default: --ref-spp)
-  --volume-max-spp N cap of the volume method's series (default: --max-spp)
+usage: bench/sss/run.sh [--quick] [--size WxH] [--max-spp N] [--ref-spp N] [--volume-ref-time S]
+                        [--volume-ref-spp N] [--volume-max-spp N] [--scenes "slab sphere ..."]
+                        [--methods "circle disk ..."] [--ref-threads N] [--work DIR] [--out DIR]
+                        [--circe PATH]
+  --quick             smoke test: 48x36, 1 to 8 spp, references at 128 spp (volume: 4 s, series
+                      to 2 spp), results in WORK/quick
+  --size WxH          image size (default 96x72)
+  --max-spp N         the series renders 1, 2, 4, ... N samples per pixel (default 64)
+  --ref-spp N         samples of each method's own reference (default 1024)
+  --volume-ref-time S the volume reference, the model-bias yardstick, renders for S seconds
+                      (`circe render --time`; default 60): a walk costs 10 to 100 times a circle
+  --volume-ref-spp N  or this many samples instead (then --volume-ref-time is ignored)
+  --volume-max-spp N  cap of the volume method's series (default 8)
   --scenes LIST      among: slab sphere bunny head lips finger (default: all)
   --methods LIST     among: circle fullcircle talk disk volume (default: all)
   --ref-threads N    threads for the references (default 2; the series always run on 1 thread)
@@ -31,11 +35,12 @@ EOF
 here=$(cd "$(dirname "$0")" && pwd)
 circe=${CIRCE:-./circe}
 quick=0
-size=128x96
+size=96x72
 max_spp=64
 ref_spp=1024
 vol_ref_spp=
-vol_max_spp=
+vol_ref_time=60
+vol_max_spp=8
 scenes="slab sphere bunny head lips finger"
 methods="circle fullcircle talk disk volume"
 ref_threads=2
@@ -49,6 +54,7 @@ while [ $# -gt 0 ]; do
 	--max-spp) max_spp=$2; shift ;;
 	--ref-spp) ref_spp=$2; shift ;;
 	--volume-ref-spp) vol_ref_spp=$2; shift ;;
+	--volume-ref-time) vol_ref_time=$2; shift ;;
 	--volume-max-spp) vol_max_spp=$2; shift ;;
 	--scenes) scenes=$2; shift ;;
 	--methods) methods=$2; shift ;;
@@ -62,15 +68,14 @@ while [ $# -gt 0 ]; do
 	shift
 done
 if [ "$quick" = 1 ]; then
-	size=48x36 max_spp=8 ref_spp=128
+	size=48x36 max_spp=8 ref_spp=128 vol_ref_time=4 vol_max_spp=2
 	out=${out:-$work/quick}
 fi
 out=${out:-$here}
-vol_ref_spp=${vol_ref_spp:-$ref_spp}
-vol_max_spp=${vol_max_spp:-$max_spp}
+[ -n "$vol_ref_spp" ] && vol_ref_time=0
 W=${size%x*}
 H=${size#*x}
-for n in "$W" "$H" "$max_spp" "$ref_spp" "$vol_ref_spp" "$vol_max_spp" "$ref_threads"; do
+for n in "$W" "$H" "$max_spp" "$ref_spp" "${vol_ref_spp:-1}" "$vol_ref_time" "$vol_max_spp" "$ref_threads"; do
 	case $n in '' | *[!0-9]*) echo "run.sh: '$n' is not a positive whole number" >&2; exit 2 ;; esac
 done
 for s in $scenes; do
@@ -105,12 +110,14 @@ sss_options() {
 	esac
 }
 
-# render SCENE METHOD SPP SEED THREADS EXR LOG: renders; sets r_rc, r_seconds (circe's own
-# render-phase clock), r_wall (the whole process: parse, build, render, write), r_nohit, r_dropped.
+# render SCENE METHOD SPP SEED THREADS EXR LOG: renders (SPP "tS": for S seconds); sets r_rc,
+# r_seconds (circe's own render-phase clock), r_wall (the whole process: parse, build, render,
+# write), r_spp (samples per pixel done), r_nohit, r_dropped.
 render() {
+	case $3 in t*) budget="--time ${3#t}" ;; *) budget="--spp $3" ;; esac
 	t0=$(now)
-	# shellcheck disable=SC2046
-	"$circe" render "$here/scenes/$1.pov" -o "$6" -W "$W" -H "$H" --spp "$3" --seed "$4" \
+	# shellcheck disable=SC2046,SC2086
+	"$circe" render "$here/scenes/$1.pov" -o "$6" -W "$W" -H "$H" $budget --seed "$4" \
 		--threads "$5" $(sss_options "$2") >"$7" 2>&1
 	r_rc=$?
 	t1=$(now)
@@ -118,6 +125,7 @@ render() {
 	r_seconds=$(sed -n 's/.*, render \([0-9.e+-]*\) s$/\1/p' "$7" | tail -1)
 	r_nohit=$(sed -n 's/.*no-hit rate \([0-9.e+-]*\)).*/\1/p' "$7" | tail -1)
 	r_dropped=$(sed -n 's/.*; \([0-9]*\) non-finite samples dropped$/\1/p' "$7" | tail -1)
+	r_spp=$(sed -n 's/.*: \([0-9]*\) samples per pixel in .*/\1/p' "$7" | tail -1)
 	[ -n "$r_seconds" ] || r_seconds=NA
 	[ -n "$r_nohit" ] || r_nohit=NA
 	[ -n "$r_dropped" ] || r_dropped=NA
@@ -134,7 +142,8 @@ metrics() {
 		     END { print (r == "" ? "NA" : r), (q == "" ? "NA" : q), (a == "" ? "NA" : a), (b == "" ? "NA" : b) }'
 }
 
-# reference SCENE METHOD SPP: makes (or finds in the cache) the reference EXR, prints its path.
+# reference SCENE METHOD SPP: makes (or finds in the cache) the reference EXR, prints its path;
+# its samples per pixel go beside it in REF.spp (SPP "tS" renders for S seconds).
 # The cache key holds the scene text, the image size, samples, seed, method and circe's checksum.
 reference() {
 	key=$(cat "$here/scenes/$1.pov" | cksum | cut -d' ' -f1)
@@ -152,7 +161,8 @@ reference() {
 			return 1
 		fi
 		mv "$ref.tmp.exr" "$ref"
-		log "    ${r_seconds} s"
+		echo "$r_spp" >"$ref.spp"
+		log "    $r_spp spp, ${r_seconds} s"
 	fi
 	echo "$ref"
 }
@@ -177,7 +187,9 @@ bias="$out/bias.csv"
 for s in $scenes; do
 	for m in $methods; do
 		n=$ref_spp
-		[ "$m" = volume ] && n=$vol_ref_spp
+		if [ "$m" = volume ]; then
+			if [ "$vol_ref_time" -gt 0 ]; then n=t$vol_ref_time; else n=$vol_ref_spp; fi
+		fi
 		if ref=$(reference "$s" "$m" "$n"); then
 			echo "$s $m $ref" >>"$work/refs.list"
 		else
@@ -186,6 +198,7 @@ for s in $scenes; do
 	done
 done
 ref_of() { awk -v s="$1" -v m="$2" '$1 == s && $2 == m { print $3 }' "$work/refs.list"; }
+ref_spp_of() { r=$(ref_of "$1" "$2"); [ -n "$r" ] && cat "$r.spp" 2>/dev/null || echo NA; }
 material_of() { sed -n 's/.*\(skin\|wax\|marble\) *{.*/\1/p' "$here/scenes/$1.pov" | head -1; }
 
 # ---- the series, one thread; methods interleaved at each count so load drifts hit all alike --
@@ -233,18 +246,18 @@ for s in $scenes; do
 			[ -n "$self" ] && [ -n "$r" ] || continue
 			set -- $(metrics "$self" "$r")
 			# The references' own noise: each method's variance per sample, the mean of MSE x spp
-			# over its series (counts >= 4), divided by its reference's count; the two references
+			# over its series (counts >= 2), divided by its reference's count; the two references
 			# are independent, so their variances add. bias_rmse = sqrt(rmse^2 - noise^2): the part
 			# of the difference that noise does not explain (0 when none). mean_ratio: the mean
 			# of the method's image over the other's, a signed bias of the whole image.
-			awk -F, -v s="$s" -v m="$m" -v a="$against" -v n1="$ref_spp" -v nv="$vol_ref_spp" \
+			awk -F, -v s="$s" -v m="$m" -v a="$against" -v n1="$(ref_spp_of "$s" "$m")" -v n2="$(ref_spp_of "$s" "$against")" \
 				-v r="$1" -v q="$2" -v ma="$3" -v mb="$4" -v out="$s,$mat,$m,$against" '
-				$1 == s && $12 == "self" && ($3 == m || $3 == a) && $4 >= 4 && $7 != "NA" {
+				$1 == s && $12 == "self" && ($3 == m || $3 == a) && $4 >= 2 && $7 != "NA" {
 					v[$3] += $7 * $7 * $4; c[$3]++ }
 				END { t = n = 0
-				      for (k in v) { n++; t += v[k] / c[k] / (k == "volume" ? nv : n1) }
+				      for (k in v) { n++; t += v[k] / c[k] / (k == m ? n1 : n2) }
 				      mr = (ma != "NA" && mb + 0 > 0) ? sprintf("%.6g", ma / mb) : "NA"
-				      if (n < 2 || r == "NA") { print out "," r "," q ",NA,NA," mr; exit }
+				      if (n < 2 || r == "NA" || n1 == "NA" || n2 == "NA") { print out "," r "," q ",NA,NA," mr; exit }
 				      b = r * r - t
 				      printf "%s,%s,%s,%.6g,%.6g,%s\n", out, r, q, sqrt(t), (b > 0 ? sqrt(b) : 0), mr }' "$csv" >>"$bias"
 		done
@@ -261,11 +274,16 @@ log "run.sh: done in $run_s s; skipped:${skipped:- nothing}"
 # ---- the tables of README.md ----------------------------------------------------------------
 readme="$out/README.md"
 [ -f "$readme" ] || cp "$here/README.md" "$readme" 2>/dev/null || :
+if [ "$vol_ref_time" -gt 0 ]; then
+	vol_ref_desc="$vol_ref_time s each: $(for s in $scenes; do printf '%s %s, ' "$s" "$(ref_spp_of "$s" volume)"; done | sed 's/, $//') spp"
+else
+	vol_ref_desc="$vol_ref_spp spp"
+fi
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -1)
 {
 	echo "Run of $(date -u '+%Y-%m-%d %H:%M UTC'): \`bench/sss/run.sh $args\` ($(basename "$circe") $("$circe" --version 2>/dev/null | head -1 | sed 's/^circe //'),"
-	echo "git $(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo '?')), ${W}x$H, series 1 to $max_spp spp on 1 thread,"
-	echo "references at $ref_spp spp (volume: $vol_ref_spp) on $ref_threads threads; $(nproc 2>/dev/null || echo '?') cores ($cpu),"
+	echo "git $(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo '?')), ${W}x$H, series 1 to $max_spp spp (volume: to $vol_max_spp) on 1 thread,"
+	echo "references at $ref_spp spp (volume: $vol_ref_desc) on $ref_threads threads; $(nproc 2>/dev/null || echo '?') cores ($cpu),"
 	echo "load average at the end $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null); the whole run took $run_s s.${skipped:+ Skipped:$skipped.}"
 	echo
 	awk -F, -f "$here/report.awk" "$csv" "$bias"
