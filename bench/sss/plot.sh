@@ -27,6 +27,8 @@ plot_cmd() {
 	cmd=""
 	for m in $methods; do
 		f="$data/$1.$m.$2.dat"
+		# Against volume's reference, volume's own series is the one to show.
+		[ "$2" = volume ] && [ "$m" = volume ] && f="$data/$1.$m.self.dat"
 		[ -s "$f" ] || continue
 		case $m in
 		circle) st="lw 2.5 lc rgb '#d62728' pt 7" ;;
