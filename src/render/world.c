@@ -464,6 +464,29 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, dia
 }
 
 
+/* A walk's length grows like the square of the object's size in transport mean free paths
+ * (diffusion), capped by absorption at about sigma_t'/sigma_a interactions. When the smaller of
+ * the two exceeds the walk's step bound most long walks will be dropped (dark, counted): say so
+ * before the render rather than after. High albedos given in the artist form are the usual cause
+ * (albedo 1 needs sigma_a = 0, so the inversion makes sigma_s' very large). */
+static void warn_dense_medium(const world_inst *in, const scene *sc, const scene_object *o, diag *d)
+{
+	const scene_sss *ss = &o->material->sss;
+	double size_mm = v3_length(v3_sub(in->hi, in->lo)) * sc->global.mm_per_unit, worst = 0.0;
+	const float *s_s = &ss->sigma_s_per_mm.x, *s_a = &ss->sigma_a_per_mm.x;
+	for (int c = 0; c < 3; c++) {
+		double st = (double)s_s[c] + s_a[c], tau = st * size_mm;
+		double steps = fmin(tau * tau, s_a[c] > 0.0f ? st / s_a[c] : INFINITY);
+		worst = fmax(worst, steps);
+	}
+	if (worst > SSS_WALK_MAX_STEPS)
+		diag_warning(d, o->loc,
+			     "the volume method's walks in this object need about %.3g interactions (its medium is "
+			     "dense for its size and hardly absorbs); walks stop at %d, and those are dropped and "
+			     "counted",
+			     worst, SSS_WALK_MAX_STEPS);
+}
+
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
  * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
 static bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d)
@@ -505,6 +528,8 @@ static bool check_volumes(const world *w, const scene *sc, const world_options *
 				diag_note(d, o->material->loc, "its material is here; give it method circle, fullcircle "
 							      "or disk for an open surface");
 			ok = false;
+		} else {
+			warn_dense_medium(&w->insts[i], sc, o, d);
 		}
 	}
 	mem_free(closed);
