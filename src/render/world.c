@@ -2,6 +2,7 @@
  * callbacks over them. */
 #include "render/world.h"
 
+#include "accel/offset.h"
 #include "base/mem.h"
 #include "geom/prim.h"
 #include "geom/subdiv.h"
@@ -326,10 +327,14 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 	/* The position from the triangle: its error is that of the vertices, which the ray offset
 	 * covers; o + t d would carry the error of the whole ray. */
 	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, u)), v3_scale(p2, v));
-	if (!in->identity)
+	if (!in->identity) {
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
+		p0 = d3v(xform_point(&in->xf, v3_to_d3(p0)));
+		p1 = d3v(xform_point(&in->xf, v3_to_d3(p1)));
+		p2 = d3v(xform_point(&in->xf, v3_to_d3(p2)));
+	}
 	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
-			    .object = inst, .prim = prim, .bary = v2(u, v)};
+			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = bvh_triangle_scale(p0, p1, p2)};
 }
 
 static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
