@@ -56,17 +56,23 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
-/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera. */
+/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera (the
+ * default camera when the scene has none, as build_camera does). */
 static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, const world_options *opt,
 				   subd_camera *camera)
 {
 	subd_options so = {.level = sd->level, .max_bytes = opt->max_memory};
 	if (sd->level <= 0 && sd->max_edge_px > 0) {
 		const scene_camera *c = &sc->camera;
+		cam_params dc = cam_params_default();
+		vec3 from = sc->has_camera ? d3v(c->location) : dc.location;
+		vec3 to = sc->has_camera ? d3v(c->look_at) : dc.look_at;
+		double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
 		double aspect = (double)opt->width / (double)opt->height;
-		double half_h = tan(c->angle_deg * M_PI / 360.0) / aspect;
-		*camera = (subd_camera){.position = d3v(c->location), .look = d3v(d3_sub(c->look_at, c->location)),
-					.up = d3v(c->sky), .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+		double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
+		*camera = (subd_camera){.position = from, .look = v3_sub(to, from),
+					.up = sc->has_camera ? d3v(c->sky) : dc.sky,
+					.fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
 					.image_height = (uint32_t)opt->height};
 		so.camera = camera;
 		so.max_edge_px = (float)sd->max_edge_px;
