@@ -411,10 +411,10 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 			return cage_fail(x, lines[f], "face %zu has %u vertices; a face needs at least 3", f, sizes[f]);
 		for (uint32_t i = 0; i < sizes[f]; i++) {
 			if (idx[k + i] >= nv)
-				return cage_fail(x, lines[f], "face %zu refers to vertex %u, but the file has %zu", f,
+				return cage_fail(x, lines[f], "face %zu refers to vertex %u, but the file has %zu vertices", f,
 						 idx[k + i] + 1, nv);
 			if (!r->uv_missing && ((const uint32_t *)r->uv_indices.data)[k + i] >= r->uvs.len)
-				return cage_fail(x, lines[f], "face %zu refers to uv %u, but the file has %zu", f,
+				return cage_fail(x, lines[f], "face %zu refers to uv %u, but the file has %zu uvs", f,
 						 ((const uint32_t *)r->uv_indices.data)[k + i] + 1, r->uvs.len);
 		}
 	}
@@ -567,10 +567,17 @@ bool cage_load(const char *path, cage_data *out, diag *d, diag_loc loc)
 		ok = text && obj_parse(&x, text, &r, &t);
 		mem_free(text);
 	} else {
+		/* Assimp's own message for a missing file is less plain than errno's. */
+		FILE *f = fopen(path, "rb");
 		char buf[256];
 		const char *why = NULL;
-		ok = cage_import_assimp(path, &r, buf, sizeof buf, &why);
+		ok = f != NULL;
 		if (!ok)
+			cage_fail(&x, 0, "cannot open it: %s", strerror(errno));
+		else
+			fclose(f);
+		ok = ok && cage_import_assimp(path, &r, buf, sizeof buf, &why);
+		if (!ok && why)
 			cage_fail(&x, 0, "%s", why);
 	}
 	if (ok && r.uv_missing && r.uv_indices.len)
