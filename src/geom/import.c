@@ -147,7 +147,7 @@ static bool cage_node(const struct aiScene *s, const struct aiNode *nd, xform pa
 				return false;
 			for (uint32_t j = 0; j < n; j++) {
 				uint32_t v = (uint32_t)(base + fc->mIndices[mirror ? (n - j) % n : j]);
-				if (!vecbuf_push(&r->indices, &v) || !vecbuf_push(&r->uv_indices, &v))
+				if (!vecbuf_push(&r->indices, &v) || (m->mTextureCoords[0] && !vecbuf_push(&r->uv_indices, &v)))
 					return false;
 			}
 		}
