@@ -141,23 +141,38 @@ void validate(const subd_cage *cage, const subd_options *opt)
 			throw subd_failure(format("hole %u: face %u out of range", h, cage->hole_faces[h]));
 }
 
-// The creases with one entry per edge: where an edge is listed twice, the later sharpness holds
-// (so a scene's crease overrides a cage file's). Pairs go to pairs, sharpness to weights.
-void unique_creases(const subd_cage *cage, std::vector<Far::Index> &pairs, std::vector<float> &weights)
+// Keeps one weight per key: a new key is appended to keys (as its parts) and weights, a key seen
+// before has its weight replaced (the later entry holds).
+template <typename K>
+void keep_last(std::map<K, size_t> &slot, const K &key, const Far::Index *parts, int n_parts, float weight,
+	       std::vector<Far::Index> &keys, std::vector<float> &weights)
 {
-	std::map<std::pair<uint32_t, uint32_t>, size_t> slot;
+	auto it = slot.find(key);
+	if (it != slot.end()) {
+		weights[it->second] = weight;
+		return;
+	}
+	slot[key] = weights.size();
+	keys.insert(keys.end(), parts, parts + n_parts);
+	weights.push_back(weight);
+}
+
+// The creases and corners with one entry per edge or vertex, the later sharpness holding (so a
+// scene's crease or corner overrides a cage file's).
+void unique_tags(const subd_cage *cage, std::vector<Far::Index> &pairs, std::vector<float> &crease_w,
+		 std::vector<Far::Index> &corners, std::vector<float> &corner_w)
+{
+	std::map<std::pair<uint32_t, uint32_t>, size_t> edges;
 	for (uint32_t c = 0; c < cage->num_creases; c++) {
 		uint32_t a = cage->crease_vertices[2 * c], b = cage->crease_vertices[2 * c + 1];
-		auto key = std::make_pair(std::min(a, b), std::max(a, b));
-		auto it = slot.find(key);
-		if (it != slot.end()) {
-			weights[it->second] = cage->crease_sharpness[c];
-			continue;
-		}
-		slot[key] = weights.size();
-		pairs.push_back((Far::Index)a);
-		pairs.push_back((Far::Index)b);
-		weights.push_back(cage->crease_sharpness[c]);
+		Far::Index ab[2] = {(Far::Index)a, (Far::Index)b};
+		keep_last(edges, std::make_pair(std::min(a, b), std::max(a, b)), ab, 2, cage->crease_sharpness[c], pairs,
+			  crease_w);
+	}
+	std::map<uint32_t, size_t> vertices;
+	for (uint32_t c = 0; c < cage->num_corners; c++) {
+		Far::Index v = (Far::Index)cage->corner_vertices[c];
+		keep_last(vertices, cage->corner_vertices[c], &v, 1, cage->corner_sharpness[c], corners, corner_w);
 	}
 }
 
@@ -230,10 +245,9 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 	for (int s : sizes)
 		nidx += (size_t)s;
 	std::vector<Far::Index> verts(cage->face_indices, cage->face_indices + nidx);
-	std::vector<Far::Index> crease_pairs;
-	std::vector<float> crease_weights;
-	unique_creases(cage, crease_pairs, crease_weights);
-	std::vector<Far::Index> corners(cage->corner_vertices, cage->corner_vertices + cage->num_corners);
+	std::vector<Far::Index> crease_pairs, corners;
+	std::vector<float> crease_weights, corner_weights;
+	unique_tags(cage, crease_pairs, crease_weights, corners, corner_weights);
 	std::vector<Far::Index> holes(cage->hole_faces, cage->hole_faces + cage->num_holes);
 	std::vector<Far::Index> uv_idx;
 	Far::TopologyDescriptor desc;
@@ -244,9 +258,9 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 	desc.numCreases = (int)crease_weights.size();
 	desc.creaseVertexIndexPairs = crease_pairs.data();
 	desc.creaseWeights = crease_weights.data();
-	desc.numCorners = (int)cage->num_corners;
+	desc.numCorners = (int)corner_weights.size();
 	desc.cornerVertexIndices = corners.data();
-	desc.cornerWeights = cage->corner_sharpness;
+	desc.cornerWeights = corner_weights.data();
 	desc.numHoles = (int)holes.size();
 	desc.holeIndices = holes.data();
 	Far::TopologyDescriptor::FVarChannel channel;

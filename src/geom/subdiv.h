@@ -24,8 +24,8 @@ typedef enum subd_boundary { SUBD_BOUNDARY_EDGE_ONLY, SUBD_BOUNDARY_EDGE_AND_COR
 /* The control cage. Faces are listed by size (face_sizes) with their vertex indices one after the
  * other (face_indices, zero-based, counter-clockwise seen from outside). Creases are pairs of
  * vertices that must be an edge of the cage, with a sharpness (0 smooth .. 10 and above
- * infinitely sharp); when an edge is listed twice, the later sharpness holds. Corners are vertices
- * with a sharpness. Holes are faces left out of the surface (they still shape their neighbours).
+ * infinitely sharp). Corners are vertices with a sharpness. When an edge or a corner vertex is
+ * listed twice, the later sharpness holds. Holes are faces left out of the surface (they still shape their neighbours).
  * UVs are face-varying: uv_indices has the layout of face_indices and points into uvs (NULL: no
  * UVs). source names the file the cage came from in errors (NULL: an inline cage). */
 typedef struct subd_cage {

@@ -144,6 +144,29 @@ static void check_tags(void)
 		   192);
 }
 
+/* A corner tag, a scene corner that cancels it, and a hole tag, on the UV-less cube. */
+static void check_corner_and_hole(void)
+{
+	static const char *const cube = "v 0 -1.414214 1\nv 1.414214 0 1\nv -1.414214 0 1\nv 0 1.414214 1\n"
+					"v -1.414214 0 -1\nv 0 1.414214 -1\nv 0 -1.414214 -1\nv 1.414214 0 -1\n"
+					"f 1 2 4 3\nf 3 4 6 5\nf 5 6 8 7\nf 7 8 2 1\nf 2 8 6 4\nf 7 1 3 5\n";
+	char text[1024];
+	snprintf(text, sizeof text, "%st corner 1/1/0 7 10\n", cube);
+	write_file("corner.obj", text);
+	snprintf(text, sizeof text, "%st hole 1/0/0 2\n", cube);
+	write_file("hole.obj", text);
+	check_same("a corner tag", "subdivision_surface { file \"corner.obj\" level 2 }\n",
+		   "subdivision_surface { file \"cube_nouv.obj\" corners { 1, 7, 10 } level 2 }\n", 192);
+	check_same("a scene corner cancels the file's",
+		   "subdivision_surface { file \"corner.obj\" corners { 1, 7, 0 } level 2 }\n",
+		   "subdivision_surface { file \"cube_nouv.obj\" level 2 }\n", 192);
+	mesh m;
+	CHECK(tessellate_scene("subdivision_surface { file \"hole.obj\" level 2 }\n", &m, NULL) &&
+		      m.num_triangles == 5 * 32 && open_edges(&m) == 4 * 4,
+	      "a hole tag leaves face 2 out: %u triangles, %ld open edges", m.num_triangles, open_edges(&m));
+	mesh_free(&m);
+}
+
 /* An OBJ whose faces use duplicates of vertices (as exporters write at UV seams) gives the
  * surface of the welded file; the scene's indices may name a duplicate. */
 static void check_weld(void)
@@ -294,12 +317,13 @@ int main(void)
 		return 99;
 	check_file_equals_inline();
 	check_tags();
+	check_corner_and_hole();
 	check_weld();
 	check_polygons();
 	check_watertight();
 	check_errors();
 	static const char *const files[] = {"s.pov", "cube_nouv.obj", "welded.obj", "split.obj", "ngons.obj",
-					    "cube.ply", "e.obj"};
+					    "cube.ply", "e.obj", "corner.obj", "hole.obj"};
 	for (size_t i = 0; i < sizeof files / sizeof files[0]; i++)
 		unlink(check_path(dir, files[i]));
 	rmdir(dir);
