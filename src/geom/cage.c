@@ -22,7 +22,8 @@ typedef struct cage_ctx {
 } cage_ctx;
 
 /* Reports "cage file 'PATH', line N: reason" (line 0: no line) at the scene's place; false. */
-static bool cage_fail(const cage_ctx *x, uint32_t line, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static bool cage_fail(const cage_ctx *x, uint32_t line, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 static bool cage_fail(const cage_ctx *x, uint32_t line, const char *fmt, ...)
 {
 	char why[512];
@@ -37,7 +38,10 @@ static bool cage_fail(const cage_ctx *x, uint32_t line, const char *fmt, ...)
 	return false;
 }
 
-static bool cage_oom(const cage_ctx *x) { return cage_fail(x, 0, "out of memory"); }
+static bool cage_oom(const cage_ctx *x)
+{
+	return cage_fail(x, 0, "out of memory");
+}
 
 /* ---- tags (OpenSubdiv's shape format: `t NAME nints/nfloats/nstrings ints floats strings`) ---- */
 
@@ -45,7 +49,7 @@ static bool cage_oom(const cage_ctx *x) { return cage_fail(x, 0, "out of memory"
 typedef struct cage_tags {
 	vecbuf creases; /* cage_tag_edge */
 	vecbuf corners; /* cage_tag_vertex */
-	vecbuf holes;   /* cage_tag_vertex, sharpness unused */
+	vecbuf holes;	/* cage_tag_vertex, sharpness unused */
 	bool has_boundary;
 	subd_boundary boundary;
 } cage_tags;
@@ -95,11 +99,13 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 	more(&p);
 	ni = strtol(p, &end, 10);
 	if (end == p || *end != '/')
-		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'", name);
+		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
+				 name);
 	p = end + 1;
 	nf = strtol(p, &end, 10);
 	if (end == p || *end != '/')
-		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'", name);
+		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
+				 name);
 	p = end + 1;
 	ns = strtol(p, &end, 10);
 	if (end == p || ni < 0 || nf < 0 || ns < 0 || ni > CAGE_MAX_TAG_ARGS || nf > CAGE_MAX_TAG_ARGS)
@@ -108,8 +114,9 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 	bool known = !strcmp(name, "crease") || !strcmp(name, "corner") || !strcmp(name, "hole") ||
 		     !strcmp(name, "interpolateboundary");
 	if (!known) {
-		diag_warning(x->d, x->loc, "cage file '%s', line %u: tag '%s' is not supported by circe; ignored",
-			     x->path, line, name);
+		diag_warning(x->d, x->loc,
+			     "cage file '%s', line %u: tag '%s' is not supported by circe; ignored", x->path,
+			     line, name);
 		return true;
 	}
 	long *ints = mem_alloc((size_t)ni + 1, sizeof *ints);
@@ -121,7 +128,8 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 		more(&p);
 		ints[i] = strtol(p, &end, 10);
 		if (end == p || ints[i] < 0 || ints[i] > (long)CAGE_MAX_COUNT)
-			ok = cage_fail(x, line, "tag '%s': integer argument %ld of %ld missing or out of range", name,
+			ok = cage_fail(x, line,
+				       "tag '%s': integer argument %ld of %ld missing or out of range", name,
 				       i + 1, ni);
 		p = end;
 	}
@@ -129,27 +137,35 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 		more(&p);
 		floats[i] = strtod(p, &end);
 		if (end == p)
-			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1, nf);
+			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1,
+				       nf);
 		p = end;
 	}
 	if (!ok) {
 	} else if (!strcmp(name, "crease")) {
 		if (ni < 2 || ni % 2 || (nf != 1 && nf != ni / 2))
-			ok = cage_fail(x, line, "tag 'crease' needs pairs of vertices and one sharpness, or one per pair "
-						"(found %ld/%ld)", ni, nf);
+			ok = cage_fail(
+			    x, line,
+			    "tag 'crease' needs pairs of vertices and one sharpness, or one per pair "
+			    "(found %ld/%ld)",
+			    ni, nf);
 		for (long i = 0; ok && i < ni; i += 2) {
 			double s = floats[nf == 1 ? 0 : i / 2];
 			cage_tag_edge e = {(uint32_t)ints[i], (uint32_t)ints[i + 1], line, (float)s};
-			ok = tag_sharpness(x, line, "crease", s) && (vecbuf_push(&t->creases, &e) || cage_oom(x));
+			ok = tag_sharpness(x, line, "crease", s) &&
+			     (vecbuf_push(&t->creases, &e) || cage_oom(x));
 		}
 	} else if (!strcmp(name, "corner")) {
 		if (ni < 1 || (nf != 1 && nf != ni))
-			ok = cage_fail(x, line, "tag 'corner' needs vertices and one sharpness, or one per vertex "
-						"(found %ld/%ld)", ni, nf);
+			ok = cage_fail(x, line,
+				       "tag 'corner' needs vertices and one sharpness, or one per vertex "
+				       "(found %ld/%ld)",
+				       ni, nf);
 		for (long i = 0; ok && i < ni; i++) {
 			double s = floats[nf == 1 ? 0 : i];
 			cage_tag_vertex v = {(uint32_t)ints[i], line, (float)s};
-			ok = tag_sharpness(x, line, "corner", s) && (vecbuf_push(&t->corners, &v) || cage_oom(x));
+			ok = tag_sharpness(x, line, "corner", s) &&
+			     (vecbuf_push(&t->corners, &v) || cage_oom(x));
 		}
 	} else if (!strcmp(name, "hole")) {
 		for (long i = 0; ok && i < ni; i++) {
@@ -158,8 +174,11 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 		}
 	} else { /* interpolateboundary */
 		if (ni != 1 || (ints[0] != 1 && ints[0] != 2))
-			ok = cage_fail(x, line, "tag 'interpolateboundary' takes 1 (edge_and_corner) or 2 (edge_only); "
-						"circe has no rule %ld", ni == 1 ? ints[0] : -1L);
+			ok =
+			    cage_fail(x, line,
+				      "tag 'interpolateboundary' takes 1 (edge_and_corner) or 2 (edge_only); "
+				      "circe has no rule %ld",
+				      ni == 1 ? ints[0] : -1L);
 		else
 			t->has_boundary = true,
 			t->boundary = ints[0] == 1 ? SUBD_BOUNDARY_EDGE_AND_CORNER : SUBD_BOUNDARY_EDGE_ONLY;
@@ -232,7 +251,8 @@ static bool obj_index(const cage_ctx *x, uint32_t line, const char **p, size_t c
 		return cage_fail(x, line, "%s index 0 (OBJ indices start at 1)", what);
 	if (v < 0) {
 		if ((unsigned long long)-v > count)
-			return cage_fail(x, line, "relative %s index %lld reaches before the first %s", what, v, what);
+			return cage_fail(x, line, "relative %s index %lld reaches before the first %s", what,
+					 v, what);
 		*out = (uint32_t)(count - (size_t)-v);
 	} else {
 		if (v > (long long)CAGE_MAX_COUNT)
@@ -311,8 +331,11 @@ static bool obj_parse(const cage_ctx *x, char *text, cage_raw *r, cage_tags *t)
 			if (!obj_number(&s, &u))
 				return cage_fail(x, line, "expected a number after 'vt'");
 			if (more(&s) && !obj_number(&s, &w))
-				return cage_fail(x, line, "expected a number as the second coordinate of 'vt'");
+				return cage_fail(x, line,
+						 "expected a number as the second coordinate of 'vt'");
 			vec2 uv = v2((float)u, (float)w);
+			if (!isfinite(uv.x) || !isfinite(uv.y))
+				return cage_fail(x, line, "uv %zu is not finite", r->uvs.len + 1);
 			if (!vecbuf_push(&r->uvs, &uv))
 				return cage_oom(x);
 		} else if (kw == 1 && s[0] == 'f') {
@@ -371,7 +394,10 @@ static uint32_t table_id(weld_table *t, const void *key, size_t len, const unsig
 }
 
 /* Positions equal as numbers are one vertex: -0 and +0 are the same coordinate. */
-static vec3 weld_key(vec3 p) { return v3(p.x + 0.0f, p.y + 0.0f, p.z + 0.0f); }
+static vec3 weld_key(vec3 p)
+{
+	return v3(p.x + 0.0f, p.y + 0.0f, p.z + 0.0f);
+}
 
 typedef struct uv_key {
 	uint32_t vertex;
@@ -404,18 +430,23 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 	if (nf == 0)
 		return cage_fail(x, 0, "the file has no faces");
 	if (nv > CAGE_MAX_COUNT || nf > CAGE_MAX_COUNT || ni > CAGE_MAX_COUNT)
-		return cage_fail(x, 0, "too many vertices, faces or face corners (the limit is %u)", CAGE_MAX_COUNT);
+		return cage_fail(x, 0, "too many vertices, faces or face corners (the limit is %u)",
+				 CAGE_MAX_COUNT);
 	size_t k = 0;
 	for (size_t f = 0; f < nf; k += sizes[f], f++) {
 		if (sizes[f] < 3)
-			return cage_fail(x, lines[f], "face %zu has %u vertices; a face needs at least 3", f, sizes[f]);
+			return cage_fail(x, lines[f], "face %zu has %u vertices; a face needs at least 3", f,
+					 sizes[f]);
 		for (uint32_t i = 0; i < sizes[f]; i++) {
 			if (idx[k + i] >= nv)
-				return cage_fail(x, lines[f], "face %zu refers to vertex %u, but the file has %zu vertices", f,
-						 idx[k + i] + 1, nv);
+				return cage_fail(
+				    x, lines[f],
+				    "face %zu refers to vertex %u, but the file has %zu vertices", f,
+				    idx[k + i] + 1, nv);
 			if (!r->uv_missing && ((const uint32_t *)r->uv_indices.data)[k + i] >= r->uvs.len)
-				return cage_fail(x, lines[f], "face %zu refers to uv %u, but the file has %zu uvs", f,
-						 ((const uint32_t *)r->uv_indices.data)[k + i] + 1, r->uvs.len);
+				return cage_fail(
+				    x, lines[f], "face %zu refers to uv %u, but the file has %zu uvs", f,
+				    ((const uint32_t *)r->uv_indices.data)[k + i] + 1, r->uvs.len);
 		}
 	}
 	c->num_file_vertices = (uint32_t)nv;
@@ -434,7 +465,8 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 	for (size_t v = 0; v < nv; v++) {
 		vec3 key = weld_key(pos[v]);
 		uint32_t before = c->num_vertices;
-		c->weld[v] = table_id(&t, &key, sizeof key, (const unsigned char *)c->positions, &c->num_vertices);
+		c->weld[v] =
+		    table_id(&t, &key, sizeof key, (const unsigned char *)c->positions, &c->num_vertices);
 		if (c->num_vertices != before)
 			c->positions[c->weld[v]] = key;
 	}
@@ -446,8 +478,10 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 		for (uint32_t i = 0; ok && i < sizes[f]; i++) {
 			uint32_t w = c->weld[idx[k + i]];
 			if (stamp[w] == f + 1)
-				ok = cage_fail(x, lines[f], "face %zu uses vertex %u twice (after welding the vertices at "
-							    "equal positions)", f, w);
+				ok = cage_fail(x, lines[f],
+					       "face %zu uses vertex %u twice (after welding the vertices at "
+					       "equal positions)",
+					       f, w);
 			stamp[w] = (uint32_t)f + 1;
 			c->face_indices[k + i] = w;
 		}
@@ -471,7 +505,8 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 			key.vertex = c->face_indices[i];
 			key.uv = v2(uv[uidx[i]].x + 0.0f, uv[uidx[i]].y + 0.0f);
 			uint32_t before = c->num_uvs;
-			c->uv_indices[i] = table_id(&t, &key, sizeof key, (const unsigned char *)keys, &c->num_uvs);
+			c->uv_indices[i] =
+			    table_id(&t, &key, sizeof key, (const unsigned char *)keys, &c->num_uvs);
 			if (c->num_uvs != before)
 				keys[c->uv_indices[i]] = key, c->uvs[c->uv_indices[i]] = key.uv;
 		}
@@ -484,7 +519,8 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 	k = 0;
 	for (size_t f = 0; f < nf; k += sizes[f], f++)
 		for (uint32_t i = 0; i < sizes[f]; i++)
-			c->edges[k + i] = edge_key(c->face_indices[k + i], c->face_indices[k + (i + 1) % sizes[f]]);
+			c->edges[k + i] =
+			    edge_key(c->face_indices[k + i], c->face_indices[k + (i + 1) % sizes[f]]);
 	qsort(c->edges, ni, sizeof *c->edges, cmp_u64);
 	for (size_t i = 0; i < ni; i++)
 		if (c->num_edges == 0 || c->edges[c->num_edges - 1] != c->edges[i])
@@ -501,17 +537,21 @@ static bool apply_tags(const cage_ctx *x, const cage_tags *t, cage_data *c)
 	c->corner_vertices = mem_alloc(nk, sizeof *c->corner_vertices);
 	c->corner_sharpness = mem_alloc(nk, sizeof *c->corner_sharpness);
 	c->hole_faces = mem_alloc(nh, sizeof *c->hole_faces);
-	if (!c->crease_vertices || !c->crease_sharpness || !c->corner_vertices || !c->corner_sharpness || !c->hole_faces)
+	if (!c->crease_vertices || !c->crease_sharpness || !c->corner_vertices || !c->corner_sharpness ||
+	    !c->hole_faces)
 		return cage_oom(x);
 	for (size_t i = 0; i < nc; i++) {
 		const cage_tag_edge *e = &VECBUF_AT(&t->creases, cage_tag_edge, i);
 		if (e->a >= c->num_file_vertices || e->b >= c->num_file_vertices)
-			return cage_fail(x, e->line, "crease <%u, %u>: vertex %u is out of range (the file has %u vertices; "
-						     "tags count from 0)", e->a, e->b,
-					 e->a >= c->num_file_vertices ? e->a : e->b, c->num_file_vertices);
+			return cage_fail(
+			    x, e->line,
+			    "crease <%u, %u>: vertex %u is out of range (the file has %u vertices; "
+			    "tags count from 0)",
+			    e->a, e->b, e->a >= c->num_file_vertices ? e->a : e->b, c->num_file_vertices);
 		uint32_t a = c->weld[e->a], b = c->weld[e->b];
 		if (!cage_has_edge(c, a, b))
-			return cage_fail(x, e->line, "crease <%u, %u> is not an edge of the cage", e->a, e->b);
+			return cage_fail(x, e->line, "crease <%u, %u> is not an edge of the cage", e->a,
+					 e->b);
 		c->crease_vertices[2 * i] = a, c->crease_vertices[2 * i + 1] = b;
 		c->crease_sharpness[i] = e->sharpness;
 	}
@@ -519,8 +559,10 @@ static bool apply_tags(const cage_ctx *x, const cage_tags *t, cage_data *c)
 	for (size_t i = 0; i < nk; i++) {
 		const cage_tag_vertex *v = &VECBUF_AT(&t->corners, cage_tag_vertex, i);
 		if (v->v >= c->num_file_vertices)
-			return cage_fail(x, v->line, "corner vertex %u is out of range (the file has %u vertices; tags "
-						     "count from 0)", v->v, c->num_file_vertices);
+			return cage_fail(x, v->line,
+					 "corner vertex %u is out of range (the file has %u vertices; tags "
+					 "count from 0)",
+					 v->v, c->num_file_vertices);
 		c->corner_vertices[i] = c->weld[v->v];
 		c->corner_sharpness[i] = v->sharpness;
 	}
@@ -528,8 +570,10 @@ static bool apply_tags(const cage_ctx *x, const cage_tags *t, cage_data *c)
 	for (size_t i = 0; i < nh; i++) {
 		const cage_tag_vertex *h = &VECBUF_AT(&t->holes, cage_tag_vertex, i);
 		if (h->v >= c->num_faces)
-			return cage_fail(x, h->line, "hole face %u is out of range (the file has %u faces; tags count "
-						     "from 0)", h->v, c->num_faces);
+			return cage_fail(x, h->line,
+					 "hole face %u is out of range (the file has %u faces; tags count "
+					 "from 0)",
+					 h->v, c->num_faces);
 		c->hole_faces[i] = h->v;
 	}
 	c->num_holes = (uint32_t)nh;
@@ -581,7 +625,8 @@ bool cage_load(const char *path, cage_data *out, diag *d, diag_loc loc)
 			cage_fail(&x, 0, "%s", why);
 	}
 	if (ok && r.uv_missing && r.uv_indices.len)
-		diag_warning(d, loc, "cage file '%s': some face corners have no UV; the cage's UVs are dropped", path);
+		diag_warning(
+		    d, loc, "cage file '%s': some face corners have no UV; the cage's UVs are dropped", path);
 	ok = ok && cage_build(&x, &r, out) && apply_tags(&x, &t, out);
 	vecbuf_free(&r.positions), vecbuf_free(&r.uvs), vecbuf_free(&r.face_sizes);
 	vecbuf_free(&r.face_lines), vecbuf_free(&r.indices), vecbuf_free(&r.uv_indices);
@@ -594,21 +639,31 @@ bool cage_load(const char *path, cage_data *out, diag *d, diag_loc loc)
 void cage_free(cage_data *c)
 {
 	mem_free(c->positions), mem_free(c->weld), mem_free(c->face_sizes), mem_free(c->face_indices);
-	mem_free(c->uvs), mem_free(c->uv_indices), mem_free(c->crease_vertices), mem_free(c->crease_sharpness);
-	mem_free(c->corner_vertices), mem_free(c->corner_sharpness), mem_free(c->hole_faces), mem_free(c->edges);
+	mem_free(c->uvs), mem_free(c->uv_indices), mem_free(c->crease_vertices),
+	    mem_free(c->crease_sharpness);
+	mem_free(c->corner_vertices), mem_free(c->corner_sharpness), mem_free(c->hole_faces),
+	    mem_free(c->edges);
 	memset(c, 0, sizeof *c);
 }
 
 subd_cage cage_view(const cage_data *c)
 {
 	return (subd_cage){
-		.positions = c->positions, .num_vertices = c->num_vertices,
-		.face_sizes = c->face_sizes, .num_faces = c->num_faces, .face_indices = c->face_indices,
-		.crease_vertices = c->crease_vertices, .crease_sharpness = c->crease_sharpness,
-		.num_creases = c->num_creases,
-		.corner_vertices = c->corner_vertices, .corner_sharpness = c->corner_sharpness,
-		.num_corners = c->num_corners,
-		.hole_faces = c->hole_faces, .num_holes = c->num_holes,
-		.uvs = c->uvs, .num_uvs = c->num_uvs, .uv_indices = c->uvs ? c->uv_indices : NULL,
+	    .positions = c->positions,
+	    .num_vertices = c->num_vertices,
+	    .face_sizes = c->face_sizes,
+	    .num_faces = c->num_faces,
+	    .face_indices = c->face_indices,
+	    .crease_vertices = c->crease_vertices,
+	    .crease_sharpness = c->crease_sharpness,
+	    .num_creases = c->num_creases,
+	    .corner_vertices = c->corner_vertices,
+	    .corner_sharpness = c->corner_sharpness,
+	    .num_corners = c->num_corners,
+	    .hole_faces = c->hole_faces,
+	    .num_holes = c->num_holes,
+	    .uvs = c->uvs,
+	    .num_uvs = c->num_uvs,
+	    .uv_indices = c->uvs ? c->uv_indices : NULL,
 	};
 }

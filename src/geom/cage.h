@@ -23,17 +23,17 @@
  * vertex order over the file's meshes) to them: the numbers tags and scenes write. */
 typedef struct cage_data {
 	vec3 *positions;
-	uint32_t num_vertices;       /* after welding */
-	uint32_t num_file_vertices;  /* before: the range of weld */
-	uint32_t *weld;              /* file vertex -> welded vertex */
+	uint32_t num_vertices;	    /* after welding */
+	uint32_t num_file_vertices; /* before: the range of weld */
+	uint32_t *weld;		    /* file vertex -> welded vertex */
 	uint32_t *face_sizes;
 	uint32_t num_faces;
-	uint32_t *face_indices;      /* sum of face_sizes */
-	vec2 *uvs;                   /* NULL: no UVs (some face corner had none) */
+	uint32_t *face_indices; /* sum of face_sizes */
+	vec2 *uvs;		/* NULL: no UVs (some face corner had none) */
 	uint32_t num_uvs;
-	uint32_t *uv_indices;        /* layout of face_indices */
+	uint32_t *uv_indices; /* layout of face_indices */
 	/* From the file's tags (OBJ only), in welded vertex numbers. */
-	uint32_t *crease_vertices;   /* 2 per crease */
+	uint32_t *crease_vertices; /* 2 per crease */
 	float *crease_sharpness;
 	uint32_t num_creases;
 	uint32_t *corner_vertices;
@@ -41,9 +41,9 @@ typedef struct cage_data {
 	uint32_t num_corners;
 	uint32_t *hole_faces;
 	uint32_t num_holes;
-	bool has_boundary;           /* the file names a boundary rule (`t interpolateboundary`) */
+	bool has_boundary; /* the file names a boundary rule (`t interpolateboundary`) */
 	subd_boundary boundary;
-	uint64_t *edges;             /* sorted keys of the welded cage's edges (cage_has_edge) */
+	uint64_t *edges; /* sorted keys of the welded cage's edges (cage_has_edge) */
 	size_t num_edges;
 } cage_data;
 
@@ -67,13 +67,13 @@ subd_cage cage_view(const cage_data *c);
 /* The file's polygons before welding: positions in file order, faces, and optional per-corner
  * UVs. Filled by a reader, then cage_build welds them into a cage_data. */
 typedef struct cage_raw {
-	vecbuf positions;   /* vec3 */
-	vecbuf uvs;         /* vec2 */
-	vecbuf face_sizes;  /* uint32_t */
-	vecbuf face_lines;  /* uint32_t: the file's line of each face (0: none) */
-	vecbuf indices;     /* uint32_t, into positions */
-	vecbuf uv_indices;  /* uint32_t, into uvs; empty when a corner had none */
-	bool uv_missing;    /* some corner had no UV */
+	vecbuf positions;  /* vec3 */
+	vecbuf uvs;	   /* vec2 */
+	vecbuf face_sizes; /* uint32_t */
+	vecbuf face_lines; /* uint32_t: the file's line of each face (0: none) */
+	vecbuf indices;	   /* uint32_t, into positions */
+	vecbuf uv_indices; /* uint32_t, into uvs; empty when a corner had none */
+	bool uv_missing;   /* some corner had no UV */
 } cage_raw;
 
 /* Assimp's formats into raw polygons (import.c). False after setting *why (static text or buf). */

@@ -40,9 +40,10 @@ static inline uint32_t *weld(const mesh *m)
 	weld_pos = m->positions;
 	qsort(order, n, sizeof *order, pos_cmp);
 	for (uint32_t i = 0; i < n; i++)
-		id[order[i]] = i > 0 && memcmp(&m->positions[order[i]], &m->positions[order[i - 1]], sizeof(vec3)) == 0
-				       ? id[order[i - 1]]
-				       : order[i];
+		id[order[i]] =
+		    i > 0 && memcmp(&m->positions[order[i]], &m->positions[order[i - 1]], sizeof(vec3)) == 0
+			? id[order[i - 1]]
+			: order[i];
 	free(order);
 	return id;
 }
