@@ -142,6 +142,7 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 		p = end;
 	}
 	if (!ok) {
+		/* reported above */
 	} else if (!strcmp(name, "crease")) {
 		if (ni < 2 || ni % 2 || (nf != 1 && nf != ni / 2))
 			ok = cage_fail(
