@@ -68,7 +68,8 @@ static void print_check_summary(const char *path, const scene *sc, const world *
 			total += st.materials_by_kind[k];
 		}
 	printf("%s\n", total ? "" : " none");
-	printf("  mesh triangles given: %zu, subdivision cage faces: %zu\n", st.mesh_triangles, st.subdiv_faces);
+	printf("  mesh triangles given: %zu, subdivision cage faces: %zu\n", st.mesh_triangles,
+	       st.subdiv_faces + w->stats.cage_file_faces);
 	printf("  triangles after tessellation: %zu unique, %zu with instances (%zu subdivision surfaces)\n",
 	       w->stats.triangles, w->stats.instanced_triangles, w->stats.subdiv_surfaces);
 	if (st.sss_nonuniform)

@@ -1,5 +1,7 @@
 /* import.c - mesh files through Assimp's C API: every mesh of the scene graph, flattened through
- * its node transforms into one triangle mesh. */
+ * its node transforms into one triangle mesh; and subdivision cages of formats other than OBJ,
+ * flattened the same way but with their polygons kept. */
+#include "geom/cage.h"
 #include "geom/mesh.h"
 
 #include "base/mem.h"
@@ -114,5 +116,61 @@ bool mesh_import(const char *path, mesh *out, diag *d)
 		ok = true;
 	}
 	aiReleaseImport(s);
+	return ok;
+}
+
+/* Appends the polygons of the node tree to raw: positions through the node transforms, one UV
+ * per vertex (Assimp's vertices carry their own), polygon order reversed under a mirroring
+ * transform. Points and lines are faces of 1 or 2 vertices, which the welding step refuses. */
+static bool cage_node(const struct aiScene *s, const struct aiNode *nd, xform parent, cage_raw *r)
+{
+	xform here = xform_then(xform_from_ai(&nd->mTransformation), parent);
+	bool mirror = xform_det(&here) < 0.0;
+	for (unsigned i = 0; i < nd->mNumMeshes; i++) {
+		const struct aiMesh *m = s->mMeshes[nd->mMeshes[i]];
+		size_t base = r->positions.len;
+		if (!m->mTextureCoords[0])
+			r->uv_missing = true;
+		if (!vecbuf_reserve(&r->positions, m->mNumVertices) || !vecbuf_reserve(&r->uvs, m->mNumVertices))
+			return false;
+		for (unsigned k = 0; k < m->mNumVertices; k++) {
+			const struct aiVector3D *p = &m->mVertices[k];
+			vec3 v = d3_to_v3(xform_point(&here, d3(p->x, p->y, p->z)));
+			vec2 uv = m->mTextureCoords[0] ? v2(m->mTextureCoords[0][k].x, m->mTextureCoords[0][k].y) : v2(0, 0);
+			vecbuf_push(&r->positions, &v);
+			vecbuf_push(&r->uvs, &uv);
+		}
+		for (unsigned k = 0; k < m->mNumFaces; k++) {
+			const struct aiFace *fc = &m->mFaces[k];
+			uint32_t n = fc->mNumIndices, line = 0;
+			if (!vecbuf_push(&r->face_sizes, &n) || !vecbuf_push(&r->face_lines, &line))
+				return false;
+			for (uint32_t j = 0; j < n; j++) {
+				uint32_t v = (uint32_t)(base + fc->mIndices[mirror ? (n - j) % n : j]);
+				if (!vecbuf_push(&r->indices, &v) || (m->mTextureCoords[0] && !vecbuf_push(&r->uv_indices, &v)))
+					return false;
+			}
+		}
+	}
+	for (unsigned i = 0; i < nd->mNumChildren; i++)
+		if (!cage_node(s, nd->mChildren[i], here, r))
+			return false;
+	return true;
+}
+
+bool cage_import_assimp(const char *path, cage_raw *raw, char *buf, size_t len, const char **why)
+{
+	/* No aiProcess_Triangulate: a cage keeps its quads and n-gons. No JoinIdenticalVertices
+	 * either: cage.c welds by position, whatever the other attributes. */
+	const struct aiScene *s = aiImportFile(path, aiProcess_ValidateDataStructure);
+	if (!s) {
+		snprintf(buf, len, "cannot import it: %s", aiGetErrorString());
+		*why = buf;
+		return false;
+	}
+	bool ok = !s->mRootNode || cage_node(s, s->mRootNode, xform_identity(), raw);
+	aiReleaseImport(s);
+	if (!ok)
+		*why = "out of memory";
 	return ok;
 }

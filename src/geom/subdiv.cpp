@@ -21,6 +21,7 @@ extern "C" {
 #include <cstdio>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -135,6 +136,44 @@ void validate(const subd_cage *cage, const subd_options *opt)
 	for (uint32_t c = 0; c < cage->num_corners; c++)
 		if (cage->corner_vertices[c] >= cage->num_vertices)
 			throw subd_failure(format("corner %u: vertex %u out of range", c, cage->corner_vertices[c]));
+	for (uint32_t h = 0; h < cage->num_holes; h++)
+		if (cage->hole_faces[h] >= cage->num_faces)
+			throw subd_failure(format("hole %u: face %u out of range", h, cage->hole_faces[h]));
+}
+
+// Keeps one weight per key: a new key is appended to keys (as its parts) and weights, a key seen
+// before has its weight replaced (the later entry holds).
+template <typename K>
+void keep_last(std::map<K, size_t> &slot, const K &key, const Far::Index *parts, int n_parts, float weight,
+	       std::vector<Far::Index> &keys, std::vector<float> &weights)
+{
+	auto it = slot.find(key);
+	if (it != slot.end()) {
+		weights[it->second] = weight;
+		return;
+	}
+	slot[key] = weights.size();
+	keys.insert(keys.end(), parts, parts + n_parts);
+	weights.push_back(weight);
+}
+
+// The creases and corners with one entry per edge or vertex, the later sharpness holding (so a
+// scene's crease or corner overrides a cage file's).
+void unique_tags(const subd_cage *cage, std::vector<Far::Index> &pairs, std::vector<float> &crease_w,
+		 std::vector<Far::Index> &corners, std::vector<float> &corner_w)
+{
+	std::map<std::pair<uint32_t, uint32_t>, size_t> edges;
+	for (uint32_t c = 0; c < cage->num_creases; c++) {
+		uint32_t a = cage->crease_vertices[2 * c], b = cage->crease_vertices[2 * c + 1];
+		Far::Index ab[2] = {(Far::Index)a, (Far::Index)b};
+		keep_last(edges, std::make_pair(std::min(a, b), std::max(a, b)), ab, 2, cage->crease_sharpness[c], pairs,
+			  crease_w);
+	}
+	std::map<uint32_t, size_t> vertices;
+	for (uint32_t c = 0; c < cage->num_corners; c++) {
+		Far::Index v = (Far::Index)cage->corner_vertices[c];
+		keep_last(vertices, cage->corner_vertices[c], &v, 1, cage->corner_sharpness[c], corners, corner_w);
+	}
 }
 
 uint64_t estimate_triangles(const subd_cage *cage, const subd_options *opt)
@@ -206,20 +245,24 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 	for (int s : sizes)
 		nidx += (size_t)s;
 	std::vector<Far::Index> verts(cage->face_indices, cage->face_indices + nidx);
-	std::vector<Far::Index> crease_pairs(cage->crease_vertices, cage->crease_vertices + 2 * (size_t)cage->num_creases);
-	std::vector<Far::Index> corners(cage->corner_vertices, cage->corner_vertices + cage->num_corners);
+	std::vector<Far::Index> crease_pairs, corners;
+	std::vector<float> crease_weights, corner_weights;
+	unique_tags(cage, crease_pairs, crease_weights, corners, corner_weights);
+	std::vector<Far::Index> holes(cage->hole_faces, cage->hole_faces + cage->num_holes);
 	std::vector<Far::Index> uv_idx;
 	Far::TopologyDescriptor desc;
 	desc.numVertices = (int)cage->num_vertices;
 	desc.numFaces = (int)cage->num_faces;
 	desc.numVertsPerFace = sizes.data();
 	desc.vertIndicesPerFace = verts.data();
-	desc.numCreases = (int)cage->num_creases;
+	desc.numCreases = (int)crease_weights.size();
 	desc.creaseVertexIndexPairs = crease_pairs.data();
-	desc.creaseWeights = cage->crease_sharpness;
-	desc.numCorners = (int)cage->num_corners;
+	desc.creaseWeights = crease_weights.data();
+	desc.numCorners = (int)corner_weights.size();
 	desc.cornerVertexIndices = corners.data();
-	desc.cornerWeights = cage->corner_sharpness;
+	desc.cornerWeights = corner_weights.data();
+	desc.numHoles = (int)holes.size();
+	desc.holeIndices = holes.data();
 	Far::TopologyDescriptor::FVarChannel channel;
 	if (cage->uvs) {
 		uv_idx.assign(cage->uv_indices, cage->uv_indices + nidx);
@@ -241,11 +284,11 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 	if (!refiner)
 		throw subd_failure("invalid cage topology" + (osd_errors.empty() ? std::string() : ": " + osd_errors));
 	const Far::TopologyLevel &base = refiner->GetLevel(0);
-	for (uint32_t c = 0; c < cage->num_creases; c++) {
+	for (size_t c = 0; c < crease_weights.size(); c++) {
 		Far::Index a = crease_pairs[2 * c], b = crease_pairs[2 * c + 1];
 		if (a < 0 || b < 0 || a >= desc.numVertices || b >= desc.numVertices ||
 		    base.FindEdge(a, b) == Far::INDEX_INVALID)
-			throw subd_failure(format("crease %u: vertices %d and %d are not an edge of the cage", c, a, b));
+			throw subd_failure(format("crease %zu: vertices %d and %d are not an edge of the cage", c, a, b));
 	}
 
 	typedef Bfr::RefinerSurfaceFactory<> SurfaceFactory;
@@ -384,17 +427,23 @@ extern "C" bool subd_tessellate(const subd_cage *cage, const subd_options *opt, 
 {
 	std::memset(out, 0, sizeof *out);
 	install_callbacks();
+	// "subdivision surface" or "subdivision surface of 'cage.obj'": the file is the user's handle.
+	char what[320];
+	if (cage->source)
+		snprintf(what, sizeof what, "subdivision surface of '%s'", cage->source);
+	else
+		snprintf(what, sizeof what, "subdivision surface");
 	try {
 		tessellate(cage, opt, out);
 		return true;
 	} catch (const subd_failure &e) {
-		diag_error(d, loc, "subdivision surface: %s", e.what());
+		diag_error(d, loc, "%s: %s", what, e.what());
 	} catch (const std::bad_alloc &) {
-		diag_error(d, loc, "subdivision surface: out of memory");
+		diag_error(d, loc, "%s: out of memory", what);
 	} catch (const std::exception &e) {
-		diag_error(d, loc, "subdivision surface: %s", e.what());
+		diag_error(d, loc, "%s: %s", what, e.what());
 	} catch (...) {
-		diag_error(d, loc, "subdivision surface: unexpected failure in OpenSubdiv");
+		diag_error(d, loc, "%s: unexpected failure in OpenSubdiv", what);
 	}
 	mesh_free(out);
 	return false;

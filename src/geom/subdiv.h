@@ -24,8 +24,10 @@ typedef enum subd_boundary { SUBD_BOUNDARY_EDGE_ONLY, SUBD_BOUNDARY_EDGE_AND_COR
 /* The control cage. Faces are listed by size (face_sizes) with their vertex indices one after the
  * other (face_indices, zero-based, counter-clockwise seen from outside). Creases are pairs of
  * vertices that must be an edge of the cage, with a sharpness (0 smooth .. 10 and above
- * infinitely sharp); corners are vertices with a sharpness. UVs are face-varying: uv_indices has
- * the layout of face_indices and points into uvs (NULL: no UVs). */
+ * infinitely sharp). Corners are vertices with a sharpness. When an edge or a corner vertex is
+ * listed twice, the later sharpness holds. Holes are faces left out of the surface (they still shape their neighbours).
+ * UVs are face-varying: uv_indices has the layout of face_indices and points into uvs (NULL: no
+ * UVs). source names the file the cage came from in errors (NULL: an inline cage). */
 typedef struct subd_cage {
 	const vec3 *positions;
 	uint32_t num_vertices;
@@ -38,11 +40,14 @@ typedef struct subd_cage {
 	const uint32_t *corner_vertices;
 	const float *corner_sharpness;
 	uint32_t num_corners;
+	const uint32_t *hole_faces;
+	uint32_t num_holes;
 	const vec2 *uvs;
 	uint32_t num_uvs;
 	const uint32_t *uv_indices;
 	subd_scheme scheme;
 	subd_boundary boundary;
+	const char *source;
 } subd_cage;
 
 /* The pinhole camera the adaptive mode measures edges through, in the cage's space: position,

@@ -1088,6 +1088,7 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 		case LTK_KW_FILE:
 			TRY(once(p, &seen[0], &t));
 			lang_advance(p);
+			d->file_loc = t.loc;
 			TRY(asset_path(p, "after 'file'", &d->file));
 			break;
 		case LTK_KW_VERTEX_VECTORS:
@@ -1134,6 +1135,7 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 				   "expected edge_only or edge_and_corner after 'boundary'");
 			TRY(i >= 0);
 			d->boundary = (scene_subd_boundary)(SCENE_SUBD_EDGE_ONLY + i);
+			d->boundary_given = true;
 			break;
 		}
 		case LTK_KW_LEVEL:

@@ -14,7 +14,7 @@ cam_params cam_params_default(void)
 	    .location = v3(0, 0, 0),
 	    .look_at = v3(0, 0, 1),
 	    .sky = v3(0, 1, 0),
-	    .angle_deg = 90.0f,
+	    .angle_deg = 67.380135f, /* POV-Ray's, as src/lang gives a camera block: 2 atan(1.33 / 2) */
 	    .right = v3(0, 0, 0),
 	    .up = v3(0, 0, 0),
 	    .aperture = 0.0f,

@@ -5,6 +5,7 @@
 #include "render/integrator.h"
 
 #include "accel/bvh.h"
+#include "accel/offset.h"
 #include "sss/disk.h"
 #include "sss/probe.h"
 
@@ -29,11 +30,11 @@ static vec3 to_world(const frame *f, vec3 v)
 	return v3_add(v3_add(v3_scale(f->t, v.x), v3_scale(f->b, v.y)), v3_scale(f->n, v.z));
 }
 
-/* Spawned rays leave from the hit moved off its surface just enough for float error: Waechter &
- * Binder's offset (accel/bvh.h), valid from 1e-8 to 1e8 in coordinates, so scenes behave the same
- * at any scale. The scene's hit positions must be computed from the triangle (barycentrics), not
- * as o + t d, for the offset to cover their error. */
-static vec3 offset_origin(vec3 p, vec3 n_out) { return bvh_offset_origin(p, n_out); }
+/* Spawned rays leave from the hit moved off its surface just enough for float error: a fixed
+ * number of ulps of the triangle's scale (accel/offset.h), valid from 1e-8 to 1e8 in coordinates,
+ * so scenes behave the same at any scale. The scene's hit positions must be computed from the
+ * triangle (barycentrics), not as o + t d, for the offset to cover their error. */
+static vec3 offset_origin(vec3 p, float scale, vec3 n_out) { return bvh_offset_scaled(p, n_out, scale); }
 
 /* Nearest surface: the scene's or a sphere light's. *light_hit receives the sphere light's index
  * when that is nearer, else -1. */
@@ -72,7 +73,7 @@ static float emitter_weight(const render_settings *set, int bounce, bool prev_de
 
 /* Next-event estimation from hit point p: one light picked by power, one sample of it. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			  const frame *f, vec3 ng_out, vec3 p, vec3 wo_local, rng *g)
+			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, rng *g)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -89,7 +90,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	vec3 fval = bsdf_eval(b, wo_local, wi_local);
 	if (v3_max_comp(fval) <= 0.0f)
 		return v3s(0.0f);
-	render_ray shadow = {offset_origin(p, ng_out), ls_out.wi};
+	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
 	if (s->occluded(s->user, &shadow, 0.0f, tmax))
 		return v3s(0.0f);
@@ -168,12 +169,13 @@ typedef struct probe_ctx {
 static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 {
 	const probe_ctx *c = ctx;
-	render_hit rh;
+	render_hit rh = {0};
 	render_ray r = {ray->org, ray->dir};
 	if (!c->s->sss_closest(c->s->user, c->at, &r, ray->tmin, ray->tmax, &rh))
 		return false;
 	turn_hit(&rh, c->side);
-	*h = (sss_probe_hit){.t = rh.t, .p = rh.p, .ng = rh.ng, .prim = rh.prim, .u = rh.bary.x, .v = rh.bary.y};
+	*h = (sss_probe_hit){.t = rh.t, .p = rh.p, .ng = rh.ng, .prim = rh.prim, .u = rh.bary.x, .v = rh.bary.y,
+			     .scale = rh.scale};
 	c->log[*c->n < c->cap ? *c->n : c->cap - 1] = rh;
 	++*c->n;
 	return true;
@@ -243,7 +245,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	int n = 0;
 	probe_ctx ctx = {s, exit, 1.0f, &last, 1, &n};
 	sss_probe pr = {probe_closest, &ctx};
-	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, w_in, g, SSS_WALK_MAX_STEPS);
+	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, exit->scale, w_in, g, SSS_WALK_MAX_STEPS);
 	if (r.status == SSS_WALK_ABSORBED)
 		return false; /* an outcome of the walk, not a failure */
 	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {
@@ -296,7 +298,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	vec3 prev_p = ray.o;
 	const light_set *ls = s->lights;
 	for (int bounce = 0;; bounce++) {
-		render_hit hit;
+		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		if (!trace(s, &ray, &hit, &sphere_light)) {
 			for (size_t k = 0; ls && k < ls->infinite_count; k++) {
@@ -341,6 +343,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		v3_basis(f.n, &f.t, &f.b);
 		vec3 wo_local = to_local(&f, wo);
 		vec3 p = hit.p;
+		float p_scale = hit.scale;
 
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
 		if (sm) {
@@ -351,7 +354,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			spec.diffuse = v3s(0.0f);
 			if (set->mode != RENDER_BSDF_ONLY)
 				radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &spec, &f, ng_out, p,
-										     wo_local, g)));
+										     p_scale, wo_local, g)));
 			if (!(rng_float(g) < p_sss)) {
 				b = spec;
 				beta = v3_scale(beta, 1.0f / (1.0f - p_sss));
@@ -372,6 +375,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 				beta = v3_mul(beta, w);
 				/* From here on the path leaves x_i through the entry lobe, outside the medium. */
 				p = e.hit.p;
+				p_scale = e.hit.scale;
 				ng_out = e.hit.ng;
 				f.n = v3_dot(ns_i, ng_out) > 0.0f ? ns_i : ng_out;
 				v3_basis(f.n, &f.t, &f.b);
@@ -380,10 +384,10 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 						  .alpha = 1.0f, .ior = sm->ior};
 				if (set->mode != RENDER_BSDF_ONLY)
 					radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out,
-											     p, wo_local, g)));
+											     p, p_scale, wo_local, g)));
 			}
 		} else if (set->mode != RENDER_BSDF_ONLY) {
-			radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, p, wo_local, g)));
+			radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, p, p_scale, wo_local, g)));
 		}
 
 		float u_lobe = rng_float(g);
@@ -405,7 +409,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 				break;
 			beta = v3_scale(beta, 1.0f / q);
 		}
-		ray = (render_ray){offset_origin(p, ng_out), v3_normalize(wi)};
+		ray = (render_ray){offset_origin(p, p_scale, ng_out), v3_normalize(wi)};
 	}
 	out.radiance = radiance;
 	return out;

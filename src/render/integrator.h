@@ -47,6 +47,8 @@ typedef struct render_hit {
 				  this surface belongs to, or -1 */
 	uint32_t object, prim; /* the scene's own ids, passed back to shade() for texture lookups */
 	vec2 bary;     /* barycentrics of the triangle's second and third vertex, for shade() */
+	float scale;   /* largest |coordinate| of the triangle's world vertices: rays leaving p start
+			  bvh_offset_scaled(p, n, scale) (accel/offset.h); 0: unknown */
 } render_hit;
 
 /* How a subsurface material finds its entry point (src/sss: circle.*, disk.*, walk.*). */
@@ -75,7 +77,8 @@ typedef struct render_sss {
 
 typedef struct render_scene {
 	void *user; /* handed to every callback */
-	/* Nearest hit with t in (tmin, tmax); fills *hit. Must be thread-safe (called concurrently). */
+	/* Nearest hit with t in (tmin, tmax); fills *hit (which arrives zeroed: fields left unset stay 0).
+	 * Must be thread-safe (called concurrently). */
 	bool (*intersect)(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit);
 	/* Any hit with t in (tmin, tmax): the shadow test. Surfaces marked no_shadow should be skipped. */
 	bool (*occluded)(void *user, const render_ray *ray, float tmin, float tmax);

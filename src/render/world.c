@@ -2,7 +2,9 @@
  * callbacks over them. */
 #include "render/world.h"
 
+#include "accel/offset.h"
 #include "base/mem.h"
+#include "geom/cage.h"
 #include "geom/prim.h"
 #include "geom/subdiv.h"
 #include "render/shading.h"
@@ -56,17 +58,23 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
-/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera. */
+/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera (the
+ * default camera when the scene has none, as build_camera does). */
 static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, const world_options *opt,
 				   subd_camera *camera)
 {
 	subd_options so = {.level = sd->level, .max_bytes = opt->max_memory};
 	if (sd->level <= 0 && sd->max_edge_px > 0) {
 		const scene_camera *c = &sc->camera;
+		cam_params dc = cam_params_default();
+		vec3 from = sc->has_camera ? d3v(c->location) : dc.location;
+		vec3 to = sc->has_camera ? d3v(c->look_at) : dc.look_at;
+		double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
 		double aspect = (double)opt->width / (double)opt->height;
-		double half_h = tan(c->angle_deg * M_PI / 360.0) / aspect;
-		*camera = (subd_camera){.position = d3v(c->location), .look = d3v(d3_sub(c->look_at, c->location)),
-					.up = d3v(c->sky), .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+		double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
+		*camera = (subd_camera){.position = from, .look = v3_sub(to, from),
+					.up = sc->has_camera ? d3v(c->sky) : dc.sky,
+					.fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
 					.image_height = (uint32_t)opt->height};
 		so.camera = camera;
 		so.max_edge_px = (float)sd->max_edge_px;
@@ -74,52 +82,105 @@ static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, cons
 	return so;
 }
 
-static bool build_subdiv(const scene *sc, const scene_geom *g, const world_options *opt, mesh *m, diag *d)
+/* The creases and corners of a cage: a file's tags first, then the scene's, so that where both
+ * name an edge the scene's sharpness holds (subd_tessellate keeps the later one). The scene's
+ * indices are the file's own vertex numbers, mapped through its welding; each is checked against
+ * the cage (a file cage is only known here) and reported at the scene's place. */
+static bool subdiv_tags(const scene_subdiv *sd, const cage_data *file, subd_cage *cage, diag *d)
 {
-	const scene_subdiv *sd = &g->u.subdiv;
-	if (sd->file) {
-		diag_error(d, g->loc, "subdivision_surface { file } is not supported by circe yet: give the cage "
-				      "inline with vertex_vectors and faces");
+	uint32_t fc = file ? file->num_creases : 0, fk = file ? file->num_corners : 0;
+	size_t nc = (size_t)fc + sd->n_creases, nk = (size_t)fk + sd->n_corners;
+	uint32_t *crease_v = mem_alloc(2 * nc, sizeof *crease_v), *corner_v = mem_alloc(nk, sizeof *corner_v);
+	float *crease_s = mem_alloc(nc, sizeof *crease_s), *corner_s = mem_alloc(nk, sizeof *corner_s);
+	if (!crease_v || !crease_s || !corner_v || !corner_s) {
+		mem_free(crease_v), mem_free(crease_s), mem_free(corner_v), mem_free(corner_s);
+		diag_error(d, sd->file ? sd->file_loc : diag_noloc(), "out of memory");
 		return false;
 	}
-	float *crease_sharp = NULL, *corner_sharp = NULL;
-	uint32_t *crease_v = NULL, *corner_v = NULL;
-	bool ok = true;
-	if (sd->n_creases) {
-		crease_v = mem_alloc((size_t)sd->n_creases * 2, sizeof *crease_v);
-		crease_sharp = mem_alloc(sd->n_creases, sizeof *crease_sharp);
-		ok = crease_v && crease_sharp;
-		for (uint32_t i = 0; ok && i < sd->n_creases; i++) {
-			crease_v[2 * i] = sd->creases[i].a, crease_v[2 * i + 1] = sd->creases[i].b;
-			crease_sharp[i] = sd->creases[i].sharpness;
+	if (file) {
+		memcpy(crease_v, file->crease_vertices, 2 * (size_t)fc * sizeof *crease_v);
+		memcpy(crease_s, file->crease_sharpness, fc * sizeof *crease_s);
+		memcpy(corner_v, file->corner_vertices, fk * sizeof *corner_v);
+		memcpy(corner_s, file->corner_sharpness, fk * sizeof *corner_s);
+	}
+	int errors = 0;
+	for (uint32_t i = 0; i < sd->n_creases; i++) {
+		const scene_crease *c = &sd->creases[i];
+		uint32_t a = c->a, b = c->b;
+		if (file && (a >= file->num_file_vertices || b >= file->num_file_vertices)) {
+			diag_error(d, c->loc, "crease %u: vertex %u is out of range (the cage file '%s' has %u vertices)", i,
+				   a >= file->num_file_vertices ? a : b, sd->file, file->num_file_vertices);
+			errors++;
+			continue;
 		}
+		if (file) {
+			a = file->weld[a], b = file->weld[b];
+			if (!cage_has_edge(file, a, b)) {
+				diag_error(d, c->loc, "crease %u: <%u, %u> is not an edge of the cage in '%s'", i, c->a, c->b,
+					   sd->file);
+				errors++;
+				continue;
+			}
+		}
+		crease_v[2 * (fc + i)] = a, crease_v[2 * (fc + i) + 1] = b;
+		crease_s[fc + i] = c->sharpness;
 	}
-	if (ok && sd->n_corners) {
-		corner_v = mem_alloc(sd->n_corners, sizeof *corner_v);
-		corner_sharp = mem_alloc(sd->n_corners, sizeof *corner_sharp);
-		ok = corner_v && corner_sharp;
-		for (uint32_t i = 0; ok && i < sd->n_corners; i++)
-			corner_v[i] = sd->corners[i].vertex, corner_sharp[i] = sd->corners[i].sharpness;
+	for (uint32_t i = 0; i < sd->n_corners; i++) {
+		const scene_corner *c = &sd->corners[i];
+		uint32_t v = c->vertex;
+		if (file && v >= file->num_file_vertices) {
+			diag_error(d, c->loc, "corner %u: vertex %u is out of range (the cage file '%s' has %u vertices)", i,
+				   v, sd->file, file->num_file_vertices);
+			errors++;
+			continue;
+		}
+		corner_v[fk + i] = file ? file->weld[v] : v;
+		corner_s[fk + i] = c->sharpness;
 	}
-	if (!ok) {
-		diag_error(d, g->loc, "out of memory");
+	if (errors) {
+		mem_free(crease_v), mem_free(crease_s), mem_free(corner_v), mem_free(corner_s);
+		return false;
+	}
+	cage->crease_vertices = crease_v, cage->crease_sharpness = crease_s, cage->num_creases = (uint32_t)nc;
+	cage->corner_vertices = corner_v, cage->corner_sharpness = corner_s, cage->num_corners = (uint32_t)nk;
+	return true;
+}
+
+static bool build_subdiv(world *w, const scene *sc, const scene_geom *g, const world_options *opt, mesh *m,
+			 diag *d)
+{
+	const scene_subdiv *sd = &g->u.subdiv;
+	cage_data file;
+	subd_cage cage;
+	if (sd->file) {
+		if (!cage_load(sd->file, &file, d, sd->file_loc))
+			return false;
+		w->stats.cage_file_faces += file.num_faces;
+		cage = cage_view(&file);
+		cage.source = sd->file;
 	} else {
-		subd_cage cage = {
+		cage = (subd_cage){
 			.positions = sd->vertices, .num_vertices = sd->n_vertices,
 			.face_sizes = sd->face_sizes, .num_faces = sd->n_faces, .face_indices = sd->face_verts,
-			.crease_vertices = crease_v, .crease_sharpness = crease_sharp, .num_creases = sd->n_creases,
-			.corner_vertices = corner_v, .corner_sharpness = corner_sharp, .num_corners = sd->n_corners,
 			.uvs = sd->n_uv_faces ? sd->uvs : NULL, .num_uvs = sd->n_uvs,
 			.uv_indices = sd->n_uv_faces ? sd->uv_face_verts : NULL,
-			.scheme = sd->scheme == SCENE_SUBD_LOOP ? SUBD_LOOP : SUBD_CATMULL_CLARK,
-			.boundary = sd->boundary == SCENE_SUBD_EDGE_AND_CORNER ? SUBD_BOUNDARY_EDGE_AND_CORNER
-									       : SUBD_BOUNDARY_EDGE_ONLY,
 		};
+	}
+	cage.scheme = sd->scheme == SCENE_SUBD_LOOP ? SUBD_LOOP : SUBD_CATMULL_CLARK;
+	/* The scene's boundary rule when written, else the file's tag, else the language's default. */
+	cage.boundary = sd->file && !sd->boundary_given && file.has_boundary ? file.boundary
+		      : sd->boundary == SCENE_SUBD_EDGE_AND_CORNER ? SUBD_BOUNDARY_EDGE_AND_CORNER
+								   : SUBD_BOUNDARY_EDGE_ONLY;
+	bool ok = subdiv_tags(sd, sd->file ? &file : NULL, &cage, d);
+	if (ok) {
 		subd_camera camera;
 		subd_options so = subdiv_options(sc, sd, opt, &camera);
-		ok = subd_tessellate(&cage, &so, m, d, g->loc);
+		ok = subd_tessellate(&cage, &so, m, d, sd->file ? sd->file_loc : g->loc);
+		mem_free((void *)cage.crease_vertices), mem_free((void *)cage.crease_sharpness);
+		mem_free((void *)cage.corner_vertices), mem_free((void *)cage.corner_sharpness);
 	}
-	mem_free(crease_v), mem_free(crease_sharp), mem_free(corner_v), mem_free(corner_sharp);
+	if (sd->file)
+		cage_free(&file);
 	return ok;
 }
 
@@ -154,7 +215,7 @@ static bool build_geom(world *w, const scene *sc, const scene_geom *g, const wor
 	}
 	case SHAPE_SUBDIV:
 		w->stats.subdiv_surfaces++;
-		return build_subdiv(sc, g, opt, m, d);
+		return build_subdiv(w, sc, g, opt, m, d);
 	}
 	diag_error(d, g->loc, "out of memory while tessellating");
 	return false;
@@ -326,10 +387,14 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 	/* The position from the triangle: its error is that of the vertices, which the ray offset
 	 * covers; o + t d would carry the error of the whole ray. */
 	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, u)), v3_scale(p2, v));
-	if (!in->identity)
+	if (!in->identity) {
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
+		p0 = d3v(xform_point(&in->xf, v3_to_d3(p0)));
+		p1 = d3v(xform_point(&in->xf, v3_to_d3(p1)));
+		p2 = d3v(xform_point(&in->xf, v3_to_d3(p2)));
+	}
 	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
-			    .object = inst, .prim = prim, .bary = v2(u, v)};
+			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = bvh_triangle_scale(p0, p1, p2)};
 }
 
 static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
@@ -464,6 +529,29 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, dia
 }
 
 
+/* A walk's length grows like the square of the object's size in transport mean free paths
+ * (diffusion), capped by absorption at about sigma_t'/sigma_a interactions. When the smaller of
+ * the two exceeds the walk's step bound most long walks will be dropped (dark, counted): say so
+ * before the render rather than after. High albedos given in the artist form are the usual cause
+ * (albedo 1 needs sigma_a = 0, so the inversion makes sigma_s' very large). */
+static void warn_dense_medium(const world_inst *in, const scene *sc, const scene_object *o, diag *d)
+{
+	const scene_sss *ss = &o->material->sss;
+	double size_mm = v3_length(v3_sub(in->hi, in->lo)) * sc->global.mm_per_unit, worst = 0.0;
+	const float *s_s = &ss->sigma_s_per_mm.x, *s_a = &ss->sigma_a_per_mm.x;
+	for (int c = 0; c < 3; c++) {
+		double st = (double)s_s[c] + s_a[c], tau = st * size_mm;
+		double steps = fmin(tau * tau, s_a[c] > 0.0f ? st / s_a[c] : INFINITY);
+		worst = fmax(worst, steps);
+	}
+	if (worst > SSS_WALK_MAX_STEPS)
+		diag_warning(d, o->loc,
+			     "the volume method's walks in this object need about %.3g interactions (its medium is "
+			     "dense for its size and hardly absorbs); walks stop at %d, and those are dropped and "
+			     "counted",
+			     worst, SSS_WALK_MAX_STEPS);
+}
+
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
  * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
 static bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d)
@@ -505,6 +593,8 @@ static bool check_volumes(const world *w, const scene *sc, const world_options *
 				diag_note(d, o->material->loc, "its material is here; give it method circle, fullcircle "
 							      "or disk for an open surface");
 			ok = false;
+		} else {
+			warn_dense_medium(&w->insts[i], sc, o, d);
 		}
 	}
 	mem_free(closed);

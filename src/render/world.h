@@ -62,6 +62,7 @@ typedef struct world_stats {
 	size_t instanced_triangles; /* counting each instance */
 	size_t geometry_bytes;  /* meshes and BVHs */
 	size_t subdiv_surfaces;
+	size_t cage_file_faces; /* faces of the cages read from files (the IR counts inline ones) */
 	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
 } world_stats;
 

@@ -77,6 +77,7 @@ typedef struct scene_corner {
 /* A subdivision cage: either a file or inline vertices and faces of any size >= 3. */
 typedef struct scene_subdiv {
 	const char *file; /* NULL for an inline cage; resolved like scene_geom's file path */
+	diag_loc file_loc; /* where 'file' was written: a cage file's errors are reported there */
 	vec3 *vertices;
 	uint32_t n_vertices;
 	uint32_t *face_sizes; /* n_faces entries */
@@ -93,6 +94,7 @@ typedef struct scene_subdiv {
 	uint32_t n_corners;
 	scene_subd_scheme scheme;
 	scene_subd_boundary boundary;
+	bool boundary_given; /* written in the scene: it overrides a cage file's boundary tag */
 	int level; /* uniform level when > 0 */
 	double max_edge_px; /* adaptive: longest tessellated edge on screen, pixels (when level == 0) */
 } scene_subdiv;

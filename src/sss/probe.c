@@ -2,6 +2,8 @@
  * the disk comparator. */
 #include "sss/probe.h"
 
+#include "accel/offset.h"
+
 #include <math.h>
 
 static bool probe_mesh_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *hit)
@@ -19,6 +21,7 @@ static bool probe_mesh_closest(const void *ctx, const bvh_ray *ray, sss_probe_hi
 	hit->ng = v3_normalize(v3_cross(e1, e2));
 	hit->prim = h.prim;
 	hit->u = h.u, hit->v = h.v;
+	hit->scale = bvh_triangle_scale(a, b, c);
 	return true;
 }
 

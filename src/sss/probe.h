@@ -20,6 +20,7 @@ typedef struct sss_probe_hit {
 	vec3 ng;      /* unit geometric normal (v1 - v0) x (v2 - v0): outward on a well-wound mesh */
 	uint32_t prim; /* triangle */
 	float u, v;    /* barycentrics of the triangle's second and third vertex */
+	float scale;   /* the triangle's scale for ray offsets (accel/offset.h); 0: unknown */
 } sss_probe_hit;
 
 /* The closest hit of ray on the object with t in [ray->tmin, ray->tmax]: true and *hit filled, or

@@ -2,6 +2,7 @@
  * check. */
 #include "sss/walk.h"
 
+#include "accel/offset.h"
 #include "base/mem.h"
 #include "sss/profile.h"
 
@@ -20,9 +21,6 @@
  * the order sigma_t * 1e-6 * |coordinates|, negligible. */
 #define WALK_SKIN 1e-6
 
-/* Stepping back in after a reentry: from the second in a row on, this fraction of the point's
- * scale (about 4 float ulps), doubled at each further try: a few tries clear any rounding. */
-#define WALK_STEP_IN_FIRST 2.4e-7f
 
 bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
 				  const double sigma_a_per_mm[3], double g, double eta, double mm_per_unit)
@@ -90,17 +88,15 @@ static vec3 walk_side(vec3 ng, vec3 w)
 }
 
 /* The k-th try in a row to start inside again from the boundary point p (n_in pointing into the
- * medium): the ray offset first, then WALK_STEP_IN_FIRST of p's scale doubled k - 1 times. */
-static vec3 walk_step_in(vec3 p, vec3 n_in, int k)
+ * medium; scale the triangle's, accel/offset.h): the ray offset, doubled k - 1 times. */
+static vec3 walk_step_in(vec3 p, vec3 n_in, float scale, int k)
 {
-	if (k <= 1)
-		return bvh_offset_origin(p, n_in);
-	float scale = fmaxf(1.0f, fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z))));
-	return v3_madd(p, n_in, scale * ldexpf(WALK_STEP_IN_FIRST, k - 2 < 30 ? k - 2 : 30));
+	vec3 o = bvh_offset_scaled(p, n_in, scale);
+	return k <= 1 ? o : v3_madd(p, v3_sub(o, p), ldexpf(1.0f, k - 1 < 30 ? k - 1 : 30));
 }
 
-sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, vec3 w, rng *g,
-			 int max_steps)
+sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, float x_scale, vec3 w,
+			 rng *g, int max_steps)
 {
 	sss_walk_result res = {0};
 	res.weight = v3s(0.0f);
@@ -112,7 +108,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	for (int c = 0; c < 3; c++)
 		sigma_t[c] = m->sigma_s[c] + m->sigma_a[c];
 	w = v3_normalize(w);
-	vec3 org = bvh_offset_origin(x, walk_side(ng, w));
+	vec3 org = bvh_offset_scaled(x, walk_side(ng, w), x_scale);
 	/* the mesh's orientation, from the entry: +1 when ng points out of the medium */
 	float outward = v3_dot(w, ng) <= 0.0f ? 1.0f : -1.0f;
 	int stuck = 0; /* reentries in a row */
@@ -164,7 +160,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 				 * triangle from behind that the triangle test still reports at t ~ 0 (its
 				 * error grows with the triangle's size, not with |p|). Step back in, each
 				 * time in a row twice as far. */
-				org = walk_step_in(h.p, n_out, ++stuck);
+				org = walk_step_in(h.p, n_out, h.scale, ++stuck);
 				res.reentries++;
 				continue;
 			}
@@ -173,7 +169,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			double eta = 1.0 / m->eta; /* from the medium (eta) to outside (1) */
 			if (rng_double(g) < sss_fresnel_dielectric(cos_i, eta)) {
 				w = v3_normalize(v3_madd(w, n_out, (float)(-2.0 * cos_i)));
-				org = bvh_offset_origin(h.p, v3_neg(n_out));
+				org = bvh_offset_scaled(h.p, v3_neg(n_out), h.scale);
 				res.reflections++;
 			} else {
 				/* Snell: the tangential part scales by n_i/n_t = m->eta */

@@ -64,13 +64,14 @@ typedef struct sss_walk_result {
 
 /* One walk. x is the entry point on the object's surface, ng its geometric normal (either
  * orientation: the walk takes the mesh's orientation from it, so the mesh's winding must be
- * consistent, as a closed mesh's is; otherwise walks end LOST), w the unit direction into the medium (already refracted by the caller's
+ * consistent, as a closed mesh's is; otherwise walks end LOST), x_scale the scale of its triangle
+ * for the ray offset (accel/offset.h; 0: unknown), w the unit direction into the medium (already refracted by the caller's
  * dielectric at the entry); pr traces the object alone. Random numbers come from g (the caller's
  * per-sample stream: deterministic). At each boundary hit the walk reflects with probability
  * F (Fresnel of eta, 1 under total internal reflection) and refracts out otherwise, so the
  * boundary's weight is 1 and the radiance scale eta^2 of entering cancels at the exit. */
-sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, vec3 w, rng *g,
-			 int max_steps);
+sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, float x_scale, vec3 w,
+			 rng *g, int max_steps);
 
 /* A direction about w (unit) whose cosine with w follows Henyey-Greenstein with mean cosine g:
  * cos = (1 + g^2 - ((1 - g^2)/(1 - g + 2 g u1))^2) / (2 g) (the inverse CDF), phi = 2 pi u2. */

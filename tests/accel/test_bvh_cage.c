@@ -2,7 +2,7 @@
  * equal brute force, exactly. */
 #include "check.h"
 #include "brute.h"
-#include "geom/cage.h"
+#include "geom/shapes.h"
 #include "geom/subdiv.h"
 
 int main(void)
@@ -28,6 +28,6 @@ int main(void)
 		CHECK(0, "tessellate the pawn");
 	}
 	diag_free(&d);
-	free(t);
+	test_cage_free(t);
 	return check_done("test_bvh_cage");
 }

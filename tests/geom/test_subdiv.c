@@ -1,79 +1,12 @@
 /* test_subdiv: OpenSubdiv tessellation - counts, limit positions, creases, corners, boundaries,
  * adaptive rates, crack-free output, and levels or memory over the limit refused. */
 #include "check.h"
-#include "geom/cage.h"
+#include "shapes.h"
 #include "geom/subdiv.h"
 
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *path_of(const char *rel)
-{
-	static char buf[4096];
-	const char *top = getenv("top_srcdir");
-	snprintf(buf, sizeof buf, "%s/scenes/assets/opensubdiv_shapes/%s", top ? top : ".", rel);
-	return buf;
-}
-
-typedef struct edge_key {
-	uint32_t a, b;
-} edge_key;
-
-static int edge_cmp(const void *x, const void *y)
-{
-	const edge_key *p = x, *q = y;
-	return p->a != q->a ? (p->a < q->a ? -1 : 1) : p->b != q->b ? (p->b < q->b ? -1 : 1) : 0;
-}
-
-/* Vertices welded by exact position (the UV mode duplicates boundary vertices per face, with
- * identical positions): the id of each vertex is the first of a run of equal positions. */
-static const vec3 *weld_pos;
-static int pos_cmp(const void *x, const void *y)
-{
-	uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
-	int c = memcmp(&weld_pos[a], &weld_pos[b], sizeof(vec3));
-	return c ? c : (a < b ? -1 : a > b);
-}
-
-static uint32_t *weld(const mesh *m)
-{
-	uint32_t n = m->num_vertices, *order = malloc(n * sizeof *order), *id = malloc(n * sizeof *id);
-	for (uint32_t i = 0; i < n; i++)
-		order[i] = i;
-	weld_pos = m->positions;
-	qsort(order, n, sizeof *order, pos_cmp);
-	for (uint32_t i = 0; i < n; i++)
-		id[order[i]] = i > 0 && memcmp(&m->positions[order[i]], &m->positions[order[i - 1]], sizeof(vec3)) == 0
-				       ? id[order[i - 1]]
-				       : order[i];
-	free(order);
-	return id;
-}
-
-/* Edges not shared by exactly two triangles (0 for a closed, crack-free mesh). */
-static long open_edges(const mesh *m)
-{
-	uint32_t *id = weld(m);
-	size_t ne = 3 * (size_t)m->num_triangles;
-	edge_key *e = malloc(ne * sizeof *e);
-	for (uint32_t f = 0; f < m->num_triangles; f++)
-		for (int k = 0; k < 3; k++) {
-			uint32_t a = id[m->indices[3 * f + k]], b = id[m->indices[3 * f + (k + 1) % 3]];
-			e[3 * f + k] = (edge_key){a < b ? a : b, a < b ? b : a};
-		}
-	qsort(e, ne, sizeof *e, edge_cmp);
-	long bad = 0;
-	for (size_t i = 0; i < ne;) {
-		size_t j = i;
-		while (j < ne && edge_cmp(&e[i], &e[j]) == 0)
-			j++;
-		bad += j - i != 2;
-		i = j;
-	}
-	free(e), free(id);
-	return bad;
-}
 
 /* OpenSubdiv's catmark_cube is the cube [-1, 1]^3 turned 45 degrees about z: the largest
  * coordinate of the output in the cube's own axes. */
@@ -134,7 +67,7 @@ static bool tess(const subd_cage *c, int level, mesh *m)
 
 static void check_cube(void)
 {
-	test_cage *t = cage_read(path_of("catmark_cube.obj"));
+	test_cage *t = cage_read(shape_path("catmark_cube.obj"));
 	CHECK(t != NULL, "read the cube");
 	if (!t)
 		return;
@@ -150,9 +83,9 @@ static void check_cube(void)
 	CHECK(open_edges(&m) == 0, "cube level 6 is closed");
 	/* Limit points of the cube [-1, 1]^3 (Catmull-Clark limit masks, Halstead et al. 1993): a
 	 * corner goes halfway to the centre, a face centre to 68/81 along its axis. */
-	vec3 corner = vertex_along(&m, t->pos[0]), face = vertex_along(&m, v3(0, 0, 1));
-	CHECK_NEAR(corner.y, 0.5 * t->pos[0].y, 1e-6);
-	CHECK_NEAR(corner.z, 0.5 * t->pos[0].z, 1e-6);
+	vec3 corner = vertex_along(&m, t->data.positions[0]), face = vertex_along(&m, v3(0, 0, 1));
+	CHECK_NEAR(corner.y, 0.5 * t->data.positions[0].y, 1e-6);
+	CHECK_NEAR(corner.z, 0.5 * t->data.positions[0].z, 1e-6);
 	CHECK_NEAR(face.z, 68.0 / 81.0, 1e-6);
 	CHECK_NEAR(face.x, 0.0, 1e-6);
 	/* Limit normals are unit and outward; at the face centre they are the axis. */
@@ -176,7 +109,7 @@ static void check_cube(void)
 	c.crease_vertices = pairs, c.crease_sharpness = sharp, c.num_creases = (uint32_t)ne;
 	CHECK(tess(&c, 4, &m), "all-sharp cube");
 	CHECK_NEAR(cube_extent(&m), 1.0, 1e-6);
-	CHECK(has_vertex(&m, t->pos[0], 1e-6f), "a sharp corner stays on its cage vertex");
+	CHECK(has_vertex(&m, t->data.positions[0], 1e-6f), "a sharp corner stays on its cage vertex");
 	CHECK(open_edges(&m) == 0, "the sharp cube is closed");
 	mesh_free(&m);
 	/* Semi-sharp creases pull the surface towards the cage, monotonically in sharpness. */
@@ -196,19 +129,19 @@ static void check_cube(void)
 	float cs = 10.0f;
 	c.corner_vertices = &cv, c.corner_sharpness = &cs, c.num_corners = 1;
 	CHECK(tess(&c, 4, &m), "cube with a corner");
-	CHECK(has_vertex(&m, t->pos[0], 1e-6f) && !has_vertex(&m, t->pos[7], 1e-3f), "the corner interpolates vertex 0 only");
+	CHECK(has_vertex(&m, t->data.positions[0], 1e-6f) && !has_vertex(&m, t->data.positions[7], 1e-3f), "the corner interpolates vertex 0 only");
 	mesh_free(&m);
 
 	/* The creased test shape of OpenSubdiv: differs from the smooth cube, stays closed. */
-	test_cage *cr = cage_read(path_of("catmark_cube_creases1.obj"));
+	test_cage *cr = cage_read(shape_path("catmark_cube_creases1.obj"));
 	CHECK(cr && tess(&cr->c, 4, &m), "catmark_cube_creases1");
 	if (cr) {
 		CHECK(cube_extent(&m) > smooth_max + 0.01f, "creases1 is sharper than the smooth cube: %g vs %g", cube_extent(&m), smooth_max);
 		CHECK(open_edges(&m) == 0, "creases1 is closed");
 		mesh_free(&m);
 	}
-	free(cr);
-	free(t);
+	test_cage_free(cr);
+	test_cage_free(t);
 }
 
 /* An open 2x2-quad patch: edge_and_corner interpolates the patch corners, edge_only does not. */
@@ -253,7 +186,7 @@ static void check_loop(void)
 
 static void check_adaptive(void)
 {
-	test_cage *t = cage_read(path_of("catmark_torus.obj"));
+	test_cage *t = cage_read(shape_path("catmark_torus.obj"));
 	CHECK(t != NULL, "read the torus");
 	if (!t)
 		return;
@@ -274,12 +207,12 @@ static void check_adaptive(void)
 	}
 	CHECK(counts[1] < counts[0] / 4, "far torus %u triangles, near %u", counts[1], counts[0]);
 	diag_free(&d);
-	free(t);
+	test_cage_free(t);
 }
 
 static void check_errors(void)
 {
-	test_cage *t = cage_read(path_of("catmark_cube.obj"));
+	test_cage *t = cage_read(shape_path("catmark_cube.obj"));
 	if (!t)
 		return;
 	FILE *log = tmpfile();
@@ -303,7 +236,7 @@ static void check_errors(void)
 	subd_options o = {.level = 1};
 	CHECK(!subd_tessellate(&c, &o, &m, &d, diag_noloc()), "a crease on a non-edge is refused");
 	c = t->c;
-	t->idx[5] = 99;
+	t->data.face_indices[5] = 99;
 	CHECK(!subd_tessellate(&c, &o, &m, &d, diag_noloc()), "an index out of range is refused");
 	CHECK(d.errors == 7, "%d errors reported", d.errors);
 	rewind(log);
@@ -314,7 +247,39 @@ static void check_errors(void)
 	      "messages: %s", text);
 	fclose(log);
 	diag_free(&d);
-	free(t);
+	test_cage_free(t);
+}
+
+/* The topology OpenSubdiv itself refuses (its Create returns null): a vertex of valence 65536, one
+ * over its limit, at the centre of a fan of triangles. Other oddities - an edge of three faces,
+ * a vertex repeated in a face, inconsistent winding - it accepts. */
+static void check_valence_limit(void)
+{
+	enum { N = 65536 };
+	vec3 *p = malloc((N + 1) * sizeof *p);
+	uint32_t *sizes = malloc(N * sizeof *sizes), *idx = malloc(3 * (size_t)N * sizeof *idx);
+	p[0] = v3(0, 0, 0);
+	for (uint32_t i = 0; i < N; i++) {
+		double a = 2 * M_PI * i / N;
+		p[i + 1] = v3((float)cos(a), (float)sin(a), 0);
+		sizes[i] = 3, idx[3 * i] = 0, idx[3 * i + 1] = i + 1, idx[3 * i + 2] = (i + 1) % N + 1;
+	}
+	subd_cage c = {.positions = p, .num_vertices = N + 1, .face_sizes = sizes, .num_faces = N, .face_indices = idx,
+		       .source = "fan.obj"};
+	FILE *log = tmpfile();
+	diag d;
+	diag_init(&d, log);
+	subd_options o = {.level = 1};
+	mesh m;
+	CHECK(!subd_tessellate(&c, &o, &m, &d, diag_noloc()), "a vertex of valence %d is refused", N);
+	rewind(log);
+	char text[1024] = {0};
+	fread(text, 1, sizeof text - 1, log);
+	CHECK(strstr(text, "subdivision surface of 'fan.obj': invalid cage topology") && strstr(text, "valence 65536"),
+	      "message: %s", text);
+	fclose(log);
+	diag_free(&d);
+	free(p), free(sizes), free(idx);
 }
 
 int main(void)
@@ -324,5 +289,6 @@ int main(void)
 	check_loop();
 	check_adaptive();
 	check_errors();
+	check_valence_limit();
 	return check_done("test_subdiv");
 }

@@ -43,6 +43,14 @@ printf 'sphere { 0, 1 scale <1, 2, 1> material { skin {} } }\nsphere { 0, 1 scal
 expect 0 "non-uniform SSS" -- "$CIRCE" check "$tmp/nu.pov"
 grep -q "SSS objects under a non-uniform scale: 1 " "$tmp/out" || { echo "FAIL non-uniform SSS not reported"; fail=1; }
 
+# A subdivision cage from a file: its faces and its tessellation are counted (the cube: 6 quads,
+# 6 * 2 * 4^3 triangles at level 3).
+printf 'subdivision_surface { file "%s" level 3 }\n' \
+	"$srcdir/scenes/assets/opensubdiv_shapes/catmark_cube_creases1.obj" >"$tmp/cage.pov"
+expect 0 "cage file" -- "$CIRCE" check "$tmp/cage.pov"
+grep -q "subdivision cage faces: 6$" "$tmp/out" && grep -q "triangles after tessellation: 768 unique" "$tmp/out" ||
+	{ echo "FAIL cage file summary:"; cat "$tmp/out" "$tmp/err"; fail=1; }
+
 # A large file is mapped and its pages dropped behind the lexer: a validation error found after
 # the parse must still quote its line from the start of the file.
 {

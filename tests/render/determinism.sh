@@ -1,6 +1,7 @@
 #!/bin/sh
 # determinism.sh: the same scene and seed give bit-identical EXRs for 1 and 2 threads, and four
 # --region quarters assembled equal the whole image bit-exactly; another seed gives another image.
+# Every SSS method is deterministic across thread counts too.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/farm.pov"
 enter_workdir
@@ -23,4 +24,18 @@ grep -q '^max_abs: 0 at' out || fail "regions assembled differ from the whole: $
 # shellcheck disable=SC2086
 expect_status 0 "$CIRCE" render "$scene" -o s4.exr $opts --seed 4
 expect_status 1 "$CIRCE" compare s4.exr t1.exr --fail 0
+cat >sss.pov <<'EOS'
+camera { location <0, 1.2, -4> look_at <0, 0.5, 0> angle 50 }
+background { color rgb <0.6, 0.7, 0.8> }
+light_source { <-3, 5, -4> color rgb 2 parallel point_at <0, 0, 0> }
+sphere { <0, 0.6, 0>, 0.6 material { wax { } } }
+box { <0.7, 0, -0.3>, <1.3, 0.6, 0.3> material { skin { } } }
+EOS
+for m in circle fullcircle disk volume; do
+	for t in 1 2; do
+		expect_status 0 "$CIRCE" render sss.pov -o "$m$t.exr" --threads $t --sss $m -W 24 -H 18 --spp 4 --quiet
+	done
+	expect_status 0 "$CIRCE" compare "${m}2.exr" "${m}1.exr" --fail 0
+	grep -q '^max_abs: 0 at' out || fail "--sss $m: 1 and 2 threads differ: $(cat out)"
+done
 pass

@@ -185,7 +185,7 @@ static void check_semi_infinite(const char *name, const double albedo[3], const 
 	stat3 st = {0};
 	long n = test_scaled(200000);
 	for (long i = 0; i < n; i++) {
-		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
 		bool top = res.status == SSS_WALK_EXITED && res.p.z == 0.0f;
 		if (top)
 			CHECK(res.dir.z > 0.0f && fabsf(v3_length(res.dir) - 1.0f) < 1e-5f, "i %ld steps %d p %g %g %g ng %g %g %g exit dir %g %g %g", i, res.steps, res.p.x, res.p.y, res.p.z, res.ng.x, res.ng.y, res.ng.z,
@@ -222,7 +222,7 @@ static void check_energy(const char *name, object *o, vec3 entry, vec3 ng, const
 		v3_basis(ng, &b1, &b2);
 		vec3 w = v3_add(v3_scale(ng, (float)-ct), v3_add(v3_scale(b1, (float)(st_ * cos(2 * PI * u2))),
 								    v3_scale(b2, (float)(st_ * sin(2 * PI * u2)))));
-		sss_walk_result res = sss_walk(&m, &o->pr, entry, ng, w, &r, SSS_WALK_MAX_STEPS);
+		sss_walk_result res = sss_walk(&m, &o->pr, entry, ng, 0.0f, w, &r, SSS_WALK_MAX_STEPS);
 		if (grey && res.status == SSS_WALK_EXITED)
 			CHECK(fabsf(res.weight.x - 1.0f) < 1e-4f, "%s: grey weight %g", name, res.weight.x);
 		refl += res.reflections;
@@ -252,7 +252,7 @@ static void check_beer_lambert(void)
 	stat3 st = {0};
 	long n = test_scaled(100000);
 	for (long i = 0; i < n; i++) {
-		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), w, &r, SSS_WALK_MAX_STEPS);
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, w, &r, SSS_WALK_MAX_STEPS);
 		bool bottom = res.status == SSS_WALK_EXITED && res.p.z == (float)-thick;
 		if (res.status == SSS_WALK_EXITED)
 			CHECK(bottom && v3_length(v3_sub(res.dir, w)) < 1e-5f, "exit at z %g, dir %g %g %g", res.p.z,
@@ -277,7 +277,7 @@ static void check_failures(void)
 	rng_seed(&r, 19, 5);
 	long limit = 0;
 	for (int i = 0; i < 1000; i++) {
-		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(0, 0, -1), &r, 5);
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r, 5);
 		CHECK(res.steps <= 5 && (res.status == SSS_WALK_EXITED || res.status == SSS_WALK_STEP_LIMIT),
 		      "steps %d, status %d", res.steps, res.status);
 		if (res.status == SSS_WALK_STEP_LIMIT) {
@@ -288,9 +288,9 @@ static void check_failures(void)
 	}
 	printf("step bound 5 in a 100 mean-free-path box: %ld of 1000 walks reported STEP_LIMIT\n", limit);
 	CHECK(limit > 500, "only %ld walks reached the bound", limit);
-	sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(NAN, 0, -1), &r, 5);
+	sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), 0.0f, v3(NAN, 0, -1), &r, 5);
 	CHECK(res.status == SSS_WALK_BAD_INPUT && res.weight.x == 0.0f, "NaN direction: status %d", res.status);
-	res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), v3(0, 0, -1), &r, 0);
+	res = sss_walk(&m, &o.pr, v3(0, 0, 5), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r, 0);
 	CHECK(res.status == SSS_WALK_BAD_INPUT, "max_steps 0: status %d", res.status);
 	object_free(&o);
 
@@ -299,7 +299,7 @@ static void check_failures(void)
 	object_init(&o);
 	long lost = 0;
 	for (int i = 0; i < 100; i++) {
-		res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
+		res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
 		lost += res.status == SSS_WALK_LOST;
 		CHECK(res.status == SSS_WALK_LOST || res.status == SSS_WALK_EXITED, "open mesh: status %d", res.status);
 		CHECK(v3_is_finite(res.weight), "non-finite weight");
@@ -315,7 +315,7 @@ static void check_failures(void)
 			for (int e = 0; e < 2; e++) {
 				sss_walk_medium mm = {{coef[a], coef[b], 0}, {coef[b], 0, coef[a]}, 0.3, e ? 3.0 : 1.0};
 				for (int i = 0; i < 20; i++) {
-					res = sss_walk(&mm, &o.pr, v3(0, 0, 1), v3(0, 0, 1), v3(0.6f, 0, -0.8f), &r,
+					res = sss_walk(&mm, &o.pr, v3(0, 0, 1), v3(0, 0, 1), 0.0f, v3(0.6f, 0, -0.8f), &r,
 						       SSS_WALK_MAX_STEPS);
 					CHECK(v3_is_finite(res.weight) && v3_min_comp(res.weight) >= 0.0f,
 					      "coef %g %g eta %d: weight %g %g %g", coef[a], coef[b], e, res.weight.x,
