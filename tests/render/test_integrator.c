@@ -88,7 +88,7 @@ static void test_furnace(int spp)
 	const char *names[3] = {"furnace albedo 1, BSDF", "furnace albedo 1, MIS", "furnace albedo 1, light"};
 	for (int m = 0; m < 3; m++) {
 		s.mat[0] = bsdf_diffuse(v3s(1));
-		render_image(&s, &c, (render_settings){5, modes[m]}, spp, &im);
+		render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = modes[m]}, spp, &im);
 		expect_image(names[m], &im, 1.0, 0.01);
 		if (modes[m] == RENDER_BSDF_ONLY) /* importance-sampled paths: 1 everywhere, no noise */
 			for (int i = 0; i < im.w * im.h; i++)
@@ -97,11 +97,11 @@ static void test_furnace(int spp)
 	}
 	/* A convex object sees only the sky: albedo 0.5 shows exactly 0.5 (every pixel is on it). */
 	s.mat[0] = bsdf_diffuse(v3s(0.5f));
-	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = RENDER_MIS}, spp, &im);
 	expect_image("furnace albedo 0.5, MIS", &im, 0.5, 0.01);
 	/* The coat over a white interior never creates energy: at most 1. */
 	s.mat[0] = bsdf_coat(v3s(1), 1.4f, 0.3f);
-	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = RENDER_MIS}, spp, &im);
 	double m = image_mean(&im);
 	CHECK(m <= 1.0 + 0.01 && m > 0.8, "coat in the furnace: %g", m);
 	light_set_free(&s.lights);
@@ -123,7 +123,7 @@ static void test_closed_box(int spp)
 	light_set_finish(&s.lights, 2.0f);
 	cam c = make_cam(v3(0.1f, 0.2f, -0.3f), v3(0.5f, 0.1f, 1), 90, 8, 8);
 	static image im;
-	render_image(&s, &c, (render_settings){200, RENDER_MIS}, spp, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 200, .mode = RENDER_MIS}, spp, &im);
 	expect_image("closed emissive box, a = 0.5: Le / (1 - a)", &im, 2.0, 0.01);
 	light_set_free(&s.lights);
 }
@@ -139,7 +139,7 @@ static void test_point_light(void)
 	light_set_finish(&s.lights, 10.0f);
 	cam c = make_cam(v3(0, 3, -3), v3(0, 0, 0), 0.01f, 1, 1);
 	static image im;
-	render_image(&s, &c, (render_settings){1, RENDER_MIS}, 4, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 1, .mode = RENDER_MIS}, 4, &im);
 	/* At the origin: d^2 = 5, cos = 2 / sqrt(5); L = (a / pi) I cos / d^2. */
 	double want = 0.5 / M_PI * 8 * (2 / sqrt(5.0)) / 5;
 	CHECK_NEAR(im.mean[0], want, 1e-3 * want);
@@ -183,7 +183,7 @@ static void render_three(const ts_scene *s, const cam *c, int max_level, int spp
 {
 	const render_mode modes[3] = {RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY, RENDER_MIS};
 	for (int m = 0; m < 3; m++)
-		render_image(s, c, (render_settings){max_level, modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
+		render_image(s, c, (render_settings){.max_trace_level = max_level, .mode = modes[m]}, m == 1 ? 4 * spp : spp, &im[m]);
 	compare_strategies(im);
 }
 
@@ -228,7 +228,7 @@ static void test_envmap(int spp)
 	light_set_finish(&s.lights, 2.0f);
 	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6);
 	static image im[3];
-	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im[0]);
+	render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = RENDER_MIS}, spp, &im[0]);
 	expect_image("furnace under a constant environment map", &im[0], 1.0, 0.01);
 
 	for (int i = 0; i < EW * EH; i++) { /* a sky gradient and a small sun */
@@ -276,10 +276,10 @@ static void test_shade_hook(int spp)
 	cam c = make_cam(v3(0, 0, -3), v3(0, 0, 0), 24, 6, 6);
 	static image im;
 	shade_mode = 0;
-	render_image(&s, &c, (render_settings){5, RENDER_BSDF_ONLY}, 16, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = RENDER_BSDF_ONLY}, 16, &im);
 	expect_image("shade() sets albedo 0.5", &im, 0.5, 0.01);
 	shade_mode = 1;
-	render_image(&s, &c, (render_settings){5, RENDER_MIS}, spp, &im);
+	render_image(&s, &c, (render_settings){.max_trace_level = 5, .mode = RENDER_MIS}, spp, &im);
 	int dark = 0;
 	for (int i = 0; i < im.w * im.h; i++)
 		dark += !(im.mean[i] > 0.2);
