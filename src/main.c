@@ -563,8 +563,9 @@ static int cmd_render(int argc, char **argv)
 				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
 				(unsigned long long)stats.dropped, parse_s, build_s, w.stats.triangles, stats.seconds);
 		if (!o.quiet && stats.sss_searches)
-			fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g), "
-					"%llu with more hits than kept\n",
+			fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g: circles or "
+					"probes that hit nothing, walks lost or at their step bound), %llu with more hits than "
+					"kept\n",
 				(unsigned long long)stats.sss_searches, (unsigned long long)stats.sss_nohit,
 				(double)stats.sss_nohit / (double)stats.sss_searches,
 				(unsigned long long)stats.sss_overflow);
