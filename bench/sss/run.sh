@@ -123,7 +123,7 @@ render() {
 	t1=$(now)
 	r_wall=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.4f", b - a }')
 	r_seconds=$(sed -n 's/.*, render \([0-9.e+-]*\) s$/\1/p' "$7" | tail -1)
-	r_nohit=$(sed -n 's/.*no-hit rate \([0-9.e+-]*\)).*/\1/p' "$7" | tail -1)
+	r_nohit=$(sed -n 's/.*no-hit rate \([0-9.e+-]*\)[):].*/\1/p' "$7" | tail -1)
 	r_dropped=$(sed -n 's/.*; \([0-9]*\) non-finite samples dropped$/\1/p' "$7" | tail -1)
 	r_spp=$(sed -n 's/.*: \([0-9]*\) samples per pixel in .*/\1/p' "$7" | tail -1)
 	[ -n "$r_seconds" ] || r_seconds=NA
