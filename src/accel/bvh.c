@@ -1,7 +1,7 @@
 /* bvh.c - binned-SAH build of a binary BVH, collapsed into a 4-wide one, and its ray and circle
  * traversals. A 4-wide node holds its children's boxes as struct-of-arrays, so one SSE register
- * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into an array of triangle
- * copies (three vertices and the id, 40 bytes) in leaf order. */
+ * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into groups of up to four
+ * triangles stored pre-transposed, so one SSE register holds a coordinate of four triangles. */
 #include "accel/bvh.h"
 
 #include "base/mem.h"
@@ -21,21 +21,34 @@
 /* Relative slack of the circle/box test, against float rounding of box and circle data. */
 #define BVH_CIRCLE_SLACK 1e-5f
 
-typedef struct bvh_tri {
-	vec3 v0, v1, v2;
-	uint32_t id;
-} bvh_tri;
+/* The leaves' triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m
+ * triangles (1 to 4) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then
+ * the ids, so one unaligned load gives one coordinate of all m triangles (lanes past m read the
+ * next array and are masked off). A leaf of n triangles from triangle f is groups of four and a
+ * last one of the rest; group g starts at word GROUP_WORDS * (f + 4 g). 40 bytes a triangle, and
+ * no transposes when a ray visits. */
+typedef union bvh_word {
+	float f;
+	uint32_t u;
+} bvh_word;
+#define GROUP_WORDS 10
+/* Words after the last group: the last coordinate array of a group of one is loaded 16 bytes wide,
+ * three words past its end. */
+#define LEAF_PAD_WORDS 4
 
 /* A 4-wide node, 112 bytes: b[plane][child] with planes lo x, lo y, lo z, hi x, hi y, hi z. A child
- * is an inner node's index, BVH4_LEAF | its first triangle, or BVH4_EMPTY (then its box is empty,
- * lo = +inf and hi = -inf, and no ray or circle test passes it). A leaf runs from its first
- * triangle to the one whose id carries BVH_TRI_LAST. */
+ * is an inner node's index, a leaf (BVH4_LEAF | (count - 1) << BVH4_COUNT_SHIFT | first triangle),
+ * or BVH4_EMPTY (then its box is empty, lo = +inf and hi = -inf, and no ray or circle test passes
+ * it). */
 typedef struct bvh4_node {
 	float b[6][4];
 	uint32_t child[4];
 } bvh4_node;
-#define BVH_TRI_LAST 0x80000000u
 #define BVH4_LEAF 0x80000000u
+#define BVH4_COUNT_SHIFT 27
+#define BVH4_FIRST_MASK ((1u << BVH4_COUNT_SHIFT) - 1)
+/* Leaves of the binary tree have at most BVH_MAX_LEAF triangles: four bits of count suffice. */
+_Static_assert(BVH_MAX_LEAF <= 16, "a leaf's count must fit its four bits");
 #define BVH4_EMPTY 0xffffffffu
 /* Entries of a traversal stack: a visit pushes at most three. */
 #define BVH4_STACK (3 * BVH_MAX_DEPTH + 4)
@@ -43,7 +56,7 @@ typedef struct bvh4_node {
 struct bvh {
 	bvh4_node *nodes; /* node 0 is the root */
 	uint32_t num_nodes;
-	bvh_tri *tris;
+	bvh_word *leaf; /* triangle groups in leaf order, then LEAF_PAD_WORDS */
 	uint32_t num_tris;
 	vec3 lo, hi; /* bounds of all triangles */
 };
@@ -107,6 +120,9 @@ static inline __m128i bins_of(__m128 c, __m128 cmin, __m128 scale, __m128 last_b
 	f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), last_bin);
 	return _mm_cvttps_epi32(f);
 }
+
+/* The smallest k with 2^k >= n, for n >= 1. */
+static uint32_t ceil_log2(uint32_t n) { return n <= 1 ? 0 : 32 - (uint32_t)__builtin_clz(n - 1); }
 
 static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 {
@@ -254,14 +270,19 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 		nd->lo[0] = blo.x, nd->lo[1] = blo.y, nd->lo[2] = blo.z;
 		nd->hi[0] = bhi.x, nd->hi[1] = bhi.y, nd->hi[2] = bhi.z;
 		uint32_t count = tk.end - tk.begin;
-		if (count == 1 || tk.depth >= BVH_MAX_DEPTH - 1) {
+		if (count == 1) {
 			make_leaf(nd, tk.begin, count);
 			continue;
 		}
 		split s = {0};
 		uint32_t left = used;
 		build_task l, r;
-		if (find_split(refs, &tk, &s)) {
+		if (tk.depth + ceil_log2(count) >= BVH_MAX_DEPTH - 1) {
+			/* Near the depth limit (a degenerate distribution): halving takes ceil_log2(count)
+			 * more levels to single refs, so the tree stays within the limit and every leaf
+			 * within BVH_MAX_LEAF. */
+			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
+		} else if (find_split(refs, &tk, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
@@ -288,8 +309,8 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 /* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
  * two children and keeps opening the inner one of largest area until it has four (Wald et al.
  * 2008, "Getting Rid of Packets", section 3). Every 4-wide node consumes at least one binary
- * inner node, so there are at most max(1, inner) of them. Marks the last triangle of each leaf. */
-static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_node **out, uint32_t *num_out)
+ * inner node, so there are at most max(1, inner) of them. */
+static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uint32_t *num_out)
 {
 	uint32_t cap = num_bin / 2 + 1;
 	bvh4_node *nodes = mem_alloc(cap, sizeof *nodes);
@@ -336,8 +357,7 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 				src[used] = slot[k];
 				nd->child[k] = used++;
 			} else {
-				nd->child[k] = BVH4_LEAF | c->first;
-				tris[c->first + c->count - 1].id |= BVH_TRI_LAST;
+				nd->child[k] = BVH4_LEAF | (c->count - 1) << BVH4_COUNT_SHIFT | c->first;
 			}
 		}
 	}
@@ -348,14 +368,33 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 	return true;
 }
 
+/* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle keep[perm[i]]. */
+static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
+		       const uint32_t *keep, const uint32_t *perm)
+{
+	uint32_t first = ref & BVH4_FIRST_MASK, count = (ref >> BVH4_COUNT_SHIFT & 15) + 1;
+	for (uint32_t g = 0; g < count; g += 4) {
+		uint32_t m = count - g < 4 ? count - g : 4;
+		bvh_word *w = &leaf[GROUP_WORDS * (size_t)(first + g)];
+		for (uint32_t j = 0; j < m; j++) {
+			uint32_t f = keep[perm[first + g + j]];
+			for (int k = 0; k < 3; k++) {
+				vec3 p = positions[indices[3 * (size_t)f + k]];
+				w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
+			}
+			w[9 * m + j].u = f;
+		}
+	}
+}
+
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles)
 {
 	for (size_t i = 0; i < 3 * (size_t)num_triangles; i++)
 		if (indices[i] >= num_vertices)
 			return NULL;
-	/* Leaf references and triangle ids keep their top bit for flags. */
-	if (num_triangles >= BVH4_LEAF)
+	/* A leaf reference holds its first triangle in BVH4_COUNT_SHIFT bits. */
+	if (num_triangles > BVH4_FIRST_MASK)
 		return NULL;
 	bvh *b = mem_calloc(1, sizeof *b);
 	uint32_t *keep = mem_alloc(num_triangles, sizeof *keep);
@@ -380,18 +419,17 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
-		/* One entry of padding: the four-wide triangle test loads 8 bytes past a triangle. */
-		b->tris = mem_calloc((size_t)n + 1, sizeof *b->tris);
-		ok = b->tris != NULL;
+		b->leaf = mem_calloc(GROUP_WORDS * (size_t)n + LEAF_PAD_WORDS, sizeof *b->leaf);
+		ok = b->leaf && collapse(bin, num_bin, &b->nodes, &b->num_nodes);
 	}
 	if (ok && n > 0) {
-		for (uint32_t i = 0; i < n; i++) {
-			uint32_t f = keep[perm[i]];
-			const uint32_t *ix = indices + 3 * f;
-			b->tris[i] = (bvh_tri){positions[ix[0]], positions[ix[1]], positions[ix[2]], f};
-		}
+		for (uint32_t i = 0; i < b->num_nodes; i++)
+			for (int k = 0; k < 4; k++) {
+				uint32_t ref = b->nodes[i].child[k];
+				if ((ref & BVH4_LEAF) && ref != BVH4_EMPTY)
+					write_leaf(b->leaf, ref, positions, indices, keep, perm);
+			}
 		b->num_tris = n;
-		ok = collapse(bin, num_bin, b->tris, &b->nodes, &b->num_nodes);
 	}
 	mem_free(keep), mem_free(lo), mem_free(hi), mem_free(perm), mem_free(bin);
 	if (!ok) {
@@ -406,7 +444,7 @@ void bvh_free(bvh *b)
 	if (!b)
 		return;
 	mem_free(b->nodes);
-	mem_free(b->tris);
+	mem_free(b->leaf);
 	mem_free(b);
 }
 
@@ -421,7 +459,7 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 size_t bvh_bytes(const bvh *b)
 {
 	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) +
-	       (b->num_tris ? (size_t)b->num_tris + 1 : 0) * sizeof(bvh_tri);
+	       (b->num_tris ? GROUP_WORDS * (size_t)b->num_tris + LEAF_PAD_WORDS : 0) * sizeof(bvh_word);
 }
 
 uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
@@ -529,28 +567,37 @@ static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
 	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
 }
 
-/* Triangles tr[0, n), n in 1..4; the triangle array has one entry of padding after its end, so the
- * 16-byte loads below stay inside it. */
-static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, float tlimit, int *hit_mask,
-				 float t[4], float u[4], float v[4])
+/* Forced inlining: the leaf tests are called from two traversals each, and gcc -O2 would
+ * otherwise keep them out of line and pass their results through memory. */
+#define BVH_INLINE static inline __attribute__((always_inline))
+
+/* A leaf group (bvh_word): m triangles from word w. */
+BVH_INLINE __m128 group_lanes(int m)
 {
-	const float *p[4];
-	for (int j = 0; j < 4; j++)
-		p[j] = (const float *)&tr[j < n ? j : 0];
-	__m128 a0 = _mm_loadu_ps(p[0]), a1 = _mm_loadu_ps(p[1]), a2 = _mm_loadu_ps(p[2]), a3 = _mm_loadu_ps(p[3]);
-	__m128 b0 = _mm_loadu_ps(p[0] + 4), b1 = _mm_loadu_ps(p[1] + 4), b2 = _mm_loadu_ps(p[2] + 4),
-	       b3 = _mm_loadu_ps(p[3] + 4);
-	__m128 c0 = _mm_loadu_ps(p[0] + 8), c1 = _mm_loadu_ps(p[1] + 8), c2 = _mm_loadu_ps(p[2] + 8),
-	       c3 = _mm_loadu_ps(p[3] + 8);
-	_MM_TRANSPOSE4_PS(a0, a1, a2, a3); /* v0 x y z, v1 x */
-	_MM_TRANSPOSE4_PS(b0, b1, b2, b3); /* v1 y z, v2 x y */
-	/* v2 z: the first word of each c. */
-	__m128 c01 = _mm_unpacklo_ps(c0, c1), c23 = _mm_unpacklo_ps(c2, c3);
-	__m128 v2z = _mm_movelh_ps(c01, c23);
+	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(m)));
+}
+/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of the group, lanes past m zero. */
+BVH_INLINE __m128 group_load(const bvh_word *w, int m, int a, __m128 lanes)
+{
+	return _mm_and_ps(_mm_loadu_ps(&w[a * m].f), lanes);
+}
+BVH_INLINE vec3 group_vertex(const bvh_word *w, int m, int j, int vertex)
+{
+	return v3(w[(3 * vertex) * m + j].f, w[(3 * vertex + 1) * m + j].f, w[(3 * vertex + 2) * m + j].f);
+}
+BVH_INLINE uint32_t group_id(const bvh_word *w, int m, int j) { return w[9 * m + j].u; }
+
+/* The group of m triangles at w; lanes past m are zero and never reported. */
+BVH_INLINE int tri4_intersect(const tri_ray4 *q, const bvh_word *w, int m, float tlimit, int *hit_mask,
+			      float t[4], float u[4], float v[4])
+{
+	__m128 in = group_lanes(m);
 	__m128 A[3], B[3], C[3];
-	A[0] = _mm_sub_ps(a0, q->org[0]), A[1] = _mm_sub_ps(a1, q->org[1]), A[2] = _mm_sub_ps(a2, q->org[2]);
-	B[0] = _mm_sub_ps(a3, q->org[0]), B[1] = _mm_sub_ps(b0, q->org[1]), B[2] = _mm_sub_ps(b1, q->org[2]);
-	C[0] = _mm_sub_ps(b2, q->org[0]), C[1] = _mm_sub_ps(b3, q->org[1]), C[2] = _mm_sub_ps(v2z, q->org[2]);
+	for (int i = 0; i < 3; i++) {
+		A[i] = _mm_sub_ps(group_load(w, m, i, in), q->org[i]);
+		B[i] = _mm_sub_ps(group_load(w, m, 3 + i, in), q->org[i]);
+		C[i] = _mm_sub_ps(group_load(w, m, 6 + i, in), q->org[i]);
+	}
 	__m128 Az = A[q->kz], Bz = B[q->kz], Cz = C[q->kz];
 	__m128 Ax = _mm_sub_ps(A[q->kx], _mm_mul_ps(q->sx, Az)), Ay = _mm_sub_ps(A[q->ky], _mm_mul_ps(q->sy, Az));
 	__m128 Bx = _mm_sub_ps(B[q->kx], _mm_mul_ps(q->sx, Bz)), By = _mm_sub_ps(B[q->ky], _mm_mul_ps(q->sy, Bz));
@@ -559,7 +606,7 @@ static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, fl
 	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
 	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
 	const __m128 zero = _mm_setzero_ps();
-	int lanes = (1 << n) - 1;
+	int lanes = (1 << m) - 1;
 	int scalar = _mm_movemask_ps(_mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)),
 					       _mm_cmpeq_ps(W, zero))) & lanes;
 	__m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
@@ -579,15 +626,12 @@ static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, fl
 	return scalar;
 }
 
-#define LEAF_END(tr) (((tr)->id & BVH_TRI_LAST) != 0)
-
-/* How many of the leaf's triangles from tr on to test together: up to four. */
-static inline int leaf_run(const bvh_tri *tr)
+/* A leaf reference's triangles: the first, and how many. */
+static inline uint32_t leaf_first(uint32_t ref) { return ref & BVH4_FIRST_MASK; }
+static inline uint32_t leaf_count(uint32_t ref) { return (ref >> BVH4_COUNT_SHIFT & 15) + 1; }
+static inline const bvh_word *leaf_group(const bvh *b, uint32_t ref, uint32_t g)
 {
-	int n = 1;
-	while (n < 4 && !LEAF_END(&tr[n - 1]))
-		n++;
-	return n;
+	return &b->leaf[GROUP_WORDS * (size_t)(leaf_first(ref) + g)];
 }
 
 bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
@@ -647,19 +691,21 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 				continue;
 			}
 		} else {
-			/* Four triangles at a time; the hits are then taken in leaf order, as the loop
-			 * over triangles with tri_intersect takes them. */
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;;) {
-				int n = leaf_run(tr);
+			/* A group at a time. A hit is taken when closer, or as close with a lower id:
+			 * the tie rule of the loop over all triangles, whatever the order of visits. */
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
 				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, tr, n, *tlimit, &hm, t4, u4, v4);
+				int hm, sc = tri4_intersect(&q4, w, m, *tlimit, &hm, t4, u4, v4);
 				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
 					int j = lowest_bit(todo);
 					float t = t4[j], u = u4[j], v = v4[j];
-					bool h = sc >> j & 1 ? tri_intersect(r, tr[j].v0, tr[j].v1, tr[j].v2, *tlimit, &t, &u, &v)
+					bool h = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+									     group_vertex(w, m, j, 2), *tlimit, &t, &u, &v)
 							     : t <= *tlimit;
-					uint32_t id = tr[j].id & ~BVH_TRI_LAST;
+					uint32_t id = group_id(w, m, j);
 					if (h && (t < *tlimit || id < best_id)) {
 						*tlimit = t;
 						best_id = id;
@@ -667,9 +713,6 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 						found = true;
 					}
 				}
-				if (LEAF_END(&tr[n - 1]))
-					break;
-				tr += n;
 			}
 		}
 		/* Pop the next entry that can still hold a hit no farther than the best. */
@@ -708,22 +751,21 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 				continue;
 			}
 		} else {
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;;) {
-				int n = leaf_run(tr);
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
 				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, tr, n, r->tmax, &hm, t4, u4, v4);
+				int hm, sc = tri4_intersect(&q4, w, m, r->tmax, &hm, t4, u4, v4);
 				if (hm)
 					return true;
 				for (; sc != 0; sc &= sc - 1) {
-					const bvh_tri *s1 = &tr[lowest_bit(sc)];
+					int j = lowest_bit(sc);
 					float t, u, v;
-					if (tri_intersect(r, s1->v0, s1->v1, s1->v2, r->tmax, &t, &u, &v))
+					if (tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+							  group_vertex(w, m, j, 2), r->tmax, &t, &u, &v))
 						return true;
 				}
-				if (LEAF_END(&tr[n - 1]))
-					break;
-				tr += n;
 			}
 		}
 		if (sp == 0)
@@ -885,18 +927,21 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 				continue;
 			}
 		} else {
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;; tr++) {
-				tri_circle_hit h[2];
-				int nh = tri_circle_intersect(q, tr->v0, tr->v1, tr->v2, h);
-				for (int k = 0; k < nh; k++, total++) {
-					if (total < max_hits) {
-						hits[total] = h[k];
-						hits[total].prim = tr->id & ~BVH_TRI_LAST;
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
+				for (int j = 0; j < m; j++) {
+					tri_circle_hit h[2];
+					int nh = tri_circle_intersect(q, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+								      group_vertex(w, m, j, 2), h);
+					for (int k = 0; k < nh; k++, total++) {
+						if (total < max_hits) {
+							hits[total] = h[k];
+							hits[total].prim = group_id(w, m, j);
+						}
 					}
 				}
-				if (LEAF_END(tr))
-					break;
 			}
 		}
 		if (sp == 0)

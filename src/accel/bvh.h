@@ -30,8 +30,8 @@ typedef struct bvh_hit {
 	uint32_t prim, inst;
 } bvh_hit;
 
-/* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out or an index
- * is out of range (num_vertices bounds them). An empty mesh gives a valid bvh that hits nothing. */
+/* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out, an index
+ * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh gives a valid bvh that hits nothing. */
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles);
 void bvh_free(bvh *b);
@@ -75,7 +75,7 @@ typedef struct bvh_node {
 	uint32_t count; /* leaf: number of primitives (> 0); inner: BVH_INNER | split axis */
 } bvh_node;
 #define BVH_INNER 0x80000000u
-/* Max primitives in a leaf when SAH prefers it; leaves exceed it only at max depth. */
+/* Max primitives in a leaf (SAH decides below it). */
 #define BVH_MAX_LEAF 8
 /* Max depth of a tree: traversal stacks hold this many entries. */
 #define BVH_MAX_DEPTH 62
