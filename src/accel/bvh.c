@@ -555,13 +555,14 @@ typedef struct stack_entry {
  * Returns the lanes that hit with t in [tmin, tlimit] (bits below n only) in *hit_mask and those
  * left to the scalar test in the result; t, u, v receive the lanes' values. */
 typedef struct tri_ray4 {
-	__m128 org[3], sx, sy, sz, tmin;
+	__m128 ox, oy, oz, sx, sy, sz, tmin; /* the origin in the ray's axis order kx, ky, kz */
 	int kx, ky, kz;
 } tri_ray4;
 
 static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
 {
-	q->org[0] = _mm_set1_ps(r->org.x), q->org[1] = _mm_set1_ps(r->org.y), q->org[2] = _mm_set1_ps(r->org.z);
+	q->ox = _mm_set1_ps(v3_get(r->org, r->kx)), q->oy = _mm_set1_ps(v3_get(r->org, r->ky));
+	q->oz = _mm_set1_ps(v3_get(r->org, r->kz));
 	q->sx = _mm_set1_ps(r->sx), q->sy = _mm_set1_ps(r->sy), q->sz = _mm_set1_ps(r->sz);
 	q->tmin = _mm_set1_ps(r->tmin);
 	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
@@ -592,16 +593,17 @@ BVH_INLINE int tri4_intersect(const tri_ray4 *q, const bvh_word *w, int m, float
 			      float t[4], float u[4], float v[4])
 {
 	__m128 in = group_lanes(m);
-	__m128 A[3], B[3], C[3];
-	for (int i = 0; i < 3; i++) {
-		A[i] = _mm_sub_ps(group_load(w, m, i, in), q->org[i]);
-		B[i] = _mm_sub_ps(group_load(w, m, 3 + i, in), q->org[i]);
-		C[i] = _mm_sub_ps(group_load(w, m, 6 + i, in), q->org[i]);
-	}
-	__m128 Az = A[q->kz], Bz = B[q->kz], Cz = C[q->kz];
-	__m128 Ax = _mm_sub_ps(A[q->kx], _mm_mul_ps(q->sx, Az)), Ay = _mm_sub_ps(A[q->ky], _mm_mul_ps(q->sy, Az));
-	__m128 Bx = _mm_sub_ps(B[q->kx], _mm_mul_ps(q->sx, Bz)), By = _mm_sub_ps(B[q->ky], _mm_mul_ps(q->sy, Bz));
-	__m128 Cx = _mm_sub_ps(C[q->kx], _mm_mul_ps(q->sx, Cz)), Cy = _mm_sub_ps(C[q->ky], _mm_mul_ps(q->sy, Cz));
+	/* The coordinate arrays are picked in the ray's axis order as they are loaded, so the
+	 * permutation costs no shuffles (and no trip through memory). */
+	__m128 Az = _mm_sub_ps(group_load(w, m, q->kz, in), q->oz);
+	__m128 Bz = _mm_sub_ps(group_load(w, m, 3 + q->kz, in), q->oz);
+	__m128 Cz = _mm_sub_ps(group_load(w, m, 6 + q->kz, in), q->oz);
+	__m128 Ax = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->kx, in), q->ox), _mm_mul_ps(q->sx, Az));
+	__m128 Ay = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->ky, in), q->oy), _mm_mul_ps(q->sy, Az));
+	__m128 Bx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Bz));
+	__m128 By = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Bz));
+	__m128 Cx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Cz));
+	__m128 Cy = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Cz));
 	__m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
 	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
 	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
