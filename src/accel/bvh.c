@@ -11,9 +11,15 @@
 
 /* SAH: the costs of a node visit (two box tests) and of a triangle test. Their ratio sets the
  * leaf size, hence speed against memory (bench/README.md). */
+#ifndef SAH_TRAVERSAL_COST
 #define SAH_TRAVERSAL_COST 2.0f
+#endif
+#ifndef SAH_INTERSECTION_COST
 #define SAH_INTERSECTION_COST 1.0f
+#endif
 #define SAH_BINS 16
+/* Triangles a leaf test takes at once (a group, bvh_word): SAH prices a leaf by its groups. */
+#define BVH_LEAF_BLOCK 4
 /* Slack of the slab test's far distance: 1 + 2 gamma(3) of Ize 2013 ("Robust BVH Ray
  * Traversal") covers the rounding of the box distances; we take ten times that, because the
  * triangle test's t carries rounding too and a box must never cull a hit the brute force finds. */
@@ -139,13 +145,17 @@ typedef struct split {
  * (or none exists). Small nodes get fewer bins (twice their count): most nodes are small, and
  * clearing and sweeping 16 bins would cost them more than their refs do. Costs are compared
  * multiplied by the node's area, which saves a division per candidate. */
-static bool find_split(const build_ref *refs, const build_task *tk, split *out)
+/* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
+ * primitives one test takes at once. */
+static inline uint32_t blocks(uint32_t block, uint32_t count) { return (count + block - 1) / block; }
+
+static bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
 {
 	uint32_t count = tk->end - tk->begin;
 	float node_area = half_area4(tk->lo, tk->hi);
 	/* The leaf, and the inner node: SAH_TRAVERSAL_COST + SAH_INTERSECTION_COST * sum / node_area
 	 * < best exactly when sum < best_sum. */
-	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY;
+	float best = count <= BVH_MAX_LEAF ? (float)blocks(block, count) * SAH_INTERSECTION_COST : INFINITY;
 	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
 	bool found = false;
 	int nb = count < SAH_BINS / 2 ? 2 * (int)count : SAH_BINS;
@@ -178,14 +188,14 @@ static bool find_split(const build_ref *refs, const build_task *tk, split *out)
 		uint32_t n = 0;
 		for (int i = nb - 1; i > 0; i--) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			right_cost[i] = n ? half_area4(lo, hi) * (float)n : 0.0f;
+			right_cost[i] = n ? half_area4(lo, hi) * (float)blocks(block, n) : 0.0f;
 		}
 		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
 		for (int i = 0; i < nb - 1; i++) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
 			if (n == 0 || n == count)
 				continue;
-			float sum = half_area4(lo, hi) * (float)n + right_cost[i + 1];
+			float sum = half_area4(lo, hi) * (float)blocks(block, n) + right_cost[i + 1];
 			if (sum < best_sum) {
 				best_sum = sum, out->axis = ax, out->bin = i + 1;
 				found = true;
@@ -238,7 +248,7 @@ static uint32_t partition(build_ref *refs, const build_task *tk, const split *s,
 	return i;
 }
 
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes_out,
+bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes_out,
 		     uint32_t *num_nodes, uint32_t *perm)
 {
 	*nodes_out = NULL, *num_nodes = 0;
@@ -282,7 +292,7 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 			 * more levels to single refs, so the tree stays within the limit and every leaf
 			 * within BVH_MAX_LEAF. */
 			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
-		} else if (find_split(refs, &tk, &s)) {
+		} else if (find_split(refs, &tk, leaf_block, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
@@ -309,7 +319,9 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 /* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
  * two children and keeps opening the inner one of largest area until it has four (Wald et al.
  * 2008, "Getting Rid of Packets", section 3). Every 4-wide node consumes at least one binary
- * inner node, so there are at most max(1, inner) of them. */
+ * inner node, so there are at most max(1, inner) of them. Nodes are laid out depth first (a
+ * node's children side by side, then the first child's subtree): a ray's next node is more often
+ * in a cache line it already fetched than in breadth-first order. */
 static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uint32_t *num_out)
 {
 	uint32_t cap = num_bin / 2 + 1;
@@ -321,7 +333,11 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 	}
 	uint32_t used = 1;
 	src[0] = 0;
-	for (uint32_t i = 0; i < used; i++) {
+	uint32_t todo[BVH4_STACK];
+	int sp = 0;
+	todo[sp++] = 0;
+	while (sp > 0) {
+		uint32_t i = todo[--sp];
 		const bvh_node *s = &bin[src[i]];
 		uint32_t slot[4], n = 0;
 		if (s->count & BVH_INNER)
@@ -343,6 +359,7 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 			slot[open] = c0, slot[n++] = c0 + 1;
 		}
 		bvh4_node *nd = &nodes[i];
+		int pushed = sp;
 		for (uint32_t k = 0; k < 4; k++) {
 			if (k >= n) {
 				for (int p = 0; p < 3; p++)
@@ -355,10 +372,16 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 				nd->b[p][k] = c->lo[p], nd->b[3 + p][k] = c->hi[p];
 			if (c->count & BVH_INNER) {
 				src[used] = slot[k];
+				todo[sp++] = used;
 				nd->child[k] = used++;
 			} else {
 				nd->child[k] = BVH4_LEAF | (c->count - 1) << BVH4_COUNT_SHIFT | c->first;
 			}
+		}
+		/* The first child on top. */
+		for (int lo = pushed, hi = sp - 1; lo < hi; lo++, hi--) {
+			uint32_t tmp = todo[lo];
+			todo[lo] = todo[hi], todo[hi] = tmp;
 		}
 	}
 	mem_free(src);
@@ -415,7 +438,7 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			hi[n] = vmax(a, vmax(c, d));
 			n++;
 		}
-		ok = bvh_build_nodes(lo, hi, n, &bin, &num_bin, perm);
+		ok = bvh_build_nodes(lo, hi, n, BVH_LEAF_BLOCK, &bin, &num_bin, perm);
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
@@ -860,6 +883,7 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 typedef struct circle_prep4 {
 	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3];
 	__m128 slack, neg_slack, rmax2, rmin2;
+	__m128 radius; /* for group_circle */
 	bool full;
 } circle_prep4;
 
@@ -874,6 +898,7 @@ static void circle_prepare4(const circle_prep *p, circle_prep4 *q)
 	}
 	q->slack = _mm_set1_ps(p->slack), q->neg_slack = _mm_set1_ps(-p->slack);
 	q->rmax2 = _mm_set1_ps(p->rmax2), q->rmin2 = _mm_set1_ps(p->rmin2);
+	q->radius = _mm_set1_ps(p->r);
 	q->full = p->full;
 }
 
@@ -906,6 +931,60 @@ static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
 	return _mm_movemask_ps(ok);
 }
 
+/* Relative size of the margins of group_circle: tri_circle_intersect's float pre-test's. */
+#define GROUP_CIRCLE_MARGIN 1e-5f
+
+/* The triangles of a group that may meet the circle (a lane mask): cheap float tests that reject
+ * only triangles tri_circle_intersect gives no hit for, so its double-precision work is spent on
+ * few. (1) Its plane pre-test, the same operations in the same order: all vertices clearly on one
+ * side of the circle's plane. Then, with the margin grown by the radius's rounding: (2) all
+ * vertices inside the sphere of radius r about the centre (the triangle, convex, lies inside:
+ * its segment cannot reach the circle); (3) the triangle's box entirely outside that sphere; (4)
+ * for a half circle, all vertices on the side cos theta < 0. */
+BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
+{
+	const __m128 zero = _mm_setzero_ps();
+	__m128 in = group_lanes(m);
+	__m128 rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
+	for (int a = 0; a < 3; a++) {
+		__m128 v0 = group_load(w, m, a, in), v1 = group_load(w, m, 3 + a, in), v2 = group_load(w, m, 6 + a, in);
+		rel[0][a] = _mm_sub_ps(v0, p->c[a]), rel[1][a] = _mm_sub_ps(v1, p->c[a]), rel[2][a] = _mm_sub_ps(v2, p->c[a]);
+		mag[a] = _mm_add_ps(_mm_add_ps(abs4(v0), abs4(v1)), _mm_add_ps(abs4(v2), abs4(p->c[a])));
+	}
+	__m128 margin = _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), _mm_add_ps(_mm_add_ps(mag[0], mag[1]), mag[2]));
+	__m128 neg_margin = _mm_sub_ps(zero, margin);
+	__m128 d[3], r2[3], ct[3];
+	for (int v = 0; v < 3; v++) {
+		d[v] = dot4(p->m, rel[v]);
+		r2[v] = dot4(rel[v], rel[v]);
+		ct[v] = dot4(p->t, rel[v]);
+	}
+	__m128 above = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(d[0], margin), _mm_cmpgt_ps(d[1], margin)),
+				  _mm_cmpgt_ps(d[2], margin));
+	__m128 below = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(d[0], neg_margin), _mm_cmplt_ps(d[1], neg_margin)),
+				  _mm_cmplt_ps(d[2], neg_margin));
+	__m128 reject = _mm_or_ps(above, below);
+	__m128 sm = _mm_add_ps(margin, _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), p->radius));
+	__m128 rin = _mm_sub_ps(p->radius, sm), rout = _mm_add_ps(p->radius, sm);
+	__m128 rin2 = _mm_mul_ps(rin, rin), rout2 = _mm_mul_ps(rout, rout);
+	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(r2[0], rin2), _mm_cmplt_ps(r2[1], rin2)),
+				   _mm_and_ps(_mm_cmplt_ps(r2[2], rin2), _mm_cmpgt_ps(rin, zero)));
+	__m128 near2 = zero;
+	for (int a = 0; a < 3; a++) {
+		__m128 lo = _mm_min_ps(_mm_min_ps(rel[0][a], rel[1][a]), rel[2][a]);
+		__m128 hi = _mm_max_ps(_mm_max_ps(rel[0][a], rel[1][a]), rel[2][a]);
+		__m128 dn = _mm_max_ps(_mm_max_ps(lo, _mm_sub_ps(zero, hi)), zero);
+		near2 = _mm_add_ps(near2, _mm_mul_ps(dn, dn));
+	}
+	reject = _mm_or_ps(reject, _mm_or_ps(inside, _mm_cmpgt_ps(near2, rout2)));
+	if (!p->full) {
+		__m128 neg_sm = _mm_sub_ps(zero, sm);
+		reject = _mm_or_ps(reject, _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(ct[0], neg_sm), _mm_cmplt_ps(ct[1], neg_sm)),
+						      _mm_cmplt_ps(ct[2], neg_sm)));
+	}
+	return ~_mm_movemask_ps(reject) & ((1 << m) - 1);
+}
+
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
 {
 	circle_prep p;
@@ -933,7 +1012,8 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 			for (uint32_t g = 0; g < count; g += 4) {
 				int m = count - g < 4 ? (int)(count - g) : 4;
 				const bvh_word *w = leaf_group(b, ref, g);
-				for (int j = 0; j < m; j++) {
+				for (int cand = group_circle(&p4, w, m); cand != 0; cand &= cand - 1) {
+					int j = lowest_bit(cand);
 					tri_circle_hit h[2];
 					int nh = tri_circle_intersect(q, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
 								      group_vertex(w, m, j, 2), h);

@@ -67,7 +67,9 @@ uint32_t bvh_num_nodes(const bvh *b);
 vec3 bvh_offset_origin(vec3 p, vec3 n);
 
 /* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
- * the boxes' centroids. perm receives the order of the boxes in the leaves. Internal to accel. */
+ * the boxes' centroids, pricing a leaf by its count rounded up to whole leaf_blocks (the
+ * primitives its test takes at once). perm receives the order of the boxes in the leaves.
+ * Internal to accel. */
 typedef struct bvh_node {
 	float lo[3];
 	uint32_t first; /* leaf: first primitive in perm order; inner: index of the second child */
@@ -79,7 +81,7 @@ typedef struct bvh_node {
 #define BVH_MAX_LEAF 8
 /* Max depth of a tree: traversal stacks hold this many entries. */
 #define BVH_MAX_DEPTH 62
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes,
+bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes,
 		     uint32_t *num_nodes, uint32_t *perm);
 static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }
 static inline vec3 bvh_node_hi(const bvh_node *nd) { return v3(nd->hi[0], nd->hi[1], nd->hi[2]); }
