@@ -26,6 +26,10 @@
 #define BVH_SLAB_SLACK (1.0f + 20.0f * 0x1p-24f * 3.0f)
 /* Relative slack of the circle/box test, against float rounding of box and circle data. */
 #define BVH_CIRCLE_SLACK 1e-5f
+/* The in-plane tests measure distances in the circle's axes (t, n), which is exact for an
+ * orthonormal pair; a pair off by eps (|t.t - 1|, |n.n - 1|, |t.n|) changes a distance by about
+ * 1.5 eps of itself, well inside the slack for eps up to this. Axes further off skip the tests. */
+#define BVH_CIRCLE_ORTHO_TOL 1e-6f
 
 /* The leaves' triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m
  * triangles (1 to 4) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then
@@ -820,9 +824,9 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray)
 /* A circle prepared for box tests: its plane normal m = t x n and the slack. */
 typedef struct circle_prep {
 	vec3 lo, hi; /* the circle's own bounds, grown by the slack */
-	vec3 c, t, m;
+	vec3 c, t, n, m;
 	float r, slack, rmax2, rmin2; /* rmin2 < 0: no inner bound */
-	bool full;
+	bool full, in_plane; /* in_plane: t and n orthonormal enough for the in-plane tests */
 } circle_prep;
 
 /* The slack covers rounding of box and circle data of magnitude up to `extent` (the largest
@@ -832,7 +836,9 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	if (!v3_is_finite(q->centre) || !v3_is_finite(q->t) || !v3_is_finite(q->n) || !isfinite(q->radius) ||
 	    q->radius < 0.0f)
 		return false;
-	p->c = q->centre, p->t = q->t, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
+	p->c = q->centre, p->t = q->t, p->n = q->n, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
+	float ortho = fmax3(v3(fabsf(v3_dot(q->t, q->t) - 1.0f), fabsf(v3_dot(q->n, q->n) - 1.0f), fabsf(v3_dot(q->t, q->n))));
+	p->in_plane = ortho <= BVH_CIRCLE_ORTHO_TOL;
 	p->slack = BVH_CIRCLE_SLACK * (q->radius + fmax3(v3_abs(q->centre)) + extent);
 	p->rmax2 = (p->r + p->slack) * (p->r + p->slack);
 	float rmin = p->r - p->slack;
@@ -866,7 +872,16 @@ static bool box_circle(const circle_prep *p, vec3 lo, vec3 hi)
 	vec3 a = v3_abs(rel);
 	vec3 dn = vmax(v3_sub(a, e), v3s(0.0f)), df = v3_add(a, e);
 	bool shell = (v3_length2(dn) <= p->rmax2) & (v3_length2(df) >= p->rmin2);
-	return bounds & plane & side & shell;
+	/* The same in the plane: the box's part in the plane projects, in the axes t and n, into
+	 * the rectangle of its projections, so its distances to the centre lie between the
+	 * rectangle's nearest and farthest. Tighter than the sphere for boxes that stick out of
+	 * the plane (the sphere counts that part). */
+	float pt = fabsf(v3_dot(p->t, rel)), et = v3_dot(v3_abs(p->t), e);
+	float pn = fabsf(v3_dot(p->n, rel)), en = v3_dot(v3_abs(p->n), e);
+	float nt = pt - et > 0.0f ? pt - et : 0.0f, nn = pn - en > 0.0f ? pn - en : 0.0f;
+	float ft = pt + et, fn = pn + en;
+	bool ring = !p->in_plane | ((nt * nt + nn * nn <= p->rmax2) & (ft * ft + fn * fn >= p->rmin2));
+	return bounds & plane & side & shell & ring;
 }
 
 static float box_extent(vec3 lo, vec3 hi) { return fmax3(vmax(v3_abs(lo), v3_abs(hi))); }
@@ -881,25 +896,26 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
  * order, so each lane is exactly as conservative as the scalar test. An empty child fails the
  * bounds test (lo = +inf). */
 typedef struct circle_prep4 {
-	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3];
+	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3], n[3], abs_n[3];
 	__m128 slack, neg_slack, rmax2, rmin2;
 	__m128 radius; /* for group_circle */
-	bool full;
+	bool full, in_plane;
 } circle_prep4;
 
 static void circle_prepare4(const circle_prep *p, circle_prep4 *q)
 {
-	vec3 am = v3_abs(p->m), at = v3_abs(p->t);
+	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
 	for (int i = 0; i < 3; i++) {
 		q->lo[i] = _mm_set1_ps(v3_get(p->lo, i)), q->hi[i] = _mm_set1_ps(v3_get(p->hi, i));
 		q->c[i] = _mm_set1_ps(v3_get(p->c, i));
 		q->m[i] = _mm_set1_ps(v3_get(p->m, i)), q->abs_m[i] = _mm_set1_ps(v3_get(am, i));
 		q->t[i] = _mm_set1_ps(v3_get(p->t, i)), q->abs_t[i] = _mm_set1_ps(v3_get(at, i));
+		q->n[i] = _mm_set1_ps(v3_get(p->n, i)), q->abs_n[i] = _mm_set1_ps(v3_get(an, i));
 	}
 	q->slack = _mm_set1_ps(p->slack), q->neg_slack = _mm_set1_ps(-p->slack);
 	q->rmax2 = _mm_set1_ps(p->rmax2), q->rmin2 = _mm_set1_ps(p->rmin2);
 	q->radius = _mm_set1_ps(p->r);
-	q->full = p->full;
+	q->full = p->full, q->in_plane = p->in_plane;
 }
 
 static inline __m128 abs4(__m128 x) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), x); }
@@ -928,6 +944,14 @@ static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
 		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(dot4(p->t, rel), dot4(p->abs_t, e)), p->neg_slack));
 	ok = _mm_and_ps(ok, _mm_cmple_ps(dot4(dn, dn), p->rmax2));
 	ok = _mm_and_ps(ok, _mm_cmpge_ps(dot4(df, df), p->rmin2));
+	if (p->in_plane) {
+		__m128 pt = abs4(dot4(p->t, rel)), et = dot4(p->abs_t, e);
+		__m128 pn = abs4(dot4(p->n, rel)), en = dot4(p->abs_n, e);
+		__m128 nt = _mm_max_ps(_mm_sub_ps(pt, et), zero), nn = _mm_max_ps(_mm_sub_ps(pn, en), zero);
+		__m128 ft = _mm_add_ps(pt, et), fn = _mm_add_ps(pn, en);
+		ok = _mm_and_ps(ok, _mm_cmple_ps(_mm_add_ps(_mm_mul_ps(nt, nt), _mm_mul_ps(nn, nn)), p->rmax2));
+		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(_mm_mul_ps(ft, ft), _mm_mul_ps(fn, fn)), p->rmin2));
+	}
 	return _mm_movemask_ps(ok);
 }
 
@@ -940,7 +964,71 @@ static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
  * side of the circle's plane. Then, with the margin grown by the radius's rounding: (2) all
  * vertices inside the sphere of radius r about the centre (the triangle, convex, lies inside:
  * its segment cannot reach the circle); (3) the triangle's box entirely outside that sphere; (4)
- * for a half circle, all vertices on the side cos theta < 0. */
+ * for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3) in the plane,
+ * with the vertices projected on the axes t and n: the segment lies in the projected triangle;
+ * (7) the segment itself (segment_misses). */
+static inline __m128 select4(__m128 mask, __m128 a, __m128 b)
+{
+	return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+/* The lanes of group_circle whose plane segment surely misses the circle. Taken only where all
+ * vertices are clearly off the plane (|d| > margin, d's error bound), so the edges that cross it
+ * are the exact test's two. An end on edge (i, j) is rel_i + s (rel_j - rel_i) with
+ * s = d_i / (d_i - d_j); errors of up to margin in d_i and d_j move s by at most
+ * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
+ * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
+ * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
+BVH_INLINE int segment_misses(const circle_prep4 *p, __m128 rel[3][3], const __m128 d[3], __m128 margin, __m128 sm)
+{
+	const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+	__m128 ad[3] = {abs4(d[0]), abs4(d[1]), abs4(d[2])};
+	__m128 sure = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(ad[0], margin), _mm_cmpgt_ps(ad[1], margin)),
+				 _mm_cmpgt_ps(ad[2], margin));
+	if (!_mm_movemask_ps(sure))
+		return 0;
+	__m128 two_margin = _mm_add_ps(margin, margin);
+	__m128 x[3][3], err[3], crosses[3];
+	for (int e = 0; e < 3; e++) {
+		int i = e, j = e == 2 ? 0 : e + 1;
+		__m128 s = _mm_div_ps(d[i], _mm_sub_ps(d[i], d[j]));
+		__m128 l1 = zero;
+		for (int a = 0; a < 3; a++) {
+			__m128 dv = _mm_sub_ps(rel[j][a], rel[i][a]);
+			x[e][a] = _mm_add_ps(rel[i][a], _mm_mul_ps(s, dv));
+			l1 = _mm_add_ps(l1, abs4(dv));
+		}
+		err[e] = _mm_div_ps(_mm_mul_ps(two_margin, l1), _mm_sub_ps(_mm_add_ps(ad[i], ad[j]), two_margin));
+		crosses[e] = _mm_xor_ps(_mm_cmplt_ps(d[i], zero), _mm_cmplt_ps(d[j], zero));
+	}
+	/* The two crossing edges: (0, 1), (0, 2) or (1, 2). */
+	__m128 e1[3], e2[3];
+	for (int a = 0; a < 3; a++)
+		e1[a] = select4(crosses[0], x[0][a], x[1][a]), e2[a] = select4(crosses[2], x[2][a], x[1][a]);
+	__m128 err_max = _mm_max_ps(select4(crosses[0], err[0], err[1]), select4(crosses[2], err[2], err[1]));
+	__m128 slack = _mm_add_ps(sm, err_max);
+	__m128 rin = _mm_sub_ps(p->radius, slack), rout = _mm_add_ps(p->radius, slack);
+	__m128 rin2 = _mm_mul_ps(rin, rin);
+	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(dot4(e1, e1), rin2), _mm_cmplt_ps(dot4(e2, e2), rin2)),
+				   _mm_cmpgt_ps(rin, zero));
+	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
+	 * from D = 0 clamps to 0 (maxps returns its second operand on NaN). */
+	__m128 dd[3];
+	for (int a = 0; a < 3; a++)
+		dd[a] = _mm_sub_ps(e2[a], e1[a]);
+	__m128 f = _mm_div_ps(_mm_sub_ps(zero, dot4(e1, dd)), dot4(dd, dd));
+	f = _mm_min_ps(_mm_max_ps(f, zero), one);
+	__m128 near[3];
+	for (int a = 0; a < 3; a++)
+		near[a] = _mm_add_ps(e1[a], _mm_mul_ps(f, dd[a]));
+	__m128 miss = _mm_or_ps(inside, _mm_cmpgt_ps(dot4(near, near), _mm_mul_ps(rout, rout)));
+	if (!p->full) {
+		__m128 neg = _mm_sub_ps(zero, slack);
+		miss = _mm_or_ps(miss, _mm_and_ps(_mm_cmplt_ps(dot4(p->t, e1), neg), _mm_cmplt_ps(dot4(p->t, e2), neg)));
+	}
+	return _mm_movemask_ps(_mm_and_ps(sure, miss));
+}
+
 BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
 {
 	const __m128 zero = _mm_setzero_ps();
@@ -953,11 +1041,12 @@ BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
 	}
 	__m128 margin = _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), _mm_add_ps(_mm_add_ps(mag[0], mag[1]), mag[2]));
 	__m128 neg_margin = _mm_sub_ps(zero, margin);
-	__m128 d[3], r2[3], ct[3];
+	__m128 d[3], r2[3], ct[3], st[3];
 	for (int v = 0; v < 3; v++) {
 		d[v] = dot4(p->m, rel[v]);
 		r2[v] = dot4(rel[v], rel[v]);
 		ct[v] = dot4(p->t, rel[v]);
+		st[v] = dot4(p->n, rel[v]);
 	}
 	__m128 above = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(d[0], margin), _mm_cmpgt_ps(d[1], margin)),
 				  _mm_cmpgt_ps(d[2], margin));
@@ -977,12 +1066,28 @@ BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
 		near2 = _mm_add_ps(near2, _mm_mul_ps(dn, dn));
 	}
 	reject = _mm_or_ps(reject, _mm_or_ps(inside, _mm_cmpgt_ps(near2, rout2)));
+	if (p->in_plane) {
+		__m128 q2[3];
+		for (int v = 0; v < 3; v++)
+			q2[v] = _mm_add_ps(_mm_mul_ps(ct[v], ct[v]), _mm_mul_ps(st[v], st[v]));
+		__m128 inside2 = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(q2[0], rin2), _mm_cmplt_ps(q2[1], rin2)),
+					    _mm_and_ps(_mm_cmplt_ps(q2[2], rin2), _mm_cmpgt_ps(rin, zero)));
+		__m128 tlo = _mm_min_ps(_mm_min_ps(ct[0], ct[1]), ct[2]), thi = _mm_max_ps(_mm_max_ps(ct[0], ct[1]), ct[2]);
+		__m128 nlo = _mm_min_ps(_mm_min_ps(st[0], st[1]), st[2]), nhi = _mm_max_ps(_mm_max_ps(st[0], st[1]), st[2]);
+		__m128 dt = _mm_max_ps(_mm_max_ps(tlo, _mm_sub_ps(zero, thi)), zero);
+		__m128 dn = _mm_max_ps(_mm_max_ps(nlo, _mm_sub_ps(zero, nhi)), zero);
+		__m128 near2d = _mm_add_ps(_mm_mul_ps(dt, dt), _mm_mul_ps(dn, dn));
+		reject = _mm_or_ps(reject, _mm_or_ps(inside2, _mm_cmpgt_ps(near2d, rout2)));
+	}
 	if (!p->full) {
 		__m128 neg_sm = _mm_sub_ps(zero, sm);
 		reject = _mm_or_ps(reject, _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(ct[0], neg_sm), _mm_cmplt_ps(ct[1], neg_sm)),
 						      _mm_cmplt_ps(ct[2], neg_sm)));
 	}
-	return ~_mm_movemask_ps(reject) & ((1 << m) - 1);
+	int lanes = (1 << m) - 1, left = ~_mm_movemask_ps(reject) & lanes;
+	if (left)
+		left &= ~segment_misses(p, rel, d, margin, sm);
+	return left;
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
