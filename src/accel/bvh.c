@@ -252,27 +252,28 @@ static uint32_t partition(build_ref *refs, const build_task *tk, const split *s,
 	return i;
 }
 
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes_out,
-		     uint32_t *num_nodes, uint32_t *perm)
+/* The root task of refs[0, n), and ref i's box added to it. */
+static build_task root_task(uint32_t n)
 {
-	*nodes_out = NULL, *num_nodes = 0;
-	if (n == 0)
-		return true;
-	build_ref *refs = mem_alloc(n, sizeof *refs);
+	return (build_task){0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
+			    _mm_set1_ps(-INFINITY)};
+}
+static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 hi, uint32_t id)
+{
+	__m128 c = _mm_add_ps(lo, hi);
+	*ref = (build_ref){lo, hi, id};
+	root->lo = _mm_min_ps(root->lo, lo), root->hi = _mm_max_ps(root->hi, hi);
+	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
+}
+
+/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order. */
+static bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
+		       uint32_t *num_nodes)
+{
+	uint32_t n = root.end;
 	bvh_node *nodes = mem_alloc(2 * (size_t)n - 1, sizeof *nodes);
-	if (!refs || !nodes) {
-		mem_free(refs), mem_free(nodes);
+	if (!nodes)
 		return false;
-	}
-	build_task root = {0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
-			   _mm_set1_ps(-INFINITY)};
-	for (uint32_t i = 0; i < n; i++) {
-		__m128 l = _mm_setr_ps(lo[i].x, lo[i].y, lo[i].z, 0.0f), h = _mm_setr_ps(hi[i].x, hi[i].y, hi[i].z, 0.0f);
-		__m128 c = _mm_add_ps(l, h);
-		refs[i] = (build_ref){l, h, i};
-		root.lo = _mm_min_ps(root.lo, l), root.hi = _mm_max_ps(root.hi, h);
-		root.clo = _mm_min_ps(root.clo, c), root.chi = _mm_max_ps(root.chi, c);
-	}
 	uint32_t used = 1;
 	build_task stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -284,7 +285,9 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_b
 		nd->lo[0] = blo.x, nd->lo[1] = blo.y, nd->lo[2] = blo.z;
 		nd->hi[0] = bhi.x, nd->hi[1] = bhi.y, nd->hi[2] = bhi.z;
 		uint32_t count = tk.end - tk.begin;
-		if (count == 1) {
+		/* A split costs at least SAH_TRAVERSAL_COST; a leaf of one block costs
+		 * SAH_INTERSECTION_COST: no need to bin when the leaf is surely cheaper. */
+		if (count == 1 || (count <= leaf_block && SAH_TRAVERSAL_COST >= SAH_INTERSECTION_COST)) {
 			make_leaf(nd, tk.begin, count);
 			continue;
 		}
@@ -311,13 +314,30 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_b
 		stack[sp++] = r;
 		stack[sp++] = l;
 	}
-	for (uint32_t i = 0; i < n; i++)
-		perm[i] = refs[i].id;
-	mem_free(refs);
 	bvh_node *shrunk = mem_realloc(nodes, used, sizeof *nodes);
 	*nodes_out = shrunk ? shrunk : nodes;
 	*num_nodes = used;
 	return true;
+}
+
+bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes_out,
+		     uint32_t *num_nodes, uint32_t *perm)
+{
+	*nodes_out = NULL, *num_nodes = 0;
+	if (n == 0)
+		return true;
+	build_ref *refs = mem_alloc(n, sizeof *refs);
+	if (!refs)
+		return false;
+	build_task root = root_task(n);
+	for (uint32_t i = 0; i < n; i++)
+		add_ref(&root, &refs[i], _mm_setr_ps(lo[i].x, lo[i].y, lo[i].z, 0.0f),
+			_mm_setr_ps(hi[i].x, hi[i].y, hi[i].z, 0.0f), i);
+	bool ok = build_tree(refs, root, leaf_block, nodes_out, num_nodes);
+	for (uint32_t i = 0; ok && i < n; i++)
+		perm[i] = refs[i].id;
+	mem_free(refs);
+	return ok;
 }
 
 /* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
@@ -395,16 +415,16 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 	return true;
 }
 
-/* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle keep[perm[i]]. */
+/* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle refs[i].id. */
 static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
-		       const uint32_t *keep, const uint32_t *perm)
+		       const build_ref *refs)
 {
 	uint32_t first = ref & BVH4_FIRST_MASK, count = (ref >> BVH4_COUNT_SHIFT & 15) + 1;
 	for (uint32_t g = 0; g < count; g += 4) {
 		uint32_t m = count - g < 4 ? count - g : 4;
 		bvh_word *w = &leaf[GROUP_WORDS * (size_t)(first + g)];
 		for (uint32_t j = 0; j < m; j++) {
-			uint32_t f = keep[perm[first + g + j]];
+			uint32_t f = refs[first + g + j].id;
 			for (int k = 0; k < 3; k++) {
 				vec3 p = positions[indices[3 * (size_t)f + k]];
 				w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
@@ -424,25 +444,24 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	if (num_triangles > BVH4_FIRST_MASK)
 		return NULL;
 	bvh *b = mem_calloc(1, sizeof *b);
-	uint32_t *keep = mem_alloc(num_triangles, sizeof *keep);
-	vec3 *lo = mem_alloc(num_triangles, sizeof *lo), *hi = mem_alloc(num_triangles, sizeof *hi);
-	uint32_t *perm = mem_alloc(num_triangles, sizeof *perm);
+	build_ref *refs = mem_alloc(num_triangles, sizeof *refs);
 	bvh_node *bin = NULL;
 	uint32_t num_bin = 0;
-	bool ok = b && keep && lo && hi && perm;
+	bool ok = b && refs;
 	uint32_t n = 0;
 	if (ok) {
+		/* The refs of the triangles that can be hit, their ids the mesh's. */
+		build_task root = root_task(0);
 		for (uint32_t f = 0; f < num_triangles; f++) {
 			const uint32_t *ix = indices + 3 * f;
 			vec3 a = positions[ix[0]], c = positions[ix[1]], d = positions[ix[2]];
 			if (tri_is_degenerate(a, c, d))
 				continue;
-			keep[n] = f;
-			lo[n] = vmin(a, vmin(c, d));
-			hi[n] = vmax(a, vmax(c, d));
-			n++;
+			vec3 lo = vmin(a, vmin(c, d)), hi = vmax(a, vmax(c, d));
+			add_ref(&root, &refs[n++], _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), _mm_setr_ps(hi.x, hi.y, hi.z, 0.0f), f);
 		}
-		ok = bvh_build_nodes(lo, hi, n, BVH_LEAF_BLOCK, &bin, &num_bin, perm);
+		root.end = n;
+		ok = n == 0 || build_tree(refs, root, BVH_LEAF_BLOCK, &bin, &num_bin);
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
@@ -454,11 +473,11 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			for (int k = 0; k < 4; k++) {
 				uint32_t ref = b->nodes[i].child[k];
 				if ((ref & BVH4_LEAF) && ref != BVH4_EMPTY)
-					write_leaf(b->leaf, ref, positions, indices, keep, perm);
+					write_leaf(b->leaf, ref, positions, indices, refs);
 			}
 		b->num_tris = n;
 	}
-	mem_free(keep), mem_free(lo), mem_free(hi), mem_free(perm), mem_free(bin);
+	mem_free(refs), mem_free(bin);
 	if (!ok) {
 		bvh_free(b);
 		return NULL;
