@@ -856,7 +856,8 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	    q->radius < 0.0f)
 		return false;
 	p->c = q->centre, p->t = q->t, p->n = q->n, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
-	float ortho = fmax3(v3(fabsf(v3_dot(q->t, q->t) - 1.0f), fabsf(v3_dot(q->n, q->n) - 1.0f), fabsf(v3_dot(q->t, q->n))));
+	float ortho = fmax3(v3(fabsf(v3_dot(q->t, q->t) - 1.0f), fabsf(v3_dot(q->n, q->n) - 1.0f),
+			       fabsf(v3_dot(q->t, q->n))));
 	p->in_plane = ortho <= BVH_CIRCLE_ORTHO_TOL;
 	p->slack = BVH_CIRCLE_SLACK * (q->radius + fmax3(v3_abs(q->centre)) + extent);
 	p->rmax2 = (p->r + p->slack) * (p->r + p->slack);
@@ -998,7 +999,8 @@ static inline __m128 select4(__m128 mask, __m128 a, __m128 b)
  * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
  * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
  * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
-BVH_INLINE int segment_misses(const circle_prep4 *p, __m128 rel[3][3], const __m128 d[3], __m128 margin, __m128 sm)
+BVH_INLINE int segment_misses(const circle_prep4 *p, __m128 rel[3][3], const __m128 d[3], __m128 margin,
+			      __m128 sm)
 {
 	const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
 	__m128 ad[3] = {abs4(d[0]), abs4(d[1]), abs4(d[2])};
@@ -1055,7 +1057,8 @@ BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
 	__m128 rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
 	for (int a = 0; a < 3; a++) {
 		__m128 v0 = group_load(w, m, a, in), v1 = group_load(w, m, 3 + a, in), v2 = group_load(w, m, 6 + a, in);
-		rel[0][a] = _mm_sub_ps(v0, p->c[a]), rel[1][a] = _mm_sub_ps(v1, p->c[a]), rel[2][a] = _mm_sub_ps(v2, p->c[a]);
+		rel[0][a] = _mm_sub_ps(v0, p->c[a]), rel[1][a] = _mm_sub_ps(v1, p->c[a]);
+		rel[2][a] = _mm_sub_ps(v2, p->c[a]);
 		mag[a] = _mm_add_ps(_mm_add_ps(abs4(v0), abs4(v1)), _mm_add_ps(abs4(v2), abs4(p->c[a])));
 	}
 	__m128 margin = _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), _mm_add_ps(_mm_add_ps(mag[0], mag[1]), mag[2]));

@@ -31,7 +31,8 @@ typedef struct bvh_hit {
 } bvh_hit;
 
 /* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out, an index
- * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh gives a valid bvh that hits nothing. */
+ * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh
+ * gives a valid bvh that hits nothing. */
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles);
 void bvh_free(bvh *b);
