@@ -147,8 +147,8 @@ typedef struct split {
 
 /* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
  * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
- * small, and clearing and sweeping all bins would cost them more than their refs do (one bin a
- * ref rather than two builds 8 % faster on the head, and the trees are as good). Costs are compared
+ * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
+ * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good). Costs are compared
  * multiplied by the node's area, which saves a division per candidate. */
 /* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
  * primitives one test takes at once. */
