@@ -1,7 +1,7 @@
 /* bvh.c - binned-SAH build of a binary BVH, collapsed into a 4-wide one, and its ray and circle
  * traversals. A 4-wide node holds its children's boxes as struct-of-arrays, so one SSE register
- * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into an array of triangle
- * copies (three vertices and the id, 40 bytes) in leaf order. */
+ * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into groups of up to four
+ * triangles stored pre-transposed, so one SSE register holds a coordinate of four triangles. */
 #include "accel/bvh.h"
 
 #include "base/mem.h"
@@ -11,31 +11,54 @@
 
 /* SAH: the costs of a node visit (two box tests) and of a triangle test. Their ratio sets the
  * leaf size, hence speed against memory (bench/README.md). */
+#ifndef SAH_TRAVERSAL_COST
 #define SAH_TRAVERSAL_COST 2.0f
+#endif
+#ifndef SAH_INTERSECTION_COST
 #define SAH_INTERSECTION_COST 1.0f
+#endif
 #define SAH_BINS 16
+/* Triangles a leaf test takes at once (a group, bvh_word): SAH prices a leaf by its groups. */
+#define BVH_LEAF_BLOCK 4
 /* Slack of the slab test's far distance: 1 + 2 gamma(3) of Ize 2013 ("Robust BVH Ray
  * Traversal") covers the rounding of the box distances; we take ten times that, because the
  * triangle test's t carries rounding too and a box must never cull a hit the brute force finds. */
 #define BVH_SLAB_SLACK (1.0f + 20.0f * 0x1p-24f * 3.0f)
 /* Relative slack of the circle/box test, against float rounding of box and circle data. */
 #define BVH_CIRCLE_SLACK 1e-5f
+/* The in-plane tests measure distances in the circle's axes (t, n), which is exact for an
+ * orthonormal pair; a pair off by eps (|t.t - 1|, |n.n - 1|, |t.n|) changes a distance by about
+ * 1.5 eps of itself, well inside the slack for eps up to this. Axes further off skip the tests. */
+#define BVH_CIRCLE_ORTHO_TOL 1e-6f
 
-typedef struct bvh_tri {
-	vec3 v0, v1, v2;
-	uint32_t id;
-} bvh_tri;
+/* The leaves' triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m
+ * triangles (1 to 4) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then
+ * the ids, so one unaligned load gives one coordinate of all m triangles (lanes past m read the
+ * next array and are masked off). A leaf of n triangles from triangle f is groups of four and a
+ * last one of the rest; group g starts at word GROUP_WORDS * (f + 4 g). 40 bytes a triangle, and
+ * no transposes when a ray visits. */
+typedef union bvh_word {
+	float f;
+	uint32_t u;
+} bvh_word;
+#define GROUP_WORDS 10
+/* Words after the last group: the last coordinate array of a group of one is loaded 16 bytes wide,
+ * three words past its end. */
+#define LEAF_PAD_WORDS 4
 
 /* A 4-wide node, 112 bytes: b[plane][child] with planes lo x, lo y, lo z, hi x, hi y, hi z. A child
- * is an inner node's index, BVH4_LEAF | its first triangle, or BVH4_EMPTY (then its box is empty,
- * lo = +inf and hi = -inf, and no ray or circle test passes it). A leaf runs from its first
- * triangle to the one whose id carries BVH_TRI_LAST. */
+ * is an inner node's index, a leaf (BVH4_LEAF | (count - 1) << BVH4_COUNT_SHIFT | first triangle),
+ * or BVH4_EMPTY (then its box is empty, lo = +inf and hi = -inf, and no ray or circle test passes
+ * it). */
 typedef struct bvh4_node {
 	float b[6][4];
 	uint32_t child[4];
 } bvh4_node;
-#define BVH_TRI_LAST 0x80000000u
 #define BVH4_LEAF 0x80000000u
+#define BVH4_COUNT_SHIFT 27
+#define BVH4_FIRST_MASK ((1u << BVH4_COUNT_SHIFT) - 1)
+/* Leaves of the binary tree have at most BVH_MAX_LEAF triangles: four bits of count suffice. */
+_Static_assert(BVH_MAX_LEAF <= 16, "a leaf's count must fit its four bits");
 #define BVH4_EMPTY 0xffffffffu
 /* Entries of a traversal stack: a visit pushes at most three. */
 #define BVH4_STACK (3 * BVH_MAX_DEPTH + 4)
@@ -43,7 +66,7 @@ typedef struct bvh4_node {
 struct bvh {
 	bvh4_node *nodes; /* node 0 is the root */
 	uint32_t num_nodes;
-	bvh_tri *tris;
+	bvh_word *leaf; /* triangle groups in leaf order, then LEAF_PAD_WORDS */
 	uint32_t num_tris;
 	vec3 lo, hi; /* bounds of all triangles */
 };
@@ -108,6 +131,9 @@ static inline __m128i bins_of(__m128 c, __m128 cmin, __m128 scale, __m128 last_b
 	return _mm_cvttps_epi32(f);
 }
 
+/* The smallest k with 2^k >= n, for n >= 1. */
+static uint32_t ceil_log2(uint32_t n) { return n <= 1 ? 0 : 32 - (uint32_t)__builtin_clz(n - 1); }
+
 static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 {
 	nd->first = begin;
@@ -120,19 +146,24 @@ typedef struct split {
 } split;
 
 /* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
- * (or none exists). Small nodes get fewer bins (twice their count): most nodes are small, and
- * clearing and sweeping 16 bins would cost them more than their refs do. Costs are compared
+ * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
+ * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
+ * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good). Costs are compared
  * multiplied by the node's area, which saves a division per candidate. */
-static bool find_split(const build_ref *refs, const build_task *tk, split *out)
+/* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
+ * primitives one test takes at once. */
+static inline uint32_t blocks(uint32_t block, uint32_t count) { return (count + block - 1) / block; }
+
+static bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
 {
 	uint32_t count = tk->end - tk->begin;
 	float node_area = half_area4(tk->lo, tk->hi);
 	/* The leaf, and the inner node: SAH_TRAVERSAL_COST + SAH_INTERSECTION_COST * sum / node_area
 	 * < best exactly when sum < best_sum. */
-	float best = count <= BVH_MAX_LEAF ? (float)count * SAH_INTERSECTION_COST : INFINITY;
+	float best = count <= BVH_MAX_LEAF ? (float)blocks(block, count) * SAH_INTERSECTION_COST : INFINITY;
 	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
 	bool found = false;
-	int nb = count < SAH_BINS / 2 ? 2 * (int)count : SAH_BINS;
+	int nb = count < SAH_BINS ? (int)count : SAH_BINS;
 	__m128 ext = _mm_sub_ps(tk->chi, tk->clo);
 	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
 	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
@@ -162,14 +193,14 @@ static bool find_split(const build_ref *refs, const build_task *tk, split *out)
 		uint32_t n = 0;
 		for (int i = nb - 1; i > 0; i--) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			right_cost[i] = n ? half_area4(lo, hi) * (float)n : 0.0f;
+			right_cost[i] = n ? half_area4(lo, hi) * (float)blocks(block, n) : 0.0f;
 		}
 		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
 		for (int i = 0; i < nb - 1; i++) {
 			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
 			if (n == 0 || n == count)
 				continue;
-			float sum = half_area4(lo, hi) * (float)n + right_cost[i + 1];
+			float sum = half_area4(lo, hi) * (float)blocks(block, n) + right_cost[i + 1];
 			if (sum < best_sum) {
 				best_sum = sum, out->axis = ax, out->bin = i + 1;
 				found = true;
@@ -222,27 +253,28 @@ static uint32_t partition(build_ref *refs, const build_task *tk, const split *s,
 	return i;
 }
 
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes_out,
-		     uint32_t *num_nodes, uint32_t *perm)
+/* The root task of refs[0, n), and ref i's box added to it. */
+static build_task root_task(uint32_t n)
 {
-	*nodes_out = NULL, *num_nodes = 0;
-	if (n == 0)
-		return true;
-	build_ref *refs = mem_alloc(n, sizeof *refs);
+	return (build_task){0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
+			    _mm_set1_ps(-INFINITY)};
+}
+static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 hi, uint32_t id)
+{
+	__m128 c = _mm_add_ps(lo, hi);
+	*ref = (build_ref){lo, hi, id};
+	root->lo = _mm_min_ps(root->lo, lo), root->hi = _mm_max_ps(root->hi, hi);
+	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
+}
+
+/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order. */
+static bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
+		       uint32_t *num_nodes)
+{
+	uint32_t n = root.end;
 	bvh_node *nodes = mem_alloc(2 * (size_t)n - 1, sizeof *nodes);
-	if (!refs || !nodes) {
-		mem_free(refs), mem_free(nodes);
+	if (!nodes)
 		return false;
-	}
-	build_task root = {0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
-			   _mm_set1_ps(-INFINITY)};
-	for (uint32_t i = 0; i < n; i++) {
-		__m128 l = _mm_setr_ps(lo[i].x, lo[i].y, lo[i].z, 0.0f), h = _mm_setr_ps(hi[i].x, hi[i].y, hi[i].z, 0.0f);
-		__m128 c = _mm_add_ps(l, h);
-		refs[i] = (build_ref){l, h, i};
-		root.lo = _mm_min_ps(root.lo, l), root.hi = _mm_max_ps(root.hi, h);
-		root.clo = _mm_min_ps(root.clo, c), root.chi = _mm_max_ps(root.chi, c);
-	}
 	uint32_t used = 1;
 	build_task stack[BVH_MAX_DEPTH + 2];
 	int sp = 0;
@@ -254,14 +286,21 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 		nd->lo[0] = blo.x, nd->lo[1] = blo.y, nd->lo[2] = blo.z;
 		nd->hi[0] = bhi.x, nd->hi[1] = bhi.y, nd->hi[2] = bhi.z;
 		uint32_t count = tk.end - tk.begin;
-		if (count == 1 || tk.depth >= BVH_MAX_DEPTH - 1) {
+		/* A split costs at least SAH_TRAVERSAL_COST; a leaf of one block costs
+		 * SAH_INTERSECTION_COST: no need to bin when the leaf is surely cheaper. */
+		if (count == 1 || (count <= leaf_block && SAH_TRAVERSAL_COST >= SAH_INTERSECTION_COST)) {
 			make_leaf(nd, tk.begin, count);
 			continue;
 		}
 		split s = {0};
 		uint32_t left = used;
 		build_task l, r;
-		if (find_split(refs, &tk, &s)) {
+		if (tk.depth + ceil_log2(count) >= BVH_MAX_DEPTH - 1) {
+			/* Near the depth limit (a degenerate distribution): halving takes ceil_log2(count)
+			 * more levels to single refs, so the tree stays within the limit and every leaf
+			 * within BVH_MAX_LEAF. */
+			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
+		} else if (find_split(refs, &tk, leaf_block, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
@@ -276,20 +315,39 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **node
 		stack[sp++] = r;
 		stack[sp++] = l;
 	}
-	for (uint32_t i = 0; i < n; i++)
-		perm[i] = refs[i].id;
-	mem_free(refs);
 	bvh_node *shrunk = mem_realloc(nodes, used, sizeof *nodes);
 	*nodes_out = shrunk ? shrunk : nodes;
 	*num_nodes = used;
 	return true;
 }
 
+bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes_out,
+		     uint32_t *num_nodes, uint32_t *perm)
+{
+	*nodes_out = NULL, *num_nodes = 0;
+	if (n == 0)
+		return true;
+	build_ref *refs = mem_alloc(n, sizeof *refs);
+	if (!refs)
+		return false;
+	build_task root = root_task(n);
+	for (uint32_t i = 0; i < n; i++)
+		add_ref(&root, &refs[i], _mm_setr_ps(lo[i].x, lo[i].y, lo[i].z, 0.0f),
+			_mm_setr_ps(hi[i].x, hi[i].y, hi[i].z, 0.0f), i);
+	bool ok = build_tree(refs, root, leaf_block, nodes_out, num_nodes);
+	for (uint32_t i = 0; ok && i < n; i++)
+		perm[i] = refs[i].id;
+	mem_free(refs);
+	return ok;
+}
+
 /* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
  * two children and keeps opening the inner one of largest area until it has four (Wald et al.
  * 2008, "Getting Rid of Packets", section 3). Every 4-wide node consumes at least one binary
- * inner node, so there are at most max(1, inner) of them. Marks the last triangle of each leaf. */
-static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_node **out, uint32_t *num_out)
+ * inner node, so there are at most max(1, inner) of them. Nodes are laid out depth first (a
+ * node's children side by side, then the first child's subtree): a ray's next node is more often
+ * in a cache line it already fetched than in breadth-first order. */
+static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uint32_t *num_out)
 {
 	uint32_t cap = num_bin / 2 + 1;
 	bvh4_node *nodes = mem_alloc(cap, sizeof *nodes);
@@ -300,7 +358,11 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 	}
 	uint32_t used = 1;
 	src[0] = 0;
-	for (uint32_t i = 0; i < used; i++) {
+	uint32_t todo[BVH4_STACK];
+	int sp = 0;
+	todo[sp++] = 0;
+	while (sp > 0) {
+		uint32_t i = todo[--sp];
 		const bvh_node *s = &bin[src[i]];
 		uint32_t slot[4], n = 0;
 		if (s->count & BVH_INNER)
@@ -322,6 +384,7 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 			slot[open] = c0, slot[n++] = c0 + 1;
 		}
 		bvh4_node *nd = &nodes[i];
+		int pushed = sp;
 		for (uint32_t k = 0; k < 4; k++) {
 			if (k >= n) {
 				for (int p = 0; p < 3; p++)
@@ -334,11 +397,16 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 				nd->b[p][k] = c->lo[p], nd->b[3 + p][k] = c->hi[p];
 			if (c->count & BVH_INNER) {
 				src[used] = slot[k];
+				todo[sp++] = used;
 				nd->child[k] = used++;
 			} else {
-				nd->child[k] = BVH4_LEAF | c->first;
-				tris[c->first + c->count - 1].id |= BVH_TRI_LAST;
+				nd->child[k] = BVH4_LEAF | (c->count - 1) << BVH4_COUNT_SHIFT | c->first;
 			}
+		}
+		/* The first child on top. */
+		for (int lo = pushed, hi = sp - 1; lo < hi; lo++, hi--) {
+			uint32_t tmp = todo[lo];
+			todo[lo] = todo[hi], todo[hi] = tmp;
 		}
 	}
 	mem_free(src);
@@ -348,52 +416,69 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh_tri *tris, bvh4_
 	return true;
 }
 
+/* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle refs[i].id. */
+static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
+		       const build_ref *refs)
+{
+	uint32_t first = ref & BVH4_FIRST_MASK, count = (ref >> BVH4_COUNT_SHIFT & 15) + 1;
+	for (uint32_t g = 0; g < count; g += 4) {
+		uint32_t m = count - g < 4 ? count - g : 4;
+		bvh_word *w = &leaf[GROUP_WORDS * (size_t)(first + g)];
+		for (uint32_t j = 0; j < m; j++) {
+			uint32_t f = refs[first + g + j].id;
+			for (int k = 0; k < 3; k++) {
+				vec3 p = positions[indices[3 * (size_t)f + k]];
+				w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
+			}
+			w[9 * m + j].u = f;
+		}
+	}
+}
+
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles)
 {
 	for (size_t i = 0; i < 3 * (size_t)num_triangles; i++)
 		if (indices[i] >= num_vertices)
 			return NULL;
-	/* Leaf references and triangle ids keep their top bit for flags. */
-	if (num_triangles >= BVH4_LEAF)
+	/* A leaf reference holds its first triangle in BVH4_COUNT_SHIFT bits. */
+	if (num_triangles > BVH4_FIRST_MASK)
 		return NULL;
 	bvh *b = mem_calloc(1, sizeof *b);
-	uint32_t *keep = mem_alloc(num_triangles, sizeof *keep);
-	vec3 *lo = mem_alloc(num_triangles, sizeof *lo), *hi = mem_alloc(num_triangles, sizeof *hi);
-	uint32_t *perm = mem_alloc(num_triangles, sizeof *perm);
+	build_ref *refs = mem_alloc(num_triangles, sizeof *refs);
 	bvh_node *bin = NULL;
 	uint32_t num_bin = 0;
-	bool ok = b && keep && lo && hi && perm;
+	bool ok = b && refs;
 	uint32_t n = 0;
 	if (ok) {
+		/* The refs of the triangles that can be hit, their ids the mesh's. */
+		build_task root = root_task(0);
 		for (uint32_t f = 0; f < num_triangles; f++) {
 			const uint32_t *ix = indices + 3 * f;
 			vec3 a = positions[ix[0]], c = positions[ix[1]], d = positions[ix[2]];
 			if (tri_is_degenerate(a, c, d))
 				continue;
-			keep[n] = f;
-			lo[n] = vmin(a, vmin(c, d));
-			hi[n] = vmax(a, vmax(c, d));
-			n++;
+			vec3 lo = vmin(a, vmin(c, d)), hi = vmax(a, vmax(c, d));
+			add_ref(&root, &refs[n++], _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), _mm_setr_ps(hi.x, hi.y, hi.z, 0.0f), f);
 		}
-		ok = bvh_build_nodes(lo, hi, n, &bin, &num_bin, perm);
+		root.end = n;
+		ok = n == 0 || build_tree(refs, root, BVH_LEAF_BLOCK, &bin, &num_bin);
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
-		/* One entry of padding: the four-wide triangle test loads 8 bytes past a triangle. */
-		b->tris = mem_calloc((size_t)n + 1, sizeof *b->tris);
-		ok = b->tris != NULL;
+		b->leaf = mem_calloc(GROUP_WORDS * (size_t)n + LEAF_PAD_WORDS, sizeof *b->leaf);
+		ok = b->leaf && collapse(bin, num_bin, &b->nodes, &b->num_nodes);
 	}
 	if (ok && n > 0) {
-		for (uint32_t i = 0; i < n; i++) {
-			uint32_t f = keep[perm[i]];
-			const uint32_t *ix = indices + 3 * f;
-			b->tris[i] = (bvh_tri){positions[ix[0]], positions[ix[1]], positions[ix[2]], f};
-		}
+		for (uint32_t i = 0; i < b->num_nodes; i++)
+			for (int k = 0; k < 4; k++) {
+				uint32_t ref = b->nodes[i].child[k];
+				if ((ref & BVH4_LEAF) && ref != BVH4_EMPTY)
+					write_leaf(b->leaf, ref, positions, indices, refs);
+			}
 		b->num_tris = n;
-		ok = collapse(bin, num_bin, b->tris, &b->nodes, &b->num_nodes);
 	}
-	mem_free(keep), mem_free(lo), mem_free(hi), mem_free(perm), mem_free(bin);
+	mem_free(refs), mem_free(bin);
 	if (!ok) {
 		bvh_free(b);
 		return NULL;
@@ -406,7 +491,7 @@ void bvh_free(bvh *b)
 	if (!b)
 		return;
 	mem_free(b->nodes);
-	mem_free(b->tris);
+	mem_free(b->leaf);
 	mem_free(b);
 }
 
@@ -421,7 +506,7 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 size_t bvh_bytes(const bvh *b)
 {
 	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) +
-	       (b->num_tris ? (size_t)b->num_tris + 1 : 0) * sizeof(bvh_tri);
+	       (b->num_tris ? GROUP_WORDS * (size_t)b->num_tris + LEAF_PAD_WORDS : 0) * sizeof(bvh_word);
 }
 
 uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
@@ -517,49 +602,60 @@ typedef struct stack_entry {
  * Returns the lanes that hit with t in [tmin, tlimit] (bits below n only) in *hit_mask and those
  * left to the scalar test in the result; t, u, v receive the lanes' values. */
 typedef struct tri_ray4 {
-	__m128 org[3], sx, sy, sz, tmin;
+	__m128 ox, oy, oz, sx, sy, sz, tmin; /* the origin in the ray's axis order kx, ky, kz */
 	int kx, ky, kz;
 } tri_ray4;
 
 static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
 {
-	q->org[0] = _mm_set1_ps(r->org.x), q->org[1] = _mm_set1_ps(r->org.y), q->org[2] = _mm_set1_ps(r->org.z);
+	q->ox = _mm_set1_ps(v3_get(r->org, r->kx)), q->oy = _mm_set1_ps(v3_get(r->org, r->ky));
+	q->oz = _mm_set1_ps(v3_get(r->org, r->kz));
 	q->sx = _mm_set1_ps(r->sx), q->sy = _mm_set1_ps(r->sy), q->sz = _mm_set1_ps(r->sz);
 	q->tmin = _mm_set1_ps(r->tmin);
 	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
 }
 
-/* Triangles tr[0, n), n in 1..4; the triangle array has one entry of padding after its end, so the
- * 16-byte loads below stay inside it. */
-static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, float tlimit, int *hit_mask,
-				 float t[4], float u[4], float v[4])
+/* Forced inlining: the leaf tests are called from two traversals each, and gcc -O2 would
+ * otherwise keep them out of line and pass their results through memory. */
+#define BVH_INLINE static inline __attribute__((always_inline))
+
+/* A leaf group (bvh_word): m triangles from word w. */
+BVH_INLINE __m128 group_lanes(int m)
 {
-	const float *p[4];
-	for (int j = 0; j < 4; j++)
-		p[j] = (const float *)&tr[j < n ? j : 0];
-	__m128 a0 = _mm_loadu_ps(p[0]), a1 = _mm_loadu_ps(p[1]), a2 = _mm_loadu_ps(p[2]), a3 = _mm_loadu_ps(p[3]);
-	__m128 b0 = _mm_loadu_ps(p[0] + 4), b1 = _mm_loadu_ps(p[1] + 4), b2 = _mm_loadu_ps(p[2] + 4),
-	       b3 = _mm_loadu_ps(p[3] + 4);
-	__m128 c0 = _mm_loadu_ps(p[0] + 8), c1 = _mm_loadu_ps(p[1] + 8), c2 = _mm_loadu_ps(p[2] + 8),
-	       c3 = _mm_loadu_ps(p[3] + 8);
-	_MM_TRANSPOSE4_PS(a0, a1, a2, a3); /* v0 x y z, v1 x */
-	_MM_TRANSPOSE4_PS(b0, b1, b2, b3); /* v1 y z, v2 x y */
-	/* v2 z: the first word of each c. */
-	__m128 c01 = _mm_unpacklo_ps(c0, c1), c23 = _mm_unpacklo_ps(c2, c3);
-	__m128 v2z = _mm_movelh_ps(c01, c23);
-	__m128 A[3], B[3], C[3];
-	A[0] = _mm_sub_ps(a0, q->org[0]), A[1] = _mm_sub_ps(a1, q->org[1]), A[2] = _mm_sub_ps(a2, q->org[2]);
-	B[0] = _mm_sub_ps(a3, q->org[0]), B[1] = _mm_sub_ps(b0, q->org[1]), B[2] = _mm_sub_ps(b1, q->org[2]);
-	C[0] = _mm_sub_ps(b2, q->org[0]), C[1] = _mm_sub_ps(b3, q->org[1]), C[2] = _mm_sub_ps(v2z, q->org[2]);
-	__m128 Az = A[q->kz], Bz = B[q->kz], Cz = C[q->kz];
-	__m128 Ax = _mm_sub_ps(A[q->kx], _mm_mul_ps(q->sx, Az)), Ay = _mm_sub_ps(A[q->ky], _mm_mul_ps(q->sy, Az));
-	__m128 Bx = _mm_sub_ps(B[q->kx], _mm_mul_ps(q->sx, Bz)), By = _mm_sub_ps(B[q->ky], _mm_mul_ps(q->sy, Bz));
-	__m128 Cx = _mm_sub_ps(C[q->kx], _mm_mul_ps(q->sx, Cz)), Cy = _mm_sub_ps(C[q->ky], _mm_mul_ps(q->sy, Cz));
+	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(m)));
+}
+/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of the group, lanes past m zero. */
+BVH_INLINE __m128 group_load(const bvh_word *w, int m, int a, __m128 lanes)
+{
+	return _mm_and_ps(_mm_loadu_ps(&w[a * m].f), lanes);
+}
+BVH_INLINE vec3 group_vertex(const bvh_word *w, int m, int j, int vertex)
+{
+	return v3(w[(3 * vertex) * m + j].f, w[(3 * vertex + 1) * m + j].f, w[(3 * vertex + 2) * m + j].f);
+}
+BVH_INLINE uint32_t group_id(const bvh_word *w, int m, int j) { return w[9 * m + j].u; }
+
+/* The group of m triangles at w; lanes past m are zero and never reported. */
+BVH_INLINE int tri4_intersect(const tri_ray4 *q, const bvh_word *w, int m, float tlimit, int *hit_mask,
+			      float t[4], float u[4], float v[4])
+{
+	__m128 in = group_lanes(m);
+	/* The coordinate arrays are picked in the ray's axis order as they are loaded, so the
+	 * permutation costs no shuffles (and no trip through memory). */
+	__m128 Az = _mm_sub_ps(group_load(w, m, q->kz, in), q->oz);
+	__m128 Bz = _mm_sub_ps(group_load(w, m, 3 + q->kz, in), q->oz);
+	__m128 Cz = _mm_sub_ps(group_load(w, m, 6 + q->kz, in), q->oz);
+	__m128 Ax = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->kx, in), q->ox), _mm_mul_ps(q->sx, Az));
+	__m128 Ay = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->ky, in), q->oy), _mm_mul_ps(q->sy, Az));
+	__m128 Bx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Bz));
+	__m128 By = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Bz));
+	__m128 Cx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Cz));
+	__m128 Cy = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Cz));
 	__m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
 	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
 	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
 	const __m128 zero = _mm_setzero_ps();
-	int lanes = (1 << n) - 1;
+	int lanes = (1 << m) - 1;
 	int scalar = _mm_movemask_ps(_mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)),
 					       _mm_cmpeq_ps(W, zero))) & lanes;
 	__m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
@@ -579,15 +675,12 @@ static inline int tri4_intersect(const tri_ray4 *q, const bvh_tri *tr, int n, fl
 	return scalar;
 }
 
-#define LEAF_END(tr) (((tr)->id & BVH_TRI_LAST) != 0)
-
-/* How many of the leaf's triangles from tr on to test together: up to four. */
-static inline int leaf_run(const bvh_tri *tr)
+/* A leaf reference's triangles: the first, and how many. */
+static inline uint32_t leaf_first(uint32_t ref) { return ref & BVH4_FIRST_MASK; }
+static inline uint32_t leaf_count(uint32_t ref) { return (ref >> BVH4_COUNT_SHIFT & 15) + 1; }
+static inline const bvh_word *leaf_group(const bvh *b, uint32_t ref, uint32_t g)
 {
-	int n = 1;
-	while (n < 4 && !LEAF_END(&tr[n - 1]))
-		n++;
-	return n;
+	return &b->leaf[GROUP_WORDS * (size_t)(leaf_first(ref) + g)];
 }
 
 bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
@@ -647,19 +740,21 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 				continue;
 			}
 		} else {
-			/* Four triangles at a time; the hits are then taken in leaf order, as the loop
-			 * over triangles with tri_intersect takes them. */
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;;) {
-				int n = leaf_run(tr);
+			/* A group at a time. A hit is taken when closer, or as close with a lower id:
+			 * the tie rule of the loop over all triangles, whatever the order of visits. */
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
 				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, tr, n, *tlimit, &hm, t4, u4, v4);
+				int hm, sc = tri4_intersect(&q4, w, m, *tlimit, &hm, t4, u4, v4);
 				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
 					int j = lowest_bit(todo);
 					float t = t4[j], u = u4[j], v = v4[j];
-					bool h = sc >> j & 1 ? tri_intersect(r, tr[j].v0, tr[j].v1, tr[j].v2, *tlimit, &t, &u, &v)
+					bool h = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+									     group_vertex(w, m, j, 2), *tlimit, &t, &u, &v)
 							     : t <= *tlimit;
-					uint32_t id = tr[j].id & ~BVH_TRI_LAST;
+					uint32_t id = group_id(w, m, j);
 					if (h && (t < *tlimit || id < best_id)) {
 						*tlimit = t;
 						best_id = id;
@@ -667,9 +762,6 @@ bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_h
 						found = true;
 					}
 				}
-				if (LEAF_END(&tr[n - 1]))
-					break;
-				tr += n;
 			}
 		}
 		/* Pop the next entry that can still hold a hit no farther than the best. */
@@ -708,22 +800,21 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
 				continue;
 			}
 		} else {
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;;) {
-				int n = leaf_run(tr);
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
 				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, tr, n, r->tmax, &hm, t4, u4, v4);
+				int hm, sc = tri4_intersect(&q4, w, m, r->tmax, &hm, t4, u4, v4);
 				if (hm)
 					return true;
 				for (; sc != 0; sc &= sc - 1) {
-					const bvh_tri *s1 = &tr[lowest_bit(sc)];
+					int j = lowest_bit(sc);
 					float t, u, v;
-					if (tri_intersect(r, s1->v0, s1->v1, s1->v2, r->tmax, &t, &u, &v))
+					if (tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+							  group_vertex(w, m, j, 2), r->tmax, &t, &u, &v))
 						return true;
 				}
-				if (LEAF_END(&tr[n - 1]))
-					break;
-				tr += n;
 			}
 		}
 		if (sp == 0)
@@ -753,9 +844,9 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray)
 /* A circle prepared for box tests: its plane normal m = t x n and the slack. */
 typedef struct circle_prep {
 	vec3 lo, hi; /* the circle's own bounds, grown by the slack */
-	vec3 c, t, m;
+	vec3 c, t, n, m;
 	float r, slack, rmax2, rmin2; /* rmin2 < 0: no inner bound */
-	bool full;
+	bool full, in_plane; /* in_plane: t and n orthonormal enough for the in-plane tests */
 } circle_prep;
 
 /* The slack covers rounding of box and circle data of magnitude up to `extent` (the largest
@@ -765,7 +856,10 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	if (!v3_is_finite(q->centre) || !v3_is_finite(q->t) || !v3_is_finite(q->n) || !isfinite(q->radius) ||
 	    q->radius < 0.0f)
 		return false;
-	p->c = q->centre, p->t = q->t, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
+	p->c = q->centre, p->t = q->t, p->n = q->n, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
+	float ortho = fmax3(v3(fabsf(v3_dot(q->t, q->t) - 1.0f), fabsf(v3_dot(q->n, q->n) - 1.0f),
+			       fabsf(v3_dot(q->t, q->n))));
+	p->in_plane = ortho <= BVH_CIRCLE_ORTHO_TOL;
 	p->slack = BVH_CIRCLE_SLACK * (q->radius + fmax3(v3_abs(q->centre)) + extent);
 	p->rmax2 = (p->r + p->slack) * (p->r + p->slack);
 	float rmin = p->r - p->slack;
@@ -799,7 +893,16 @@ static bool box_circle(const circle_prep *p, vec3 lo, vec3 hi)
 	vec3 a = v3_abs(rel);
 	vec3 dn = vmax(v3_sub(a, e), v3s(0.0f)), df = v3_add(a, e);
 	bool shell = (v3_length2(dn) <= p->rmax2) & (v3_length2(df) >= p->rmin2);
-	return bounds & plane & side & shell;
+	/* The same in the plane: the box's part in the plane projects, in the axes t and n, into
+	 * the rectangle of its projections, so its distances to the centre lie between the
+	 * rectangle's nearest and farthest. Tighter than the sphere for boxes that stick out of
+	 * the plane (the sphere counts that part). */
+	float pt = fabsf(v3_dot(p->t, rel)), et = v3_dot(v3_abs(p->t), e);
+	float pn = fabsf(v3_dot(p->n, rel)), en = v3_dot(v3_abs(p->n), e);
+	float nt = pt - et > 0.0f ? pt - et : 0.0f, nn = pn - en > 0.0f ? pn - en : 0.0f;
+	float ft = pt + et, fn = pn + en;
+	bool ring = (!p->in_plane) | ((nt * nt + nn * nn <= p->rmax2) & (ft * ft + fn * fn >= p->rmin2));
+	return bounds & plane & side & shell & ring;
 }
 
 static float box_extent(vec3 lo, vec3 hi) { return fmax3(vmax(v3_abs(lo), v3_abs(hi))); }
@@ -814,23 +917,26 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
  * order, so each lane is exactly as conservative as the scalar test. An empty child fails the
  * bounds test (lo = +inf). */
 typedef struct circle_prep4 {
-	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3];
+	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3], n[3], abs_n[3];
 	__m128 slack, neg_slack, rmax2, rmin2;
-	bool full;
+	__m128 radius; /* for group_circle */
+	bool full, in_plane;
 } circle_prep4;
 
 static void circle_prepare4(const circle_prep *p, circle_prep4 *q)
 {
-	vec3 am = v3_abs(p->m), at = v3_abs(p->t);
+	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
 	for (int i = 0; i < 3; i++) {
 		q->lo[i] = _mm_set1_ps(v3_get(p->lo, i)), q->hi[i] = _mm_set1_ps(v3_get(p->hi, i));
 		q->c[i] = _mm_set1_ps(v3_get(p->c, i));
 		q->m[i] = _mm_set1_ps(v3_get(p->m, i)), q->abs_m[i] = _mm_set1_ps(v3_get(am, i));
 		q->t[i] = _mm_set1_ps(v3_get(p->t, i)), q->abs_t[i] = _mm_set1_ps(v3_get(at, i));
+		q->n[i] = _mm_set1_ps(v3_get(p->n, i)), q->abs_n[i] = _mm_set1_ps(v3_get(an, i));
 	}
 	q->slack = _mm_set1_ps(p->slack), q->neg_slack = _mm_set1_ps(-p->slack);
 	q->rmax2 = _mm_set1_ps(p->rmax2), q->rmin2 = _mm_set1_ps(p->rmin2);
-	q->full = p->full;
+	q->radius = _mm_set1_ps(p->r);
+	q->full = p->full, q->in_plane = p->in_plane;
 }
 
 static inline __m128 abs4(__m128 x) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), x); }
@@ -859,7 +965,152 @@ static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
 		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(dot4(p->t, rel), dot4(p->abs_t, e)), p->neg_slack));
 	ok = _mm_and_ps(ok, _mm_cmple_ps(dot4(dn, dn), p->rmax2));
 	ok = _mm_and_ps(ok, _mm_cmpge_ps(dot4(df, df), p->rmin2));
+	if (p->in_plane) {
+		__m128 pt = abs4(dot4(p->t, rel)), et = dot4(p->abs_t, e);
+		__m128 pn = abs4(dot4(p->n, rel)), en = dot4(p->abs_n, e);
+		__m128 nt = _mm_max_ps(_mm_sub_ps(pt, et), zero), nn = _mm_max_ps(_mm_sub_ps(pn, en), zero);
+		__m128 ft = _mm_add_ps(pt, et), fn = _mm_add_ps(pn, en);
+		ok = _mm_and_ps(ok, _mm_cmple_ps(_mm_add_ps(_mm_mul_ps(nt, nt), _mm_mul_ps(nn, nn)), p->rmax2));
+		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(_mm_mul_ps(ft, ft), _mm_mul_ps(fn, fn)), p->rmin2));
+	}
 	return _mm_movemask_ps(ok);
+}
+
+/* Relative size of the margins of group_circle: tri_circle_intersect's float pre-test's. */
+#define GROUP_CIRCLE_MARGIN 1e-5f
+
+/* The triangles of a group that may meet the circle (a lane mask): cheap float tests that reject
+ * only triangles tri_circle_intersect gives no hit for, so its double-precision work is spent on
+ * few. (1) Its plane pre-test, the same operations in the same order: all vertices clearly on one
+ * side of the circle's plane. Then, with the margin grown by the radius's rounding: (2) all
+ * vertices inside the sphere of radius r about the centre (the triangle, convex, lies inside:
+ * its segment cannot reach the circle); (3) the triangle's box entirely outside that sphere; (4)
+ * for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3) in the plane,
+ * with the vertices projected on the axes t and n: the segment lies in the projected triangle;
+ * (7) the segment itself (segment_misses). */
+static inline __m128 select4(__m128 mask, __m128 a, __m128 b)
+{
+	return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+/* The lanes of group_circle whose plane segment surely misses the circle. Taken only where all
+ * vertices are clearly off the plane (|d| > margin, d's error bound), so the edges that cross it
+ * are the exact test's two. An end on edge (i, j) is rel_i + s (rel_j - rel_i) with
+ * s = d_i / (d_i - d_j); errors of up to margin in d_i and d_j move s by at most
+ * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
+ * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
+ * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
+BVH_INLINE int segment_misses(const circle_prep4 *p, __m128 rel[3][3], const __m128 d[3], __m128 margin,
+			      __m128 sm)
+{
+	const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+	__m128 ad[3] = {abs4(d[0]), abs4(d[1]), abs4(d[2])};
+	__m128 sure = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(ad[0], margin), _mm_cmpgt_ps(ad[1], margin)),
+				 _mm_cmpgt_ps(ad[2], margin));
+	if (!_mm_movemask_ps(sure))
+		return 0;
+	__m128 two_margin = _mm_add_ps(margin, margin);
+	__m128 x[3][3], err[3], crosses[3];
+	for (int e = 0; e < 3; e++) {
+		int i = e, j = e == 2 ? 0 : e + 1;
+		__m128 s = _mm_div_ps(d[i], _mm_sub_ps(d[i], d[j]));
+		__m128 l1 = zero;
+		for (int a = 0; a < 3; a++) {
+			__m128 dv = _mm_sub_ps(rel[j][a], rel[i][a]);
+			x[e][a] = _mm_add_ps(rel[i][a], _mm_mul_ps(s, dv));
+			l1 = _mm_add_ps(l1, abs4(dv));
+		}
+		err[e] = _mm_div_ps(_mm_mul_ps(two_margin, l1), _mm_sub_ps(_mm_add_ps(ad[i], ad[j]), two_margin));
+		crosses[e] = _mm_xor_ps(_mm_cmplt_ps(d[i], zero), _mm_cmplt_ps(d[j], zero));
+	}
+	/* The two crossing edges: (0, 1), (0, 2) or (1, 2). */
+	__m128 e1[3], e2[3];
+	for (int a = 0; a < 3; a++)
+		e1[a] = select4(crosses[0], x[0][a], x[1][a]), e2[a] = select4(crosses[2], x[2][a], x[1][a]);
+	__m128 err_max = _mm_max_ps(select4(crosses[0], err[0], err[1]), select4(crosses[2], err[2], err[1]));
+	__m128 slack = _mm_add_ps(sm, err_max);
+	__m128 rin = _mm_sub_ps(p->radius, slack), rout = _mm_add_ps(p->radius, slack);
+	__m128 rin2 = _mm_mul_ps(rin, rin);
+	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(dot4(e1, e1), rin2), _mm_cmplt_ps(dot4(e2, e2), rin2)),
+				   _mm_cmpgt_ps(rin, zero));
+	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
+	 * from D = 0 clamps to 0 (maxps returns its second operand on NaN). */
+	__m128 dd[3];
+	for (int a = 0; a < 3; a++)
+		dd[a] = _mm_sub_ps(e2[a], e1[a]);
+	__m128 f = _mm_div_ps(_mm_sub_ps(zero, dot4(e1, dd)), dot4(dd, dd));
+	f = _mm_min_ps(_mm_max_ps(f, zero), one);
+	__m128 near[3];
+	for (int a = 0; a < 3; a++)
+		near[a] = _mm_add_ps(e1[a], _mm_mul_ps(f, dd[a]));
+	__m128 miss = _mm_or_ps(inside, _mm_cmpgt_ps(dot4(near, near), _mm_mul_ps(rout, rout)));
+	if (!p->full) {
+		__m128 neg = _mm_sub_ps(zero, slack);
+		miss = _mm_or_ps(miss, _mm_and_ps(_mm_cmplt_ps(dot4(p->t, e1), neg), _mm_cmplt_ps(dot4(p->t, e2), neg)));
+	}
+	return _mm_movemask_ps(_mm_and_ps(sure, miss));
+}
+
+BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
+{
+	const __m128 zero = _mm_setzero_ps();
+	__m128 in = group_lanes(m);
+	__m128 rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
+	for (int a = 0; a < 3; a++) {
+		__m128 v0 = group_load(w, m, a, in), v1 = group_load(w, m, 3 + a, in), v2 = group_load(w, m, 6 + a, in);
+		rel[0][a] = _mm_sub_ps(v0, p->c[a]), rel[1][a] = _mm_sub_ps(v1, p->c[a]);
+		rel[2][a] = _mm_sub_ps(v2, p->c[a]);
+		mag[a] = _mm_add_ps(_mm_add_ps(abs4(v0), abs4(v1)), _mm_add_ps(abs4(v2), abs4(p->c[a])));
+	}
+	__m128 margin = _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), _mm_add_ps(_mm_add_ps(mag[0], mag[1]), mag[2]));
+	__m128 neg_margin = _mm_sub_ps(zero, margin);
+	__m128 d[3], r2[3], ct[3], st[3];
+	for (int v = 0; v < 3; v++) {
+		d[v] = dot4(p->m, rel[v]);
+		r2[v] = dot4(rel[v], rel[v]);
+		ct[v] = dot4(p->t, rel[v]);
+		st[v] = dot4(p->n, rel[v]);
+	}
+	__m128 above = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(d[0], margin), _mm_cmpgt_ps(d[1], margin)),
+				  _mm_cmpgt_ps(d[2], margin));
+	__m128 below = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(d[0], neg_margin), _mm_cmplt_ps(d[1], neg_margin)),
+				  _mm_cmplt_ps(d[2], neg_margin));
+	__m128 reject = _mm_or_ps(above, below);
+	__m128 sm = _mm_add_ps(margin, _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), p->radius));
+	__m128 rin = _mm_sub_ps(p->radius, sm), rout = _mm_add_ps(p->radius, sm);
+	__m128 rin2 = _mm_mul_ps(rin, rin), rout2 = _mm_mul_ps(rout, rout);
+	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(r2[0], rin2), _mm_cmplt_ps(r2[1], rin2)),
+				   _mm_and_ps(_mm_cmplt_ps(r2[2], rin2), _mm_cmpgt_ps(rin, zero)));
+	__m128 near2 = zero;
+	for (int a = 0; a < 3; a++) {
+		__m128 lo = _mm_min_ps(_mm_min_ps(rel[0][a], rel[1][a]), rel[2][a]);
+		__m128 hi = _mm_max_ps(_mm_max_ps(rel[0][a], rel[1][a]), rel[2][a]);
+		__m128 dn = _mm_max_ps(_mm_max_ps(lo, _mm_sub_ps(zero, hi)), zero);
+		near2 = _mm_add_ps(near2, _mm_mul_ps(dn, dn));
+	}
+	reject = _mm_or_ps(reject, _mm_or_ps(inside, _mm_cmpgt_ps(near2, rout2)));
+	if (p->in_plane) {
+		__m128 q2[3];
+		for (int v = 0; v < 3; v++)
+			q2[v] = _mm_add_ps(_mm_mul_ps(ct[v], ct[v]), _mm_mul_ps(st[v], st[v]));
+		__m128 inside2 = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(q2[0], rin2), _mm_cmplt_ps(q2[1], rin2)),
+					    _mm_and_ps(_mm_cmplt_ps(q2[2], rin2), _mm_cmpgt_ps(rin, zero)));
+		__m128 tlo = _mm_min_ps(_mm_min_ps(ct[0], ct[1]), ct[2]), thi = _mm_max_ps(_mm_max_ps(ct[0], ct[1]), ct[2]);
+		__m128 nlo = _mm_min_ps(_mm_min_ps(st[0], st[1]), st[2]), nhi = _mm_max_ps(_mm_max_ps(st[0], st[1]), st[2]);
+		__m128 dt = _mm_max_ps(_mm_max_ps(tlo, _mm_sub_ps(zero, thi)), zero);
+		__m128 dn = _mm_max_ps(_mm_max_ps(nlo, _mm_sub_ps(zero, nhi)), zero);
+		__m128 near2d = _mm_add_ps(_mm_mul_ps(dt, dt), _mm_mul_ps(dn, dn));
+		reject = _mm_or_ps(reject, _mm_or_ps(inside2, _mm_cmpgt_ps(near2d, rout2)));
+	}
+	if (!p->full) {
+		__m128 neg_sm = _mm_sub_ps(zero, sm);
+		reject = _mm_or_ps(reject, _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(ct[0], neg_sm), _mm_cmplt_ps(ct[1], neg_sm)),
+						      _mm_cmplt_ps(ct[2], neg_sm)));
+	}
+	int lanes = (1 << m) - 1, left = ~_mm_movemask_ps(reject) & lanes;
+	if (left)
+		left &= ~segment_misses(p, rel, d, margin, sm);
+	return left;
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
@@ -885,18 +1136,22 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 				continue;
 			}
 		} else {
-			const bvh_tri *tr = &b->tris[ref & ~BVH4_LEAF];
-			for (;; tr++) {
-				tri_circle_hit h[2];
-				int nh = tri_circle_intersect(q, tr->v0, tr->v1, tr->v2, h);
-				for (int k = 0; k < nh; k++, total++) {
-					if (total < max_hits) {
-						hits[total] = h[k];
-						hits[total].prim = tr->id & ~BVH_TRI_LAST;
+			uint32_t count = leaf_count(ref);
+			for (uint32_t g = 0; g < count; g += 4) {
+				int m = count - g < 4 ? (int)(count - g) : 4;
+				const bvh_word *w = leaf_group(b, ref, g);
+				for (int cand = group_circle(&p4, w, m); cand != 0; cand &= cand - 1) {
+					int j = lowest_bit(cand);
+					tri_circle_hit h[2];
+					int nh = tri_circle_intersect(q, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
+								      group_vertex(w, m, j, 2), h);
+					for (int k = 0; k < nh; k++, total++) {
+						if (total < max_hits) {
+							hits[total] = h[k];
+							hits[total].prim = group_id(w, m, j);
+						}
 					}
 				}
-				if (LEAF_END(tr))
-					break;
 			}
 		}
 		if (sp == 0)

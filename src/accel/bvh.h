@@ -30,8 +30,9 @@ typedef struct bvh_hit {
 	uint32_t prim, inst;
 } bvh_hit;
 
-/* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out or an index
- * is out of range (num_vertices bounds them). An empty mesh gives a valid bvh that hits nothing. */
+/* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out, an index
+ * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh
+ * gives a valid bvh that hits nothing. */
 bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *indices,
 	       uint32_t num_triangles);
 void bvh_free(bvh *b);
@@ -67,7 +68,9 @@ uint32_t bvh_num_nodes(const bvh *b);
 vec3 bvh_offset_origin(vec3 p, vec3 n);
 
 /* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
- * the boxes' centroids. perm receives the order of the boxes in the leaves. Internal to accel. */
+ * the boxes' centroids, pricing a leaf by its count rounded up to whole leaf_blocks (the
+ * primitives its test takes at once). perm receives the order of the boxes in the leaves.
+ * Internal to accel. */
 typedef struct bvh_node {
 	float lo[3];
 	uint32_t first; /* leaf: first primitive in perm order; inner: index of the second child */
@@ -75,11 +78,11 @@ typedef struct bvh_node {
 	uint32_t count; /* leaf: number of primitives (> 0); inner: BVH_INNER | split axis */
 } bvh_node;
 #define BVH_INNER 0x80000000u
-/* Max primitives in a leaf when SAH prefers it; leaves exceed it only at max depth. */
+/* Max primitives in a leaf (SAH decides below it). */
 #define BVH_MAX_LEAF 8
 /* Max depth of a tree: traversal stacks hold this many entries. */
 #define BVH_MAX_DEPTH 62
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, bvh_node **nodes,
+bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes,
 		     uint32_t *num_nodes, uint32_t *perm);
 static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }
 static inline vec3 bvh_node_hi(const bvh_node *nd) { return v3(nd->hi[0], nd->hi[1], nd->hi[2]); }

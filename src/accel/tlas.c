@@ -67,7 +67,7 @@ tlas *tlas_build(const tlas_instance *instances, uint32_t count)
 		lo[i] = v3_sub(lo[i], pad), hi[i] = v3_add(hi[i], pad);
 	}
 	if (ok)
-		ok = bvh_build_nodes(lo, hi, count, &t->nodes, &t->num_nodes, t->order);
+		ok = bvh_build_nodes(lo, hi, count, 1, &t->nodes, &t->num_nodes, t->order);
 	mem_free(lo), mem_free(hi);
 	if (!ok) {
 		tlas_free(t);
