@@ -64,7 +64,9 @@ uint32_t bvh_num_nodes(const bvh *b);
 /* The origin of a ray leaving a surface at p with geometric normal n (pointing to the side the ray
  * goes to), moved off the surface so the ray cannot hit the triangle it left: Waechter & Binder
  * 2019, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, listing
- * 6-1. Valid for coordinates from 1e-8 to 1e8. */
+ * 6-1. It sizes the offset by p's coordinates, with a fixed 1/65536 below 1/32, which is far too
+ * large for small scenes and too small for a point in the middle of a large triangle: rays from a
+ * known triangle use bvh_offset_scaled (offset.h), this is its fallback for an unknown one. */
 vec3 bvh_offset_origin(vec3 p, vec3 n);
 
 /* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over

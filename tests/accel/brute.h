@@ -34,12 +34,40 @@ static inline long test_count(long n)
 	return div > 1 ? (n / div > 0 ? n / div : 1) : n;
 }
 
+/* The bunny of scenes/assets, centred on the origin and scaled to about unit size. */
+static inline bool test_unit_bunny(mesh *bunny, diag *d)
+{
+	if (!mesh_import(test_path("scenes/assets/bunny/bunny_npm.obj"), bunny, d))
+		return false;
+	vec3 lo, hi;
+	mesh_bounds(bunny, &lo, &hi);
+	vec3 mid = v3_scale(v3_add(lo, hi), 0.5f);
+	float ext = v3_max_comp(v3_sub(hi, lo));
+	for (uint32_t v = 0; v < bunny->num_vertices; v++)
+		bunny->positions[v] = v3_scale(v3_sub(bunny->positions[v], mid), 1.0f / ext);
+	return true;
+}
+
 static inline vec3 test_tri_vertex(const mesh *m, uint32_t f, int c)
 {
 	return m->positions[m->indices[3 * f + c]];
 }
 
 /* A uniformly random point of triangle f. */
+/* The point of hit h on m from its barycentrics (exactly on the triangle), and in *ng the
+ * triangle's unit geometric normal by its winding; *scale (may be NULL) the triangle's largest
+ * |coordinate| (accel/offset.h's scale). */
+static inline vec3 test_hit_point(const mesh *m, const bvh_hit *h, vec3 *ng, float *scale)
+{
+	vec3 v0 = test_tri_vertex(m, h->prim, 0), v1 = test_tri_vertex(m, h->prim, 1), v2 = test_tri_vertex(m, h->prim, 2);
+	*ng = v3_normalize(v3_cross(v3_sub(v1, v0), v3_sub(v2, v0)));
+	if (scale) {
+		vec3 a = v3_max(v3_max(v3_abs(v0), v3_abs(v1)), v3_abs(v2));
+		*scale = fmaxf(a.x, fmaxf(a.y, a.z));
+	}
+	return v3_add(v3_add(v3_scale(v0, 1.0f - h->u - h->v), v3_scale(v1, h->u)), v3_scale(v2, h->v));
+}
+
 static inline vec3 test_point_on(const mesh *m, uint32_t f, rng *g)
 {
 	float a = rng_float(g), b = rng_float(g);

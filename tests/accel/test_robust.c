@@ -2,6 +2,7 @@
  * vertices, and rays spawned from hits at coordinates 1e-8 to 1e8 never hit their own triangle. */
 #include "check.h"
 #include "brute.h"
+#include "accel/offset.h"
 #include "geom/prim.h"
 #include "geom/subdiv.h"
 
@@ -80,7 +81,10 @@ static void check_watertight(long count)
 }
 
 /* The bunny scaled to coordinates of magnitude `scale` (and moved by `shift` scales): rays hit
- * it, and rays spawned from the hit points on either side never hit the same triangle. */
+ * it, and rays spawned from the hit points on either side, offset as the renderer does
+ * (bvh_offset_scaled), never hit the same triangle; and the offset is the same fraction of the
+ * triangle's scale at every scale (Waechter & Binder's point-sized one, printed beside it, is
+ * not). */
 static void check_spawn(const mesh *unit, double scale, double shift, long count, uint64_t seed)
 {
 	mesh m = *unit;
@@ -96,15 +100,16 @@ static void check_spawn(const mesh *unit, double scale, double shift, long count
 	rng g;
 	rng_seed(&g, seed, 4);
 	long self = 0, hits = 0;
+	double rel = 0.0, wb_rel = 0.0;
 	for (long i = 0; i < count && b; i++) {
 		bvh_ray r = test_random_ray(&m, lo, hi, &g);
 		bvh_hit h;
 		if (!bvh_intersect(b, &r, &h))
 			continue;
 		hits++;
-		vec3 v0 = test_tri_vertex(&m, h.prim, 0), v1 = test_tri_vertex(&m, h.prim, 1), v2 = test_tri_vertex(&m, h.prim, 2);
-		vec3 p = v3_add(v3_add(v3_scale(v0, 1.0f - h.u - h.v), v3_scale(v1, h.u)), v3_scale(v2, h.v));
-		vec3 ng = v3_normalize(v3_cross(v3_sub(v1, v0), v3_sub(v2, v0)));
+		vec3 ng;
+		float sc;
+		vec3 p = test_hit_point(&m, &h, &ng, &sc);
 		if (v3_dot(ng, r.dir) > 0.0f)
 			ng = v3_neg(ng);
 		for (int side = 0; side < 2; side++) {
@@ -112,7 +117,10 @@ static void check_spawn(const mesh *unit, double scale, double shift, long count
 			vec3 d = test_unit_vector(&g);
 			if (v3_dot(d, n) < 0.0f)
 				d = v3_neg(d);
-			bvh_ray s = {bvh_offset_origin(p, n), d, 0.0f, INFINITY};
+			vec3 o = bvh_offset_scaled(p, n, sc);
+			rel = fmax(rel, v3_length(v3_sub(o, p)) / sc);
+			wb_rel = fmax(wb_rel, v3_length(v3_sub(bvh_offset_origin(p, n), p)) / sc);
+			bvh_ray s = {o, d, 0.0f, INFINITY};
 			bvh_hit h2;
 			if (bvh_intersect(b, &s, &h2) && h2.prim == h.prim && self++ < 5)
 				CHECK(0, "scale %g: the ray spawned from triangle %u (side %d) hit it again at t %g", scale, h.prim,
@@ -120,6 +128,10 @@ static void check_spawn(const mesh *unit, double scale, double shift, long count
 		}
 	}
 	CHECK(self == 0 && hits > count / 4, "scale %g shift %g: %ld self-hits among %ld hits", scale, shift, self, hits);
+	printf("scale %g shift %g: offset at most %.3g of the triangle's scale (Waechter & Binder: %.3g)\n", scale,
+	       shift, rel, wb_rel);
+	CHECK(rel <= 1.01 * BVH_OFFSET_REL && rel > 0.5 * BVH_OFFSET_REL, "scale %g: offset %.3g of the scale, expected %.3g",
+	      scale, rel, (double)BVH_OFFSET_REL);
 	bvh_free(b);
 	free(m.positions);
 }
@@ -130,14 +142,7 @@ int main(void)
 	diag d;
 	diag_init(&d, stderr);
 	mesh bunny;
-	if (mesh_import(test_path("scenes/assets/bunny/bunny_npm.obj"), &bunny, &d)) {
-		/* Normalise the bunny to about unit size around the origin. */
-		vec3 lo, hi;
-		mesh_bounds(&bunny, &lo, &hi);
-		vec3 mid = v3_scale(v3_add(lo, hi), 0.5f);
-		float ext = v3_max_comp(v3_sub(hi, lo));
-		for (uint32_t v = 0; v < bunny.num_vertices; v++)
-			bunny.positions[v] = v3_scale(v3_sub(bunny.positions[v], mid), 1.0f / ext);
+	if (test_unit_bunny(&bunny, &d)) {
 		for (int e = -8; e <= 8; e += 2) {
 			check_spawn(&bunny, pow(10.0, e), 0.0, test_count(20000), 100 + e);
 			check_spawn(&bunny, pow(10.0, e), 3.0, test_count(20000), 200 + e);

@@ -173,7 +173,7 @@ int main(void)
 		for (uint32_t k = 0; k < whole.spp; k++) {
 			rng g = rng_for_sample(1234, px, py, k);
 			vec2 pu = v2(rng_float(&g), rng_float(&g)), lu = v2(rng_float(&g), rng_float(&g));
-			render_settings set = {5, RENDER_MIS};
+			render_settings set = {.max_trace_level = 5, .mode = RENDER_MIS};
 			render_sample smp =
 			    render_path(&scene.rs, &set, cam_ray(&camera, px, py, pu, lu), &g);
 			const float c[3] = {smp.radiance.x, smp.radiance.y, smp.radiance.z};
