@@ -3,12 +3,14 @@
  * flattened the same way but with their polygons kept. */
 #include "geom/cage.h"
 #include "geom/mesh.h"
+#include "geom/ply.h"
 
 #include "base/mem.h"
 
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <stdio.h>
 #include <string.h>
 
 /* Counts the triangles and vertices the node tree will produce (meshes may be instanced by
@@ -92,6 +94,11 @@ static void fill_node(const struct aiScene *s, const struct aiNode *nd, xform pa
 bool mesh_import(const char *path, mesh *out, diag *d)
 {
 	memset(out, 0, sizeof *out);
+	char why[256];
+	if (!ply_check_file(path, why, sizeof why)) {
+		diag_file_error(d, path, "cannot import mesh: %s", why);
+		return false;
+	}
 	const struct aiScene *s = aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
 							     aiProcess_SortByPType);
 	if (!s) {
@@ -162,6 +169,12 @@ bool cage_import_assimp(const char *path, cage_raw *raw, char *buf, size_t len, 
 {
 	/* No aiProcess_Triangulate: a cage keeps its quads and n-gons. No JoinIdenticalVertices
 	 * either: cage.c welds by position, whatever the other attributes. */
+	char ply_why[200];
+	if (!ply_check_file(path, ply_why, sizeof ply_why)) {
+		snprintf(buf, len, "cannot import it: %s", ply_why);
+		*why = buf;
+		return false;
+	}
 	const struct aiScene *s = aiImportFile(path, aiProcess_ValidateDataStructure);
 	if (!s) {
 		snprintf(buf, len, "cannot import it: %s", aiGetErrorString());

@@ -2,6 +2,7 @@
  * tangents and transforms. */
 #include "check.h"
 #include "geom/mesh.h"
+#include "geom/ply.h"
 #include "geom/prim.h"
 
 #include <stdio.h>
@@ -148,7 +149,14 @@ static void check_import(void)
 	diag_init(&d, log);
 	mesh m;
 	CHECK(!mesh_import("no/such/file.obj", &m, &d) && d.errors == 1, "a missing file is an error");
-	/* (A malformed PLY header makes Assimp 5 loop forever, so the broken file is an OBJ.) */
+	/* A truncated PLY (Assimp 5 would abort on it: ply.c checks first). */
+	f = fopen("test_mesh_short.ply", "w");
+	fputs("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+	      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n",
+	      f);
+	fclose(f);
+	CHECK(!mesh_import("test_mesh_short.ply", &m, &d), "a truncated PLY is an error");
+	remove("test_mesh_short.ply");
 	f = fopen("test_mesh_bad.obj", "w");
 	fputs("v 0 0 0\nf 1 2 3\n", f);
 	fclose(f);
@@ -157,14 +165,81 @@ static void check_import(void)
 	rewind(log);
 	char text[2048] = {0};
 	fread(text, 1, sizeof text - 1, log);
-	CHECK(strstr(text, "no/such/file.obj: error: cannot import mesh: ") && strstr(text, "test_mesh_bad.obj: error: cannot import mesh: OBJ: vertex index out of range"),
+	CHECK(strstr(text, "no/such/file.obj: error: cannot import mesh: ") &&
+		  strstr(text, "test_mesh_bad.obj: error: cannot import mesh: OBJ: vertex index out of range") &&
+		  strstr(text, "test_mesh_short.ply: error: cannot import mesh: the PLY data ends in element 'face' 1 of "
+			       "the 1 its header declares (a truncated file?)"),
 	      "messages: %s", text);
 	fclose(log);
 	diag_free(&d);
 }
 
+/* ply_check on files in memory: each structural fault with its reason, and complete files of
+ * every format pass (a binary one truncated by a byte does not). */
+static void check_ply(void)
+{
+	const char *vtx = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+	const char *face = "element face 1\nproperty list uchar int vertex_indices\n";
+	static const struct {
+		const char *text, *why; /* why NULL: passes */
+	} cases[] = {
+	    {"not a ply file at all", NULL},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", NULL},
+	    {"ply\r\nformat ascii 1.0\r\ncomment made by hand\r\n%s%send_header\r\n0 0 0 1 0 0 0 1 0 3 0 1 2", NULL},
+	    {"ply\nformat ascii 1.0\n%s%s", "the PLY header has no end_header line (a truncated file?)"},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 0 0\n0 1 0\n",
+	     "the PLY data ends in element 'face' 1 of the 1 its header declares (a truncated file?)"},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
+	     "the PLY data ends in element 'face' 1 of the 1 its header declares (a truncated file?)"},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",
+	     "the PLY data has 'zero' where element 'vertex' 1 needs a number"},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 0 0\n0 1 0\n99999 0 1 2\n",
+	     "a list of PLY element 'face' 0 has a count outside 0 to 65535"},
+	    {"ply\nformat ascii 1.0\n%s%send_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",
+	     "a list of PLY element 'face' 0 has a count outside 0 to 65535"},
+	    {"ply\nformat utf8 1.0\n%s%send_header\n", "unknown PLY format 'utf8'"},
+	    {"ply\n%s%send_header\n", "the PLY header has no format line"},
+	    {"ply\nformat ascii 1.0\nproperty float x\n%s%send_header\n", "a PLY property comes before any element"},
+	    {"ply\nformat ascii 1.0\n%s%sproperty quad q\nend_header\n", "unknown PLY type 'quad'"},
+	    {"ply\nformat ascii 1.0\n%s%sproperty list float int q\nend_header\n",
+	     "the count type of a PLY list must be an integer type, not 'float'"},
+	    {"ply\nformat ascii 1.0\nelement vertex many\n%s%send_header\n",
+	     "the count of PLY element 'vertex' is 'many', not a number"},
+	    {"ply\nformat ascii 1.0\n%s%swhatever this is\nend_header\n",
+	     "unexpected line in the PLY header: 'whatever this is'"},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+		char text[1024], why[256] = "";
+		snprintf(text, sizeof text, cases[i].text, vtx, face);
+		bool ok = ply_check(text, strlen(text), why, sizeof why);
+		CHECK(cases[i].why ? !ok && !strcmp(why, cases[i].why) : ok, "case %zu: %s, reason '%s', expected '%s'", i,
+		      ok ? "passes" : "refused", why, cases[i].why ? cases[i].why : "(passes)");
+	}
+	/* Binary, both byte orders: 3 vertices of 3 floats, one face of a uchar count and 3 ints. */
+	for (int big = 0; big < 2; big++) {
+		char buf[512];
+		int n = snprintf(buf, sizeof buf, "ply\nformat binary_%s_endian 1.0\n%s%send_header\n", big ? "big" : "little",
+				 vtx, face);
+		memset(buf + n, 0, 36), n += 36;
+		buf[n++] = 3;
+		for (int k = 0; k < 3; k++) {
+			unsigned char idx[4] = {0, 0, 0, 0};
+			idx[big ? 3 : 0] = (unsigned char)k;
+			memcpy(buf + n, idx, 4), n += 4;
+		}
+		char why[256] = "";
+		CHECK(ply_check(buf, (size_t)n, why, sizeof why), "binary %s: refused: %s", big ? "big" : "little", why);
+		CHECK(!ply_check(buf, (size_t)n - 1, why, sizeof why) &&
+			  !strcmp(why, "the PLY data ends in element 'face' 1 of the 1 its header declares (a truncated file?)"),
+		      "binary %s, one byte short: '%s'", big ? "big" : "little", why);
+		buf[n - 13] = (char)200; /* a count of 200 items that are not there */
+		CHECK(!ply_check(buf, (size_t)n, why, sizeof why), "binary %s, a long list past the end", big ? "big" : "little");
+	}
+}
+
 int main(void)
 {
+	check_ply();
 	check_prims();
 	check_arrays();
 	check_import();

@@ -1,6 +1,7 @@
 #!/bin/sh
 # bad_scenes: every tests/bad/*.pov must make `circe check` exit 3 (never crash) with exactly the
-# diagnostics of its .err sidecar: the header lines `file:line:col: error|note: message`.
+# diagnostics of its .err sidecar: the header lines `file:line:col: error|note: message` (and
+# `file: error: message` for a file that has no line to quote).
 # With CIRCE_VALGRIND=1 (and $VALGRIND from configure) each case also runs under valgrind.
 set -u
 : "${CIRCE:?set CIRCE to the circe binary}" "${srcdir:?set srcdir to the source tree}"
@@ -23,7 +24,7 @@ for pov in *.pov; do
 		"$CIRCE" check "$pov" >"$tmp/out" 2>"$tmp/err"
 	fi
 	rc=$?
-	grep -E '^[^ :]+:[0-9]+:[0-9]+: (error|note): |^circe: (error|note): ' "$tmp/err" >"$tmp/got"
+	grep -E '^[^ :]+:([0-9]+:[0-9]+:)? (error|note): |^circe: (error|note): ' "$tmp/err" >"$tmp/got"
 	if [ $rc -ne 3 ]; then
 		echo "FAIL $pov: exit status $rc, expected 3"
 		head -20 "$tmp/err"
