@@ -104,6 +104,20 @@ typedef struct tri_circle_hit {
 	uint32_t prim, inst;
 } tri_circle_hit;
 
+/* The canonical order of circle hits (a qsort comparator): by instance, triangle, then angle.
+ * A traversal reports hits in an order that depends on every box test on the way, not only on the
+ * hits; a caller that picks among hits sorts them first, so its choice (and the image) does not
+ * change when the tree is built or traversed differently. */
+static inline int tri_circle_hit_cmp(const void *a, const void *b)
+{
+	const tri_circle_hit *x = a, *y = b;
+	if (x->inst != y->inst)
+		return x->inst < y->inst ? -1 : 1;
+	if (x->prim != y->prim)
+		return x->prim < y->prim ? -1 : 1;
+	return x->theta < y->theta ? -1 : x->theta > y->theta ? 1 : 0;
+}
+
 /* Exact circle/triangle test, in double: the triangle is clipped to the circle's plane, giving a
  * segment, and the segment is solved against the circle. Writes up to two hits to out and returns
  * their number. A triangle lying in the circle's plane gives none: the circle would run inside it,

@@ -14,6 +14,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The grey of an object without a material: mid-grey diffuse. */
@@ -422,6 +423,7 @@ static uint32_t world_circle(void *user, const render_hit *at, const tri_circle 
 	uint32_t only = group < 0 ? w->inst_top[at->object] : TLAS_ALL_INSTANCES;
 	uint32_t total = tlas_circle(w->top, q, only, th, RENDER_SSS_MAX_HITS);
 	uint32_t n = total < RENDER_SSS_MAX_HITS ? total : RENDER_SSS_MAX_HITS;
+	qsort(th, n, sizeof *th, tri_circle_hit_cmp); /* the choice among them must not see the BVH */
 	uint32_t k = 0;
 	*more = total > n; /* beyond the traversal's buffer: known only by count */
 	for (uint32_t i = 0; i < n; i++) {

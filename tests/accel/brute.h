@@ -143,15 +143,6 @@ static inline uint32_t brute_circle(const brute *m, const tri_circle *q, tri_cir
 	return n;
 }
 
-static inline int circle_hit_cmp(const void *a, const void *b)
-{
-	const tri_circle_hit *x = a, *y = b;
-	if (x->inst != y->inst)
-		return x->inst < y->inst ? -1 : 1;
-	if (x->prim != y->prim)
-		return x->prim < y->prim ? -1 : 1;
-	return x->theta < y->theta ? -1 : x->theta > y->theta ? 1 : 0;
-}
 
 /* A random circle on the surface: centre on a random triangle, n its normal, t random in the
  * tangent plane, radius log-uniform in [1e-3, 0.5] of the extent; half or full. */
@@ -232,8 +223,8 @@ static inline void check_circles(const char *name, const mesh *m, const brute *b
 		total += nr;
 		bool same = nb == nr && nb <= MAX_HITS;
 		if (same) {
-			qsort(hb, nb, sizeof *hb, circle_hit_cmp);
-			qsort(hr, nr, sizeof *hr, circle_hit_cmp);
+			qsort(hb, nb, sizeof *hb, tri_circle_hit_cmp);
+			qsort(hr, nr, sizeof *hr, tri_circle_hit_cmp);
 			same = memcmp(hb, hr, nb * sizeof *hb) == 0;
 		}
 		if (!same && bad++ < 5)
