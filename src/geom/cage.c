@@ -251,10 +251,11 @@ static bool obj_index(const cage_ctx *x, uint32_t line, const char **p, size_t c
 	if (v == 0)
 		return cage_fail(x, line, "%s index 0 (OBJ indices start at 1)", what);
 	if (v < 0) {
-		if ((unsigned long long)-v > count)
+		unsigned long long back = 0ULL - (unsigned long long)v; /* -v, defined for LLONG_MIN too */
+		if (back > count)
 			return cage_fail(x, line, "relative %s index %lld reaches before the first %s", what,
 					 v, what);
-		*out = (uint32_t)(count - (size_t)-v);
+		*out = (uint32_t)(count - (size_t)back);
 	} else {
 		if (v > (long long)CAGE_MAX_COUNT)
 			return cage_fail(x, line, "%s index %lld out of range", what, v);
