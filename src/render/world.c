@@ -260,6 +260,18 @@ static scene_sss_method sss_method_of(const scene_material *m, const world_optio
 	return opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : m->sss.method;
 }
 
+/* xf_gain and xf_shift of an instance: the largest row sum of |M| and the largest |t|, so that
+ * every coordinate of xf(v) is at most gain max|v| + shift. */
+static void set_xf_bound(world_inst *in)
+{
+	double gain = 0.0, shift = 0.0;
+	for (int r = 0; r < 3; r++) {
+		gain = fmax(gain, fabs(in->xf.m[r][0]) + fabs(in->xf.m[r][1]) + fabs(in->xf.m[r][2]));
+		shift = fmax(shift, fabs(in->xf.m[r][3]));
+	}
+	in->xf_gain = (float)gain, in->xf_shift = (float)shift;
+}
+
 /* The BSSRDF of an SSS material: its profile from the artist form (the albedo the coat shows and
  * a texture scales), the method (the command line's over the material's), and f_t's normalisation. */
 static bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
@@ -388,14 +400,13 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 	/* The position from the triangle: its error is that of the vertices, which the ray offset
 	 * covers; o + t d would carry the error of the whole ray. */
 	vec3 p = v3_add(v3_add(v3_scale(p0, b0), v3_scale(p1, u)), v3_scale(p2, v));
+	float scale = bvh_triangle_scale(p0, p1, p2);
 	if (!in->identity) {
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
-		p0 = d3v(xform_point(&in->xf, v3_to_d3(p0)));
-		p1 = d3v(xform_point(&in->xf, v3_to_d3(p1)));
-		p2 = d3v(xform_point(&in->xf, v3_to_d3(p2)));
+		scale = in->xf_gain * scale + in->xf_shift; /* a bound of the world vertices' scale */
 	}
 	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
-			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = bvh_triangle_scale(p0, p1, p2)};
+			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = scale};
 }
 
 static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
@@ -634,6 +645,7 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 		in->g = &w->geoms[o->geom->id];
 		in->xf = o->transform;
 		in->identity = is_identity(&o->transform);
+		set_xf_bound(in);
 		in->no_shadow = o->no_shadow;
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */

@@ -44,6 +44,8 @@ typedef struct world_inst {
 	const world_geom *g;
 	xform xf;
 	bool identity;  /* xf is the identity: no ray transform needed */
+	float xf_gain, xf_shift; /* |xf(v)|max <= gain |v|max + shift (row sums of |M|, |t|max): a
+				  * triangle's world scale from its object one without transforming it */
 	bool no_shadow;
 	int material;   /* index into world.materials */
 	int light;      /* index of its mesh light in world.lights, or -1 */
