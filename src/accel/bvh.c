@@ -1,12 +1,15 @@
-/* bvh.c - binned-SAH build of a binary BVH, collapsed into a 4-wide one, and its ray and circle
- * traversals. A 4-wide node holds its children's boxes as struct-of-arrays, so one SSE register
- * (SSE2 is the x86-64 baseline) tests a plane of all four; leaves point into groups of up to four
- * triangles stored pre-transposed, so one SSE register holds a coordinate of four triangles. */
+/* bvh.c - binned-SAH build of a binary BVH, collapsed into a wide one, and its ray and circle
+ * traversals. A wide node holds its children's boxes as struct-of-arrays, so one vector register
+ * tests a plane of all of them; a leaf's triangles are stored pre-transposed, so one register holds
+ * a coordinate of several triangles. The width is chosen at build time by the CPU: 8-wide nodes
+ * traversed with AVX2 where the CPU has it, else 4-wide nodes with SSE2 (the x86-64 baseline);
+ * CIRCE_SIMD=sse2 in the environment forces the latter. Both run the same kernels (bvh_simd.h). */
 #include "accel/bvh.h"
 
 #include "base/mem.h"
 
-#include <emmintrin.h>
+#include <immintrin.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* SAH: the costs of a node visit (two box tests) and of a triangle test. Their ratio sets the
@@ -18,7 +21,7 @@
 #define SAH_INTERSECTION_COST 1.0f
 #endif
 #define SAH_BINS 16
-/* Triangles a leaf test takes at once (a group, bvh_word): SAH prices a leaf by its groups. */
+/* Triangles a leaf test takes at once: SAH prices a leaf by these blocks. */
 #define BVH_LEAF_BLOCK 4
 /* Slack of the slab test's far distance: 1 + 2 gamma(3) of Ize 2013 ("Robust BVH Ray
  * Traversal") covers the rounding of the box distances; we take ten times that, because the
@@ -31,42 +34,44 @@
  * 1.5 eps of itself, well inside the slack for eps up to this. Axes further off skip the tests. */
 #define BVH_CIRCLE_ORTHO_TOL 1e-6f
 
-/* The leaves' triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m
- * triangles (1 to 4) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then
- * the ids, so one unaligned load gives one coordinate of all m triangles (lanes past m read the
- * next array and are masked off). A leaf of n triangles from triangle f is groups of four and a
- * last one of the rest; group g starts at word GROUP_WORDS * (f + 4 g). 40 bytes a triangle, and
- * no transposes when a ray visits. */
+/* A leaf's triangles, pre-transposed (Embree's "triangle4" idea): a leaf of m triangles (1 to
+ * BVH_MAX_LEAF) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then the ids,
+ * so one unaligned load gives one coordinate of W triangles (lanes past m read the next array and
+ * are masked off). The leaf from triangle f starts at word GROUP_WORDS * f. 40 bytes a triangle,
+ * and no transposes when a ray visits. */
 typedef union bvh_word {
 	float f;
 	uint32_t u;
 } bvh_word;
 #define GROUP_WORDS 10
-/* Words after the last group: the last coordinate array of a group of one is loaded 16 bytes wide,
- * three words past its end. */
-#define LEAF_PAD_WORDS 4
+/* Words after the last leaf: the last coordinate array of a leaf of one is loaded 8 words wide,
+ * seven words past its end (its id is one of them). */
+#define LEAF_PAD_WORDS 8
 
-/* A 4-wide node, 112 bytes: b[plane][child] with planes lo x, lo y, lo z, hi x, hi y, hi z. A child
- * is an inner node's index, a leaf (BVH4_LEAF | (count - 1) << BVH4_COUNT_SHIFT | first triangle),
- * or BVH4_EMPTY (then its box is empty, lo = +inf and hi = -inf, and no ray or circle test passes
- * it). */
-typedef struct bvh4_node {
-	float b[6][4];
-	uint32_t child[4];
-} bvh4_node;
-#define BVH4_LEAF 0x80000000u
-#define BVH4_COUNT_SHIFT 27
-#define BVH4_FIRST_MASK ((1u << BVH4_COUNT_SHIFT) - 1)
+/* A node of width W (4 or 8; bvh_simd.h), 28 W bytes: the children's boxes b[plane][child] with
+ * planes lo x, lo y, lo z, hi x, hi y, hi z, then the children. A child is an inner node's index,
+ * a leaf (BVH_LEAF | (count - 1) << BVH_COUNT_SHIFT | first triangle), or BVH_EMPTY (then its box
+ * is empty, lo = +inf and hi = -inf, and no ray or circle test passes it). */
+#define NODE_BYTES(W) (28 * (W))
+#define BVH_LEAF 0x80000000u
+#define BVH_COUNT_SHIFT 27
+#define BVH_FIRST_MASK ((1u << BVH_COUNT_SHIFT) - 1)
 /* Leaves of the binary tree have at most BVH_MAX_LEAF triangles: four bits of count suffice. */
 _Static_assert(BVH_MAX_LEAF <= 16, "a leaf's count must fit its four bits");
-#define BVH4_EMPTY 0xffffffffu
-/* Entries of a traversal stack: a visit pushes at most three. */
-#define BVH4_STACK (3 * BVH_MAX_DEPTH + 4)
+#define BVH_EMPTY 0xffffffffu
+/* The widest node: the collapse's scratch holds this many children. */
+#define BVH_MAX_WIDTH 8
+/* The AVX2 kernels need gcc's target pragma (clang builds keep to SSE2). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define BVH_HAVE_AVX2 1
+#else
+#define BVH_HAVE_AVX2 0
+#endif
 
 struct bvh {
-	bvh4_node *nodes; /* node 0 is the root */
-	uint32_t num_nodes;
-	bvh_word *leaf; /* triangle groups in leaf order, then LEAF_PAD_WORDS */
+	void *nodes; /* node 0 is the root; `width` children a node */
+	uint32_t num_nodes, width;
+	bvh_word *leaf; /* the leaves' triangles in leaf order, then LEAF_PAD_WORDS */
 	uint32_t num_tris;
 	vec3 lo, hi; /* bounds of all triangles */
 };
@@ -341,35 +346,61 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_b
 	return ok;
 }
 
-/* The collapse of a binary tree into 4-wide nodes: each 4-wide node takes a binary inner node's
- * two children and keeps opening the inner one of largest area until it has four (Wald et al.
- * 2008, "Getting Rid of Packets", section 3). Every 4-wide node consumes at least one binary
- * inner node, so there are at most max(1, inner) of them. Nodes are laid out depth first (a
- * node's children side by side, then the first child's subtree): a ray's next node is more often
- * in a cache line it already fetched than in breadth-first order. */
-static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uint32_t *num_out)
+
+/* Whether to build wide nodes for AVX2: when the CPU has it and CIRCE_SIMD is not "sse2". Read at
+ * each build, so a test can build a tree for each path in one process. */
+static uint32_t simd_width(void)
+{
+	const char *s = getenv("CIRCE_SIMD");
+	if (s && strcmp(s, "sse2") == 0)
+		return 4;
+#if BVH_HAVE_AVX2
+	__builtin_cpu_init();
+	if (__builtin_cpu_supports("avx2"))
+		return 8;
+#endif
+	return 4;
+}
+
+/* Node i's plane p (width floats) and children, in nodes of the given width (NODE_BYTES). */
+static float *node_plane(void *nodes, uint32_t width, uint32_t i, int p)
+{
+	return (float *)((char *)nodes + (size_t)i * NODE_BYTES(width)) + p * width;
+}
+static uint32_t *node_children(void *nodes, uint32_t width, uint32_t i)
+{
+	return (uint32_t *)node_plane(nodes, width, i, 6);
+}
+
+/* The collapse of a binary tree into nodes of `width` children: each wide node takes a binary inner
+ * node's two children and keeps opening the inner one of largest area until it has `width` (Wald
+ * et al. 2008, "Getting Rid of Packets", section 3). Every wide node consumes at least one binary
+ * inner node, so there are at most max(1, inner) of them. Nodes are laid out depth first (a node's
+ * children side by side, then the first child's subtree): a ray's next node is more often in a
+ * cache line it already fetched than in breadth-first order. */
+static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void **out, uint32_t *num_out)
 {
 	uint32_t cap = num_bin / 2 + 1;
-	bvh4_node *nodes = mem_alloc(cap, sizeof *nodes);
-	uint32_t *src = mem_alloc(cap, sizeof *src); /* the binary node each 4-wide node stands for */
+	void *nodes = mem_alloc(cap, NODE_BYTES(width));
+	uint32_t *src = mem_alloc(cap, sizeof *src); /* the binary node each wide node stands for */
 	if (!nodes || !src) {
 		mem_free(nodes), mem_free(src);
 		return false;
 	}
 	uint32_t used = 1;
 	src[0] = 0;
-	uint32_t todo[BVH4_STACK];
+	uint32_t todo[(BVH_MAX_WIDTH - 1) * BVH_MAX_DEPTH + BVH_MAX_WIDTH];
 	int sp = 0;
 	todo[sp++] = 0;
 	while (sp > 0) {
 		uint32_t i = todo[--sp];
 		const bvh_node *s = &bin[src[i]];
-		uint32_t slot[4], n = 0;
+		uint32_t slot[BVH_MAX_WIDTH], n = 0;
 		if (s->count & BVH_INNER)
 			slot[n++] = s->first, slot[n++] = s->first + 1;
 		else
 			slot[n++] = src[i]; /* the root is a leaf */
-		while (n < 4) {
+		while (n < width) {
 			int open = -1;
 			float best = -1.0f;
 			for (uint32_t k = 0; k < n; k++) {
@@ -383,24 +414,24 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 			uint32_t c0 = bin[slot[open]].first;
 			slot[open] = c0, slot[n++] = c0 + 1;
 		}
-		bvh4_node *nd = &nodes[i];
+		uint32_t *child = node_children(nodes, width, i);
 		int pushed = sp;
-		for (uint32_t k = 0; k < 4; k++) {
+		for (uint32_t k = 0; k < width; k++) {
 			if (k >= n) {
 				for (int p = 0; p < 3; p++)
-					nd->b[p][k] = INFINITY, nd->b[3 + p][k] = -INFINITY;
-				nd->child[k] = BVH4_EMPTY;
+					node_plane(nodes, width, i, p)[k] = INFINITY, node_plane(nodes, width, i, 3 + p)[k] = -INFINITY;
+				child[k] = BVH_EMPTY;
 				continue;
 			}
 			const bvh_node *c = &bin[slot[k]];
 			for (int p = 0; p < 3; p++)
-				nd->b[p][k] = c->lo[p], nd->b[3 + p][k] = c->hi[p];
+				node_plane(nodes, width, i, p)[k] = c->lo[p], node_plane(nodes, width, i, 3 + p)[k] = c->hi[p];
 			if (c->count & BVH_INNER) {
 				src[used] = slot[k];
 				todo[sp++] = used;
-				nd->child[k] = used++;
+				child[k] = used++;
 			} else {
-				nd->child[k] = BVH4_LEAF | (c->count - 1) << BVH4_COUNT_SHIFT | c->first;
+				child[k] = BVH_LEAF | (c->count - 1) << BVH_COUNT_SHIFT | c->first;
 			}
 		}
 		/* The first child on top. */
@@ -410,28 +441,29 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 		}
 	}
 	mem_free(src);
-	bvh4_node *shrunk = mem_realloc(nodes, used, sizeof *nodes);
+	void *shrunk = mem_realloc(nodes, used, NODE_BYTES(width));
 	*out = shrunk ? shrunk : nodes;
 	*num_out = used;
 	return true;
 }
 
-/* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle refs[i].id. */
+/* A leaf reference's triangles: the first, and how many. */
+static inline uint32_t leaf_first(uint32_t ref) { return ref & BVH_FIRST_MASK; }
+static inline uint32_t leaf_count(uint32_t ref) { return (ref >> BVH_COUNT_SHIFT & 15) + 1; }
+
+/* The triangles of the leaf ref (bvh_word): leaf slot i is triangle refs[i].id. */
 static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
 		       const build_ref *refs)
 {
-	uint32_t first = ref & BVH4_FIRST_MASK, count = (ref >> BVH4_COUNT_SHIFT & 15) + 1;
-	for (uint32_t g = 0; g < count; g += 4) {
-		uint32_t m = count - g < 4 ? count - g : 4;
-		bvh_word *w = &leaf[GROUP_WORDS * (size_t)(first + g)];
-		for (uint32_t j = 0; j < m; j++) {
-			uint32_t f = refs[first + g + j].id;
-			for (int k = 0; k < 3; k++) {
-				vec3 p = positions[indices[3 * (size_t)f + k]];
-				w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
-			}
-			w[9 * m + j].u = f;
+	uint32_t first = leaf_first(ref), m = leaf_count(ref);
+	bvh_word *w = &leaf[GROUP_WORDS * (size_t)first];
+	for (uint32_t j = 0; j < m; j++) {
+		uint32_t f = refs[first + j].id;
+		for (int k = 0; k < 3; k++) {
+			vec3 p = positions[indices[3 * (size_t)f + k]];
+			w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
 		}
+		w[9 * m + j].u = f;
 	}
 }
 
@@ -441,8 +473,8 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	for (size_t i = 0; i < 3 * (size_t)num_triangles; i++)
 		if (indices[i] >= num_vertices)
 			return NULL;
-	/* A leaf reference holds its first triangle in BVH4_COUNT_SHIFT bits. */
-	if (num_triangles > BVH4_FIRST_MASK)
+	/* A leaf reference holds its first triangle in BVH_COUNT_SHIFT bits. */
+	if (num_triangles > BVH_FIRST_MASK)
 		return NULL;
 	bvh *b = mem_calloc(1, sizeof *b);
 	build_ref *refs = mem_alloc(num_triangles, sizeof *refs);
@@ -451,6 +483,7 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	bool ok = b && refs;
 	uint32_t n = 0;
 	if (ok) {
+		b->width = simd_width();
 		/* The refs of the triangles that can be hit, their ids the mesh's. */
 		build_task root = root_task(0);
 		for (uint32_t f = 0; f < num_triangles; f++) {
@@ -467,15 +500,15 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
 		b->leaf = mem_calloc(GROUP_WORDS * (size_t)n + LEAF_PAD_WORDS, sizeof *b->leaf);
-		ok = b->leaf && collapse(bin, num_bin, &b->nodes, &b->num_nodes);
+		ok = b->leaf && collapse(bin, num_bin, b->width, &b->nodes, &b->num_nodes);
 	}
 	if (ok && n > 0) {
-		for (uint32_t i = 0; i < b->num_nodes; i++)
-			for (int k = 0; k < 4; k++) {
-				uint32_t ref = b->nodes[i].child[k];
-				if ((ref & BVH4_LEAF) && ref != BVH4_EMPTY)
-					write_leaf(b->leaf, ref, positions, indices, refs);
-			}
+		for (uint32_t i = 0; i < b->num_nodes; i++) {
+			const uint32_t *child = node_children(b->nodes, b->width, i);
+			for (uint32_t k = 0; k < b->width; k++)
+				if ((child[k] & BVH_LEAF) && child[k] != BVH_EMPTY)
+					write_leaf(b->leaf, child[k], positions, indices, refs);
+		}
 		b->num_tris = n;
 	}
 	mem_free(refs), mem_free(bin);
@@ -505,11 +538,13 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 
 size_t bvh_bytes(const bvh *b)
 {
-	return sizeof *b + (size_t)b->num_nodes * sizeof(bvh4_node) +
+	return sizeof *b + (size_t)b->num_nodes * NODE_BYTES(b->width) +
 	       (b->num_tris ? GROUP_WORDS * (size_t)b->num_tris + LEAF_PAD_WORDS : 0) * sizeof(bvh_word);
 }
 
 uint32_t bvh_num_nodes(const bvh *b) { return b->num_nodes; }
+
+uint32_t bvh_width(const bvh *b) { return b->width; }
 
 /* Max and min that ignore a NaN in x (0 * inf, a ray in a slab's plane): the slab then does not
  * constrain, which is conservative. maxss/minss compile from this form. */
@@ -553,292 +588,6 @@ bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tne
 	slab_ray s;
 	slab_prepare(&s, r);
 	return node_hit(nd, &s, tlimit, tnear);
-}
-
-/* The slab test of four boxes at once: the same operations as node_hit, in the same order, so
- * each lane rounds as the scalar test does (_mm_max_ps(a, t) is a > t ? a : t, max_nan). */
-typedef struct slab_ray4 {
-	__m128 org[3], inv[3], tmin, slack;
-	int near_plane[3], far_plane[3];
-} slab_ray4;
-
-static inline void slab_prepare4(slab_ray4 *s, const tri_ray *r)
-{
-	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
-	for (int i = 0; i < 3; i++) {
-		s->org[i] = _mm_set1_ps(o[i]), s->inv[i] = _mm_set1_ps(d[i]);
-		int neg = d[i] < 0.0f;
-		s->near_plane[i] = 3 * neg + i, s->far_plane[i] = 3 * (1 - neg) + i;
-	}
-	s->tmin = _mm_set1_ps(r->tmin);
-	s->slack = _mm_set1_ps(BVH_SLAB_SLACK);
-}
-
-/* Bit k of the result is set when child k's box may hold a hit with t in [tmin, tlimit]; tnear
- * receives the entry distances. */
-static inline int node4_hit(const bvh4_node *nd, const slab_ray4 *s, float tlimit, float tnear[4])
-{
-	__m128 tn = s->tmin, tf = _mm_set1_ps(tlimit);
-	for (int i = 0; i < 3; i++) {
-		__m128 a = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nd->b[s->near_plane[i]]), s->org[i]), s->inv[i]);
-		__m128 b = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nd->b[s->far_plane[i]]), s->org[i]), s->inv[i]);
-		tn = _mm_max_ps(a, tn), tf = _mm_min_ps(b, tf);
-	}
-	_mm_storeu_ps(tnear, tn);
-	return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_mul_ps(tf, s->slack)));
-}
-
-/* Index of the lowest set bit of a non-zero mask of four bits. */
-static inline int lowest_bit(int mask) { return __builtin_ctz((unsigned)mask); }
-
-typedef struct stack_entry {
-	uint32_t ref;
-	float tnear;
-} stack_entry;
-
-/* The watertight test (tri_intersect) of up to four triangles of a leaf at once: the same
- * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
- * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
- * Returns the lanes that hit with t in [tmin, tlimit] (bits below n only) in *hit_mask and those
- * left to the scalar test in the result; t, u, v receive the lanes' values. */
-typedef struct tri_ray4 {
-	__m128 ox, oy, oz, sx, sy, sz, tmin; /* the origin in the ray's axis order kx, ky, kz */
-	int kx, ky, kz;
-} tri_ray4;
-
-static inline void tri_ray_prepare4(tri_ray4 *q, const tri_ray *r)
-{
-	q->ox = _mm_set1_ps(v3_get(r->org, r->kx)), q->oy = _mm_set1_ps(v3_get(r->org, r->ky));
-	q->oz = _mm_set1_ps(v3_get(r->org, r->kz));
-	q->sx = _mm_set1_ps(r->sx), q->sy = _mm_set1_ps(r->sy), q->sz = _mm_set1_ps(r->sz);
-	q->tmin = _mm_set1_ps(r->tmin);
-	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
-}
-
-/* Forced inlining: the leaf tests are called from two traversals each, and gcc -O2 would
- * otherwise keep them out of line and pass their results through memory. */
-#define BVH_INLINE static inline __attribute__((always_inline))
-
-/* A leaf group (bvh_word): m triangles from word w. */
-BVH_INLINE __m128 group_lanes(int m)
-{
-	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(m)));
-}
-/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of the group, lanes past m zero. */
-BVH_INLINE __m128 group_load(const bvh_word *w, int m, int a, __m128 lanes)
-{
-	return _mm_and_ps(_mm_loadu_ps(&w[a * m].f), lanes);
-}
-BVH_INLINE vec3 group_vertex(const bvh_word *w, int m, int j, int vertex)
-{
-	return v3(w[(3 * vertex) * m + j].f, w[(3 * vertex + 1) * m + j].f, w[(3 * vertex + 2) * m + j].f);
-}
-BVH_INLINE uint32_t group_id(const bvh_word *w, int m, int j) { return w[9 * m + j].u; }
-
-/* The group of m triangles at w; lanes past m are zero and never reported. */
-BVH_INLINE int tri4_intersect(const tri_ray4 *q, const bvh_word *w, int m, float tlimit, int *hit_mask,
-			      float t[4], float u[4], float v[4])
-{
-	__m128 in = group_lanes(m);
-	/* The coordinate arrays are picked in the ray's axis order as they are loaded, so the
-	 * permutation costs no shuffles (and no trip through memory). */
-	__m128 Az = _mm_sub_ps(group_load(w, m, q->kz, in), q->oz);
-	__m128 Bz = _mm_sub_ps(group_load(w, m, 3 + q->kz, in), q->oz);
-	__m128 Cz = _mm_sub_ps(group_load(w, m, 6 + q->kz, in), q->oz);
-	__m128 Ax = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->kx, in), q->ox), _mm_mul_ps(q->sx, Az));
-	__m128 Ay = _mm_sub_ps(_mm_sub_ps(group_load(w, m, q->ky, in), q->oy), _mm_mul_ps(q->sy, Az));
-	__m128 Bx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Bz));
-	__m128 By = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 3 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Bz));
-	__m128 Cx = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->kx, in), q->ox), _mm_mul_ps(q->sx, Cz));
-	__m128 Cy = _mm_sub_ps(_mm_sub_ps(group_load(w, m, 6 + q->ky, in), q->oy), _mm_mul_ps(q->sy, Cz));
-	__m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
-	__m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
-	__m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
-	const __m128 zero = _mm_setzero_ps();
-	int lanes = (1 << m) - 1;
-	int scalar = _mm_movemask_ps(_mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)),
-					       _mm_cmpeq_ps(W, zero))) & lanes;
-	__m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
-	__m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
-	__m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
-	__m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(q->sz, Az)), _mm_mul_ps(V, _mm_mul_ps(q->sz, Bz))),
-			      _mm_mul_ps(W, _mm_mul_ps(q->sz, Cz)));
-	__m128 tt = _mm_div_ps(T, det);
-	__m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(det, zero));
-	ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(tt, q->tmin), _mm_cmple_ps(tt, _mm_set1_ps(tlimit))));
-	*hit_mask = _mm_movemask_ps(ok) & lanes & ~scalar;
-	if (*hit_mask) {
-		_mm_storeu_ps(t, tt);
-		_mm_storeu_ps(u, _mm_div_ps(V, det));
-		_mm_storeu_ps(v, _mm_div_ps(W, det));
-	}
-	return scalar;
-}
-
-/* A leaf reference's triangles: the first, and how many. */
-static inline uint32_t leaf_first(uint32_t ref) { return ref & BVH4_FIRST_MASK; }
-static inline uint32_t leaf_count(uint32_t ref) { return (ref >> BVH4_COUNT_SHIFT & 15) + 1; }
-static inline const bvh_word *leaf_group(const bvh *b, uint32_t ref, uint32_t g)
-{
-	return &b->leaf[GROUP_WORDS * (size_t)(leaf_first(ref) + g)];
-}
-
-bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
-{
-	if (b->num_nodes == 0)
-		return false;
-	slab_ray4 sr;
-	slab_prepare4(&sr, r);
-	tri_ray4 q4;
-	tri_ray_prepare4(&q4, r);
-	stack_entry stack[BVH4_STACK];
-	int sp = 0;
-	uint32_t ref = 0;
-	bool found = false;
-	uint32_t best_id = UINT32_MAX;
-	for (;;) {
-		if (!(ref & BVH4_LEAF)) {
-			const bvh4_node *nd = &b->nodes[ref];
-			float tn[4];
-			int mask = node4_hit(nd, &sr, *tlimit, tn);
-			if (mask != 0) {
-				int k0 = lowest_bit(mask);
-				mask &= mask - 1;
-				if (mask == 0) {
-					ref = nd->child[k0];
-					continue;
-				}
-				int k1 = lowest_bit(mask);
-				mask &= mask - 1;
-				if (mask == 0) {
-					/* Two: go to the nearer, keep the other. */
-					if (tn[k1] < tn[k0]) {
-						int tk = k0;
-						k0 = k1, k1 = tk;
-					}
-					stack[sp++] = (stack_entry){nd->child[k1], tn[k1]};
-					ref = nd->child[k0];
-					continue;
-				}
-				/* Three or four: push all sorted, the nearest on top, and take it. */
-				int base = sp;
-				stack[sp++] = (stack_entry){nd->child[k0], tn[k0]};
-				stack[sp++] = (stack_entry){nd->child[k1], tn[k1]};
-				do {
-					int k = lowest_bit(mask);
-					mask &= mask - 1;
-					stack[sp++] = (stack_entry){nd->child[k], tn[k]};
-				} while (mask != 0);
-				for (int i = base + 1; i < sp; i++) {
-					stack_entry e = stack[i];
-					int j = i;
-					for (; j > base && stack[j - 1].tnear < e.tnear; j--)
-						stack[j] = stack[j - 1];
-					stack[j] = e;
-				}
-				ref = stack[--sp].ref;
-				continue;
-			}
-		} else {
-			/* A group at a time. A hit is taken when closer, or as close with a lower id:
-			 * the tie rule of the loop over all triangles, whatever the order of visits. */
-			uint32_t count = leaf_count(ref);
-			for (uint32_t g = 0; g < count; g += 4) {
-				int m = count - g < 4 ? (int)(count - g) : 4;
-				const bvh_word *w = leaf_group(b, ref, g);
-				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, w, m, *tlimit, &hm, t4, u4, v4);
-				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
-					int j = lowest_bit(todo);
-					float t = t4[j], u = u4[j], v = v4[j];
-					bool h = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
-									     group_vertex(w, m, j, 2), *tlimit, &t, &u, &v)
-							     : t <= *tlimit;
-					uint32_t id = group_id(w, m, j);
-					if (h && (t < *tlimit || id < best_id)) {
-						*tlimit = t;
-						best_id = id;
-						hit->t = t, hit->u = u, hit->v = v, hit->prim = id;
-						found = true;
-					}
-				}
-			}
-		}
-		/* Pop the next entry that can still hold a hit no farther than the best. */
-		for (;;) {
-			if (sp == 0)
-				return found;
-			stack_entry e = stack[--sp];
-			if (e.tnear <= *tlimit * BVH_SLAB_SLACK) {
-				ref = e.ref;
-				break;
-			}
-		}
-	}
-}
-
-bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
-{
-	if (b->num_nodes == 0)
-		return false;
-	slab_ray4 sr;
-	slab_prepare4(&sr, r);
-	tri_ray4 q4;
-	tri_ray_prepare4(&q4, r);
-	uint32_t stack[BVH4_STACK];
-	int sp = 0;
-	uint32_t ref = 0;
-	for (;;) {
-		if (!(ref & BVH4_LEAF)) {
-			const bvh4_node *nd = &b->nodes[ref];
-			float tn[4];
-			int mask = node4_hit(nd, &sr, r->tmax, tn);
-			if (mask != 0) {
-				ref = nd->child[lowest_bit(mask)];
-				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-					stack[sp++] = nd->child[lowest_bit(mask)];
-				continue;
-			}
-		} else {
-			uint32_t count = leaf_count(ref);
-			for (uint32_t g = 0; g < count; g += 4) {
-				int m = count - g < 4 ? (int)(count - g) : 4;
-				const bvh_word *w = leaf_group(b, ref, g);
-				float t4[4], u4[4], v4[4];
-				int hm, sc = tri4_intersect(&q4, w, m, r->tmax, &hm, t4, u4, v4);
-				if (hm)
-					return true;
-				for (; sc != 0; sc &= sc - 1) {
-					int j = lowest_bit(sc);
-					float t, u, v;
-					if (tri_intersect(r, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
-							  group_vertex(w, m, j, 2), r->tmax, &t, &u, &v))
-						return true;
-				}
-			}
-		}
-		if (sp == 0)
-			return false;
-		ref = stack[--sp];
-	}
-}
-
-bool bvh_intersect(const bvh *b, const bvh_ray *ray, bvh_hit *hit)
-{
-	tri_ray r;
-	if (!tri_ray_prepare(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
-		return false;
-	float tlimit = ray->tmax;
-	hit->inst = 0;
-	return bvh_intersect_prepared(b, &r, &tlimit, hit);
-}
-
-bool bvh_occluded(const bvh *b, const bvh_ray *ray)
-{
-	tri_ray r;
-	if (!tri_ray_prepare(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
-		return false;
-	return bvh_occluded_prepared(b, &r);
 }
 
 /* A circle prepared for box tests: its plane normal m = t x n and the slack. */
@@ -913,204 +662,173 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 	return circle_prepare(q, box_extent(lo, hi), &p) && box_circle(&p, lo, hi);
 }
 
-/* box_circle on the four children of a node, lane by lane with the same operations in the same
- * order, so each lane is exactly as conservative as the scalar test. An empty child fails the
- * bounds test (lo = +inf). */
-typedef struct circle_prep4 {
-	__m128 lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3], n[3], abs_n[3];
-	__m128 slack, neg_slack, rmax2, rmin2;
-	__m128 radius; /* for group_circle */
-	bool full, in_plane;
-} circle_prep4;
+/* ---- The vector kernels -------------------------------------------------------------------- */
 
-static void circle_prepare4(const circle_prep *p, circle_prep4 *q)
+/* Forced inlining: the leaf tests are called from two traversals each, and gcc -O2 would
+ * otherwise keep them out of line and pass their results through memory. */
+#define BVH_INLINE static inline __attribute__((always_inline))
+
+/* Index of the lowest set bit of a non-zero mask. */
+static inline int lowest_bit(int mask) { return __builtin_ctz((unsigned)mask); }
+
+/* Triangle k of a leaf of m at w: vertex coordinates and id. */
+BVH_INLINE vec3 group_vertex(const bvh_word *w, int m, int k, int vertex)
 {
-	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
-	for (int i = 0; i < 3; i++) {
-		q->lo[i] = _mm_set1_ps(v3_get(p->lo, i)), q->hi[i] = _mm_set1_ps(v3_get(p->hi, i));
-		q->c[i] = _mm_set1_ps(v3_get(p->c, i));
-		q->m[i] = _mm_set1_ps(v3_get(p->m, i)), q->abs_m[i] = _mm_set1_ps(v3_get(am, i));
-		q->t[i] = _mm_set1_ps(v3_get(p->t, i)), q->abs_t[i] = _mm_set1_ps(v3_get(at, i));
-		q->n[i] = _mm_set1_ps(v3_get(p->n, i)), q->abs_n[i] = _mm_set1_ps(v3_get(an, i));
-	}
-	q->slack = _mm_set1_ps(p->slack), q->neg_slack = _mm_set1_ps(-p->slack);
-	q->rmax2 = _mm_set1_ps(p->rmax2), q->rmin2 = _mm_set1_ps(p->rmin2);
-	q->radius = _mm_set1_ps(p->r);
-	q->full = p->full, q->in_plane = p->in_plane;
+	return v3(w[(3 * vertex) * m + k].f, w[(3 * vertex + 1) * m + k].f, w[(3 * vertex + 2) * m + k].f);
+}
+BVH_INLINE uint32_t group_id(const bvh_word *w, int m, int k) { return w[9 * m + k].u; }
+static inline const bvh_word *leaf_words(const bvh *b, uint32_t ref)
+{
+	return &b->leaf[GROUP_WORDS * (size_t)leaf_first(ref)];
 }
 
-static inline __m128 abs4(__m128 x) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), x); }
-static inline __m128 dot4(const __m128 a[3], const __m128 b[3])
+/* The exact circle test of triangle k of a leaf that passed the pre-tests: its hits go to
+ * hits[total...] (up to max_hits in all); returns the new total. */
+static uint32_t circle_triangle(const tri_circle *q, const bvh_word *w, int m, int k, tri_circle_hit *hits,
+				uint32_t max_hits, uint32_t total)
 {
-	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(a[0], b[0]), _mm_mul_ps(a[1], b[1])), _mm_mul_ps(a[2], b[2]));
-}
-
-static inline int node4_circle(const bvh4_node *nd, const circle_prep4 *p)
-{
-	const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps();
-	__m128 ok = _mm_castsi128_ps(_mm_set1_epi32(-1));
-	__m128 e[3], rel[3], a[3], dn[3], df[3];
-	for (int i = 0; i < 3; i++) {
-		__m128 lo = _mm_load_ps(nd->b[i]), hi = _mm_load_ps(nd->b[3 + i]);
-		ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmple_ps(lo, p->hi[i]), _mm_cmpge_ps(hi, p->lo[i])));
-		e[i] = _mm_mul_ps(_mm_sub_ps(hi, lo), half);
-		rel[i] = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(lo, hi), half), p->c[i]);
-		a[i] = abs4(rel[i]);
-		dn[i] = _mm_max_ps(_mm_sub_ps(a[i], e[i]), zero);
-		df[i] = _mm_add_ps(a[i], e[i]);
+	tri_circle_hit h[2];
+	int nh = tri_circle_intersect(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1), group_vertex(w, m, k, 2), h);
+	for (int i = 0; i < nh; i++, total++) {
+		if (total < max_hits) {
+			hits[total] = h[i];
+			hits[total].prim = group_id(w, m, k);
+		}
 	}
-	__m128 plane = _mm_cmple_ps(abs4(dot4(p->m, rel)), _mm_add_ps(dot4(p->abs_m, e), p->slack));
-	ok = _mm_and_ps(ok, plane);
-	if (!p->full)
-		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(dot4(p->t, rel), dot4(p->abs_t, e)), p->neg_slack));
-	ok = _mm_and_ps(ok, _mm_cmple_ps(dot4(dn, dn), p->rmax2));
-	ok = _mm_and_ps(ok, _mm_cmpge_ps(dot4(df, df), p->rmin2));
-	if (p->in_plane) {
-		__m128 pt = abs4(dot4(p->t, rel)), et = dot4(p->abs_t, e);
-		__m128 pn = abs4(dot4(p->n, rel)), en = dot4(p->abs_n, e);
-		__m128 nt = _mm_max_ps(_mm_sub_ps(pt, et), zero), nn = _mm_max_ps(_mm_sub_ps(pn, en), zero);
-		__m128 ft = _mm_add_ps(pt, et), fn = _mm_add_ps(pn, en);
-		ok = _mm_and_ps(ok, _mm_cmple_ps(_mm_add_ps(_mm_mul_ps(nt, nt), _mm_mul_ps(nn, nn)), p->rmax2));
-		ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(_mm_mul_ps(ft, ft), _mm_mul_ps(fn, fn)), p->rmin2));
-	}
-	return _mm_movemask_ps(ok);
+	return total;
 }
 
 /* Relative size of the margins of group_circle: tri_circle_intersect's float pre-test's. */
 #define GROUP_CIRCLE_MARGIN 1e-5f
 
-/* The triangles of a group that may meet the circle (a lane mask): cheap float tests that reject
- * only triangles tri_circle_intersect gives no hit for, so its double-precision work is spent on
- * few. (1) Its plane pre-test, the same operations in the same order: all vertices clearly on one
- * side of the circle's plane. Then, with the margin grown by the radius's rounding: (2) all
- * vertices inside the sphere of radius r about the centre (the triangle, convex, lies inside:
- * its segment cannot reach the circle); (3) the triangle's box entirely outside that sphere; (4)
- * for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3) in the plane,
- * with the vertices projected on the axes t and n: the segment lies in the projected triangle;
- * (7) the segment itself (segment_misses). */
-static inline __m128 select4(__m128 mask, __m128 a, __m128 b)
+/* The vector operations of bvh_simd.h, one set a width. Compares are the ordered (false on NaN)
+ * ones of SSE's cmplt/cmple/cmpgt/cmpge/cmpeq, and neq the unordered one of cmpneq; max and min
+ * return their second operand when either is NaN, as maxps and minps do. */
+BVH_INLINE __m128 f4_set1(float x) { return _mm_set1_ps(x); }
+BVH_INLINE __m128 f4_zero(void) { return _mm_setzero_ps(); }
+BVH_INLINE __m128 f4_load(const float *p) { return _mm_load_ps(p); }
+BVH_INLINE __m128 f4_loadu(const float *p) { return _mm_loadu_ps(p); }
+BVH_INLINE void f4_storeu(float *p, __m128 a) { _mm_storeu_ps(p, a); }
+BVH_INLINE __m128 f4_add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
+BVH_INLINE __m128 f4_sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
+BVH_INLINE __m128 f4_mul(__m128 a, __m128 b) { return _mm_mul_ps(a, b); }
+BVH_INLINE __m128 f4_div(__m128 a, __m128 b) { return _mm_div_ps(a, b); }
+BVH_INLINE __m128 f4_min(__m128 a, __m128 b) { return _mm_min_ps(a, b); }
+BVH_INLINE __m128 f4_max(__m128 a, __m128 b) { return _mm_max_ps(a, b); }
+BVH_INLINE __m128 f4_and(__m128 a, __m128 b) { return _mm_and_ps(a, b); }
+BVH_INLINE __m128 f4_or(__m128 a, __m128 b) { return _mm_or_ps(a, b); }
+BVH_INLINE __m128 f4_xor(__m128 a, __m128 b) { return _mm_xor_ps(a, b); }
+BVH_INLINE __m128 f4_andnot(__m128 a, __m128 b) { return _mm_andnot_ps(a, b); }
+BVH_INLINE __m128 f4_abs(__m128 a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
+BVH_INLINE __m128 f4_lt(__m128 a, __m128 b) { return _mm_cmplt_ps(a, b); }
+BVH_INLINE __m128 f4_le(__m128 a, __m128 b) { return _mm_cmple_ps(a, b); }
+BVH_INLINE __m128 f4_gt(__m128 a, __m128 b) { return _mm_cmpgt_ps(a, b); }
+BVH_INLINE __m128 f4_ge(__m128 a, __m128 b) { return _mm_cmpge_ps(a, b); }
+BVH_INLINE __m128 f4_eq(__m128 a, __m128 b) { return _mm_cmpeq_ps(a, b); }
+BVH_INLINE __m128 f4_neq(__m128 a, __m128 b) { return _mm_cmpneq_ps(a, b); }
+BVH_INLINE int f4_movemask(__m128 a) { return _mm_movemask_ps(a); }
+/* All ones in lanes j < n, zero in the others. */
+BVH_INLINE __m128 f4_lanes(int n)
 {
-	return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(n)));
 }
 
-/* The lanes of group_circle whose plane segment surely misses the circle. Taken only where all
- * vertices are clearly off the plane (|d| > margin, d's error bound), so the edges that cross it
- * are the exact test's two. An end on edge (i, j) is rel_i + s (rel_j - rel_i) with
- * s = d_i / (d_i - d_j); errors of up to margin in d_i and d_j move s by at most
- * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
- * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
- * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
-BVH_INLINE int segment_misses(const circle_prep4 *p, __m128 rel[3][3], const __m128 d[3], __m128 margin,
-			      __m128 sm)
+#define W 4
+#define vf __m128
+#define V(op) f4_##op
+#define K(name) name##_4
+#include "accel/bvh_simd.h"
+#undef W
+#undef vf
+#undef V
+#undef K
+
+#if BVH_HAVE_AVX2
+/* The AVX2 kernels: compiled for AVX2 whatever the compiler's flags, called only when the CPU has
+ * it (simd_width). No FMA (target avx2 alone does not enable it; configure adds -ffp-contract=off
+ * too), so every lane still rounds as the scalar tests do. */
+#pragma GCC push_options
+#pragma GCC target("avx2")
+BVH_INLINE __m256 f8_set1(float x) { return _mm256_set1_ps(x); }
+BVH_INLINE __m256 f8_zero(void) { return _mm256_setzero_ps(); }
+BVH_INLINE __m256 f8_load(const float *p) { return _mm256_loadu_ps(p); } /* nodes: 16-byte aligned */
+BVH_INLINE __m256 f8_loadu(const float *p) { return _mm256_loadu_ps(p); }
+BVH_INLINE void f8_storeu(float *p, __m256 a) { _mm256_storeu_ps(p, a); }
+BVH_INLINE __m256 f8_add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
+BVH_INLINE __m256 f8_sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
+BVH_INLINE __m256 f8_mul(__m256 a, __m256 b) { return _mm256_mul_ps(a, b); }
+BVH_INLINE __m256 f8_div(__m256 a, __m256 b) { return _mm256_div_ps(a, b); }
+BVH_INLINE __m256 f8_min(__m256 a, __m256 b) { return _mm256_min_ps(a, b); }
+BVH_INLINE __m256 f8_max(__m256 a, __m256 b) { return _mm256_max_ps(a, b); }
+BVH_INLINE __m256 f8_and(__m256 a, __m256 b) { return _mm256_and_ps(a, b); }
+BVH_INLINE __m256 f8_or(__m256 a, __m256 b) { return _mm256_or_ps(a, b); }
+BVH_INLINE __m256 f8_xor(__m256 a, __m256 b) { return _mm256_xor_ps(a, b); }
+BVH_INLINE __m256 f8_andnot(__m256 a, __m256 b) { return _mm256_andnot_ps(a, b); }
+BVH_INLINE __m256 f8_abs(__m256 a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a); }
+BVH_INLINE __m256 f8_lt(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+BVH_INLINE __m256 f8_le(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_LE_OS); }
+BVH_INLINE __m256 f8_gt(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+BVH_INLINE __m256 f8_ge(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_GE_OS); }
+BVH_INLINE __m256 f8_eq(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+BVH_INLINE __m256 f8_neq(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_NEQ_UQ); }
+BVH_INLINE int f8_movemask(__m256 a) { return _mm256_movemask_ps(a); }
+BVH_INLINE __m256 f8_lanes(int n)
 {
-	const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-	__m128 ad[3] = {abs4(d[0]), abs4(d[1]), abs4(d[2])};
-	__m128 sure = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(ad[0], margin), _mm_cmpgt_ps(ad[1], margin)),
-				 _mm_cmpgt_ps(ad[2], margin));
-	if (!_mm_movemask_ps(sure))
-		return 0;
-	__m128 two_margin = _mm_add_ps(margin, margin);
-	__m128 x[3][3], err[3], crosses[3];
-	for (int e = 0; e < 3; e++) {
-		int i = e, j = e == 2 ? 0 : e + 1;
-		__m128 s = _mm_div_ps(d[i], _mm_sub_ps(d[i], d[j]));
-		__m128 l1 = zero;
-		for (int a = 0; a < 3; a++) {
-			__m128 dv = _mm_sub_ps(rel[j][a], rel[i][a]);
-			x[e][a] = _mm_add_ps(rel[i][a], _mm_mul_ps(s, dv));
-			l1 = _mm_add_ps(l1, abs4(dv));
-		}
-		err[e] = _mm_div_ps(_mm_mul_ps(two_margin, l1), _mm_sub_ps(_mm_add_ps(ad[i], ad[j]), two_margin));
-		crosses[e] = _mm_xor_ps(_mm_cmplt_ps(d[i], zero), _mm_cmplt_ps(d[j], zero));
-	}
-	/* The two crossing edges: (0, 1), (0, 2) or (1, 2). */
-	__m128 e1[3], e2[3];
-	for (int a = 0; a < 3; a++)
-		e1[a] = select4(crosses[0], x[0][a], x[1][a]), e2[a] = select4(crosses[2], x[2][a], x[1][a]);
-	__m128 err_max = _mm_max_ps(select4(crosses[0], err[0], err[1]), select4(crosses[2], err[2], err[1]));
-	__m128 slack = _mm_add_ps(sm, err_max);
-	__m128 rin = _mm_sub_ps(p->radius, slack), rout = _mm_add_ps(p->radius, slack);
-	__m128 rin2 = _mm_mul_ps(rin, rin);
-	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(dot4(e1, e1), rin2), _mm_cmplt_ps(dot4(e2, e2), rin2)),
-				   _mm_cmpgt_ps(rin, zero));
-	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
-	 * from D = 0 clamps to 0 (maxps returns its second operand on NaN). */
-	__m128 dd[3];
-	for (int a = 0; a < 3; a++)
-		dd[a] = _mm_sub_ps(e2[a], e1[a]);
-	__m128 f = _mm_div_ps(_mm_sub_ps(zero, dot4(e1, dd)), dot4(dd, dd));
-	f = _mm_min_ps(_mm_max_ps(f, zero), one);
-	__m128 near[3];
-	for (int a = 0; a < 3; a++)
-		near[a] = _mm_add_ps(e1[a], _mm_mul_ps(f, dd[a]));
-	__m128 miss = _mm_or_ps(inside, _mm_cmpgt_ps(dot4(near, near), _mm_mul_ps(rout, rout)));
-	if (!p->full) {
-		__m128 neg = _mm_sub_ps(zero, slack);
-		miss = _mm_or_ps(miss, _mm_and_ps(_mm_cmplt_ps(dot4(p->t, e1), neg), _mm_cmplt_ps(dot4(p->t, e2), neg)));
-	}
-	return _mm_movemask_ps(_mm_and_ps(sure, miss));
+	return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)));
 }
 
-BVH_INLINE int group_circle(const circle_prep4 *p, const bvh_word *w, int m)
+#define W 8
+#define vf __m256
+#define V(op) f8_##op
+#define K(name) name##_8
+#include "accel/bvh_simd.h"
+#undef W
+#undef vf
+#undef V
+#undef K
+#pragma GCC pop_options
+#endif
+
+/* ---- Entry points: the kernels of the bvh's width ---------------------------------------- */
+
+bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
 {
-	const __m128 zero = _mm_setzero_ps();
-	__m128 in = group_lanes(m);
-	__m128 rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
-	for (int a = 0; a < 3; a++) {
-		__m128 v0 = group_load(w, m, a, in), v1 = group_load(w, m, 3 + a, in), v2 = group_load(w, m, 6 + a, in);
-		rel[0][a] = _mm_sub_ps(v0, p->c[a]), rel[1][a] = _mm_sub_ps(v1, p->c[a]);
-		rel[2][a] = _mm_sub_ps(v2, p->c[a]);
-		mag[a] = _mm_add_ps(_mm_add_ps(abs4(v0), abs4(v1)), _mm_add_ps(abs4(v2), abs4(p->c[a])));
-	}
-	__m128 margin = _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), _mm_add_ps(_mm_add_ps(mag[0], mag[1]), mag[2]));
-	__m128 neg_margin = _mm_sub_ps(zero, margin);
-	__m128 d[3], r2[3], ct[3], st[3];
-	for (int v = 0; v < 3; v++) {
-		d[v] = dot4(p->m, rel[v]);
-		r2[v] = dot4(rel[v], rel[v]);
-		ct[v] = dot4(p->t, rel[v]);
-		st[v] = dot4(p->n, rel[v]);
-	}
-	__m128 above = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(d[0], margin), _mm_cmpgt_ps(d[1], margin)),
-				  _mm_cmpgt_ps(d[2], margin));
-	__m128 below = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(d[0], neg_margin), _mm_cmplt_ps(d[1], neg_margin)),
-				  _mm_cmplt_ps(d[2], neg_margin));
-	__m128 reject = _mm_or_ps(above, below);
-	__m128 sm = _mm_add_ps(margin, _mm_mul_ps(_mm_set1_ps(GROUP_CIRCLE_MARGIN), p->radius));
-	__m128 rin = _mm_sub_ps(p->radius, sm), rout = _mm_add_ps(p->radius, sm);
-	__m128 rin2 = _mm_mul_ps(rin, rin), rout2 = _mm_mul_ps(rout, rout);
-	__m128 inside = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(r2[0], rin2), _mm_cmplt_ps(r2[1], rin2)),
-				   _mm_and_ps(_mm_cmplt_ps(r2[2], rin2), _mm_cmpgt_ps(rin, zero)));
-	__m128 near2 = zero;
-	for (int a = 0; a < 3; a++) {
-		__m128 lo = _mm_min_ps(_mm_min_ps(rel[0][a], rel[1][a]), rel[2][a]);
-		__m128 hi = _mm_max_ps(_mm_max_ps(rel[0][a], rel[1][a]), rel[2][a]);
-		__m128 dn = _mm_max_ps(_mm_max_ps(lo, _mm_sub_ps(zero, hi)), zero);
-		near2 = _mm_add_ps(near2, _mm_mul_ps(dn, dn));
-	}
-	reject = _mm_or_ps(reject, _mm_or_ps(inside, _mm_cmpgt_ps(near2, rout2)));
-	if (p->in_plane) {
-		__m128 q2[3];
-		for (int v = 0; v < 3; v++)
-			q2[v] = _mm_add_ps(_mm_mul_ps(ct[v], ct[v]), _mm_mul_ps(st[v], st[v]));
-		__m128 inside2 = _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(q2[0], rin2), _mm_cmplt_ps(q2[1], rin2)),
-					    _mm_and_ps(_mm_cmplt_ps(q2[2], rin2), _mm_cmpgt_ps(rin, zero)));
-		__m128 tlo = _mm_min_ps(_mm_min_ps(ct[0], ct[1]), ct[2]), thi = _mm_max_ps(_mm_max_ps(ct[0], ct[1]), ct[2]);
-		__m128 nlo = _mm_min_ps(_mm_min_ps(st[0], st[1]), st[2]), nhi = _mm_max_ps(_mm_max_ps(st[0], st[1]), st[2]);
-		__m128 dt = _mm_max_ps(_mm_max_ps(tlo, _mm_sub_ps(zero, thi)), zero);
-		__m128 dn = _mm_max_ps(_mm_max_ps(nlo, _mm_sub_ps(zero, nhi)), zero);
-		__m128 near2d = _mm_add_ps(_mm_mul_ps(dt, dt), _mm_mul_ps(dn, dn));
-		reject = _mm_or_ps(reject, _mm_or_ps(inside2, _mm_cmpgt_ps(near2d, rout2)));
-	}
-	if (!p->full) {
-		__m128 neg_sm = _mm_sub_ps(zero, sm);
-		reject = _mm_or_ps(reject, _mm_and_ps(_mm_and_ps(_mm_cmplt_ps(ct[0], neg_sm), _mm_cmplt_ps(ct[1], neg_sm)),
-						      _mm_cmplt_ps(ct[2], neg_sm)));
-	}
-	int lanes = (1 << m) - 1, left = ~_mm_movemask_ps(reject) & lanes;
-	if (left)
-		left &= ~segment_misses(p, rel, d, margin, sm);
-	return left;
+	if (b->num_nodes == 0)
+		return false;
+#if BVH_HAVE_AVX2
+	if (b->width == 8)
+		return intersect_8(b, r, tlimit, hit);
+#endif
+	return intersect_4(b, r, tlimit, hit);
+}
+
+bool bvh_occluded_prepared(const bvh *b, const tri_ray *r)
+{
+	if (b->num_nodes == 0)
+		return false;
+#if BVH_HAVE_AVX2
+	if (b->width == 8)
+		return occluded_8(b, r);
+#endif
+	return occluded_4(b, r);
+}
+
+bool bvh_intersect(const bvh *b, const bvh_ray *ray, bvh_hit *hit)
+{
+	tri_ray r;
+	if (!tri_ray_prepare(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
+		return false;
+	float tlimit = ray->tmax;
+	hit->inst = 0;
+	return bvh_intersect_prepared(b, &r, &tlimit, hit);
+}
+
+bool bvh_occluded(const bvh *b, const bvh_ray *ray)
+{
+	tri_ray r;
+	if (!tri_ray_prepare(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
+		return false;
+	return bvh_occluded_prepared(b, &r);
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
@@ -1120,44 +838,11 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 		return 0;
 	if (!circle_prepare(q, box_extent(b->lo, b->hi), &p) || !box_circle(&p, b->lo, b->hi))
 		return 0;
-	circle_prep4 p4;
-	circle_prepare4(&p, &p4);
-	uint32_t stack[BVH4_STACK];
-	int sp = 0;
-	uint32_t ref = 0, total = 0;
-	for (;;) {
-		if (!(ref & BVH4_LEAF)) {
-			const bvh4_node *nd = &b->nodes[ref];
-			int mask = node4_circle(nd, &p4);
-			if (mask != 0) {
-				ref = nd->child[lowest_bit(mask)];
-				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-					stack[sp++] = nd->child[lowest_bit(mask)];
-				continue;
-			}
-		} else {
-			uint32_t count = leaf_count(ref);
-			for (uint32_t g = 0; g < count; g += 4) {
-				int m = count - g < 4 ? (int)(count - g) : 4;
-				const bvh_word *w = leaf_group(b, ref, g);
-				for (int cand = group_circle(&p4, w, m); cand != 0; cand &= cand - 1) {
-					int j = lowest_bit(cand);
-					tri_circle_hit h[2];
-					int nh = tri_circle_intersect(q, group_vertex(w, m, j, 0), group_vertex(w, m, j, 1),
-								      group_vertex(w, m, j, 2), h);
-					for (int k = 0; k < nh; k++, total++) {
-						if (total < max_hits) {
-							hits[total] = h[k];
-							hits[total].prim = group_id(w, m, j);
-						}
-					}
-				}
-			}
-		}
-		if (sp == 0)
-			return total;
-		ref = stack[--sp];
-	}
+#if BVH_HAVE_AVX2
+	if (b->width == 8)
+		return circle_8(b, q, &p, hits, max_hits);
+#endif
+	return circle_4(b, q, &p, hits, max_hits);
 }
 
 vec3 bvh_offset_origin(vec3 p, vec3 n)

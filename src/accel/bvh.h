@@ -60,6 +60,10 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi);
 /* Bytes held by the bvh (nodes and triangle copies), and its counts, for statistics. */
 size_t bvh_bytes(const bvh *b);
 uint32_t bvh_num_nodes(const bvh *b);
+/* Children a node (4 or 8): 8 where the build found a CPU with AVX2, whose kernels then trace it;
+ * 4, traced with SSE2, elsewhere or when the environment variable CIRCE_SIMD is "sse2" at the
+ * build. Both give the same hits, bit for bit. */
+uint32_t bvh_width(const bvh *b);
 
 /* The origin of a ray leaving a surface at p with geometric normal n (pointing to the side the ray
  * goes to), moved off the surface so the ray cannot hit the triangle it left: Waechter & Binder

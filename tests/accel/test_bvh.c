@@ -172,8 +172,27 @@ static void check_edge_rays(const char *rel)
 	diag_free(&d);
 }
 
+/* The node width follows the dispatch: 4 (SSE2) when CIRCE_SIMD is "sse2" (tests/accel/sse2.sh runs
+ * every accel test so), else 8 where the CPU has AVX2. */
+static void check_width(void)
+{
+	vec3 p[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+	uint32_t ix[3] = {0, 1, 2};
+	bvh *b = bvh_build(p, 3, ix, 1);
+	const char *simd = getenv("CIRCE_SIMD");
+	uint32_t want = 4;
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+	if (!(simd && strcmp(simd, "sse2") == 0) && __builtin_cpu_supports("avx2"))
+		want = 8;
+#endif
+	printf("CIRCE_SIMD=%s: nodes of %u children\n", simd ? simd : "(unset)", b ? bvh_width(b) : 0);
+	CHECK(b && bvh_width(b) == want, "node width %u, expected %u", b ? bvh_width(b) : 0, want);
+	bvh_free(b);
+}
+
 int main(void)
 {
+	check_width();
 	check_bad_input();
 	check_degenerate();
 	check_small_meshes();

@@ -1,0 +1,490 @@
+/* bvh_simd.h - the traversals of bvh.c (closest hit, any hit, circles) and their node, triangle and
+ * circle tests, written once over a vector of W floats and included by bvh.c once per width: W = 4
+ * (SSE2, 4-wide nodes) and W = 8 (AVX2, 8-wide nodes). Before each inclusion bvh.c defines W, vf
+ * (the vector type), V(op) (its vector operations: V(add) is f4_add or f8_add) and K(name) (the
+ * name of this width's copy). Every lane does the scalar test's operations in the same order, so
+ * both widths give the scalar tests' results bit for bit. */
+
+/* A W-wide node: b[plane][child] with planes lo x, lo y, lo z, hi x, hi y, hi z, and the children
+ * (bvh.c: BVH_LEAF, BVH_EMPTY). */
+typedef struct K(node) {
+	float b[6][W];
+	uint32_t child[W];
+} K(node);
+_Static_assert(sizeof(K(node)) == NODE_BYTES(W), "node layout as the collapse writes it");
+/* Entries of a traversal stack: a visit pushes at most W - 1. */
+#define K_STACK ((W - 1) * BVH_MAX_DEPTH + W)
+
+/* ---- Rays: the slab test ------------------------------------------------------------------- */
+
+/* The slab test of W boxes at once: the same operations as node_hit, in the same order, so each
+ * lane rounds as the scalar test does (V(max)(a, t) is a > t ? a : t, max_nan). */
+typedef struct K(slab_ray) {
+	vf org[3], inv[3], tmin, slack;
+	int near_plane[3], far_plane[3];
+} K(slab_ray);
+
+static inline void K(slab_prepare)(K(slab_ray) *s, const tri_ray *r)
+{
+	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
+	for (int i = 0; i < 3; i++) {
+		s->org[i] = V(set1)(o[i]), s->inv[i] = V(set1)(d[i]);
+		int neg = d[i] < 0.0f;
+		s->near_plane[i] = 3 * neg + i, s->far_plane[i] = 3 * (1 - neg) + i;
+	}
+	s->tmin = V(set1)(r->tmin);
+	s->slack = V(set1)(BVH_SLAB_SLACK);
+}
+
+/* Bit k of the result is set when child k's box may hold a hit with t in [tmin, tlimit]; tnear
+ * receives the entry distances. */
+BVH_INLINE int K(node_hit)(const K(node) *nd, const K(slab_ray) *s, float tlimit, float tnear[W])
+{
+	vf tn = s->tmin, tf = V(set1)(tlimit);
+	for (int i = 0; i < 3; i++) {
+		vf a = V(mul)(V(sub)(V(load)(nd->b[s->near_plane[i]]), s->org[i]), s->inv[i]);
+		vf b = V(mul)(V(sub)(V(load)(nd->b[s->far_plane[i]]), s->org[i]), s->inv[i]);
+		tn = V(max)(a, tn), tf = V(min)(b, tf);
+	}
+	V(storeu)(tnear, tn);
+	return V(movemask)(V(le)(tn, V(mul)(tf, s->slack)));
+}
+
+/* ---- Rays: the watertight test of a leaf's triangles ----------------------------------------- */
+
+typedef struct K(tri_ray) {
+	vf ox, oy, oz, sx, sy, sz, tmin; /* the origin in the ray's axis order kx, ky, kz */
+	int kx, ky, kz;
+} K(tri_ray);
+
+static inline void K(tri_ray_prepare)(K(tri_ray) *q, const tri_ray *r)
+{
+	q->ox = V(set1)(v3_get(r->org, r->kx)), q->oy = V(set1)(v3_get(r->org, r->ky));
+	q->oz = V(set1)(v3_get(r->org, r->kz));
+	q->sx = V(set1)(r->sx), q->sy = V(set1)(r->sy), q->sz = V(set1)(r->sz);
+	q->tmin = V(set1)(r->tmin);
+	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
+}
+
+/* Lanes of part h of a leaf of m triangles (bvh.c: a leaf is one group): triangles W h + j < m. */
+BVH_INLINE vf K(group_lanes)(int m, int h) { return V(lanes)(m - W * h); }
+/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of part h, lanes past the leaf zero. */
+BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int h, int a, vf lanes)
+{
+	return V(and)(V(loadu)(&w[a * m + W * h].f), lanes);
+}
+
+/* The watertight test (tri_intersect) of part h of a leaf (triangles W h to W h + W - 1): the same
+ * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
+ * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
+ * Returns the lanes that hit with t in [tmin, tlimit] in *hit_mask and those left to the scalar
+ * test in the result (lanes of the leaf only); t, u, v receive the hitting lanes' values. Most
+ * parts tested hit nowhere: when no lane passes the edge tests, t and the divisions are skipped. */
+BVH_INLINE int K(tri_intersect)(const K(tri_ray) *q, const bvh_word *w, int m, int h, float tlimit,
+				int *hit_mask, float t[W], float u[W], float v[W])
+{
+	vf in = K(group_lanes)(m, h);
+	/* The coordinate arrays are picked in the ray's axis order as they are loaded, so the
+	 * permutation costs no shuffles (and no trip through memory). */
+	vf Az = V(sub)(K(group_load)(w, m, h, q->kz, in), q->oz);
+	vf Bz = V(sub)(K(group_load)(w, m, h, 3 + q->kz, in), q->oz);
+	vf Cz = V(sub)(K(group_load)(w, m, h, 6 + q->kz, in), q->oz);
+	vf Ax = V(sub)(V(sub)(K(group_load)(w, m, h, q->kx, in), q->ox), V(mul)(q->sx, Az));
+	vf Ay = V(sub)(V(sub)(K(group_load)(w, m, h, q->ky, in), q->oy), V(mul)(q->sy, Az));
+	vf Bx = V(sub)(V(sub)(K(group_load)(w, m, h, 3 + q->kx, in), q->ox), V(mul)(q->sx, Bz));
+	vf By = V(sub)(V(sub)(K(group_load)(w, m, h, 3 + q->ky, in), q->oy), V(mul)(q->sy, Bz));
+	vf Cx = V(sub)(V(sub)(K(group_load)(w, m, h, 6 + q->kx, in), q->ox), V(mul)(q->sx, Cz));
+	vf Cy = V(sub)(V(sub)(K(group_load)(w, m, h, 6 + q->ky, in), q->oy), V(mul)(q->sy, Cz));
+	vf U = V(sub)(V(mul)(Cx, By), V(mul)(Cy, Bx));
+	vf Vb = V(sub)(V(mul)(Ax, Cy), V(mul)(Ay, Cx));
+	vf Wb = V(sub)(V(mul)(Bx, Ay), V(mul)(By, Ax));
+	const vf zero = V(zero)();
+	int lanes = V(movemask)(in);
+	int scalar = V(movemask)(V(or)(V(or)(V(eq)(U, zero), V(eq)(Vb, zero)), V(eq)(Wb, zero))) & lanes;
+	vf neg = V(or)(V(or)(V(lt)(U, zero), V(lt)(Vb, zero)), V(lt)(Wb, zero));
+	vf pos = V(or)(V(or)(V(gt)(U, zero), V(gt)(Vb, zero)), V(gt)(Wb, zero));
+	vf inside = V(andnot)(V(and)(neg, pos), in);
+	*hit_mask = 0;
+	if (!(V(movemask)(inside) & ~scalar))
+		return scalar;
+	vf det = V(add)(V(add)(U, Vb), Wb);
+	vf T = V(add)(V(add)(V(mul)(U, V(mul)(q->sz, Az)), V(mul)(Vb, V(mul)(q->sz, Bz))), V(mul)(Wb, V(mul)(q->sz, Cz)));
+	vf tt = V(div)(T, det);
+	vf ok = V(and)(inside, V(neq)(det, zero));
+	ok = V(and)(ok, V(and)(V(ge)(tt, q->tmin), V(le)(tt, V(set1)(tlimit))));
+	*hit_mask = V(movemask)(ok) & ~scalar;
+	if (*hit_mask) {
+		V(storeu)(t, tt);
+		V(storeu)(u, V(div)(Vb, det));
+		V(storeu)(v, V(div)(Wb, det));
+	}
+	return scalar;
+}
+
+/* ---- Rays: the traversals -------------------------------------------------------------------- */
+
+typedef struct K(stack_entry) {
+	uint32_t ref;
+	float tnear;
+} K(stack_entry);
+
+static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit)
+{
+	const K(node) *nodes = b->nodes;
+	K(slab_ray) sr;
+	K(slab_prepare)(&sr, r);
+	K(tri_ray) q;
+	K(tri_ray_prepare)(&q, r);
+	K(stack_entry) stack[K_STACK];
+	int sp = 0;
+	uint32_t ref = 0;
+	bool found = false;
+	uint32_t best_id = UINT32_MAX;
+	for (;;) {
+		if (!(ref & BVH_LEAF)) {
+			const K(node) *nd = &nodes[ref];
+			float tn[W];
+			int mask = K(node_hit)(nd, &sr, *tlimit, tn);
+			if (mask != 0) {
+				int k0 = lowest_bit(mask);
+				mask &= mask - 1;
+				if (mask == 0) {
+					ref = nd->child[k0];
+					continue;
+				}
+				int k1 = lowest_bit(mask);
+				mask &= mask - 1;
+				if (mask == 0) {
+					/* Two: go to the nearer, keep the other. */
+					if (tn[k1] < tn[k0]) {
+						int tk = k0;
+						k0 = k1, k1 = tk;
+					}
+					stack[sp++] = (K(stack_entry)){nd->child[k1], tn[k1]};
+					ref = nd->child[k0];
+					continue;
+				}
+				/* More: push all sorted, the nearest on top, and take it. */
+				int base = sp;
+				stack[sp++] = (K(stack_entry)){nd->child[k0], tn[k0]};
+				stack[sp++] = (K(stack_entry)){nd->child[k1], tn[k1]};
+				do {
+					int k = lowest_bit(mask);
+					mask &= mask - 1;
+					stack[sp++] = (K(stack_entry)){nd->child[k], tn[k]};
+				} while (mask != 0);
+				for (int i = base + 1; i < sp; i++) {
+					K(stack_entry) e = stack[i];
+					int j = i;
+					for (; j > base && stack[j - 1].tnear < e.tnear; j--)
+						stack[j] = stack[j - 1];
+					stack[j] = e;
+				}
+				ref = stack[--sp].ref;
+				continue;
+			}
+		} else {
+			/* W triangles at a time. A hit is taken when closer, or as close with a lower id:
+			 * the tie rule of the loop over all triangles, whatever the order of visits. */
+			int m = (int)leaf_count(ref);
+			const bvh_word *w = leaf_words(b, ref);
+			for (int h = 0; W * h < m; h++) {
+				float t4[W], u4[W], v4[W];
+				int hm, sc = K(tri_intersect)(&q, w, m, h, *tlimit, &hm, t4, u4, v4);
+				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
+					int j = lowest_bit(todo), k = W * h + j;
+					float t = t4[j], u = u4[j], v = v4[j];
+					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
+									      group_vertex(w, m, k, 2), *tlimit, &t, &u, &v)
+							      : t <= *tlimit;
+					uint32_t id = group_id(w, m, k);
+					if (hj && (t < *tlimit || id < best_id)) {
+						*tlimit = t;
+						best_id = id;
+						hit->t = t, hit->u = u, hit->v = v, hit->prim = id;
+						found = true;
+					}
+				}
+			}
+		}
+		/* Pop the next entry that can still hold a hit no farther than the best. */
+		for (;;) {
+			if (sp == 0)
+				return found;
+			K(stack_entry) e = stack[--sp];
+			if (e.tnear <= *tlimit * BVH_SLAB_SLACK) {
+				ref = e.ref;
+				break;
+			}
+		}
+	}
+}
+
+static bool K(occluded)(const bvh *b, const tri_ray *r)
+{
+	const K(node) *nodes = b->nodes;
+	K(slab_ray) sr;
+	K(slab_prepare)(&sr, r);
+	K(tri_ray) q;
+	K(tri_ray_prepare)(&q, r);
+	uint32_t stack[K_STACK];
+	int sp = 0;
+	uint32_t ref = 0;
+	for (;;) {
+		if (!(ref & BVH_LEAF)) {
+			const K(node) *nd = &nodes[ref];
+			float tn[W];
+			int mask = K(node_hit)(nd, &sr, r->tmax, tn);
+			if (mask != 0) {
+				ref = nd->child[lowest_bit(mask)];
+				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+					stack[sp++] = nd->child[lowest_bit(mask)];
+				continue;
+			}
+		} else {
+			int m = (int)leaf_count(ref);
+			const bvh_word *w = leaf_words(b, ref);
+			for (int h = 0; W * h < m; h++) {
+				float t4[W], u4[W], v4[W];
+				int hm, sc = K(tri_intersect)(&q, w, m, h, r->tmax, &hm, t4, u4, v4);
+				if (hm)
+					return true;
+				for (; sc != 0; sc &= sc - 1) {
+					int k = W * h + lowest_bit(sc);
+					float t, u, v;
+					if (tri_intersect(r, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
+							  group_vertex(w, m, k, 2), r->tmax, &t, &u, &v))
+						return true;
+				}
+			}
+		}
+		if (sp == 0)
+			return false;
+		ref = stack[--sp];
+	}
+}
+
+/* ---- Circles --------------------------------------------------------------------------------- */
+
+/* box_circle (bvh.c) on the W children of a node, lane by lane with the same operations in the
+ * same order, so each lane is exactly as conservative as the scalar test. An empty child fails the
+ * bounds test (lo = +inf). */
+typedef struct K(circle_prep) {
+	vf lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3], n[3], abs_n[3];
+	vf slack, neg_slack, rmax2, rmin2;
+	vf radius; /* for group_circle */
+	bool full, in_plane;
+} K(circle_prep);
+
+static void K(circle_prepare)(const circle_prep *p, K(circle_prep) *q)
+{
+	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
+	for (int i = 0; i < 3; i++) {
+		q->lo[i] = V(set1)(v3_get(p->lo, i)), q->hi[i] = V(set1)(v3_get(p->hi, i));
+		q->c[i] = V(set1)(v3_get(p->c, i));
+		q->m[i] = V(set1)(v3_get(p->m, i)), q->abs_m[i] = V(set1)(v3_get(am, i));
+		q->t[i] = V(set1)(v3_get(p->t, i)), q->abs_t[i] = V(set1)(v3_get(at, i));
+		q->n[i] = V(set1)(v3_get(p->n, i)), q->abs_n[i] = V(set1)(v3_get(an, i));
+	}
+	q->slack = V(set1)(p->slack), q->neg_slack = V(set1)(-p->slack);
+	q->rmax2 = V(set1)(p->rmax2), q->rmin2 = V(set1)(p->rmin2);
+	q->radius = V(set1)(p->r);
+	q->full = p->full, q->in_plane = p->in_plane;
+}
+
+BVH_INLINE vf K(dot)(const vf a[3], const vf b[3])
+{
+	return V(add)(V(add)(V(mul)(a[0], b[0]), V(mul)(a[1], b[1])), V(mul)(a[2], b[2]));
+}
+BVH_INLINE vf K(select)(vf mask, vf a, vf b) { return V(or)(V(and)(mask, a), V(andnot)(mask, b)); }
+
+BVH_INLINE int K(node_circle)(const K(node) *nd, const K(circle_prep) *p)
+{
+	const vf half = V(set1)(0.5f), zero = V(zero)();
+	vf ok = V(lanes)(W);
+	vf e[3], rel[3], a[3], dn[3], df[3];
+	for (int i = 0; i < 3; i++) {
+		vf lo = V(load)(nd->b[i]), hi = V(load)(nd->b[3 + i]);
+		ok = V(and)(ok, V(and)(V(le)(lo, p->hi[i]), V(ge)(hi, p->lo[i])));
+		e[i] = V(mul)(V(sub)(hi, lo), half);
+		rel[i] = V(sub)(V(mul)(V(add)(lo, hi), half), p->c[i]);
+		a[i] = V(abs)(rel[i]);
+		dn[i] = V(max)(V(sub)(a[i], e[i]), zero);
+		df[i] = V(add)(a[i], e[i]);
+	}
+	vf plane = V(le)(V(abs)(K(dot)(p->m, rel)), V(add)(K(dot)(p->abs_m, e), p->slack));
+	ok = V(and)(ok, plane);
+	if (!p->full)
+		ok = V(and)(ok, V(ge)(V(add)(K(dot)(p->t, rel), K(dot)(p->abs_t, e)), p->neg_slack));
+	ok = V(and)(ok, V(le)(K(dot)(dn, dn), p->rmax2));
+	ok = V(and)(ok, V(ge)(K(dot)(df, df), p->rmin2));
+	if (p->in_plane) {
+		vf pt = V(abs)(K(dot)(p->t, rel)), et = K(dot)(p->abs_t, e);
+		vf pn = V(abs)(K(dot)(p->n, rel)), en = K(dot)(p->abs_n, e);
+		vf nt = V(max)(V(sub)(pt, et), zero), nn = V(max)(V(sub)(pn, en), zero);
+		vf ft = V(add)(pt, et), fn = V(add)(pn, en);
+		ok = V(and)(ok, V(le)(V(add)(V(mul)(nt, nt), V(mul)(nn, nn)), p->rmax2));
+		ok = V(and)(ok, V(ge)(V(add)(V(mul)(ft, ft), V(mul)(fn, fn)), p->rmin2));
+	}
+	return V(movemask)(ok);
+}
+
+/* The lanes of group_circle whose plane segment surely misses the circle. Taken only where all
+ * vertices are clearly off the plane (|d| > margin, d's error bound), so the edges that cross it
+ * are the exact test's two. An end on edge (i, j) is rel_i + s (rel_j - rel_i) with
+ * s = d_i / (d_i - d_j); errors of up to margin in d_i and d_j move s by at most
+ * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
+ * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
+ * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
+BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf d[3], vf margin, vf sm)
+{
+	const vf zero = V(zero)(), one = V(set1)(1.0f);
+	vf ad[3] = {V(abs)(d[0]), V(abs)(d[1]), V(abs)(d[2])};
+	vf sure = V(and)(V(and)(V(gt)(ad[0], margin), V(gt)(ad[1], margin)), V(gt)(ad[2], margin));
+	if (!V(movemask)(sure))
+		return 0;
+	vf two_margin = V(add)(margin, margin);
+	vf x[3][3], err[3], crosses[3];
+	for (int e = 0; e < 3; e++) {
+		int i = e, j = e == 2 ? 0 : e + 1;
+		vf s = V(div)(d[i], V(sub)(d[i], d[j]));
+		vf l1 = zero;
+		for (int a = 0; a < 3; a++) {
+			vf dv = V(sub)(rel[j][a], rel[i][a]);
+			x[e][a] = V(add)(rel[i][a], V(mul)(s, dv));
+			l1 = V(add)(l1, V(abs)(dv));
+		}
+		err[e] = V(div)(V(mul)(two_margin, l1), V(sub)(V(add)(ad[i], ad[j]), two_margin));
+		crosses[e] = V(xor)(V(lt)(d[i], zero), V(lt)(d[j], zero));
+	}
+	/* The two crossing edges: (0, 1), (0, 2) or (1, 2). */
+	vf e1[3], e2[3];
+	for (int a = 0; a < 3; a++)
+		e1[a] = K(select)(crosses[0], x[0][a], x[1][a]), e2[a] = K(select)(crosses[2], x[2][a], x[1][a]);
+	vf err_max = V(max)(K(select)(crosses[0], err[0], err[1]), K(select)(crosses[2], err[2], err[1]));
+	vf slack = V(add)(sm, err_max);
+	vf rin = V(sub)(p->radius, slack), rout = V(add)(p->radius, slack);
+	vf rin2 = V(mul)(rin, rin);
+	vf inside = V(and)(V(and)(V(lt)(K(dot)(e1, e1), rin2), V(lt)(K(dot)(e2, e2), rin2)), V(gt)(rin, zero));
+	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
+	 * from D = 0 clamps to 0 (V(max) returns its second operand on NaN). */
+	vf dd[3];
+	for (int a = 0; a < 3; a++)
+		dd[a] = V(sub)(e2[a], e1[a]);
+	vf f = V(div)(V(sub)(zero, K(dot)(e1, dd)), K(dot)(dd, dd));
+	f = V(min)(V(max)(f, zero), one);
+	vf near[3];
+	for (int a = 0; a < 3; a++)
+		near[a] = V(add)(e1[a], V(mul)(f, dd[a]));
+	vf miss = V(or)(inside, V(gt)(K(dot)(near, near), V(mul)(rout, rout)));
+	if (!p->full) {
+		vf neg = V(sub)(zero, slack);
+		miss = V(or)(miss, V(and)(V(lt)(K(dot)(p->t, e1), neg), V(lt)(K(dot)(p->t, e2), neg)));
+	}
+	return V(movemask)(V(and)(sure, miss));
+}
+
+/* The triangles of part h of a leaf that may meet the circle (a lane mask): cheap float tests that
+ * reject only triangles tri_circle_intersect gives no hit for, so its double-precision work is
+ * spent on few. (1) Its plane pre-test, the same operations in the same order: all vertices
+ * clearly on one side of the circle's plane. Then, with the margin grown by the radius's rounding:
+ * (2) all vertices inside the sphere of radius r about the centre (the triangle, convex, lies
+ * inside: its segment cannot reach the circle); (3) the triangle's box entirely outside that
+ * sphere; (4) for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3)
+ * in the plane, with the vertices projected on the axes t and n: the segment lies in the projected
+ * triangle; (7) the segment itself (segment_misses). */
+BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m, int h)
+{
+	const vf zero = V(zero)();
+	vf in = K(group_lanes)(m, h);
+	vf rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
+	for (int a = 0; a < 3; a++) {
+		vf v0 = K(group_load)(w, m, h, a, in), v1 = K(group_load)(w, m, h, 3 + a, in);
+		vf v2 = K(group_load)(w, m, h, 6 + a, in);
+		rel[0][a] = V(sub)(v0, p->c[a]), rel[1][a] = V(sub)(v1, p->c[a]);
+		rel[2][a] = V(sub)(v2, p->c[a]);
+		mag[a] = V(add)(V(add)(V(abs)(v0), V(abs)(v1)), V(add)(V(abs)(v2), V(abs)(p->c[a])));
+	}
+	vf margin = V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), V(add)(V(add)(mag[0], mag[1]), mag[2]));
+	vf neg_margin = V(sub)(zero, margin);
+	vf d[3], r2[3], ct[3], st[3];
+	for (int v = 0; v < 3; v++) {
+		d[v] = K(dot)(p->m, rel[v]);
+		r2[v] = K(dot)(rel[v], rel[v]);
+		ct[v] = K(dot)(p->t, rel[v]);
+		st[v] = K(dot)(p->n, rel[v]);
+	}
+	vf above = V(and)(V(and)(V(gt)(d[0], margin), V(gt)(d[1], margin)), V(gt)(d[2], margin));
+	vf below = V(and)(V(and)(V(lt)(d[0], neg_margin), V(lt)(d[1], neg_margin)), V(lt)(d[2], neg_margin));
+	vf reject = V(or)(above, below);
+	vf sm = V(add)(margin, V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), p->radius));
+	vf rin = V(sub)(p->radius, sm), rout = V(add)(p->radius, sm);
+	vf rin2 = V(mul)(rin, rin), rout2 = V(mul)(rout, rout);
+	vf inside = V(and)(V(and)(V(lt)(r2[0], rin2), V(lt)(r2[1], rin2)), V(and)(V(lt)(r2[2], rin2), V(gt)(rin, zero)));
+	vf near2 = zero;
+	for (int a = 0; a < 3; a++) {
+		vf lo = V(min)(V(min)(rel[0][a], rel[1][a]), rel[2][a]);
+		vf hi = V(max)(V(max)(rel[0][a], rel[1][a]), rel[2][a]);
+		vf dn = V(max)(V(max)(lo, V(sub)(zero, hi)), zero);
+		near2 = V(add)(near2, V(mul)(dn, dn));
+	}
+	reject = V(or)(reject, V(or)(inside, V(gt)(near2, rout2)));
+	if (p->in_plane) {
+		vf q2[3];
+		for (int v = 0; v < 3; v++)
+			q2[v] = V(add)(V(mul)(ct[v], ct[v]), V(mul)(st[v], st[v]));
+		vf inside2 = V(and)(V(and)(V(lt)(q2[0], rin2), V(lt)(q2[1], rin2)),
+				    V(and)(V(lt)(q2[2], rin2), V(gt)(rin, zero)));
+		vf tlo = V(min)(V(min)(ct[0], ct[1]), ct[2]), thi = V(max)(V(max)(ct[0], ct[1]), ct[2]);
+		vf nlo = V(min)(V(min)(st[0], st[1]), st[2]), nhi = V(max)(V(max)(st[0], st[1]), st[2]);
+		vf dt = V(max)(V(max)(tlo, V(sub)(zero, thi)), zero);
+		vf dn = V(max)(V(max)(nlo, V(sub)(zero, nhi)), zero);
+		vf near2d = V(add)(V(mul)(dt, dt), V(mul)(dn, dn));
+		reject = V(or)(reject, V(or)(inside2, V(gt)(near2d, rout2)));
+	}
+	if (!p->full) {
+		vf neg_sm = V(sub)(zero, sm);
+		reject = V(or)(reject, V(and)(V(and)(V(lt)(ct[0], neg_sm), V(lt)(ct[1], neg_sm)), V(lt)(ct[2], neg_sm)));
+	}
+	int left = V(movemask)(V(andnot)(reject, in));
+	if (left)
+		left &= ~K(segment_misses)(p, rel, d, margin, sm);
+	return left;
+}
+
+static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *cp, tri_circle_hit *hits,
+			  uint32_t max_hits)
+{
+	const K(node) *nodes = b->nodes;
+	K(circle_prep) p;
+	K(circle_prepare)(cp, &p);
+	uint32_t stack[K_STACK];
+	int sp = 0;
+	uint32_t ref = 0, total = 0;
+	for (;;) {
+		if (!(ref & BVH_LEAF)) {
+			const K(node) *nd = &nodes[ref];
+			int mask = K(node_circle)(nd, &p);
+			if (mask != 0) {
+				ref = nd->child[lowest_bit(mask)];
+				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+					stack[sp++] = nd->child[lowest_bit(mask)];
+				continue;
+			}
+		} else {
+			int m = (int)leaf_count(ref);
+			const bvh_word *w = leaf_words(b, ref);
+			for (int h = 0; W * h < m; h++) {
+				for (int cand = K(group_circle)(&p, w, m, h); cand != 0; cand &= cand - 1) {
+					int k = W * h + lowest_bit(cand);
+					total = circle_triangle(q, w, m, k, hits, max_hits, total);
+				}
+			}
+		}
+		if (sp == 0)
+			return total;
+		ref = stack[--sp];
+	}
+}
+
+#undef K_STACK
