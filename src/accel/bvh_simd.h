@@ -14,6 +14,9 @@ typedef struct K(node) {
 _Static_assert(sizeof(K(node)) == NODE_BYTES(W), "node layout as the collapse writes it");
 /* Entries of a traversal stack: a visit pushes at most W - 1. */
 #define K_STACK ((W - 1) * BVH_MAX_DEPTH + W)
+/* Loops over the three axes or vertices, unrolled so their vector arrays live in registers (gcc -O2
+ * would keep them in memory). */
+#define K_UNROLL _Pragma("GCC unroll 3")
 
 /* ---- Rays: the slab test ------------------------------------------------------------------- */
 
@@ -27,6 +30,7 @@ typedef struct K(slab_ray) {
 static inline void K(slab_prepare)(K(slab_ray) *s, const tri_ray *r)
 {
 	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
+	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		s->org[i] = V(set1)(o[i]), s->inv[i] = V(set1)(d[i]);
 		int neg = d[i] < 0.0f;
@@ -41,6 +45,7 @@ static inline void K(slab_prepare)(K(slab_ray) *s, const tri_ray *r)
 BVH_INLINE int K(node_hit)(const K(node) *nd, const K(slab_ray) *s, float tlimit, float tnear[W])
 {
 	vf tn = s->tmin, tf = V(set1)(tlimit);
+	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		vf a = V(mul)(V(sub)(V(load)(nd->b[s->near_plane[i]]), s->org[i]), s->inv[i]);
 		vf b = V(mul)(V(sub)(V(load)(nd->b[s->far_plane[i]]), s->org[i]), s->inv[i]);
@@ -279,6 +284,7 @@ typedef struct K(circle_prep) {
 static void K(circle_prepare)(const circle_prep *p, K(circle_prep) *q)
 {
 	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
+	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		q->lo[i] = V(set1)(v3_get(p->lo, i)), q->hi[i] = V(set1)(v3_get(p->hi, i));
 		q->c[i] = V(set1)(v3_get(p->c, i));
@@ -303,6 +309,7 @@ BVH_INLINE int K(node_circle)(const K(node) *nd, const K(circle_prep) *p)
 	const vf half = V(set1)(0.5f), zero = V(zero)();
 	vf ok = V(lanes)(W);
 	vf e[3], rel[3], a[3], dn[3], df[3];
+	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		vf lo = V(load)(nd->b[i]), hi = V(load)(nd->b[3 + i]);
 		ok = V(and)(ok, V(and)(V(le)(lo, p->hi[i]), V(ge)(hi, p->lo[i])));
@@ -345,10 +352,12 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf
 		return 0;
 	vf two_margin = V(add)(margin, margin);
 	vf x[3][3], err[3], crosses[3];
+	K_UNROLL
 	for (int e = 0; e < 3; e++) {
 		int i = e, j = e == 2 ? 0 : e + 1;
 		vf s = V(div)(d[i], V(sub)(d[i], d[j]));
 		vf l1 = zero;
+		K_UNROLL
 		for (int a = 0; a < 3; a++) {
 			vf dv = V(sub)(rel[j][a], rel[i][a]);
 			x[e][a] = V(add)(rel[i][a], V(mul)(s, dv));
@@ -359,6 +368,7 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf
 	}
 	/* The two crossing edges: (0, 1), (0, 2) or (1, 2). */
 	vf e1[3], e2[3];
+	K_UNROLL
 	for (int a = 0; a < 3; a++)
 		e1[a] = K(select)(crosses[0], x[0][a], x[1][a]), e2[a] = K(select)(crosses[2], x[2][a], x[1][a]);
 	vf err_max = V(max)(K(select)(crosses[0], err[0], err[1]), K(select)(crosses[2], err[2], err[1]));
@@ -369,11 +379,13 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf
 	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
 	 * from D = 0 clamps to 0 (V(max) returns its second operand on NaN). */
 	vf dd[3];
+	K_UNROLL
 	for (int a = 0; a < 3; a++)
 		dd[a] = V(sub)(e2[a], e1[a]);
 	vf f = V(div)(V(sub)(zero, K(dot)(e1, dd)), K(dot)(dd, dd));
 	f = V(min)(V(max)(f, zero), one);
 	vf near[3];
+	K_UNROLL
 	for (int a = 0; a < 3; a++)
 		near[a] = V(add)(e1[a], V(mul)(f, dd[a]));
 	vf miss = V(or)(inside, V(gt)(K(dot)(near, near), V(mul)(rout, rout)));
@@ -398,6 +410,7 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	const vf zero = V(zero)();
 	vf in = K(group_lanes)(m, h);
 	vf rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
+	K_UNROLL
 	for (int a = 0; a < 3; a++) {
 		vf v0 = K(group_load)(w, m, h, a, in), v1 = K(group_load)(w, m, h, 3 + a, in);
 		vf v2 = K(group_load)(w, m, h, 6 + a, in);
@@ -408,6 +421,7 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	vf margin = V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), V(add)(V(add)(mag[0], mag[1]), mag[2]));
 	vf neg_margin = V(sub)(zero, margin);
 	vf d[3], r2[3], ct[3], st[3];
+	K_UNROLL
 	for (int v = 0; v < 3; v++) {
 		d[v] = K(dot)(p->m, rel[v]);
 		r2[v] = K(dot)(rel[v], rel[v]);
@@ -422,6 +436,7 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	vf rin2 = V(mul)(rin, rin), rout2 = V(mul)(rout, rout);
 	vf inside = V(and)(V(and)(V(lt)(r2[0], rin2), V(lt)(r2[1], rin2)), V(and)(V(lt)(r2[2], rin2), V(gt)(rin, zero)));
 	vf near2 = zero;
+	K_UNROLL
 	for (int a = 0; a < 3; a++) {
 		vf lo = V(min)(V(min)(rel[0][a], rel[1][a]), rel[2][a]);
 		vf hi = V(max)(V(max)(rel[0][a], rel[1][a]), rel[2][a]);
@@ -431,6 +446,7 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	reject = V(or)(reject, V(or)(inside, V(gt)(near2, rout2)));
 	if (p->in_plane) {
 		vf q2[3];
+		K_UNROLL
 		for (int v = 0; v < 3; v++)
 			q2[v] = V(add)(V(mul)(ct[v], ct[v]), V(mul)(st[v], st[v]));
 		vf inside2 = V(and)(V(and)(V(lt)(q2[0], rin2), V(lt)(q2[1], rin2)),
@@ -488,3 +504,4 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 }
 
 #undef K_STACK
+#undef K_UNROLL
