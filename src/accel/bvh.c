@@ -21,8 +21,6 @@
 #define SAH_INTERSECTION_COST 1.0f
 #endif
 #define SAH_BINS 16
-/* Triangles a leaf test takes at once: SAH prices a leaf by these blocks. */
-#define BVH_LEAF_BLOCK 4
 /* Slack of the slab test's far distance: 1 + 2 gamma(3) of Ize 2013 ("Robust BVH Ray
  * Traversal") covers the rounding of the box distances; we take ten times that, because the
  * triangle test's t carries rounding too and a box must never cull a hit the brute force finds. */
@@ -53,6 +51,7 @@ typedef union bvh_word {
  * a leaf (BVH_LEAF | (count - 1) << BVH_COUNT_SHIFT | first triangle), or BVH_EMPTY (then its box
  * is empty, lo = +inf and hi = -inf, and no ray or circle test passes it). */
 #define NODE_BYTES(W) (28 * (W))
+#define NODE_ALIGN 64
 #define BVH_LEAF 0x80000000u
 #define BVH_COUNT_SHIFT 27
 #define BVH_FIRST_MASK ((1u << BVH_COUNT_SHIFT) - 1)
@@ -69,7 +68,8 @@ _Static_assert(BVH_MAX_LEAF <= 16, "a leaf's count must fit its four bits");
 #endif
 
 struct bvh {
-	void *nodes; /* node 0 is the root; `width` children a node */
+	void *nodes;    /* node 0 is the root; `width` children a node; in node_mem, aligned */
+	void *node_mem; /* the allocation holding the nodes */
 	uint32_t num_nodes, width;
 	bvh_word *leaf; /* the leaves' triangles in leaf order, then LEAF_PAD_WORDS */
 	uint32_t num_tris;
@@ -378,7 +378,8 @@ static uint32_t *node_children(void *nodes, uint32_t width, uint32_t i)
  * inner node, so there are at most max(1, inner) of them. Nodes are laid out depth first (a node's
  * children side by side, then the first child's subtree): a ray's next node is more often in a
  * cache line it already fetched than in breadth-first order. */
-static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void **out, uint32_t *num_out)
+static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void **mem, void **out,
+		     uint32_t *num_out)
 {
 	uint32_t cap = num_bin / 2 + 1;
 	void *nodes = mem_alloc(cap, NODE_BYTES(width));
@@ -441,10 +442,15 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void
 		}
 	}
 	mem_free(src);
-	void *shrunk = mem_realloc(nodes, used, NODE_BYTES(width));
-	*out = shrunk ? shrunk : nodes;
-	*num_out = used;
-	return true;
+	/* The nodes at a cache line's start: then no plane of a node straddles two lines. */
+	*mem = mem_alloc((size_t)used * NODE_BYTES(width) + NODE_ALIGN - 1, 1);
+	if (*mem) {
+		*out = (void *)(((uintptr_t)*mem + NODE_ALIGN - 1) & ~(uintptr_t)(NODE_ALIGN - 1));
+		memcpy(*out, nodes, (size_t)used * NODE_BYTES(width));
+		*num_out = used;
+	}
+	mem_free(nodes);
+	return *mem != NULL;
 }
 
 /* A leaf reference's triangles: the first, and how many. */
@@ -495,12 +501,13 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			add_ref(&root, &refs[n++], _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), _mm_setr_ps(hi.x, hi.y, hi.z, 0.0f), f);
 		}
 		root.end = n;
-		ok = n == 0 || build_tree(refs, root, BVH_LEAF_BLOCK, &bin, &num_bin);
+		/* A leaf test takes `width` triangles at once: SAH prices a leaf by such blocks. */
+		ok = n == 0 || build_tree(refs, root, b->width, &bin, &num_bin);
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);
 		b->leaf = mem_calloc(GROUP_WORDS * (size_t)n + LEAF_PAD_WORDS, sizeof *b->leaf);
-		ok = b->leaf && collapse(bin, num_bin, b->width, &b->nodes, &b->num_nodes);
+		ok = b->leaf && collapse(bin, num_bin, b->width, &b->node_mem, &b->nodes, &b->num_nodes);
 	}
 	if (ok && n > 0) {
 		for (uint32_t i = 0; i < b->num_nodes; i++) {
@@ -523,7 +530,7 @@ void bvh_free(bvh *b)
 {
 	if (!b)
 		return;
-	mem_free(b->nodes);
+	mem_free(b->node_mem);
 	mem_free(b->leaf);
 	mem_free(b);
 }
@@ -538,7 +545,7 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 
 size_t bvh_bytes(const bvh *b)
 {
-	return sizeof *b + (size_t)b->num_nodes * NODE_BYTES(b->width) +
+	return sizeof *b + (b->num_nodes ? (size_t)b->num_nodes * NODE_BYTES(b->width) + NODE_ALIGN - 1 : 0) +
 	       (b->num_tris ? GROUP_WORDS * (size_t)b->num_tris + LEAF_PAD_WORDS : 0) * sizeof(bvh_word);
 }
 
@@ -751,7 +758,7 @@ BVH_INLINE __m128 f4_lanes(int n)
 #pragma GCC target("avx2")
 BVH_INLINE __m256 f8_set1(float x) { return _mm256_set1_ps(x); }
 BVH_INLINE __m256 f8_zero(void) { return _mm256_setzero_ps(); }
-BVH_INLINE __m256 f8_load(const float *p) { return _mm256_loadu_ps(p); } /* nodes: 16-byte aligned */
+BVH_INLINE __m256 f8_load(const float *p) { return _mm256_load_ps(p); }
 BVH_INLINE __m256 f8_loadu(const float *p) { return _mm256_loadu_ps(p); }
 BVH_INLINE void f8_storeu(float *p, __m256 a) { _mm256_storeu_ps(p, a); }
 BVH_INLINE __m256 f8_add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }

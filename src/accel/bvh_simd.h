@@ -225,6 +225,16 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 	}
 }
 
+/* One step of an unordered traversal (any hit, circles) from a node whose children in mask (not 0)
+ * passed: the next node is the first of them, the others go on the stack. */
+BVH_INLINE uint32_t K(descend)(const K(node) *nd, int mask, uint32_t *stack, int *sp)
+{
+	uint32_t next = nd->child[lowest_bit(mask)];
+	for (mask &= mask - 1; mask != 0; mask &= mask - 1)
+		stack[(*sp)++] = nd->child[lowest_bit(mask)];
+	return next;
+}
+
 static bool K(occluded)(const bvh *b, const tri_ray *r)
 {
 	const K(node) *nodes = b->nodes;
@@ -241,9 +251,7 @@ static bool K(occluded)(const bvh *b, const tri_ray *r)
 			float tn[W];
 			int mask = K(node_hit)(nd, &sr, r->tmax, tn);
 			if (mask != 0) {
-				ref = nd->child[lowest_bit(mask)];
-				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-					stack[sp++] = nd->child[lowest_bit(mask)];
+				ref = K(descend)(nd, mask, stack, &sp);
 				continue;
 			}
 		} else {
@@ -482,9 +490,7 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 			const K(node) *nd = &nodes[ref];
 			int mask = K(node_circle)(nd, &p);
 			if (mask != 0) {
-				ref = nd->child[lowest_bit(mask)];
-				for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-					stack[sp++] = nd->child[lowest_bit(mask)];
+				ref = K(descend)(nd, mask, stack, &sp);
 				continue;
 			}
 		} else {
