@@ -419,14 +419,18 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void
 		int pushed = sp;
 		for (uint32_t k = 0; k < width; k++) {
 			if (k >= n) {
-				for (int p = 0; p < 3; p++)
-					node_plane(nodes, width, i, p)[k] = INFINITY, node_plane(nodes, width, i, 3 + p)[k] = -INFINITY;
+				for (int p = 0; p < 3; p++) {
+					node_plane(nodes, width, i, p)[k] = INFINITY;
+					node_plane(nodes, width, i, 3 + p)[k] = -INFINITY;
+				}
 				child[k] = BVH_EMPTY;
 				continue;
 			}
 			const bvh_node *c = &bin[slot[k]];
-			for (int p = 0; p < 3; p++)
-				node_plane(nodes, width, i, p)[k] = c->lo[p], node_plane(nodes, width, i, 3 + p)[k] = c->hi[p];
+			for (int p = 0; p < 3; p++) {
+				node_plane(nodes, width, i, p)[k] = c->lo[p];
+				node_plane(nodes, width, i, 3 + p)[k] = c->hi[p];
+			}
 			if (c->count & BVH_INNER) {
 				src[used] = slot[k];
 				todo[sp++] = used;
@@ -545,7 +549,8 @@ bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi)
 
 size_t bvh_bytes(const bvh *b)
 {
-	return sizeof *b + (b->num_nodes ? (size_t)b->num_nodes * NODE_BYTES(b->width) + NODE_ALIGN - 1 : 0) +
+	size_t nodes = b->num_nodes ? (size_t)b->num_nodes * NODE_BYTES(b->width) + NODE_ALIGN - 1 : 0;
+	return sizeof *b + nodes +
 	       (b->num_tris ? GROUP_WORDS * (size_t)b->num_tris + LEAF_PAD_WORDS : 0) * sizeof(bvh_word);
 }
 
@@ -695,7 +700,8 @@ static uint32_t circle_triangle(const tri_circle *q, const bvh_word *w, int m, i
 				uint32_t max_hits, uint32_t total)
 {
 	tri_circle_hit h[2];
-	int nh = tri_circle_intersect(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1), group_vertex(w, m, k, 2), h);
+	int nh = tri_circle_intersect(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
+				      group_vertex(w, m, k, 2), h);
 	for (int i = 0; i < nh; i++, total++) {
 		if (total < max_hits) {
 			hits[total] = h[i];
@@ -781,7 +787,8 @@ BVH_INLINE __m256 f8_neq(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_N
 BVH_INLINE int f8_movemask(__m256 a) { return _mm256_movemask_ps(a); }
 BVH_INLINE __m256 f8_lanes(int n)
 {
-	return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)));
+	__m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+	return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane));
 }
 
 #define W 8

@@ -27,7 +27,7 @@ typedef struct K(slab_ray) {
 	int near_plane[3], far_plane[3];
 } K(slab_ray);
 
-static inline void K(slab_prepare)(K(slab_ray) *s, const tri_ray *r)
+static inline void K(slab_prepare)(K(slab_ray) * s, const tri_ray *r)
 {
 	float o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->inv_dir.x, r->inv_dir.y, r->inv_dir.z};
 	K_UNROLL
@@ -42,7 +42,7 @@ static inline void K(slab_prepare)(K(slab_ray) *s, const tri_ray *r)
 
 /* Bit k of the result is set when child k's box may hold a hit with t in [tmin, tlimit]; tnear
  * receives the entry distances. */
-BVH_INLINE int K(node_hit)(const K(node) *nd, const K(slab_ray) *s, float tlimit, float tnear[W])
+BVH_INLINE int K(node_hit)(const K(node) * nd, const K(slab_ray) * s, float tlimit, float tnear[W])
 {
 	vf tn = s->tmin, tf = V(set1)(tlimit);
 	K_UNROLL
@@ -62,7 +62,7 @@ typedef struct K(tri_ray) {
 	int kx, ky, kz;
 } K(tri_ray);
 
-static inline void K(tri_ray_prepare)(K(tri_ray) *q, const tri_ray *r)
+static inline void K(tri_ray_prepare)(K(tri_ray) * q, const tri_ray *r)
 {
 	q->ox = V(set1)(v3_get(r->org, r->kx)), q->oy = V(set1)(v3_get(r->org, r->ky));
 	q->oz = V(set1)(v3_get(r->org, r->kz));
@@ -72,7 +72,10 @@ static inline void K(tri_ray_prepare)(K(tri_ray) *q, const tri_ray *r)
 }
 
 /* Lanes of part h of a leaf of m triangles (bvh.c: a leaf is one group): triangles W h + j < m. */
-BVH_INLINE vf K(group_lanes)(int m, int h) { return V(lanes)(m - W * h); }
+BVH_INLINE vf K(group_lanes)(int m, int h)
+{
+	return V(lanes)(m - W * h);
+}
 /* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of part h, lanes past the leaf zero. */
 BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int h, int a, vf lanes)
 {
@@ -85,7 +88,7 @@ BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int h, int a, vf lanes)
  * Returns the lanes that hit with t in [tmin, tlimit] in *hit_mask and those left to the scalar
  * test in the result (lanes of the leaf only); t, u, v receive the hitting lanes' values. Most
  * parts tested hit nowhere: when no lane passes the edge tests, t and the divisions are skipped. */
-BVH_INLINE int K(tri_intersect)(const K(tri_ray) *q, const bvh_word *w, int m, int h, float tlimit,
+BVH_INLINE int K(tri_intersect)(const K(tri_ray) * q, const bvh_word *w, int m, int h, float tlimit,
 				int *hit_mask, float t[W], float u[W], float v[W])
 {
 	vf in = K(group_lanes)(m, h);
@@ -113,7 +116,8 @@ BVH_INLINE int K(tri_intersect)(const K(tri_ray) *q, const bvh_word *w, int m, i
 	if (!(V(movemask)(inside) & ~scalar))
 		return scalar;
 	vf det = V(add)(V(add)(U, Vb), Wb);
-	vf T = V(add)(V(add)(V(mul)(U, V(mul)(q->sz, Az)), V(mul)(Vb, V(mul)(q->sz, Bz))), V(mul)(Wb, V(mul)(q->sz, Cz)));
+	vf T = V(add)(V(add)(V(mul)(U, V(mul)(q->sz, Az)), V(mul)(Vb, V(mul)(q->sz, Bz))),
+		      V(mul)(Wb, V(mul)(q->sz, Cz)));
 	vf tt = V(div)(T, det);
 	vf ok = V(and)(inside, V(neq)(det, zero));
 	ok = V(and)(ok, V(and)(V(ge)(tt, q->tmin), V(le)(tt, V(set1)(tlimit))));
@@ -199,8 +203,10 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
 					int j = lowest_bit(todo), k = W * h + j;
 					float t = t4[j], u = u4[j], v = v4[j];
-					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
-									      group_vertex(w, m, k, 2), *tlimit, &t, &u, &v)
+					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, k, 0),
+									      group_vertex(w, m, k, 1),
+									      group_vertex(w, m, k, 2),
+									      *tlimit, &t, &u, &v)
 							      : t <= *tlimit;
 					uint32_t id = group_id(w, m, k);
 					if (hj && (t < *tlimit || id < best_id)) {
@@ -227,7 +233,7 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 
 /* One step of an unordered traversal (any hit, circles) from a node whose children in mask (not 0)
  * passed: the next node is the first of them, the others go on the stack. */
-BVH_INLINE uint32_t K(descend)(const K(node) *nd, int mask, uint32_t *stack, int *sp)
+BVH_INLINE uint32_t K(descend)(const K(node) * nd, int mask, uint32_t *stack, int *sp)
 {
 	uint32_t next = nd->child[lowest_bit(mask)];
 	for (mask &= mask - 1; mask != 0; mask &= mask - 1)
@@ -265,8 +271,9 @@ static bool K(occluded)(const bvh *b, const tri_ray *r)
 				for (; sc != 0; sc &= sc - 1) {
 					int k = W * h + lowest_bit(sc);
 					float t, u, v;
-					if (tri_intersect(r, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
-							  group_vertex(w, m, k, 2), r->tmax, &t, &u, &v))
+					if (tri_intersect(r, group_vertex(w, m, k, 0),
+							  group_vertex(w, m, k, 1), group_vertex(w, m, k, 2),
+							  r->tmax, &t, &u, &v))
 						return true;
 				}
 			}
@@ -289,7 +296,7 @@ typedef struct K(circle_prep) {
 	bool full, in_plane;
 } K(circle_prep);
 
-static void K(circle_prepare)(const circle_prep *p, K(circle_prep) *q)
+static void K(circle_prepare)(const circle_prep *p, K(circle_prep) * q)
 {
 	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
 	K_UNROLL
@@ -310,9 +317,12 @@ BVH_INLINE vf K(dot)(const vf a[3], const vf b[3])
 {
 	return V(add)(V(add)(V(mul)(a[0], b[0]), V(mul)(a[1], b[1])), V(mul)(a[2], b[2]));
 }
-BVH_INLINE vf K(select)(vf mask, vf a, vf b) { return V(or)(V(and)(mask, a), V(andnot)(mask, b)); }
+BVH_INLINE vf K(select)(vf mask, vf a, vf b)
+{
+	return V(or)(V(and)(mask, a), V(andnot)(mask, b));
+}
 
-BVH_INLINE int K(node_circle)(const K(node) *nd, const K(circle_prep) *p)
+BVH_INLINE int K(node_circle)(const K(node) * nd, const K(circle_prep) * p)
 {
 	const vf half = V(set1)(0.5f), zero = V(zero)();
 	vf ok = V(lanes)(W);
@@ -351,7 +361,7 @@ BVH_INLINE int K(node_circle)(const K(node) *nd, const K(circle_prep) *p)
  * 2 margin / (|d_i| + |d_j| - 2 margin), so the end by that times |rel_j - rel_i| (bounded by its
  * L1 norm). Misses: both ends inside the sphere, the segment's nearest point outside it, or, for a
  * half circle, both ends on the side cos theta < 0, each by the ends' error and the margin sm. */
-BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf d[3], vf margin, vf sm)
+BVH_INLINE int K(segment_misses)(const K(circle_prep) * p, vf rel[3][3], const vf d[3], vf margin, vf sm)
 {
 	const vf zero = V(zero)(), one = V(set1)(1.0f);
 	vf ad[3] = {V(abs)(d[0]), V(abs)(d[1]), V(abs)(d[2])};
@@ -378,12 +388,14 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf
 	vf e1[3], e2[3];
 	K_UNROLL
 	for (int a = 0; a < 3; a++)
-		e1[a] = K(select)(crosses[0], x[0][a], x[1][a]), e2[a] = K(select)(crosses[2], x[2][a], x[1][a]);
+		e1[a] = K(select)(crosses[0], x[0][a], x[1][a]),
+		e2[a] = K(select)(crosses[2], x[2][a], x[1][a]);
 	vf err_max = V(max)(K(select)(crosses[0], err[0], err[1]), K(select)(crosses[2], err[2], err[1]));
 	vf slack = V(add)(sm, err_max);
 	vf rin = V(sub)(p->radius, slack), rout = V(add)(p->radius, slack);
 	vf rin2 = V(mul)(rin, rin);
-	vf inside = V(and)(V(and)(V(lt)(K(dot)(e1, e1), rin2), V(lt)(K(dot)(e2, e2), rin2)), V(gt)(rin, zero));
+	vf inside =
+	    V(and)(V(and)(V(lt)(K(dot)(e1, e1), rin2), V(lt)(K(dot)(e2, e2), rin2)), V(gt)(rin, zero));
 	/* The nearest point to the centre (the origin of rel): e1 + clamp(-e1.D / D.D, 0, 1) D; a NaN
 	 * from D = 0 clamps to 0 (V(max) returns its second operand on NaN). */
 	vf dd[3];
@@ -413,7 +425,7 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) *p, vf rel[3][3], const vf
  * sphere; (4) for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3)
  * in the plane, with the vertices projected on the axes t and n: the segment lies in the projected
  * triangle; (7) the segment itself (segment_misses). */
-BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m, int h)
+BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int m, int h)
 {
 	const vf zero = V(zero)();
 	vf in = K(group_lanes)(m, h);
@@ -442,7 +454,8 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	vf sm = V(add)(margin, V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), p->radius));
 	vf rin = V(sub)(p->radius, sm), rout = V(add)(p->radius, sm);
 	vf rin2 = V(mul)(rin, rin), rout2 = V(mul)(rout, rout);
-	vf inside = V(and)(V(and)(V(lt)(r2[0], rin2), V(lt)(r2[1], rin2)), V(and)(V(lt)(r2[2], rin2), V(gt)(rin, zero)));
+	vf inside = V(and)(V(and)(V(lt)(r2[0], rin2), V(lt)(r2[1], rin2)),
+			   V(and)(V(lt)(r2[2], rin2), V(gt)(rin, zero)));
 	vf near2 = zero;
 	K_UNROLL
 	for (int a = 0; a < 3; a++) {
@@ -468,7 +481,8 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) *p, const bvh_word *w, int m
 	}
 	if (!p->full) {
 		vf neg_sm = V(sub)(zero, sm);
-		reject = V(or)(reject, V(and)(V(and)(V(lt)(ct[0], neg_sm), V(lt)(ct[1], neg_sm)), V(lt)(ct[2], neg_sm)));
+		reject = V(or)(
+		    reject, V(and)(V(and)(V(lt)(ct[0], neg_sm), V(lt)(ct[1], neg_sm)), V(lt)(ct[2], neg_sm)));
 	}
 	int left = V(movemask)(V(andnot)(reject, in));
 	if (left)
