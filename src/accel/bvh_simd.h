@@ -86,8 +86,9 @@ BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int h, int a, vf lanes)
  * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
  * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
  * Returns the lanes that hit with t in [tmin, tlimit] in *hit_mask and those left to the scalar
- * test in the result (lanes of the leaf only); t, u, v receive the hitting lanes' values. Most
- * parts tested hit nowhere: when no lane passes the edge tests, t and the divisions are skipped. */
+ * test in the result (lanes of the leaf only); t, u, v receive the hitting lanes' values. (Returning
+ * before t and the divisions when no lane passes the edge tests, as most parts do, was slower:
+ * bench/README.md.) */
 BVH_INLINE int K(tri_intersect)(const K(tri_ray) * q, const bvh_word *w, int m, int h, float tlimit,
 				int *hit_mask, float t[W], float u[W], float v[W])
 {
@@ -112,9 +113,6 @@ BVH_INLINE int K(tri_intersect)(const K(tri_ray) * q, const bvh_word *w, int m, 
 	vf neg = V(or)(V(or)(V(lt)(U, zero), V(lt)(Vb, zero)), V(lt)(Wb, zero));
 	vf pos = V(or)(V(or)(V(gt)(U, zero), V(gt)(Vb, zero)), V(gt)(Wb, zero));
 	vf inside = V(andnot)(V(and)(neg, pos), in);
-	*hit_mask = 0;
-	if (!(V(movemask)(inside) & ~scalar))
-		return scalar;
 	vf det = V(add)(V(add)(U, Vb), Wb);
 	vf T = V(add)(V(add)(V(mul)(U, V(mul)(q->sz, Az)), V(mul)(Vb, V(mul)(q->sz, Bz))),
 		      V(mul)(Wb, V(mul)(q->sz, Cz)));
