@@ -488,38 +488,68 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int 
 	return left;
 }
 
+/* The leaves among a node's children (their references have the top bit; so has BVH_EMPTY, whose
+ * box no test passes): the sign bits of the children read as floats. */
+BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((const float *)nd->child)); }
+
+/* Leaves a circle traversal collects before it tests them (then it goes on). */
+#define K_LEAF_BATCH 32
+
+/* The leaves[0, n) of a circle traversal: first every leaf's pre-test, then the exact test of each
+ * triangle left. Separate passes, free of each other's branches, overlap better than a leaf test
+ * after each node test. Returns the new total (circle_triangle). */
+static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circle_prep) *p,
+				 const uint32_t *leaves, int n, tri_circle_hit *hits, uint32_t max_hits,
+				 uint32_t total)
+{
+	int cand[K_LEAF_BATCH + W];
+	for (int i = 0; i < n; i++) {
+		int m = (int)leaf_count(leaves[i]);
+		const bvh_word *w = leaf_words(b, leaves[i]);
+		cand[i] = 0;
+		for (int h = 0; W * h < m; h++)
+			cand[i] |= K(group_circle)(p, w, m, h) << W * h;
+	}
+	for (int i = 0; i < n; i++) {
+		int m = (int)leaf_count(leaves[i]);
+		const bvh_word *w = leaf_words(b, leaves[i]);
+		for (int c = cand[i]; c != 0; c &= c - 1)
+			total = circle_triangle(q, w, m, lowest_bit(c), hits, max_hits, total);
+	}
+	return total;
+}
+
+/* The root is always an inner node (the collapse gives a lone leaf a root of its own). Inner
+ * children go on the stack, leaves into a batch (K(circle_leaves)). */
 static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *cp, tri_circle_hit *hits,
 			  uint32_t max_hits)
 {
 	const K(node) *nodes = b->nodes;
 	K(circle_prep) p;
 	K(circle_prepare)(cp, &p);
-	uint32_t stack[K_STACK];
-	int sp = 0;
-	uint32_t ref = 0, total = 0;
+	uint32_t stack[K_STACK], leaves[K_LEAF_BATCH + W];
+	int sp = 0, nl = 0;
+	uint32_t ni = 0, total = 0;
 	for (;;) {
-		if (!(ref & BVH_LEAF)) {
-			const K(node) *nd = &nodes[ref];
-			int mask = K(node_circle)(nd, &p);
-			if (mask != 0) {
-				ref = K(descend)(nd, mask, stack, &sp);
-				continue;
-			}
-		} else {
-			int m = (int)leaf_count(ref);
-			const bvh_word *w = leaf_words(b, ref);
-			for (int h = 0; W * h < m; h++) {
-				for (int cand = K(group_circle)(&p, w, m, h); cand != 0; cand &= cand - 1) {
-					int k = W * h + lowest_bit(cand);
-					total = circle_triangle(q, w, m, k, hits, max_hits, total);
-				}
-			}
+		const K(node) *nd = &nodes[ni];
+		int mask = K(node_circle)(nd, &p);
+		int leaf = mask & K(leaf_mask)(nd), inner = mask & ~leaf;
+		for (; leaf != 0; leaf &= leaf - 1)
+			leaves[nl++] = nd->child[lowest_bit(leaf)];
+		if (nl >= K_LEAF_BATCH) {
+			total = K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
+			nl = 0;
+		}
+		if (inner != 0) {
+			ni = K(descend)(nd, inner, stack, &sp);
+			continue;
 		}
 		if (sp == 0)
-			return total;
-		ref = stack[--sp];
+			return K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
+		ni = stack[--sp];
 	}
 }
 
+#undef K_LEAF_BATCH
 #undef K_STACK
 #undef K_UNROLL
