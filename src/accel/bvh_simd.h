@@ -534,8 +534,14 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 		const K(node) *nd = &nodes[ni];
 		int mask = K(node_circle)(nd, &p);
 		int leaf = mask & K(leaf_mask)(nd), inner = mask & ~leaf;
-		for (; leaf != 0; leaf &= leaf - 1)
-			leaves[nl++] = nd->child[lowest_bit(leaf)];
+		for (; leaf != 0; leaf &= leaf - 1) {
+			uint32_t ref = nd->child[lowest_bit(leaf)];
+			leaves[nl++] = ref;
+			/* Tested after the batch fills: fetch its triangles meanwhile. */
+			const char *lw = (const char *)leaf_words(b, ref);
+			for (uint32_t o = 0; o < GROUP_WORDS * sizeof(bvh_word) * leaf_count(ref); o += 64)
+				_mm_prefetch(lw + o, _MM_HINT_T0);
+		}
 		if (nl >= K_LEAF_BATCH) {
 			total = K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
 			nl = 0;
