@@ -1,22 +1,25 @@
 #!/bin/sh
-# bench/rays.sh [-r ROUNDS] [-n RAYS] NAME=RAYBENCH [NAME=RAYBENCH...]: issue 4's table. Runs each
+# bench/rays.sh [-r ROUNDS] [-n RAYS] [-c LO,HI] NAME=RAYBENCH [NAME=RAYBENCH...]: issue 4's table. Runs each
 # raybench binary (e.g. main's and a branch's) on the head and the bunny, primary and incoherent
 # rays, with --embree and --circles, alternately for ROUNDS rounds (default 3), and prints a
 # markdown table of the medians of the rounds: build, closest hit, any hit against Embree in the
 # same process (ratios > 1: faster than Embree), bytes per triangle and the cost of a circle in
-# closest-hit rays. Needs Embree (configure found libembree-dev). Run from the build folder;
+# closest-hit rays (-c: circle radii log-uniform in LO..HI of the diagonal, raybench's
+# --circle-radius; 0.0003,0.03 resembles the default scene's skin on the head). Needs Embree (configure found libembree-dev). Run from the build folder;
 # meshes from ../shared/assets (CIRCE_ASSETS overrides), ray files made once with bench/raygen.
 set -eu
 rounds=3
 nrays=1000000
+radii=0.001,0.1
 while [ $# -gt 0 ]; do
 	case $1 in
 	-r) rounds=$2; shift 2 ;;
 	-n) nrays=$2; shift 2 ;;
+	-c) radii=$2; shift 2 ;;
 	*) break ;;
 	esac
 done
-[ $# -gt 0 ] || { echo "usage: bench/rays.sh [-r ROUNDS] [-n RAYS] NAME=RAYBENCH..." >&2; exit 2; }
+[ $# -gt 0 ] || { echo "usage: bench/rays.sh [-r ROUNDS] [-n RAYS] [-c LO,HI] NAME=RAYBENCH..." >&2; exit 2; }
 assets=${CIRCE_ASSETS:-$(dirname "$0")/../../shared/assets}
 [ -d "$assets" ] || assets=../../shared/assets
 head=$assets/lee_perry_smith_head/LeePerrySmith.obj
@@ -36,7 +39,7 @@ for round in $(seq "$rounds"); do
 		for kind in primary incoherent; do
 			for v in "$@"; do
 				name=${v%%=*} bin=${v#*=}
-				out=$("$bin" "$path" "$work/$mesh-$kind.bin" --repeat 3 --embree --circles 100000)
+				out=$("$bin" "$path" "$work/$mesh-$kind.bin" --repeat 3 --embree --circles 100000 --circle-radius "$radii")
 				echo "$name $mesh $kind $out" >>"$work/runs"
 			done
 		done
