@@ -77,6 +77,9 @@ typedef struct build_ref {
 	uint32_t id;
 } build_ref;
 
+/* The build's inner functions are forced inline: their callers pass constants (the leaf block). */
+#define BUILD_INLINE static inline __attribute__((always_inline))
+
 /* A node to build: refs[begin, end), their box and the box of their centroids (doubled: lo + hi),
  * computed by the parent's partition so no pass over the refs is spent on them. */
 typedef struct build_task {
@@ -145,16 +148,35 @@ typedef struct split {
 	__m128 cmin, scale, last_bin;
 } split;
 
-/* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
- * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
- * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
- * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good). Costs are compared
- * multiplied by the node's area, which saves a division per candidate. */
 /* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
  * primitives one test takes at once. */
 static inline uint32_t blocks(uint32_t block, uint32_t count) { return (count + block - 1) / block; }
 
-static bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
+/* blocks() of the four lanes of n, as floats, for a power-of-two block. */
+static inline __m128 blocks4(uint32_t block, __m128i n)
+{
+	__m128i b = _mm_srli_epi32(_mm_add_epi32(n, _mm_set1_epi32((int)block - 1)), __builtin_ctz(block));
+	return _mm_cvtepi32_ps(b);
+}
+
+/* half_area4 of three boxes at once (lane a: box a), the same operations in the same order. */
+static inline __m128 half_area3(const __m128 lo[3], const __m128 hi[3])
+{
+	__m128 e0 = _mm_sub_ps(hi[0], lo[0]), e1 = _mm_sub_ps(hi[1], lo[1]), e2 = _mm_sub_ps(hi[2], lo[2]);
+	__m128 t0 = _mm_unpacklo_ps(e0, e1), t1 = _mm_unpacklo_ps(e2, e2); /* x0 x1 y0 y1, x2 x2 y2 y2 */
+	__m128 t2 = _mm_unpackhi_ps(e0, e1), t3 = _mm_unpackhi_ps(e2, e2); /* z0 z1 .., z2 z2 .. */
+	__m128 x = _mm_movelh_ps(t0, t1), y = _mm_movehl_ps(t1, t0), z = _mm_movelh_ps(t2, t3);
+	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, y), _mm_mul_ps(y, z)), _mm_mul_ps(z, x));
+}
+
+/* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
+ * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
+ * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
+ * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good).
+ * Costs are compared multiplied by the node's area, which saves a division per candidate. The
+ * sweeps take the three axes at once, one lane each; ties go to the lowest axis, then the lowest
+ * bin. block is a power of two. */
+BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
 {
 	uint32_t count = tk->end - tk->begin;
 	float node_area = half_area4(tk->lo, tk->hi);
@@ -162,51 +184,68 @@ static bool find_split(const build_ref *refs, const build_task *tk, uint32_t blo
 	 * < best exactly when sum < best_sum. */
 	float best = count <= BVH_MAX_LEAF ? (float)blocks(block, count) * SAH_INTERSECTION_COST : INFINITY;
 	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
-	bool found = false;
 	int nb = count < SAH_BINS ? (int)count : SAH_BINS;
 	__m128 ext = _mm_sub_ps(tk->chi, tk->clo);
 	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
 	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
 	__m128 last_bin = _mm_set1_ps((float)(nb - 1));
-	int usable_mask = _mm_movemask_ps(usable);
-	uint32_t cnt[3][SAH_BINS];
-	__m128 blo[3][SAH_BINS], bhi[3][SAH_BINS];
-	for (int ax = 0; ax < 3; ax++)
-		for (int i = 0; i < nb; i++)
-			cnt[ax][i] = 0, blo[ax][i] = _mm_set1_ps(INFINITY), bhi[ax][i] = _mm_set1_ps(-INFINITY);
+	/* Bin i of axis a: cnt[i][a] refs, boxes blo[i][a], bhi[i][a]. */
+	uint32_t cnt[SAH_BINS][4];
+	__m128 blo[SAH_BINS][3], bhi[SAH_BINS][3];
+	for (int i = 0; i < nb; i++) {
+		_mm_storeu_si128((__m128i *)cnt[i], _mm_setzero_si128());
+		for (int ax = 0; ax < 3; ax++)
+			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = _mm_set1_ps(-INFINITY);
+	}
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		__m128 lo = refs[i].lo, hi = refs[i].hi;
-		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin));
-		for (int ax = 0; ax < 3; ax++) {
-			cnt[ax][k[ax]]++;
-			blo[ax][k[ax]] = _mm_min_ps(blo[ax][k[ax]], lo);
-			bhi[ax][k[ax]] = _mm_max_ps(bhi[ax][k[ax]], hi);
-		}
+		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
+		/* Bins are below 2^16: the low half of each lane is the bin. */
+		int k0 = _mm_extract_epi16(k, 0), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
+		cnt[k0][0]++, cnt[k1][1]++, cnt[k2][2]++;
+		blo[k0][0] = _mm_min_ps(blo[k0][0], lo), bhi[k0][0] = _mm_max_ps(bhi[k0][0], hi);
+		blo[k1][1] = _mm_min_ps(blo[k1][1], lo), bhi[k1][1] = _mm_max_ps(bhi[k1][1], hi);
+		blo[k2][2] = _mm_min_ps(blo[k2][2], lo), bhi[k2][2] = _mm_max_ps(bhi[k2][2], hi);
 	}
-	for (int ax = 0; ax < 3; ax++) {
-		if (!(usable_mask >> ax & 1))
-			continue;
-		/* Sweep from the right, then from the left. */
-		float right_cost[SAH_BINS];
-		__m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
-		uint32_t n = 0;
-		for (int i = nb - 1; i > 0; i--) {
-			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			right_cost[i] = n ? half_area4(lo, hi) * (float)blocks(block, n) : 0.0f;
-		}
-		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
-		for (int i = 0; i < nb - 1; i++) {
-			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			if (n == 0 || n == count)
-				continue;
-			float sum = half_area4(lo, hi) * (float)blocks(block, n) + right_cost[i + 1];
-			if (sum < best_sum) {
-				best_sum = sum, out->axis = ax, out->bin = i + 1;
-				found = true;
-			}
-		}
+	/* Sweep from the right: the cost of the refs of bins i and up, then from the left. */
+	__m128 right_cost[SAH_BINS];
+	__m128 lo[3], hi[3];
+	__m128i n = _mm_setzero_si128();
+	for (int ax = 0; ax < 3; ax++)
+		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
+	for (int i = nb - 1; i > 0; i--) {
+		for (int ax = 0; ax < 3; ax++)
+			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
+		n = _mm_add_epi32(n, _mm_loadu_si128((const __m128i *)cnt[i]));
+		right_cost[i] = _mm_mul_ps(half_area3(lo, hi), blocks4(block, n));
 	}
+	for (int ax = 0; ax < 3; ax++)
+		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
+	n = _mm_setzero_si128();
+	/* Lane 3 (no axis) counts nothing, so it never splits. */
+	const __m128i all = _mm_set1_epi32((int)count);
+	__m128 best4 = _mm_set1_ps(best_sum);
+	__m128i best_bin = _mm_setzero_si128();
+	for (int i = 0; i < nb - 1; i++) {
+		for (int ax = 0; ax < 3; ax++)
+			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
+		n = _mm_add_epi32(n, _mm_loadu_si128((const __m128i *)cnt[i]));
+		__m128 sum = _mm_add_ps(_mm_mul_ps(half_area3(lo, hi), blocks4(block, n)), right_cost[i + 1]);
+		__m128i invalid = _mm_or_si128(_mm_cmpeq_epi32(n, _mm_setzero_si128()), _mm_cmpeq_epi32(n, all));
+		__m128i better = _mm_andnot_si128(invalid, _mm_castps_si128(_mm_cmplt_ps(sum, best4)));
+		best4 = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(better), sum), _mm_andnot_ps(_mm_castsi128_ps(better), best4));
+		best_bin = _mm_or_si128(_mm_and_si128(better, _mm_set1_epi32(i + 1)), _mm_andnot_si128(better, best_bin));
+	}
+	float sums[4];
+	int bins[4];
+	_mm_storeu_ps(sums, best4);
+	_mm_storeu_si128((__m128i *)bins, best_bin);
+	bool found = false;
+	for (int ax = 0; ax < 3; ax++)
+		if (bins[ax] != 0 && sums[ax] < best_sum) {
+			best_sum = sums[ax], out->axis = ax, out->bin = bins[ax];
+			found = true;
+		}
 	out->cmin = tk->clo, out->scale = scale, out->last_bin = last_bin;
 	return found;
 }
@@ -267,8 +306,9 @@ static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 h
 	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
 }
 
-/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order. */
-static bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
+/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order.
+ * Inlined into its two callers, so leaf_block is a constant and blocks() divides by shifts. */
+BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
 		       uint32_t *num_nodes)
 {
 	uint32_t n = root.end;
