@@ -71,11 +71,24 @@ struct bvh {
 	vec3 lo, hi; /* bounds of all triangles */
 };
 
-/* A primitive reference during the build: its box (lane 3 unused), and its index in the input. */
-typedef struct build_ref {
-	__m128 lo, hi;
-	uint32_t id;
+/* A primitive reference during the build, 32 bytes: its box, and its index in the input in the
+ * spare lane 3 of lo (hi's lane 3 is 0). Read lo through ref_lo, which clears that lane: an id
+ * read as a float is a denormal for ids below 2^23, and must never enter the arithmetic (nor
+ * min/max) of the build. Partitions move refs whole, so the id's bits go along untouched. */
+typedef union build_ref {
+	struct {
+		__m128 lo, hi;
+	};
+	struct {
+		uint32_t lo_bits[3], id;
+	};
 } build_ref;
+_Static_assert(sizeof(build_ref) == 32, "a build ref is two SSE registers");
+
+static inline __m128 ref_lo(const build_ref *r)
+{
+	return _mm_and_ps(r->lo, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+}
 
 /* The build's inner functions are forced inline: their callers pass constants (the leaf block). */
 #define BUILD_INLINE static inline __attribute__((always_inline))
@@ -198,7 +211,7 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = _mm_set1_ps(-INFINITY);
 	}
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
-		__m128 lo = refs[i].lo, hi = refs[i].hi;
+		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi;
 		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
 		/* Bins are below 2^16: the low half of each lane is the bin. */
 		int k0 = _mm_extract_epi16(k, 0), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
@@ -259,40 +272,48 @@ static void child_tasks(const build_ref *refs, const build_task *tk, uint32_t le
 	*r = (build_task){left + 1, mid, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		build_task *t = i < mid ? l : r;
-		__m128 c = _mm_add_ps(refs[i].lo, refs[i].hi);
-		t->lo = _mm_min_ps(t->lo, refs[i].lo), t->hi = _mm_max_ps(t->hi, refs[i].hi);
+		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi, c = _mm_add_ps(lo, hi);
+		t->lo = _mm_min_ps(t->lo, lo), t->hi = _mm_max_ps(t->hi, hi);
 		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
 	}
 }
 
 /* Moves the refs of split s's left side to the front of the task's range, returns where the right
- * side starts, and fills the children's boxes as it goes. */
+ * side starts, and fills the children's boxes as it goes. Branch-free (the side of a ref is a
+ * coin toss near the root, and a branch on it mispredicts half the time): Lomuto's scheme, where
+ * refs[begin, j) went left and refs[j, i) right, with the swap of refs i and j done for every ref
+ * and j advanced for those going left; a box ignores the refs of the other side through NaN lanes,
+ * which min and max pass over (_mm_min_ps(a, b) is a < b ? a : b). */
 static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left,
 			  build_task *l, build_task *r)
 {
-	*l = (build_task){left, tk->begin, 0, tk->depth + 1, _mm_set1_ps(INFINITY),
-			  _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY)};
-	*r = (build_task){left + 1, 0, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
-	uint32_t i = tk->begin, j = tk->end;
-	while (i < j) {
+	/* bins_of(c)[axis] < bin exactly when !(f >= bin) for f = (c - cmin) scale on that lane: the
+	 * bins truncate after clamping to [0, nb - 1], 1 <= bin <= nb - 1, and a NaN goes to bin 0. */
+	__m128 lane = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(s->axis)));
+	__m128 bound = _mm_set1_ps((float)s->bin);
+	__m128 llo = _mm_set1_ps(INFINITY), lhi = _mm_set1_ps(-INFINITY), lclo = llo, lchi = lhi;
+	__m128 rlo = llo, rhi = lhi, rclo = llo, rchi = lhi;
+	uint32_t j = tk->begin;
+	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		build_ref ref = refs[i];
-		__m128 c = _mm_add_ps(ref.lo, ref.hi);
-		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(c, s->cmin, s->scale, s->last_bin));
-		build_task *t;
-		if (k[s->axis] < s->bin) {
-			t = l, i++;
-		} else {
-			t = r, refs[i] = refs[--j], refs[j] = ref;
-		}
-		t->lo = _mm_min_ps(t->lo, ref.lo), t->hi = _mm_max_ps(t->hi, ref.hi);
-		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
+		__m128 lo = ref_lo(&ref), c = _mm_add_ps(lo, ref.hi);
+		__m128 f = _mm_mul_ps(_mm_sub_ps(c, s->cmin), s->scale);
+		int go_left = (_mm_movemask_ps(_mm_and_ps(_mm_cmpnge_ps(f, bound), lane)) != 0);
+		__m128 to_r = _mm_castsi128_ps(_mm_set1_epi32(go_left - 1)); /* all ones: goes right */
+		__m128 to_l = _mm_castsi128_ps(_mm_set1_epi32(-go_left));
+		llo = _mm_min_ps(_mm_or_ps(lo, to_r), llo), lhi = _mm_max_ps(_mm_or_ps(ref.hi, to_r), lhi);
+		lclo = _mm_min_ps(_mm_or_ps(c, to_r), lclo), lchi = _mm_max_ps(_mm_or_ps(c, to_r), lchi);
+		rlo = _mm_min_ps(_mm_or_ps(lo, to_l), rlo), rhi = _mm_max_ps(_mm_or_ps(ref.hi, to_l), rhi);
+		rclo = _mm_min_ps(_mm_or_ps(c, to_l), rclo), rchi = _mm_max_ps(_mm_or_ps(c, to_l), rchi);
+		refs[i] = refs[j], refs[j] = ref;
+		j += (uint32_t)go_left;
 	}
-	l->end = r->begin = i;
-	return i;
+	*l = (build_task){left, tk->begin, j, tk->depth + 1, llo, lhi, lclo, lchi};
+	*r = (build_task){left + 1, j, tk->end, tk->depth + 1, rlo, rhi, rclo, rchi};
+	return j;
 }
 
-/* The root task of refs[0, n), and ref i's box added to it. */
+/* The root task of refs[0, n), and ref i's box (lo and hi with lane 3 zero) added to it. */
 static build_task root_task(uint32_t n)
 {
 	return (build_task){0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
@@ -301,7 +322,7 @@ static build_task root_task(uint32_t n)
 static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 hi, uint32_t id)
 {
 	__m128 c = _mm_add_ps(lo, hi);
-	*ref = (build_ref){lo, hi, id};
+	ref->lo = _mm_or_ps(lo, _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, (int)id))), ref->hi = hi;
 	root->lo = _mm_min_ps(root->lo, lo), root->hi = _mm_max_ps(root->hi, hi);
 	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
 }
