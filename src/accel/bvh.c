@@ -182,6 +182,20 @@ static inline __m128 half_area3(const __m128 lo[3], const __m128 hi[3])
 	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, y), _mm_mul_ps(y, z)), _mm_mul_ps(z, x));
 }
 
+/* A bin's count rides in lane 3 of its hi, as the bits of 1.0f plus the count: a positive normal
+ * float for any count below 2^27, so max with a ref's 0 keeps it, and no denormal ever appears. */
+static inline __m128 count_in(__m128 bin_hi, __m128i one)
+{
+	return _mm_castsi128_ps(_mm_add_epi32(_mm_castps_si128(bin_hi), one));
+}
+/* The counts of bins bhi[0..2] (lane a: axis a; lane 3 repeats axis 2). */
+static inline __m128i bin_counts(const __m128 bhi[3])
+{
+	__m128 a = _mm_shuffle_ps(bhi[0], bhi[1], _MM_SHUFFLE(3, 3, 3, 3));
+	__m128 b = _mm_shuffle_ps(a, bhi[2], _MM_SHUFFLE(3, 3, 2, 0));
+	return _mm_sub_epi32(_mm_castps_si128(b), _mm_castps_si128(_mm_set1_ps(1.0f)));
+}
+
 /* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
  * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
  * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
@@ -202,23 +216,23 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
 	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
 	__m128 last_bin = _mm_set1_ps((float)(nb - 1));
-	/* Bin i of axis a: cnt[i][a] refs, boxes blo[i][a], bhi[i][a]. */
-	uint32_t cnt[SAH_BINS][4];
+	/* Bin i of axis a: the box blo[i][a], bhi[i][a], and in bhi's lane 3 its count (bin_counts):
+	 * a ref's hi has 0 there, so max keeps the count, and an integer add counts the ref in one
+	 * store with the box instead of a separate count's load and store. */
 	__m128 blo[SAH_BINS][3], bhi[SAH_BINS][3];
-	for (int i = 0; i < nb; i++) {
-		_mm_storeu_si128((__m128i *)cnt[i], _mm_setzero_si128());
+	const __m128 empty_hi = _mm_setr_ps(-INFINITY, -INFINITY, -INFINITY, 1.0f);
+	for (int i = 0; i < nb; i++)
 		for (int ax = 0; ax < 3; ax++)
-			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = _mm_set1_ps(-INFINITY);
-	}
+			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = empty_hi;
+	const __m128i one = _mm_setr_epi32(0, 0, 0, 1);
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi;
 		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
 		/* Bins are below 2^16: the low half of each lane is the bin. */
 		int k0 = _mm_extract_epi16(k, 0), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
-		cnt[k0][0]++, cnt[k1][1]++, cnt[k2][2]++;
-		blo[k0][0] = _mm_min_ps(blo[k0][0], lo), bhi[k0][0] = _mm_max_ps(bhi[k0][0], hi);
-		blo[k1][1] = _mm_min_ps(blo[k1][1], lo), bhi[k1][1] = _mm_max_ps(bhi[k1][1], hi);
-		blo[k2][2] = _mm_min_ps(blo[k2][2], lo), bhi[k2][2] = _mm_max_ps(bhi[k2][2], hi);
+		blo[k0][0] = _mm_min_ps(blo[k0][0], lo), bhi[k0][0] = count_in(_mm_max_ps(bhi[k0][0], hi), one);
+		blo[k1][1] = _mm_min_ps(blo[k1][1], lo), bhi[k1][1] = count_in(_mm_max_ps(bhi[k1][1], hi), one);
+		blo[k2][2] = _mm_min_ps(blo[k2][2], lo), bhi[k2][2] = count_in(_mm_max_ps(bhi[k2][2], hi), one);
 	}
 	/* Sweep from the right: the cost of the refs of bins i and up, then from the left. */
 	__m128 right_cost[SAH_BINS];
@@ -229,20 +243,20 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 	for (int i = nb - 1; i > 0; i--) {
 		for (int ax = 0; ax < 3; ax++)
 			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
-		n = _mm_add_epi32(n, _mm_loadu_si128((const __m128i *)cnt[i]));
+		n = _mm_add_epi32(n, bin_counts(bhi[i]));
 		right_cost[i] = _mm_mul_ps(half_area3(lo, hi), blocks4(block, n));
 	}
 	for (int ax = 0; ax < 3; ax++)
 		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
 	n = _mm_setzero_si128();
-	/* Lane 3 (no axis) counts nothing, so it never splits. */
+	/* Lane 3 repeats axis 2 and is not looked at. */
 	const __m128i all = _mm_set1_epi32((int)count);
 	__m128 best4 = _mm_set1_ps(best_sum);
 	__m128i best_bin = _mm_setzero_si128();
 	for (int i = 0; i < nb - 1; i++) {
 		for (int ax = 0; ax < 3; ax++)
 			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
-		n = _mm_add_epi32(n, _mm_loadu_si128((const __m128i *)cnt[i]));
+		n = _mm_add_epi32(n, bin_counts(bhi[i]));
 		__m128 sum = _mm_add_ps(_mm_mul_ps(half_area3(lo, hi), blocks4(block, n)), right_cost[i + 1]);
 		__m128i invalid = _mm_or_si128(_mm_cmpeq_epi32(n, _mm_setzero_si128()), _mm_cmpeq_epi32(n, all));
 		__m128i better = _mm_andnot_si128(invalid, _mm_castps_si128(_mm_cmplt_ps(sum, best4)));
@@ -283,34 +297,48 @@ static void child_tasks(const build_ref *refs, const build_task *tk, uint32_t le
  * coin toss near the root, and a branch on it mispredicts half the time): Lomuto's scheme, where
  * refs[begin, j) went left and refs[j, i) right, with the swap of refs i and j done for every ref
  * and j advanced for those going left; a box ignores the refs of the other side through NaN lanes,
- * which min and max pass over (_mm_min_ps(a, b) is a < b ? a : b). */
-static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left,
-			  build_task *l, build_task *r)
+ * which min and max pass over (_mm_min_ps(a, b) is a < b ? a : b). The axis is a constant in each
+ * of the three copies, so the side's mask is a shuffle of the compare, all in SSE registers. */
+BUILD_INLINE uint32_t partition_axis(build_ref *refs, const build_task *tk, const split *s, const int axis,
+				     uint32_t left, build_task *l, build_task *r)
 {
 	/* bins_of(c)[axis] < bin exactly when !(f >= bin) for f = (c - cmin) scale on that lane: the
 	 * bins truncate after clamping to [0, nb - 1], 1 <= bin <= nb - 1, and a NaN goes to bin 0. */
-	__m128 lane = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(s->axis)));
 	__m128 bound = _mm_set1_ps((float)s->bin);
 	__m128 llo = _mm_set1_ps(INFINITY), lhi = _mm_set1_ps(-INFINITY), lclo = llo, lchi = lhi;
 	__m128 rlo = llo, rhi = lhi, rclo = llo, rchi = lhi;
+	const __m128 ones = _mm_castsi128_ps(_mm_set1_epi32(-1));
 	uint32_t j = tk->begin;
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		build_ref ref = refs[i];
 		__m128 lo = ref_lo(&ref), c = _mm_add_ps(lo, ref.hi);
 		__m128 f = _mm_mul_ps(_mm_sub_ps(c, s->cmin), s->scale);
-		int go_left = (_mm_movemask_ps(_mm_and_ps(_mm_cmpnge_ps(f, bound), lane)) != 0);
-		__m128 to_r = _mm_castsi128_ps(_mm_set1_epi32(go_left - 1)); /* all ones: goes right */
-		__m128 to_l = _mm_castsi128_ps(_mm_set1_epi32(-go_left));
+		__m128 to_l = _mm_cmpnge_ps(f, bound);
+		to_l = axis == 0 ? _mm_shuffle_ps(to_l, to_l, 0x00)
+				 : axis == 1 ? _mm_shuffle_ps(to_l, to_l, 0x55) : _mm_shuffle_ps(to_l, to_l, 0xaa);
+		__m128 to_r = _mm_xor_ps(to_l, ones);
 		llo = _mm_min_ps(_mm_or_ps(lo, to_r), llo), lhi = _mm_max_ps(_mm_or_ps(ref.hi, to_r), lhi);
 		lclo = _mm_min_ps(_mm_or_ps(c, to_r), lclo), lchi = _mm_max_ps(_mm_or_ps(c, to_r), lchi);
 		rlo = _mm_min_ps(_mm_or_ps(lo, to_l), rlo), rhi = _mm_max_ps(_mm_or_ps(ref.hi, to_l), rhi);
 		rclo = _mm_min_ps(_mm_or_ps(c, to_l), rclo), rchi = _mm_max_ps(_mm_or_ps(c, to_l), rchi);
 		refs[i] = refs[j], refs[j] = ref;
-		j += (uint32_t)go_left;
+		j += (uint32_t)_mm_movemask_ps(to_l) & 1;
 	}
 	*l = (build_task){left, tk->begin, j, tk->depth + 1, llo, lhi, lclo, lchi};
 	*r = (build_task){left + 1, j, tk->end, tk->depth + 1, rlo, rhi, rclo, rchi};
 	return j;
+}
+static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left, build_task *l,
+			  build_task *r)
+{
+	switch (s->axis) {
+	case 0:
+		return partition_axis(refs, tk, s, 0, left, l, r);
+	case 1:
+		return partition_axis(refs, tk, s, 1, left, l, r);
+	default:
+		return partition_axis(refs, tk, s, 2, left, l, r);
+	}
 }
 
 /* The root task of refs[0, n), and ref i's box (lo and hi with lane 3 zero) added to it. */
