@@ -355,6 +355,14 @@ static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 h
 	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
 }
 
+/* Whether a leaf of count refs (at most BVH_MAX_LEAF) costs no more than SAH_TRAVERSAL_COST: no
+ * split can beat it then (find_split returns false), so the binning is skipped. With blocks of
+ * four, that is every node of up to eight refs, a third of the nodes binned otherwise. */
+static inline bool leaf_wins(uint32_t block, uint32_t count)
+{
+	return (float)blocks(block, count) * SAH_INTERSECTION_COST <= SAH_TRAVERSAL_COST;
+}
+
 /* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order.
  * Inlined into its two callers, so leaf_block is a constant and blocks() divides by shifts. */
 BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
@@ -389,7 +397,7 @@ BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_blo
 			 * more levels to single refs, so the tree stays within the limit and every leaf
 			 * within BVH_MAX_LEAF. */
 			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
-		} else if (find_split(refs, &tk, leaf_block, &s)) {
+		} else if (!(count <= BVH_MAX_LEAF && leaf_wins(leaf_block, count)) && find_split(refs, &tk, leaf_block, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
