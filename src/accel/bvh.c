@@ -513,6 +513,37 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 	return true;
 }
 
+/* Vertex i of positions[0, n) in lanes x, y, z, lane 3 zero: one unaligned load, except for the
+ * last vertex, where it would read past the array. */
+static inline __m128 load_vertex(const vec3 *positions, uint32_t n, uint32_t i)
+{
+	if (i + 1 < n)
+		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+	return _mm_setr_ps(positions[i].x, positions[i].y, positions[i].z, 0.0f);
+}
+
+/* tri_is_degenerate (tri.h) of vertices in registers (lane 3 zero): the same operations in the
+ * same order, so the same triangles are left out. */
+static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
+{
+	__m128 e1 = _mm_sub_ps(v1, v0), e2 = _mm_sub_ps(v2, v0);
+	__m128 c = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 0, 2, 1)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 1, 0, 2))),
+			      _mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 1, 0, 2)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 0, 2, 1))));
+	/* A lane is not finite when its exponent bits are all ones. */
+	const __m128i exp = _mm_set1_epi32(0x7f800000);
+	__m128i bad = _mm_or_si128(
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v0), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v1), exp), exp)),
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v2), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(c), exp), exp)));
+	__m128 sq = _mm_mul_ps(c, c);
+	__m128 len2 = _mm_add_ss(_mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1))),
+				 _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(2, 2, 2, 2)));
+	return (_mm_movemask_epi8(bad) & 0x0fff) != 0 || !(_mm_cvtss_f32(len2) > 0.0f);
+}
+
 /* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle refs[i].id. */
 static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
 		       const build_ref *refs)
@@ -552,11 +583,12 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 		build_task root = root_task(0);
 		for (uint32_t f = 0; f < num_triangles; f++) {
 			const uint32_t *ix = indices + 3 * f;
-			vec3 a = positions[ix[0]], c = positions[ix[1]], d = positions[ix[2]];
-			if (tri_is_degenerate(a, c, d))
+			__m128 v0 = load_vertex(positions, num_vertices, ix[0]);
+			__m128 v1 = load_vertex(positions, num_vertices, ix[1]);
+			__m128 v2 = load_vertex(positions, num_vertices, ix[2]);
+			if (tri_is_degenerate4(v0, v1, v2))
 				continue;
-			vec3 lo = vmin(a, vmin(c, d)), hi = vmax(a, vmax(c, d));
-			add_ref(&root, &refs[n++], _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), _mm_setr_ps(hi.x, hi.y, hi.z, 0.0f), f);
+			add_ref(&root, &refs[n++], _mm_min_ps(v0, _mm_min_ps(v1, v2)), _mm_max_ps(v0, _mm_max_ps(v1, v2)), f);
 		}
 		root.end = n;
 		ok = n == 0 || build_tree(refs, root, BVH_LEAF_BLOCK, &bin, &num_bin);
