@@ -158,7 +158,7 @@ static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 
 typedef struct split {
 	int axis, bin; /* refs whose bin on axis is below bin go left */
-	__m128 cmin, scale, last_bin;
+	__m128 cmin, scale; /* of bins_of */
 } split;
 
 /* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
@@ -273,7 +273,7 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 			best_sum = sums[ax], out->axis = ax, out->bin = bins[ax];
 			found = true;
 		}
-	out->cmin = tk->clo, out->scale = scale, out->last_bin = last_bin;
+	out->cmin = tk->clo, out->scale = scale;
 	return found;
 }
 
@@ -353,6 +353,37 @@ static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 h
 	ref->lo = _mm_or_ps(lo, _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, (int)id))), ref->hi = hi;
 	root->lo = _mm_min_ps(root->lo, lo), root->hi = _mm_max_ps(root->hi, hi);
 	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
+}
+
+/* Vertex i of positions[0, n) in lanes x, y, z, lane 3 zero: one unaligned load, except for the
+ * last vertex, where it would read past the array. */
+static inline __m128 load_vertex(const vec3 *positions, uint32_t n, uint32_t i)
+{
+	if (i + 1 < n)
+		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+	return _mm_setr_ps(positions[i].x, positions[i].y, positions[i].z, 0.0f);
+}
+
+/* tri_is_degenerate (tri.h) of vertices in registers (lane 3 zero): the same operations in the
+ * same order, so the same triangles are left out. */
+static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
+{
+	__m128 e1 = _mm_sub_ps(v1, v0), e2 = _mm_sub_ps(v2, v0);
+	__m128 c = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 0, 2, 1)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 1, 0, 2))),
+			      _mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 1, 0, 2)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 0, 2, 1))));
+	/* A lane is not finite when its exponent bits are all ones. */
+	const __m128i exp = _mm_set1_epi32(0x7f800000);
+	__m128i bad = _mm_or_si128(
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v0), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v1), exp), exp)),
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v2), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(c), exp), exp)));
+	__m128 sq = _mm_mul_ps(c, c);
+	__m128 len2 = _mm_add_ss(_mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1))),
+				 _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(2, 2, 2, 2)));
+	return (_mm_movemask_epi8(bad) & 0x0fff) != 0 || !(_mm_cvtss_f32(len2) > 0.0f);
 }
 
 /* Whether a leaf of count refs (at most BVH_MAX_LEAF) costs no more than SAH_TRAVERSAL_COST: no
@@ -511,37 +542,6 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, bvh4_node **out, uin
 	*out = shrunk ? shrunk : nodes;
 	*num_out = used;
 	return true;
-}
-
-/* Vertex i of positions[0, n) in lanes x, y, z, lane 3 zero: one unaligned load, except for the
- * last vertex, where it would read past the array. */
-static inline __m128 load_vertex(const vec3 *positions, uint32_t n, uint32_t i)
-{
-	if (i + 1 < n)
-		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
-	return _mm_setr_ps(positions[i].x, positions[i].y, positions[i].z, 0.0f);
-}
-
-/* tri_is_degenerate (tri.h) of vertices in registers (lane 3 zero): the same operations in the
- * same order, so the same triangles are left out. */
-static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
-{
-	__m128 e1 = _mm_sub_ps(v1, v0), e2 = _mm_sub_ps(v2, v0);
-	__m128 c = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 0, 2, 1)),
-					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 1, 0, 2))),
-			      _mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 1, 0, 2)),
-					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 0, 2, 1))));
-	/* A lane is not finite when its exponent bits are all ones. */
-	const __m128i exp = _mm_set1_epi32(0x7f800000);
-	__m128i bad = _mm_or_si128(
-		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v0), exp), exp),
-			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v1), exp), exp)),
-		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v2), exp), exp),
-			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(c), exp), exp)));
-	__m128 sq = _mm_mul_ps(c, c);
-	__m128 len2 = _mm_add_ss(_mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1))),
-				 _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(2, 2, 2, 2)));
-	return (_mm_movemask_epi8(bad) & 0x0fff) != 0 || !(_mm_cvtss_f32(len2) > 0.0f);
 }
 
 /* The triangles of the leaf ref, as groups (bvh_word): leaf slot i is triangle refs[i].id. */
