@@ -228,8 +228,8 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi;
 		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
-		/* Bins are below 2^16: the low half of each lane is the bin. */
-		int k0 = _mm_extract_epi16(k, 0), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
+		/* Bins are below 2^16: the low half of lanes 1 and 2 is the bin. */
+		int k0 = _mm_cvtsi128_si32(k), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
 		blo[k0][0] = _mm_min_ps(blo[k0][0], lo), bhi[k0][0] = count_in(_mm_max_ps(bhi[k0][0], hi), one);
 		blo[k1][1] = _mm_min_ps(blo[k1][1], lo), bhi[k1][1] = count_in(_mm_max_ps(bhi[k1][1], hi), one);
 		blo[k2][2] = _mm_min_ps(blo[k2][2], lo), bhi[k2][2] = count_in(_mm_max_ps(bhi[k2][2], hi), one);
