@@ -85,10 +85,10 @@ typedef union build_ref {
 } build_ref;
 _Static_assert(sizeof(build_ref) == 32, "a build ref is two SSE registers");
 
-static inline __m128 ref_lo(const build_ref *r)
-{
-	return _mm_and_ps(r->lo, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
-}
+/* All ones in lanes x, y, z; lane 3 zero. */
+static inline __m128 xyz_mask(void) { return _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)); }
+
+static inline __m128 ref_lo(const build_ref *r) { return _mm_and_ps(r->lo, xyz_mask()); }
 
 /* The build's inner functions are forced inline: their callers pass constants (the leaf block). */
 #define BUILD_INLINE static inline __attribute__((always_inline))
@@ -100,12 +100,8 @@ typedef struct build_task {
 	__m128 lo, hi, clo, chi;
 } build_task;
 
-/* Component min and max as compare-and-select (minss/maxss): vec.h's fminf-based ones are
- * library calls at -O2, and build inputs are finite (degenerate triangles are left out). */
-static inline vec3 vmin(vec3 a, vec3 b)
-{
-	return v3(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
-}
+/* Component max as compare-and-select (maxss): vec.h's fmaxf-based one is a
+ * library call at -O2, and build inputs are finite (degenerate triangles are left out). */
 static inline vec3 vmax(vec3 a, vec3 b)
 {
 	return v3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
@@ -182,11 +178,20 @@ static inline __m128 half_area3(const __m128 lo[3], const __m128 hi[3])
 	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, y), _mm_mul_ps(y, z)), _mm_mul_ps(z, x));
 }
 
-/* A bin's count rides in lane 3 of its hi, as the bits of 1.0f plus the count: a positive normal
- * float for any count below 2^27, so max with a ref's 0 keeps it, and no denormal ever appears. */
-static inline __m128 count_in(__m128 bin_hi, __m128i one)
+/* a where mask is all ones, b where it is zero. */
+static inline __m128i select_si128(__m128i mask, __m128i a, __m128i b)
 {
-	return _mm_castsi128_ps(_mm_add_epi32(_mm_castps_si128(bin_hi), one));
+	return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+
+/* A ref's box added to a bin's. The bin's count rides in lane 3 of its hi, as the bits of 1.0f plus
+ * the count: a positive normal float for any count below 2^27, so max with a ref's 0 keeps it, and
+ * no denormal ever appears. */
+static inline void bin_add(__m128 *bin_lo, __m128 *bin_hi, __m128 lo, __m128 hi)
+{
+	*bin_lo = _mm_min_ps(*bin_lo, lo);
+	__m128i bits = _mm_castps_si128(_mm_max_ps(*bin_hi, hi));
+	*bin_hi = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_setr_epi32(0, 0, 0, 1)));
 }
 /* The counts of bins bhi[0..2] (lane a: axis a; lane 3 repeats axis 2). */
 static inline __m128i bin_counts(const __m128 bhi[3])
@@ -224,15 +229,13 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 	for (int i = 0; i < nb; i++)
 		for (int ax = 0; ax < 3; ax++)
 			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = empty_hi;
-	const __m128i one = _mm_setr_epi32(0, 0, 0, 1);
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi;
 		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
 		/* Bins are below 2^16: the low half of lanes 1 and 2 is the bin. */
 		int k0 = _mm_cvtsi128_si32(k), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
-		blo[k0][0] = _mm_min_ps(blo[k0][0], lo), bhi[k0][0] = count_in(_mm_max_ps(bhi[k0][0], hi), one);
-		blo[k1][1] = _mm_min_ps(blo[k1][1], lo), bhi[k1][1] = count_in(_mm_max_ps(bhi[k1][1], hi), one);
-		blo[k2][2] = _mm_min_ps(blo[k2][2], lo), bhi[k2][2] = count_in(_mm_max_ps(bhi[k2][2], hi), one);
+		bin_add(&blo[k0][0], &bhi[k0][0], lo, hi), bin_add(&blo[k1][1], &bhi[k1][1], lo, hi);
+		bin_add(&blo[k2][2], &bhi[k2][2], lo, hi);
 	}
 	/* Sweep from the right: the cost of the refs of bins i and up, then from the left. */
 	__m128 right_cost[SAH_BINS];
@@ -250,7 +253,7 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
 	n = _mm_setzero_si128();
 	/* Lane 3 repeats axis 2 and is not looked at. */
-	const __m128i all = _mm_set1_epi32((int)count);
+	const __m128i all = _mm_set1_epi32((int)count), zero = _mm_setzero_si128();
 	__m128 best4 = _mm_set1_ps(best_sum);
 	__m128i best_bin = _mm_setzero_si128();
 	for (int i = 0; i < nb - 1; i++) {
@@ -258,10 +261,11 @@ BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32
 			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
 		n = _mm_add_epi32(n, bin_counts(bhi[i]));
 		__m128 sum = _mm_add_ps(_mm_mul_ps(half_area3(lo, hi), blocks4(block, n)), right_cost[i + 1]);
-		__m128i invalid = _mm_or_si128(_mm_cmpeq_epi32(n, _mm_setzero_si128()), _mm_cmpeq_epi32(n, all));
-		__m128i better = _mm_andnot_si128(invalid, _mm_castps_si128(_mm_cmplt_ps(sum, best4)));
-		best4 = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(better), sum), _mm_andnot_ps(_mm_castsi128_ps(better), best4));
-		best_bin = _mm_or_si128(_mm_and_si128(better, _mm_set1_epi32(i + 1)), _mm_andnot_si128(better, best_bin));
+		__m128i empty = _mm_or_si128(_mm_cmpeq_epi32(n, zero), _mm_cmpeq_epi32(n, all));
+		__m128i better = _mm_andnot_si128(empty, _mm_castps_si128(_mm_cmplt_ps(sum, best4)));
+		__m128i sum_bits = _mm_castps_si128(sum), best_bits = _mm_castps_si128(best4);
+		best4 = _mm_castsi128_ps(select_si128(better, sum_bits, best_bits));
+		best_bin = select_si128(better, _mm_set1_epi32(i + 1), best_bin);
 	}
 	float sums[4];
 	int bins[4];
@@ -292,6 +296,14 @@ static void child_tasks(const build_ref *refs, const build_task *tk, uint32_t le
 	}
 }
 
+/* Lane axis (a constant) of a in all four. */
+BUILD_INLINE __m128 broadcast_lane(__m128 a, const int axis)
+{
+	if (axis == 0)
+		return _mm_shuffle_ps(a, a, 0x00);
+	return axis == 1 ? _mm_shuffle_ps(a, a, 0x55) : _mm_shuffle_ps(a, a, 0xaa);
+}
+
 /* Moves the refs of split s's left side to the front of the task's range, returns where the right
  * side starts, and fills the children's boxes as it goes. Branch-free (the side of a ref is a
  * coin toss near the root, and a branch on it mispredicts half the time): Lomuto's scheme, where
@@ -313,9 +325,7 @@ BUILD_INLINE uint32_t partition_axis(build_ref *refs, const build_task *tk, cons
 		build_ref ref = refs[i];
 		__m128 lo = ref_lo(&ref), c = _mm_add_ps(lo, ref.hi);
 		__m128 f = _mm_mul_ps(_mm_sub_ps(c, s->cmin), s->scale);
-		__m128 to_l = _mm_cmpnge_ps(f, bound);
-		to_l = axis == 0 ? _mm_shuffle_ps(to_l, to_l, 0x00)
-				 : axis == 1 ? _mm_shuffle_ps(to_l, to_l, 0x55) : _mm_shuffle_ps(to_l, to_l, 0xaa);
+		__m128 to_l = broadcast_lane(_mm_cmpnge_ps(f, bound), axis);
 		__m128 to_r = _mm_xor_ps(to_l, ones);
 		llo = _mm_min_ps(_mm_or_ps(lo, to_r), llo), lhi = _mm_max_ps(_mm_or_ps(ref.hi, to_r), lhi);
 		lclo = _mm_min_ps(_mm_or_ps(c, to_r), lclo), lchi = _mm_max_ps(_mm_or_ps(c, to_r), lchi);
@@ -360,7 +370,7 @@ static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 h
 static inline __m128 load_vertex(const vec3 *positions, uint32_t n, uint32_t i)
 {
 	if (i + 1 < n)
-		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), xyz_mask());
 	return _mm_setr_ps(positions[i].x, positions[i].y, positions[i].z, 0.0f);
 }
 
@@ -386,12 +396,13 @@ static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
 	return (_mm_movemask_epi8(bad) & 0x0fff) != 0 || !(_mm_cvtss_f32(len2) > 0.0f);
 }
 
-/* Whether a leaf of count refs (at most BVH_MAX_LEAF) costs no more than SAH_TRAVERSAL_COST: no
- * split can beat it then (find_split returns false), so the binning is skipped. With blocks of
- * four, that is every node of up to eight refs, a third of the nodes binned otherwise. */
+/* Whether count refs may make a leaf that costs no more than SAH_TRAVERSAL_COST: no split can beat
+ * it then (find_split returns false), so the binning is skipped. With blocks of four, that is
+ * every node of up to eight refs, a third of the nodes binned otherwise. */
 static inline bool leaf_wins(uint32_t block, uint32_t count)
 {
-	return (float)blocks(block, count) * SAH_INTERSECTION_COST <= SAH_TRAVERSAL_COST;
+	return count <= BVH_MAX_LEAF &&
+	       (float)blocks(block, count) * SAH_INTERSECTION_COST <= SAH_TRAVERSAL_COST;
 }
 
 /* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order.
@@ -428,7 +439,7 @@ BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_blo
 			 * more levels to single refs, so the tree stays within the limit and every leaf
 			 * within BVH_MAX_LEAF. */
 			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
-		} else if (!(count <= BVH_MAX_LEAF && leaf_wins(leaf_block, count)) && find_split(refs, &tk, leaf_block, &s)) {
+		} else if (!leaf_wins(leaf_block, count) && find_split(refs, &tk, leaf_block, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
@@ -588,7 +599,8 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			__m128 v2 = load_vertex(positions, num_vertices, ix[2]);
 			if (tri_is_degenerate4(v0, v1, v2))
 				continue;
-			add_ref(&root, &refs[n++], _mm_min_ps(v0, _mm_min_ps(v1, v2)), _mm_max_ps(v0, _mm_max_ps(v1, v2)), f);
+			__m128 lo = _mm_min_ps(v0, _mm_min_ps(v1, v2));
+			add_ref(&root, &refs[n++], lo, _mm_max_ps(v0, _mm_max_ps(v1, v2)), f);
 		}
 		root.end = n;
 		ok = n == 0 || build_tree(refs, root, BVH_LEAF_BLOCK, &bin, &num_bin);
