@@ -100,8 +100,8 @@ typedef struct build_task {
 	__m128 lo, hi, clo, chi;
 } build_task;
 
-/* Component max as compare-and-select (maxss): vec.h's fmaxf-based one is a
- * library call at -O2, and build inputs are finite (degenerate triangles are left out). */
+/* Component max as compare-and-select (maxss): vec.h's fmaxf-based one is a library call at -O2,
+ * and build inputs are finite (degenerate triangles are left out). */
 static inline vec3 vmax(vec3 a, vec3 b)
 {
 	return v3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
@@ -383,7 +383,7 @@ static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
 					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 1, 0, 2))),
 			      _mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 1, 0, 2)),
 					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 0, 2, 1))));
-	/* A lane is not finite when its exponent bits are all ones. */
+	/* A lane is not finite when its exponent bits are all ones (lanes x, y, z are looked at). */
 	const __m128i exp = _mm_set1_epi32(0x7f800000);
 	__m128i bad = _mm_or_si128(
 		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v0), exp), exp),
@@ -398,7 +398,7 @@ static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
 
 /* Whether count refs may make a leaf that costs no more than SAH_TRAVERSAL_COST: no split can beat
  * it then (find_split returns false), so the binning is skipped. With blocks of four, that is
- * every node of up to eight refs, a third of the nodes binned otherwise. */
+ * every node of up to eight refs: two fifths of the nodes binned otherwise (head). */
 static inline bool leaf_wins(uint32_t block, uint32_t count)
 {
 	return count <= BVH_MAX_LEAF &&
