@@ -21,7 +21,7 @@ typedef struct ray_rec {
 
 static int usage(void)
 {
-	fprintf(stderr, "usage: raybench MESH.obj RAYS.bin [--circles N] [--hits OUT.bin] [--embree] [--repeat N]\n");
+	fprintf(stderr, "usage: raybench MESH.obj RAYS.bin [--circles N] [--circle-radius LO,HI] [--hits OUT.bin] [--embree] [--repeat N]\n");
 	return 2;
 }
 
@@ -46,8 +46,8 @@ static ray_rec *read_rays(const char *path, size_t *n)
 }
 
 /* Circles as circle tracing makes them: centre uniform on a random triangle, n its normal, t
- * random in the tangent plane, radius log-uniform between 1e-3 and 0.1 of the diagonal, half. */
-static tri_circle *make_circles(const bench_mesh *m, long n, float diag)
+ * random in the tangent plane, radius log-uniform between rlo and rhi times the diagonal, half. */
+static tri_circle *make_circles(const bench_mesh *m, long n, float diag, float rlo, float rhi)
 {
 	tri_circle *c = mem_alloc((size_t)n, sizeof *c);
 	rng g;
@@ -67,7 +67,7 @@ static tri_circle *make_circles(const bench_mesh *m, long n, float diag)
 		c[i].centre = v3_add(v0, v3_add(v3_scale(v3_sub(v1, v0), a), v3_scale(v3_sub(v2, v0), b)));
 		c[i].t = v3_normalize(v3_add(v3_scale(b1, cosf(phi)), v3_scale(b2, sinf(phi))));
 		c[i].n = nn;
-		c[i].radius = diag * 1e-3f * powf(100.0f, rng_float(&g));
+		c[i].radius = diag * rlo * powf(rhi / rlo, rng_float(&g));
 		c[i].full = false;
 		i++;
 	}
@@ -78,10 +78,15 @@ int main(int argc, char **argv)
 {
 	const char *mesh_path = NULL, *ray_path = NULL, *hits_path = NULL;
 	long circles = 0, repeat = 3;
+	float rlo = 1e-3f, rhi = 0.1f;
 	bool embree = false;
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "--circles") == 0 && i + 1 < argc)
 			circles = atol(argv[++i]);
+		else if (strcmp(argv[i], "--circle-radius") == 0 && i + 1 < argc) {
+			if (sscanf(argv[++i], "%f,%f", &rlo, &rhi) != 2 || !(rlo > 0.0f) || !(rhi >= rlo))
+				return usage();
+		}
 		else if (strcmp(argv[i], "--hits") == 0 && i + 1 < argc)
 			hits_path = argv[++i];
 		else if (strcmp(argv[i], "--repeat") == 0 && i + 1 < argc)
@@ -157,7 +162,7 @@ int main(int argc, char **argv)
 		vec3 lo = m.positions[0], hi = lo;
 		for (uint32_t v = 1; v < m.num_vertices; v++)
 			lo = v3_min(lo, m.positions[v]), hi = v3_max(hi, m.positions[v]);
-		tri_circle *cs = make_circles(&m, circles, v3_length(v3_sub(hi, lo)));
+		tri_circle *cs = make_circles(&m, circles, v3_length(v3_sub(hi, lo)), rlo, rhi);
 		static tri_circle_hit buf[4096];
 		double best = 1e30;
 		long total = 0;

@@ -76,11 +76,27 @@ struct bvh {
 	vec3 lo, hi; /* bounds of all triangles */
 };
 
-/* A primitive reference during the build: its box (lane 3 unused), and its index in the input. */
-typedef struct build_ref {
-	__m128 lo, hi;
-	uint32_t id;
+/* A primitive reference during the build, 32 bytes: its box, and its index in the input in the
+ * spare lane 3 of lo (hi's lane 3 is 0). Read lo through ref_lo, which clears that lane: an id
+ * read as a float is a denormal for ids below 2^23, and must never enter the arithmetic (nor
+ * min/max) of the build. Partitions move refs whole, so the id's bits go along untouched. */
+typedef union build_ref {
+	struct {
+		__m128 lo, hi;
+	};
+	struct {
+		uint32_t lo_bits[3], id;
+	};
 } build_ref;
+_Static_assert(sizeof(build_ref) == 32, "a build ref is two SSE registers");
+
+/* All ones in lanes x, y, z; lane 3 zero. */
+static inline __m128 xyz_mask(void) { return _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)); }
+
+static inline __m128 ref_lo(const build_ref *r) { return _mm_and_ps(r->lo, xyz_mask()); }
+
+/* The build's inner functions are forced inline: their callers pass constants (the leaf block). */
+#define BUILD_INLINE static inline __attribute__((always_inline))
 
 /* A node to build: refs[begin, end), their box and the box of their centroids (doubled: lo + hi),
  * computed by the parent's partition so no pass over the refs is spent on them. */
@@ -89,12 +105,8 @@ typedef struct build_task {
 	__m128 lo, hi, clo, chi;
 } build_task;
 
-/* Component min and max as compare-and-select (minss/maxss): vec.h's fminf-based ones are
- * library calls at -O2, and build inputs are finite (degenerate triangles are left out). */
-static inline vec3 vmin(vec3 a, vec3 b)
-{
-	return v3(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
-}
+/* Component max as compare-and-select (maxss): vec.h's fmaxf-based one is a library call at -O2,
+ * and build inputs are finite (degenerate triangles are left out). */
 static inline vec3 vmax(vec3 a, vec3 b)
 {
 	return v3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
@@ -147,19 +159,61 @@ static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 
 typedef struct split {
 	int axis, bin; /* refs whose bin on axis is below bin go left */
-	__m128 cmin, scale, last_bin;
+	__m128 cmin, scale; /* of bins_of */
 } split;
 
-/* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
- * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
- * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
- * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good). Costs are compared
- * multiplied by the node's area, which saves a division per candidate. */
 /* A leaf's cost in units of SAH_INTERSECTION_COST: its count rounded up to whole blocks, the
  * primitives one test takes at once. */
 static inline uint32_t blocks(uint32_t block, uint32_t count) { return (count + block - 1) / block; }
 
-static bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
+/* blocks() of the four lanes of n, as floats, for a power-of-two block. */
+static inline __m128 blocks4(uint32_t block, __m128i n)
+{
+	__m128i b = _mm_srli_epi32(_mm_add_epi32(n, _mm_set1_epi32((int)block - 1)), __builtin_ctz(block));
+	return _mm_cvtepi32_ps(b);
+}
+
+/* half_area4 of three boxes at once (lane a: box a), the same operations in the same order. */
+static inline __m128 half_area3(const __m128 lo[3], const __m128 hi[3])
+{
+	__m128 e0 = _mm_sub_ps(hi[0], lo[0]), e1 = _mm_sub_ps(hi[1], lo[1]), e2 = _mm_sub_ps(hi[2], lo[2]);
+	__m128 t0 = _mm_unpacklo_ps(e0, e1), t1 = _mm_unpacklo_ps(e2, e2); /* x0 x1 y0 y1, x2 x2 y2 y2 */
+	__m128 t2 = _mm_unpackhi_ps(e0, e1), t3 = _mm_unpackhi_ps(e2, e2); /* z0 z1 .., z2 z2 .. */
+	__m128 x = _mm_movelh_ps(t0, t1), y = _mm_movehl_ps(t1, t0), z = _mm_movelh_ps(t2, t3);
+	return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, y), _mm_mul_ps(y, z)), _mm_mul_ps(z, x));
+}
+
+/* a where mask is all ones, b where it is zero. */
+static inline __m128i select_si128(__m128i mask, __m128i a, __m128i b)
+{
+	return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+
+/* A ref's box added to a bin's. The bin's count rides in lane 3 of its hi, as the bits of 1.0f plus
+ * the count: a positive normal float for any count below 2^27, so max with a ref's 0 keeps it, and
+ * no denormal ever appears. */
+static inline void bin_add(__m128 *bin_lo, __m128 *bin_hi, __m128 lo, __m128 hi)
+{
+	*bin_lo = _mm_min_ps(*bin_lo, lo);
+	__m128i bits = _mm_castps_si128(_mm_max_ps(*bin_hi, hi));
+	*bin_hi = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_setr_epi32(0, 0, 0, 1)));
+}
+/* The counts of bins bhi[0..2] (lane a: axis a; lane 3 repeats axis 2). */
+static inline __m128i bin_counts(const __m128 bhi[3])
+{
+	__m128 a = _mm_shuffle_ps(bhi[0], bhi[1], _MM_SHUFFLE(3, 3, 3, 3));
+	__m128 b = _mm_shuffle_ps(a, bhi[2], _MM_SHUFFLE(3, 3, 2, 0));
+	return _mm_sub_epi32(_mm_castps_si128(b), _mm_castps_si128(_mm_set1_ps(1.0f)));
+}
+
+/* Chooses the best binned-SAH split of the task's refs. Returns false when no split beats a leaf
+ * (or none exists). Nodes of fewer than SAH_BINS refs get one bin a ref: most nodes are
+ * small, and clearing and sweeping all bins would cost them more than their refs do (this rather
+ * than two bins a ref below 8 refs and 16 above builds 8 % faster on the head, trees as good).
+ * Costs are compared multiplied by the node's area, which saves a division per candidate. The
+ * sweeps take the three axes at once, one lane each; ties go to the lowest axis, then the lowest
+ * bin. block is a power of two. */
+BUILD_INLINE bool find_split(const build_ref *refs, const build_task *tk, uint32_t block, split *out)
 {
 	uint32_t count = tk->end - tk->begin;
 	float node_area = half_area4(tk->lo, tk->hi);
@@ -167,52 +221,68 @@ static bool find_split(const build_ref *refs, const build_task *tk, uint32_t blo
 	 * < best exactly when sum < best_sum. */
 	float best = count <= BVH_MAX_LEAF ? (float)blocks(block, count) * SAH_INTERSECTION_COST : INFINITY;
 	float best_sum = (best - SAH_TRAVERSAL_COST) * node_area / SAH_INTERSECTION_COST;
-	bool found = false;
 	int nb = count < SAH_BINS ? (int)count : SAH_BINS;
 	__m128 ext = _mm_sub_ps(tk->chi, tk->clo);
 	__m128 usable = _mm_cmpgt_ps(ext, _mm_setzero_ps());
 	__m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps((float)nb * (1.0f - 1e-6f)), ext));
 	__m128 last_bin = _mm_set1_ps((float)(nb - 1));
-	int usable_mask = _mm_movemask_ps(usable);
-	uint32_t cnt[3][SAH_BINS];
-	__m128 blo[3][SAH_BINS], bhi[3][SAH_BINS];
-	for (int ax = 0; ax < 3; ax++)
-		for (int i = 0; i < nb; i++)
-			cnt[ax][i] = 0, blo[ax][i] = _mm_set1_ps(INFINITY), bhi[ax][i] = _mm_set1_ps(-INFINITY);
+	/* Bin i of axis a: the box blo[i][a], bhi[i][a], and in bhi's lane 3 its count (bin_counts):
+	 * a ref's hi has 0 there, so max keeps the count, and an integer add counts the ref in one
+	 * store with the box instead of a separate count's load and store. */
+	__m128 blo[SAH_BINS][3], bhi[SAH_BINS][3];
+	const __m128 empty_hi = _mm_setr_ps(-INFINITY, -INFINITY, -INFINITY, 1.0f);
+	for (int i = 0; i < nb; i++)
+		for (int ax = 0; ax < 3; ax++)
+			blo[i][ax] = _mm_set1_ps(INFINITY), bhi[i][ax] = empty_hi;
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
-		__m128 lo = refs[i].lo, hi = refs[i].hi;
-		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin));
-		for (int ax = 0; ax < 3; ax++) {
-			cnt[ax][k[ax]]++;
-			blo[ax][k[ax]] = _mm_min_ps(blo[ax][k[ax]], lo);
-			bhi[ax][k[ax]] = _mm_max_ps(bhi[ax][k[ax]], hi);
-		}
+		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi;
+		__m128i k = bins_of(_mm_add_ps(lo, hi), tk->clo, scale, last_bin);
+		/* Bins are below 2^16: the low half of lanes 1 and 2 is the bin. */
+		int k0 = _mm_cvtsi128_si32(k), k1 = _mm_extract_epi16(k, 2), k2 = _mm_extract_epi16(k, 4);
+		bin_add(&blo[k0][0], &bhi[k0][0], lo, hi), bin_add(&blo[k1][1], &bhi[k1][1], lo, hi);
+		bin_add(&blo[k2][2], &bhi[k2][2], lo, hi);
 	}
-	for (int ax = 0; ax < 3; ax++) {
-		if (!(usable_mask >> ax & 1))
-			continue;
-		/* Sweep from the right, then from the left. */
-		float right_cost[SAH_BINS];
-		__m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
-		uint32_t n = 0;
-		for (int i = nb - 1; i > 0; i--) {
-			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			right_cost[i] = n ? half_area4(lo, hi) * (float)blocks(block, n) : 0.0f;
-		}
-		lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), n = 0;
-		for (int i = 0; i < nb - 1; i++) {
-			lo = _mm_min_ps(lo, blo[ax][i]), hi = _mm_max_ps(hi, bhi[ax][i]), n += cnt[ax][i];
-			if (n == 0 || n == count)
-				continue;
-			float sum = half_area4(lo, hi) * (float)blocks(block, n) + right_cost[i + 1];
-			if (sum < best_sum) {
-				best_sum = sum, out->axis = ax, out->bin = i + 1;
-				found = true;
-			}
-		}
+	/* Sweep from the right: the cost of the refs of bins i and up, then from the left. */
+	__m128 right_cost[SAH_BINS];
+	__m128 lo[3], hi[3];
+	__m128i n = _mm_setzero_si128();
+	for (int ax = 0; ax < 3; ax++)
+		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
+	for (int i = nb - 1; i > 0; i--) {
+		for (int ax = 0; ax < 3; ax++)
+			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
+		n = _mm_add_epi32(n, bin_counts(bhi[i]));
+		right_cost[i] = _mm_mul_ps(half_area3(lo, hi), blocks4(block, n));
 	}
-	out->cmin = tk->clo, out->scale = scale, out->last_bin = last_bin;
+	for (int ax = 0; ax < 3; ax++)
+		lo[ax] = _mm_set1_ps(INFINITY), hi[ax] = _mm_set1_ps(-INFINITY);
+	n = _mm_setzero_si128();
+	/* Lane 3 repeats axis 2 and is not looked at. */
+	const __m128i all = _mm_set1_epi32((int)count), zero = _mm_setzero_si128();
+	__m128 best4 = _mm_set1_ps(best_sum);
+	__m128i best_bin = _mm_setzero_si128();
+	for (int i = 0; i < nb - 1; i++) {
+		for (int ax = 0; ax < 3; ax++)
+			lo[ax] = _mm_min_ps(lo[ax], blo[i][ax]), hi[ax] = _mm_max_ps(hi[ax], bhi[i][ax]);
+		n = _mm_add_epi32(n, bin_counts(bhi[i]));
+		__m128 sum = _mm_add_ps(_mm_mul_ps(half_area3(lo, hi), blocks4(block, n)), right_cost[i + 1]);
+		__m128i empty = _mm_or_si128(_mm_cmpeq_epi32(n, zero), _mm_cmpeq_epi32(n, all));
+		__m128i better = _mm_andnot_si128(empty, _mm_castps_si128(_mm_cmplt_ps(sum, best4)));
+		__m128i sum_bits = _mm_castps_si128(sum), best_bits = _mm_castps_si128(best4);
+		best4 = _mm_castsi128_ps(select_si128(better, sum_bits, best_bits));
+		best_bin = select_si128(better, _mm_set1_epi32(i + 1), best_bin);
+	}
+	float sums[4];
+	int bins[4];
+	_mm_storeu_ps(sums, best4);
+	_mm_storeu_si128((__m128i *)bins, best_bin);
+	bool found = false;
+	for (int ax = 0; ax < 3; ax++)
+		if (bins[ax] != 0 && sums[ax] < best_sum) {
+			best_sum = sums[ax], out->axis = ax, out->bin = bins[ax];
+			found = true;
+		}
+	out->cmin = tk->clo, out->scale = scale;
 	return found;
 }
 
@@ -225,40 +295,68 @@ static void child_tasks(const build_ref *refs, const build_task *tk, uint32_t le
 	*r = (build_task){left + 1, mid, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
 	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		build_task *t = i < mid ? l : r;
-		__m128 c = _mm_add_ps(refs[i].lo, refs[i].hi);
-		t->lo = _mm_min_ps(t->lo, refs[i].lo), t->hi = _mm_max_ps(t->hi, refs[i].hi);
+		__m128 lo = ref_lo(&refs[i]), hi = refs[i].hi, c = _mm_add_ps(lo, hi);
+		t->lo = _mm_min_ps(t->lo, lo), t->hi = _mm_max_ps(t->hi, hi);
 		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
 	}
+}
+
+/* Lane axis (a constant) of a in all four. */
+BUILD_INLINE __m128 broadcast_lane(__m128 a, const int axis)
+{
+	if (axis == 0)
+		return _mm_shuffle_ps(a, a, 0x00);
+	return axis == 1 ? _mm_shuffle_ps(a, a, 0x55) : _mm_shuffle_ps(a, a, 0xaa);
 }
 
 /* Moves the refs of split s's left side to the front of the task's range, returns where the right
- * side starts, and fills the children's boxes as it goes. */
-static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left,
-			  build_task *l, build_task *r)
+ * side starts, and fills the children's boxes as it goes. Branch-free (the side of a ref is a
+ * coin toss near the root, and a branch on it mispredicts half the time): Lomuto's scheme, where
+ * refs[begin, j) went left and refs[j, i) right, with the swap of refs i and j done for every ref
+ * and j advanced for those going left; a box ignores the refs of the other side through NaN lanes,
+ * which min and max pass over (_mm_min_ps(a, b) is a < b ? a : b). The axis is a constant in each
+ * of the three copies, so the side's mask is a shuffle of the compare, all in SSE registers. */
+BUILD_INLINE uint32_t partition_axis(build_ref *refs, const build_task *tk, const split *s, const int axis,
+				     uint32_t left, build_task *l, build_task *r)
 {
-	*l = (build_task){left, tk->begin, 0, tk->depth + 1, _mm_set1_ps(INFINITY),
-			  _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY)};
-	*r = (build_task){left + 1, 0, tk->end, tk->depth + 1, l->lo, l->hi, l->clo, l->chi};
-	uint32_t i = tk->begin, j = tk->end;
-	while (i < j) {
+	/* bins_of(c)[axis] < bin exactly when !(f >= bin) for f = (c - cmin) scale on that lane: the
+	 * bins truncate after clamping to [0, nb - 1], 1 <= bin <= nb - 1, and a NaN goes to bin 0. */
+	__m128 bound = _mm_set1_ps((float)s->bin);
+	__m128 llo = _mm_set1_ps(INFINITY), lhi = _mm_set1_ps(-INFINITY), lclo = llo, lchi = lhi;
+	__m128 rlo = llo, rhi = lhi, rclo = llo, rchi = lhi;
+	const __m128 ones = _mm_castsi128_ps(_mm_set1_epi32(-1));
+	uint32_t j = tk->begin;
+	for (uint32_t i = tk->begin; i < tk->end; i++) {
 		build_ref ref = refs[i];
-		__m128 c = _mm_add_ps(ref.lo, ref.hi);
-		int k[4];
-		_mm_storeu_si128((__m128i *)k, bins_of(c, s->cmin, s->scale, s->last_bin));
-		build_task *t;
-		if (k[s->axis] < s->bin) {
-			t = l, i++;
-		} else {
-			t = r, refs[i] = refs[--j], refs[j] = ref;
-		}
-		t->lo = _mm_min_ps(t->lo, ref.lo), t->hi = _mm_max_ps(t->hi, ref.hi);
-		t->clo = _mm_min_ps(t->clo, c), t->chi = _mm_max_ps(t->chi, c);
+		__m128 lo = ref_lo(&ref), c = _mm_add_ps(lo, ref.hi);
+		__m128 f = _mm_mul_ps(_mm_sub_ps(c, s->cmin), s->scale);
+		__m128 to_l = broadcast_lane(_mm_cmpnge_ps(f, bound), axis);
+		__m128 to_r = _mm_xor_ps(to_l, ones);
+		llo = _mm_min_ps(_mm_or_ps(lo, to_r), llo), lhi = _mm_max_ps(_mm_or_ps(ref.hi, to_r), lhi);
+		lclo = _mm_min_ps(_mm_or_ps(c, to_r), lclo), lchi = _mm_max_ps(_mm_or_ps(c, to_r), lchi);
+		rlo = _mm_min_ps(_mm_or_ps(lo, to_l), rlo), rhi = _mm_max_ps(_mm_or_ps(ref.hi, to_l), rhi);
+		rclo = _mm_min_ps(_mm_or_ps(c, to_l), rclo), rchi = _mm_max_ps(_mm_or_ps(c, to_l), rchi);
+		refs[i] = refs[j], refs[j] = ref;
+		j += (uint32_t)_mm_movemask_ps(to_l) & 1;
 	}
-	l->end = r->begin = i;
-	return i;
+	*l = (build_task){left, tk->begin, j, tk->depth + 1, llo, lhi, lclo, lchi};
+	*r = (build_task){left + 1, j, tk->end, tk->depth + 1, rlo, rhi, rclo, rchi};
+	return j;
+}
+static uint32_t partition(build_ref *refs, const build_task *tk, const split *s, uint32_t left, build_task *l,
+			  build_task *r)
+{
+	switch (s->axis) {
+	case 0:
+		return partition_axis(refs, tk, s, 0, left, l, r);
+	case 1:
+		return partition_axis(refs, tk, s, 1, left, l, r);
+	default:
+		return partition_axis(refs, tk, s, 2, left, l, r);
+	}
 }
 
-/* The root task of refs[0, n), and ref i's box added to it. */
+/* The root task of refs[0, n), and ref i's box (lo and hi with lane 3 zero) added to it. */
 static build_task root_task(uint32_t n)
 {
 	return (build_task){0, 0, n, 0, _mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY), _mm_set1_ps(INFINITY),
@@ -267,13 +365,54 @@ static build_task root_task(uint32_t n)
 static inline void add_ref(build_task *root, build_ref *ref, __m128 lo, __m128 hi, uint32_t id)
 {
 	__m128 c = _mm_add_ps(lo, hi);
-	*ref = (build_ref){lo, hi, id};
+	ref->lo = _mm_or_ps(lo, _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, (int)id))), ref->hi = hi;
 	root->lo = _mm_min_ps(root->lo, lo), root->hi = _mm_max_ps(root->hi, hi);
 	root->clo = _mm_min_ps(root->clo, c), root->chi = _mm_max_ps(root->chi, c);
 }
 
-/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order. */
-static bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
+/* Vertex i of positions[0, n) in lanes x, y, z, lane 3 zero: one unaligned load, except for the
+ * last vertex, where it would read past the array. */
+static inline __m128 load_vertex(const vec3 *positions, uint32_t n, uint32_t i)
+{
+	if (i + 1 < n)
+		return _mm_and_ps(_mm_loadu_ps(&positions[i].x), xyz_mask());
+	return _mm_setr_ps(positions[i].x, positions[i].y, positions[i].z, 0.0f);
+}
+
+/* tri_is_degenerate (tri.h) of vertices in registers (lane 3 zero): the same operations in the
+ * same order, so the same triangles are left out. */
+static inline bool tri_is_degenerate4(__m128 v0, __m128 v1, __m128 v2)
+{
+	__m128 e1 = _mm_sub_ps(v1, v0), e2 = _mm_sub_ps(v2, v0);
+	__m128 c = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 0, 2, 1)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 1, 0, 2))),
+			      _mm_mul_ps(_mm_shuffle_ps(e1, e1, _MM_SHUFFLE(3, 1, 0, 2)),
+					 _mm_shuffle_ps(e2, e2, _MM_SHUFFLE(3, 0, 2, 1))));
+	/* A lane is not finite when its exponent bits are all ones (lanes x, y, z are looked at). */
+	const __m128i exp = _mm_set1_epi32(0x7f800000);
+	__m128i bad = _mm_or_si128(
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v0), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v1), exp), exp)),
+		_mm_or_si128(_mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v2), exp), exp),
+			     _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(c), exp), exp)));
+	__m128 sq = _mm_mul_ps(c, c);
+	__m128 len2 = _mm_add_ss(_mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1))),
+				 _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(2, 2, 2, 2)));
+	return (_mm_movemask_epi8(bad) & 0x0fff) != 0 || !(_mm_cvtss_f32(len2) > 0.0f);
+}
+
+/* Whether count refs may make a leaf that costs no more than SAH_TRAVERSAL_COST: no split can beat
+ * it then (find_split returns false), so the binning is skipped. With blocks of four, that is
+ * every node of up to eight refs: two fifths of the nodes binned otherwise (head). */
+static inline bool leaf_wins(uint32_t block, uint32_t count)
+{
+	return count <= BVH_MAX_LEAF &&
+	       (float)blocks(block, count) * SAH_INTERSECTION_COST <= SAH_TRAVERSAL_COST;
+}
+
+/* The binary tree over refs[0, root.end) (root.end > 0), which it reorders into leaf order.
+ * Inlined into its two callers, so leaf_block is a constant and blocks() divides by shifts. */
+BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bvh_node **nodes_out,
 		       uint32_t *num_nodes)
 {
 	uint32_t n = root.end;
@@ -305,7 +444,7 @@ static bool build_tree(build_ref *refs, build_task root, uint32_t leaf_block, bv
 			 * more levels to single refs, so the tree stays within the limit and every leaf
 			 * within BVH_MAX_LEAF. */
 			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
-		} else if (find_split(refs, &tk, leaf_block, &s)) {
+		} else if (!leaf_wins(leaf_block, count) && find_split(refs, &tk, leaf_block, &s)) {
 			partition(refs, &tk, &s, left, &l, &r);
 		} else if (count <= BVH_MAX_LEAF) {
 			make_leaf(nd, tk.begin, count);
@@ -498,15 +637,19 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 		build_task root = root_task(0);
 		for (uint32_t f = 0; f < num_triangles; f++) {
 			const uint32_t *ix = indices + 3 * f;
-			vec3 a = positions[ix[0]], c = positions[ix[1]], d = positions[ix[2]];
-			if (tri_is_degenerate(a, c, d))
+			__m128 v0 = load_vertex(positions, num_vertices, ix[0]);
+			__m128 v1 = load_vertex(positions, num_vertices, ix[1]);
+			__m128 v2 = load_vertex(positions, num_vertices, ix[2]);
+			if (tri_is_degenerate4(v0, v1, v2))
 				continue;
-			vec3 lo = vmin(a, vmin(c, d)), hi = vmax(a, vmax(c, d));
-			add_ref(&root, &refs[n++], _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), _mm_setr_ps(hi.x, hi.y, hi.z, 0.0f), f);
+			__m128 lo = _mm_min_ps(v0, _mm_min_ps(v1, v2));
+			add_ref(&root, &refs[n++], lo, _mm_max_ps(v0, _mm_max_ps(v1, v2)), f);
 		}
 		root.end = n;
-		/* A leaf test takes `width` triangles at once: SAH prices a leaf by such blocks. */
-		ok = n == 0 || build_tree(refs, root, b->width, &bin, &num_bin);
+		/* A leaf test takes `width` triangles at once: SAH prices a leaf by such blocks (passed
+		 * as constants, so the inlined build divides by shifts). */
+		ok = n == 0 || (b->width == 8 ? build_tree(refs, root, 8, &bin, &num_bin)
+					      : build_tree(refs, root, 4, &bin, &num_bin));
 	}
 	if (ok && n > 0) {
 		b->lo = bvh_node_lo(&bin[0]), b->hi = bvh_node_hi(&bin[0]);

@@ -75,7 +75,7 @@ vec3 bvh_offset_origin(vec3 p, vec3 n);
 
 /* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
  * the boxes' centroids, pricing a leaf by its count rounded up to whole leaf_blocks (the
- * primitives its test takes at once). perm receives the order of the boxes in the leaves.
+ * primitives its test takes at once; a power of two). perm receives the order of the boxes in the leaves.
  * Internal to accel. */
 typedef struct bvh_node {
 	float lo[3];

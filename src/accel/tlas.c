@@ -9,6 +9,7 @@ typedef struct inst {
 	const bvh *geom;
 	float w2o[12], o2w[12];
 	float scale; /* of a similarity transform, 0 otherwise */
+	uint32_t set;
 } inst;
 
 struct tlas {
@@ -45,6 +46,7 @@ tlas *tlas_build(const tlas_instance *instances, uint32_t count)
 		inst *in = &t->insts[i];
 		const xform *x = &instances[i].to_world;
 		in->geom = instances[i].geom;
+		in->set = instances[i].set;
 		for (int r = 0; r < 3; r++)
 			for (int c = 0; c < 4; c++)
 				in->o2w[4 * r + c] = (float)x->m[r][c], in->w2o[4 * r + c] = (float)x->inv[r][c];
@@ -162,10 +164,10 @@ static uint32_t circle_instance(const tlas *t, uint32_t id, const tri_circle *q,
 	return n;
 }
 
-uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits)
+/* The circle through the tree, on every instance (all) or on those of one set. */
+static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32_t set, tri_circle_hit *hits,
+			    uint32_t max_hits)
 {
-	if (only != TLAS_ALL_INSTANCES)
-		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
 	if (t->num_nodes == 0 || !bvh_box_circle(bvh_node_lo(&t->nodes[0]), bvh_node_hi(&t->nodes[0]), q))
 		return 0;
 	uint32_t stack[BVH_MAX_DEPTH + 2];
@@ -182,12 +184,27 @@ uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circ
 				continue;
 		} else {
 			for (uint32_t k = 0; k < nd->count; k++) {
+				uint32_t id = t->order[nd->first + k];
+				if (!all && t->insts[id].set != set)
+					continue;
 				uint32_t room = total < max_hits ? max_hits - total : 0;
-				total += circle_instance(t, t->order[nd->first + k], q, hits + (room ? total : 0), room);
+				total += circle_instance(t, id, q, hits + (room ? total : 0), room);
 			}
 		}
 		if (sp == 0)
 			return total;
 		ni = stack[--sp];
 	}
+}
+
+uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits)
+{
+	if (only != TLAS_ALL_INSTANCES)
+		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
+	return circle_tree(t, q, true, 0, hits, max_hits);
+}
+
+uint32_t tlas_circle_set(const tlas *t, const tri_circle *q, uint32_t set, tri_circle_hit *hits, uint32_t max_hits)
+{
+	return circle_tree(t, q, false, set, hits, max_hits);
 }

@@ -8,9 +8,12 @@
 
 typedef struct tlas tlas;
 
+/* set: a tag tlas_circle_set selects instances by (for the renderer, the SSS volume the
+ * instance belongs to); 0 when unused. */
 typedef struct tlas_instance {
 	const bvh *geom;
 	xform to_world;
+	uint32_t set;
 } tlas_instance;
 
 /* Restricts tlas_circle to no instance in particular. */
@@ -33,6 +36,10 @@ bool tlas_occluded(const tlas *t, const bvh_ray *ray);
  * non-uniform scale or shear are skipped - the scene build flattens SSS objects that have one.
  * Returns the total count; at most max_hits are written. */
 uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits);
+
+/* tlas_circle over the instances whose set is `set`, found through the tree: the others cost
+ * neither traversal nor room in hits. */
+uint32_t tlas_circle_set(const tlas *t, const tri_circle *q, uint32_t set, tri_circle_hit *hits, uint32_t max_hits);
 
 /* True when circles can be traced on instance i (its transform is a similarity). */
 bool tlas_circle_ok(const tlas *t, uint32_t i);

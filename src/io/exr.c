@@ -321,10 +321,23 @@ bool exrfile_read(const char *path, exrfile_image *img, diag *d)
 		img->display = (exrfile_rect){dp.min.x, dp.min.y, dp.max.x + 1, dp.max.y + 1};
 		img->width = img->data.x1 - img->data.x0;
 		img->height = img->data.y1 - img->data.y0;
-		size_t npix;
+		size_t npix, nsamples;
 		if (img->width <= 0 || img->height <= 0 ||
-		    !mem_mul_ok((size_t)img->width, (size_t)img->height, &npix))
+		    !mem_mul_ok((size_t)img->width, (size_t)img->height, &npix)) {
 			rv = EXR_ERR_BAD_CHUNK_LEADER;
+		} else if (!mem_mul_ok(npix, (size_t)chl->num_channels, &nsamples) ||
+			   nsamples > EXRFILE_MAX_SAMPLES) {
+			/* Checked before any plane is allocated: a corrupt or hostile header must not
+			 * make circe reserve what the file cannot hold. */
+			snprintf(io.msg, sizeof io.msg,
+				 "its data window (%d x %d pixels, %d channel%s) holds more samples than circe "
+				 "reads (limit %llu)",
+				 img->width, img->height, chl->num_channels, chl->num_channels == 1 ? "" : "s",
+				 (unsigned long long)EXRFILE_MAX_SAMPLES);
+			rv = EXR_ERR_OUT_OF_MEMORY;
+		}
+	}
+	if (rv == EXR_ERR_SUCCESS) {
 		img->names = mem_calloc((size_t)chl->num_channels, sizeof(char *));
 		img->planes = mem_calloc((size_t)chl->num_channels, sizeof(float *));
 		if (!img->names || !img->planes)

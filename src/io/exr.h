@@ -62,6 +62,9 @@ typedef struct exrfile_image {
 	exrfile_attr *attrs; /* names and strings owned by the image */
 } exrfile_image;
 
+/* Samples (pixels times channels) exrfile_read accepts: 2^30, 4 GiB of float planes (a 16k x 16k
+ * RGBA image). A header asking for more is refused before anything is allocated. */
+#define EXRFILE_MAX_SAMPLES ((size_t)1 << 30)
 /* Reads the first part of a scanline or tiled file (tiled: the highest-resolution level). */
 bool exrfile_read(const char *path, exrfile_image *img, diag *d);
 void exrfile_free(exrfile_image *img);

@@ -82,7 +82,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	size_t li = light_set_pick(ls, rng_float(g), &pick);
 	vec2 u = v2(rng_float(g), rng_float(g));
 	light_sample ls_out;
-	if (!(pick > 0.0f) || !light_sample_from(&ls->lights[li], p, u, &ls_out))
+	if (!(pick > 0.0f) || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
 	if (v3_dot(ls_out.wi, ng_out) <= 0.0f)
 		return v3s(0.0f);
@@ -295,7 +295,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	vec3 radiance = v3s(0.0f), beta = v3s(1.0f);
 	float prev_pdf = 0.0f;
 	bool prev_delta = true; /* the camera: whatever it sees directly counts fully */
-	vec3 prev_p = ray.o;
+	vec3 prev_p = ray.o, prev_n = v3s(0.0f); /* the vertex a BSDF sample left, its ng_out */
 	const light_set *ls = s->lights;
 	for (int bounce = 0;; bounce++) {
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
@@ -304,7 +304,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			for (size_t k = 0; ls && k < ls->infinite_count; k++) {
 				const light *l = &ls->lights[ls->infinite[k]];
 				float lp = light_set_prob(ls, ls->infinite[k]) *
-					   light_pdf(l, prev_p, ray.d, INFINITY, v3s(0));
+					   light_pdf(l, prev_p, prev_n, ray.d, INFINITY, v3s(0));
 				float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
 				radiance =
 				    v3_add(radiance, v3_scale(v3_mul(beta, light_radiance_dir(l, ray.d)), w));
@@ -314,7 +314,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (hit.light >= 0 && ls && (size_t)hit.light < ls->count) {
 			const light *l = &ls->lights[hit.light];
 			float lp = light_set_prob(ls, (size_t)hit.light) *
-				   light_pdf(l, prev_p, ray.d, hit.t, hit.ng);
+				   light_pdf(l, prev_p, prev_n, ray.d, hit.t, hit.ng);
 			float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
 			radiance = v3_add(radiance, v3_scale(v3_mul(beta, l->color), w));
 		}
@@ -402,7 +402,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		beta = v3_mul(beta, v3_scale(fval, fabsf(wi_local.z) / pdf));
 		prev_pdf = pdf;
 		prev_delta = false;
-		prev_p = p;
+		prev_p = p, prev_n = ng_out;
 		if (bounce + 1 >= RENDER_RR_DEPTH) {
 			float q = fminf(1.0f, v3_max_comp(beta));
 			if (!(rng_float(g) < q))

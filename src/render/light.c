@@ -164,6 +164,16 @@ static vec3 from_frame(vec3 axis, vec3 local)
 	return v3_add(v3_add(v3_scale(b1, local.x), v3_scale(b2, local.y)), v3_scale(axis, local.z));
 }
 
+/* A receiver's normal was given (light_sample_from's n, light_pdf's n_p): not the zero vector. */
+static bool has_normal(vec3 n) { return v3_length2(n) > 0.0f; }
+
+/* Density of the background's cosine-weighted directions about the unit normal n. */
+static float background_pdf(vec3 n, vec3 wi)
+{
+	float c = v3_dot(n, wi);
+	return c > 0.0f ? render_cosine_hemisphere_pdf(c) : 0.0f;
+}
+
 /* The cone a sphere light subtends from p: its axis, the distance to the centre and sin^2 of the
  * half angle; false when p is inside. */
 static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *sin2_max)
@@ -188,7 +198,7 @@ static float spot_factor(const light *l, float cos_theta)
 	return t * t * (3.0f - 2.0f * t);
 }
 
-bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
+bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out)
 {
 	out->delta = light_is_delta(l);
 	switch (l->kind) {
@@ -237,7 +247,7 @@ bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
 		const vec3 *v = l->tri + 3 * tri;
 		vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)),
 				v3_scale(v[2], 1.0f - b.x - b.y));
-		vec3 n = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
+		vec3 nl = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
 		vec3 to = v3_sub(y, p);
 		float d2 = v3_length2(to);
 		if (!(d2 > 0.0f))
@@ -245,13 +255,20 @@ bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
 		out->dist = sqrtf(d2);
 		out->wi = v3_scale(to, 1.0f / out->dist);
 		out->li = l->color;
-		out->pdf = light_pdf(l, p, out->wi, out->dist, n);
+		out->pdf = light_pdf(l, p, v3s(0.0f), out->wi, out->dist, nl);
 		return out->pdf > 0.0f;
 	}
 	case LIGHT_BACKGROUND:
-		out->wi = render_uniform_sphere(u);
+		/* Constant radiance: what a receiver needs is its cosine, so with a normal the
+		 * directions follow it (half the uniform sphere's samples would fall below it). */
 		out->dist = INFINITY;
 		out->li = l->color;
+		if (has_normal(n)) {
+			out->wi = v3_normalize(from_frame(n, render_cosine_hemisphere(u)));
+			out->pdf = background_pdf(n, out->wi);
+			return out->pdf > 0.0f;
+		}
+		out->wi = render_uniform_sphere(u);
 		out->pdf = RENDER_UNIFORM_SPHERE_PDF;
 		return true;
 	case LIGHT_ENVMAP: {
@@ -271,7 +288,7 @@ bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out)
 	return false;
 }
 
-float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n)
+float light_pdf(const light *l, vec3 p, vec3 n_p, vec3 wi, float dist, vec3 n)
 {
 	switch (l->kind) {
 	case LIGHT_SPHERE: {
@@ -290,7 +307,7 @@ float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n)
 		return dist * dist / (cos_l * l->area);
 	}
 	case LIGHT_BACKGROUND:
-		return RENDER_UNIFORM_SPHERE_PDF;
+		return has_normal(n_p) ? background_pdf(n_p, wi) : RENDER_UNIFORM_SPHERE_PDF;
 	case LIGHT_ENVMAP: {
 		vec2 uv = light_env_uv(rot_apply_inverse(l->rot, wi));
 		float sin_theta = sinf(uv.y * RENDER_PI);

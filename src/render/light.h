@@ -101,12 +101,16 @@ static inline bool light_is_infinite(const light *l)
 	return l->kind == LIGHT_BACKGROUND || l->kind == LIGHT_ENVMAP;
 }
 
-/* Samples the light from p. False when it contributes nothing there (p inside a sphere light,
- * outside a spot cone, a grazing mesh point). */
-bool light_sample_from(const light *l, vec3 p, vec2 u, light_sample *out);
-/* Solid-angle density that light_sample_from(p) picks direction wi hitting the light at distance
- * dist where its geometric normal is n (dist and n are used by meshes only). 0 for delta lights. */
-float light_pdf(const light *l, vec3 p, vec3 wi, float dist, vec3 n);
+/* Samples the light from p, a point of a surface whose unit normal n faces the side that receives
+ * light (or the zero vector for none). False when it contributes nothing there (p inside a sphere
+ * light, outside a spot cone, a grazing mesh point). n is used by the background only: with a
+ * normal its directions are cosine-weighted about it, and none lies below it; without, uniform over
+ * the sphere. */
+bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out);
+/* Solid-angle density that light_sample_from(p, n_p) picks direction wi hitting the light at
+ * distance dist where its geometric normal is n (dist and n are used by meshes only, n_p by the
+ * background). 0 for delta lights. */
+float light_pdf(const light *l, vec3 p, vec3 n_p, vec3 wi, float dist, vec3 n);
 /* Radiance arriving along a ray with direction d that escapes to an infinite light. */
 vec3 light_radiance_dir(const light *l, vec3 d);
 /* Ray-sphere test for a sphere light: the nearest t in (tmin, tmax), or false. */

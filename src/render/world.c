@@ -421,8 +421,16 @@ static bool world_intersect(void *user, const render_ray *ray, float tmin, float
 	return true;
 }
 
+/* The top level's set of an instance: its SSS volume, i.e. the first member of its group, or
+ * itself (a group's first member is an instance of the group, so the two never collide). */
+static uint32_t sss_set(const world *w, size_t i)
+{
+	return w->sss_group[i] >= 0 ? (uint32_t)w->sss_group[i] : (uint32_t)i;
+}
+
 /* Every hit of the circle on the SSS volume of `at`: its instance alone, or every member of its
- * group (traced over all instances, then filtered). The position is the circle's exact one. */
+ * group (the top level's set of the group: other objects cost no traversal and take no room). The
+ * position is the circle's exact one. */
 static uint32_t world_circle(void *user, const render_hit *at, const tri_circle *q, render_hit *hits, float *theta,
 			     uint32_t max, bool *more)
 {
@@ -430,17 +438,15 @@ static uint32_t world_circle(void *user, const render_hit *at, const tri_circle 
 	if (!w->top || at->object >= w->n_insts || w->inst_top[at->object] == UINT32_MAX)
 		return 0;
 	tri_circle_hit th[RENDER_SSS_MAX_HITS];
-	int group = w->sss_group[at->object];
-	uint32_t only = group < 0 ? w->inst_top[at->object] : TLAS_ALL_INSTANCES;
-	uint32_t total = tlas_circle(w->top, q, only, th, RENDER_SSS_MAX_HITS);
+	uint32_t total = w->sss_group[at->object] < 0
+			     ? tlas_circle(w->top, q, w->inst_top[at->object], th, RENDER_SSS_MAX_HITS)
+			     : tlas_circle_set(w->top, q, sss_set(w, at->object), th, RENDER_SSS_MAX_HITS);
 	uint32_t n = total < RENDER_SSS_MAX_HITS ? total : RENDER_SSS_MAX_HITS;
 	qsort(th, n, sizeof *th, tri_circle_hit_cmp); /* the choice among them must not see the BVH */
 	uint32_t k = 0;
 	*more = total > n; /* beyond the traversal's buffer: known only by count */
 	for (uint32_t i = 0; i < n; i++) {
 		uint32_t inst = w->top_inst[th[i].inst];
-		if (group >= 0 && w->sss_group[inst] != group)
-			continue;
 		if (k == max) {
 			*more = true;
 			break;
@@ -454,8 +460,7 @@ static uint32_t world_circle(void *user, const render_hit *at, const tri_circle 
 
 /* The nearest hit of a ray on the SSS volume of `at`: its instance, or each member of its group
  * in turn (the ray moved into each one's object space: t is kept, the direction not being
- * renormalised). Groups are found by a scan of the instances, which is fine for the few objects
- * a scene's SSS groups hold. */
+ * renormalised), the members found through the group's list. */
 static bool world_sss_closest(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
 			      render_hit *hit)
 {
@@ -463,12 +468,12 @@ static bool world_sss_closest(void *user, const render_hit *at, const render_ray
 	if (at->object >= w->n_insts)
 		return false;
 	int group = w->sss_group[at->object];
-	size_t first = group < 0 ? at->object : 0, last = group < 0 ? at->object + 1 : w->n_insts;
 	bvh_hit best;
 	uint32_t best_inst = UINT32_MAX;
-	for (size_t i = first; i < last; i++) {
+	for (size_t i = group < 0 ? at->object : (size_t)group; i < w->n_insts;
+	     i = group < 0 ? w->n_insts : w->sss_next[i]) {
 		const world_inst *in = &w->insts[i];
-		if ((group >= 0 && w->sss_group[i] != group) || !in->g->b)
+		if (!in->g->b)
 			continue;
 		bvh_ray r = {ray->o, ray->d, tmin, tmax};
 		if (!in->identity) {
@@ -614,18 +619,30 @@ static bool check_volumes(const world *w, const scene *sc, const world_options *
 	return ok;
 }
 
-/* The SSS volume of each instance: alone (-1), or the first instance of its material's group. */
+/* The SSS volume of each instance: alone (-1), or the first instance of its material's group;
+ * and each group's members as a list in instance order (sss_next). */
 static void build_groups(world *w, const scene *sc)
 {
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_material *m = scene_object_at(sc, i)->material;
 		w->sss_group[i] = -1;
+		w->sss_next[i] = UINT32_MAX;
 		for (size_t j = 0; is_sss(m) && m->sss.group && j <= i; j++) {
 			const scene_material *mj = scene_object_at(sc, j)->material;
 			if (is_sss(mj) && mj->sss.group && !strcmp(mj->sss.group, m->sss.group)) {
 				w->sss_group[i] = (int)j;
 				break;
 			}
+		}
+	}
+	/* Each member links to the next: walk back from the end, keeping each group's last seen. */
+	for (size_t i = w->n_insts; i-- > 0;) {
+		if (w->sss_group[i] < 0)
+			continue;
+		size_t head = (size_t)w->sss_group[i];
+		if (i != head) {
+			w->sss_next[i] = w->sss_next[head];
+			w->sss_next[head] = (uint32_t)i;
 		}
 	}
 }
@@ -635,7 +652,8 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 	size_t n = scene_n_objects(sc);
 	w->insts = mem_calloc(n ? n : 1, sizeof *w->insts);
 	w->sss_group = mem_calloc(n ? n : 1, sizeof *w->sss_group);
-	if (!w->insts || !w->sss_group) {
+	w->sss_next = mem_calloc(n ? n : 1, sizeof *w->sss_next);
+	if (!w->insts || !w->sss_group || !w->sss_next) {
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
@@ -721,9 +739,9 @@ static bool build_top(world *w, diag *d)
 			continue;
 		w->inst_top[i] = na;
 		w->top_inst[na] = (uint32_t)i;
-		all[na++] = (tlas_instance){in->g->b, in->xf};
+		all[na++] = (tlas_instance){in->g->b, in->xf, sss_set(w, i)};
 		if (!in->no_shadow)
-			casters[nc++] = (tlas_instance){in->g->b, in->xf};
+			casters[nc++] = (tlas_instance){in->g->b, in->xf, 0};
 	}
 	if (ok && na)
 		ok = (w->top = tlas_build(all, na)) != NULL;
@@ -936,7 +954,7 @@ void world_free(world *w)
 	}
 	light_set_free(&w->lights);
 	tlas_free(w->top), tlas_free(w->shadow);
-	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
+	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group), mem_free(w->sss_next);
 	mem_free(w->sss), mem_free(w->sss_of);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);

@@ -45,7 +45,7 @@ int main(void)
 	rng g;
 	rng_seed(&g, 9, 9);
 	for (int i = 0; i < NUM_INST; i++)
-		in[i] = (tlas_instance){geoms[i % 2], random_similarity(&g, i % 10 != 9)};
+		in[i] = (tlas_instance){geoms[i % 2], random_similarity(&g, i % 10 != 9), (uint32_t)i % 3};
 	tlas *t = tlas_build(in, NUM_INST);
 	CHECK(t != NULL, "tlas");
 	size_t unique = bvh_bytes(geoms[0]) + bvh_bytes(geoms[1]);
@@ -116,6 +116,19 @@ int main(void)
 				CHECK(0, "instance %u circle %d: %u hits through the tlas, %u on the flattened copy", i, k, na, nw);
 			uint32_t nall = tlas_circle(t, &q, TLAS_ALL_INSTANCES, ha, 4096);
 			CHECK(nall >= na, "all instances give at least the hits of one (%u, %u)", nall, na);
+			/* A set's hits are exactly the hits of all instances that are in the set. */
+			uint32_t set = i % 3, nset = tlas_circle_set(t, &q, set, hw, 4096), nin = 0;
+			for (uint32_t j = 0; j < nall && j < 4096; j++)
+				nin += ha[j].inst % 3 == set;
+			bool same = nset == nin;
+			for (uint32_t j = 0; same && j < nset; j++) {
+				bool found = false;
+				for (uint32_t m = 0; m < nall && !found; m++)
+					found = ha[m].inst == hw[j].inst && ha[m].prim == hw[j].prim && ha[m].theta == hw[j].theta;
+				same = found && hw[j].inst % 3 == set;
+			}
+			CHECK(same, "instance %u circle %d: set %u gives %u hits, all instances %u in the set", i, k, set,
+			      nset, nin);
 		}
 		bvh_free(wb);
 		free(w.positions);

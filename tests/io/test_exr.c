@@ -91,7 +91,8 @@ int main(void)
 	CHECK(exrfile_read(path("a.exr"), &img, &d) && img.nchannels == 1, "rewritten file has 1 channel");
 	exrfile_free(&img);
 
-	/* Errors: a missing file, a file that is not EXR, a truncated EXR, an unwritable directory. */
+	/* Errors: a missing file, a file that is not EXR, a truncated EXR, a huge data window, an
+	 * unwritable directory. */
 	char *buf = NULL;
 	size_t len = 0;
 	FILE *mem = open_memstream(&buf, &len);
@@ -110,17 +111,39 @@ int main(void)
 	fwrite(chunk, 1, got / 2, f);
 	fclose(f);
 	CHECK(!exrfile_read(path("trunc.exr"), &img, &e), "truncated file fails");
+	/* A header whose data window asks for 10^10 pixels is refused before anything is allocated
+	 * (the attribute is "dataWindow", "box2i", size 16, then xmin ymin xmax ymax; the test
+	 * image's starts at 10, 30). */
+	static const char dw_attr[] = "dataWindow\0box2i\0";
+	char *dwin = memmem(chunk, got, dw_attr, sizeof dw_attr - 1);
+	CHECK(dwin != NULL && dwin + sizeof dw_attr - 1 + 20 <= chunk + got, "a.exr's header holds its dataWindow");
+	if (dwin) {
+		int32_t huge = 99999;
+		memcpy(dwin + sizeof dw_attr - 1 + 4 + 8, &huge, 4);
+		memcpy(dwin + sizeof dw_attr - 1 + 4 + 12, &huge, 4);
+	}
+	src = fopen(path("a.exr"), "rb");
+	FILE *big = fopen(path("huge.exr"), "wb");
+	fwrite(chunk, 1, got, big);
+	fseek(src, (long)got, SEEK_SET);
+	for (int ch; (ch = fgetc(src)) != EOF;)
+		fputc(ch, big);
+	fclose(src), fclose(big);
+	CHECK(!exrfile_read(path("huge.exr"), &img, &e), "a data window of 10^10 pixels fails");
 	CHECK(!exrfile_write("/nonexistent-dir/x.exr", &desc, &e), "unwritable directory fails");
 	fclose(mem);
 	CHECK(strstr(buf, "missing.exr: error: cannot read EXR") != NULL, "missing file message:\n%s", buf);
 	CHECK(strstr(buf, "/nonexistent-dir/x.exr: error: cannot create the output") != NULL,
 	      "unwritable message:\n%s", buf);
-	CHECK(e.errors == 4, "4 errors reported (%d)", e.errors);
+	CHECK(strstr(buf, "huge.exr: error: cannot read EXR: its data window (99990 x 99970 pixels, 1 "
+			  "channel) holds more samples than circe reads (limit 1073741824)") != NULL,
+	      "huge data window message:\n%s", buf);
+	CHECK(e.errors == 5, "5 errors reported (%d)", e.errors);
 	free(buf);
 	diag_free(&e);
 
 	/* Nothing but our files is left in the directory: no temporaries. */
-	unlink(path("a.exr")), unlink(path("text.exr")), unlink(path("trunc.exr"));
+	unlink(path("a.exr")), unlink(path("text.exr")), unlink(path("trunc.exr")), unlink(path("huge.exr"));
 	CHECK(rmdir(dir) == 0, "directory %s empty at the end", dir);
 	diag_free(&d);
 	free(rgba), free(n), free(zz);

@@ -7,14 +7,14 @@
 
 typedef struct lctx {
 	const light *l;
-	vec3 p;
+	vec3 p, n; /* n: the receiver's normal, or zero */
 } lctx;
 
 static bool s_light(void *ctx, rng *g, vec3 *d)
 {
 	lctx *c = ctx;
 	light_sample ls;
-	if (!light_sample_from(c->l, c->p, v2(rng_float(g), rng_float(g)), &ls))
+	if (!light_sample_from(c->l, c->p, c->n, v2(rng_float(g), rng_float(g)), &ls))
 		return false;
 	*d = ls.wi;
 	return true;
@@ -23,13 +23,13 @@ static bool s_light(void *ctx, rng *g, vec3 *d)
 static double p_light(void *ctx, vec3 d)
 {
 	lctx *c = ctx;
-	return light_pdf(c->l, c->p, d, INFINITY, v3s(0));
+	return light_pdf(c->l, c->p, c->n, d, INFINITY, v3s(0));
 }
 
 static void test_sphere_light(long n)
 {
 	light l = light_sphere(v3(1, 2, 3), 0.8f, v3(2, 2, 2));
-	lctx c = {&l, v3(0.2f, -0.5f, 0.1f)};
+	lctx c = {&l, v3(0.2f, -0.5f, 0.1f), v3s(0)};
 	vec3 axis = v3_normalize(v3_sub(l.pos, c.p));
 	float d = v3_length(v3_sub(l.pos, c.p));
 	double cos_max = sqrt(1.0 - 0.64 / ((double)d * d));
@@ -39,12 +39,12 @@ static void test_sphere_light(long n)
 	rng_seed(&g, 1, 1);
 	for (int i = 0; i < 1000; i++) {
 		light_sample ls;
-		CHECK(light_sample_from(&l, c.p, v2(rng_float(&g), rng_float(&g)), &ls),
+		CHECK(light_sample_from(&l, c.p, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls),
 		      "sphere sample failed");
 		vec3 y = v3_madd(c.p, ls.wi, ls.dist);
 		CHECK_NEAR(v3_length(v3_sub(y, l.pos)), 0.8, 1e-4);
 		CHECK(v3_dot(v3_sub(y, l.pos), ls.wi) <= 1e-4f, "sample on the far side");
-		CHECK_NEAR(ls.pdf, light_pdf(&l, c.p, ls.wi, ls.dist, v3s(0)), 1e-3 * ls.pdf);
+		CHECK_NEAR(ls.pdf, light_pdf(&l, c.p, v3s(0), ls.wi, ls.dist, v3s(0)), 1e-3 * ls.pdf);
 		float t;
 		render_ray r = {c.p, ls.wi};
 		CHECK(light_sphere_hit(&l, &r, 0, INFINITY, &t) && fabsf(t - ls.dist) < 1e-3f * ls.dist,
@@ -55,7 +55,7 @@ static void test_sphere_light(long n)
 	double e = 0;
 	for (int i = 0; i < 10000; i++) {
 		light_sample ls;
-		if (light_sample_from(&far, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+		if (light_sample_from(&far, v3s(0), v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
 			e += ls.li.x * ls.wi.y / ls.pdf;
 	}
 	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
@@ -67,24 +67,39 @@ static void test_sphere_light(long n)
 	for (int i = 0; i < 10000; i++) {
 		light_sample ls;
 		float t;
-		if (!light_sample_from(&tiny, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+		if (!light_sample_from(&tiny, v3s(0), v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
 			continue;
 		render_ray r = {v3s(0), ls.wi};
 		misses += !light_sphere_hit(&tiny, &r, 0, INFINITY, &t) ||
-			  light_pdf(&tiny, v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
+			  light_pdf(&tiny, v3s(0), v3s(0), ls.wi, 0, v3s(0)) != ls.pdf;
 		e += ls.li.x * ls.wi.y / ls.pdf;
 	}
 	CHECK(misses == 0, "tiny sphere light: %d of 10000 samples miss it or disagree on the pdf", misses);
 	CHECK_NEAR(e / 10000, 100.0 / 2500.0, 1e-3 * 100.0 / 2500.0);
 	light_sample ls;
-	CHECK(!light_sample_from(&l, l.pos, v2(0.5f, 0.5f), &ls), "sampling from inside a sphere light");
+	CHECK(!light_sample_from(&l, l.pos, v3s(0), v2(0.5f, 0.5f), &ls), "sampling from inside a sphere light");
 }
 
 static void test_background(long n)
 {
 	light l = light_background(v3(0.5f, 1, 2));
-	lctx c = {&l, v3(3, 1, 2)};
+	lctx c = {&l, v3(3, 1, 2), v3s(0)};
 	chi2_sphere("background", s_light, p_light, &c, v3(0, 1, 0), -1.0, 16, 32, 4, n, 21);
+	/* With a receiver's normal: cosine-weighted about it, nothing below it (the chi-square's
+	 * cells below the horizon expect zero). */
+	vec3 nr = v3_normalize(v3(0.3f, -0.8f, 0.5f));
+	lctx cn = {&l, v3(3, 1, 2), nr};
+	chi2_sphere("background, cosine about a normal", s_light, p_light, &cn, nr, -1.0, 16, 32, 4, n, 22);
+	rng g;
+	rng_seed(&g, 4, 4);
+	for (int i = 0; i < 1000; i++) {
+		light_sample ls;
+		CHECK(light_sample_from(&l, cn.p, nr, v2(rng_float(&g), rng_float(&g)), &ls), "background sample");
+		CHECK(v3_dot(ls.wi, nr) > 0.0f && isinf(ls.dist), "background sample below the normal");
+		CHECK_NEAR(ls.pdf, v3_dot(ls.wi, nr) / M_PI, 1e-5);
+		CHECK_NEAR(ls.pdf, light_pdf(&l, cn.p, nr, ls.wi, INFINITY, v3s(0)), 1e-6);
+	}
+	CHECK(light_pdf(&l, cn.p, nr, v3_neg(nr), INFINITY, v3s(0)) == 0.0f, "no density below the normal");
 	CHECK_NEAR(light_radiance_dir(&l, v3(0, 0, 1)).z, 2.0, 0);
 }
 
@@ -118,7 +133,7 @@ static void test_envmap(long n)
 			inv.m[i][j] = rot.m[j][i];
 	for (long i = 0; i < n; i++) {
 		light_sample ls;
-		if (!light_sample_from(&l, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+		if (!light_sample_from(&l, v3s(0), v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
 			continue;
 		vec3 local = d3_to_v3(xform_vector(&inv, v3_to_d3(ls.wi)));
 		vec2 uv = light_env_uv(local);
@@ -127,7 +142,7 @@ static void test_envmap(long n)
 		y = y >= H ? H - 1 : y;
 		obs[y * W + x] += 1;
 		if (i < 2000) {
-			CHECK_NEAR(ls.pdf, light_pdf(&l, v3s(0), ls.wi, INFINITY, v3s(0)), 2e-3 * ls.pdf);
+			CHECK_NEAR(ls.pdf, light_pdf(&l, v3s(0), v3s(0), ls.wi, INFINITY, v3s(0)), 2e-3 * ls.pdf);
 			vec3 seen = light_radiance_dir(&l, ls.wi);
 			CHECK_NEAR(seen.y, ls.li.y, 1e-5);
 		}
@@ -144,7 +159,7 @@ static void test_envmap(long n)
 			vec2 uv = v2((i + 0.5f) / NU, (j + 0.5f) / NV);
 			vec3 wd = d3_to_v3(xform_vector(&rot, v3_to_d3(light_env_dir(uv))));
 			float st = sinf(uv.y * RENDER_PI);
-			integral += light_pdf(&l, v3s(0), wd, INFINITY, v3s(0)) * st * 2 * M_PI * M_PI /
+			integral += light_pdf(&l, v3s(0), v3s(0), wd, INFINITY, v3s(0)) * st * 2 * M_PI * M_PI /
 				    ((double)NU * NV);
 		}
 	CHECK_NEAR(integral, 1.0, 1e-3);
@@ -176,7 +191,7 @@ static void test_mesh(long n)
 	rng_seed(&g, 4, 4);
 	for (long i = 0; i < n; i++) {
 		light_sample ls;
-		if (!light_sample_from(&l, p, v2(rng_float(&g), rng_float(&g)), &ls))
+		if (!light_sample_from(&l, p, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
 			continue;
 		vec3 y = v3_madd(p, ls.wi, ls.dist);
 		int k = y.y > 1.99f ? 0 : y.x > 2.99f ? 1 : 2; /* which triangle, by its plane */
@@ -191,7 +206,7 @@ static void test_mesh(long n)
 		i1 = i1 >= NB ? NB - 1 : i1;
 		obs[k * NB * NB + i0 * NB + i1] += 1;
 		if (i < 1000) {
-			float pdf = light_pdf(&l, p, ls.wi, ls.dist, v3_normalize(nrm));
+			float pdf = light_pdf(&l, p, v3s(0), ls.wi, ls.dist, v3_normalize(nrm));
 			CHECK_NEAR(ls.pdf, pdf, 1e-3 * pdf);
 		}
 	}
@@ -218,7 +233,7 @@ static void test_mesh(long n)
 				best = t;
 				vec3 nrm = v3_normalize(
 				    v3_cross(v3_sub(v[3 * k + 1], v[3 * k]), v3_sub(v[3 * k + 2], v[3 * k])));
-				pdf = light_pdf(&l, p, d, t, nrm);
+				pdf = light_pdf(&l, p, v3s(0), d, t, nrm);
 			}
 		}
 		sum += pdf * 4 * M_PI;
@@ -233,7 +248,7 @@ static void test_delta_and_set(void)
 {
 	light pt = light_point(v3(0, 4, 0), v3(8, 8, 8));
 	light_sample ls;
-	CHECK(light_sample_from(&pt, v3(0, 2, 0), v2(0, 0), &ls) && ls.delta, "point sample");
+	CHECK(light_sample_from(&pt, v3(0, 2, 0), v3s(0), v2(0, 0), &ls) && ls.delta, "point sample");
 	CHECK_NEAR(ls.li.x, 2.0, 1e-6);
 	CHECK_NEAR(ls.dist, 2.0, 1e-6);
 
@@ -242,7 +257,7 @@ static void test_delta_and_set(void)
 	for (float deg = 10; deg <= 45; deg += 5) {
 		float r = deg * RENDER_PI / 180;
 		vec3 q = v3(sinf(r), 1 - cosf(r), 0); /* at distance 1 from the light */
-		bool ok = light_sample_from(&sp, q, v2(0, 0), &ls);
+		bool ok = light_sample_from(&sp, q, v3s(0), v2(0, 0), &ls);
 		float c20 = cosf(20 * RENDER_PI / 180), c40 = cosf(40 * RENDER_PI / 180),
 		      t = (cosf(r) - c40) / (c20 - c40);
 		double want = deg <= 20 ? 1.0 : deg >= 40 ? 0.0 : t * t * (3 - 2 * t);
@@ -251,7 +266,7 @@ static void test_delta_and_set(void)
 	}
 
 	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));
-	CHECK(light_sample_from(&par, v3(5, 5, 5), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
+	CHECK(light_sample_from(&par, v3(5, 5, 5), v3s(0), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
 	CHECK(fabsf(ls.wi.y - sqrtf(0.5f)) < 1e-6f && fabsf(ls.wi.z + sqrtf(0.5f)) < 1e-6f && ls.li.y == 3.0f,
 	      "parallel wi (%g %g %g) li %g", ls.wi.x, ls.wi.y, ls.wi.z, ls.li.y);
 

@@ -6,6 +6,7 @@
 #include "lang/lang.h"
 #include "render/world.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -101,6 +102,44 @@ int main(void)
 		CHECK(w.stats.instanced_triangles == 2 * w.stats.triangles, "triangles %zu, instanced %zu",
 		      w.stats.triangles, w.stats.instanced_triangles);
 		world_free(&w);
+	}
+
+	/* An SSS group (a box and a far sphere) beside 40 small boxes of another material set along
+	 * a circle's arc: the group's circle and nearest-hit queries see the members alone, and the
+	 * others' 80-odd hits neither crowd the circle's buffer nor hide the member's hit. */
+	{
+		char text[8192];
+		int len = snprintf(text, sizeof text,
+				   "box { <-1, -1, -1>, <1, 0, 1> material { skin { group \"g\" } } }\n"
+				   "sphere { <5, 5, 5>, 0.5 material { skin { group \"g\" } } }\n");
+		for (int k = 0; k < 40; k++) {
+			double a = (10.0 + 70.0 * k / 39.0) * M_PI / 180.0, x = 0.5 * cos(a), y = 0.5 * sin(a);
+			len += snprintf(text + len, sizeof text - (size_t)len,
+					"box { <%.4f, %.4f, -0.005>, <%.4f, %.4f, 0.005> }\n", x - 0.005, y - 0.005,
+					x + 0.005, y + 0.005);
+		}
+		ok = build(text, &w, &err);
+		CHECK(ok, "SSS group: %s", err);
+		free(err);
+		if (ok) {
+			render_hit at = {0}, hits[RENDER_SSS_MAX_HITS];
+			at.object = 0;
+			float theta[RENDER_SSS_MAX_HITS];
+			bool more = true;
+			tri_circle q = {v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), 0.5f, false};
+			uint32_t k = w.rs.circle(w.rs.user, &at, &q, hits, theta, RENDER_SSS_MAX_HITS, &more);
+			CHECK(k == 1 && !more && hits[0].object == 0 && fabsf(hits[0].p.x - 0.5f) < 1e-5f &&
+				  fabsf(hits[0].p.y) < 1e-5f,
+			      "group circle: %u hits (more %d), the first on object %u at (%g %g)", k, more,
+			      k ? hits[0].object : 0, k ? hits[0].p.x : 0, k ? hits[0].p.y : 0);
+			render_ray down = {v3(0.25f, 1, 0), v3(0, -1, 0)};
+			render_hit h;
+			CHECK(trace(&w, down.o, down.d, &h) && h.object != 0 && h.t < 0.6f, "the ray meets a small box first");
+			CHECK(w.rs.sss_closest(w.rs.user, &at, &down, 0.0f, INFINITY, &h) && h.object == 0 &&
+				  fabsf(h.t - 1.0f) < 1e-5f,
+			      "group nearest hit on object %u at t %g", h.object, h.t);
+			world_free(&w);
+		}
 	}
 
 	/* Errors name the scene's place: a missing mesh file, a missing texture. */
