@@ -32,18 +32,19 @@
  * 1.5 eps of itself, well inside the slack for eps up to this. Axes further off skip the tests. */
 #define BVH_CIRCLE_ORTHO_TOL 1e-6f
 
-/* A leaf's triangles, pre-transposed (Embree's "triangle4" idea): a leaf of m triangles (1 to
- * BVH_MAX_LEAF) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and then the ids,
- * so one unaligned load gives one coordinate of W triangles (lanes past m read the next array and
- * are masked off). The leaf from triangle f starts at word GROUP_WORDS * f. 40 bytes a triangle,
- * and no transposes when a ray visits. */
+/* A leaf's triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m triangles
+ * (1 to W, the node width) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and
+ * then the ids, so one unaligned load gives one coordinate of all m triangles (lanes past m read
+ * the next array and are masked off). A leaf of n triangles (up to BVH_MAX_LEAF) from triangle f
+ * is groups of W and a last one of the rest; group h starts at word GROUP_WORDS * (f + W h). 40
+ * bytes a triangle, and no transposes when a ray visits. */
 typedef union bvh_word {
 	float f;
 	uint32_t u;
 } bvh_word;
 #define GROUP_WORDS 10
-/* Words after the last leaf: the last coordinate array of a leaf of one is loaded 8 words wide,
- * seven words past its end (its id is one of them). */
+/* Words after the last group: the last coordinate array of a group of one is loaded up to 8 words
+ * wide, seven words past its end (its id is one of them). */
 #define LEAF_PAD_WORDS 8
 
 /* A node of width W (4 or 8; bvh_simd.h), 28 W bytes: the children's boxes b[plane][child] with
@@ -600,19 +601,23 @@ static bool collapse(const bvh_node *bin, uint32_t num_bin, uint32_t width, void
 static inline uint32_t leaf_first(uint32_t ref) { return ref & BVH_FIRST_MASK; }
 static inline uint32_t leaf_count(uint32_t ref) { return (ref >> BVH_COUNT_SHIFT & 15) + 1; }
 
-/* The triangles of the leaf ref (bvh_word): leaf slot i is triangle refs[i].id. */
-static void write_leaf(bvh_word *leaf, uint32_t ref, const vec3 *positions, const uint32_t *indices,
-		       const build_ref *refs)
+/* The triangles of the leaf ref (bvh_word) in groups of `width`: leaf slot i is triangle
+ * refs[i].id. */
+static void write_leaf(bvh_word *leaf, uint32_t ref, uint32_t width, const vec3 *positions,
+		       const uint32_t *indices, const build_ref *refs)
 {
-	uint32_t first = leaf_first(ref), m = leaf_count(ref);
-	bvh_word *w = &leaf[GROUP_WORDS * (size_t)first];
-	for (uint32_t j = 0; j < m; j++) {
-		uint32_t f = refs[first + j].id;
-		for (int k = 0; k < 3; k++) {
-			vec3 p = positions[indices[3 * (size_t)f + k]];
-			w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
+	uint32_t first = leaf_first(ref), count = leaf_count(ref);
+	for (uint32_t g = 0; g < count; g += width) {
+		uint32_t m = count - g < width ? count - g : width;
+		bvh_word *w = &leaf[GROUP_WORDS * (size_t)(first + g)];
+		for (uint32_t j = 0; j < m; j++) {
+			uint32_t f = refs[first + g + j].id;
+			for (int k = 0; k < 3; k++) {
+				vec3 p = positions[indices[3 * (size_t)f + k]];
+				w[(3 * k) * m + j].f = p.x, w[(3 * k + 1) * m + j].f = p.y, w[(3 * k + 2) * m + j].f = p.z;
+			}
+			w[9 * m + j].u = f;
 		}
-		w[9 * m + j].u = f;
 	}
 }
 
@@ -661,7 +666,7 @@ bvh *bvh_build(const vec3 *positions, uint32_t num_vertices, const uint32_t *ind
 			const uint32_t *child = node_children(b->nodes, b->width, i);
 			for (uint32_t k = 0; k < b->width; k++)
 				if ((child[k] & BVH_LEAF) && child[k] != BVH_EMPTY)
-					write_leaf(b->leaf, child[k], positions, indices, refs);
+					write_leaf(b->leaf, child[k], b->width, positions, indices, refs);
 		}
 		b->num_tris = n;
 	}

@@ -71,39 +71,43 @@ static inline void K(tri_ray_prepare)(K(tri_ray) * q, const tri_ray *r)
 	q->kx = r->kx, q->ky = r->ky, q->kz = r->kz;
 }
 
-/* Lanes of part h of a leaf of m triangles (bvh.c: a leaf is one group): triangles W h + j < m. */
-BVH_INLINE vf K(group_lanes)(int m, int h)
+/* Group h of a leaf of m triangles at w (bvh.c: a leaf is groups of W): its first word, and its
+ * count in *mg. */
+BVH_INLINE const bvh_word *K(group)(const bvh_word *w, int m, int h, int *mg)
 {
-	return V(lanes)(m - W * h);
+	*mg = m - W * h < W ? m - W * h : W;
+	return w + GROUP_WORDS * W * h;
 }
-/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of part h, lanes past the leaf zero. */
-BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int h, int a, vf lanes)
+/* Lanes of a group of m triangles. */
+BVH_INLINE vf K(group_lanes)(int m) { return V(lanes)(m); }
+/* Coordinate array a (0 to 8: v0x v0y v0z v1x ... v2z) of a group, lanes past m zero. */
+BVH_INLINE vf K(group_load)(const bvh_word *w, int m, int a, vf lanes)
 {
-	return V(and)(V(loadu)(&w[a * m + W * h].f), lanes);
+	return V(and)(V(loadu)(&w[a * m].f), lanes);
 }
 
-/* The watertight test (tri_intersect) of part h of a leaf (triangles W h to W h + W - 1): the same
+/* The watertight test (tri_intersect) of a group of m triangles at w: the same
  * operations in the same order in each lane, so every lane rounds as tri_intersect does. Lanes
  * where U, V or W is zero need tri_intersect's double-precision decision and are left to it.
  * Returns the lanes that hit with t in [tmin, tlimit] in *hit_mask and those left to the scalar
- * test in the result (lanes of the leaf only); t, u, v receive the hitting lanes' values. (Returning
+ * test in the result (lanes of the group only); t, u, v receive the hitting lanes' values. (Returning
  * before t and the divisions when no lane passes the edge tests, as most parts do, was slower:
  * bench/README.md.) */
-BVH_INLINE int K(tri_intersect)(const K(tri_ray) * q, const bvh_word *w, int m, int h, float tlimit,
+BVH_INLINE int K(tri_intersect)(const K(tri_ray) * q, const bvh_word *w, int m, float tlimit,
 				int *hit_mask, float t[W], float u[W], float v[W])
 {
-	vf in = K(group_lanes)(m, h);
+	vf in = K(group_lanes)(m);
 	/* The coordinate arrays are picked in the ray's axis order as they are loaded, so the
 	 * permutation costs no shuffles (and no trip through memory). */
-	vf Az = V(sub)(K(group_load)(w, m, h, q->kz, in), q->oz);
-	vf Bz = V(sub)(K(group_load)(w, m, h, 3 + q->kz, in), q->oz);
-	vf Cz = V(sub)(K(group_load)(w, m, h, 6 + q->kz, in), q->oz);
-	vf Ax = V(sub)(V(sub)(K(group_load)(w, m, h, q->kx, in), q->ox), V(mul)(q->sx, Az));
-	vf Ay = V(sub)(V(sub)(K(group_load)(w, m, h, q->ky, in), q->oy), V(mul)(q->sy, Az));
-	vf Bx = V(sub)(V(sub)(K(group_load)(w, m, h, 3 + q->kx, in), q->ox), V(mul)(q->sx, Bz));
-	vf By = V(sub)(V(sub)(K(group_load)(w, m, h, 3 + q->ky, in), q->oy), V(mul)(q->sy, Bz));
-	vf Cx = V(sub)(V(sub)(K(group_load)(w, m, h, 6 + q->kx, in), q->ox), V(mul)(q->sx, Cz));
-	vf Cy = V(sub)(V(sub)(K(group_load)(w, m, h, 6 + q->ky, in), q->oy), V(mul)(q->sy, Cz));
+	vf Az = V(sub)(K(group_load)(w, m, q->kz, in), q->oz);
+	vf Bz = V(sub)(K(group_load)(w, m, 3 + q->kz, in), q->oz);
+	vf Cz = V(sub)(K(group_load)(w, m, 6 + q->kz, in), q->oz);
+	vf Ax = V(sub)(V(sub)(K(group_load)(w, m, q->kx, in), q->ox), V(mul)(q->sx, Az));
+	vf Ay = V(sub)(V(sub)(K(group_load)(w, m, q->ky, in), q->oy), V(mul)(q->sy, Az));
+	vf Bx = V(sub)(V(sub)(K(group_load)(w, m, 3 + q->kx, in), q->ox), V(mul)(q->sx, Bz));
+	vf By = V(sub)(V(sub)(K(group_load)(w, m, 3 + q->ky, in), q->oy), V(mul)(q->sy, Bz));
+	vf Cx = V(sub)(V(sub)(K(group_load)(w, m, 6 + q->kx, in), q->ox), V(mul)(q->sx, Cz));
+	vf Cy = V(sub)(V(sub)(K(group_load)(w, m, 6 + q->ky, in), q->oy), V(mul)(q->sy, Cz));
 	vf U = V(sub)(V(mul)(Cx, By), V(mul)(Cy, Bx));
 	vf Vb = V(sub)(V(mul)(Ax, Cy), V(mul)(Ay, Cx));
 	vf Wb = V(sub)(V(mul)(Bx, Ay), V(mul)(By, Ax));
@@ -196,17 +200,19 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 			int m = (int)leaf_count(ref);
 			const bvh_word *w = leaf_words(b, ref);
 			for (int h = 0; W * h < m; h++) {
+				int mg;
+				const bvh_word *wg = K(group)(w, m, h, &mg);
 				float t4[W], u4[W], v4[W];
-				int hm, sc = K(tri_intersect)(&q, w, m, h, *tlimit, &hm, t4, u4, v4);
+				int hm, sc = K(tri_intersect)(&q, wg, mg, *tlimit, &hm, t4, u4, v4);
 				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
-					int j = lowest_bit(todo), k = W * h + j;
+					int j = lowest_bit(todo);
 					float t = t4[j], u = u4[j], v = v4[j];
-					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(w, m, k, 0),
-									      group_vertex(w, m, k, 1),
-									      group_vertex(w, m, k, 2),
+					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(wg, mg, j, 0),
+									      group_vertex(wg, mg, j, 1),
+									      group_vertex(wg, mg, j, 2),
 									      *tlimit, &t, &u, &v)
 							      : t <= *tlimit;
-					uint32_t id = group_id(w, m, k);
+					uint32_t id = group_id(wg, mg, j);
 					if (hj && (t < *tlimit || id < best_id)) {
 						*tlimit = t;
 						best_id = id;
@@ -262,15 +268,17 @@ static bool K(occluded)(const bvh *b, const tri_ray *r)
 			int m = (int)leaf_count(ref);
 			const bvh_word *w = leaf_words(b, ref);
 			for (int h = 0; W * h < m; h++) {
+				int mg;
+				const bvh_word *wg = K(group)(w, m, h, &mg);
 				float t4[W], u4[W], v4[W];
-				int hm, sc = K(tri_intersect)(&q, w, m, h, r->tmax, &hm, t4, u4, v4);
+				int hm, sc = K(tri_intersect)(&q, wg, mg, r->tmax, &hm, t4, u4, v4);
 				if (hm)
 					return true;
 				for (; sc != 0; sc &= sc - 1) {
-					int k = W * h + lowest_bit(sc);
+					int j = lowest_bit(sc);
 					float t, u, v;
-					if (tri_intersect(r, group_vertex(w, m, k, 0),
-							  group_vertex(w, m, k, 1), group_vertex(w, m, k, 2),
+					if (tri_intersect(r, group_vertex(wg, mg, j, 0),
+							  group_vertex(wg, mg, j, 1), group_vertex(wg, mg, j, 2),
 							  r->tmax, &t, &u, &v))
 						return true;
 				}
@@ -414,7 +422,7 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) * p, vf rel[3][3], const v
 	return V(movemask)(V(and)(sure, miss));
 }
 
-/* The triangles of part h of a leaf that may meet the circle (a lane mask): cheap float tests that
+/* The triangles of a group of m at w that may meet the circle (a lane mask): cheap float tests that
  * reject only triangles tri_circle_intersect gives no hit for, so its double-precision work is
  * spent on few. (1) Its plane pre-test, the same operations in the same order: all vertices
  * clearly on one side of the circle's plane. Then, with the margin grown by the radius's rounding:
@@ -423,15 +431,15 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) * p, vf rel[3][3], const v
  * sphere; (4) for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3)
  * in the plane, with the vertices projected on the axes t and n: the segment lies in the projected
  * triangle; (7) the segment itself (segment_misses). */
-BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int m, int h)
+BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int m)
 {
 	const vf zero = V(zero)();
-	vf in = K(group_lanes)(m, h);
+	vf in = K(group_lanes)(m);
 	vf rel[3][3], mag[3]; /* rel[vertex][axis] = v - c */
 	K_UNROLL
 	for (int a = 0; a < 3; a++) {
-		vf v0 = K(group_load)(w, m, h, a, in), v1 = K(group_load)(w, m, h, 3 + a, in);
-		vf v2 = K(group_load)(w, m, h, 6 + a, in);
+		vf v0 = K(group_load)(w, m, a, in), v1 = K(group_load)(w, m, 3 + a, in);
+		vf v2 = K(group_load)(w, m, 6 + a, in);
 		rel[0][a] = V(sub)(v0, p->c[a]), rel[1][a] = V(sub)(v1, p->c[a]);
 		rel[2][a] = V(sub)(v2, p->c[a]);
 		mag[a] = V(add)(V(add)(V(abs)(v0), V(abs)(v1)), V(add)(V(abs)(v2), V(abs)(p->c[a])));
@@ -507,14 +515,20 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
 		int m = (int)leaf_count(leaves[i]);
 		const bvh_word *w = leaf_words(b, leaves[i]);
 		cand[i] = 0;
-		for (int h = 0; W * h < m; h++)
-			cand[i] |= K(group_circle)(p, w, m, h) << W * h;
+		for (int h = 0; W * h < m; h++) {
+			int mg;
+			const bvh_word *wg = K(group)(w, m, h, &mg);
+			cand[i] |= K(group_circle)(p, wg, mg) << W * h;
+		}
 	}
 	for (int i = 0; i < n; i++) {
 		int m = (int)leaf_count(leaves[i]);
 		const bvh_word *w = leaf_words(b, leaves[i]);
-		for (int c = cand[i]; c != 0; c &= c - 1)
-			total = circle_triangle(q, w, m, lowest_bit(c), hits, max_hits, total);
+		for (int c = cand[i]; c != 0; c &= c - 1) {
+			int k = lowest_bit(c), mg;
+			const bvh_word *wg = K(group)(w, m, k / W, &mg);
+			total = circle_triangle(q, wg, mg, k % W, hits, max_hits, total);
+		}
 	}
 	return total;
 }
