@@ -486,7 +486,6 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_b
 	return ok;
 }
 
-
 /* Whether to build wide nodes for AVX2: when the CPU has it and CIRCE_SIMD is not "sse2". Read at
  * each build, so a test can build a tree for each path in one process. */
 static uint32_t simd_width(void)
