@@ -836,6 +836,14 @@ BVH_INLINE vec3 group_vertex(const bvh_word *w, int m, int k, int vertex)
 	return v3(w[(3 * vertex) * m + k].f, w[(3 * vertex + 1) * m + k].f, w[(3 * vertex + 2) * m + k].f);
 }
 BVH_INLINE uint32_t group_id(const bvh_word *w, int m, int k) { return w[9 * m + k].u; }
+/* The scalar watertight test (tri_intersect) of triangle k of a group: for the lanes a vector test
+ * leaves to it (an edge function exactly zero). */
+BVH_INLINE bool group_tri_intersect(const tri_ray *r, const bvh_word *w, int m, int k, float tlimit, float *t,
+				    float *u, float *v)
+{
+	return tri_intersect(r, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1), group_vertex(w, m, k, 2), tlimit,
+			     t, u, v);
+}
 static inline const bvh_word *leaf_words(const bvh *b, uint32_t ref)
 {
 	return &b->leaf[GROUP_WORDS * (size_t)leaf_first(ref)];

@@ -207,10 +207,7 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 				for (int todo = hm | sc; todo != 0; todo &= todo - 1) {
 					int j = lowest_bit(todo);
 					float t = t4[j], u = u4[j], v = v4[j];
-					bool hj = sc >> j & 1 ? tri_intersect(r, group_vertex(wg, mg, j, 0),
-									      group_vertex(wg, mg, j, 1),
-									      group_vertex(wg, mg, j, 2),
-									      *tlimit, &t, &u, &v)
+					bool hj = sc >> j & 1 ? group_tri_intersect(r, wg, mg, j, *tlimit, &t, &u, &v)
 							      : t <= *tlimit;
 					uint32_t id = group_id(wg, mg, j);
 					if (hj && (t < *tlimit || id < best_id)) {
@@ -277,9 +274,7 @@ static bool K(occluded)(const bvh *b, const tri_ray *r)
 				for (; sc != 0; sc &= sc - 1) {
 					int j = lowest_bit(sc);
 					float t, u, v;
-					if (tri_intersect(r, group_vertex(wg, mg, j, 0),
-							  group_vertex(wg, mg, j, 1), group_vertex(wg, mg, j, 2),
-							  r->tmax, &t, &u, &v))
+					if (group_tri_intersect(r, wg, mg, j, r->tmax, &t, &u, &v))
 						return true;
 				}
 			}
