@@ -27,10 +27,6 @@
 #define BVH_SLAB_SLACK (1.0f + 20.0f * 0x1p-24f * 3.0f)
 /* Relative slack of the circle/box test, against float rounding of box and circle data. */
 #define BVH_CIRCLE_SLACK 1e-5f
-/* The in-plane tests measure distances in the circle's axes (t, n), which is exact for an
- * orthonormal pair; a pair off by eps (|t.t - 1|, |n.n - 1|, |t.n|) changes a distance by about
- * 1.5 eps of itself, well inside the slack for eps up to this. Axes further off skip the tests. */
-#define BVH_CIRCLE_ORTHO_TOL 1e-6f
 
 /* A leaf's triangles, pre-transposed in groups (Embree's "triangle4" idea): a group of m triangles
  * (1 to W, the node width) is ten arrays of m words, the coordinates v0x v0y v0z v1x ... v2z and
@@ -749,12 +745,13 @@ bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tne
 	return node_hit(nd, &s, tlimit, tnear);
 }
 
-/* A circle prepared for box tests: its plane normal m = t x n and the slack. */
+/* A circle prepared for box tests: its plane normal m = t x n, the slack, and the negated axes
+ * (box_circle). */
 typedef struct circle_prep {
 	vec3 lo, hi; /* the circle's own bounds, grown by the slack */
-	vec3 c, t, n, m;
+	vec3 c, t, m, neg_t, neg_m;
 	float r, slack, rmax2, rmin2; /* rmin2 < 0: no inner bound */
-	bool full, in_plane; /* in_plane: t and n orthonormal enough for the in-plane tests */
+	bool full;
 } circle_prep;
 
 /* The slack covers rounding of box and circle data of magnitude up to `extent` (the largest
@@ -764,10 +761,8 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	if (!v3_is_finite(q->centre) || !v3_is_finite(q->t) || !v3_is_finite(q->n) || !isfinite(q->radius) ||
 	    q->radius < 0.0f)
 		return false;
-	p->c = q->centre, p->t = q->t, p->n = q->n, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
-	float ortho = fmax3(v3(fabsf(v3_dot(q->t, q->t) - 1.0f), fabsf(v3_dot(q->n, q->n) - 1.0f),
-			       fabsf(v3_dot(q->t, q->n))));
-	p->in_plane = ortho <= BVH_CIRCLE_ORTHO_TOL;
+	p->c = q->centre, p->t = q->t, p->m = v3_cross(q->t, q->n), p->r = q->radius, p->full = q->full;
+	p->neg_t = v3_neg(p->t), p->neg_m = v3_neg(p->m);
 	p->slack = BVH_CIRCLE_SLACK * (q->radius + fmax3(v3_abs(q->centre)) + extent);
 	p->rmax2 = (p->r + p->slack) * (p->r + p->slack);
 	float rmin = p->r - p->slack;
@@ -786,31 +781,34 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	return true;
 }
 
+/* The box [lo, hi] may meet the circle: it meets the circle's bounds, its plane and the spherical
+ * shell of its radius, and for a half circle the half space cos theta >= 0. In the centre's frame
+ * the box is [a, -b] with a = lo - c and b = c - hi; a linear form w . x ranges over the box between
+ * the sums of min and max of w_i a_i and -w_i b_i (negated axes given: neg_w_i b_i is -w_i b_i
+ * exactly); the nearest point is max(a, b, 0) off along each axis and the farthest min(a, b) (its
+ * magnitude). All tests are evaluated and one branch taken: cheaper than early exits that
+ * mispredict. bvh_simd.h's node_circle is this test lane by lane, the same operations in the same
+ * order. */
 static bool box_circle(const circle_prep *p, vec3 lo, vec3 hi)
 {
-	/* All tests evaluated, one branch: cheaper than early exits that mispredict. */
 	bool bounds = (lo.x <= p->hi.x) & (lo.y <= p->hi.y) & (lo.z <= p->hi.z) & (hi.x >= p->lo.x) &
 		      (hi.y >= p->lo.y) & (hi.z >= p->lo.z);
-	vec3 e = v3_scale(v3_sub(hi, lo), 0.5f);
-	vec3 rel = v3_sub(v3_scale(v3_add(lo, hi), 0.5f), p->c);
-	/* The box meets the plane: its projection on m holds the centre's. */
-	bool plane = fabsf(v3_dot(p->m, rel)) <= v3_dot(v3_abs(p->m), e) + p->slack;
-	/* For a half circle, the box reaches the side cos theta >= 0. */
-	bool side = p->full | (v3_dot(p->t, rel) + v3_dot(v3_abs(p->t), e) >= -p->slack);
-	/* The box meets the sphere of radius r: nearest point inside, farthest outside. */
-	vec3 a = v3_abs(rel);
-	vec3 dn = vmax(v3_sub(a, e), v3s(0.0f)), df = v3_add(a, e);
-	bool shell = (v3_length2(dn) <= p->rmax2) & (v3_length2(df) >= p->rmin2);
-	/* The same in the plane: the box's part in the plane projects, in the axes t and n, into
-	 * the rectangle of its projections, so its distances to the centre lie between the
-	 * rectangle's nearest and farthest. Tighter than the sphere for boxes that stick out of
-	 * the plane (the sphere counts that part). */
-	float pt = fabsf(v3_dot(p->t, rel)), et = v3_dot(v3_abs(p->t), e);
-	float pn = fabsf(v3_dot(p->n, rel)), en = v3_dot(v3_abs(p->n), e);
-	float nt = pt - et > 0.0f ? pt - et : 0.0f, nn = pn - en > 0.0f ? pn - en : 0.0f;
-	float ft = pt + et, fn = pn + en;
-	bool ring = (!p->in_plane) | ((nt * nt + nn * nn <= p->rmax2) & (ft * ft + fn * fn >= p->rmin2));
-	return bounds & plane & side & shell & ring;
+	float m_lo = 0.0f, m_hi = 0.0f, t_hi = 0.0f, near2 = 0.0f, far2 = 0.0f;
+	for (int i = 0; i < 3; i++) {
+		float a = v3_get(lo, i) - v3_get(p->c, i), b = v3_get(p->c, i) - v3_get(hi, i);
+		float ma = v3_get(p->m, i) * a, mb = v3_get(p->neg_m, i) * b;
+		float ta = v3_get(p->t, i) * a, tb = v3_get(p->neg_t, i) * b;
+		float dn = fmaxf(fmaxf(a, b), 0.0f), df = fminf(a, b);
+		m_lo = i ? m_lo + fminf(ma, mb) : fminf(ma, mb);
+		m_hi = i ? m_hi + fmaxf(ma, mb) : fmaxf(ma, mb);
+		t_hi = i ? t_hi + fmaxf(ta, tb) : fmaxf(ta, tb);
+		near2 = i ? near2 + dn * dn : dn * dn;
+		far2 = i ? far2 + df * df : df * df;
+	}
+	bool plane = (m_lo <= p->slack) & (m_hi >= -p->slack);
+	bool side = p->full | (t_hi >= -p->slack);
+	bool shell = (near2 <= p->rmax2) & (far2 >= p->rmin2);
+	return bounds & plane & side & shell;
 }
 
 static float box_extent(vec3 lo, vec3 hi) { return fmax3(vmax(v3_abs(lo), v3_abs(hi))); }
@@ -855,8 +853,7 @@ static uint32_t circle_triangle(const tri_circle *q, const bvh_word *w, int m, i
 				uint32_t max_hits, uint32_t total)
 {
 	tri_circle_hit h[2];
-	int nh = tri_circle_intersect(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
-				      group_vertex(w, m, k, 2), h);
+	int nh = tri_circle_exact(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1), group_vertex(w, m, k, 2), h);
 	for (int i = 0; i < nh; i++, total++) {
 		if (total < max_hits) {
 			hits[total] = h[i];
@@ -899,6 +896,21 @@ BVH_INLINE int f4_movemask(__m128 a) { return _mm_movemask_ps(a); }
 BVH_INLINE __m128 f4_lanes(int n)
 {
 	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(n)));
+}
+
+/* blend: a in the lanes of mask (all ones or all zeros), b in the others. */
+BVH_INLINE __m128 f4_blend(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
+
+/* compress: the words of src[0, W) whose lanes are set in mask, in order, to dst[0, popcount)
+ * (dst has room for W; the words past the count are left undefined). Returns the count. */
+BVH_INLINE int f4_compress(uint32_t *dst, const uint32_t *src, int mask)
+{
+	int n = 0;
+	for (int i = 0; i < 4; i++) {
+		dst[n] = src[i];
+		n += (mask >> i) & 1;
+	}
+	return n;
 }
 
 #define W 4
@@ -944,6 +956,36 @@ BVH_INLINE __m256 f8_lanes(int n)
 {
 	__m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
 	return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane));
+}
+
+/* The lane permutations of f8_compress: row m lists the set bits of m, lowest first (then zeros),
+ * written out by the preprocessor: entry j is the bit i of m that has j set bits below it. */
+#define LP_BIT(m, i) (((m) >> (i)) & 1)
+#define LP_BELOW(m, i) (((m) & ((1 << (i)) - 1)) == 0 ? 0 : LP_COUNT((m) & ((1 << (i)) - 1)))
+#define LP_COUNT(x)                                                                                      \
+	(LP_BIT(x, 0) + LP_BIT(x, 1) + LP_BIT(x, 2) + LP_BIT(x, 3) + LP_BIT(x, 4) + LP_BIT(x, 5) +       \
+	 LP_BIT(x, 6) + LP_BIT(x, 7))
+#define LP_TERM(m, i, j) (LP_BIT(m, i) && LP_BELOW(m, i) == (j) ? (i) : 0)
+#define LP_ENTRY(m, j)                                                                                   \
+	(LP_TERM(m, 1, j) + LP_TERM(m, 2, j) + LP_TERM(m, 3, j) + LP_TERM(m, 4, j) + LP_TERM(m, 5, j) +  \
+	 LP_TERM(m, 6, j) + LP_TERM(m, 7, j))
+#define LP_ROW(m)                                                                                        \
+	{LP_ENTRY(m, 0), LP_ENTRY(m, 1), LP_ENTRY(m, 2), LP_ENTRY(m, 3),                                  \
+	 LP_ENTRY(m, 4), LP_ENTRY(m, 5), LP_ENTRY(m, 6), LP_ENTRY(m, 7)}
+#define LP_ROWS4(m) LP_ROW(m), LP_ROW((m) + 1), LP_ROW((m) + 2), LP_ROW((m) + 3)
+#define LP_ROWS16(m) LP_ROWS4(m), LP_ROWS4((m) + 4), LP_ROWS4((m) + 8), LP_ROWS4((m) + 12)
+#define LP_ROWS64(m) LP_ROWS16(m), LP_ROWS16((m) + 16), LP_ROWS16((m) + 32), LP_ROWS16((m) + 48)
+static const int32_t left_pack[256][8] __attribute__((aligned(32))) = {
+    LP_ROWS64(0), LP_ROWS64(64), LP_ROWS64(128), LP_ROWS64(192)};
+
+BVH_INLINE __m256 f8_blend(__m256 mask, __m256 a, __m256 b) { return _mm256_blendv_ps(b, a, mask); }
+
+BVH_INLINE int f8_compress(uint32_t *dst, const uint32_t *src, int mask)
+{
+	__m256i perm = _mm256_load_si256((const __m256i *)left_pack[mask]);
+	__m256i words = _mm256_loadu_si256((const __m256i *)src);
+	_mm256_storeu_si256((__m256i *)dst, _mm256_permutevar8x32_epi32(words, perm));
+	return __builtin_popcount((unsigned)mask);
 }
 
 #define W 8
@@ -1005,7 +1047,8 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 	circle_prep p;
 	if (b->num_nodes == 0)
 		return 0;
-	if (!circle_prepare(q, box_extent(b->lo, b->hi), &p) || !box_circle(&p, b->lo, b->hi))
+	/* No test of the root's own box: the traversal tests its children's. */
+	if (!circle_prepare(q, box_extent(b->lo, b->hi), &p))
 		return 0;
 #if BVH_HAVE_AVX2
 	if (b->width == 8)

@@ -17,6 +17,7 @@ _Static_assert(sizeof(K(node)) == NODE_BYTES(W), "node layout as the collapse wr
 /* Loops over the three axes or vertices, unrolled so their vector arrays live in registers (gcc -O2
  * would keep them in memory). */
 #define K_UNROLL _Pragma("GCC unroll 3")
+#define K_UNROLL_ALL _Pragma("GCC unroll 8")
 
 /* ---- Rays: the slab test ------------------------------------------------------------------- */
 
@@ -291,67 +292,61 @@ static bool K(occluded)(const bvh *b, const tri_ray *r)
  * same order, so each lane is exactly as conservative as the scalar test. An empty child fails the
  * bounds test (lo = +inf). */
 typedef struct K(circle_prep) {
-	vf lo[3], hi[3], c[3], m[3], abs_m[3], t[3], abs_t[3], n[3], abs_n[3];
+	vf lo[3], hi[3], c[3], m[3], neg_m[3], t[3], neg_t[3];
 	vf slack, neg_slack, rmax2, rmin2;
 	vf radius; /* for group_circle */
-	bool full, in_plane;
+	bool full;
 } K(circle_prep);
 
 static void K(circle_prepare)(const circle_prep *p, K(circle_prep) * q)
 {
-	vec3 am = v3_abs(p->m), at = v3_abs(p->t), an = v3_abs(p->n);
 	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		q->lo[i] = V(set1)(v3_get(p->lo, i)), q->hi[i] = V(set1)(v3_get(p->hi, i));
 		q->c[i] = V(set1)(v3_get(p->c, i));
-		q->m[i] = V(set1)(v3_get(p->m, i)), q->abs_m[i] = V(set1)(v3_get(am, i));
-		q->t[i] = V(set1)(v3_get(p->t, i)), q->abs_t[i] = V(set1)(v3_get(at, i));
-		q->n[i] = V(set1)(v3_get(p->n, i)), q->abs_n[i] = V(set1)(v3_get(an, i));
+		q->m[i] = V(set1)(v3_get(p->m, i)), q->neg_m[i] = V(set1)(v3_get(p->neg_m, i));
+		q->t[i] = V(set1)(v3_get(p->t, i)), q->neg_t[i] = V(set1)(v3_get(p->neg_t, i));
 	}
 	q->slack = V(set1)(p->slack), q->neg_slack = V(set1)(-p->slack);
 	q->rmax2 = V(set1)(p->rmax2), q->rmin2 = V(set1)(p->rmin2);
 	q->radius = V(set1)(p->r);
-	q->full = p->full, q->in_plane = p->in_plane;
+	q->full = p->full;
 }
 
 BVH_INLINE vf K(dot)(const vf a[3], const vf b[3])
 {
 	return V(add)(V(add)(V(mul)(a[0], b[0]), V(mul)(a[1], b[1])), V(mul)(a[2], b[2]));
 }
-BVH_INLINE vf K(select)(vf mask, vf a, vf b)
-{
-	return V(or)(V(and)(mask, a), V(andnot)(mask, b));
-}
+BVH_INLINE vf K(select)(vf mask, vf a, vf b) { return V(blend)(mask, a, b); }
 
 BVH_INLINE int K(node_circle)(const K(node) * nd, const K(circle_prep) * p)
 {
-	const vf half = V(set1)(0.5f), zero = V(zero)();
+	const vf zero = V(zero)();
 	vf ok = V(lanes)(W);
-	vf e[3], rel[3], a[3], dn[3], df[3];
+	vf m_lo = zero, m_hi = zero, t_hi = zero, near2 = zero, far2 = zero;
 	K_UNROLL
 	for (int i = 0; i < 3; i++) {
 		vf lo = V(load)(nd->b[i]), hi = V(load)(nd->b[3 + i]);
 		ok = V(and)(ok, V(and)(V(le)(lo, p->hi[i]), V(ge)(hi, p->lo[i])));
-		e[i] = V(mul)(V(sub)(hi, lo), half);
-		rel[i] = V(sub)(V(mul)(V(add)(lo, hi), half), p->c[i]);
-		a[i] = V(abs)(rel[i]);
-		dn[i] = V(max)(V(sub)(a[i], e[i]), zero);
-		df[i] = V(add)(a[i], e[i]);
+		vf a = V(sub)(lo, p->c[i]), b = V(sub)(p->c[i], hi);
+		vf ma = V(mul)(p->m[i], a), mb = V(mul)(p->neg_m[i], b);
+		vf dn = V(max)(V(max)(a, b), zero), df = V(min)(a, b);
+		if (i == 0) {
+			m_lo = V(min)(ma, mb), m_hi = V(max)(ma, mb);
+			near2 = V(mul)(dn, dn), far2 = V(mul)(df, df);
+		} else {
+			m_lo = V(add)(m_lo, V(min)(ma, mb)), m_hi = V(add)(m_hi, V(max)(ma, mb));
+			near2 = V(add)(near2, V(mul)(dn, dn)), far2 = V(add)(far2, V(mul)(df, df));
+		}
+		if (!p->full) {
+			vf tm = V(max)(V(mul)(p->t[i], a), V(mul)(p->neg_t[i], b));
+			t_hi = i == 0 ? tm : V(add)(t_hi, tm);
+		}
 	}
-	vf plane = V(le)(V(abs)(K(dot)(p->m, rel)), V(add)(K(dot)(p->abs_m, e), p->slack));
-	ok = V(and)(ok, plane);
+	ok = V(and)(ok, V(and)(V(le)(m_lo, p->slack), V(ge)(m_hi, p->neg_slack)));
 	if (!p->full)
-		ok = V(and)(ok, V(ge)(V(add)(K(dot)(p->t, rel), K(dot)(p->abs_t, e)), p->neg_slack));
-	ok = V(and)(ok, V(le)(K(dot)(dn, dn), p->rmax2));
-	ok = V(and)(ok, V(ge)(K(dot)(df, df), p->rmin2));
-	if (p->in_plane) {
-		vf pt = V(abs)(K(dot)(p->t, rel)), et = K(dot)(p->abs_t, e);
-		vf pn = V(abs)(K(dot)(p->n, rel)), en = K(dot)(p->abs_n, e);
-		vf nt = V(max)(V(sub)(pt, et), zero), nn = V(max)(V(sub)(pn, en), zero);
-		vf ft = V(add)(pt, et), fn = V(add)(pn, en);
-		ok = V(and)(ok, V(le)(V(add)(V(mul)(nt, nt), V(mul)(nn, nn)), p->rmax2));
-		ok = V(and)(ok, V(ge)(V(add)(V(mul)(ft, ft), V(mul)(fn, fn)), p->rmin2));
-	}
+		ok = V(and)(ok, V(ge)(t_hi, p->neg_slack));
+	ok = V(and)(ok, V(and)(V(le)(near2, p->rmax2), V(ge)(far2, p->rmin2)));
 	return V(movemask)(ok);
 }
 
@@ -420,12 +415,10 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) * p, vf rel[3][3], const v
 /* The triangles of a group of m at w that may meet the circle (a lane mask): cheap float tests that
  * reject only triangles tri_circle_intersect gives no hit for, so its double-precision work is
  * spent on few. (1) Its plane pre-test, the same operations in the same order: all vertices
- * clearly on one side of the circle's plane. Then, with the margin grown by the radius's rounding:
- * (2) all vertices inside the sphere of radius r about the centre (the triangle, convex, lies
- * inside: its segment cannot reach the circle); (3) the triangle's box entirely outside that
- * sphere; (4) for a half circle, all vertices on the side cos theta < 0; (5) and (6), (2) and (3)
- * in the plane, with the vertices projected on the axes t and n: the segment lies in the projected
- * triangle; (7) the segment itself (segment_misses). */
+ * clearly on one side of the circle's plane. (2) The segment the plane cuts from the triangle
+ * misses the circle (segment_misses), with the margin grown by the radius's rounding. The segment
+ * lies in the triangle, so this rejects all that tests of the triangle's vertices or box against
+ * the sphere or the circle's half space would, and more. */
 BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int m)
 {
 	const vf zero = V(zero)();
@@ -441,59 +434,37 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int 
 	}
 	vf margin = V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), V(add)(V(add)(mag[0], mag[1]), mag[2]));
 	vf neg_margin = V(sub)(zero, margin);
-	vf d[3], r2[3], ct[3], st[3];
+	vf d[3];
 	K_UNROLL
-	for (int v = 0; v < 3; v++) {
+	for (int v = 0; v < 3; v++)
 		d[v] = K(dot)(p->m, rel[v]);
-		r2[v] = K(dot)(rel[v], rel[v]);
-		ct[v] = K(dot)(p->t, rel[v]);
-		st[v] = K(dot)(p->n, rel[v]);
-	}
 	vf above = V(and)(V(and)(V(gt)(d[0], margin), V(gt)(d[1], margin)), V(gt)(d[2], margin));
 	vf below = V(and)(V(and)(V(lt)(d[0], neg_margin), V(lt)(d[1], neg_margin)), V(lt)(d[2], neg_margin));
-	vf reject = V(or)(above, below);
-	vf sm = V(add)(margin, V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), p->radius));
-	vf rin = V(sub)(p->radius, sm), rout = V(add)(p->radius, sm);
-	vf rin2 = V(mul)(rin, rin), rout2 = V(mul)(rout, rout);
-	vf inside = V(and)(V(and)(V(lt)(r2[0], rin2), V(lt)(r2[1], rin2)),
-			   V(and)(V(lt)(r2[2], rin2), V(gt)(rin, zero)));
-	vf near2 = zero;
-	K_UNROLL
-	for (int a = 0; a < 3; a++) {
-		vf lo = V(min)(V(min)(rel[0][a], rel[1][a]), rel[2][a]);
-		vf hi = V(max)(V(max)(rel[0][a], rel[1][a]), rel[2][a]);
-		vf dn = V(max)(V(max)(lo, V(sub)(zero, hi)), zero);
-		near2 = V(add)(near2, V(mul)(dn, dn));
-	}
-	reject = V(or)(reject, V(or)(inside, V(gt)(near2, rout2)));
-	if (p->in_plane) {
-		vf q2[3];
-		K_UNROLL
-		for (int v = 0; v < 3; v++)
-			q2[v] = V(add)(V(mul)(ct[v], ct[v]), V(mul)(st[v], st[v]));
-		vf inside2 = V(and)(V(and)(V(lt)(q2[0], rin2), V(lt)(q2[1], rin2)),
-				    V(and)(V(lt)(q2[2], rin2), V(gt)(rin, zero)));
-		vf tlo = V(min)(V(min)(ct[0], ct[1]), ct[2]), thi = V(max)(V(max)(ct[0], ct[1]), ct[2]);
-		vf nlo = V(min)(V(min)(st[0], st[1]), st[2]), nhi = V(max)(V(max)(st[0], st[1]), st[2]);
-		vf dt = V(max)(V(max)(tlo, V(sub)(zero, thi)), zero);
-		vf dn = V(max)(V(max)(nlo, V(sub)(zero, nhi)), zero);
-		vf near2d = V(add)(V(mul)(dt, dt), V(mul)(dn, dn));
-		reject = V(or)(reject, V(or)(inside2, V(gt)(near2d, rout2)));
-	}
-	if (!p->full) {
-		vf neg_sm = V(sub)(zero, sm);
-		reject = V(or)(
-		    reject, V(and)(V(and)(V(lt)(ct[0], neg_sm), V(lt)(ct[1], neg_sm)), V(lt)(ct[2], neg_sm)));
-	}
-	int left = V(movemask)(V(andnot)(reject, in));
-	if (left)
+	int left = V(movemask)(V(andnot)(V(or)(above, below), in));
+	if (left) {
+		vf sm = V(add)(margin, V(mul)(V(set1)(GROUP_CIRCLE_MARGIN), p->radius));
 		left &= ~K(segment_misses)(p, rel, d, margin, sm);
+	}
 	return left;
 }
 
 /* The leaves among a node's children (their references have the top bit; so has BVH_EMPTY, whose
  * box no test passes): the sign bits of the children read as floats. */
 BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((const float *)nd->child)); }
+
+/* Starts fetching the triangles of a leaf: the first W (GROUP_WORDS words each, from any offset)
+ * without a loop, the rest, if any, in one. */
+BVH_INLINE void K(prefetch_leaf)(const bvh *b, uint32_t ref)
+{
+	const char *lw = (const char *)leaf_words(b, ref);
+	const uint32_t first = GROUP_WORDS * sizeof(bvh_word) * W, size = GROUP_WORDS * sizeof(bvh_word) * leaf_count(ref);
+	K_UNROLL_ALL
+	for (uint32_t o = 0; o < first; o += 64)
+		_mm_prefetch(lw + o, _MM_HINT_T0);
+	_mm_prefetch(lw + first - 1, _MM_HINT_T0);
+	for (uint32_t o = first; o < size; o += 64)
+		_mm_prefetch(lw + o, _MM_HINT_T0);
+}
 
 /* Leaves a circle traversal collects before it tests them (then it goes on). */
 #define K_LEAF_BATCH 32
@@ -528,43 +499,55 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
 	return total;
 }
 
-/* The root is always an inner node (the collapse gives a lone leaf a root of its own). Inner
- * children go on the stack, leaves into a batch (K(circle_leaves)). */
+/* The inner nodes a circle traversal queues before it goes depth first (K(circle)). */
+#define K_FIFO 512
+/* Its queue: K_FIFO, then room for a depth-first descent (K_STACK) and two nodes' children. */
+#define K_QUEUE (K_FIFO + K_STACK + 2 * W)
+
+/* The root is always an inner node (the collapse gives a lone leaf a root of its own). Every
+ * node's passing children are appended by one left-pack each: leaves to a batch (K(circle_leaves)),
+ * inner nodes to a queue [front, back). The next node comes from the front, so it was queued
+ * before the node just tested and does not wait for its test: breadth first, successive node
+ * tests overlap (depth first, each waited for the last; 1.13x on the head). A queue longer than
+ * K_FIFO is taken from the back, depth first, which bounds it by K_QUEUE - W; when the back
+ * nears the end, the queue moves to the start. All hits are returned, in an order that depends
+ * on the tree. */
 static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *cp, tri_circle_hit *hits,
 			  uint32_t max_hits)
 {
 	const K(node) *nodes = b->nodes;
 	K(circle_prep) p;
 	K(circle_prepare)(cp, &p);
-	uint32_t stack[K_STACK], leaves[K_LEAF_BATCH + W];
-	int sp = 0, nl = 0;
+	uint32_t queue[K_QUEUE], leaves[K_LEAF_BATCH + W];
+	int front = 0, back = 0, nl = 0;
 	uint32_t ni = 0, total = 0;
 	for (;;) {
 		const K(node) *nd = &nodes[ni];
 		int mask = K(node_circle)(nd, &p);
-		int leaf = mask & K(leaf_mask)(nd), inner = mask & ~leaf;
-		for (; leaf != 0; leaf &= leaf - 1) {
-			uint32_t ref = nd->child[lowest_bit(leaf)];
-			leaves[nl++] = ref;
-			/* Tested after the batch fills: fetch its triangles meanwhile. */
-			const char *lw = (const char *)leaf_words(b, ref);
-			for (uint32_t o = 0; o < GROUP_WORDS * sizeof(bvh_word) * leaf_count(ref); o += 64)
-				_mm_prefetch(lw + o, _MM_HINT_T0);
-		}
+		int leaf = mask & K(leaf_mask)(nd);
+		int first = nl;
+		nl += V(compress)(&leaves[nl], nd->child, leaf);
+		back += V(compress)(&queue[back], nd->child, mask & ~leaf);
+		/* Tested after the batch fills: fetch their triangles meanwhile. */
+		for (int i = first; i < nl; i++)
+			K(prefetch_leaf)(b, leaves[i]);
 		if (nl >= K_LEAF_BATCH) {
 			total = K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
 			nl = 0;
 		}
-		if (inner != 0) {
-			ni = K(descend)(nd, inner, stack, &sp);
-			continue;
-		}
-		if (sp == 0)
+		if (back == front)
 			return K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
-		ni = stack[--sp];
+		ni = back - front > K_FIFO ? queue[--back] : queue[front++];
+		if (back + W > K_QUEUE) {
+			memmove(queue, queue + front, (size_t)(back - front) * sizeof *queue);
+			back -= front, front = 0;
+		}
 	}
 }
 
+#undef K_FIFO
+#undef K_QUEUE
 #undef K_LEAF_BATCH
 #undef K_STACK
 #undef K_UNROLL
+#undef K_UNROLL_ALL

@@ -122,6 +122,8 @@ static inline int tri_circle_hit_cmp(const void *a, const void *b)
  * segment, and the segment is solved against the circle. Writes up to two hits to out and returns
  * their number. A triangle lying in the circle's plane gives none: the circle would run inside it,
  * where the hit density |n_i . e_theta| is zero (DESIGN.md). Degenerate triangles give none. */
+static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2]);
+
 static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2,
 				       tri_circle_hit out[2])
 {
@@ -135,32 +137,58 @@ static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, ve
 	float margin = 1e-5f * (mag.x + mag.y + mag.z);
 	if ((d0 > margin && d1 > margin && d2 > margin) || (d0 < -margin && d1 < -margin && d2 < -margin))
 		return 0;
+	return tri_circle_exact(c, v0, v1, v2, out);
+}
+
+/* The double-precision part of tri_circle_intersect, for callers that did its float pre-test
+ * themselves (the BVH's group_circle: the same operations in the same order), or none: the
+ * pre-test only skips triangles this part gives no hit for. */
+static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
+{
 	dvec3 C = v3_to_d3(c->centre), T = v3_to_d3(c->t), N = v3_to_d3(c->n);
 	dvec3 M = d3_cross(T, N);
 	dvec3 P[3] = {v3_to_d3(v0), v3_to_d3(v1), v3_to_d3(v2)};
 	double d[3];
 	for (int i = 0; i < 3; i++)
 		d[i] = d3_dot(M, d3_sub(P[i], C));
-	if ((d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0) ||
-	    (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0))
+	/* Vertices above (bit i of above) and below the plane: none when all are on one side or
+	 * all on the plane. */
+	int above = (d[0] > 0.0) | (d[1] > 0.0) << 1 | (d[2] > 0.0) << 2;
+	int below = (d[0] < 0.0) | (d[1] < 0.0) << 1 | (d[2] < 0.0) << 2;
+	if (above == 7 || below == 7 || (above | below) == 0)
 		return 0;
 	dvec3 ng = d3_cross(d3_sub(P[1], P[0]), d3_sub(P[2], P[0]));
 	if (!(d3_dot(ng, ng) > 0.0))
 		return 0;
-	/* The segment: vertices on the plane and crossings of edges whose ends lie on opposite sides,
-	 * each with its barycentrics (of v1, v2). */
+	/* The segment: vertices on the plane and crossings of edges (i, i + 1) whose ends lie on
+	 * opposite sides, in the order of i, each with its barycentrics (of v1, v2). */
 	dvec3 S[3];
 	double su[3], sv[3];
 	int ns = 0;
 	static const double bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
-	for (int i = 0; i < 3; i++) {
-		int j = i == 2 ? 0 : i + 1;
-		if (d[i] == 0.0) {
-			S[ns] = P[i], su[ns] = bu[i], sv[ns] = bv[i], ns++;
-		} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
+	if ((above | below) == 7) {
+		/* No vertex on the plane (the usual case): the vertex alone on its side, k, ends the
+		 * two crossing edges, k - 1 and k; taken without a branch on which it is. */
+		static const int first_edge[3] = {0, 0, 1}, second_edge[3] = {2, 1, 2};
+		int k = __builtin_ctz((unsigned)((above & (above - 1)) == 0 ? above : below));
+		int edges[2] = {first_edge[k], second_edge[k]};
+		for (int e = 0; e < 2; e++) {
+			int i = edges[e], j = i == 2 ? 0 : i + 1;
 			double s = d[i] / (d[i] - d[j]);
-			S[ns] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
-			su[ns] = bu[i] + s * (bu[j] - bu[i]), sv[ns] = bv[i] + s * (bv[j] - bv[i]), ns++;
+			S[e] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
+			su[e] = bu[i] + s * (bu[j] - bu[i]), sv[e] = bv[i] + s * (bv[j] - bv[i]);
+		}
+		ns = 2;
+	} else {
+		for (int i = 0; i < 3; i++) {
+			int j = i == 2 ? 0 : i + 1;
+			if (d[i] == 0.0) {
+				S[ns] = P[i], su[ns] = bu[i], sv[ns] = bv[i], ns++;
+			} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
+				double s = d[i] / (d[i] - d[j]);
+				S[ns] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
+				su[ns] = bu[i] + s * (bu[j] - bu[i]), sv[ns] = bv[i] + s * (bv[j] - bv[i]), ns++;
+			}
 		}
 	}
 	if (ns != 2)
