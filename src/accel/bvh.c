@@ -913,6 +913,18 @@ BVH_INLINE int f4_compress(uint32_t *dst, const uint32_t *src, int mask)
 	return n;
 }
 
+/* compress_lanes: base + i for the lanes i set in mask, in order, to dst[0, popcount) (room for W).
+ * Returns the count. */
+BVH_INLINE int f4_compress_lanes(uint32_t *dst, uint32_t base, int mask)
+{
+	int n = 0;
+	for (uint32_t i = 0; i < 4; i++) {
+		dst[n] = base + i;
+		n += (mask >> i) & 1;
+	}
+	return n;
+}
+
 #define W 4
 #define vf __m128
 #define V(op) f4_##op
@@ -985,6 +997,13 @@ BVH_INLINE int f8_compress(uint32_t *dst, const uint32_t *src, int mask)
 	__m256i perm = _mm256_load_si256((const __m256i *)left_pack[mask]);
 	__m256i words = _mm256_loadu_si256((const __m256i *)src);
 	_mm256_storeu_si256((__m256i *)dst, _mm256_permutevar8x32_epi32(words, perm));
+	return __builtin_popcount((unsigned)mask);
+}
+
+BVH_INLINE int f8_compress_lanes(uint32_t *dst, uint32_t base, int mask)
+{
+	__m256i lanes = _mm256_load_si256((const __m256i *)left_pack[mask]);
+	_mm256_storeu_si256((__m256i *)dst, _mm256_add_epi32(lanes, _mm256_set1_epi32((int)base)));
 	return __builtin_popcount((unsigned)mask);
 }
 

@@ -17,7 +17,6 @@ _Static_assert(sizeof(K(node)) == NODE_BYTES(W), "node layout as the collapse wr
 /* Loops over the three axes or vertices, unrolled so their vector arrays live in registers (gcc -O2
  * would keep them in memory). */
 #define K_UNROLL _Pragma("GCC unroll 3")
-#define K_UNROLL_ALL _Pragma("GCC unroll 8")
 
 /* ---- Rays: the slab test ------------------------------------------------------------------- */
 
@@ -452,49 +451,33 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int 
  * box no test passes): the sign bits of the children read as floats. */
 BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((const float *)nd->child)); }
 
-/* Starts fetching the triangles of a leaf: the first W (GROUP_WORDS words each, from any offset)
- * without a loop, the rest, if any, in one. */
-BVH_INLINE void K(prefetch_leaf)(const bvh *b, uint32_t ref)
-{
-	const char *lw = (const char *)leaf_words(b, ref);
-	const uint32_t first = GROUP_WORDS * sizeof(bvh_word) * W, size = GROUP_WORDS * sizeof(bvh_word) * leaf_count(ref);
-	K_UNROLL_ALL
-	for (uint32_t o = 0; o < first; o += 64)
-		_mm_prefetch(lw + o, _MM_HINT_T0);
-	_mm_prefetch(lw + first - 1, _MM_HINT_T0);
-	for (uint32_t o = first; o < size; o += 64)
-		_mm_prefetch(lw + o, _MM_HINT_T0);
-}
-
 /* Leaves a circle traversal collects before it tests them (then it goes on). */
 #define K_LEAF_BATCH 32
 
-/* The leaves[0, n) of a circle traversal: first every leaf's pre-test, then the exact test of each
- * triangle left. Separate passes, free of each other's branches, overlap better than a leaf test
- * after each node test. Returns the new total (circle_triangle). */
+/* The leaves[0, n) of a circle traversal: first every leaf's pre-test, its candidates left-packed
+ * into one list (leaf i, triangle k as i << 8 | k), then the exact test of each. Separate passes,
+ * free of each other's branches, overlap better than a leaf test after each node test, and one
+ * list needs no branch on which leaves have candidates. Returns the new total (circle_triangle). */
 static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circle_prep) *p,
 				 const uint32_t *leaves, int n, tri_circle_hit *hits, uint32_t max_hits,
 				 uint32_t total)
 {
-	int cand[K_LEAF_BATCH + W];
+	uint32_t cand[(K_LEAF_BATCH + W) * BVH_MAX_LEAF + W];
+	int nc = 0;
 	for (int i = 0; i < n; i++) {
 		int m = (int)leaf_count(leaves[i]);
 		const bvh_word *w = leaf_words(b, leaves[i]);
-		cand[i] = 0;
 		for (int h = 0; W * h < m; h++) {
 			int mg;
 			const bvh_word *wg = K(group)(w, m, h, &mg);
-			cand[i] |= K(group_circle)(p, wg, mg) << W * h;
+			nc += V(compress_lanes)(&cand[nc], (uint32_t)(i << 8 | W * h), K(group_circle)(p, wg, mg));
 		}
 	}
-	for (int i = 0; i < n; i++) {
-		int m = (int)leaf_count(leaves[i]);
-		const bvh_word *w = leaf_words(b, leaves[i]);
-		for (int c = cand[i]; c != 0; c &= c - 1) {
-			int k = lowest_bit(c), mg;
-			const bvh_word *wg = K(group)(w, m, k / W, &mg);
-			total = circle_triangle(q, wg, mg, k % W, hits, max_hits, total);
-		}
+	for (int j = 0; j < nc; j++) {
+		uint32_t leaf = leaves[cand[j] >> 8];
+		int k = (int)(cand[j] & 255), m = (int)leaf_count(leaf), mg;
+		const bvh_word *wg = K(group)(leaf_words(b, leaf), m, k / W, &mg);
+		total = circle_triangle(q, wg, mg, k % W, hits, max_hits, total);
 	}
 	return total;
 }
@@ -525,12 +508,8 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 		const K(node) *nd = &nodes[ni];
 		int mask = K(node_circle)(nd, &p);
 		int leaf = mask & K(leaf_mask)(nd);
-		int first = nl;
 		nl += V(compress)(&leaves[nl], nd->child, leaf);
 		back += V(compress)(&queue[back], nd->child, mask & ~leaf);
-		/* Tested after the batch fills: fetch their triangles meanwhile. */
-		for (int i = first; i < nl; i++)
-			K(prefetch_leaf)(b, leaves[i]);
 		if (nl >= K_LEAF_BATCH) {
 			total = K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
 			nl = 0;
@@ -550,4 +529,3 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 #undef K_LEAF_BATCH
 #undef K_STACK
 #undef K_UNROLL
-#undef K_UNROLL_ALL

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 /* A ray ready for the watertight test: origin, direction, the closed interval [tmin, tmax], and
  * the shear of Woop et al. (section 3): kz the dominant axis of dir, kx and ky the others in an
@@ -169,11 +170,11 @@ static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v
 	if ((above | below) == 7) {
 		/* No vertex on the plane (the usual case): the vertex alone on its side, k, ends the
 		 * two crossing edges, k - 1 and k; taken without a branch on which it is. */
-		static const int first_edge[3] = {0, 0, 1}, second_edge[3] = {2, 1, 2};
+		static const int first_edge[3] = {0, 0, 1}, second_edge[3] = {2, 1, 2}, next[3] = {1, 2, 0};
 		int k = __builtin_ctz((unsigned)((above & (above - 1)) == 0 ? above : below));
 		int edges[2] = {first_edge[k], second_edge[k]};
 		for (int e = 0; e < 2; e++) {
-			int i = edges[e], j = i == 2 ? 0 : i + 1;
+			int i = edges[e], j = next[i];
 			double s = d[i] / (d[i] - d[j]);
 			S[e] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
 			su[e] = bu[i] + s * (bu[j] - bu[i]), sv[e] = bv[i] + s * (bv[j] - bv[i]);
@@ -204,7 +205,14 @@ static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v
 		return 0;
 	double sq = sqrt(disc);
 	/* Stable roots: q = -(b + sign(b) sq), s = q / a and cc / q. */
-	double q = b >= 0.0 ? -(b + sq) : -(b - sq);
+	/* sq with b's sign (+ for b >= 0, so also for -0), by its sign bit: no branch on b, whose
+	 * sign is a coin toss. b - sq is b + -sq exactly. */
+	uint64_t bits;
+	memcpy(&bits, &sq, sizeof bits);
+	bits ^= (uint64_t)!(b >= 0.0) << 63;
+	double signed_sq;
+	memcpy(&signed_sq, &bits, sizeof signed_sq);
+	double q = -(b + signed_sq);
 	double roots[2];
 	int nr = 0;
 	if (q != 0.0) {
