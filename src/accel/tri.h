@@ -5,6 +5,7 @@
 #ifndef CIRCE_ACCEL_TRI_H
 #define CIRCE_ACCEL_TRI_H
 
+#include "base/trig.h"
 #include "base/vec.h"
 
 #include <math.h>
@@ -233,7 +234,7 @@ static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v
 		double ct = d3_dot(rel, T), st = d3_dot(rel, N);
 		if (!c->full && ct < 0.0)
 			continue;
-		double theta = atan2(st, ct);
+		double theta = trig_atan2(st, ct);
 		if (c->full && theta < 0.0)
 			theta += 2.0 * M_PI;
 		tri_circle_hit *h = &out[nh++];
