@@ -819,6 +819,22 @@ bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q)
 	return circle_prepare(q, box_extent(lo, hi), &p) && box_circle(&p, lo, hi);
 }
 
+/* The circle traversal's sizes (bvh_simd.h): inner nodes queued before it goes depth first, and
+ * leaves collected before their tests. Test builds (test_circle_queue) make them tiny, and count
+ * how often the traversal goes depth first. */
+#ifndef BVH_CIRCLE_FIFO
+#define BVH_CIRCLE_FIFO 512
+#endif
+#ifndef BVH_CIRCLE_LEAF_BATCH
+#define BVH_CIRCLE_LEAF_BATCH 32
+#endif
+#ifdef BVH_CIRCLE_QUEUE_STATS
+extern long bvh_circle_queue_lifo;
+#define BVH_QUEUE_STAT(counter) ((counter)++)
+#else
+#define BVH_QUEUE_STAT(counter) ((void)0)
+#endif
+
 /* ---- The vector kernels -------------------------------------------------------------------- */
 
 /* Forced inlining: the leaf tests are called from two traversals each, and gcc -O2 would

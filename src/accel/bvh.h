@@ -86,8 +86,11 @@ typedef struct bvh_node {
 #define BVH_INNER 0x80000000u
 /* Max primitives in a leaf (SAH decides below it). */
 #define BVH_MAX_LEAF 8
-/* Max depth of a tree: traversal stacks hold this many entries. */
+/* Max depth of a tree: traversal stacks hold this many entries. (A test, test_circle_queue,
+ * compiles its own BVH with a smaller one.) */
+#ifndef BVH_MAX_DEPTH
 #define BVH_MAX_DEPTH 62
+#endif
 bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes,
 		     uint32_t *num_nodes, uint32_t *perm);
 static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }

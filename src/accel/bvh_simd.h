@@ -452,7 +452,7 @@ BVH_INLINE int K(group_circle)(const K(circle_prep) * p, const bvh_word *w, int 
 BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((const float *)nd->child)); }
 
 /* Leaves a circle traversal collects before it tests them (then it goes on). */
-#define K_LEAF_BATCH 32
+#define K_LEAF_BATCH BVH_CIRCLE_LEAF_BATCH
 
 /* The leaves[0, n) of a circle traversal: first every leaf's pre-test, its candidates left-packed
  * into one list (leaf i, triangle k as i << 8 | k), then the exact test of each. Separate passes,
@@ -483,7 +483,7 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
 }
 
 /* The inner nodes a circle traversal queues before it goes depth first (K(circle)). */
-#define K_FIFO 512
+#define K_FIFO BVH_CIRCLE_FIFO
 /* Its queue: K_FIFO, then room for a depth-first descent (K_STACK) and two nodes' children. */
 #define K_QUEUE (K_FIFO + K_STACK + 2 * W)
 
@@ -491,10 +491,10 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
  * node's passing children are appended by one left-pack each: leaves to a batch (K(circle_leaves)),
  * inner nodes to a queue [front, back). The next node comes from the front, so it was queued
  * before the node just tested and does not wait for its test: breadth first, successive node
- * tests overlap (depth first, each waited for the last; 1.13x on the head). A queue longer than
- * K_FIFO is taken from the back, depth first, which bounds it by K_QUEUE - W; when the back
- * nears the end, the queue moves to the start. All hits are returned, in an order that depends
- * on the tree. */
+ * tests overlap (depth first, each waited for the last; 1.13x on the head). Once the queue's back
+ * passes K_FIFO, nodes come from the back, depth first, which never takes it past K_QUEUE - W
+ * (a descent adds at most W - 1 nodes a level); the front's part of the array is not reused. All
+ * hits are returned, in an order that depends on the tree. */
 static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *cp, tri_circle_hit *hits,
 			  uint32_t max_hits)
 {
@@ -516,10 +516,11 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 		}
 		if (back == front)
 			return K(circle_leaves)(b, q, &p, leaves, nl, hits, max_hits, total);
-		ni = back - front > K_FIFO ? queue[--back] : queue[front++];
-		if (back + W > K_QUEUE) {
-			memmove(queue, queue + front, (size_t)(back - front) * sizeof *queue);
-			back -= front, front = 0;
+		if (back > K_FIFO) {
+			BVH_QUEUE_STAT(bvh_circle_queue_lifo);
+			ni = queue[--back];
+		} else {
+			ni = queue[front++];
 		}
 	}
 }

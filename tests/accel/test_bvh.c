@@ -190,9 +190,70 @@ static void check_width(void)
 	bvh_free(b);
 }
 
+/* bvh_box_circle is conservative: a box holding a point of the arc (sampled at 4096 angles) always
+ * passes, over 4000 random circles (half and full, radii from 1e-3 to 10, centres up to 100 from the
+ * origin) and boxes around them. And it culls: boxes wholly off the plane, inside the sphere,
+ * outside it or (half circles) behind the centre fail. */
+static void check_box_circle(void)
+{
+	rng g;
+	rng_seed(&g, 5, 9);
+	long holding = 0, missed = 0, culled = 0, cull_cases = 0, circles = test_count(4000);
+	for (int i = 0; i < circles; i++) {
+		tri_circle q;
+		q.centre = v3_scale(v3_sub(v3(rng_float(&g), rng_float(&g), rng_float(&g)), v3s(0.5f)), 200.0f * rng_float(&g));
+		q.n = test_unit_vector(&g);
+		vec3 b1, b2;
+		v3_basis(q.n, &b1, &b2);
+		float phi = 6.2831853f * rng_float(&g);
+		q.t = v3_normalize(v3_add(v3_scale(b1, cosf(phi)), v3_scale(b2, sinf(phi))));
+		q.radius = 1e-3f * powf(1e4f, rng_float(&g));
+		q.full = i % 2 == 0;
+		vec3 m = v3_normalize(v3_cross(q.t, q.n));
+		float r = q.radius;
+		/* Random boxes near the arc, from a hundredth of r to twice r across. */
+		for (int j = 0; j < 8; j++) {
+			float th0 = q.full ? 6.2831853f * rng_float(&g) : 3.1415927f * (rng_float(&g) - 0.5f);
+			vec3 on = v3_add(q.centre, v3_scale(v3_add(v3_scale(q.t, cosf(th0)), v3_scale(q.n, sinf(th0))), r));
+			vec3 at = v3_add(on, v3_scale(v3_sub(v3(rng_float(&g), rng_float(&g), rng_float(&g)), v3s(0.5f)), r));
+			vec3 half = v3_scale(v3(rng_float(&g), rng_float(&g), rng_float(&g)), r * powf(100.0f, rng_float(&g)) / 100.0f);
+			vec3 lo = v3_sub(at, half), hi = v3_add(at, half);
+			bool holds = false;
+			for (int k = 0; k < 4096 && !holds; k++) {
+				float th = q.full ? 6.2831853f * k / 4096.0f : 3.1415927f * (k / 4095.0f - 0.5f);
+				vec3 p = v3_add(q.centre, v3_scale(v3_add(v3_scale(q.t, cosf(th)), v3_scale(q.n, sinf(th))), r));
+				holds = p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y && p.z > lo.z && p.z < hi.z;
+			}
+			holding += holds;
+			if (holds && !bvh_box_circle(lo, hi, &q) && missed++ < 5)
+				CHECK(0, "circle %ld box %d holds a point of the arc and fails the test", i, j);
+		}
+		/* Boxes the test must cull, a tenth of r across: 0.3 r off the plane; at the centre;
+		 * 1.5 r out in the plane; for a half circle, 0.5 r behind the centre along t. Only
+		 * where r is over 1e-3 of the centre's coordinates: the test's slack against rounding,
+		 * 1e-5 of the magnitudes, must stay under a twentieth of r. */
+		vec3 ac = v3_abs(q.centre);
+		if (!(r > 1e-3f * fmaxf(ac.x, fmaxf(ac.y, ac.z))))
+			continue;
+		vec3 e = v3s(0.05f * r);
+		vec3 cases[4] = {v3_add(v3_add(q.centre, v3_scale(q.t, 0.7f * r)), v3_scale(m, 0.3f * r)), q.centre,
+				 v3_add(q.centre, v3_scale(q.n, 1.5f * r)), v3_sub(q.centre, v3_scale(q.t, 0.5f * r))};
+		for (int k = 0; k < (q.full ? 3 : 4); k++) {
+			cull_cases++;
+			culled += !bvh_box_circle(v3_sub(cases[k], e), v3_add(cases[k], e), &q);
+		}
+	}
+	printf("box_circle: %ld boxes hold a point of an arc, %ld fail the test; %ld of %ld boxes culled\n", holding,
+	       missed, culled, cull_cases);
+	CHECK(holding > circles / 2, "only %ld boxes hold a point of an arc", holding);
+	CHECK(missed == 0, "%ld boxes holding a point of the arc fail", missed);
+	CHECK(culled == cull_cases, "%ld of %ld boxes off the circle pass", cull_cases - culled, cull_cases);
+}
+
 int main(void)
 {
 	check_width();
+	check_box_circle();
 	check_bad_input();
 	check_degenerate();
 	check_small_meshes();
