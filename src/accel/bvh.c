@@ -879,10 +879,8 @@ static uint32_t circle_triangle(const tri_circle *q, const bvh_word *w, int m, i
 	return total;
 }
 
-/* Relative size of the margins of group_circle: tri_circle_intersect's float pre-test's (tri.h
- * derives it; 1e-5 before, which sent 1.64 triangles a circle on the head to the exact test
- * instead of 1.41, for 1.24 hits). */
-#define GROUP_CIRCLE_MARGIN 3e-6f
+/* Relative size of the margins of group_circle: tri_circle_intersect's float pre-test's. */
+#define GROUP_CIRCLE_MARGIN TRI_CIRCLE_MARGIN
 
 /* The vector operations of bvh_simd.h, one set a width. Compares are the ordered (false on NaN)
  * ones of SSE's cmplt/cmple/cmpgt/cmpge/cmpeq, and neq the unordered one of cmpneq; max and min
@@ -935,12 +933,8 @@ BVH_INLINE int f4_compress(uint32_t *dst, const uint32_t *src, int mask)
  * Returns the count. */
 BVH_INLINE int f4_compress_lanes(uint32_t *dst, uint32_t base, int mask)
 {
-	int n = 0;
-	for (uint32_t i = 0; i < 4; i++) {
-		dst[n] = base + i;
-		n += (mask >> i) & 1;
-	}
-	return n;
+	const uint32_t lanes[4] = {base, base + 1, base + 2, base + 3};
+	return f4_compress(dst, lanes, mask);
 }
 
 #define W 4

@@ -316,7 +316,6 @@ BVH_INLINE vf K(dot)(const vf a[3], const vf b[3])
 {
 	return V(add)(V(add)(V(mul)(a[0], b[0]), V(mul)(a[1], b[1])), V(mul)(a[2], b[2]));
 }
-BVH_INLINE vf K(select)(vf mask, vf a, vf b) { return V(blend)(mask, a, b); }
 
 BVH_INLINE int K(node_circle)(const K(node) * nd, const K(circle_prep) * p)
 {
@@ -383,9 +382,9 @@ BVH_INLINE int K(segment_misses)(const K(circle_prep) * p, vf rel[3][3], const v
 	vf e1[3], e2[3];
 	K_UNROLL
 	for (int a = 0; a < 3; a++)
-		e1[a] = K(select)(crosses[0], x[0][a], x[1][a]),
-		e2[a] = K(select)(crosses[2], x[2][a], x[1][a]);
-	vf err_max = V(max)(K(select)(crosses[0], err[0], err[1]), K(select)(crosses[2], err[2], err[1]));
+		e1[a] = V(blend)(crosses[0], x[0][a], x[1][a]),
+		e2[a] = V(blend)(crosses[2], x[2][a], x[1][a]);
+	vf err_max = V(max)(V(blend)(crosses[0], err[0], err[1]), V(blend)(crosses[2], err[2], err[1]));
 	vf slack = V(add)(sm, err_max);
 	vf rin = V(sub)(p->radius, slack), rout = V(add)(p->radius, slack);
 	vf rin2 = V(mul)(rin, rin);
