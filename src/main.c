@@ -766,6 +766,8 @@ int main(int argc, char **argv)
 		printf("circe %s\n", PACKAGE_VERSION);
 		return EXIT_OK;
 	}
+	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
+	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */
 	if (!strcmp(cmd, "render"))
 		return cmd_render(argc - 1, argv + 1);

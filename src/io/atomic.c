@@ -1,4 +1,4 @@
-/* atomic.c - temporary file, fsync, rename. */
+/* atomic.c - temporary file, fsync, rename; or, for a device or a FIFO, a copy into it. */
 #include "io/atomic.h"
 
 #include "base/mem.h"
@@ -42,24 +42,71 @@ static char *tmp_name_for(const char *path)
 	return t;
 }
 
-bool atomic_open(atomic_file *f, const char *final_path, diag *d)
+/* What atomic_open does with the path it is given. */
+typedef enum target_kind {
+	TARGET_FILE,     /* absent, or a regular file (through a link: resolved names it) */
+	TARGET_IN_PLACE, /* a character device or a FIFO */
+	TARGET_REFUSED   /* why says what it is */
+} target_kind;
+
+static target_kind classify(const char *path, char **resolved, const char **why)
 {
-	f->fd = -1;
-	f->tmp_path = NULL;
-	f->final_path = mem_strdup(final_path);
-	char *dir = dir_of(final_path);
-	if (!f->final_path || !dir) {
-		mem_free(dir);
-		mem_free(f->final_path);
-		diag_file_error(d, final_path, "out of memory");
+	*resolved = NULL;
+	struct stat lst, st;
+	if (lstat(path, &lst) != 0)
+		return TARGET_FILE; /* absent, or unreachable: creating the temporary says why */
+	if (stat(path, &st) != 0) {
+		*why = errno == ENOENT ? "is a symbolic link to a missing file; it is not replaced"
+				       : "is a symbolic link that cannot be followed; it is not replaced";
+		return TARGET_REFUSED;
+	}
+	if (S_ISREG(st.st_mode)) {
+		if (S_ISLNK(lst.st_mode)) {
+			char *r = realpath(path, NULL);
+			*resolved = r ? mem_strdup(r) : NULL;
+			free(r);
+			if (!*resolved) {
+				*why = "is a symbolic link whose target cannot be resolved";
+				return TARGET_REFUSED;
+			}
+		}
+		return TARGET_FILE;
+	}
+	if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))
+		return TARGET_IN_PLACE;
+	*why = S_ISDIR(st.st_mode) ? "is a directory"
+				   : "is not a regular file, a character device or a FIFO; it is not replaced";
+	return TARGET_REFUSED;
+}
+
+/* The folder for an in-place target's temporary: $TMPDIR, else /tmp (a device's folder is often
+ * not writable, and the temporary never gets a name there). */
+static char *in_place_temp_beside(void)
+{
+	const char *t = getenv("TMPDIR");
+	if (!t || !*t)
+		t = "/tmp";
+	size_t n = strlen(t) + sizeof "/circe-output";
+	char *p = mem_alloc(n, 1);
+	if (p)
+		snprintf(p, n, "%s/circe-output", t);
+	return p;
+}
+
+/* Opens f->fd, readable too (an in-place commit copies from it), in the folder of beside. */
+static bool open_temp(atomic_file *f, const char *beside)
+{
+	char *dir = dir_of(beside);
+	if (!dir) {
+		errno = ENOMEM;
 		return false;
 	}
 #ifdef O_TMPFILE
-	f->fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666 & ~0022);
+	f->fd = open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, 0666 & ~0022);
 #endif
 	if (f->fd < 0) {
 		/* No O_TMPFILE here: a named temporary, removed on abort. */
-		f->tmp_path = tmp_name_for(final_path);
+		f->tmp_path = tmp_name_for(beside);
 		if (f->tmp_path)
 			f->fd = mkstemps(f->tmp_path, 4);
 		if (f->fd >= 0)
@@ -67,7 +114,34 @@ bool atomic_open(atomic_file *f, const char *final_path, diag *d)
 	}
 	int err = errno;
 	mem_free(dir);
-	if (f->fd < 0) {
+	errno = err;
+	return f->fd >= 0;
+}
+
+bool atomic_open(atomic_file *f, const char *final_path, diag *d)
+{
+	f->fd = -1;
+	f->tmp_path = NULL;
+	const char *why = NULL;
+	char *resolved;
+	target_kind kind = classify(final_path, &resolved, &why);
+	if (kind == TARGET_REFUSED) {
+		diag_file_error(d, final_path, "cannot write the output: it %s", why);
+		return false;
+	}
+	f->in_place = kind == TARGET_IN_PLACE;
+	f->final_path = resolved ? resolved : mem_strdup(final_path);
+	char *beside = f->in_place ? in_place_temp_beside() : NULL;
+	if (!f->final_path || (f->in_place && !beside)) {
+		mem_free(beside);
+		mem_free(f->final_path);
+		diag_file_error(d, final_path, "out of memory");
+		return false;
+	}
+	bool ok = open_temp(f, beside ? beside : f->final_path);
+	int err = errno;
+	mem_free(beside);
+	if (!ok) {
 		diag_file_error(d, final_path, "cannot create the output: %s", strerror(err));
 		mem_free(f->tmp_path);
 		mem_free(f->final_path);
@@ -132,30 +206,82 @@ static bool link_unnamed(atomic_file *f, int *err)
 	return false;
 }
 
+/* Writes all n bytes of buf to fd; false with *err set (ENOSPC from /dev/full). */
+static bool write_all(int fd, const char *buf, size_t n, int *err)
+{
+	while (n > 0) {
+		ssize_t w = write(fd, buf, n);
+		if (w < 0 && errno == EINTR)
+			continue;
+		if (w <= 0) {
+			*err = w < 0 ? errno : EIO;
+			return false;
+		}
+		buf += w, n -= (size_t)w;
+	}
+	return true;
+}
+
+enum { COPY_CHUNK_BYTES = 16 * 1024 }; /* on the stack of whichever thread writes */
+
+/* The complete temporary, copied from its start into the device or FIFO final_path. */
+static bool copy_in_place(atomic_file *f, int *err)
+{
+	int out = open(f->final_path, O_WRONLY | O_CLOEXEC);
+	if (out < 0) {
+		*err = errno;
+		return false;
+	}
+	char buf[COPY_CHUNK_BYTES];
+	off_t at = 0;
+	bool ok = true;
+	for (;;) {
+		ssize_t n = pread(f->fd, buf, sizeof buf, at);
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n < 0)
+			*err = errno, ok = false;
+		if (n <= 0 || !(ok = write_all(out, buf, (size_t)n, err)))
+			break;
+		at += n;
+	}
+	if (close(out) != 0 && ok) {
+		*err = errno;
+		ok = false;
+	}
+	return ok;
+}
+
+/* fsyncs the temporary and gives it the final name. */
+static bool publish(atomic_file *f, int *err)
+{
+	if (fsync(f->fd) != 0) {
+		*err = errno;
+		return false;
+	}
+	if (!f->tmp_path)
+		return link_unnamed(f, err);
+	if (rename(f->tmp_path, f->final_path) != 0) {
+		*err = errno;
+		return false;
+	}
+	mem_free(f->tmp_path);
+	f->tmp_path = NULL;
+	return true;
+}
+
 bool atomic_commit(atomic_file *f, diag *d)
 {
 	int err = 0;
-	bool ok = fsync(f->fd) == 0;
-	if (!ok)
-		err = errno;
-	if (ok && !f->tmp_path)
-		ok = link_unnamed(f, &err);
-	else if (ok && rename(f->tmp_path, f->final_path) != 0) {
-		err = errno;
-		ok = false;
-	}
-	if (ok) {
-		mem_free(f->tmp_path);
-		f->tmp_path = NULL;
-	}
+	bool ok = f->in_place ? copy_in_place(f, &err) : publish(f, &err);
 	if (close(f->fd) != 0 && ok) {
 		err = errno;
 		ok = false;
 	}
 	f->fd = -1;
-	if (ok)
+	if (ok && !f->in_place)
 		sync_dir(f->final_path);
-	else
+	else if (!ok)
 		diag_file_error(d, f->final_path, "cannot write the output: %s", strerror(err));
 	atomic_abort(f);
 	return ok;
