@@ -298,3 +298,103 @@ void atomic_abort(atomic_file *f)
 	mem_free(f->final_path);
 	f->tmp_path = f->final_path = NULL;
 }
+
+/* path made absolute against the working folder, "." and ".." folded and repeated '/' dropped,
+ * without following links (heap; NULL when memory runs out). */
+static char *lexical_absolute(const char *path)
+{
+	char cwd[PATH_MAX] = "";
+	if (path[0] != '/' && !getcwd(cwd, sizeof cwd))
+		cwd[0] = '\0';
+	size_t n = strlen(cwd) + strlen(path) + 3;
+	char *out = mem_alloc(n, 1);
+	if (!out)
+		return NULL;
+	char *in = mem_alloc(n, 1);
+	if (!in) {
+		mem_free(out);
+		return NULL;
+	}
+	snprintf(in, n, "%s/%s", cwd, path);
+	size_t len = 0;
+	for (char *seg = in; *seg;) {
+		size_t k = strcspn(seg, "/");
+		if (k == 2 && seg[0] == '.' && seg[1] == '.') {
+			while (len > 0 && out[--len] != '/')
+				;
+		} else if (k > 0 && !(k == 1 && seg[0] == '.')) {
+			out[len++] = '/';
+			memcpy(out + len, seg, k);
+			len += k;
+		}
+		seg += k + (seg[k] == '/');
+	}
+	if (len == 0)
+		out[len++] = '/';
+	out[len] = '\0';
+	mem_free(in);
+	return out;
+}
+
+enum { LINK_HOPS_MAX = 40 }; /* Linux's own limit on links followed in one lookup */
+
+/* Where a chain of symbolic links that ends at a missing file points (heap; path itself when it
+ * is no link). A dangling link is a name for the file its target will be. */
+static char *follow_links(const char *path)
+{
+	char *cur = mem_strdup(path);
+	for (int hop = 0; cur && hop < LINK_HOPS_MAX; hop++) {
+		char target[PATH_MAX];
+		ssize_t n = readlink(cur, target, sizeof target - 1);
+		if (n < 0)
+			break;
+		target[n] = '\0';
+		char *dir = target[0] == '/' ? mem_strdup("") : dir_of(cur);
+		size_t len = (dir ? strlen(dir) : 0) + (size_t)n + 2;
+		char *next = dir ? mem_alloc(len, 1) : NULL;
+		if (next)
+			snprintf(next, len, "%s%s%s", dir, target[0] == '/' ? "" : "/", target);
+		mem_free(dir);
+		mem_free(cur);
+		cur = next;
+	}
+	return cur;
+}
+
+/* The absolute path of the file path names (through symbolic links, even dangling ones) with
+ * its folder resolved by realpath when that folder exists. */
+static char *normal_path(const char *path)
+{
+	char *linked = follow_links(path);
+	char *lex = linked ? lexical_absolute(linked) : NULL;
+	mem_free(linked);
+	if (!lex)
+		return NULL;
+	char *slash = strrchr(lex, '/');
+	if (slash == lex || !slash[1])
+		return lex;
+	*slash = '\0';
+	char *dir = realpath(lex, NULL);
+	*slash = '/';
+	if (!dir)
+		return lex;
+	size_t n = strlen(dir) + strlen(slash) + 1;
+	char *out = mem_alloc(n, 1);
+	if (out)
+		snprintf(out, n, "%s%s", strcmp(dir, "/") ? dir : "", slash);
+	free(dir);
+	mem_free(lex);
+	return out;
+}
+
+bool atomic_same_output(const char *a, const char *b)
+{
+	struct stat sa, sb;
+	if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
+		return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino && !S_ISCHR(sa.st_mode);
+	char *na = normal_path(a), *nb = normal_path(b);
+	bool same = na && nb ? !strcmp(na, nb) : !strcmp(a, b);
+	mem_free(na);
+	mem_free(nb);
+	return same;
+}

@@ -29,4 +29,10 @@ bool atomic_commit(atomic_file *f, diag *d);
 /* Discards the temporary; the old file under final_path (if any) is untouched. */
 void atomic_abort(atomic_file *f);
 
+/* True when writing a and then b would land in one file, so that b overwrites a: the same
+ * device and inode when both exist, else the same absolute path once the existing folders in it
+ * are resolved (symbolic links, "." and ".."). Two names of one character device (/dev/null) are
+ * not the same output: each write goes through whole. */
+bool atomic_same_output(const char *a, const char *b);
+
 #endif
