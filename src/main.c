@@ -6,6 +6,7 @@
 #include "base/diag.h"
 #include "base/mem.h"
 #include "io/compare.h"
+#include "io/atomic.h"
 #include "io/exr.h"
 #include "io/merge.h"
 #include "lang/lang.h"
@@ -28,7 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_SCENE = 3 };
+enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_SCENE = 3, EXIT_INTERRUPTED = 130 };
 
 static const char usage_text[] =
 	"usage: circe render SCENE [-o out.exr] [--png out.png] [-W W -H H] [--spp N | --time S]\n"
@@ -373,6 +374,25 @@ static void on_signal(int sig)
 	atomic_store(&interrupted, 1);
 }
 
+/* SIGINT and SIGTERM set `interrupted` from now until the process ends; no SA_RESTART, so a
+ * blocking open of an output FIFO gives up. */
+static void install_stop_handlers(void)
+{
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+}
+
+/* Interrupted before a pass was done: an image of no samples would replace a good older one. */
+static void report_nothing_written(const char *out)
+{
+	fprintf(stderr, "circe: interrupted before any pass was done: nothing written ('%s' is left as it was)\n",
+		out);
+}
+
 /* FNV-1a (64-bit) of every source text the parser read, in the order it read them: the scene
  * and its includes. Tiles of one frame must agree on it. */
 static void scene_hash(const diag *d, char out[17])
@@ -471,21 +491,40 @@ static int cmd_render(int argc, char **argv)
 	int status = parse_render_cli(argc, argv, &o);
 	if (status != EXIT_OK)
 		return status < 0 ? EXIT_OK : status;
+	/* From here on a signal only asks the render to stop: start-up and output included. */
+	install_stop_handlers();
 	struct timespec start;
 	clock_gettime(CLOCK_MONOTONIC, &start);
+	char *out_default = o.out ? NULL : default_output(o.scene);
+	char *out = frame_name(o.out ? o.out : out_default, o.frame);
+	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
+	if (!out || (o.png && !png)) {
+		fprintf(stderr, "circe: error: out of memory\n");
+		free(out), free(png), free(out_default);
+		return EXIT_RUNTIME;
+	}
+	if (png && atomic_same_output(out, png)) {
+		char both[2 * PATH_MAX];
+		snprintf(both, sizeof both, "'%s' and --png '%s'", out, png);
+		status = usage_error("-o %s name the same file: one would overwrite the other", both);
+		free(out), free(png), free(out_default);
+		return status;
+	}
 	diag d;
 	diag_init(&d, stderr);
 	lang_options lo = {.include_dirs = o.include_dirs, .n_include_dirs = (size_t)o.ninclude, .clock = o.clock};
 	scene *sc = NULL;
 	lang_status ls = lang_parse_file(o.scene, &lo, &d, &sc);
 	if (ls != LANG_OK) {
-		diag_free(&d);
+		free(out), free(png), free(out_default), diag_free(&d);
 		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
 	}
 	double parse_s = seconds_since(&start);
-	char *out_default = o.out ? NULL : default_output(o.scene);
-	char *out = frame_name(o.out ? o.out : out_default, o.frame);
-	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
+	if (atomic_load(&interrupted)) { /* during the parse: the build would be wasted */
+		report_nothing_written(out);
+		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+		return EXIT_INTERRUPTED;
+	}
 	world w;
 	scene_sss_method sss = !o.sss			 ? SSS_METHOD_DEFAULT
 			       : !strcmp(o.sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
@@ -495,7 +534,7 @@ static int cmd_render(int argc, char **argv)
 	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory, .sss_method = sss};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
-	if (!out || (o.png && !png) || !world_build(&w, sc, &wo, &d)) {
+	if (!world_build(&w, sc, &wo, &d)) {
 		int rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return rc;
@@ -537,20 +576,16 @@ static int cmd_render(int argc, char **argv)
 		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
 		.threads = o.threads, .quiet = o.quiet, .checkpoint_interval_s = o.checkpoint_s,
 		.checkpoint = on_checkpoint, .checkpoint_user = &cp, .interrupt = &interrupted};
-	struct sigaction sa;
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
 	render_stats stats;
 	render_status rs = render_run(&job, &f, &stats);
-	signal(SIGINT, SIG_DFL);
-	signal(SIGTERM, SIG_DFL);
 	int rc = EXIT_OK;
 	if (rs == RENDER_ERROR) {
 		fprintf(stderr, "circe: error: the render could not start (threads or memory)\n");
 		rc = EXIT_RUNTIME;
+	} else if (rs == RENDER_INTERRUPTED && f.spp == 0) {
+		/* No pass finished: a black 0-sample image must not replace a good older one. */
+		report_nothing_written(out);
+		rc = EXIT_INTERRUPTED;
 	} else {
 		info.interrupted = rs == RENDER_INTERRUPTED;
 		info.render_seconds = seconds_since(&start);
@@ -569,7 +604,7 @@ static int cmd_render(int argc, char **argv)
 				(unsigned long long)stats.sss_searches, (unsigned long long)stats.sss_nohit,
 				(double)stats.sss_nohit / (double)stats.sss_searches,
 				(unsigned long long)stats.sss_overflow);
-		rc = !ok ? EXIT_RUNTIME : info.interrupted ? 130 : EXIT_OK;
+		rc = !ok ? EXIT_RUNTIME : info.interrupted ? EXIT_INTERRUPTED : EXIT_OK;
 	}
 	film_free(&f);
 	world_free(&w);
@@ -766,6 +801,8 @@ int main(int argc, char **argv)
 		printf("circe %s\n", PACKAGE_VERSION);
 		return EXIT_OK;
 	}
+	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
+	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */
 	if (!strcmp(cmd, "render"))
 		return cmd_render(argc - 1, argv + 1);

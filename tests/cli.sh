@@ -1,6 +1,7 @@
 #!/bin/sh
 # cli.sh: the command line — --help and --version, exit status 2 with a clear message for every
-# kind of bad option, and no output file when the command line is wrong.
+# kind of bad option, and no output file when the command line is wrong; two outputs naming one
+# file are a command-line error.
 . "$top_srcdir/tests/lib.sh"
 cd "$(mktemp -d)" || exit 99
 trap 'rm -rf "$PWD"' EXIT
@@ -43,4 +44,24 @@ bad "--max-memory needs a size such as 512M or 2G, not '2T'" a.pov --max-memory 
 bad "bad option for 'render'" a.pov --bogus
 [ -z "$(ls)" ] || [ "$(ls)" = "err
 out" ] || fail "files left behind: $(ls)"
+# Two outputs naming one file (another spelling, a link, a folder's alias, after --frame): exit 2
+# before anything is read or written.
+same() {
+	expect_status 2 "$CIRCE" render -W 4 -H 4 --spp 1 --quiet "$@"
+	grep -q "^circe: error: -o '.*' and --png '.*' name the same file" err || fail "'$*': $(cat err)"
+}
+printf 'sphere { 0, 1 }\n' >s.pov
+same s.pov -o same.exr --png same.exr
+same s.pov -o same.exr --png ./same.exr
+same s.pov -o same.exr --png no_such_dir/../same.exr
+same s.pov -o "$PWD/same.exr" --png same.exr
+same s.pov -o x.exr --png 'x.####.exr' --frame 7
+ln -s same.exr link.exr
+same s.pov -o same.exr --png link.exr
+mkdir sub && ln -s sub alias
+same s.pov -o sub/a.exr --png alias/a.exr
+[ ! -e same.exr ] && [ -z "$(ls sub)" ] || fail "an output was written: $(ls -R)"
+expect_status 0 "$CIRCE" render s.pov -W 4 -H 4 --spp 1 --quiet -o same.exr
+same s.pov -o link.exr --png same.exr
+expect_status 0 "$CIRCE" render s.pov -W 4 -H 4 --spp 1 --quiet -o same.exr --png other.exr --frame 3
 pass

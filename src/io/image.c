@@ -237,6 +237,17 @@ static bool load_exr(const char *path, image *out, diag *d)
 	return true;
 }
 
+image_format image_format_of(const unsigned char *head, size_t n)
+{
+	if (n >= 8 && !png_sig_cmp(head, 0, 8))
+		return IMAGE_PNG;
+	if (n >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF)
+		return IMAGE_JPEG;
+	if (n >= 4 && head[0] == 0x76 && head[1] == 0x2f && head[2] == 0x31 && head[3] == 0x01)
+		return IMAGE_EXR;
+	return IMAGE_UNKNOWN;
+}
+
 bool image_load(const char *path, image_encoding enc, image *out, diag *d)
 {
 	out->rgba = NULL;
@@ -246,15 +257,16 @@ bool image_load(const char *path, image_encoding enc, image *out, diag *d)
 		diag_file_error(d, path, "cannot open: %s", strerror(errno));
 		return false;
 	}
-	unsigned char magic[8] = {0};
+	unsigned char magic[IMAGE_SIGNATURE_BYTES] = {0};
 	size_t got = fread(magic, 1, sizeof magic, fp);
 	rewind(fp);
 	bool ok;
-	if (got >= 8 && !png_sig_cmp(magic, 0, 8))
+	image_format fmt = image_format_of(magic, got);
+	if (fmt == IMAGE_PNG)
 		ok = load_png(fp, path, enc, out, d);
-	else if (got >= 3 && magic[0] == 0xFF && magic[1] == 0xD8 && magic[2] == 0xFF)
+	else if (fmt == IMAGE_JPEG)
 		ok = load_jpeg(fp, path, enc, out, d);
-	else if (got >= 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
+	else if (fmt == IMAGE_EXR)
 		ok = load_exr(path, out, d);
 	else {
 		diag_file_error(d, path, "not a PNG, JPEG or OpenEXR image");

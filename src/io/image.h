@@ -19,6 +19,12 @@ typedef enum image_encoding {
 	IMAGE_RAW   /* 8/16-bit values map linearly to [0, 1] (normal maps, masks) */
 } image_encoding;
 
+typedef enum image_format { IMAGE_UNKNOWN, IMAGE_PNG, IMAGE_JPEG, IMAGE_EXR } image_format;
+enum { IMAGE_SIGNATURE_BYTES = 8 }; /* enough of a file's start for image_format_of */
+
+/* The format a file's first n bytes announce (PNG and JPEG signatures, EXR magic). */
+image_format image_format_of(const unsigned char *head, size_t n);
+
 /* Loads by content (PNG and JPEG signatures, EXR magic); missing channels: grey fills RGB, alpha 1.
  * EXR uses R, G, B, A (or Y for luminance). False with the reason reported to d. */
 bool image_load(const char *path, image_encoding enc, image *out, diag *d);

@@ -126,8 +126,14 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return errno ? errno : ENOENT;
+	struct stat st;
+	bool known = fstat(fileno(f), &st) == 0, regular = known && S_ISREG(st.st_mode);
+	if (known && S_ISDIR(st.st_mode)) { /* fopen opens a directory; ftell would size it huge */
+		fclose(f);
+		return EISDIR;
+	}
 	size_t cap = 1 << 16, n = 0;
-	if (fseek(f, 0, SEEK_END) == 0) { /* size the buffer once for a regular file */
+	if (regular && fseek(f, 0, SEEK_END) == 0) { /* size the buffer once for a regular file */
 		long size = ftell(f);
 		if (size > 0 && (unsigned long)size < SIZE_MAX - 2)
 			cap = (size_t)size + 2;

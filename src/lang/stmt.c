@@ -59,8 +59,9 @@ static bool in_range(parser *p, diag_loc loc, const char *what, double x, double
 }
 
 /* A file named by the scene (mesh, cage, image, normal map): a relative path is resolved against
- * the folder of the file that names it, as #include does, so the IR holds paths that open as is. */
-static bool asset_path(parser *p, const char *what, const char **out)
+ * the folder of the file that names it, as #include does, so the IR holds paths that open as is.
+ * The scene's asset list records it with the string's place, for the errors of opening it. */
+static bool asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out)
 {
 	diag_loc loc = lang_peek(p)->loc;
 	const char *name;
@@ -69,7 +70,7 @@ static bool asset_path(parser *p, const char *what, const char **out)
 	const char *slash = strrchr(from, '/');
 	if (name[0] == '/' || !slash) {
 		*out = name;
-		return true;
+		return scene_add_asset(p->sc, kind, name, loc) || lang_error(p, loc, "out of memory");
 	}
 	size_t dlen = (size_t)(slash - from) + 1, nlen = strlen(name);
 	char *path = arena_alloc(&p->sc->arena, dlen + nlen + 1, 1, 1);
@@ -78,7 +79,7 @@ static bool asset_path(parser *p, const char *what, const char **out)
 	memcpy(path, from, dlen);
 	memcpy(path + dlen, name, nlen + 1);
 	*out = path;
-	return true;
+	return scene_add_asset(p->sc, kind, path, loc) || lang_error(p, loc, "out of memory");
 }
 
 /* ---- materials --------------------------------------------------------------------------- */
@@ -123,7 +124,7 @@ static bool pigment(parser *p, scene_material *m)
 		if (k != LTK_KW_PNG && k != LTK_KW_JPEG && k != LTK_KW_EXR)
 			return lang_error_found(p, "expected the image type (png, jpeg or exr) in 'image_map'");
 		lang_advance(p);
-		TRY(asset_path(p, "as the image file", &m->image));
+		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
 		TRY(lang_expect_close(p, io, "image_map"));
 	} else {
 		TRY(lang_color(p, "as the pigment colour", &m->color));
@@ -323,7 +324,7 @@ static bool sss_block(parser *p, scene_material *m)
 		case LTK_KW_IMAGE:
 			lang_advance(p);
 			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(asset_path(p, "after 'image'", &s->albedo_image));
+			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->albedo_image));
 			break;
 		case LTK_KW_RADIUS:
 			lang_advance(p);
@@ -365,7 +366,7 @@ static bool sss_block(parser *p, scene_material *m)
 		}
 		case LTK_KW_NORMAL_MAP:
 			lang_advance(p);
-			TRY(asset_path(p, "after 'normal_map'", &s->normal_map));
+			TRY(asset_path(p, "after 'normal_map'", SCENE_ASSET_IMAGE, &s->normal_map));
 			if (lang_peek(p)->kind == LTK_KW_STRENGTH) {
 				lang_advance(p);
 				TRY(lang_float(p, "after 'strength'", &x));
@@ -422,7 +423,7 @@ static bool material(parser *p, const scene_material **out)
 			TRY(open_block(p, "diffuse", &dopen));
 			m->kind = MAT_DIFFUSE;
 			if (lang_accept(p, LTK_KW_IMAGE))
-				TRY(asset_path(p, "after 'image'", &m->image));
+				TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &m->image));
 			else
 				TRY(lang_color(p, "as the diffuse colour", &m->color));
 			TRY(lang_expect_close(p, dopen, "diffuse"));
@@ -773,7 +774,7 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	if (lang_accept(p, LTK_KW_FILE)) {
 		scene_geom *g;
 		TRY(g = new_geom(p, SHAPE_MESH_FILE, kw));
-		TRY(asset_path(p, "after 'file'", &g->u.file.path));
+		TRY(asset_path(p, "after 'file'", SCENE_ASSET_MESH, &g->u.file.path));
 		size_t start = out->len;
 		TRY(place(p, out, g, kw));
 		return object_tail(p, out, start, open, "mesh");
@@ -1089,7 +1090,7 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			TRY(once(p, &seen[0], &t));
 			lang_advance(p);
 			d->file_loc = t.loc;
-			TRY(asset_path(p, "after 'file'", &d->file));
+			TRY(asset_path(p, "after 'file'", SCENE_ASSET_CAGE, &d->file));
 			break;
 		case LTK_KW_VERTEX_VECTORS:
 			TRY(once(p, &seen[1], &t));
@@ -1530,7 +1531,7 @@ static bool sky_sphere(parser *p)
 			return true;
 		case LTK_KW_IMAGE:
 			lang_advance(p);
-			TRY(asset_path(p, "after 'image'", &s->image));
+			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->image));
 			break;
 		case LTK_KW_INTENSITY:
 			lang_advance(p);

@@ -7,6 +7,7 @@
 #include "geom/cage.h"
 #include "geom/prim.h"
 #include "geom/subdiv.h"
+#include "render/assets.h"
 #include "render/shading.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
@@ -878,6 +879,8 @@ static bool build_camera(world *w, const scene *sc, const world_options *opt, di
 bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	memset(w, 0, sizeof *w);
+	if (!assets_open(sc, d)) /* every named file, at its string, before any work */
+		return false;
 	light_set_init(&w->lights);
 	world_options o = *opt;
 	if (!o.max_memory)

@@ -12,6 +12,7 @@ scene *scene_new(void)
 	arena_init(&s->arena, 64 * 1024);
 	vecbuf_init(&s->lights, sizeof(scene_light));
 	vecbuf_init(&s->objects, sizeof(scene_object));
+	vecbuf_init(&s->assets, sizeof(scene_asset));
 	s->global.mm_per_unit = 10.0;
 	s->global.max_trace_level = 5;
 	s->global.assumed_gamma = 1.0;
@@ -40,6 +41,7 @@ void scene_free(scene *s)
 		free_geom_arrays(g);
 	vecbuf_free(&s->lights);
 	vecbuf_free(&s->objects);
+	vecbuf_free(&s->assets);
 	arena_release(&s->arena);
 	mem_free(s);
 }
@@ -72,6 +74,12 @@ scene_material *scene_new_material(scene *s, diag_loc loc)
 	m->next = s->materials;
 	s->materials = m;
 	return m;
+}
+
+bool scene_add_asset(scene *s, scene_asset_kind kind, const char *path, diag_loc loc)
+{
+	scene_asset a = {kind, path, loc};
+	return vecbuf_push(&s->assets, &a) != NULL;
 }
 
 /* ---- validation ------------------------------------------------------------------------- */

@@ -149,6 +149,16 @@ typedef struct scene_sky_sphere {
 	dvec3 rotate_deg;
 } scene_sky_sphere;
 
+/* A file the scene names, as resolved (see scene_geom's file path), and the place of its string:
+ * the build opens every one first, so that `check` and `render` report a missing one alike. */
+typedef enum scene_asset_kind { SCENE_ASSET_IMAGE, SCENE_ASSET_MESH, SCENE_ASSET_CAGE } scene_asset_kind;
+
+typedef struct scene_asset {
+	scene_asset_kind kind;
+	const char *path; /* owned by the scene's arena */
+	diag_loc loc;
+} scene_asset;
+
 typedef struct scene {
 	arena arena; /* owns strings, materials, small records */
 	scene_global global;
@@ -165,6 +175,7 @@ typedef struct scene {
 	uint32_t n_geoms;
 	scene_material *materials; /* every material record, newest first */
 	uint32_t n_materials;
+	vecbuf assets; /* scene_asset, in the order the text names them */
 } scene;
 
 scene *scene_new(void);
@@ -173,6 +184,8 @@ void scene_free(scene *s);
 /* New records owned by s; NULL when memory runs out. */
 scene_geom *scene_new_geom(scene *s, scene_shape_kind kind, diag_loc loc);
 scene_material *scene_new_material(scene *s, diag_loc loc);
+/* Appends a named file to s->assets; false when memory runs out. */
+bool scene_add_asset(scene *s, scene_asset_kind kind, const char *path, diag_loc loc);
 
 static inline size_t scene_n_objects(const scene *s) { return s->objects.len; }
 static inline const scene_object *scene_object_at(const scene *s, size_t i)

@@ -23,11 +23,28 @@ grep -Eq "triangles after tessellation: [1-9][0-9]* unique" "$tmp/out" ||
 	{ echo "FAIL summary lacks the tessellated triangle count"; cat "$tmp/out"; fail=1; }
 printf 'mesh { file "missing.obj" }\n' >"$tmp/nofile.pov"
 expect 3 "missing mesh file is a scene error" -- "$CIRCE" check "$tmp/nofile.pov"
-grep -q "nofile.pov:1:1: note: the mesh file was named here" "$tmp/err" ||
+grep -q "nofile.pov:1:13: error: mesh file '$tmp/missing.obj': cannot open it: No such file or directory" "$tmp/err" ||
 	{ echo "FAIL missing mesh file message:"; cat "$tmp/err"; fail=1; }
 expect 1 "missing file" -- "$CIRCE" check "$tmp/none.pov"
 grep -qx "$tmp/none.pov: error: cannot open: No such file or directory" "$tmp/err" ||
 	{ echo "FAIL missing-file message:"; cat "$tmp/err"; fail=1; }
+mkdir "$tmp/folder"
+expect 1 "a folder as the scene" -- "$CIRCE" check "$tmp/folder"
+grep -qx "$tmp/folder: error: cannot open: Is a directory" "$tmp/err" ||
+	{ echo "FAIL folder-as-scene message:"; cat "$tmp/err"; fail=1; }
+expect 1 "render of a folder" -- "$CIRCE" render "$tmp/folder" -o "$tmp/folder.exr"
+grep -qx "$tmp/folder: error: cannot open: Is a directory" "$tmp/err" && [ ! -e "$tmp/folder.exr" ] ||
+	{ echo "FAIL render of a folder:"; cat "$tmp/err"; fail=1; }
+# Every file the scene names is opened by check; render says the same thing (tests/bad holds
+# the cases and their expected diagnostics) and writes nothing.
+for name in image_missing image_directory image_not_an_image sky_sphere_image_missing normal_map_directory \
+	mesh_file_missing mesh_file_directory subdiv_file_missing subdiv_file_directory include_directory; do
+	expect 3 "render $name" -- sh -c 'cd "$1/tests/bad" && "$2" render "$3.pov" -W 4 -H 4 --spp 1 -o "$4/x.exr"' \
+		sh "$srcdir" "$CIRCE" "$name" "$tmp"
+	grep -E '^[^ :]+:([0-9]+:[0-9]+:)? (error|note): ' "$tmp/err" | cmp -s - "$srcdir/tests/bad/$name.err" ||
+		{ echo "FAIL render $name: diagnostics differ from check's:"; cat "$tmp/err"; fail=1; }
+	[ ! -e "$tmp/x.exr" ] || { echo "FAIL render $name wrote an image"; fail=1; }
+done
 expect 2 "no scene" -- "$CIRCE" check
 expect 2 "two scenes" -- "$CIRCE" check a.pov b.pov
 expect 2 "bad clock" -- "$CIRCE" check --clock abc "$good/basic.pov"

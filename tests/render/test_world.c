@@ -142,12 +142,14 @@ int main(void)
 		}
 	}
 
-	/* Errors name the scene's place: a missing mesh file, a missing texture. */
+	/* Errors name the scene's place, the string of the file: a missing mesh file, a missing texture. */
 	ok = build("mesh { file \"nothere.obj\" }\n", &w, &err);
-	CHECK(!ok && strstr(err, "nothere.obj") && strstr(err, "s.pov:1:1: note:"), "missing mesh:\n%s", err);
+	CHECK(!ok && strstr(err, "s.pov:1:13: error: mesh file '") && strstr(err, "nothere.obj': cannot open it"),
+	      "missing mesh:\n%s", err);
 	free(err);
 	ok = build("sphere { 0, 1 material { diffuse { image \"none.png\" } } }\n", &w, &err);
-	CHECK(!ok && strstr(err, "none.png: error: cannot open") && strstr(err, "s.pov:1:"), "missing image:\n%s", err);
+	CHECK(!ok && strstr(err, "s.pov:1:42: error: image file '") && strstr(err, "none.png': cannot open it"),
+	      "missing image:\n%s", err);
 	free(err);
 	rmdir(dir);
 	return check_done("test_world");

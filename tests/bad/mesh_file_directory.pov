@@ -1,0 +1,2 @@
+// A mesh file that is a folder.
+mesh { file "a_folder" }
