@@ -68,12 +68,12 @@ static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, cons
 	if (sd->level <= 0 && sd->max_edge_px > 0) {
 		const scene_camera *c = &sc->camera;
 		cam_params dc = cam_params_default();
-		vec3 from = sc->has_camera ? d3v(c->location) : dc.location;
-		vec3 to = sc->has_camera ? d3v(c->look_at) : dc.look_at;
+		dvec3 from = sc->has_camera ? c->location : dc.location;
+		dvec3 to = sc->has_camera ? c->look_at : dc.look_at;
 		double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
 		double aspect = (double)opt->width / (double)opt->height;
 		double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
-		*camera = (subd_camera){.position = from, .look = v3_sub(to, from),
+		*camera = (subd_camera){.position = d3v(from), .look = d3v(d3_sub(to, from)),
 					.up = sc->has_camera ? d3v(c->sky) : dc.sky,
 					.fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
 					.image_height = (uint32_t)opt->height};
@@ -842,7 +842,9 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
 			return false;
 	}
-	if (!light_set_finish(&w->lights, fmaxf(w->radius, 1e-3f))) {
+	/* The scene's own radius, however small: a floor in absolute units would weigh infinite and
+	 * parallel lights against the others differently at different scales. */
+	if (!light_set_finish(&w->lights, w->radius)) {
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
@@ -856,8 +858,8 @@ static bool build_camera(world *w, const scene *sc, const world_options *opt, di
 	if (sc->has_camera) {
 		const scene_camera *c = &sc->camera;
 		loc = c->loc;
-		cp.location = d3v(c->location);
-		cp.look_at = d3v(c->look_at);
+		cp.location = c->location;
+		cp.look_at = c->look_at;
 		cp.sky = d3v(c->sky);
 		cp.angle_deg = (float)c->angle_deg;
 		/* POV-Ray's default right <1.33,0,0> is its 4:3 default image; circe fits the image
@@ -866,7 +868,7 @@ static bool build_camera(world *w, const scene *sc, const world_options *opt, di
 		cp.right = default_right ? v3s(0.0f) : d3v(c->right);
 		cp.up = d3v(c->up);
 		cp.aperture = (float)c->aperture;
-		cp.focal_point = c->has_focal_point ? d3v(c->focal_point) : cp.look_at;
+		cp.focal_point = c->has_focal_point ? c->focal_point : cp.look_at;
 	}
 	if (!cam_init(&w->camera, &cp, opt->width, opt->height)) {
 		diag_error(d, loc, "the camera is degenerate (look_at at the location, sky along the view, or angle out of range)");
