@@ -57,6 +57,21 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 	return img;
 }
 
+/* A float (EXR) albedo texture may hold texels outside [0, 1]; the shade hook clamps each
+ * lookup, and this says so once, at the material. */
+static void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
+{
+	size_t n = (size_t)img->width * (size_t)img->height, clamped = 0;
+	for (size_t i = 0; i < n; i++) {
+		vec3 texel = v3(img->rgba[i * 4], img->rgba[i * 4 + 1], img->rgba[i * 4 + 2]);
+		clamped += scene_color_clamp(&texel, SCENE_COLOR_REFLECTANCE);
+	}
+	if (clamped)
+		diag_warning(d, loc, "%zu texels of '%s' are outside [0, 1], the range of a reflectance: clamped, a "
+				     "non-finite one to 0",
+			     clamped, path);
+}
+
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
 /* The subdivision options of a cage: uniform level, or adaptive through the scene's camera (the
@@ -353,6 +368,8 @@ static bool build_material(world *w, size_t k, const scene *sc, const world_opti
 	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
 	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
 		return false;
+	if (albedo)
+		warn_reflectance_image(wm->albedo, sm->loc, albedo, d);
 	if (sss && sm->sss.normal_map) {
 		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
 			return false;
@@ -510,6 +527,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		float c[4];
 		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);
 		params->diffuse = v3(c[0], c[1], c[2]);
+		/* A float (EXR) texture may hold any number: a reflectance is in [0, 1] (check warns). */
+		scene_color_clamp(&params->diffuse, SCENE_COLOR_REFLECTANCE);
 	}
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
@@ -825,9 +844,16 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 			diag_error(d, sky->loc, "out of memory");
 			return false;
 		}
-		for (size_t i = 0; i < n; i++)
-			for (int c = 0; c < 3; c++)
-				w->env_rgb[i * 3 + c] = img->rgba[i * 4 + c];
+		size_t clamped = 0;
+		for (size_t i = 0; i < n; i++) {
+			vec3 texel = v3(img->rgba[i * 4], img->rgba[i * 4 + 1], img->rgba[i * 4 + 2]);
+			clamped += scene_color_clamp(&texel, SCENE_COLOR_RADIANCE); /* EXR: any number */
+			w->env_rgb[i * 3] = texel.x, w->env_rgb[i * 3 + 1] = texel.y, w->env_rgb[i * 3 + 2] = texel.z;
+		}
+		if (clamped)
+			diag_warning(d, sky->loc, "%zu texels of the environment are outside [0, inf), the range of a "
+						  "radiance (negative, NaN or infinite): clamped, a non-finite one to 0",
+				     clamped);
 		xform rot = xform_rotate(sky->rotate_deg);
 		light l;
 		if (!light_envmap_init(&l, w->env_rgb, img->width, img->height, (float)sky->intensity, &rot) ||

@@ -62,7 +62,7 @@ const char *scene_sss_method_name(scene_sss_method m)
 
 static float clamp_channel(float x, scene_color_use use)
 {
-	if (!(x > 0.0f)) /* negative, zero or NaN */
+	if (!(x > 0.0f) || !isfinite(x)) /* negative, zero, NaN, or +inf (no radiance is infinite) */
 		return 0.0f;
 	return use == SCENE_COLOR_REFLECTANCE && x > 1.0f ? 1.0f : x;
 }

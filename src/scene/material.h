@@ -83,8 +83,8 @@ typedef enum scene_color_use {
 	SCENE_COLOR_RADIANCE	 /* emitted light (emission, background): [0, inf) */
 } scene_color_use;
 
-/* Clamps each channel of *c into the range of its use (a NaN becomes 0, +inf stays for radiance
- * only). True when any channel changed. */
+/* Clamps each channel of *c into the range of its use (a NaN or an infinity becomes 0: no value
+ * is known). True when any channel changed. */
 bool scene_color_clamp(vec3 *c, scene_color_use use);
 /* "[0, 1]" or "[0, inf)": the range of a use, for messages. */
 const char *scene_color_range_name(scene_color_use use);

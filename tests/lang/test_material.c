@@ -25,6 +25,8 @@ static void test_color_clamp(void)
 	check_clamp(v3(NAN, 0.2f, 0.3f), SCENE_COLOR_REFLECTANCE, v3(0, 0.2f, 0.3f), true);
 	check_clamp(v3(-2, 5, 0), SCENE_COLOR_RADIANCE, v3(0, 5, 0), true);
 	check_clamp(v3(40, 5, 1e30f), SCENE_COLOR_RADIANCE, v3(40, 5, 1e30f), false);
+	check_clamp(v3(INFINITY, 5, 1), SCENE_COLOR_RADIANCE, v3(0, 5, 1), true);
+	check_clamp(v3(0.5f, INFINITY, 1), SCENE_COLOR_REFLECTANCE, v3(0.5f, 0, 1), true);
 
 	FILE *out = tmpfile();
 	CHECK(out != NULL, "tmpfile");
