@@ -716,7 +716,13 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 	/* Planes reach well past everything else, so their edges stay out of sight: ten times the
 	 * extent of the rest of the scene around it. */
 	vec3 centre = v3_scale(v3_add(lo, hi), 0.5f);
-	float ext = fmaxf(v3_max_comp(v3_sub(hi, lo)), 1e-3f) * 10.0f;
+	/* The extent in the scene's own units, however small (a floor of 1e-3 units made a plane in a
+	 * scene of 1e-6 a thousand times its size, and its hits' rounding with it); a scene that is
+	 * one point (the camera alone) takes the size of its coordinates, or 1 at the origin. */
+	float size = v3_max_comp(v3_sub(hi, lo));
+	if (!(size > 0.0f))
+		size = v3_max_comp(v3_abs(centre)) > 0.0f ? v3_max_comp(v3_abs(centre)) : 1.0f;
+	float ext = size * 10.0f;
 	vec3 plo = v3_sub(centre, v3s(ext)), phi = v3_add(centre, v3s(ext));
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, i);
