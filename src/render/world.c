@@ -744,7 +744,11 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 			xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
 	}
 	w->lo = lo, w->hi = hi;
+	/* The lights' scene radius: a scene that is one point (planes and the camera) takes the
+	 * planes' size, so a parallel light keeps its weight against the others. */
 	w->radius = 0.5f * v3_length(v3_sub(hi, lo));
+	if (!(w->radius > 0.0f))
+		w->radius = 0.5f * size;
 	return true;
 }
 
