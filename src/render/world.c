@@ -57,15 +57,25 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 	return img;
 }
 
-/* A float (EXR) albedo texture may hold texels outside [0, 1]; the shade hook clamps each
- * lookup, and this says so once, at the material. */
-static void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
+/* The number of img's texels outside the range of `use` (a float EXR may hold any number); with
+ * rgb non-NULL, every texel's RGB clamped into it (scene_color_clamp) is written there. */
+static size_t clamp_texels(const image *img, scene_color_use use, float *rgb)
 {
 	size_t n = (size_t)img->width * (size_t)img->height, clamped = 0;
 	for (size_t i = 0; i < n; i++) {
 		vec3 texel = v3(img->rgba[i * 4], img->rgba[i * 4 + 1], img->rgba[i * 4 + 2]);
-		clamped += scene_color_clamp(&texel, SCENE_COLOR_REFLECTANCE);
+		clamped += scene_color_clamp(&texel, use);
+		if (rgb)
+			rgb[i * 3] = texel.x, rgb[i * 3 + 1] = texel.y, rgb[i * 3 + 2] = texel.z;
 	}
+	return clamped;
+}
+
+/* An albedo texture's texels outside [0, 1]: the shade hook clamps each lookup, and this says so
+ * once, at the material. */
+static void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
+{
+	size_t clamped = clamp_texels(img, SCENE_COLOR_REFLECTANCE, NULL);
 	if (clamped)
 		diag_warning(d, loc, "%zu texels of '%s' are outside [0, 1], the range of a reflectance: clamped, a "
 				     "non-finite one to 0",
@@ -854,12 +864,7 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 			diag_error(d, sky->loc, "out of memory");
 			return false;
 		}
-		size_t clamped = 0;
-		for (size_t i = 0; i < n; i++) {
-			vec3 texel = v3(img->rgba[i * 4], img->rgba[i * 4 + 1], img->rgba[i * 4 + 2]);
-			clamped += scene_color_clamp(&texel, SCENE_COLOR_RADIANCE); /* EXR: any number */
-			w->env_rgb[i * 3] = texel.x, w->env_rgb[i * 3 + 1] = texel.y, w->env_rgb[i * 3 + 2] = texel.z;
-		}
+		size_t clamped = clamp_texels(img, SCENE_COLOR_RADIANCE, w->env_rgb);
 		if (clamped)
 			diag_warning(d, sky->loc, "%zu texels of the environment are outside [0, inf), the range of a "
 						  "radiance (negative, NaN or infinite): clamped, a non-finite one to 0",
