@@ -51,6 +51,15 @@ static bool positive(parser *p, diag_loc loc, const char *what, double x)
 	return lang_error(p, loc, "%s must be > 0, found %g", what, x);
 }
 
+/* A colour that becomes a physical quantity (a reflectance, a radiance): POV-Ray takes any
+ * number, so one outside the use's range is clamped with a warning at it (scene_color_finalise),
+ * not refused. `context` is lang_color's ("as the diffuse colour"), `what` the warning's. */
+static bool physical_color(parser *p, const char *context, const char *what, scene_color_use use, vec3 *out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	return lang_color(p, context, out) && scene_color_finalise(p->sc, p->d, loc, what, use, out);
+}
+
 static bool in_range(parser *p, diag_loc loc, const char *what, double x, double lo, double hi)
 {
 	if (x >= lo && x <= hi)
@@ -127,7 +136,7 @@ static bool pigment(parser *p, scene_material *m)
 		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
 		TRY(lang_expect_close(p, io, "image_map"));
 	} else {
-		TRY(lang_color(p, "as the pigment colour", &m->color));
+		TRY(physical_color(p, "as the pigment colour", "pigment colour", SCENE_COLOR_REFLECTANCE, &m->color));
 	}
 	return lang_expect_close(p, open, "pigment");
 }
@@ -425,7 +434,8 @@ static bool material(parser *p, const scene_material **out)
 			if (lang_accept(p, LTK_KW_IMAGE))
 				TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &m->image));
 			else
-				TRY(lang_color(p, "as the diffuse colour", &m->color));
+				TRY(physical_color(p, "as the diffuse colour", "diffuse colour", SCENE_COLOR_REFLECTANCE,
+						    &m->color));
 			TRY(lang_expect_close(p, dopen, "diffuse"));
 			break;
 		}
@@ -450,7 +460,7 @@ static bool material(parser *p, const scene_material **out)
 			break;
 		case LTK_KW_EMISSION:
 			lang_advance(p);
-			TRY(lang_color(p, "after 'emission'", &m->emission));
+			TRY(physical_color(p, "after 'emission'", "emission", SCENE_COLOR_RADIANCE, &m->emission));
 			has_emission = true;
 			break;
 		default:
@@ -1505,7 +1515,8 @@ static bool background(parser *p)
 	lang_token kw = *lang_advance(p);
 	diag_loc open;
 	TRY(open_block(p, "background", &open));
-	TRY(lang_color(p, "as the background colour", &p->sc->background));
+	TRY(physical_color(p, "as the background colour", "background colour", SCENE_COLOR_RADIANCE,
+			    &p->sc->background));
 	p->sc->has_background = true;
 	p->sc->background_loc = kw.loc;
 	return lang_expect_close(p, open, "background");

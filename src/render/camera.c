@@ -5,20 +5,21 @@
 
 #include "render/sampling.h"
 
-/* Below this the view and sky are treated as parallel: the frame would be meaningless. */
-#define CAM_DEGENERATE 1e-6f
+/* Below this sine of the angle between the view and the sky they are treated as parallel: the
+ * frame would be meaningless. Dimensionless (both are unit vectors), so it holds at any scale. */
+#define CAM_PARALLEL_SIN 1e-6
 
 cam_params cam_params_default(void)
 {
 	return (cam_params){
-	    .location = v3(0, 0, 0),
-	    .look_at = v3(0, 0, 1),
+	    .location = d3(0, 0, 0),
+	    .look_at = d3(0, 0, 1),
 	    .sky = v3(0, 1, 0),
 	    .angle_deg = 67.380135f, /* POV-Ray's, as src/lang gives a camera block: 2 atan(1.33 / 2) */
 	    .right = v3(0, 0, 0),
 	    .up = v3(0, 0, 0),
 	    .aperture = 0.0f,
-	    .focal_point = v3(0, 0, 1),
+	    .focal_point = d3(0, 0, 1),
 	};
 }
 
@@ -26,16 +27,23 @@ bool cam_init(cam *c, const cam_params *p, int width, int height)
 {
 	if (width <= 0 || height <= 0 || !(p->angle_deg > 0.0f && p->angle_deg < 180.0f))
 		return false;
-	vec3 view = v3_sub(p->look_at, p->location);
-	if (v3_length(view) < CAM_DEGENERATE)
+	/* The frame in double, from the positions in double: only a view of length exactly 0 (or
+	 * one that overflows) has no direction, whatever the scene's scale. */
+	double view_len = d3_length(d3_sub(p->look_at, p->location));
+	dvec3 sky = v3_to_d3(p->sky);
+	double sky_len = d3_length(sky);
+	if (!(view_len > 0.0) || !isfinite(view_len) || !(sky_len > 0.0) || !isfinite(sky_len))
 		return false;
-	c->forward = v3_normalize(view);
-	vec3 r = v3_cross(v3_normalize(p->sky), c->forward);
-	if (v3_length(r) < CAM_DEGENERATE)
+	dvec3 forward = d3_scale(d3_sub(p->look_at, p->location), 1.0 / view_len);
+	dvec3 r = d3_cross(d3_scale(sky, 1.0 / sky_len), forward);
+	double r_len = d3_length(r);
+	if (!(r_len >= CAM_PARALLEL_SIN))
 		return false;
-	c->right = v3_normalize(r);
-	c->up = v3_cross(c->forward, c->right);
-	c->origin = p->location;
+	dvec3 right = d3_scale(r, 1.0 / r_len);
+	c->forward = d3_to_v3(forward);
+	c->right = d3_to_v3(right);
+	c->up = d3_to_v3(d3_cross(forward, right));
+	c->origin = d3_to_v3(p->location);
 	float right_len = v3_length(p->right) > 0.0f ? v3_length(p->right) : (float)width / (float)height;
 	float up_len = v3_length(p->up) > 0.0f ? v3_length(p->up) : 1.0f;
 	/* POV-Ray's handedness test on the vectors as given, before look_at: with the default
@@ -46,7 +54,7 @@ bool cam_init(cam *c, const cam_params *p, int width, int height)
 	c->half_w = tanf(0.5f * p->angle_deg * RENDER_PI / 180.0f);
 	c->half_h = c->half_w * up_len / right_len;
 	c->lens_radius = 0.5f * fmaxf(p->aperture, 0.0f);
-	c->focal_distance = v3_dot(v3_sub(p->focal_point, p->location), c->forward);
+	c->focal_distance = (float)d3_dot(d3_sub(p->focal_point, p->location), forward);
 	if (c->lens_radius > 0.0f && !(c->focal_distance > 0.0f))
 		return false;
 	c->width = width;

@@ -13,18 +13,20 @@ typedef struct render_ray {
 	vec3 o, d;
 } render_ray;
 
-/* What the scene says; the defaults of cam_params_default() are POV-Ray's. */
+/* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are
+ * doubles, as the scene gives them: the view look_at - location and the focal distance are
+ * differences of positions, which in float would cancel when both lie far from the origin. */
 typedef struct cam_params {
-	vec3 location;	  /* default <0,0,0> */
-	vec3 look_at;	  /* default <0,0,1> */
+	dvec3 location;	  /* default <0,0,0> */
+	dvec3 look_at;	  /* default <0,0,1> */
 	vec3 sky;	  /* default <0,1,0>: the up direction look_at keeps */
 	float angle_deg;  /* horizontal field of view in degrees, default 90 */
 	vec3 right;	  /* POV-Ray's right: its length sets the aspect (the zero vector: image
 			     width / height); its sense sets handedness (right = -x mirrors the
 			     image, POV-Ray's right-handed trick); look_at re-aims it */
 	vec3 up;	  /* POV-Ray's up: only its length counts (the zero vector: 1) */
-	float aperture;	  /* lens diameter in scene units; 0 is a pinhole */
-	vec3 focal_point; /* the plane through it, facing the camera, is in focus */
+	float aperture;	   /* lens diameter in scene units; 0 is a pinhole */
+	dvec3 focal_point; /* the plane through it, facing the camera, is in focus */
 } cam_params;
 
 /* The ready camera: an orthonormal frame and the screen vectors at unit forward distance. */
@@ -38,7 +40,9 @@ typedef struct cam {
 
 cam_params cam_params_default(void);
 /* Builds the camera for an image of width x height pixels. False when the parameters are
- * degenerate (look_at == location, sky parallel to the view, angle outside (0, 180)). */
+ * degenerate (look_at == location, sky zero or parallel to the view, angle outside (0, 180)).
+ * Nothing depends on the scene's scale: a camera 1e-9 from its look_at is as good as one 1e9
+ * away, and so is one at 1e8 looking at a point 1 away. */
 bool cam_init(cam *c, const cam_params *p, int width, int height);
 /* The primary ray through image point (px + pixel_u.x, py + pixel_u.y), pixel_u in [0,1)^2, with
  * lens_u in [0,1)^2 choosing the point on the lens (ignored for a pinhole). */

@@ -115,7 +115,9 @@ float light_pdf(const light *l, vec3 p, vec3 n_p, vec3 wi, float dist, vec3 n);
 vec3 light_radiance_dir(const light *l, vec3 d);
 /* Ray-sphere test for a sphere light: the nearest t in (tmin, tmax), or false. */
 bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float tmax, float *t);
-/* Luminance of the light's flux (the selection weight); scene_radius bounds the scene. */
+/* Luminance of the light's flux (the selection weight); scene_radius bounds the scene, in its own
+ * units with no floor: every weight then scales alike (as s^2 when the scene and its lights are
+ * scaled by s), so the choice among lights does not depend on the scene's scale. */
 float light_power(const light *l, float scene_radius);
 /* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
 vec2 light_env_uv(vec3 local_dir);

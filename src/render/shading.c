@@ -1,11 +1,17 @@
 /* shading.c - tangent-space normal mapping (shading.h). */
 #include "render/shading.h"
 
-/* Below this a tangent (after removing its normal component) or a result has no direction. */
+/* Below this a tangent (after removing its normal component), relative to its length, or a result
+ * has no direction. Relative: the tangent arrives in world units (a mesh's unit tangent through
+ * the instance's transform), so an absolute bound dropped every normal map below scale 1e-6. */
 #define SHADING_DEGENERATE 1e-6f
 
 vec3 render_normal_map(vec3 n, vec3 tangent, float bitangent_sign, vec3 rgb, float strength)
 {
+	float size = v3_max_comp(v3_abs(tangent));
+	if (!(size > 0.0f) || !isfinite(size))
+		return n;
+	tangent = v3_scale(tangent, 1.0f / size); /* its largest component 1: no underflow below */
 	vec3 t = v3_sub(tangent, v3_scale(n, v3_dot(tangent, n))); /* Gram-Schmidt */
 	if (v3_length(t) < SHADING_DEGENERATE)
 		return n;

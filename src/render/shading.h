@@ -9,7 +9,7 @@
  * convention of glTF and most tools: rgb * 2 - 1 gives (x, y, z) along the tangent, the bitangent
  * bitangent_sign * (n x tangent), and n). strength scales the x and y deviations (1: as
  * painted, 0: the map has no effect). n must be unit; the tangent need not be orthogonal to n (it
- * is orthogonalised). Returns a unit vector in n's hemisphere; n itself when the input is
+ * is orthogonalised) nor unit: only its direction counts, whatever its length (1e-30 or 1e30). Returns a unit vector in n's hemisphere; n itself when the input is
  * degenerate (zero tangent, texel pointing below the surface). */
 vec3 render_normal_map(vec3 n, vec3 tangent, float bitangent_sign, vec3 rgb, float strength);
 

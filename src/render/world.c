@@ -58,6 +58,31 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 	return img;
 }
 
+/* The number of img's texels outside the range of `use` (a float EXR may hold any number); with
+ * rgb non-NULL, every texel's RGB clamped into it (scene_color_clamp) is written there. */
+static size_t clamp_texels(const image *img, scene_color_use use, float *rgb)
+{
+	size_t n = (size_t)img->width * (size_t)img->height, clamped = 0;
+	for (size_t i = 0; i < n; i++) {
+		vec3 texel = v3(img->rgba[i * 4], img->rgba[i * 4 + 1], img->rgba[i * 4 + 2]);
+		clamped += scene_color_clamp(&texel, use);
+		if (rgb)
+			rgb[i * 3] = texel.x, rgb[i * 3 + 1] = texel.y, rgb[i * 3 + 2] = texel.z;
+	}
+	return clamped;
+}
+
+/* An albedo texture's texels outside [0, 1]: the shade hook clamps each lookup, and this says so
+ * once, at the material. */
+static void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
+{
+	size_t clamped = clamp_texels(img, SCENE_COLOR_REFLECTANCE, NULL);
+	if (clamped)
+		diag_warning(d, loc, "%zu texels of '%s' are outside [0, 1], the range of a reflectance: clamped, a "
+				     "non-finite one to 0",
+			     clamped, path);
+}
+
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
 /* The subdivision options of a cage: uniform level, or adaptive through the scene's camera (the
@@ -69,12 +94,12 @@ static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, cons
 	if (sd->level <= 0 && sd->max_edge_px > 0) {
 		const scene_camera *c = &sc->camera;
 		cam_params dc = cam_params_default();
-		vec3 from = sc->has_camera ? d3v(c->location) : dc.location;
-		vec3 to = sc->has_camera ? d3v(c->look_at) : dc.look_at;
+		dvec3 from = sc->has_camera ? c->location : dc.location;
+		dvec3 to = sc->has_camera ? c->look_at : dc.look_at;
 		double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
 		double aspect = (double)opt->width / (double)opt->height;
 		double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
-		*camera = (subd_camera){.position = from, .look = v3_sub(to, from),
+		*camera = (subd_camera){.position = d3v(from), .look = d3v(d3_sub(to, from)),
 					.up = sc->has_camera ? d3v(c->sky) : dc.sky,
 					.fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
 					.image_height = (uint32_t)opt->height};
@@ -354,6 +379,8 @@ static bool build_material(world *w, size_t k, const scene *sc, const world_opti
 	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
 	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
 		return false;
+	if (albedo)
+		warn_reflectance_image(wm->albedo, sm->loc, albedo, d);
 	if (sss && sm->sss.normal_map) {
 		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
 			return false;
@@ -511,6 +538,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		float c[4];
 		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);
 		params->diffuse = v3(c[0], c[1], c[2]);
+		/* A float (EXR) texture may hold any number: a reflectance is in [0, 1] (check warns). */
+		scene_color_clamp(&params->diffuse, SCENE_COLOR_REFLECTANCE);
 	}
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
@@ -698,7 +727,13 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 	/* Planes reach well past everything else, so their edges stay out of sight: ten times the
 	 * extent of the rest of the scene around it. */
 	vec3 centre = v3_scale(v3_add(lo, hi), 0.5f);
-	float ext = fmaxf(v3_max_comp(v3_sub(hi, lo)), 1e-3f) * 10.0f;
+	/* The extent in the scene's own units, however small (a floor of 1e-3 units made a plane in a
+	 * scene of 1e-6 a thousand times its size, and its hits' rounding with it); a scene that is
+	 * one point (the camera alone) takes the size of its coordinates, or 1 at the origin. */
+	float size = v3_max_comp(v3_sub(hi, lo));
+	if (!(size > 0.0f))
+		size = v3_max_comp(v3_abs(centre)) > 0.0f ? v3_max_comp(v3_abs(centre)) : 1.0f;
+	float ext = size * 10.0f;
 	vec3 plo = v3_sub(centre, v3s(ext)), phi = v3_add(centre, v3s(ext));
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, i);
@@ -720,7 +755,11 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 			xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
 	}
 	w->lo = lo, w->hi = hi;
+	/* The lights' scene radius: a scene that is one point (planes and the camera) takes the
+	 * planes' size, so a parallel light keeps its weight against the others. */
 	w->radius = 0.5f * v3_length(v3_sub(hi, lo));
+	if (!(w->radius > 0.0f))
+		w->radius = 0.5f * size;
 	return true;
 }
 
@@ -826,9 +865,11 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 			diag_error(d, sky->loc, "out of memory");
 			return false;
 		}
-		for (size_t i = 0; i < n; i++)
-			for (int c = 0; c < 3; c++)
-				w->env_rgb[i * 3 + c] = img->rgba[i * 4 + c];
+		size_t clamped = clamp_texels(img, SCENE_COLOR_RADIANCE, w->env_rgb);
+		if (clamped)
+			diag_warning(d, sky->loc, "%zu texels of the environment are outside [0, inf), the range of a "
+						  "radiance (negative, NaN or infinite): clamped, a non-finite one to 0",
+				     clamped);
 		xform rot = xform_rotate(sky->rotate_deg);
 		light l;
 		if (!light_envmap_init(&l, w->env_rgb, img->width, img->height, (float)sky->intensity, &rot) ||
@@ -843,7 +884,9 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
 			return false;
 	}
-	if (!light_set_finish(&w->lights, fmaxf(w->radius, 1e-3f))) {
+	/* The scene's own radius, however small: a floor in absolute units would weigh infinite and
+	 * parallel lights against the others differently at different scales. */
+	if (!light_set_finish(&w->lights, w->radius)) {
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
@@ -857,8 +900,8 @@ static bool build_camera(world *w, const scene *sc, const world_options *opt, di
 	if (sc->has_camera) {
 		const scene_camera *c = &sc->camera;
 		loc = c->loc;
-		cp.location = d3v(c->location);
-		cp.look_at = d3v(c->look_at);
+		cp.location = c->location;
+		cp.look_at = c->look_at;
 		cp.sky = d3v(c->sky);
 		cp.angle_deg = (float)c->angle_deg;
 		/* POV-Ray's default right <1.33,0,0> is its 4:3 default image; circe fits the image
@@ -867,7 +910,7 @@ static bool build_camera(world *w, const scene *sc, const world_options *opt, di
 		cp.right = default_right ? v3s(0.0f) : d3v(c->right);
 		cp.up = d3v(c->up);
 		cp.aperture = (float)c->aperture;
-		cp.focal_point = c->has_focal_point ? d3v(c->focal_point) : cp.look_at;
+		cp.focal_point = c->has_focal_point ? c->focal_point : cp.look_at;
 	}
 	if (!cam_init(&w->camera, &cp, opt->width, opt->height)) {
 		diag_error(d, loc, "the camera is degenerate (look_at at the location, sky along the view, or angle out of range)");

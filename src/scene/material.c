@@ -60,6 +60,26 @@ const char *scene_sss_method_name(scene_sss_method m)
 	return (unsigned)m < 5 ? names[m] : "?";
 }
 
+static float clamp_channel(float x, scene_color_use use)
+{
+	if (!(x > 0.0f) || !isfinite(x)) /* negative, zero, NaN, or +inf (no radiance is infinite) */
+		return 0.0f;
+	return use == SCENE_COLOR_REFLECTANCE && x > 1.0f ? 1.0f : x;
+}
+
+bool scene_color_clamp(vec3 *c, scene_color_use use)
+{
+	vec3 k = v3(clamp_channel(c->x, use), clamp_channel(c->y, use), clamp_channel(c->z, use));
+	bool changed = k.x != c->x || k.y != c->y || k.z != c->z; /* a NaN differs; -0 is 0 */
+	*c = k;
+	return changed;
+}
+
+const char *scene_color_range_name(scene_color_use use)
+{
+	return use == SCENE_COLOR_REFLECTANCE ? "[0, 1]" : "[0, inf)";
+}
+
 static void set_preset(scene_sss *s, const scene_sss_preset *p)
 {
 	s->sigma_s_per_mm = v3(p->sigma_s_per_mm[0], p->sigma_s_per_mm[1], p->sigma_s_per_mm[2]);

@@ -73,6 +73,22 @@ const char *scene_material_kind_name(scene_material_kind k);
 const char *scene_sss_profile_name(scene_sss_profile p);
 const char *scene_sss_method_name(scene_sss_method m);
 
+/* What a colour of the scene becomes, and so the range physics allows it. POV-Ray accepts any
+ * number in a colour (its sombrero sample paints with rgb <-0.5, ...>: "negative light"); a
+ * physically based renderer cannot honour a reflectance outside [0, 1] (below 0 it subtracts
+ * light, above 1 it creates it: either turns a path's weights and the lobe probabilities
+ * meaningless, and its samples NaN) nor a negative radiance. */
+typedef enum scene_color_use {
+	SCENE_COLOR_REFLECTANCE, /* an albedo (diffuse, pigment): [0, 1] */
+	SCENE_COLOR_RADIANCE	 /* emitted light (emission, background): [0, inf) */
+} scene_color_use;
+
+/* Clamps each channel of *c into the range of its use (a NaN or an infinity becomes 0: no value
+ * is known). True when any channel changed. */
+bool scene_color_clamp(vec3 *c, scene_color_use use);
+/* "[0, 1]" or "[0, inf)": the range of a use, for messages. */
+const char *scene_color_range_name(scene_color_use use);
+
 /* Jensen et al. 2001 measured coefficients; false when the name is not a preset. */
 typedef struct scene_sss_preset {
 	const char *name;

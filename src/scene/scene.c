@@ -13,6 +13,7 @@ scene *scene_new(void)
 	vecbuf_init(&s->lights, sizeof(scene_light));
 	vecbuf_init(&s->objects, sizeof(scene_object));
 	vecbuf_init(&s->assets, sizeof(scene_asset));
+	vecbuf_init(&s->clamped_colors, sizeof(diag_loc));
 	s->global.mm_per_unit = 10.0;
 	s->global.max_trace_level = 5;
 	s->global.assumed_gamma = 1.0;
@@ -42,8 +43,30 @@ void scene_free(scene *s)
 	vecbuf_free(&s->lights);
 	vecbuf_free(&s->objects);
 	vecbuf_free(&s->assets);
+	vecbuf_free(&s->clamped_colors);
 	arena_release(&s->arena);
 	mem_free(s);
+}
+
+static bool same_loc(diag_loc a, diag_loc b) { return a.src == b.src && a.line == b.line && a.col == b.col; }
+
+bool scene_color_finalise(scene *s, diag *d, diag_loc loc, const char *what, scene_color_use use, vec3 *c)
+{
+	vec3 given = *c;
+	if (!scene_color_clamp(c, use))
+		return true;
+	for (size_t i = 0; i < s->clamped_colors.len; i++)
+		if (same_loc(VECBUF_AT(&s->clamped_colors, diag_loc, i), loc))
+			return true;
+	if (!vecbuf_push(&s->clamped_colors, &loc)) {
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	diag_warning(d, loc, "%s <%g, %g, %g> is outside %s, the range of a %s: clamped to <%g, %g, %g>", what,
+		     (double)given.x, (double)given.y, (double)given.z, scene_color_range_name(use),
+		     use == SCENE_COLOR_REFLECTANCE ? "reflectance" : "radiance", (double)c->x, (double)c->y,
+		     (double)c->z);
+	return true;
 }
 
 scene_geom *scene_new_geom(scene *s, scene_shape_kind kind, diag_loc loc)

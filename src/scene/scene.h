@@ -176,6 +176,7 @@ typedef struct scene {
 	scene_material *materials; /* every material record, newest first */
 	uint32_t n_materials;
 	vecbuf assets; /* scene_asset, in the order the text names them */
+	vecbuf clamped_colors; /* diag_loc of each colour clamped so far (scene_color_finalise) */
 } scene;
 
 scene *scene_new(void);
@@ -197,6 +198,12 @@ static inline const scene_light *scene_light_at(const scene *s, size_t i)
 {
 	return &VECBUF_AT(&s->lights, scene_light, i);
 }
+
+/* A colour written at loc becomes a physical quantity of the given use: clamps it into its range
+ * (scene_color_clamp) and, when that changed it, warns at loc naming `what` ("diffuse colour"),
+ * the value written and the value kept — once per place in the text, however often the parser
+ * passes it (a loop, a macro). False only when memory runs out (reported to d). */
+bool scene_color_finalise(scene *s, diag *d, diag_loc loc, const char *what, scene_color_use use, vec3 *c);
 
 /* Checks what the parser cannot check alone (index ranges, creases, camera, materials) and
  * reports every problem through d. Returns the number of errors found. */

@@ -14,12 +14,12 @@ int main(void)
 {
 	cam c;
 	cam_params p = cam_params_default();
-	p.location = v3(1, 2, -5);
-	p.look_at = v3(0.5f, 1, 3);
+	p.location = d3(1, 2, -5);
+	p.look_at = d3(0.5, 1, 3);
 	p.angle_deg = 60;
 	CHECK(cam_init(&c, &p, 641, 481), "cam_init");
 	render_ray r = cam_ray(&c, 320, 240, v2(0.5f, 0.5f), v2(0, 0));
-	vec3 want = v3_normalize(v3_sub(p.look_at, p.location));
+	vec3 want = v3_normalize(d3_to_v3(d3_sub(p.look_at, p.location)));
 	CHECK(angle_deg(r.d, want) < 1e-3, "centre ray (%g %g %g) vs look_at direction (%g %g %g)", r.d.x,
 	      r.d.y, r.d.z, want.x, want.y, want.z);
 
@@ -61,14 +61,45 @@ int main(void)
 	p.look_at = p.location;
 	CHECK(!cam_init(&c, &p, 10, 10), "look_at == location accepted");
 	p = cam_params_default();
-	p.look_at = v3(0, 5, 0);
+	p.look_at = d3(0, 5, 0);
 	CHECK(!cam_init(&c, &p, 10, 10), "view parallel to sky accepted");
+	p = cam_params_default();
+	p.sky = v3(0, 0, 0);
+	CHECK(!cam_init(&c, &p, 10, 10), "zero sky accepted");
+
+	/* Scale: the same view at 1e-9 and at 1e9 of the first camera's size gives the same rays (a
+	 * fixed length below which a view was "degenerate" refused every camera under 1e-6). */
+	for (double s = 1e-9; s <= 1e9; s *= 1e3) {
+		p = cam_params_default();
+		p.location = d3(1 * s, 2 * s, -5 * s);
+		p.look_at = d3(0.5 * s, 1 * s, 3 * s);
+		p.angle_deg = 60;
+		CHECK(cam_init(&c, &p, 64, 48), "camera at scale %g refused", s);
+		render_ray sr = cam_ray(&c, 5, 40, v2(0.25f, 0.75f), v2(0, 0));
+		cam_params q = p;
+		q.location = d3(1, 2, -5), q.look_at = d3(0.5, 1, 3);
+		cam c1;
+		CHECK(cam_init(&c1, &q, 64, 48), "camera at scale 1");
+		render_ray r1 = cam_ray(&c1, 5, 40, v2(0.25f, 0.75f), v2(0, 0));
+		CHECK(angle_deg(sr.d, r1.d) < 1e-4, "scale %g: ray (%g %g %g) vs (%g %g %g) at scale 1", s, sr.d.x,
+		      sr.d.y, sr.d.z, r1.d.x, r1.d.y, r1.d.z);
+	}
+	/* Far from the origin: a camera at x = 1e8 looking at a point 1 further along x. In float the
+	 * two positions are the same number (its ulp there is 8): the view must come from the doubles. */
+	p = cam_params_default();
+	p.location = d3(1e8, 0, 0);
+	p.look_at = d3(1e8 + 1, 0.5, 0);
+	CHECK(cam_init(&c, &p, 32, 32), "camera at 1e8 looking 1 away refused");
+	r = cam_ray(&c, 16, 16, v2(0, 0), v2(0, 0));
+	want = v3_normalize(v3(1, 0.5f, 0));
+	CHECK(angle_deg(r.d, want) < 1e-3, "camera at 1e8: centre ray (%g %g %g), want (%g %g %g)", r.d.x, r.d.y,
+	      r.d.z, want.x, want.y, want.z);
 
 	/* Thin lens: rays from anywhere on the lens through one pixel meet on the focal plane, and
 	 * their origins lie within aperture / 2 of the location. */
 	p = cam_params_default();
 	p.aperture = 0.5f;
-	p.focal_point = v3(0, 0, 4);
+	p.focal_point = d3(0, 0, 4);
 	CHECK(cam_init(&c, &p, 64, 64), "thin lens");
 	rng g;
 	rng_seed(&g, 3, 4);

@@ -35,8 +35,8 @@ static void build_scene(void)
 	light_set_add(&scene.lights, &bg);
 	light_set_finish(&scene.lights, 5.0f);
 	cam_params cp = cam_params_default();
-	cp.location = v3(0, 1, -2.5f);
-	cp.look_at = v3(0, 0.4f, 0.8f);
+	cp.location = d3(0, 1, -2.5);
+	cp.look_at = d3(0, 0.4, 0.8);
 	cam_init(&camera, &cp, W, H);
 }
 

@@ -24,6 +24,12 @@ int main(void)
 	vec3 half = render_normal_map(n, t, 1, v3(1, 0.5f, 1), 0.5f);
 	check_vec("strength 0.5", half, v3_normalize(v3(0.5f, 1, 0)));
 	check_vec("tangent along n", render_normal_map(n, v3(0, 2, 0), 1, v3(1, 0.5f, 1), 1), n);
+	/* Only the tangent's direction counts: a scene scaled by 1e-7 hands over a tangent of that
+	 * length (an absolute bound of 1e-6 turned every normal map off there). */
+	for (float k = 1e-30f; k < 1e31f; k *= 1e5f)
+		check_vec("a tangent of any length", render_normal_map(n, v3_scale(t, k), 1, v3(1, 0.5f, 1), 1),
+			  v3(s, s, 0));
+	check_vec("zero tangent", render_normal_map(n, v3(0, 0, 0), 1, v3(1, 0.5f, 1), 1), n);
 	check_vec("texel below the surface", render_normal_map(n, t, 1, v3(0.5f, 0.5f, 0.2f), 1), n);
 	return check_done("test_shading");
 }
