@@ -35,18 +35,20 @@ bool mem_mul_ok(size_t a, size_t b, size_t *out)
 #define MEM_HEADER ((size_t)alignof(max_align_t))
 
 static size_t limit_bytes; /* 0: none */
-static atomic_size_t live_bytes, peak_bytes, refused_bytes;
+static atomic_size_t live_bytes, peak_bytes, refused_bytes, refused_live;
 
 void mem_set_limit(size_t bytes) { limit_bytes = bytes; }
 size_t mem_limit(void) { return limit_bytes; }
 size_t mem_live_bytes(void) { return atomic_load(&live_bytes); }
 size_t mem_peak_bytes(void) { return atomic_load(&peak_bytes); }
 
-bool mem_limit_hit(size_t *asked)
+bool mem_limit_hit(size_t *asked, size_t *live)
 {
 	size_t n = atomic_load(&refused_bytes);
 	if (asked)
 		*asked = n;
+	if (live)
+		*live = atomic_load(&refused_live);
 	return n > 0;
 }
 
@@ -55,7 +57,7 @@ static bool take(size_t n)
 {
 	size_t now = atomic_fetch_add(&live_bytes, n) + n;
 	if (limit_bytes && (now > limit_bytes || now < n)) {
-		atomic_fetch_sub(&live_bytes, n);
+		atomic_store(&refused_live, atomic_fetch_sub(&live_bytes, n) - n);
 		atomic_store(&refused_bytes, n ? n : 1);
 		return false;
 	}

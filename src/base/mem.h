@@ -30,8 +30,9 @@ size_t mem_limit(void);
 /* The bytes live now, and the most live at once so far. */
 size_t mem_live_bytes(void);
 size_t mem_peak_bytes(void);
-/* True once an allocation was refused for the limit; *asked (when not NULL) gets its size. */
-bool mem_limit_hit(size_t *asked);
+/* True once an allocation was refused for the limit; *asked and *live (when not NULL) get the
+ * last refused one's size and the bytes live then. */
+bool mem_limit_hit(size_t *asked, size_t *live);
 
 /* Lets the next n allocations succeed and fails every one after them
  * (negative n: never). For tests of the error paths; not thread-safe, set before threads start. */

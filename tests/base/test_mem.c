@@ -23,12 +23,12 @@ int main(void)
 	/* The limit: what would pass it is refused before allocating, and says so; a failed realloc
 	 * keeps the block; frees give the bytes back. */
 	size_t base = mem_live_bytes();
-	CHECK(!mem_limit_hit(NULL), "no refusal yet");
+	CHECK(!mem_limit_hit(NULL, NULL), "no refusal yet");
 	mem_set_limit(base + 1000);
 	void *big = mem_alloc(2000, 1);
-	size_t asked = 0;
-	CHECK(!big && mem_limit_hit(&asked) && asked == 2000, "2000 bytes over a limit of 1000 more: %p, asked %zu",
-	      big, asked);
+	size_t asked = 0, live = 1;
+	CHECK(!big && mem_limit_hit(&asked, &live) && asked == 2000 && live == base,
+	      "2000 bytes over a limit of 1000 more: %p, asked %zu with %zu live", big, asked, live - base);
 	unsigned char *m = mem_calloc(600, 1);
 	CHECK(m && m[599] == 0 && mem_live_bytes() == base + 600, "600 bytes fit: live %zu", mem_live_bytes() - base);
 	CHECK(!mem_alloc(500, 1), "600 + 500 pass the limit");
