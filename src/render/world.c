@@ -653,15 +653,18 @@ static double axis_scale(const xform *t)
 	return s;
 }
 
-/* The tessellation level of a sphere: the coarsest whose silhouette, radius_px on screen, stays
- * within WORLD_SPHERE_MAX_ERROR_PX; the finest when the camera is at or inside the sphere. The
+/* The tessellation level of a sphere (world.h): the coarsest whose silhouette, radius_px on screen,
+ * stays within WORLD_SPHERE_MAX_ERROR_PX and whose edges, 2 pi radius_px / segments, within
+ * WORLD_SPHERE_MAX_EDGE_PX; the finest when none is, or the camera is at or inside the sphere. The
  * silhouette of a sphere of radius r seen from distance dist has angular radius asin(r / dist),
  * so radius_px = focal_px r / sqrt(dist^2 - r^2); a surface error e r moves it by e radius_px. */
 static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r)
 {
 	double radius_px = dist > r ? focal_px * r / sqrt((dist - r) * (dist + r)) : INFINITY;
 	uint32_t k = 0;
-	while (k + 1 < PRIM_SPHERE_LEVELS && !(rel_err[k] * radius_px <= WORLD_SPHERE_MAX_ERROR_PX))
+	while (k + 1 < PRIM_SPHERE_LEVELS &&
+	       !(rel_err[k] * radius_px <= WORLD_SPHERE_MAX_ERROR_PX &&
+		 2.0 * M_PI * radius_px <= WORLD_SPHERE_MAX_EDGE_PX * prim_sphere_level_segments(k)))
 		k++;
 	return k;
 }

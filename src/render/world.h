@@ -22,9 +22,14 @@
 #include <stdint.h>
 
 /* Spheres are instances of one unit sphere per tessellation level (prim.h), the level the coarsest
- * whose silhouette stays within this many pixels of the true one, from the sphere's size and
- * distance to the camera (shading normals are the sphere's own, so only the outline can show). */
+ * whose silhouette stays within WORLD_SPHERE_MAX_ERROR_PX of the true one and whose edges (along
+ * the equator) are at most WORLD_SPHERE_MAX_EDGE_PX long on screen, from the sphere's size and
+ * distance to the camera. Shading normals are the sphere's own, so the outline shows the facets
+ * first; but facets wider than a pixel also show in the shading, where the interpolated normals
+ * depart from them (tests/render/furnace.sh sees it), hence the edge bound, as subdivision's
+ * max_edge. */
 #define WORLD_SPHERE_MAX_ERROR_PX 0.1
+#define WORLD_SPHERE_MAX_EDGE_PX 1.0
 /* A plane reaches out from the camera until it is seen within this angle of its horizon (a
  * pixel of a 4K image 60 degrees wide is 2.7e-4 rad), whatever else the scene holds. */
 #define WORLD_PLANE_HORIZON_RAD 1e-4f

@@ -14,7 +14,6 @@ light_source { <10, 20, -30> color rgb 1500 }
   sphere { <mod(I, 100) * 0.2 - 10, floor(I / 100) * 0.2 - 10, 0>, 0.08 }
   #declare I = I + 1;
 #end
-sphere { <0, 0, -25>, 1 }
 EOS
 expect_status 0 "$CIRCE" check many.pov --max-memory 200M
 tri=$(sed -n 's/.*triangles after tessellation: \([0-9]*\) unique.*/\1/p' out)

@@ -47,8 +47,16 @@ static bool trace(const world *w, vec3 o, vec3 dir_, render_hit *h)
  * image of build() under POV-Ray's default angle (2 atan(1.33 / 2); vertical half-angle 0.5). */
 static double radius_px(double r, double dist) { return 240.0 / 0.5 * r / sqrt(dist * dist - r * r); }
 
+/* Level k on a sphere of radius px on screen: silhouette and edges within world.h's bounds. */
+static bool level_fits(uint32_t k, double px)
+{
+	uint32_t seg = prim_sphere_level_segments(k);
+	return prim_sphere_rel_error(seg) * px <= WORLD_SPHERE_MAX_ERROR_PX && 2 * M_PI * px / seg <= WORLD_SPHERE_MAX_EDGE_PX;
+}
+
 /* Spheres are instances of shared unit spheres, each at the coarsest level whose silhouette is
- * within WORLD_SPHERE_MAX_ERROR_PX of the round one: a small far sphere and a large near one get
+ * within WORLD_SPHERE_MAX_ERROR_PX of the round one and whose edges are short enough on screen
+ * (WORLD_SPHERE_MAX_EDGE_PX), else the finest: a small far sphere and a large near one get
  * different levels, and the rays still meet them where the analytic sphere is, within that error. */
 static void check_sphere_levels(void)
 {
@@ -70,10 +78,11 @@ static void check_sphere_levels(void)
 		CHECK(k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS, "sphere %d is an instance of a unit sphere (%td)", i, k);
 		level[i] = k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS ? (uint32_t)k : 0;
 		double px = radius_px(r[i], dist[i]);
-		double e = prim_sphere_rel_error(prim_sphere_level_segments(level[i])) * px;
-		double coarser = level[i] ? prim_sphere_rel_error(prim_sphere_level_segments(level[i] - 1)) * px : INFINITY;
-		CHECK(e <= WORLD_SPHERE_MAX_ERROR_PX && coarser > WORLD_SPHERE_MAX_ERROR_PX,
-		      "sphere %d, %.1f px: level %u errs %.3g px (the coarser %.3g px)", i, px, level[i], e, coarser);
+		CHECK((level_fits(level[i], px) || level[i] == PRIM_SPHERE_LEVELS - 1) &&
+			      (level[i] == 0 || !level_fits(level[i] - 1, px)),
+		      "sphere %d, %.1f px: level %u errs %.3g px, edges %.3g px", i, px, level[i],
+		      prim_sphere_rel_error(prim_sphere_level_segments(level[i])) * px,
+		      2 * M_PI * px / prim_sphere_level_segments(level[i]));
 	}
 	CHECK(level[0] == 0 && level[1] >= 3, "the small far sphere gets level %u, the large near one %u", level[0],
 	      level[1]);
