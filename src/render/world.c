@@ -653,14 +653,22 @@ static double axis_scale(const xform *t)
 	return s;
 }
 
+/* Off the view's axis, at angle a, the image of a small sphere stretches by 1 / cos^2 a along the
+ * radius (the image plane's x = f tan a); this is the smallest cos a counted, 60 degrees, past the
+ * corners of any usual view (a sphere out of sight is sized as at this angle). */
+#define WORLD_SPHERE_MIN_COS 0.5
+
 /* The tessellation level of a sphere (world.h): the coarsest whose silhouette, radius_px on screen,
  * stays within WORLD_SPHERE_MAX_ERROR_PX and whose edges, 2 pi radius_px / segments, within
  * WORLD_SPHERE_MAX_EDGE_PX; the finest when none is, or the camera is at or inside the sphere. The
  * silhouette of a sphere of radius r seen from distance dist has angular radius asin(r / dist),
- * so radius_px = focal_px r / sqrt(dist^2 - r^2); a surface error e r moves it by e radius_px. */
-static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r)
+ * so radius_px = focal_px r / sqrt(dist^2 - r^2) on the axis (cos_axis 1); a surface error e r
+ * moves it by e radius_px. */
+static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
+			     double cos_axis)
 {
-	double radius_px = dist > r ? focal_px * r / sqrt((dist - r) * (dist + r)) : INFINITY;
+	double c = fmax(fmin(cos_axis, 1.0), WORLD_SPHERE_MIN_COS);
+	double radius_px = dist > r ? focal_px * r / sqrt((dist - r) * (dist + r)) / (c * c) : INFINITY;
 	uint32_t k = 0;
 	while (k + 1 < PRIM_SPHERE_LEVELS &&
 	       !(rel_err[k] * radius_px <= WORLD_SPHERE_MAX_ERROR_PX &&
@@ -682,9 +690,10 @@ static bool sphere_instance(world *w, const scene_geom *g, const subd_camera *vi
 		return false;
 	}
 	place = xform_then(xform_then(place, xform_translate(g->u.sphere.center)), in->xf);
-	dvec3 centre = xform_point(&in->xf, g->u.sphere.center);
-	double dist = d3_length(d3_sub(centre, v3_to_d3(view->position)));
-	uint32_t level = sphere_level(rel_err, view_focal_px(view), dist, r * axis_scale(&in->xf));
+	dvec3 to_centre = d3_sub(xform_point(&in->xf, g->u.sphere.center), v3_to_d3(view->position));
+	double dist = d3_length(to_centre);
+	double cos_axis = dist > 0.0 ? d3_dot(to_centre, d3_normalize(v3_to_d3(view->look))) / dist : 1.0;
+	uint32_t level = sphere_level(rel_err, view_focal_px(view), dist, r * axis_scale(&in->xf), cos_axis);
 	world_geom *unit = &w->geoms[w->unit_spheres + level];
 	if (!unit->m.num_triangles && !prim_sphere(v3s(0.0f), 1.0f, prim_sphere_level_segments(level), &unit->m)) {
 		diag_error(d, loc, "out of memory while tessellating");
