@@ -35,4 +35,19 @@ expect_status 3 "$CIRCE" check many.pov --max-memory 4M
 grep -q "memory limit of 4.0 MiB (--max-memory)" err || fail "check's message at 4M: $(cat err)"
 [ -e a.exr ] && fail "a refused render left a.exr"
 expect_status 2 "$CIRCE" check many.pov --max-memory 2T
+# A cube subdivided 8 times (786,432 triangles, about 66 MiB) under --max-memory 50M: refused
+# by its estimate, before tessellating, in check as in render.
+cat >cube.pov <<'EOS'
+subdivision_surface {
+  vertex_vectors { 8, <-0.5,-0.5,0.5>, <0.5,-0.5,0.5>, <-0.5,0.5,0.5>, <0.5,0.5,0.5>,
+                      <-0.5,0.5,-0.5>, <0.5,0.5,-0.5>, <-0.5,-0.5,-0.5>, <0.5,-0.5,-0.5> }
+  faces { 6, <0,1,3,2>, <2,3,5,4>, <4,5,7,6>, <6,7,1,0>, <1,7,5,3>, <6,0,2,4> }
+  level 8
+}
+EOS
+for cmd in check render; do
+	expect_status 3 "$CIRCE" $cmd cube.pov --max-memory 50M
+	grep -q "cube.pov:1:1: error: .*over the limit of 50.0 MiB" err || fail "$cmd cube.pov: $(cat err)"
+done
+[ -e cube.exr ] && fail "a refused render left cube.exr"
 pass
