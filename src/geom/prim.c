@@ -176,8 +176,9 @@ bool prim_plane(vec3 normal, float offset, vec3 lo, vec3 hi, mesh *out)
 }
 
 /* An eye on the plane (h = 0) sees it edge on; its rings then start at this fraction of the
- * foot's distance from the origin (at least of one unit), so the plane still reaches out under
- * the objects near the eye. */
+ * foot's distance from the origin (one unit for an eye at the origin: nothing else gives a size),
+ * so the plane still reaches out under the objects near the eye. Relative, not absolute: a scene
+ * of size 1e-8 keeps rings of its own size. */
 #define PRIM_PLANE_MIN_RING 1e-3
 
 bool prim_plane_view(vec3 normal, float offset, vec3 eye, float horizon_rad, mesh *out)
@@ -190,7 +191,9 @@ bool prim_plane_view(vec3 normal, float offset, vec3 eye, float horizon_rad, mes
 	dvec3 n = d3_scale(nd, 1.0 / len), e = v3_to_d3(eye);
 	double height = d3_dot(n, e) - offset;
 	dvec3 foot = d3_sub(e, d3_scale(n, height)), origin = d3_scale(n, offset);
-	double a0 = fmax(fabs(height), PRIM_PLANE_MIN_RING * fmax(d3_length(foot), 1.0));
+	double a0 = fmax(fabs(height), PRIM_PLANE_MIN_RING * d3_length(foot));
+	if (!(a0 > 0.0))
+		a0 = 1.0;
 	/* The plane at distance D from the foot is seen h / D below the horizon (tan). */
 	double rings = ceil(log2(1.0 / tan((double)horizon_rad)));
 	if (!isfinite(a0) || rings > PRIM_PLANE_MAX_RINGS)

@@ -155,6 +155,13 @@ static void check_plane_view(void)
 	/* An eye on the plane still gets a plane reaching out under the scene. */
 	CHECK(prim_plane_view(v3(0, 1, 0), 0.0f, v3(0, 0, 0), 1e-4f, &m) && m.num_triangles > 0, "eye on the plane");
 	mesh_free(&m);
+	/* The rings scale with the scene: seen from 1e-8 above, the innermost square is 1e-8 wide. */
+	CHECK(prim_plane_view(v3(0, 1, 0), 0.0f, v3(3e-8f, 1e-8f, 0), 1e-4f, &m), "a scene of 1e-8");
+	float inner = 0.0f;
+	for (uint32_t v = 0; v < 4; v++)
+		inner = fmaxf(inner, fabsf(m.positions[v].z));
+	CHECK(inner > 0.99e-8f && inner < 1.01e-8f, "the innermost ring's half-size is %g, expected 1e-8", inner);
+	mesh_free(&m);
 }
 
 static void check_arrays(void)
