@@ -18,6 +18,7 @@
 #include <signal.h>
 #include <stdatomic.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <errno.h>
 #include <getopt.h>
@@ -37,7 +38,7 @@ static const char usage_text[] =
 	"                    [--circle-weight exact|talk] [--seed N] [--region X0,Y0,X1,Y1]\n"
 	"                    [--aov albedo,normal,depth,variance] [--tile I/N] [--clock F]\n"
 	"                    [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR] [--quiet]\n"
-	"       circe check SCENE [-I DIR] [--clock F] [--dump]\n"
+	"       circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE] [--dump]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
 	"                     [--channels R,G,B]\n"
 	"       circe merge -o FULL.exr TILE.exr...\n"
@@ -51,12 +52,45 @@ static int usage_error(const char *fmt, const char *arg)
 	return EXIT_USAGE;
 }
 
+/* `circe check` tessellates as a render would, at this image size (for adaptive subdivision and
+ * the spheres' levels), and estimates the render's memory at it. */
+enum { CHECK_WIDTH = 640, CHECK_HEIGHT = 480 };
+/* The top level's cost of one instance (tlas.h: about 100 bytes) in each of its two trees, with
+ * the world's record of it; check builds neither. */
+#define CHECK_INSTANCE_BYTES (2 * 128 + sizeof(world_inst) + 16)
+
+/* The memory a render at CHECK_WIDTH x CHECK_HEIGHT would need, from what check built: what is
+ * allocated now (the IR and the meshes), the BVHs at bvh.h's 64 bytes a triangle, the instances
+ * and the film's two buffers. Textures are not loaded by check, so not counted. */
+static size_t check_estimate(const world *w)
+{
+	return mem_live_bytes() + 64 * w->stats.triangles + CHECK_INSTANCE_BYTES * w->n_insts +
+	       2 * sizeof(film_pixel) * CHECK_WIDTH * CHECK_HEIGHT;
+}
+
+/* The machine's memory: --max-memory's default. */
+static size_t physical_memory(void)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+	return pages > 0 && page > 0 ? (size_t)pages * (size_t)page : 0;
+}
+
+/* After a failure: says so when it came from --max-memory's limit (mem.h). */
+static void note_memory_limit(void)
+{
+	size_t asked, live;
+	if (mem_limit_hit(&asked, &live))
+		fprintf(stderr, "circe: note: that is the memory limit of %.1f MiB (--max-memory): %.1f MiB were in use "
+				"when %.1f MiB more were asked for\n",
+			(double)mem_limit() / 1048576.0, (double)live / 1048576.0, (double)asked / 1048576.0);
+}
+
 /* Prints what `circe check` knows about a parsed scene. */
-static void print_check_summary(const char *path, const scene *sc, const world *w)
+static void print_check_summary(const char *path, const scene *sc, const world *w, bool fits)
 {
 	scene_stats st;
 	scene_stats_get(sc, &st);
-	printf("%s: ok\n", path);
+	printf("%s: %s\n", path, fits ? "ok" : "over the memory limit");
 	printf("  objects:    %zu (%zu instances sharing geometry, %zu geometry records)\n", st.objects,
 	       st.instances, st.geoms);
 	printf("  lights:     %zu%s\n", st.lights, sc->has_background || sc->has_sky_sphere ? " + environment" : "");
@@ -80,14 +114,20 @@ static void print_check_summary(const char *path, const scene *sc, const world *
 	printf("  estimated memory: IR %.1f KiB, meshes %.1f MiB, BVHs about %.1f MiB\n",
 	       (double)st.memory_bytes / 1024.0, (double)w->stats.geometry_bytes / 1048576.0,
 	       64.0 * (double)w->stats.triangles / 1048576.0);
+	printf("  estimated render memory at %dx%d: %.1f MiB (limit %.1f MiB; textures not counted)\n", CHECK_WIDTH,
+	       CHECK_HEIGHT, (double)check_estimate(w) / 1048576.0, (double)mem_limit() / 1048576.0);
 }
 
-/* circe check SCENE [-I DIR] [--clock F]: parse and build, print statistics. */
+static bool parse_size(const char *arg, size_t *out);
+
+/* circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE]: parse and build, print statistics;
+ * a scene whose render would need more than the memory limit fails. */
 static int cmd_check(int argc, char **argv)
 {
 	static const struct option opts[] = {
 		{"clock", required_argument, NULL, 'c'}, {"dump", no_argument, NULL, 'd'},
-		{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+		{"max-memory", required_argument, NULL, 'm'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+	size_t max_memory = 0;
 	const char *dirs[64];
 	lang_options lo = {.include_dirs = dirs};
 	int c;
@@ -109,6 +149,10 @@ static int cmd_check(int argc, char **argv)
 		case 'd':
 			dump = true;
 			break;
+		case 'm':
+			if (!parse_size(optarg, &max_memory))
+				return usage_error("--max-memory needs a size such as 512M or 2G, not '%s'", optarg);
+			break;
 		case 'h':
 			fputs(usage_text, stdout);
 			return EXIT_OK;
@@ -118,21 +162,34 @@ static int cmd_check(int argc, char **argv)
 	}
 	if (optind != argc - 1)
 		return usage_error("%s", optind >= argc ? "'check' needs a SCENE file" : "'check' takes one SCENE file");
+	mem_set_limit(max_memory ? max_memory : physical_memory());
 	diag d;
 	diag_init(&d, stderr);
 	scene *sc = NULL;
 	lang_status st = lang_parse_file(argv[optind], &lo, &d, &sc);
 	int rc = st == LANG_OK ? EXIT_OK : st == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
+	if (st != LANG_OK)
+		note_memory_limit();
 	if (st == LANG_OK && dump)
 		scene_dump(sc, stdout);
 	else if (st == LANG_OK) {
-		/* Tessellate as a render would (at the default image size, for adaptive subdivision). */
 		world w;
-		world_options wo = {.width = 640, .height = 480, .geometry_only = true};
+		world_options wo = {.width = CHECK_WIDTH, .height = CHECK_HEIGHT, .max_memory = max_memory,
+				    .geometry_only = true};
 		if (world_build(&w, sc, &wo, &d)) {
-			print_check_summary(argv[optind], sc, &w);
+			size_t need = check_estimate(&w);
+			bool fits = need <= mem_limit();
+			print_check_summary(argv[optind], sc, &w, fits);
+			if (!fits) {
+				fprintf(stderr, "circe: error: %s: a render at %dx%d would need about %.1f MiB, over the memory "
+						"limit of %.1f MiB (--max-memory)\n",
+					argv[optind], CHECK_WIDTH, CHECK_HEIGHT, (double)need / 1048576.0,
+					(double)mem_limit() / 1048576.0);
+				rc = EXIT_SCENE;
+			}
 			world_free(&w);
 		} else {
+			note_memory_limit();
 			rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 		}
 	}
@@ -250,8 +307,7 @@ static int parse_render_cli(int argc, char **argv, render_cli *o)
 		{"help", no_argument, NULL, 'h'},
 		{NULL, 0, NULL, 0},
 	};
-	*o = (render_cli){.width = 640, .height = 480, .frame = -1, .checkpoint_s = 60.0,
-			  .max_memory = (size_t)1 << 30};
+	*o = (render_cli){.width = 640, .height = 480, .frame = -1, .checkpoint_s = 60.0};
 	long v;
 	double f;
 	int c;
@@ -510,12 +566,14 @@ static int cmd_render(int argc, char **argv)
 		free(out), free(png), free(out_default);
 		return status;
 	}
+	mem_set_limit(o.max_memory ? o.max_memory : physical_memory());
 	diag d;
 	diag_init(&d, stderr);
 	lang_options lo = {.include_dirs = o.include_dirs, .n_include_dirs = (size_t)o.ninclude, .clock = o.clock};
 	scene *sc = NULL;
 	lang_status ls = lang_parse_file(o.scene, &lo, &d, &sc);
 	if (ls != LANG_OK) {
+		note_memory_limit();
 		free(out), free(png), free(out_default), diag_free(&d);
 		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
 	}
@@ -535,6 +593,7 @@ static int cmd_render(int argc, char **argv)
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
 	if (!world_build(&w, sc, &wo, &d)) {
+		note_memory_limit();
 		int rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return rc;
@@ -558,6 +617,7 @@ static int cmd_render(int argc, char **argv)
 	film f;
 	if (!film_init(&f, o.width, o.height, x0, y0, x1, y1)) {
 		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o.width, o.height);
+		note_memory_limit();
 		world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return EXIT_RUNTIME;
 	}

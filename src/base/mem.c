@@ -1,6 +1,9 @@
 /* mem.c - checked allocation, the scene arena and growable arrays. */
 #include "base/mem.h"
 
+#include <stdalign.h>
+#include <stdatomic.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,31 +30,124 @@ bool mem_mul_ok(size_t a, size_t b, size_t *out)
 	return true;
 }
 
+/* Every block carries its size in a header as wide as malloc's alignment, so that the block after
+ * it keeps that alignment and mem_free knows what it gives back. */
+#define MEM_HEADER ((size_t)alignof(max_align_t))
+
+static size_t limit_bytes; /* 0: none */
+static atomic_size_t live_bytes, peak_bytes, refused_bytes, refused_live;
+
+void mem_set_limit(size_t bytes) { limit_bytes = bytes; }
+size_t mem_limit(void) { return limit_bytes; }
+size_t mem_live_bytes(void) { return atomic_load(&live_bytes); }
+size_t mem_peak_bytes(void) { return atomic_load(&peak_bytes); }
+
+bool mem_limit_hit(size_t *asked, size_t *live)
+{
+	size_t n = atomic_load(&refused_bytes);
+	if (asked)
+		*asked = n;
+	if (live)
+		*live = atomic_load(&refused_live);
+	return n > 0;
+}
+
+/* Counts n more bytes live; false (nothing counted) when that would pass the limit. */
+static bool take(size_t n)
+{
+	size_t now = atomic_fetch_add(&live_bytes, n) + n;
+	if (limit_bytes && (now > limit_bytes || now < n)) {
+		atomic_store(&refused_live, atomic_fetch_sub(&live_bytes, n) - n);
+		atomic_store(&refused_bytes, n ? n : 1);
+		return false;
+	}
+	size_t peak = atomic_load(&peak_bytes);
+	while (now > peak && !atomic_compare_exchange_weak(&peak_bytes, &peak, now))
+		;
+	return true;
+}
+
+static void give(size_t n) { atomic_fetch_sub(&live_bytes, n); }
+
+/* The user's block of a header, the size it records. */
+static void *block_of(void *h, size_t n)
+{
+	memcpy(h, &n, sizeof n);
+	return (unsigned char *)h + MEM_HEADER;
+}
+
+static void *header_of(void *p) { return (unsigned char *)p - MEM_HEADER; }
+
+static size_t size_of(void *p)
+{
+	size_t n;
+	memcpy(&n, header_of(p), sizeof n);
+	return n;
+}
+
+/* The bytes of count * size, at least one, with room for the header; false on overflow. */
+static bool request(size_t count, size_t size, size_t *n)
+{
+	if (!mem_mul_ok(count, size, n) || *n > SIZE_MAX - MEM_HEADER)
+		return false;
+	if (*n == 0)
+		*n = 1;
+	return true;
+}
+
 void *mem_alloc(size_t count, size_t size)
 {
 	size_t n;
-	if (!mem_mul_ok(count, size, &n) || should_fail())
+	if (!request(count, size, &n) || should_fail() || !take(n))
 		return NULL;
-	return malloc(n ? n : 1);
+	void *h = malloc(MEM_HEADER + n);
+	if (!h) {
+		give(n);
+		return NULL;
+	}
+	return block_of(h, n);
 }
 
 void *mem_calloc(size_t count, size_t size)
 {
 	size_t n;
-	if (!mem_mul_ok(count, size, &n) || should_fail())
+	if (!request(count, size, &n) || should_fail() || !take(n))
 		return NULL;
-	return calloc(n ? n : 1, 1);
+	void *h = calloc(MEM_HEADER + n, 1);
+	if (!h) {
+		give(n);
+		return NULL;
+	}
+	return block_of(h, n);
 }
 
 void *mem_realloc(void *p, size_t count, size_t size)
 {
-	size_t n;
-	if (!mem_mul_ok(count, size, &n) || should_fail())
+	if (!p)
+		return mem_alloc(count, size);
+	size_t n, old = size_of(p);
+	if (!request(count, size, &n) || should_fail())
 		return NULL;
-	return realloc(p, n ? n : 1);
+	if (n > old && !take(n - old))
+		return NULL;
+	void *h = realloc(header_of(p), MEM_HEADER + n);
+	if (!h) {
+		if (n > old)
+			give(n - old);
+		return NULL;
+	}
+	if (n < old)
+		give(old - n);
+	return block_of(h, n);
 }
 
-void mem_free(void *p) { free(p); }
+void mem_free(void *p)
+{
+	if (!p)
+		return;
+	give(size_of(p));
+	free(header_of(p));
+}
 
 char *mem_strdup(const char *s)
 {

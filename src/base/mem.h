@@ -1,7 +1,8 @@
 /* mem.h - the one allocation path of circe, and the arena that owns a scene's data.
- * Every allocation goes through mem_alloc/mem_realloc so sizes are overflow-checked in one place
- * and the test build can make the Nth allocation fail (mem_fail_after). Allocation failure returns
- * NULL; callers report it as a runtime error, never abort. */
+ * Every allocation goes through mem_alloc/mem_realloc so sizes are overflow-checked in one place,
+ * the bytes live are counted against a limit, and the test build can make the Nth allocation fail
+ * (mem_fail_after). Allocation failure returns NULL; callers report it as a runtime error, never
+ * abort. */
 #ifndef CIRCE_BASE_MEM_H
 #define CIRCE_BASE_MEM_H
 
@@ -19,6 +20,19 @@ void mem_free(void *p);
 char *mem_strdup(const char *s);
 /* a * b without overflow: false when it overflows. */
 bool mem_mul_ok(size_t a, size_t b, size_t *out);
+
+/* A bound on the bytes live at once through mem_alloc, mem_calloc and mem_realloc (0: none; what
+ * `--max-memory` sets): an allocation that would pass it fails before anything is allocated, as
+ * exhaustion does, and mem_limit_hit then says so. Set before threads start; the counts are
+ * atomic. */
+void mem_set_limit(size_t bytes);
+size_t mem_limit(void);
+/* The bytes live now, and the most live at once so far. */
+size_t mem_live_bytes(void);
+size_t mem_peak_bytes(void);
+/* True once an allocation was refused for the limit; *asked and *live (when not NULL) get the
+ * last refused one's size and the bytes live then. */
+bool mem_limit_hit(size_t *asked, size_t *live);
 
 /* Lets the next n allocations succeed and fails every one after them
  * (negative n: never). For tests of the error paths; not thread-safe, set before threads start. */

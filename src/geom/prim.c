@@ -13,6 +13,34 @@ uint32_t prim_sphere_segments(float radius, float max_error)
 	return n < 8 ? 8 : n > 4096 ? 4096 : (uint32_t)n;
 }
 
+uint32_t prim_sphere_level_segments(uint32_t level)
+{
+	return PRIM_SPHERE_MIN_SEGMENTS << (level < PRIM_SPHERE_LEVELS ? level : PRIM_SPHERE_LEVELS - 1);
+}
+
+/* The point of the unit sphere at colatitude th (from +y) and longitude ph, as prim_sphere. */
+static dvec3 sphere_point(double th, double ph)
+{
+	return d3(sin(th) * cos(ph), cos(th), sin(th) * sin(ph));
+}
+
+double prim_sphere_rel_error(uint32_t segments)
+{
+	/* Every triangle of a band lies in the plane of its quad (an isosceles trapezoid) or pole fan
+	 * triangle; the surface is no deeper than that plane's distance below the sphere. */
+	uint32_t rings = segments / 2 < 2 ? 2 : segments / 2;
+	double dph = 2.0 * M_PI / segments, worst = 0.0;
+	for (uint32_t i = 0; i < rings; i++) {
+		double t0 = M_PI * i / rings, t1 = M_PI * (i + 1) / rings;
+		dvec3 a = sphere_point(t0, 0.0), b = sphere_point(t1, 0.0);
+		dvec3 c = i + 1 < rings ? sphere_point(t1, dph) : sphere_point(t0, dph);
+		dvec3 n = d3_cross(d3_sub(b, a), d3_sub(c, a));
+		double dist = fabs(d3_dot(n, a)) / d3_length(n);
+		worst = fmax(worst, 1.0 - dist);
+	}
+	return worst;
+}
+
 bool prim_sphere(vec3 centre, float radius, uint32_t segments, mesh *out)
 {
 	if (segments < 3)
@@ -143,6 +171,62 @@ bool prim_plane(vec3 normal, float offset, vec3 lo, vec3 hi, mesh *out)
 	/* The square runs counter-clockwise around n (b1 x b2 = n), and clipping keeps the order. */
 	for (int i = 0; i + 2 < np; i++) {
 		out->indices[3 * i] = 0, out->indices[3 * i + 1] = (uint32_t)i + 1, out->indices[3 * i + 2] = (uint32_t)i + 2;
+	}
+	return true;
+}
+
+/* An eye on the plane (h = 0) sees it edge on; its rings then start at this fraction of the
+ * foot's distance from the origin (one unit for an eye at the origin: nothing else gives a size),
+ * so the plane still reaches out under the objects near the eye. Relative, not absolute: a scene
+ * of size 1e-8 keeps rings of its own size. */
+#define PRIM_PLANE_MIN_RING 1e-3
+
+bool prim_plane_view(vec3 normal, float offset, vec3 eye, float horizon_rad, mesh *out)
+{
+	memset(out, 0, sizeof *out);
+	dvec3 nd = v3_to_d3(normal);
+	double len = d3_length(nd);
+	if (!(len > 0.0) || !isfinite(len) || !(horizon_rad > 0.0f) || !(horizon_rad < 1.0f))
+		return false;
+	dvec3 n = d3_scale(nd, 1.0 / len), e = v3_to_d3(eye);
+	double height = d3_dot(n, e) - offset;
+	dvec3 foot = d3_sub(e, d3_scale(n, height)), origin = d3_scale(n, offset);
+	double a0 = fmax(fabs(height), PRIM_PLANE_MIN_RING * d3_length(foot));
+	if (!(a0 > 0.0))
+		a0 = 1.0;
+	/* The plane at distance D from the foot is seen h / D below the horizon (tan). */
+	double rings = ceil(log2(1.0 / tan((double)horizon_rad)));
+	if (!isfinite(a0) || rings > PRIM_PLANE_MAX_RINGS)
+		return false;
+	uint32_t k_max = rings < 1.0 ? 1 : (uint32_t)rings;
+	if (!mesh_alloc(out, 4 * ((size_t)k_max + 1), 2 + 8 * (size_t)k_max, true, true, false))
+		return false;
+	vec3 b1f, b2f;
+	v3_basis(d3_to_v3(n), &b1f, &b2f);
+	dvec3 b1 = v3_to_d3(b1f), b2 = v3_to_d3(b2f);
+	static const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1}; /* counter-clockwise about n */
+	for (uint32_t k = 0; k <= k_max; k++) {
+		double a = ldexp(a0, (int)k);
+		for (int c = 0; c < 4; c++) {
+			dvec3 p = d3_add(foot, d3_add(d3_scale(b1, a * sx[c]), d3_scale(b2, a * sy[c])));
+			uint32_t v = 4 * k + (uint32_t)c;
+			out->positions[v] = d3_to_v3(p);
+			out->normals[v] = d3_to_v3(n);
+			dvec3 r = d3_sub(p, origin);
+			out->uvs[v] = v2((float)d3_dot(r, b1), (float)d3_dot(r, b2));
+		}
+	}
+	uint32_t *ix = out->indices;
+	*ix++ = 0, *ix++ = 1, *ix++ = 2;
+	*ix++ = 0, *ix++ = 2, *ix++ = 3;
+	/* Ring k joins the square of ring k - 1 (inside) to its own: a trapezoid per side. */
+	for (uint32_t k = 1; k <= k_max; k++) {
+		for (uint32_t i = 0; i < 4; i++) {
+			uint32_t in0 = 4 * (k - 1) + i, in1 = 4 * (k - 1) + (i + 1) % 4;
+			uint32_t out0 = 4 * k + i, out1 = 4 * k + (i + 1) % 4;
+			*ix++ = out0, *ix++ = out1, *ix++ = in1;
+			*ix++ = out0, *ix++ = in1, *ix++ = in0;
+		}
 	}
 	return true;
 }

@@ -85,24 +85,36 @@ static void warn_reflectance_image(const image *img, diag_loc loc, const char *p
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
-/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera (the
- * default camera when the scene has none, as build_camera does). */
+/* The scene's camera as the tessellation sees it: eye, view and vertical field of view at the
+ * image's size (the default camera when the scene has none, as build_camera does). */
+static subd_camera scene_view(const scene *sc, const world_options *opt)
+{
+	const scene_camera *c = &sc->camera;
+	cam_params dc = cam_params_default();
+	dvec3 from = sc->has_camera ? c->location : dc.location;
+	dvec3 to = sc->has_camera ? c->look_at : dc.look_at;
+	double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
+	double aspect = (double)opt->width / (double)opt->height;
+	double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
+	/* The view in double: a difference of positions far from the origin would cancel in float. */
+	return (subd_camera){.position = d3v(from), .look = d3v(d3_sub(to, from)), .up = sc->has_camera ? d3v(c->sky) : dc.sky,
+			     .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+			     .image_height = (uint32_t)opt->height};
+}
+
+/* Pixels per unit of size at unit distance, at the centre of the view. */
+static double view_focal_px(const subd_camera *v)
+{
+	return 0.5 * v->image_height / tan(v->fov_y_deg * M_PI / 360.0);
+}
+
+/* The subdivision options of a cage: uniform level, or adaptive through the scene's camera. */
 static subd_options subdiv_options(const scene *sc, const scene_subdiv *sd, const world_options *opt,
 				   subd_camera *camera)
 {
 	subd_options so = {.level = sd->level, .max_bytes = opt->max_memory};
 	if (sd->level <= 0 && sd->max_edge_px > 0) {
-		const scene_camera *c = &sc->camera;
-		cam_params dc = cam_params_default();
-		dvec3 from = sc->has_camera ? c->location : dc.location;
-		dvec3 to = sc->has_camera ? c->look_at : dc.look_at;
-		double angle_deg = sc->has_camera ? c->angle_deg : dc.angle_deg;
-		double aspect = (double)opt->width / (double)opt->height;
-		double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
-		*camera = (subd_camera){.position = d3v(from), .look = d3v(d3_sub(to, from)),
-					.up = sc->has_camera ? d3v(c->sky) : dc.sky,
-					.fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
-					.image_height = (uint32_t)opt->height};
+		*camera = scene_view(sc, opt);
 		so.camera = camera;
 		so.max_edge_px = (float)sd->max_edge_px;
 	}
@@ -211,17 +223,13 @@ static bool build_subdiv(world *w, const scene *sc, const scene_geom *g, const w
 	return ok;
 }
 
-/* Tessellates one geometry record (planes wait for the scene's bounds). */
+/* Tessellates one geometry record (spheres and planes wait for their objects' transforms). */
 static bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d)
 {
 	mesh *m = &w->geoms[g->id].m;
 	switch (g->kind) {
-	case SHAPE_SPHERE: {
-		float r = (float)g->u.sphere.radius;
-		if (!prim_sphere(d3v(g->u.sphere.center), r, prim_sphere_segments(r, r * WORLD_SPHERE_REL_ERROR), m))
-			break;
+	case SHAPE_SPHERE: /* an instance of a unit sphere, chosen per object (sphere_instance) */
 		return true;
-	}
 	case SHAPE_BOX:
 		if (!prim_box(d3v(g->u.box.corner1), d3v(g->u.box.corner2), m))
 			break;
@@ -256,17 +264,6 @@ static void xform_bounds(const xform *t, vec3 lo, vec3 hi, vec3 *wlo, vec3 *whi)
 		dvec3 c = d3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
 		vec3 p = d3v(xform_point(t, c));
 		*wlo = v3_min(*wlo, p), *whi = v3_max(*whi, p);
-	}
-}
-
-/* Object-space box holding the world box [lo, hi] under t's inverse. */
-static void inv_xform_bounds(const xform *t, vec3 lo, vec3 hi, vec3 *olo, vec3 *ohi)
-{
-	*olo = v3s(FLT_MAX), *ohi = v3s(-FLT_MAX);
-	for (int k = 0; k < 8; k++) {
-		dvec3 c = d3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-		vec3 p = d3v(xform_inv_point(t, c));
-		*olo = v3_min(*olo, p), *ohi = v3_max(*ohi, p);
 	}
 }
 
@@ -677,8 +674,73 @@ static void build_groups(world *w, const scene *sc)
 	}
 }
 
-static bool build_instances(world *w, const scene *sc, diag *d)
+/* The largest length an axis of the object takes under t: a sphere's radius in the world (exact
+ * under a similarity; under a non-uniform scale, that of the longest axis). */
+static double axis_scale(const xform *t)
 {
+	double s = 0.0;
+	for (int c = 0; c < 3; c++)
+		s = fmax(s, sqrt(t->m[0][c] * t->m[0][c] + t->m[1][c] * t->m[1][c] + t->m[2][c] * t->m[2][c]));
+	return s;
+}
+
+/* Off the view's axis, at angle a, the image of a small sphere stretches by 1 / cos^2 a along the
+ * radius (the image plane's x = f tan a); this is the smallest cos a counted, 60 degrees, past the
+ * corners of any usual view (a sphere out of sight is sized as at this angle). */
+#define WORLD_SPHERE_MIN_COS 0.5
+
+/* The tessellation level of a sphere (world.h): the coarsest whose silhouette, radius_px on screen,
+ * stays within WORLD_SPHERE_MAX_ERROR_PX and whose edges, 2 pi radius_px / segments, within
+ * WORLD_SPHERE_MAX_EDGE_PX; the finest when none is, or the camera is at or inside the sphere. The
+ * silhouette of a sphere of radius r seen from distance dist has angular radius asin(r / dist),
+ * so radius_px = focal_px r / sqrt(dist^2 - r^2) on the axis (cos_axis 1); a surface error e r
+ * moves it by e radius_px. */
+static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
+			     double cos_axis)
+{
+	double c = fmax(fmin(cos_axis, 1.0), WORLD_SPHERE_MIN_COS);
+	double radius_px = dist > r ? focal_px * r / sqrt((dist - r) * (dist + r)) / (c * c) : INFINITY;
+	uint32_t k = 0;
+	while (k + 1 < PRIM_SPHERE_LEVELS &&
+	       !(rel_err[k] * radius_px <= WORLD_SPHERE_MAX_ERROR_PX &&
+		 2.0 * M_PI * radius_px <= WORLD_SPHERE_MAX_EDGE_PX * prim_sphere_level_segments(k)))
+		k++;
+	return k;
+}
+
+/* Makes the sphere object `in` an instance of the unit sphere at the level its size on screen
+ * asks for: its transform gains the sphere's centre and radius. The unit spheres are made once
+ * each, when first used. */
+static bool sphere_instance(world *w, const scene_geom *g, const subd_camera *view, const double rel_err[],
+			    world_inst *in, diag *d, diag_loc loc)
+{
+	xform place;
+	double r = g->u.sphere.radius;
+	if (!xform_scale(d3(r, r, r), &place)) {
+		diag_error(d, loc, "the sphere's radius %g is too small", r);
+		return false;
+	}
+	place = xform_then(xform_then(place, xform_translate(g->u.sphere.center)), in->xf);
+	dvec3 to_centre = d3_sub(xform_point(&in->xf, g->u.sphere.center), v3_to_d3(view->position));
+	double dist = d3_length(to_centre);
+	double cos_axis = dist > 0.0 ? d3_dot(to_centre, d3_normalize(v3_to_d3(view->look))) / dist : 1.0;
+	uint32_t level = sphere_level(rel_err, view_focal_px(view), dist, r * axis_scale(&in->xf), cos_axis);
+	world_geom *unit = &w->geoms[w->unit_spheres + level];
+	if (!unit->m.num_triangles && !prim_sphere(v3s(0.0f), 1.0f, prim_sphere_level_segments(level), &unit->m)) {
+		diag_error(d, loc, "out of memory while tessellating");
+		return false;
+	}
+	in->g = unit;
+	in->xf = place;
+	return true;
+}
+
+static bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	subd_camera view = scene_view(sc, opt);
+	double rel_err[PRIM_SPHERE_LEVELS];
+	for (uint32_t k = 0; k < PRIM_SPHERE_LEVELS; k++)
+		rel_err[k] = prim_sphere_rel_error(prim_sphere_level_segments(k));
 	size_t n = scene_n_objects(sc);
 	w->insts = mem_calloc(n ? n : 1, sizeof *w->insts);
 	w->sss_group = mem_calloc(n ? n : 1, sizeof *w->sss_group);
@@ -692,13 +754,15 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 		world_inst *in = &w->insts[w->n_insts++];
 		in->g = &w->geoms[o->geom->id];
 		in->xf = o->transform;
-		in->identity = is_identity(&o->transform);
+		if (o->geom->kind == SHAPE_SPHERE && !sphere_instance(w, o->geom, &view, rel_err, in, d, o->loc))
+			return false;
+		in->identity = is_identity(&in->xf);
 		set_xf_bound(in);
 		in->no_shadow = o->no_shadow;
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */
 		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;
-		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&o->transform, NULL) &&
+		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&in->xf, NULL) &&
 		    !flatten_instance(w, in, sc->n_geoms + i, d, o->loc))
 			return false;
 	}
@@ -706,8 +770,10 @@ static bool build_instances(world *w, const scene *sc, diag *d)
 	return true;
 }
 
-/* Bounds of everything but planes, and the camera; planes are then cut to them. */
-static bool build_planes(world *w, const scene *sc, diag *d)
+/* Bounds of everything but planes, and the camera (for the lights). Each plane object gets its
+ * own mesh, reaching from the camera to its horizon (prim_plane_view): what it shows depends on
+ * the camera alone, not on the other objects. */
+static bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	vec3 lo = v3s(FLT_MAX), hi = v3s(-FLT_MAX);
 	for (size_t i = 0; i < w->n_insts; i++) {
@@ -724,34 +790,29 @@ static bool build_planes(world *w, const scene *sc, diag *d)
 	}
 	if (lo.x > hi.x)
 		lo = v3s(-1.0f), hi = v3s(1.0f);
-	/* Planes reach well past everything else, so their edges stay out of sight: ten times the
-	 * extent of the rest of the scene around it. */
+	/* The extent in the scene's own units, however small (a floor of 1e-3 units made the lights'
+	 * radius in a scene of 1e-6 a thousand times its size); a scene that is one point (the camera
+	 * alone) takes the size of its coordinates, or 1 at the origin. */
 	vec3 centre = v3_scale(v3_add(lo, hi), 0.5f);
-	/* The extent in the scene's own units, however small (a floor of 1e-3 units made a plane in a
-	 * scene of 1e-6 a thousand times its size, and its hits' rounding with it); a scene that is
-	 * one point (the camera alone) takes the size of its coordinates, or 1 at the origin. */
 	float size = v3_max_comp(v3_sub(hi, lo));
 	if (!(size > 0.0f))
 		size = v3_max_comp(v3_abs(centre)) > 0.0f ? v3_max_comp(v3_abs(centre)) : 1.0f;
-	float ext = size * 10.0f;
-	vec3 plo = v3_sub(centre, v3s(ext)), phi = v3_add(centre, v3s(ext));
+	dvec3 eye = v3_to_d3(scene_view(sc, opt).position);
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, i);
 		world_inst *in = &w->insts[i];
-		if (o->geom->kind != SHAPE_PLANE || in->g->m.num_triangles)
+		if (o->geom->kind != SHAPE_PLANE)
 			continue;
-		vec3 olo, ohi;
-		inv_xform_bounds(&in->xf, plo, phi, &olo, &ohi);
-		mesh *m = &w->geoms[o->geom->id].m;
-		if (!prim_plane(d3v(o->geom->u.plane.normal), (float)o->geom->u.plane.offset, olo, ohi, m) &&
-		    !m->num_triangles && d3_length(o->geom->u.plane.normal) == 0.0) {
-			diag_error(d, o->geom->loc, "the plane's normal is zero");
+		world_geom *own = &w->geoms[sc->n_geoms + i];
+		vec3 at = d3v(xform_inv_point(&in->xf, eye));
+		if (!prim_plane_view(d3v(o->geom->u.plane.normal), (float)o->geom->u.plane.offset, at,
+				     WORLD_PLANE_HORIZON_RAD, &own->m)) {
+			diag_error(d, o->geom->loc, d3_length(o->geom->u.plane.normal) == 0.0 ? "the plane's normal is zero"
+											      : "out of memory while tessellating");
 			return false;
 		}
-	}
-	for (size_t i = 0; i < w->n_insts; i++) {
-		world_inst *in = &w->insts[i];
-		if (scene_object_at(sc, i)->geom->kind == SHAPE_PLANE && mesh_bounds(&in->g->m, &in->lo, &in->hi))
+		in->g = own;
+		if (mesh_bounds(&in->g->m, &in->lo, &in->hi))
 			xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
 	}
 	w->lo = lo, w->hi = hi;
@@ -928,8 +989,10 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	world_options o = *opt;
 	if (!o.max_memory)
 		o.max_memory = SUBD_DEFAULT_MAX_BYTES;
-	/* Room for the scene's geometry and a private copy per object (used only when flattened). */
-	w->n_geoms = sc->n_geoms + scene_n_objects(sc);
+	/* Room for the scene's geometry, a private mesh per object (used only when flattened, or for a
+	 * plane), and the unit spheres. */
+	w->unit_spheres = sc->n_geoms + scene_n_objects(sc);
+	w->n_geoms = w->unit_spheres + PRIM_SPHERE_LEVELS;
 	w->geoms = mem_calloc(w->n_geoms ? w->n_geoms : 1, sizeof *w->geoms);
 	w->n_materials = sc->n_materials + 1;
 	w->bsdfs = mem_calloc(w->n_materials, sizeof *w->bsdfs);
@@ -944,7 +1007,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	bool ok = true;
 	for (const scene_geom *g = sc->geoms; g && ok; g = g->next)
 		ok = build_geom(w, sc, g, &o, d);
-	ok = ok && build_instances(w, sc, d) && build_planes(w, sc, d) && check_volumes(w, sc, &o, d);
+	ok = ok && build_instances(w, sc, &o, d) && build_planes(w, sc, &o, d) && check_volumes(w, sc, &o, d);
 	/* Normal maps need tangents; meshes without them get generated ones. */
 	for (const scene_material *m = sc->materials; ok && m; m = m->next)
 		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);

@@ -21,9 +21,18 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Chordal error of a tessellated sphere, relative to its radius: 1e-4 keeps the silhouette and the
- * shading within a part in ten thousand (256 segments around). */
-#define WORLD_SPHERE_REL_ERROR 1e-4f
+/* Spheres are instances of one unit sphere per tessellation level (prim.h), the level the coarsest
+ * whose silhouette stays within WORLD_SPHERE_MAX_ERROR_PX of the true one and whose edges (along
+ * the equator) are at most WORLD_SPHERE_MAX_EDGE_PX long on screen, from the sphere's size and
+ * distance to the camera. Shading normals are the sphere's own, so the outline shows the facets
+ * first; but facets wider than a pixel also show in the shading, where the interpolated normals
+ * depart from them (tests/render/furnace.sh sees it), hence the edge bound, as subdivision's
+ * max_edge. */
+#define WORLD_SPHERE_MAX_ERROR_PX 0.1
+#define WORLD_SPHERE_MAX_EDGE_PX 1.0
+/* A plane reaches out from the camera until it is seen within this angle of its horizon (a
+ * pixel of a 4K image 60 degrees wide is 2.7e-4 rad), whatever else the scene holds. */
+#define WORLD_PLANE_HORIZON_RAD 1e-4f
 
 typedef struct world_options {
 	int width, height;    /* the image, for the camera and adaptive tessellation */
@@ -69,8 +78,10 @@ typedef struct world_stats {
 } world_stats;
 
 typedef struct world {
-	world_geom *geoms;      /* indexed by scene_geom.id; then one private copy per flattened instance */
+	world_geom *geoms;      /* indexed by scene_geom.id; then one private mesh per object (a flattened
+				 * instance, a plane); then the unit spheres of each level (prim.h) */
 	size_t n_geoms;
+	size_t unit_spheres;    /* geoms index of the unit sphere of level 0 */
 	world_inst *insts;
 	size_t n_insts;
 	tlas *top;              /* every instance with triangles */

@@ -1,5 +1,5 @@
-/* test_mesh: primitives, mesh2 arrays, the Assimp importer (OBJ, GLB, PLY) and its errors,
- * tangents and transforms. */
+/* test_mesh: primitives (the spheres' levels and their error bound, the plane out to its horizon),
+ * mesh2 arrays, the Assimp importer (OBJ, GLB, PLY) and its errors, tangents and transforms. */
 #include "check.h"
 #include "geom/mesh.h"
 #include "geom/ply.h"
@@ -75,6 +75,93 @@ static void check_prims(void)
 	mesh_free(&m);
 	CHECK(!prim_plane(v3(0, 1, 0), 5.0f, v3(-1, -1, -1), v3(1, 1, 1), &m), "a plane missing the bounds is empty");
 	CHECK(!prim_plane(v3(0, 0, 0), 0.0f, v3(-1, -1, -1), v3(1, 1, 1), &m), "a zero normal is refused");
+}
+
+/* prim_sphere_rel_error bounds how deep each level's unit sphere lies inside the true one, and
+ * nearly reaches it: points over every triangle stay within the bound, the deepest near it. */
+static void check_sphere_levels(void)
+{
+	double last = 1.0;
+	for (uint32_t k = 0; k < PRIM_SPHERE_LEVELS; k++) {
+		uint32_t seg = prim_sphere_level_segments(k);
+		double bound = prim_sphere_rel_error(seg), deepest = 0.0;
+		mesh m;
+		CHECK(prim_sphere(v3(0, 0, 0), 1.0f, seg, &m), "level %u", k);
+		for (uint32_t f = 0; f < m.num_triangles; f++) {
+			const uint32_t *ix = m.indices + 3 * f;
+			for (int a = 0; a <= 8; a++)
+				for (int b = 0; a + b <= 8; b++) {
+					double u = a / 8.0, v = b / 8.0, w = 1.0 - u - v;
+					dvec3 p = d3_add(d3_add(d3_scale(v3_to_d3(m.positions[ix[0]]), w),
+								d3_scale(v3_to_d3(m.positions[ix[1]]), u)),
+							 d3_scale(v3_to_d3(m.positions[ix[2]]), v));
+					deepest = fmax(deepest, 1.0 - d3_length(p));
+				}
+		}
+		CHECK(deepest <= bound * (1 + 1e-6) + 1e-7 && deepest >= 0.8 * bound,
+		      "level %u (%u segments): deepest point %.4g, bound %.4g", k, seg, deepest, bound);
+		CHECK(bound < last / 3.9, "level %u's error %.3g is a quarter of the coarser one's %.3g", k, bound, last);
+		last = bound;
+		mesh_free(&m);
+	}
+	CHECK(prim_sphere_rel_error(PRIM_SPHERE_MIN_SEGMENTS) < 0.01, "the coarsest level errs %.3g of the radius",
+	      prim_sphere_rel_error(PRIM_SPHERE_MIN_SEGMENTS));
+}
+
+/* The plane seen from an eye: on the plane, facing its normal, closed (every inner edge shared by
+ * two triangles: no T-junctions), covering the square out to the horizon's distance around the
+ * eye's foot, and its UVs do not move with the eye. */
+static void check_plane_view(void)
+{
+	mesh m, m2;
+	vec3 eye = v3(3, 2, -1);
+	CHECK(prim_plane_view(v3(0, 2, 0), 0.5f, eye, 1e-4f, &m), "plane seen from an eye");
+	double half = 1.5 / tan(1e-4), lo_x = INFINITY, hi_x = -INFINITY, area = 0.0;
+	for (uint32_t v = 0; v < m.num_vertices; v++) {
+		CHECK_NEAR(m.positions[v].y, 0.5, 1e-6 * half);
+		lo_x = fmin(lo_x, m.positions[v].x), hi_x = fmax(hi_x, m.positions[v].x);
+	}
+	CHECK(lo_x <= 3 - half && hi_x >= 3 + half, "the plane spans x %g to %g, %g either side of the foot wanted",
+	      lo_x, hi_x, half);
+	long open = 0;
+	for (uint32_t f = 0; f < m.num_triangles; f++) {
+		const uint32_t *ix = m.indices + 3 * f;
+		vec3 ng = v3_cross(v3_sub(m.positions[ix[1]], m.positions[ix[0]]), v3_sub(m.positions[ix[2]], m.positions[ix[0]]));
+		CHECK(ng.y > 0, "plane triangle %u faces along the normal", f);
+		area += 0.5 * v3_length(ng);
+		for (int e = 0; e < 3; e++) {
+			uint32_t a = ix[e], b = ix[(e + 1) % 3];
+			int shared = 0;
+			for (uint32_t g = 0; g < m.num_triangles; g++)
+				for (int k = 0; k < 3; k++)
+					shared += m.indices[3 * g + k] == b && m.indices[3 * g + (k + 1) % 3] == a;
+			open += shared != 1;
+		}
+	}
+	CHECK(open == 4, "%ld edges without their twin (the outer square's 4 expected)", open);
+	CHECK_NEAR(area, (hi_x - lo_x) * (hi_x - lo_x), 1e-4 * (hi_x - lo_x) * (hi_x - lo_x));
+	/* The same point of the plane has the same UV seen from elsewhere. */
+	CHECK(prim_plane_view(v3(0, 2, 0), 0.5f, v3(-7, 9, 4), 1e-4f, &m2), "another eye");
+	vec2 uv = m.uvs[0];
+	vec3 p = m.positions[0];
+	vec3 b1, b2;
+	v3_basis(v3(0, 1, 0), &b1, &b2);
+	vec3 q = m2.positions[0];
+	vec3 d = v3_sub(p, q);
+	CHECK_NEAR(uv.x - m2.uvs[0].x, v3_dot(d, b1), 1e-6 * half);
+	CHECK_NEAR(uv.y - m2.uvs[0].y, v3_dot(d, b2), 1e-6 * half);
+	mesh_free(&m), mesh_free(&m2);
+	CHECK(!prim_plane_view(v3(0, 0, 0), 0.0f, eye, 1e-4f, &m), "a zero normal is refused");
+	/* An eye on the plane still gets a plane reaching out under the scene. */
+	CHECK(prim_plane_view(v3(0, 1, 0), 0.0f, v3(0, 0, 0), 1e-4f, &m) && m.num_triangles > 0, "eye on the plane");
+	mesh_free(&m);
+	/* The rings scale with the scene: seen from 1e-8 above, the innermost square is 1e-8 wide. */
+	CHECK(prim_plane_view(v3(0, 1, 0), 0.0f, v3(3e-8f, 1e-8f, 0), 1e-4f, &m), "a scene of 1e-8");
+	float inner = 0.0f;
+	for (uint32_t v = 0; v < 4; v++)
+		inner = fmaxf(inner, fabsf(m.positions[v].z));
+	CHECK(inner > 0.99e-8f && inner < 1.01e-8f, "the innermost ring's half-size is %g, expected 1e-8", inner);
+	mesh_free(&m);
 }
 
 static void check_arrays(void)
@@ -241,6 +328,8 @@ int main(void)
 {
 	check_ply();
 	check_prims();
+	check_sphere_levels();
+	check_plane_view();
 	check_arrays();
 	check_import();
 	return check_done("test_mesh");

@@ -4,6 +4,7 @@
  * and materials reach the hit, and bad assets are errors at their place in the scene. */
 #include "check.h"
 #include "lang/lang.h"
+#include "geom/prim.h"
 #include "render/world.h"
 
 #include <math.h>
@@ -27,7 +28,7 @@ static bool build(const char *text, world *w, char **errors)
 	diag_init(&d, mem);
 	scene *sc = NULL;
 	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK;
-	world_options o = {.width = 64, .height = 48};
+	world_options o = {.width = 640, .height = 480};
 	ok = ok && world_build(w, sc, &o, &d);
 	scene_free(sc);
 	diag_free(&d);
@@ -40,6 +41,82 @@ static bool trace(const world *w, vec3 o, vec3 dir_, render_hit *h)
 {
 	render_ray r = {o, v3_normalize(dir_)};
 	return w->rs.intersect(w->rs.user, &r, 0.0f, INFINITY, h);
+}
+
+/* Pixels of the silhouette's radius of a sphere of radius r at distance dist, in the 640x480
+ * image of build() under POV-Ray's default angle (2 atan(1.33 / 2); vertical half-angle 0.5). */
+static double radius_px(double r, double dist) { return 240.0 / 0.5 * r / sqrt(dist * dist - r * r); }
+
+/* Level k on a sphere of radius px on screen: silhouette and edges within world.h's bounds. */
+static bool level_fits(uint32_t k, double px)
+{
+	uint32_t seg = prim_sphere_level_segments(k);
+	return prim_sphere_rel_error(seg) * px <= WORLD_SPHERE_MAX_ERROR_PX && 2 * M_PI * px / seg <= WORLD_SPHERE_MAX_EDGE_PX;
+}
+
+/* Spheres are instances of shared unit spheres, each at the coarsest level whose silhouette is
+ * within WORLD_SPHERE_MAX_ERROR_PX of the round one and whose edges are short enough on screen
+ * (WORLD_SPHERE_MAX_EDGE_PX), else the finest: a small far sphere and a large near one get
+ * different levels, and the rays still meet them where the analytic sphere is, within that error. */
+static void check_sphere_levels(void)
+{
+	world w;
+	char *err = NULL;
+	bool ok = build("camera { location <0, 0, -10> look_at 0 }\n"
+			"sphere { <0, 0, 100>, 0.1 }\n"
+			"sphere { <0, 0, -5>, 2 }\n"
+			"sphere { <3, 0, 100>, 0.1 }\n",
+			&w, &err);
+	CHECK(ok, "spheres: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	/* The third is off the axis: its image stretches by 1 / cos^2 along the radius. */
+	double r[3] = {0.1, 2, 0.1}, dist[3] = {110, 5, sqrt(110 * 110 + 9)}, cos2[3] = {1, 1, 110 * 110 / (110 * 110 + 9.0)};
+	uint32_t level[3];
+	for (int i = 0; i < 3; i++) {
+		ptrdiff_t k = w.insts[i].g - w.geoms - (ptrdiff_t)w.unit_spheres;
+		CHECK(k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS, "sphere %d is an instance of a unit sphere (%td)", i, k);
+		level[i] = k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS ? (uint32_t)k : 0;
+		double px = radius_px(r[i], dist[i]) / cos2[i];
+		CHECK((level_fits(level[i], px) || level[i] == PRIM_SPHERE_LEVELS - 1) &&
+			      (level[i] == 0 || !level_fits(level[i] - 1, px)),
+		      "sphere %d, %.1f px: level %u errs %.3g px, edges %.3g px", i, px, level[i],
+		      prim_sphere_rel_error(prim_sphere_level_segments(level[i])) * px,
+		      2 * M_PI * px / prim_sphere_level_segments(level[i]));
+	}
+	CHECK(level[0] == 0 && level[1] >= 3, "the small far sphere gets level %u, the large near one %u", level[0],
+	      level[1]);
+	CHECK(w.insts[0].g == w.insts[2].g, "spheres alike on screen share one mesh");
+	render_hit h;
+	CHECK(trace(&w, v3(0, 0, -10), v3(0, 0, 1), &h), "hit the near sphere");
+	CHECK_NEAR(h.t, 3.0, 2 * prim_sphere_rel_error(prim_sphere_level_segments(level[1])));
+	CHECK(trace(&w, v3(3, 0, 0), v3(0, 0, 1), &h) && h.object == 2, "hit the far sphere at x = 3");
+	CHECK_NEAR(h.t, 99.9, 0.1 * prim_sphere_rel_error(prim_sphere_level_segments(level[2])) + 1e-4);
+	world_free(&w);
+}
+
+/* Ten thousand spheres cost a few unit spheres and their instances, not ten thousand meshes. */
+static void check_many_spheres(void)
+{
+	world w;
+	char *err = NULL;
+	bool ok = build("camera { location <0, 0, -30> look_at 0 }\n"
+			"#declare I = 0;\n"
+			"#while (I < 10000)\n"
+			"  sphere { <mod(I, 100) * 0.2 - 10, floor(I / 100) * 0.2 - 10, 0>, 0.08 }\n"
+			"  #declare I = I + 1;\n"
+			"#end\n",
+			&w, &err);
+	CHECK(ok, "10^4 spheres: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	CHECK(w.n_insts == 10000, "%zu instances", w.n_insts);
+	CHECK(w.stats.triangles <= 20000, "%zu unique triangles for 10^4 spheres", w.stats.triangles);
+	CHECK(w.stats.geometry_bytes <= (size_t)8 << 20, "meshes and BVHs of 10^4 spheres: %.1f MiB",
+	      w.stats.geometry_bytes / 1048576.0);
+	world_free(&w);
 }
 
 int main(void)
@@ -93,8 +170,9 @@ int main(void)
 	CHECK(w.insts[0].g != w.insts[1].g, "the flattened object has its own mesh");
 	world_free(&w);
 
-	/* Two plain instances of one geometry share it. */
-	ok = build("#declare S = sphere { <0, 0, 0>, 1 }\nobject { S }\nobject { S translate x * 3 }\n", &w, &err);
+	/* Two plain instances of one geometry, alike on screen, share its mesh. */
+	ok = build("camera { location <0, 0, -10> look_at 0 }\n#declare S = sphere { <0, 0, 0>, 1 }\nobject { S }\n"
+		   "object { S translate x * 3 }\n", &w, &err);
 	CHECK(ok, "instances: %s", err);
 	free(err);
 	if (ok) {
@@ -141,6 +219,9 @@ int main(void)
 			world_free(&w);
 		}
 	}
+
+	check_sphere_levels();
+	check_many_spheres();
 
 	/* Errors name the scene's place, the string of the file: a missing mesh file, a missing texture. */
 	ok = build("mesh { file \"nothere.obj\" }\n", &w, &err);
