@@ -60,6 +60,9 @@ const char *lang_describe(const lang_token *t, char *buf, size_t size)
 	case LTK_UNSUPPORTED:
 		snprintf(buf, size, "'%.*s'", (int)t->len, t->text);
 		break;
+	case LTK_UNSUPPORTED_DIRECTIVE:
+		snprintf(buf, size, "'#%.*s'", (int)t->len, t->text);
+		break;
 	default:
 		snprintf(buf, size, "%s", lang_tok_name(t->kind));
 	}
@@ -69,9 +72,10 @@ const char *lang_describe(const lang_token *t, char *buf, size_t size)
 /* The message for a token outside the language, or NULL. */
 static bool report_unsupported(parser *p, const lang_token *t)
 {
-	if (t->kind != LTK_UNSUPPORTED)
+	if (t->kind != LTK_UNSUPPORTED && t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 		return false;
-	lang_error(p, t->loc, "'%.*s' is not supported by circe", (int)t->len, t->text);
+	lang_error(p, t->loc, "'%s%.*s' is not supported by circe", t->kind == LTK_UNSUPPORTED ? "" : "#", (int)t->len,
+		   t->text);
 	return true;
 }
 
@@ -602,10 +606,9 @@ static bool fetch(parser *p, lang_token *t)
 			return false;
 		}
 		release_behind(f);
-		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF &&
-		    !(t->kind == LTK_UNSUPPORTED && t->text[0] == '#'))
+		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF && t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 			return true;
-		if (t->kind == LTK_UNSUPPORTED) {
+		if (t->kind == LTK_UNSUPPORTED_DIRECTIVE) {
 			report_unsupported(p, t);
 			*t = p->eof;
 			return false;
