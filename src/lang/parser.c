@@ -96,9 +96,9 @@ bool lang_error_found(parser *p, const char *fmt, ...)
 
 bool lang_enter(parser *p, diag_loc loc)
 {
-	if (++p->depth > LANG_MAX_NESTING) {
+	if (++p->depth > LANG_MAX_DEPTH) {
 		p->depth--;
-		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_NESTING);
+		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
 	}
 	return true;
 }
@@ -484,8 +484,8 @@ static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_
 
 static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 {
-	if (p->n_conds >= LANG_MAX_NESTING)
-		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_NESTING);
+	if (p->n_conds >= LANG_MAX_DEPTH)
+		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_DEPTH);
 	cond *c = &p->conds[p->n_conds++];
 	c->kind = kind;
 	c->loc = loc;
@@ -590,6 +590,27 @@ static bool end_of_file(parser *p, const lang_token *t)
 	return true;
 }
 
+/* Runs one directive. A directive reads its operands through the token stream, which may run
+ * further directives inside it (`#declare X = #if ...`): each counts a level of LANG_MAX_DEPTH. */
+static bool run_directive(parser *p, const lang_token *dir)
+{
+	if (!lang_enter(p, dir->loc))
+		return false;
+	bool ok;
+	switch (dir->kind) {
+	case LTK_DIR_INCLUDE: ok = do_include(p, dir->loc); break;
+	case LTK_DIR_DECLARE:
+	case LTK_DIR_LOCAL: ok = do_declare(p, dir); break;
+	case LTK_DIR_IF: ok = do_if(p, dir->loc); break;
+	case LTK_DIR_ELSE: ok = do_else(p, dir->loc); break;
+	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
+	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
+	default: ok = do_version(p); break;
+	}
+	lang_leave(p);
+	return ok;
+}
+
 /* The next token after running directives. */
 static bool fetch(parser *p, lang_token *t)
 {
@@ -623,18 +644,7 @@ static bool fetch(parser *p, lang_token *t)
 		if (p->directive_expr)
 			return true; /* "expected ';' ..., found '#declare'" */
 		lang_token dir = *t;
-		bool ok;
-		switch (dir.kind) {
-		case LTK_DIR_INCLUDE: ok = do_include(p, dir.loc); break;
-		case LTK_DIR_DECLARE:
-		case LTK_DIR_LOCAL: ok = do_declare(p, &dir); break;
-		case LTK_DIR_IF: ok = do_if(p, dir.loc); break;
-		case LTK_DIR_ELSE: ok = do_else(p, dir.loc); break;
-		case LTK_DIR_END: ok = do_end(p, dir.loc); break;
-		case LTK_DIR_WHILE: ok = do_while(p, dir.loc); break;
-		default: ok = do_version(p); break;
-		}
-		if (!ok) {
+		if (!run_directive(p, &dir)) {
 			p->failed = true;
 			*t = p->eof;
 			return false;
@@ -958,7 +968,11 @@ static bool primary(parser *p, value *out)
 		diag_loc loc = t->loc;
 		if (lang_advance(p)->kind != LTK_KW_RGB)
 			lang_accept(p, LTK_KW_RGB);
-		if (!expr_additive(p, out))
+		if (!lang_enter(p, loc)) /* rgb rgb rgb ... recurses */
+			return false;
+		bool ok = expr_additive(p, out);
+		lang_leave(p);
+		if (!ok)
 			return false;
 		if (out->kind == VAL_FLOAT) {
 			out->v[1] = out->v[2] = out->v[0];

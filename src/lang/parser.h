@@ -59,7 +59,7 @@ typedef struct parser {
 	lang_options opt;
 	include_frame files[LANG_MAX_INCLUDE_DEPTH + 1];
 	int n_files;
-	cond conds[LANG_MAX_NESTING];
+	cond conds[LANG_MAX_DEPTH];
 	int n_conds;
 	lang_token tok; /* the lookahead, when have_tok */
 	bool have_tok;
