@@ -444,13 +444,37 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
 	return ok;
 }
 
-/* Skips raw tokens up to the #else (when stop_at_else) or #end that matches the current level.
- * *found_else tells which one ended the skip. */
-static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_else, bool *found_else)
+/* POV-Ray's block directives that circe does not run: a skipped branch still pairs each with its
+ * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
+static bool opens_pov_block(const lang_token *t)
 {
+	static const char *const names[] = {"for", "ifdef", "ifndef", "macro", "switch"};
+	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
+		return false;
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strlen(names[i]) == t->len && !memcmp(names[i], t->text, t->len))
+			return true;
+	return false;
+}
+
+/* What a skip is looking for at its own level (not inside the blocks nested in it). */
+typedef enum skip_kind {
+	SKIP_THEN, /* a false #if's branch: up to its #else or #end */
+	SKIP_ELSE, /* the #else branch of a true #if: up to #end; a second #else is an error */
+	SKIP_WHILE /* a false #while's body: up to #end; #else is an error */
+} skip_kind;
+
+/* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open;
+ * *else_at receives the #else that ended a SKIP_THEN skip (loc.line 0: none, the #end ended it).
+ * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
+ * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level; at the outer
+ * level '#elseif' is refused, as it is where circe runs the tokens. */
+static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_else, diag_loc *else_at)
+{
+	const char *what = kind == SKIP_WHILE ? "#while" : "#if";
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	int level = 0;
-	*found_else = false;
+	else_at->line = 0;
 	for (;;) {
 		lang_token t;
 		if (!lang_lex(lx, p->d, &t)) {
@@ -466,12 +490,23 @@ static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_
 		case LTK_DIR_WHILE:
 			level++;
 			break;
+		case LTK_UNSUPPORTED_DIRECTIVE:
+			if (opens_pov_block(&t))
+				level++;
+			else if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6))
+				return report_unsupported(p, &t), false;
+			break;
 		case LTK_DIR_ELSE:
-			if (level == 0 && stop_at_else) {
-				*found_else = true;
+			if (level > 0)
+				break;
+			if (kind == SKIP_THEN) {
+				*else_at = t.loc;
 				return true;
 			}
-			break;
+			if (kind == SKIP_WHILE)
+				return lang_error(p, t.loc, "'#else' without '#if'");
+			return lang_error(p, t.loc, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
+					  open.line, first_else.line);
 		case LTK_DIR_END:
 			if (level-- == 0)
 				return true;
@@ -497,24 +532,44 @@ static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 /* if = "#if" "(" expression ")" { token } [ "#else" { token } ] "#end" */
 static bool do_if(parser *p, diag_loc loc)
 {
-	bool truth, found_else;
+	bool truth;
+	diag_loc else_at;
 	if (!cond_expr(p, "after '#if'", &truth))
 		return false;
 	if (truth)
 		return push_cond(p, COND_IF, loc);
-	if (!skip_block(p, loc, "#if", true, &found_else))
+	if (!skip_block(p, loc, SKIP_THEN, diag_noloc(), &else_at))
 		return false;
-	return found_else ? push_cond(p, COND_ELSE, loc) : true;
+	if (else_at.line == 0)
+		return true;
+	if (!push_cond(p, COND_ELSE, loc))
+		return false;
+	p->conds[p->n_conds - 1].else_loc = else_at;
+	return true;
 }
 
 static bool do_else(parser *p, diag_loc loc)
 {
-	bool found_else;
-	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind != COND_IF)
+	diag_loc none;
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE)
 		return lang_error(p, loc, "'#else' without '#if'");
 	cond c = p->conds[--p->n_conds];
-	if (!skip_block(p, c.loc, "#if", false, &found_else))
-		return false;
+	if (c.kind == COND_ELSE)
+		return lang_error(p, loc, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
+				  c.loc.line, c.else_loc.line);
+	return skip_block(p, c.loc, SKIP_ELSE, loc, &none);
+}
+
+/* Counts an iteration that the loop c begins. The limits count iterations begun: a loop of
+ * exactly max_loop_iterations runs, one more is refused (and so for the scene's total). */
+static bool begin_iteration(parser *p, cond *c)
+{
+	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
+	if (++c->iterations > limit)
+		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
+	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
+	if (++p->total_iterations > total)
+		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	return true;
 }
 
@@ -522,17 +577,19 @@ static bool do_else(parser *p, diag_loc loc)
 static bool do_while(parser *p, diag_loc loc)
 {
 	lang_lexer restart = p->files[p->n_files - 1].lx;
-	bool truth, found_else;
+	bool truth;
+	diag_loc none;
 	if (!cond_expr(p, "after '#while'", &truth))
 		return false;
 	if (!truth)
-		return skip_block(p, loc, "#while", false, &found_else);
+		return skip_block(p, loc, SKIP_WHILE, diag_noloc(), &none);
 	if (!push_cond(p, COND_WHILE, loc))
 		return false;
 	p->conds[p->n_conds - 1].restart = restart;
-	return true;
+	return begin_iteration(p, &p->conds[p->n_conds - 1]);
 }
 
+/* At a #while's #end: one more iteration when the condition still holds. */
 static bool do_end(parser *p, diag_loc loc)
 {
 	if (p->n_conds <= p->files[p->n_files - 1].cond_base)
@@ -542,12 +599,6 @@ static bool do_end(parser *p, diag_loc loc)
 		p->n_conds--;
 		return true;
 	}
-	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
-	if (++c->iterations >= limit)
-		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
-	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
-	if (++p->total_iterations >= total)
-		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	lang_lexer after_end = *lx;
 	*lx = c->restart;
@@ -557,8 +608,9 @@ static bool do_end(parser *p, diag_loc loc)
 	if (!truth) {
 		*lx = after_end;
 		p->n_conds--;
+		return true;
 	}
-	return true;
+	return begin_iteration(p, c);
 }
 
 /* version = "#version" expression ";" */

@@ -42,8 +42,9 @@ typedef struct cond {
 	cond_kind kind;
 	diag_loc loc;
 	int file; /* index into files */
+	diag_loc else_loc; /* COND_ELSE: its #else */
 	lang_lexer restart; /* COND_WHILE: just after the `#while` word */
-	long iterations;
+	long iterations; /* COND_WHILE: begun so far */
 } cond;
 
 typedef struct symbol {
