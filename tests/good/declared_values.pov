@@ -1,6 +1,6 @@
 // declared_values: a declared float, vector, colour or string works everywhere a literal one may stand
-// (issue 14.7: a light's colour, an SSS block's colour, and every other item). Written beside a
-// literal twin: both parse to the same IR but for the source locations.
+// (issue 14.7: a light's colour, an SSS block's colour, and every other item). Its IR equals that
+// of declared_values_literal.pov but for the source locations (tests/lang/good_scenes.sh checks).
 #declare F = 0.5;  #declare F2 = 0.25;  #declare G = 1.5;  #declare N = 7;  #declare A = 40;
 #declare V = <0, 1, -5>;  #declare LA = <0, 0.5, 0>;  #declare Up = <0, 1, 0>;  #declare R = <1.5, 0, 0>;
 #declare Rot = <0, 30, 0>;  #declare W = rgb <1, 0.9, 0.8>;  #declare C = color rgb <0.1, 0.2, 0.3>;
@@ -13,7 +13,8 @@ global_settings { mm_per_unit Two max_trace_level N assumed_gamma G }
 camera { perspective location V look_at LA sky Up angle A right R up Up aperture F2 focal_point LA }
 light_source { <0, 5, -5> W }
 light_source { <0, 5, -5>, W intensity Three radius F }
-light_source { <0, 5, -5> W * F spotlight radius 20 falloff 30 point_at LA }
+#declare Cone = 20; #declare Fall = 30;
+light_source { V W * F spotlight radius Cone falloff Fall point_at LA }
 background { C }
 sky_sphere { image Sky intensity F rotate Rot }
 sphere { V, F translate LA rotate Rot scale Three scale <One, Two, G> }
@@ -33,3 +34,7 @@ sphere { 0, One material { wax { C radius W } } }
 sphere { 0, One material { marble { color C radius W * 2 } } }
 sphere { 0, One material { skin { preset Pre } } }
 sphere { 0, One material { skin { image Alb radius W } } }
+sphere { 0, One pigment { image_map { png Alb } } }
+sphere { 0, One material { diffuse { image Alb } } }
+mesh { file NM }
+subdivision_surface { file Sky }
