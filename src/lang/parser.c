@@ -457,6 +457,12 @@ static bool opens_pov_block(const lang_token *t)
 	return false;
 }
 
+static bool second_else(parser *p, diag_loc at, diag_loc if_loc, diag_loc first_else)
+{
+	return lang_error(p, at, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
+			  if_loc.line, first_else.line);
+}
+
 /* What a skip is looking for at its own level (not inside the blocks nested in it). */
 typedef enum skip_kind {
 	SKIP_THEN, /* a false #if's branch: up to its #else or #end */
@@ -465,7 +471,7 @@ typedef enum skip_kind {
 } skip_kind;
 
 /* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open;
- * *else_at receives the #else that ended a SKIP_THEN skip (loc.line 0: none, the #end ended it).
+ * for SKIP_THEN, *else_at receives the #else that ended the skip (line 0: the #end ended it).
  * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
  * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level; at the outer
  * level '#elseif' is refused, as it is where circe runs the tokens. */
@@ -474,7 +480,8 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 	const char *what = kind == SKIP_WHILE ? "#while" : "#if";
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	int level = 0;
-	else_at->line = 0;
+	if (else_at)
+		else_at->line = 0;
 	for (;;) {
 		lang_token t;
 		if (!lang_lex(lx, p->d, &t)) {
@@ -491,10 +498,12 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 			level++;
 			break;
 		case LTK_UNSUPPORTED_DIRECTIVE:
-			if (opens_pov_block(&t))
+			if (opens_pov_block(&t)) {
 				level++;
-			else if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6))
-				return report_unsupported(p, &t), false;
+			} else if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6)) {
+				report_unsupported(p, &t);
+				return false;
+			}
 			break;
 		case LTK_DIR_ELSE:
 			if (level > 0)
@@ -505,8 +514,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 			}
 			if (kind == SKIP_WHILE)
 				return lang_error(p, t.loc, "'#else' without '#if'");
-			return lang_error(p, t.loc, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
-					  open.line, first_else.line);
+			return second_else(p, t.loc, open, first_else);
 		case LTK_DIR_END:
 			if (level-- == 0)
 				return true;
@@ -550,14 +558,12 @@ static bool do_if(parser *p, diag_loc loc)
 
 static bool do_else(parser *p, diag_loc loc)
 {
-	diag_loc none;
 	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE)
 		return lang_error(p, loc, "'#else' without '#if'");
 	cond c = p->conds[--p->n_conds];
 	if (c.kind == COND_ELSE)
-		return lang_error(p, loc, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
-				  c.loc.line, c.else_loc.line);
-	return skip_block(p, c.loc, SKIP_ELSE, loc, &none);
+		return second_else(p, loc, c.loc, c.else_loc);
+	return skip_block(p, c.loc, SKIP_ELSE, loc, NULL);
 }
 
 /* Counts an iteration that the loop c begins. The limits count iterations begun: a loop of
@@ -578,11 +584,10 @@ static bool do_while(parser *p, diag_loc loc)
 {
 	lang_lexer restart = p->files[p->n_files - 1].lx;
 	bool truth;
-	diag_loc none;
 	if (!cond_expr(p, "after '#while'", &truth))
 		return false;
 	if (!truth)
-		return skip_block(p, loc, SKIP_WHILE, diag_noloc(), &none);
+		return skip_block(p, loc, SKIP_WHILE, diag_noloc(), NULL);
 	if (!push_cond(p, COND_WHILE, loc))
 		return false;
 	p->conds[p->n_conds - 1].restart = restart;
