@@ -14,7 +14,8 @@
 /* Limits that keep hostile input harmless; each is stated in its error message. */
 enum {
 	LANG_MAX_INCLUDE_DEPTH = 64,
-	LANG_MAX_NESTING = 200, /* nested blocks, parentheses, directives */
+	LANG_MAX_DEPTH = 200, /* recursion: nested blocks, parentheses, unary operators, colours,
+				 directives run inside others (#declare X = #while ...), #if/#while */
 	LANG_MAX_LOOP_ITERATIONS = 1000000, /* per #while loop */
 	LANG_MAX_VECTOR = 16, /* components of a vector literal (the matrix needs 12) */
 };

@@ -86,6 +86,7 @@ const char *lang_tok_name(lang_tok k)
 {
 	static const char *const punct[] = {
 		"end of file", "a number", "a string", "an identifier", "an unsupported word",
+		"an unsupported directive",
 		"'{'", "'}'", "'('", "')'", "'<'", "'>'", "'<='", "'>='", "'='", "'!='", "','", "';'",
 		"'+'", "'-'", "'*'", "'/'", "'!'", "'&'", "'|'", "'?'", "':'", "'.'"};
 	static const char *const names[] = {
@@ -291,9 +292,7 @@ static bool lex_word(lang_lexer *lx, diag *d, lang_token *t, bool directive)
 				return true;
 			}
 		if (find_word(unsupported_directives, N_OF(unsupported_directives), sizeof(char *), s, n) >= 0) {
-			t->kind = LTK_UNSUPPORTED;
-			t->text = s - 1; /* the name includes '#' */
-			t->len = (uint32_t)n + 1;
+			t->kind = LTK_UNSUPPORTED_DIRECTIVE; /* blanks may stand between '#' and s */
 			return true;
 		}
 		if (n == 0)

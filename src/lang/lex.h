@@ -1,7 +1,8 @@
 /* lex.h - the lexer of the scene language: turns one source text into tokens that carry their
  * file:line:col. Keywords come from one table (LANG_KEYWORDS) tied to the token enum; POV-Ray words
- * outside the language come from a second table and lex as LTK_UNSUPPORTED, so the parser can say
- * "X is not supported by circe" wherever they appear. Directives (`#declare`, ...) are single tokens. */
+ * outside the language come from a second table and lex as LTK_UNSUPPORTED (directives as
+ * LTK_UNSUPPORTED_DIRECTIVE), so the parser can say "X is not supported by circe" wherever they
+ * appear. Directives (`#declare`, `#  declare`, ...) are single tokens. */
 #ifndef CIRCE_LANG_LEX_H
 #define CIRCE_LANG_LEX_H
 
@@ -62,7 +63,8 @@ typedef enum lang_tok {
 	LTK_NUMBER,
 	LTK_STRING,
 	LTK_IDENT,
-	LTK_UNSUPPORTED, /* a POV-Ray word or directive outside the language */
+	LTK_UNSUPPORTED, /* a POV-Ray word outside the language */
+	LTK_UNSUPPORTED_DIRECTIVE, /* a POV-Ray directive outside the language: text is its name, no '#' */
 	LTK_LBRACE, LTK_RBRACE, LTK_LPAREN, LTK_RPAREN, LTK_LT, LTK_GT, LTK_LE, LTK_GE,
 	LTK_EQ, LTK_NE, LTK_COMMA, LTK_SEMI, LTK_PLUS, LTK_MINUS, LTK_STAR, LTK_SLASH,
 	LTK_BANG, LTK_AMP, LTK_BAR, LTK_QUESTION, LTK_COLON, LTK_DOT,

@@ -60,6 +60,9 @@ const char *lang_describe(const lang_token *t, char *buf, size_t size)
 	case LTK_UNSUPPORTED:
 		snprintf(buf, size, "'%.*s'", (int)t->len, t->text);
 		break;
+	case LTK_UNSUPPORTED_DIRECTIVE:
+		snprintf(buf, size, "'#%.*s'", (int)t->len, t->text);
+		break;
 	default:
 		snprintf(buf, size, "%s", lang_tok_name(t->kind));
 	}
@@ -69,9 +72,10 @@ const char *lang_describe(const lang_token *t, char *buf, size_t size)
 /* The message for a token outside the language, or NULL. */
 static bool report_unsupported(parser *p, const lang_token *t)
 {
-	if (t->kind != LTK_UNSUPPORTED)
+	if (t->kind != LTK_UNSUPPORTED && t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 		return false;
-	lang_error(p, t->loc, "'%.*s' is not supported by circe", (int)t->len, t->text);
+	lang_error(p, t->loc, "'%s%.*s' is not supported by circe", t->kind == LTK_UNSUPPORTED ? "" : "#", (int)t->len,
+		   t->text);
 	return true;
 }
 
@@ -92,9 +96,9 @@ bool lang_error_found(parser *p, const char *fmt, ...)
 
 bool lang_enter(parser *p, diag_loc loc)
 {
-	if (++p->depth > LANG_MAX_NESTING) {
+	if (++p->depth > LANG_MAX_DEPTH) {
 		p->depth--;
-		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_NESTING);
+		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
 	}
 	return true;
 }
@@ -446,13 +450,44 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
 	return ok;
 }
 
-/* Skips raw tokens up to the #else (when stop_at_else) or #end that matches the current level.
- * *found_else tells which one ended the skip. */
-static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_else, bool *found_else)
+/* POV-Ray's block directives that circe does not run: a skipped branch still pairs each with its
+ * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
+static bool opens_pov_block(const lang_token *t)
 {
+	static const char *const names[] = {"for", "ifdef", "ifndef", "macro", "switch"};
+	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
+		return false;
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strlen(names[i]) == t->len && !memcmp(names[i], t->text, t->len))
+			return true;
+	return false;
+}
+
+static bool second_else(parser *p, diag_loc at, diag_loc if_loc, diag_loc first_else)
+{
+	return lang_error(p, at, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
+			  if_loc.line, first_else.line);
+}
+
+/* What a skip is looking for at its own level (not inside the blocks nested in it). */
+typedef enum skip_kind {
+	SKIP_THEN, /* a false #if's branch: up to its #else or #end */
+	SKIP_ELSE, /* the #else branch of a true #if: up to #end; a second #else is an error */
+	SKIP_WHILE /* a false #while's body: up to #end; #else is an error */
+} skip_kind;
+
+/* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open;
+ * for SKIP_THEN, *else_at receives the #else that ended the skip (line 0: the #end ended it).
+ * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
+ * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level; at the outer
+ * level '#elseif' is refused, as it is where circe runs the tokens. */
+static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_else, diag_loc *else_at)
+{
+	const char *what = kind == SKIP_WHILE ? "#while" : "#if";
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	int level = 0;
-	*found_else = false;
+	if (else_at)
+		else_at->line = 0;
 	for (;;) {
 		lang_token t;
 		if (!lang_lex(lx, p->d, &t)) {
@@ -468,12 +503,24 @@ static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_
 		case LTK_DIR_WHILE:
 			level++;
 			break;
-		case LTK_DIR_ELSE:
-			if (level == 0 && stop_at_else) {
-				*found_else = true;
-				return true;
+		case LTK_UNSUPPORTED_DIRECTIVE:
+			if (opens_pov_block(&t)) {
+				level++;
+			} else if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6)) {
+				report_unsupported(p, &t);
+				return false;
 			}
 			break;
+		case LTK_DIR_ELSE:
+			if (level > 0)
+				break;
+			if (kind == SKIP_THEN) {
+				*else_at = t.loc;
+				return true;
+			}
+			if (kind == SKIP_WHILE)
+				return lang_error(p, t.loc, "'#else' without '#if'");
+			return second_else(p, t.loc, open, first_else);
 		case LTK_DIR_END:
 			if (level-- == 0)
 				return true;
@@ -486,8 +533,8 @@ static bool skip_block(parser *p, diag_loc open, const char *what, bool stop_at_
 
 static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 {
-	if (p->n_conds >= LANG_MAX_NESTING)
-		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_NESTING);
+	if (p->n_conds >= LANG_MAX_DEPTH)
+		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_DEPTH);
 	cond *c = &p->conds[p->n_conds++];
 	c->kind = kind;
 	c->loc = loc;
@@ -499,24 +546,42 @@ static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 /* if = "#if" "(" expression ")" { token } [ "#else" { token } ] "#end" */
 static bool do_if(parser *p, diag_loc loc)
 {
-	bool truth, found_else;
+	bool truth;
+	diag_loc else_at;
 	if (!cond_expr(p, "after '#if'", &truth))
 		return false;
 	if (truth)
 		return push_cond(p, COND_IF, loc);
-	if (!skip_block(p, loc, "#if", true, &found_else))
+	if (!skip_block(p, loc, SKIP_THEN, diag_noloc(), &else_at))
 		return false;
-	return found_else ? push_cond(p, COND_ELSE, loc) : true;
+	if (else_at.line == 0)
+		return true;
+	if (!push_cond(p, COND_ELSE, loc))
+		return false;
+	p->conds[p->n_conds - 1].else_loc = else_at;
+	return true;
 }
 
 static bool do_else(parser *p, diag_loc loc)
 {
-	bool found_else;
-	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind != COND_IF)
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE)
 		return lang_error(p, loc, "'#else' without '#if'");
 	cond c = p->conds[--p->n_conds];
-	if (!skip_block(p, c.loc, "#if", false, &found_else))
-		return false;
+	if (c.kind == COND_ELSE)
+		return second_else(p, loc, c.loc, c.else_loc);
+	return skip_block(p, c.loc, SKIP_ELSE, loc, NULL);
+}
+
+/* Counts an iteration that the loop c begins. The limits count iterations begun: a loop of
+ * exactly max_loop_iterations runs, one more is refused (and so for the scene's total). */
+static bool begin_iteration(parser *p, cond *c)
+{
+	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
+	if (++c->iterations > limit)
+		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
+	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
+	if (++p->total_iterations > total)
+		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	return true;
 }
 
@@ -524,17 +589,18 @@ static bool do_else(parser *p, diag_loc loc)
 static bool do_while(parser *p, diag_loc loc)
 {
 	lang_lexer restart = p->files[p->n_files - 1].lx;
-	bool truth, found_else;
+	bool truth;
 	if (!cond_expr(p, "after '#while'", &truth))
 		return false;
 	if (!truth)
-		return skip_block(p, loc, "#while", false, &found_else);
+		return skip_block(p, loc, SKIP_WHILE, diag_noloc(), NULL);
 	if (!push_cond(p, COND_WHILE, loc))
 		return false;
 	p->conds[p->n_conds - 1].restart = restart;
-	return true;
+	return begin_iteration(p, &p->conds[p->n_conds - 1]);
 }
 
+/* At a #while's #end: one more iteration when the condition still holds. */
 static bool do_end(parser *p, diag_loc loc)
 {
 	if (p->n_conds <= p->files[p->n_files - 1].cond_base)
@@ -544,12 +610,6 @@ static bool do_end(parser *p, diag_loc loc)
 		p->n_conds--;
 		return true;
 	}
-	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
-	if (++c->iterations >= limit)
-		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
-	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
-	if (++p->total_iterations >= total)
-		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	lang_lexer after_end = *lx;
 	*lx = c->restart;
@@ -559,8 +619,9 @@ static bool do_end(parser *p, diag_loc loc)
 	if (!truth) {
 		*lx = after_end;
 		p->n_conds--;
+		return true;
 	}
-	return true;
+	return begin_iteration(p, c);
 }
 
 /* version = "#version" expression ";" */
@@ -592,6 +653,27 @@ static bool end_of_file(parser *p, const lang_token *t)
 	return true;
 }
 
+/* Runs one directive. A directive reads its operands through the token stream, which may run
+ * further directives inside it (`#declare X = #if ...`): each counts a level of LANG_MAX_DEPTH. */
+static bool run_directive(parser *p, const lang_token *dir)
+{
+	if (!lang_enter(p, dir->loc))
+		return false;
+	bool ok;
+	switch (dir->kind) {
+	case LTK_DIR_INCLUDE: ok = do_include(p, dir->loc); break;
+	case LTK_DIR_DECLARE:
+	case LTK_DIR_LOCAL: ok = do_declare(p, dir); break;
+	case LTK_DIR_IF: ok = do_if(p, dir->loc); break;
+	case LTK_DIR_ELSE: ok = do_else(p, dir->loc); break;
+	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
+	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
+	default: ok = do_version(p); break;
+	}
+	lang_leave(p);
+	return ok;
+}
+
 /* The next token after running directives. */
 static bool fetch(parser *p, lang_token *t)
 {
@@ -608,10 +690,9 @@ static bool fetch(parser *p, lang_token *t)
 			return false;
 		}
 		release_behind(f);
-		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF &&
-		    !(t->kind == LTK_UNSUPPORTED && t->text[0] == '#'))
+		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF && t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 			return true;
-		if (t->kind == LTK_UNSUPPORTED) {
+		if (t->kind == LTK_UNSUPPORTED_DIRECTIVE) {
 			report_unsupported(p, t);
 			*t = p->eof;
 			return false;
@@ -626,18 +707,7 @@ static bool fetch(parser *p, lang_token *t)
 		if (p->directive_expr)
 			return true; /* "expected ';' ..., found '#declare'" */
 		lang_token dir = *t;
-		bool ok;
-		switch (dir.kind) {
-		case LTK_DIR_INCLUDE: ok = do_include(p, dir.loc); break;
-		case LTK_DIR_DECLARE:
-		case LTK_DIR_LOCAL: ok = do_declare(p, &dir); break;
-		case LTK_DIR_IF: ok = do_if(p, dir.loc); break;
-		case LTK_DIR_ELSE: ok = do_else(p, dir.loc); break;
-		case LTK_DIR_END: ok = do_end(p, dir.loc); break;
-		case LTK_DIR_WHILE: ok = do_while(p, dir.loc); break;
-		default: ok = do_version(p); break;
-		}
-		if (!ok) {
+		if (!run_directive(p, &dir)) {
 			p->failed = true;
 			*t = p->eof;
 			return false;
@@ -961,7 +1031,11 @@ static bool primary(parser *p, value *out)
 		diag_loc loc = t->loc;
 		if (lang_advance(p)->kind != LTK_KW_RGB)
 			lang_accept(p, LTK_KW_RGB);
-		if (!expr_additive(p, out))
+		if (!lang_enter(p, loc)) /* rgb rgb rgb ... recurses */
+			return false;
+		bool ok = expr_additive(p, out);
+		lang_leave(p);
+		if (!ok)
 			return false;
 		if (out->kind == VAL_FLOAT) {
 			out->v[1] = out->v[2] = out->v[0];

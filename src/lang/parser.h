@@ -42,8 +42,9 @@ typedef struct cond {
 	cond_kind kind;
 	diag_loc loc;
 	int file; /* index into files */
+	diag_loc else_loc; /* COND_ELSE: its #else */
 	lang_lexer restart; /* COND_WHILE: just after the `#while` word */
-	long iterations;
+	long iterations; /* COND_WHILE: begun so far */
 } cond;
 
 typedef struct symbol {
@@ -59,7 +60,7 @@ typedef struct parser {
 	lang_options opt;
 	include_frame files[LANG_MAX_INCLUDE_DEPTH + 1];
 	int n_files;
-	cond conds[LANG_MAX_NESTING];
+	cond conds[LANG_MAX_DEPTH];
 	int n_conds;
 	lang_token tok; /* the lookahead, when have_tok */
 	bool have_tok;

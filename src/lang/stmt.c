@@ -67,6 +67,19 @@ static bool in_range(parser *p, diag_loc loc, const char *what, double x, double
 	return lang_error(p, loc, "%s must be in [%g, %g], found %g", what, lo, hi, x);
 }
 
+/* True when the lookahead starts a colour where an item keyword could stand instead (a light's
+ * colour, an SSS block's colour): 'color', 'colour', 'rgb' or a declared colour. */
+static bool starts_colour(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind == LTK_KW_COLOR || t->kind == LTK_KW_COLOUR || t->kind == LTK_KW_RGB)
+		return true;
+	if (t->kind != LTK_IDENT)
+		return false;
+	const symbol *s = lang_lookup(p, t->text, t->len);
+	return s && s->val.kind == VAL_COLOR;
+}
+
 /* A file named by the scene (mesh, cage, image, normal map): a relative path is resolved against
  * the folder of the file that names it, as #include does, so the IR holds paths that open as is.
  * The scene's asset list records it with the string's place, for the errors of opening it. */
@@ -274,7 +287,7 @@ static bool positive3(parser *p, diag_loc loc, const char *what, vec3 c)
 }
 
 /* sss_block = ( "skin" | "wax" | "marble" ) "{" { sss_param } "}"
- * sss_param = "preset" string | "sigma_s" colour | "sigma_a" colour | "color" colour
+ * sss_param = "preset" string | "sigma_s" colour | "sigma_a" colour | colour
  *           | "image" string | "radius" colour | "ior" float | "roughness" float
  *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
  *           | "normal_map" string [ "strength" float ] | "anisotropy" float
@@ -293,6 +306,15 @@ static bool sss_block(parser *p, scene_material *m)
 		double x;
 		if (t.kind == LTK_RBRACE)
 			break;
+		if (starts_colour(p)) {
+			TRY(form(p, m, SSS_FORM_ARTIST, &t));
+			TRY(lang_color(p, "as the SSS colour", &s->albedo));
+			if (!(s->albedo.x >= 0 && s->albedo.y >= 0 && s->albedo.z >= 0 && s->albedo.x <= 1 &&
+			      s->albedo.y <= 1 && s->albedo.z <= 1))
+				return lang_error(p, t.loc, "SSS colour must be in [0, 1] in every channel, found <%g, %g, %g>",
+						  s->albedo.x, s->albedo.y, s->albedo.z);
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_KW_PRESET: {
 			lang_advance(p);
@@ -320,16 +342,6 @@ static bool sss_block(parser *p, scene_material *m)
 			TRY(positive3(p, t.loc, t.kind == LTK_KW_SIGMA_S ? "sigma_s" : "sigma_a", *c));
 			break;
 		}
-		case LTK_KW_COLOR:
-		case LTK_KW_COLOUR:
-		case LTK_KW_RGB:
-			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(lang_color(p, "as the SSS colour", &s->albedo));
-			if (!(s->albedo.x >= 0 && s->albedo.y >= 0 && s->albedo.z >= 0 && s->albedo.x <= 1 &&
-			      s->albedo.y <= 1 && s->albedo.z <= 1))
-				return lang_error(p, t.loc, "SSS colour must be in [0, 1] in every channel, found <%g, %g, %g>",
-						  s->albedo.x, s->albedo.y, s->albedo.z);
-			break;
 		case LTK_KW_IMAGE:
 			lang_advance(p);
 			TRY(form(p, m, SSS_FORM_ARTIST, &t));
@@ -1441,6 +1453,12 @@ static bool light_source(parser *p)
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
+		if (starts_colour(p)) {
+			TRY(lang_color(p, "as the light colour", &l.color));
+			if (!(l.color.x >= 0 && l.color.y >= 0 && l.color.z >= 0))
+				return lang_error(p, t.loc, "light colour must be >= 0 in every channel");
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
@@ -1457,13 +1475,6 @@ static bool light_source(parser *p)
 			if (!vecbuf_push(&p->sc->lights, &l))
 				return lang_error(p, kw.loc, "out of memory");
 			return true;
-		case LTK_KW_COLOR:
-		case LTK_KW_COLOUR:
-		case LTK_KW_RGB:
-			TRY(lang_color(p, "as the light colour", &l.color));
-			if (!(l.color.x >= 0 && l.color.y >= 0 && l.color.z >= 0))
-				return lang_error(p, t.loc, "light colour must be >= 0 in every channel");
-			break;
 		case LTK_KW_INTENSITY:
 			lang_advance(p);
 			TRY(lang_float(p, "after 'intensity'", &x));

@@ -1,7 +1,8 @@
 #!/bin/sh
 # good_scenes: every tests/good/*.pov parses (`circe check --dump`, -I tests/good/inc) to exactly the IR
-# in its .dump golden file. CIRCE_UPDATE_GOLDEN=1 rewrites the goldens (a developer's act: it
-# writes into the source tree, so never in make check).
+# in its .dump golden file, and a NAME_literal.pov twin to NAME's IR but for the locations.
+# CIRCE_UPDATE_GOLDEN=1 rewrites the goldens (a developer's act: it writes into the source tree,
+# so never in make check).
 set -u
 : "${CIRCE:?set CIRCE to the circe binary}" "${srcdir:?set srcdir to the source tree}"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/circe-good.XXXXXX") || exit 99
@@ -22,6 +23,19 @@ for pov in *.pov; do
 	elif ! cmp -s "$tmp/got" "$name.dump"; then
 		echo "FAIL $pov: IR differs from $name.dump (expected, then got):"
 		diff "$name.dump" "$tmp/got" | head -40
+		fail=$((fail + 1))
+	fi
+done
+# A NAME_literal.pov twin writes NAME.pov's declared values as literals: the same IR but for the
+# source locations.
+for lit in *_literal.pov; do
+	[ -e "$lit" ] || continue
+	name=${lit%_literal.pov}
+	sed 's/@[^ ]*//g' "$name.dump" >"$tmp/declared"
+	sed 's/@[^ ]*//g' "${lit%.pov}.dump" >"$tmp/literal"
+	if ! cmp -s "$tmp/declared" "$tmp/literal"; then
+		echo "FAIL $lit: its IR differs from $name.pov's beyond the source locations:"
+		diff "$tmp/declared" "$tmp/literal" | head -20
 		fail=$((fail + 1))
 	fi
 done

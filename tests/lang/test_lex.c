@@ -55,7 +55,8 @@ int main(void)
 	/* Errors stop the lexer and are counted. */
 	CHECK(lex_all(&d, "a $") == -1 && d.errors == 1, "bad character");
 	CHECK(lex_all(&d, "1e400") == -1 && d.errors == 2, "overflow");
-	CHECK(lex_all(&d, "#macro") == 2 && kinds[0] == LTK_UNSUPPORTED, "#macro lexes as unsupported");
+	CHECK(lex_all(&d, "#macro") == 2 && kinds[0] == LTK_UNSUPPORTED_DIRECTIVE, "#macro lexes as unsupported");
+	CHECK(lex_all(&d, "#  \tdeclare") == 2 && kinds[0] == LTK_DIR_DECLARE, "blanks after '#'");
 	CHECK(lex_all(&d, "merge") == 2 && kinds[0] == LTK_UNSUPPORTED, "merge lexes as unsupported");
 	diag_free(&d);
 	return check_done("test_lex");

@@ -19,6 +19,13 @@ static const memfile files[] = {
 	{"inc/lib.inc", "box { -G, G }\n"},
 	{"t.inc", "triangle { 0, x, y }"},
 	{"bad.pov", "sphere { 0, 1 }\nsphere { 0 1 }\n"},
+	/* ten loops of 3: exactly the per-loop (3) and total (30) limits when max_loop_iterations is 3 */
+	{"loops.pov", "#include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" "
+		      "#include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" "
+		      "#include \"l3.inc\" #include \"l3.inc\" sphere { 0, 1 }"},
+	{"loops31.pov", "#include \"loops.pov\"\n#while (I = 3) #declare I = 0; #end"},
+	{"l3.inc", "#declare I = 0; #while (I < 3) #declare I = I + 1; #end"},
+	{"loop4.pov", "#declare I = 0;\n#while (I < 4) #declare I = I + 1; #end sphere { 0, 1 }"},
 };
 
 static int read_mem(void *user, const char *path, char **text, size_t *len)
@@ -36,6 +43,22 @@ static int read_mem(void *user, const char *path, char **text, size_t *len)
 			return 0;
 		}
 	return ENOENT;
+}
+
+/* Parses path with a diagnostics object of its own; its messages go to msg (truncated). */
+static lang_status parse_quiet(const char *path, const lang_options *opt, scene **sc, char *msg, size_t size)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *out = open_memstream(&buf, &len);
+	diag d;
+	diag_init(&d, out);
+	lang_status st = lang_parse_file(path, opt, &d, sc);
+	fclose(out);
+	snprintf(msg, size, "%s", buf ? buf : "");
+	free(buf);
+	diag_free(&d);
+	return st;
 }
 
 int main(void)
@@ -80,6 +103,21 @@ int main(void)
 	CHECK(strstr(buf, "bad.pov:2:12: error: expected ',' after the sphere centre, found '1'"), "got: %s", buf);
 	st = lang_parse_file("missing.pov", &opt, &d, &sc);
 	CHECK(st == LANG_IO_ERROR && sc == NULL, "missing file: status %d", (int)st);
+
+	/* The loop limits count iterations begun: exactly the limit runs, one more is refused. */
+	opt.max_loop_iterations = 3;
+	char msg[512];
+	st = parse_quiet("loops.pov", &opt, &sc, msg, sizeof msg);
+	CHECK(st == LANG_OK, "ten loops of 3 with limits of 3 per loop and 30 in all: status %d: %s", (int)st, msg);
+	scene_free(sc);
+	st = parse_quiet("loop4.pov", &opt, &sc, msg, sizeof msg);
+	CHECK(st == LANG_SCENE_ERROR && strstr(msg, "loop4.pov:2:1: error: #while loop runs too long (limit is 3 "),
+	      "a loop of 4 with a limit of 3: %s", msg);
+	st = parse_quiet("loops31.pov", &opt, &sc, msg, sizeof msg);
+	CHECK(st == LANG_SCENE_ERROR && strstr(msg, "loops31.pov:2:1: error: too many loop iterations in this scene "
+						    "(limit is 30 in all)"),
+	      "31 iterations with a total limit of 30: %s", msg);
+	opt.max_loop_iterations = 0;
 
 	/* Allocation failure anywhere is an error, never a crash or a leak (under the sanitizers). */
 	for (long n = 0; n < 400; n += 7) {

@@ -1,0 +1,3 @@
+// A tab between # and the name.
+#	ifdef (A)
+#end
