@@ -22,7 +22,10 @@
 
 /* The image at path (the language resolved it against the scene's folders), loaded once per
  * world; NULL after reporting an error at loc. */
-static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d)
+/* A texture, loaded once per path; one larger than max_bytes (--max-memory) is refused from its
+ * header's size, before it is decoded. */
+static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, size_t max_bytes,
+				diag *d)
 {
 	char *full = mem_strdup(path);
 	if (!full) {
@@ -46,7 +49,7 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 		diag_error(d, loc, "out of memory");
 		return NULL;
 	}
-	if (!image_load(full, enc, img, d)) {
+	if (!image_load_limited(full, enc, max_bytes, img, d)) {
 		diag_note(d, loc, "the image was named here");
 		mem_free(img);
 		mem_free(full);
@@ -351,10 +354,10 @@ static bool build_material(world *w, size_t k, const scene *sc, const world_opti
 	}
 	bool sss = sm->kind == MAT_SKIN || sm->kind == MAT_WAX || sm->kind == MAT_MARBLE;
 	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
-	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
+	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, opt->max_memory, d)))
 		return false;
 	if (sss && sm->sss.normal_map) {
-		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
+		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, opt->max_memory, d)))
 			return false;
 		wm->normal_strength = sm->sss.normal_strength;
 	}
@@ -782,7 +785,7 @@ static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, dia
 	return true;
 }
 
-static bool build_lights(world *w, const scene *sc, diag *d)
+static bool build_lights(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	light_set_init(&w->lights);
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
@@ -816,7 +819,7 @@ static bool build_lights(world *w, const scene *sc, diag *d)
 	}
 	if (sc->has_sky_sphere) {
 		const scene_sky_sphere *sky = &sc->sky_sphere;
-		const image *img = world_image(w, sky->loc, sky->image, IMAGE_SRGB, d);
+		const image *img = world_image(w, sky->loc, sky->image, IMAGE_SRGB, opt->max_memory, d);
 		if (!img)
 			return false;
 		size_t n = (size_t)img->width * (size_t)img->height;
@@ -929,7 +932,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
 	ok = ok && (o.geometry_only || build_top(w, d));
-	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, &o, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_free(w);
 		return false;

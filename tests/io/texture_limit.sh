@@ -1,0 +1,47 @@
+#!/bin/sh
+# texture_limit.sh: a texture's size is checked from its header before it is decoded. PNG and JPEG
+# headers claiming 30000 x 30000 pixels (13733 MiB as float RGBA; a few hundred bytes each, made
+# by mkbigimage) are refused at once under --max-memory 512M and under the default 1G; they used
+# to be allocated and decoded (13.5 GB, 16 GB for the JPEG, still loading after 60 s; the test
+# runs under a 4 GB address-space limit so the old behaviour fails fast). A JPEG cut in half loads
+# with a warning (libjpeg fills the rest with grey), as does one within the limit whose data stops
+# early.
+. "$top_srcdir/tests/lib.sh"
+enter_workdir
+ulimit -v 4000000 2>/dev/null || true
+scene() { # scene NAME IMAGE
+	cat >"$1.pov" <<EOS
+camera { location <0, 0, -4> look_at <0, 0, 0> }
+light_source { <-3, 5, -4> color rgb 1 intensity 20 }
+sphere { <0, 0, 0>, 1 material { diffuse { image "$2" } } }
+EOS
+}
+render() { "$CIRCE" render "$1.pov" -o "$1.exr" -W 8 -H 8 --spp 1 --quiet "$@"; }
+"$top_builddir/tests/io/mkbigimage" . || fail "mkbigimage"
+for f in big.png big.jpg; do
+	scene t "$f"
+	for limit in "--max-memory 512M" ""; do
+		start=$(date +%s)
+		expect_status 3 "$CIRCE" render t.pov -o t.exr -W 8 -H 8 --spp 1 --quiet $limit
+		mib=$([ -n "$limit" ] && echo 512 || echo 1024)
+		grep -q "^$f: error: a 30000x30000 image takes 13733 MiB as float RGBA, more than the memory limit of $mib MiB" err ||
+			fail "$f ${limit:-default limit}: not refused from its header: $(cat err)"
+		[ $(($(date +%s) - start)) -le 5 ] || fail "$f: the refusal took more than 5 s"
+		[ ! -e t.exr ] || fail "$f: an image was written"
+	done
+done
+
+# Within the limit (2000 x 2000: 61 MiB) but cut short: loaded, grey where data is missing, a warning.
+"$top_builddir/tests/io/mkbigimage" . 2000 2000 || fail "mkbigimage 2000"
+scene small big.jpg
+expect_status 0 "$CIRCE" render small.pov -o small.exr -W 8 -H 8 --spp 1 --quiet --max-memory 512M
+grep -q "^big.jpg: warning: the JPEG data is corrupt or cut short" err || fail "no warning for the cut JPEG: $(cat err)"
+
+# A real JPEG cut in half.
+src="$top_srcdir/scenes/assets/lee_perry_smith_head/Map-COL.jpg"
+head -c $(($(wc -c <"$src") / 2)) "$src" >half.jpg
+scene half half.jpg
+expect_status 0 "$CIRCE" render half.pov -o half.exr -W 8 -H 8 --spp 1 --quiet
+grep -q "^half.jpg: warning: the JPEG data is corrupt or cut short (.* the first: Premature end of JPEG file)" err ||
+	fail "no warning for the JPEG cut in half: $(cat err)"
+pass
