@@ -80,12 +80,29 @@ static bool glb_check(const unsigned char *d, size_t len, char *why, size_t why_
 	return true;
 }
 
-/* True when path ends in ".obj" (any case): OBJ has no signature to recognise it by. */
-static bool is_obj_name(const char *path)
+/* True when path ends in "." ext (ext lower case; the name in any case). */
+static bool has_extension(const char *path, const char *ext)
 {
-	size_t n = strlen(path);
-	return n >= 4 && path[n - 4] == '.' && tolower((unsigned char)path[n - 3]) == 'o' &&
-	       tolower((unsigned char)path[n - 2]) == 'b' && tolower((unsigned char)path[n - 1]) == 'j';
+	size_t n = strlen(path), e = strlen(ext);
+	if (n <= e || path[n - e - 1] != '.')
+		return false;
+	for (size_t i = 0; i < e; i++)
+		if (tolower((unsigned char)path[n - e + i]) != ext[i])
+			return false;
+	return true;
+}
+
+/* Assimp reads a file as PLY when it is named .ply or begins with "ply" (or "PLY"); ply_check
+ * judges a file whose first line is exactly that, so anything else Assimp would take for PLY is
+ * refused here (a file beginning "ply1\0..." crashed Assimp's PLY reader). */
+static bool ply_first_line(const unsigned char *b, size_t len, const char *path, char *why, size_t why_len)
+{
+	bool magic = len >= 3 && (!memcmp(b, "ply", 3) || !memcmp(b, "PLY", 3));
+	if ((magic || has_extension(path, "ply")) && !(magic && len >= 4 && (b[3] == '\n' || b[3] == '\r'))) {
+		snprintf(why, why_len, "a PLY file must begin with the line 'ply'");
+		return false;
+	}
+	return true;
 }
 
 /* The structural checks of the whole file (mapped read-only): PLY (ply.h) and GLB, whose broken
@@ -104,8 +121,9 @@ static bool precheck(const char *path, char *why, size_t why_len, bool *cut)
 		void *map = mmap(NULL, len, PROT_READ, MAP_PRIVATE, fd, 0);
 		if (map != MAP_FAILED) {
 			const unsigned char *b = map;
-			ok = ply_check(map, len, why, why_len) && glb_check(b, len, why, why_len);
-			*cut = ok && is_obj_name(path) && b[len - 1] != '\n';
+			ok = ply_first_line(b, len, path, why, why_len) && ply_check(map, len, why, why_len) &&
+			     glb_check(b, len, why, why_len);
+			*cut = ok && has_extension(path, "obj") && b[len - 1] != '\n';
 			munmap(map, len);
 		}
 	}
