@@ -14,6 +14,9 @@
 
 static char dir[] = "/tmp/circe-fuzz-mesh-XXXXXX";
 
+/* The folder goes with the process (libFuzzer's -fork mode starts one every few seconds). */
+static void remove_dir(void) { rmdir(dir); }
+
 static const char *extension(const uint8_t *data, size_t size)
 {
 	if (size >= 3 && !memcmp(data, "ply", 3))
@@ -31,6 +34,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if (!ready) {
 		if (!mkdtemp(dir))
 			abort();
+		atexit(remove_dir);
 		ready = true;
 	}
 	char path[sizeof dir + 16];
