@@ -5,6 +5,7 @@
 #include "io/atomic.h"
 #include "io/exr.h"
 
+#include <OpenEXR/openexr.h>
 #include <errno.h>
 #include <jpeglib.h>
 #include <math.h>
@@ -226,8 +227,29 @@ static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, size_t max
 	return true;
 }
 
+/* The size of an EXR's first part from its header alone (OpenEXR reads nothing else at start);
+ * false when the header cannot be read, which exrfile_read then reports. */
+static bool exr_header_size(const char *path, double *w, double *h)
+{
+	exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+	init.flags = EXR_CONTEXT_FLAG_SILENT_HEADER_PARSE;
+	init.error_handler_fn = NULL;
+	exr_context_t ctx = NULL;
+	exr_attr_box2i_t dw;
+	bool ok = exr_start_read(&ctx, path, &init) == EXR_ERR_SUCCESS &&
+		  exr_get_data_window(ctx, 0, &dw) == EXR_ERR_SUCCESS;
+	if (ctx)
+		exr_finish(&ctx);
+	if (ok)
+		*w = (double)dw.max.x - dw.min.x + 1.0, *h = (double)dw.max.y - dw.min.y + 1.0;
+	return ok;
+}
+
 static bool load_exr(const char *path, size_t max_bytes, image *out, diag *d)
 {
+	double hw, hh;
+	if (max_bytes && exr_header_size(path, &hw, &hh) && !size_ok(hw, hh, max_bytes, path, d))
+		return false;
 	exrfile_image ex;
 	if (!exrfile_read(path, &ex, d))
 		return false;

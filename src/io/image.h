@@ -22,9 +22,9 @@ typedef enum image_encoding {
 /* Loads by content (PNG and JPEG signatures, EXR magic); missing channels: grey fills RGB, alpha 1.
  * EXR uses R, G, B, A (or Y for luminance). False with the reason reported to d. */
 bool image_load(const char *path, image_encoding enc, image *out, diag *d);
-/* image_load refusing, from the size in a PNG or JPEG header and before anything is decoded, an
- * image whose float RGBA (16 bytes a pixel: all that loading takes) exceeds max_bytes (0: no
- * limit). An EXR is checked after reading (exrfile_read's own cap bounds it). */
+/* image_load refusing, from the size in a PNG, JPEG or EXR header and before anything is decoded,
+ * an image whose float RGBA (16 bytes a pixel: all that loading takes for PNG and JPEG; an EXR's
+ * planes come on top) exceeds max_bytes (0: no limit). */
 bool image_load_limited(const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d);
 void image_free(image *img);
 

@@ -1,8 +1,9 @@
-/* mkbigimage: writes DIR/big.png and DIR/big.jpg, whose headers claim W x H pixels (default
- * 30000 x 30000) but whose data stops after a few bytes: a texture too large to load, in a few
- * hundred bytes. The PNG is a valid signature and IHDR chunk (CRC included) and the start of an
- * IDAT; the JPEG is a real 16 x 16 one with its frame header's size changed, cut 2 bytes into the scan
- * data. Used by tests/io/texture_limit.sh. */
+/* mkbigimage: writes DIR/big.png, DIR/big.jpg and DIR/big.exr, whose headers claim W x H pixels
+ * (default 30000 x 30000) but whose data stops after a few bytes: a texture too large to load, in
+ * a few hundred bytes. The PNG is a valid signature and IHDR chunk (CRC included) and the start of
+ * an IDAT; the JPEG is a real 16 x 16 one with its frame header's size changed, cut 2 bytes into
+ * the scan data; the EXR a real 16 x 16 one with its data and display windows changed. Used by
+ * tests/io/texture_limit.sh. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -10,6 +11,8 @@
 #include <string.h>
 
 #include <jpeglib.h>
+
+#include "io/exr.h"
 
 /* CRC-32 of PNG chunks (ISO 3309, PNG specification annex D), bit by bit. */
 static uint32_t crc32_png(const unsigned char *b, size_t n)
@@ -83,6 +86,38 @@ static int write_jpeg(const char *path, unsigned w, unsigned h)
 	return bad;
 }
 
+/* Sets the box2i attribute `name` (both windows) to (0, 0)-(w - 1, h - 1) in the file's bytes. */
+static void patch_box(unsigned char *b, size_t len, const char *name, unsigned w, unsigned h)
+{
+	size_t n = strlen(name) + 1;
+	for (size_t i = 0; i + n + 6 + 4 + 16 <= len; i++)
+		if (!memcmp(b + i, name, n) && !memcmp(b + i + n, "box2i", 6)) {
+			unsigned char *v = b + i + n + 6 + 4;
+			int32_t box[4] = {0, 0, (int32_t)w - 1, (int32_t)h - 1};
+			for (int k = 0; k < 4; k++)
+				for (int j = 0; j < 4; j++)
+					v[4 * k + j] = (unsigned char)((uint32_t)box[k] >> (8 * j)); /* little-endian */
+			return;
+		}
+}
+
+static int write_exr(const char *path, unsigned w, unsigned h)
+{
+	float px[16 * 16] = {0};
+	exrfile_channel ch[3] = {{"B", px, 1, 16}, {"G", px, 1, 16}, {"R", px, 1, 16}};
+	exrfile_write_desc desc = {{0, 0, 16, 16}, {0, 0, 16, 16}, 3, ch, 0, NULL};
+	diag d;
+	diag_init(&d, stderr);
+	bool ok = exrfile_write(path, &desc, &d);
+	diag_free(&d);
+	FILE *fp = ok ? fopen(path, "r+b") : NULL;
+	unsigned char b[4096];
+	size_t len = fp ? fread(b, 1, sizeof b, fp) : 0;
+	patch_box(b, len, "dataWindow", w, h);
+	patch_box(b, len, "displayWindow", w, h);
+	return !fp || fseek(fp, 0, SEEK_SET) != 0 || fwrite(b, 1, len, fp) != len || fclose(fp) != 0;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc != 2 && argc != 4) {
@@ -90,8 +125,9 @@ int main(int argc, char **argv)
 		return 2;
 	}
 	unsigned w = argc == 4 ? (unsigned)atoi(argv[2]) : 30000, h = argc == 4 ? (unsigned)atoi(argv[3]) : 30000;
-	char png[4096], jpg[4096];
+	char png[4096], jpg[4096], exr[4096];
 	snprintf(png, sizeof png, "%s/big.png", argv[1]);
 	snprintf(jpg, sizeof jpg, "%s/big.jpg", argv[1]);
-	return write_png(png, w, h) | write_jpeg(jpg, w, h);
+	snprintf(exr, sizeof exr, "%s/big.exr", argv[1]);
+	return write_png(png, w, h) | write_jpeg(jpg, w, h) | write_exr(exr, w, h);
 }

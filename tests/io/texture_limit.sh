@@ -1,7 +1,7 @@
 #!/bin/sh
-# texture_limit.sh: a texture's size is checked from its header before it is decoded. PNG and JPEG
-# headers claiming 30000 x 30000 pixels (13733 MiB as float RGBA; a few hundred bytes each, made
-# by mkbigimage) are refused at once under --max-memory 512M and under the default 1G; they used
+# texture_limit.sh: a texture's size is checked from its header before it is decoded. PNG, JPEG
+# and EXR headers claiming 30000 x 30000 pixels (13733 MiB as float RGBA; a few hundred bytes
+# each, made by mkbigimage) are refused at once under --max-memory 512M and under the default 1G; they used
 # to be allocated and decoded (13.5 GB, 16 GB for the JPEG, still loading after 60 s; the test
 # runs under a 4 GB address-space limit where the build allows, so the old behaviour fails fast). A JPEG cut in half loads
 # with a warning (libjpeg fills the rest with grey), as does one within the limit whose data stops
@@ -21,7 +21,7 @@ EOS
 }
 render() { "$CIRCE" render "$1.pov" -o "$1.exr" -W 8 -H 8 --spp 1 --quiet "$@"; }
 "$top_builddir/tests/io/mkbigimage" . || fail "mkbigimage"
-for f in big.png big.jpg; do
+for f in big.png big.jpg big.exr; do
 	scene t "$f"
 	for limit in "--max-memory 512M" ""; do
 		start=$(date +%s)
