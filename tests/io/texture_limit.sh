@@ -1,11 +1,11 @@
 #!/bin/sh
 # texture_limit.sh: a texture's size is checked from its header before it is decoded. PNG, JPEG
 # and EXR headers claiming 30000 x 30000 pixels (13733 MiB as float RGBA; a few hundred bytes
-# each, made by mkbigimage) are refused at once under --max-memory 512M and under the default 1G; they used
-# to be allocated and decoded (13.5 GB, 16 GB for the JPEG, still loading after 60 s; the test
-# runs under a 4 GB address-space limit where the build allows, so the old behaviour fails fast). A JPEG cut in half loads
-# with a warning (libjpeg fills the rest with grey), as does one within the limit whose data stops
-# early.
+# each, made by mkbigimage) are refused at once under --max-memory 512M and under the default
+# 1G; they used to be allocated and decoded (13.5 GB, 16 GB for the JPEG, still loading after
+# 60 s; the test runs under a 4 GB address-space limit where the build allows, so the old
+# behaviour fails fast). A JPEG cut in half loads with a warning (libjpeg fills the rest with
+# grey), as does one within the limit whose data stops early.
 . "$top_srcdir/tests/lib.sh"
 enter_workdir
 # A 4 GB address-space limit, unless the build cannot run under one (ASan reserves terabytes).
