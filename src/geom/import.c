@@ -26,7 +26,7 @@
 /* GLB, glTF 2.0's binary container (glTF 2.0 specification, "Binary glTF Layout"): a 12-byte header
  * (magic, version, total length) and chunks of (length, type, data), the first one JSON. */
 enum { GLB_HEADER = 12, GLB_CHUNK_HEADER = 8, GLB_V1_HEADER = 20 };
-#define GLB_MAGIC 0x46546C67u	   /* "glTF" */
+#define GLB_MAGIC      0x46546C67u /* "glTF" */
 #define GLB_CHUNK_JSON 0x4E4F534Au /* "JSON" */
 
 static uint32_t le32(const unsigned char *b)
@@ -44,7 +44,8 @@ static bool glb_check(const unsigned char *d, size_t len, char *why, size_t why_
 	}
 	uint32_t version = le32(d + 4), total = le32(d + 8);
 	if (total > len || total < GLB_HEADER) {
-		snprintf(why, why_len, "the GLB header declares %u bytes but the file has %zu (a truncated file?)", total,
+		snprintf(why, why_len,
+			 "the GLB header declares %u bytes but the file has %zu (a truncated file?)", total,
 			 len);
 		return false;
 	}
@@ -63,8 +64,8 @@ static bool glb_check(const unsigned char *d, size_t len, char *why, size_t why_
 		}
 		uint32_t clen = le32(d + pos), type = le32(d + pos + 4);
 		if (clen > total - pos - GLB_CHUNK_HEADER) {
-			snprintf(why, why_len, "GLB chunk %d declares %u bytes, but only %zu follow it", chunk, clen,
-				 total - pos - GLB_CHUNK_HEADER);
+			snprintf(why, why_len, "GLB chunk %d declares %u bytes, but only %zu follow it",
+				 chunk, clen, total - pos - GLB_CHUNK_HEADER);
 			return false;
 		}
 		if (chunk == 0 && type != GLB_CHUNK_JSON) {
@@ -121,8 +122,8 @@ static bool precheck(const char *path, char *why, size_t why_len, bool *cut)
 		void *map = mmap(NULL, len, PROT_READ, MAP_PRIVATE, fd, 0);
 		if (map != MAP_FAILED) {
 			const unsigned char *b = map;
-			ok = ply_first_line(b, len, path, why, why_len) && ply_check(map, len, why, why_len) &&
-			     glb_check(b, len, why, why_len);
+			ok = ply_first_line(b, len, path, why, why_len) &&
+			     ply_check(map, len, why, why_len) && glb_check(b, len, why, why_len);
 			*cut = ok && has_extension(path, "obj") && b[len - 1] != '\n';
 			munmap(map, len);
 		}
@@ -159,8 +160,9 @@ static bool mesh_ok(const struct aiMesh *m, unsigned mi, unsigned max_corners, c
 		}
 		for (unsigned j = 0; j < fc->mNumIndices; j++)
 			if (fc->mIndices[j] >= m->mNumVertices) {
-				snprintf(why, why_len, "mesh %u, face %u: vertex index %u out of range (the mesh has %u)", mi,
-					 k, fc->mIndices[j], m->mNumVertices);
+				snprintf(why, why_len,
+					 "mesh %u, face %u: vertex index %u out of range (the mesh has %u)",
+					 mi, k, fc->mIndices[j], m->mNumVertices);
 				return false;
 			}
 	}
@@ -197,8 +199,8 @@ static bool count_node(const struct aiScene *s, const struct aiNode *nd, int dep
 	}
 	for (unsigned i = 0; i < nd->mNumMeshes; i++) {
 		if (!nd->mMeshes || nd->mMeshes[i] >= s->mNumMeshes || !s->mMeshes[nd->mMeshes[i]]) {
-			snprintf(c->why, c->why_len, "a node names mesh %u of %u", nd->mMeshes ? nd->mMeshes[i] : 0,
-				 s->mNumMeshes);
+			snprintf(c->why, c->why_len, "a node names mesh %u of %u",
+				 nd->mMeshes ? nd->mMeshes[i] : 0, s->mNumMeshes);
 			return false;
 		}
 		const struct aiMesh *m = s->mMeshes[nd->mMeshes[i]];
@@ -230,11 +232,11 @@ static xform xform_from_ai(const struct aiMatrix4x4 *a)
 typedef struct fill_state {
 	mesh *out;
 	uint32_t v, f;
-	size_t bad_positions; /* not finite, or beyond MESH_MAX_COORD */
+	size_t bad_positions;	     /* not finite, or beyond MESH_MAX_COORD */
 	struct aiVector3D first_bad; /* the first such vertex, as the file has it */
-	size_t bad_normals;   /* not finite or zero */
-	size_t bad_tangents;  /* not finite or zero */
-	size_t bad_uvs;	      /* not finite: replaced by (0, 0) */
+	size_t bad_normals;	     /* not finite or zero */
+	size_t bad_tangents;	     /* not finite or zero */
+	size_t bad_uvs;		     /* not finite: replaced by (0, 0) */
 } fill_state;
 
 static bool position_ok(vec3 p)
@@ -316,24 +318,27 @@ static bool check_values(const char *path, mesh *out, const fill_state *st, diag
 	if (st->bad_positions) {
 		const struct aiVector3D *p = &st->first_bad;
 		diag_file_error(d, path,
-				"vertex coordinates must be finite and at most %g in magnitude (after the file's transforms): "
-				"%zu of %u vertices are not, the first <%g, %g, %g>",
-				(double)MESH_MAX_COORD, st->bad_positions, out->num_vertices, (double)p->x, (double)p->y,
-				(double)p->z);
+				"vertex coordinates must be finite and at most %g in magnitude (after the file's "
+				"transforms): %zu of %u vertices are not, the first <%g, %g, %g>",
+				(double)MESH_MAX_COORD, st->bad_positions, out->num_vertices, (double)p->x,
+				(double)p->y, (double)p->z);
 		return false;
 	}
 	if (st->bad_normals) {
-		diag_file_warning(d, path, "%zu normals are zero or not finite: the file's normals are ignored",
+		diag_file_warning(d, path,
+				  "%zu normals are zero or not finite: the file's normals are ignored",
 				  st->bad_normals);
 		mem_free(out->normals), out->normals = NULL;
 		mem_free(out->tangents), out->tangents = NULL;
 	} else if (st->bad_tangents) {
-		diag_file_warning(d, path, "%zu tangents are zero or not finite: the file's tangents are ignored",
+		diag_file_warning(d, path,
+				  "%zu tangents are zero or not finite: the file's tangents are ignored",
 				  st->bad_tangents);
 		mem_free(out->tangents), out->tangents = NULL;
 	}
 	if (st->bad_uvs)
-		diag_file_warning(d, path, "%zu texture coordinates are not finite: they are set to 0", st->bad_uvs);
+		diag_file_warning(d, path, "%zu texture coordinates are not finite: they are set to 0",
+				  st->bad_uvs);
 	return true;
 }
 
@@ -348,9 +353,10 @@ static bool remove_duplicates(const char *path, mesh *out, diag *d)
 		return false;
 	}
 	if (removed)
-		diag_file_warning(d, path,
-				  "%zu of its %u triangles duplicate an earlier one (the same three corners): removed",
-				  removed, before);
+		diag_file_warning(
+		    d, path,
+		    "%zu of its %u triangles duplicate an earlier one (the same three corners): removed",
+		    removed, before);
 	return true;
 }
 
@@ -374,14 +380,16 @@ bool mesh_import(const char *path, mesh *out, diag *d)
 		aiReleaseImport(s);
 		return false;
 	}
-	s = aiApplyPostProcessing(s, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+	s = aiApplyPostProcessing(s, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+					 aiProcess_SortByPType);
 	if (!s) { /* already released */
 		diag_file_error(d, path, "cannot import mesh: %s", aiGetErrorString());
 		return false;
 	}
 	if (cut)
-		diag_file_warning(d, path, "the file's last line has no line end: a truncated file? (only what is "
-					   "there is imported)");
+		diag_file_warning(d, path,
+				  "the file's last line has no line end: a truncated file? (only what is "
+				  "there is imported)");
 	bool ok = false;
 	count_state c = {0, 0, true, true, true, why, sizeof why};
 	if (s->mRootNode && !count_node(s, s->mRootNode, 0, &c)) {
@@ -389,8 +397,8 @@ bool mesh_import(const char *path, mesh *out, diag *d)
 	} else if (c.nt == 0) {
 		diag_file_error(d, path, "the file holds no triangles");
 	} else if (c.nv > UINT32_MAX || c.nt > UINT32_MAX / 3) {
-		diag_file_error(d, path, "too many vertices or triangles (%zu, %zu; the limit is %u)", c.nv, c.nt,
-				UINT32_MAX / 3);
+		diag_file_error(d, path, "too many vertices or triangles (%zu, %zu; the limit is %u)", c.nv,
+				c.nt, UINT32_MAX / 3);
 	} else if (!mesh_alloc(out, c.nv, c.nt, c.normals, c.uvs, c.tangents && c.normals)) {
 		diag_file_error(d, path, "out of memory for %zu vertices and %zu triangles", c.nv, c.nt);
 	} else {

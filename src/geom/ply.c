@@ -258,7 +258,8 @@ static bool check_body(const ply_header *h, const char *d, size_t len, char *why
 
 bool ply_check(const char *data, size_t len, char *why, size_t why_len)
 {
-	if (len < 4 || (memcmp(data, "ply", 3) && memcmp(data, "PLY", 3)) || (data[3] != '\n' && data[3] != '\r'))
+	if (len < 4 || (memcmp(data, "ply", 3) && memcmp(data, "PLY", 3)) ||
+	    (data[3] != '\n' && data[3] != '\r'))
 		return true; /* not a PLY file: not ours to judge */
 	ply_header *h = mem_calloc(1, sizeof *h);
 	if (!h)

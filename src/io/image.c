@@ -65,21 +65,26 @@ void image_free(image *img)
 
 /* Bytes of a w x h image as float RGBA: all that loading it takes, since the 8-bit samples are
  * decoded into the tail of the same array (from_integers). */
-static double image_bytes(double w, double h) { return w * h * 4.0 * sizeof(float); }
+static double image_bytes(double w, double h)
+{
+	return w * h * 4.0 * sizeof(float);
+}
 
 /* The size the file's header gives, checked before anything is decoded: each side in range, and
  * the float image within max_bytes (0: no limit). */
 static bool size_ok(double w, double h, size_t max_bytes, const char *path, diag *d)
 {
 	if (!(w >= 1 && h >= 1 && w <= IMAGE_MAX_SIDE && h <= IMAGE_MAX_SIDE)) {
-		diag_file_error(d, path, "image size %.0fx%.0f is out of range (1 to %d per side)", w, h, IMAGE_MAX_SIDE);
+		diag_file_error(d, path, "image size %.0fx%.0f is out of range (1 to %d per side)", w, h,
+				IMAGE_MAX_SIDE);
 		return false;
 	}
 	if (max_bytes && image_bytes(w, h) > (double)max_bytes) {
-		diag_file_error(d, path,
-				"a %.0fx%.0f image takes %.0f MiB as float RGBA, more than the memory limit of %.0f MiB "
-				"(--max-memory)",
-				w, h, image_bytes(w, h) / (1 << 20), (double)max_bytes / (1 << 20));
+		diag_file_error(
+		    d, path,
+		    "a %.0fx%.0f image takes %.0f MiB as float RGBA, more than the memory limit of %.0f MiB "
+		    "(--max-memory)",
+		    w, h, image_bytes(w, h) / (1 << 20), (double)max_bytes / (1 << 20));
 		return false;
 	}
 	return true;
@@ -141,7 +146,8 @@ static bool load_png(FILE *fp, const char *path, image_encoding enc, size_t max_
 	/* Let libpng expand palettes and low bit depths to 8-bit RGBA or grey+alpha. */
 	int comps = PNG_IMAGE_SAMPLE_CHANNELS(pi.format) >= 3 ? 4 : 2;
 	pi.format = comps == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA;
-	if (!size_ok(pi.width, pi.height, max_bytes, path, d) || !image_alloc(out, (int)pi.width, (int)pi.height, path, d)) {
+	if (!size_ok(pi.width, pi.height, max_bytes, path, d) ||
+	    !image_alloc(out, (int)pi.width, (int)pi.height, path, d)) {
 		png_image_free(&pi);
 		return false;
 	}
@@ -221,9 +227,11 @@ static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, size_t max
 	jpeg_destroy_decompress(&cinfo);
 	from_integers(out, buf, comps, enc);
 	if (jerr.pub.num_warnings)
-		diag_file_warning(d, path, "the JPEG data is corrupt or cut short (%ld warning(s), the first: %s): the "
-					   "missing part is grey",
-				  jerr.pub.num_warnings, jerr.warning);
+		diag_file_warning(
+		    d, path,
+		    "the JPEG data is corrupt or cut short (%ld warning(s), the first: %s): the "
+		    "missing part is grey",
+		    jerr.pub.num_warnings, jerr.warning);
 	return true;
 }
 
@@ -261,7 +269,8 @@ static bool load_exr(const char *path, size_t max_bytes, image *out, diag *d)
 		exrfile_free(&ex);
 		return false;
 	}
-	if (!size_ok(ex.width, ex.height, max_bytes, path, d) || !image_alloc(out, ex.width, ex.height, path, d)) {
+	if (!size_ok(ex.width, ex.height, max_bytes, path, d) ||
+	    !image_alloc(out, ex.width, ex.height, path, d)) {
 		exrfile_free(&ex);
 		return false;
 	}

@@ -24,8 +24,8 @@
  * world; NULL after reporting an error at loc. */
 /* A texture, loaded once per path; one larger than max_bytes (--max-memory) is refused from its
  * header's size, before it is decoded. */
-static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, size_t max_bytes,
-				diag *d)
+static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc,
+				size_t max_bytes, diag *d)
 {
 	char *full = mem_strdup(path);
 	if (!full) {
@@ -357,7 +357,8 @@ static bool build_material(world *w, size_t k, const scene *sc, const world_opti
 	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, opt->max_memory, d)))
 		return false;
 	if (sss && sm->sss.normal_map) {
-		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, opt->max_memory, d)))
+		if (!(wm->normal_map =
+			  world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, opt->max_memory, d)))
 			return false;
 		wm->normal_strength = sm->sss.normal_strength;
 	}

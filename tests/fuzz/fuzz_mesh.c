@@ -15,7 +15,10 @@
 static char dir[] = "/tmp/circe-fuzz-mesh-XXXXXX";
 
 /* The folder goes with the process (libFuzzer's -fork mode starts one every few seconds). */
-static void remove_dir(void) { rmdir(dir); }
+static void remove_dir(void)
+{
+	rmdir(dir);
+}
 
 static const char *extension(const uint8_t *data, size_t size)
 {

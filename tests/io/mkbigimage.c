@@ -96,7 +96,8 @@ static void patch_box(unsigned char *b, size_t len, const char *name, unsigned w
 			int32_t box[4] = {0, 0, (int32_t)w - 1, (int32_t)h - 1};
 			for (int k = 0; k < 4; k++)
 				for (int j = 0; j < 4; j++)
-					v[4 * k + j] = (unsigned char)((uint32_t)box[k] >> (8 * j)); /* little-endian */
+					v[4 * k + j] =
+					    (unsigned char)((uint32_t)box[k] >> (8 * j)); /* little-endian */
 			return;
 		}
 }
@@ -124,7 +125,8 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: mkbigimage DIR [W H]\n");
 		return 2;
 	}
-	unsigned w = argc == 4 ? (unsigned)atoi(argv[2]) : 30000, h = argc == 4 ? (unsigned)atoi(argv[3]) : 30000;
+	unsigned w = argc == 4 ? (unsigned)atoi(argv[2]) : 30000,
+		 h = argc == 4 ? (unsigned)atoi(argv[3]) : 30000;
 	char png[4096], jpg[4096], exr[4096];
 	snprintf(png, sizeof png, "%s/big.png", argv[1]);
 	snprintf(jpg, sizeof jpg, "%s/big.jpg", argv[1]);

@@ -521,22 +521,25 @@ static void check_coincident(const sss_profile *prof, long count)
 					hits[n].theta = nextafterf(hits[j].theta, cp & 1 ? 10.0f : -10.0f);
 					if (cp & 1)
 						hits[n].n = v3_neg(hits[j].n);
-					CHECK(sss_circle_repeats(hits, n), "copy %d of hit %d not seen as a repeat", cp, j);
+					CHECK(sss_circle_repeats(hits, n),
+					      "copy %d of hit %d not seen as a repeat", cp, j);
 				}
 			vec3 w;
 			float prob;
-			int pick = sss_circle_choose(&c, sss_profile_ratio(prof, r), hits, n, us, &o, &w, &prob);
+			int pick =
+			    sss_circle_choose(&c, sss_profile_ratio(prof, r), hits, n, us, &o, &w, &prob);
 			CHECK(pick < k, "%d copies: picked hit %d, a copy (of %d hits)", copies, pick, k);
 			if (pick >= 0)
 				sum += w.x * g_fn(v3_to_d3(hits[pick].p));
 		}
 		mean[copies] = sum / count;
 		printf("coincident surfaces: %2d copies of the sphere: %.6f\n", copies, mean[copies]);
-		CHECK(mean[copies] == mean[1], "%d copies: %.6f, one copy %.6f", copies, mean[copies], mean[1]);
+		CHECK(mean[copies] == mean[1], "%d copies: %.6f, one copy %.6f", copies, mean[copies],
+		      mean[1]);
 	}
 	/* Hits a little apart, or at the two ends of a full circle's range. */
-	sss_circle_hit h[3] = {{v3s(0), v3(0, 0, 1), 0.0f}, {v3s(0), v3(0, 0, 1), 1e-4f},
-			       {v3s(0), v3(0, 0, 1), 6.2831850f}};
+	sss_circle_hit h[3] = {
+	    {v3s(0), v3(0, 0, 1), 0.0f}, {v3s(0), v3(0, 0, 1), 1e-4f}, {v3s(0), v3(0, 0, 1), 6.2831850f}};
 	CHECK(!sss_circle_repeats(h, 1), "hits 1e-4 apart are distinct points");
 	CHECK(sss_circle_repeats(h, 2), "theta 2 pi - 2e-7 is theta 0");
 }
