@@ -8,6 +8,8 @@
 #include <OpenEXR/openexr.h>
 #include <errno.h>
 #include <jpeglib.h>
+#include <jerror.h>
+#include <limits.h>
 #include <math.h>
 #include <png.h>
 #include <setjmp.h>
@@ -197,7 +199,13 @@ static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, size_t max
 	jerr.pub.error_exit = jpeg_on_error;
 	jerr.pub.emit_message = jpeg_on_message;
 	if (setjmp(jerr.jump)) {
-		diag_file_error(d, path, "cannot read JPEG: %s", jerr.msg);
+		if (jerr.pub.msg_code == JERR_NO_BACKING_STORE)
+			diag_file_error(d, path,
+					"a progressive %ux%u JPEG needs its coefficients in memory too, more than "
+					"the memory limit of %.0f MiB (--max-memory) leaves",
+					cinfo.image_width, cinfo.image_height, (double)max_bytes / (1 << 20));
+		else
+			diag_file_error(d, path, "cannot read JPEG: %s", jerr.msg);
 		jpeg_destroy_decompress(&cinfo);
 		image_free(out);
 		return false;
@@ -210,6 +218,12 @@ static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, size_t max
 		jpeg_destroy_decompress(&cinfo);
 		return false;
 	}
+	/* A progressive file is decoded through a whole-image buffer of coefficients (2 bytes a
+	 * sample) on top of the image: libjpeg refuses it (JERR_NO_BACKING_STORE) beyond what the
+	 * limit leaves. Baseline files need no such buffer. */
+	double left = (double)max_bytes - image_bytes(cinfo.image_width, cinfo.image_height);
+	if (max_bytes)
+		cinfo.mem->max_memory_to_use = left < (double)LONG_MAX ? (long)left : LONG_MAX;
 	cinfo.out_color_space = cinfo.num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
 	jpeg_start_decompress(&cinfo);
 	int comps = cinfo.output_components;

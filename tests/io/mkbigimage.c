@@ -1,9 +1,10 @@
 /* mkbigimage: writes DIR/big.png, DIR/big.jpg and DIR/big.exr, whose headers claim W x H pixels
  * (default 30000 x 30000) but whose data stops after a few bytes: a texture too large to load, in
  * a few hundred bytes. The PNG is a valid signature and IHDR chunk (CRC included) and the start of
- * an IDAT; the JPEG is a real 16 x 16 one with its frame header's size changed, cut 2 bytes into
- * the scan data; the EXR a real 16 x 16 one with its data and display windows changed. Used by
- * tests/io/texture_limit.sh. */
+ * an IDAT; the JPEG is a real 16 x 16 one (progressive with "progressive") with its frame header's
+ * size changed, cut 2 bytes into the scan data; the EXR a real 16 x 16 one with its data and
+ * display windows changed. Used by tests/io/texture_limit.sh. */
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -48,7 +49,7 @@ static int write_png(const char *path, uint32_t w, uint32_t h)
 	return fp && fwrite(f, 1, sizeof f, fp) == sizeof f && fclose(fp) == 0 ? 0 : 1;
 }
 
-static int write_jpeg(const char *path, unsigned w, unsigned h)
+static int write_jpeg(const char *path, unsigned w, unsigned h, bool progressive)
 {
 	struct jpeg_compress_struct c;
 	struct jpeg_error_mgr err;
@@ -60,6 +61,8 @@ static int write_jpeg(const char *path, unsigned w, unsigned h)
 	c.image_width = c.image_height = 16;
 	c.input_components = 3, c.in_color_space = JCS_RGB;
 	jpeg_set_defaults(&c);
+	if (progressive)
+		jpeg_simple_progression(&c);
 	jpeg_start_compress(&c, TRUE);
 	unsigned char row[16 * 3];
 	memset(row, 100, sizeof row);
@@ -71,7 +74,8 @@ static int write_jpeg(const char *path, unsigned w, unsigned h)
 	jpeg_destroy_compress(&c);
 	size_t cut = 0;
 	for (size_t i = 0; i + 9 < len; i++) {
-		if (mem[i] == 0xff && mem[i + 1] == 0xc0) { /* SOF0: length, precision, height, width */
+		if (mem[i] == 0xff && (mem[i + 1] == 0xc0 || mem[i + 1] == 0xc2)) {
+			/* SOF0 or SOF2: length, precision, height, width */
 			mem[i + 5] = (unsigned char)(h >> 8), mem[i + 6] = (unsigned char)h;
 			mem[i + 7] = (unsigned char)(w >> 8), mem[i + 8] = (unsigned char)w;
 		}
@@ -121,15 +125,16 @@ static int write_exr(const char *path, unsigned w, unsigned h)
 
 int main(int argc, char **argv)
 {
-	if (argc != 2 && argc != 4) {
-		fprintf(stderr, "usage: mkbigimage DIR [W H]\n");
+	if (argc < 2 || argc == 3 || argc > 5) {
+		fprintf(stderr, "usage: mkbigimage DIR [W H [progressive]]\n");
 		return 2;
 	}
-	unsigned w = argc == 4 ? (unsigned)atoi(argv[2]) : 30000,
-		 h = argc == 4 ? (unsigned)atoi(argv[3]) : 30000;
+	unsigned w = argc >= 4 ? (unsigned)atoi(argv[2]) : 30000,
+		 h = argc >= 4 ? (unsigned)atoi(argv[3]) : 30000;
+	bool progressive = argc == 5 && !strcmp(argv[4], "progressive");
 	char png[4096], jpg[4096], exr[4096];
 	snprintf(png, sizeof png, "%s/big.png", argv[1]);
 	snprintf(jpg, sizeof jpg, "%s/big.jpg", argv[1]);
 	snprintf(exr, sizeof exr, "%s/big.exr", argv[1]);
-	return write_png(png, w, h) | write_jpeg(jpg, w, h) | write_exr(exr, w, h);
+	return write_png(png, w, h) | write_jpeg(jpg, w, h, progressive) | write_exr(exr, w, h);
 }

@@ -4,8 +4,9 @@
 # each, made by mkbigimage) are refused at once under --max-memory 512M and under the default
 # 1G; they used to be allocated and decoded (13.5 GB, 16 GB for the JPEG, still loading after
 # 60 s; the test runs under a 4 GB address-space limit where the build allows, so the old
-# behaviour fails fast). A JPEG cut in half loads with a warning (libjpeg fills the rest with
-# grey), as does one within the limit whose data stops early.
+# behaviour fails fast). A progressive JPEG's coefficient buffer counts too. A JPEG cut in half
+# loads with a warning (libjpeg fills the rest with grey), as does one within the limit whose data
+# stops early.
 . "$top_srcdir/tests/lib.sh"
 enter_workdir
 # A 4 GB address-space limit, unless the build cannot run under one (ASan reserves terabytes).
@@ -39,6 +40,14 @@ done
 scene small big.jpg
 expect_status 0 "$CIRCE" render small.pov -o small.exr -W 8 -H 8 --spp 1 --quiet --max-memory 512M
 grep -q "^big.jpg: warning: the JPEG data is corrupt or cut short" err || fail "no warning for the cut JPEG: $(cat err)"
+
+# A progressive JPEG is decoded through a whole-image buffer of coefficients too: 6000 x 6000 takes
+# 549 MiB as floats and 206 MiB of coefficients, refused under 600M, loaded (cut short) under 1G.
+"$top_builddir/tests/io/mkbigimage" . 6000 6000 progressive || fail "mkbigimage progressive"
+expect_status 3 "$CIRCE" render small.pov -o small.exr -W 8 -H 8 --spp 1 --quiet --max-memory 600M
+grep -q "^big.jpg: error: a progressive 6000x6000 JPEG needs its coefficients in memory too, more than the memory limit of 600 MiB" err ||
+	fail "progressive JPEG over the limit: $(cat err)"
+expect_status 0 "$CIRCE" render small.pov -o small.exr -W 8 -H 8 --spp 1 --quiet --max-memory 1G
 
 # A real JPEG cut in half.
 src="$top_srcdir/scenes/assets/lee_perry_smith_head/Map-COL.jpg"
