@@ -155,15 +155,29 @@ void diag_report(diag *d, diag_kind kind, diag_loc loc, const char *fmt, ...)
 	va_end(ap);
 }
 
+static void file_vreport(diag *d, diag_kind kind, const char *name, const char *fmt, va_list ap)
+{
+	if (!d->out)
+		return;
+	fprintf(d->out, "%s: %s: ", name, kind_name(kind));
+	vfprintf(d->out, fmt, ap);
+	fputc('\n', d->out);
+}
+
 void diag_file_error(diag *d, const char *name, const char *fmt, ...)
 {
 	d->errors++;
-	if (!d->out)
-		return;
 	va_list ap;
 	va_start(ap, fmt);
-	fprintf(d->out, "%s: error: ", name);
-	vfprintf(d->out, fmt, ap);
-	fputc('\n', d->out);
+	file_vreport(d, DIAG_ERROR, name, fmt, ap);
+	va_end(ap);
+}
+
+void diag_file_warning(diag *d, const char *name, const char *fmt, ...)
+{
+	d->warnings++;
+	va_list ap;
+	va_start(ap, fmt);
+	file_vreport(d, DIAG_WARNING, name, fmt, ap);
 	va_end(ap);
 }

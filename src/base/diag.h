@@ -56,6 +56,8 @@ void diag_vreport(diag *d, diag_kind kind, diag_loc loc, const char *fmt, va_lis
 /* `name: error: message`, for files that have no line to quote (I/O errors, binary files). */
 void diag_file_error(diag *d, const char *name, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
+/* `name: warning: message`, the same for a warning about a file's contents. */
+void diag_file_warning(diag *d, const char *name, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 #define diag_error(d, loc, ...) diag_report((d), DIAG_ERROR, (loc), __VA_ARGS__)
 #define diag_warning(d, loc, ...) diag_report((d), DIAG_WARNING, (loc), __VA_ARGS__)

@@ -145,6 +145,83 @@ bool mesh_from_arrays(const mesh_arrays *a, mesh *out, diag *d, diag_loc loc)
 	return ok;
 }
 
+/* The bits of a coordinate, with -0 made +0 so that equal floats have equal keys. */
+static uint32_t coord_bits(float f)
+{
+	uint32_t u;
+	f = f == 0.0f ? 0.0f : f;
+	memcpy(&u, &f, sizeof u);
+	return u;
+}
+
+/* A triangle's corners as a key independent of their order: the three positions' bits, sorted. */
+typedef struct tri_key {
+	uint32_t c[9];
+} tri_key;
+
+static tri_key triangle_key(const mesh *m, uint32_t f)
+{
+	uint32_t p[3][3];
+	for (int k = 0; k < 3; k++) {
+		vec3 v = m->positions[m->indices[3 * (size_t)f + k]];
+		p[k][0] = coord_bits(v.x), p[k][1] = coord_bits(v.y), p[k][2] = coord_bits(v.z);
+	}
+	/* Three corners: a sorting network of three compare-exchanges. */
+	static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 1}};
+	for (int s = 0; s < 3; s++) {
+		uint32_t *a = p[pairs[s][0]], *b = p[pairs[s][1]];
+		if (memcmp(a, b, sizeof p[0]) > 0) {
+			uint32_t t[3];
+			memcpy(t, a, sizeof t), memcpy(a, b, sizeof t), memcpy(b, t, sizeof t);
+		}
+	}
+	tri_key k;
+	memcpy(k.c, p, sizeof k.c);
+	return k;
+}
+
+static uint64_t tri_key_hash(const tri_key *k)
+{
+	uint64_t h = 0xcbf29ce484222325ULL; /* FNV-1a over the words, then a final mix */
+	for (int i = 0; i < 9; i++)
+		h = (h ^ k->c[i]) * 0x100000001b3ULL;
+	return h ^ (h >> 31);
+}
+
+size_t mesh_remove_duplicate_triangles(mesh *m)
+{
+	size_t nt = m->num_triangles, cap = 16;
+	while (cap < 2 * nt)
+		cap *= 2;
+	uint32_t *slot = mem_alloc(cap, sizeof *slot); /* a kept triangle's new number, or UINT32_MAX */
+	if (!slot)
+		return SIZE_MAX;
+	memset(slot, 0xff, cap * sizeof *slot);
+	uint32_t kept = 0;
+	for (uint32_t f = 0; f < nt; f++) {
+		tri_key k = triangle_key(m, f);
+		size_t h = tri_key_hash(&k) & (cap - 1);
+		bool dup = false;
+		for (; slot[h] != UINT32_MAX; h = (h + 1) & (cap - 1)) {
+			tri_key o = triangle_key(m, slot[h]);
+			if (!memcmp(&o, &k, sizeof k)) {
+				dup = true;
+				break;
+			}
+		}
+		if (dup)
+			continue;
+		/* Kept triangles move down in order: slot[] names them by their new number, whose corners
+		 * are already in place. */
+		memmove(m->indices + 3 * (size_t)kept, m->indices + 3 * (size_t)f, 3 * sizeof *m->indices);
+		slot[h] = kept++;
+	}
+	mem_free(slot);
+	size_t removed = nt - kept;
+	m->num_triangles = kept;
+	return removed;
+}
+
 bool mesh_generate_tangents(mesh *m)
 {
 	if (!m->normals || !m->uvs)

@@ -62,6 +62,16 @@ bool mesh_from_arrays(const mesh_arrays *a, mesh *out, diag *d, diag_loc loc);
  * and give Assimp's reason. */
 bool mesh_import(const char *path, mesh *out, diag *d);
 
+/* The largest magnitude a mesh file's coordinate may have (after its node transforms): far beyond
+ * any model, and small enough that squares and cross products of edges stay finite in float. */
+#define MESH_MAX_COORD 1e15f
+
+/* Removes every triangle whose three corner positions (compared as floats, -0 equal to +0, in any
+ * order: either winding) are those of an earlier triangle, keeping the first, in order. Returns
+ * how many were removed, or SIZE_MAX when memory runs out (m unchanged). Vertices are kept: a
+ * duplicate's corners are at the kept triangle's positions, so the bounds do not change. */
+size_t mesh_remove_duplicate_triangles(mesh *m);
+
 /* Fills m->tangents from positions, normals and UVs (per-vertex accumulation of the per-triangle
  * tangent of Lengyel 2001, Gram-Schmidt against the normal). Needed when a normal map is used and
  * the file has none. False when the mesh lacks normals or UVs, or memory runs out. Triangles with

@@ -128,10 +128,24 @@ static bool header_line(ply_header *h, const char *line, char *why, size_t why_l
 	return fail(why, why_len, "unexpected line in the PLY header: '%.40s'", line);
 }
 
+/* A header line's bytes are printable ASCII and tabs, and any byte from 0x80 in a comment. A NUL,
+ * a lone CR or another control byte ends a line or a token for this reader but not for Assimp's,
+ * which then reads a different header: a fuzzed "element vertex 33" followed by NUL bytes
+ * overflowed its heap. */
+static bool clean_line(const char *s, size_t n, bool is_comment)
+{
+	for (size_t i = 0; i < n; i++) {
+		unsigned char c = (unsigned char)s[i];
+		if ((c < 0x20 && c != '\t') || c == 0x7f || (c >= 0x80 && !is_comment))
+			return false;
+	}
+	return true;
+}
+
 static bool read_header(ply_header *h, const char *data, size_t len, char *why, size_t why_len)
 {
 	size_t limit = len < PLY_MAX_HEADER ? len : PLY_MAX_HEADER, pos = 0;
-	for (int first = 1;; first = 0) {
+	for (int first = 1, lineno = 1;; first = 0, lineno++) {
 		const char *nl = memchr(data + pos, '\n', limit - pos);
 		if (!nl)
 			return fail(why, why_len, "the PLY header has no end_header line (a truncated file?)");
@@ -142,6 +156,11 @@ static bool read_header(ply_header *h, const char *data, size_t len, char *why, 
 		bool is_comment = n >= 7 && (!memcmp(data + pos, "comment", 7) || !memcmp(data + pos, "obj_info", 7));
 		if (n >= sizeof line && !is_comment)
 			return fail(why, why_len, "a PLY header line is longer than %d characters", PLY_MAX_LINE - 1);
+		if (!clean_line(data + pos, n, is_comment))
+			return fail(why, why_len,
+				    "line %d of the PLY header holds a control byte (NUL, CR, ...) or, outside a "
+				    "comment, a byte that is not ASCII",
+				    lineno);
 		memcpy(line, data + pos, n < sizeof line ? n : sizeof line - 1);
 		line[n < sizeof line ? n : sizeof line - 1] = '\0';
 		pos = (size_t)(nl - data) + 1;
@@ -258,7 +277,8 @@ static bool check_body(const ply_header *h, const char *d, size_t len, char *why
 
 bool ply_check(const char *data, size_t len, char *why, size_t why_len)
 {
-	if (len < 4 || memcmp(data, "ply", 3) || (data[3] != '\n' && data[3] != '\r'))
+	if (len < 4 || (memcmp(data, "ply", 3) && memcmp(data, "PLY", 3)) ||
+	    (data[3] != '\n' && data[3] != '\r'))
 		return true; /* not a PLY file: not ours to judge */
 	ply_header *h = mem_calloc(1, sizeof *h);
 	if (!h)

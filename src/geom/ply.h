@@ -16,8 +16,8 @@
 #define PLY_MAX_LIST 65535
 
 /* True when data (len bytes, the whole file) is not a PLY file at all (it does not start with the
- * line "ply") or is a structurally complete one; false with the reason in why (len why_len)
- * otherwise. */
+ * line "ply" or "PLY", Assimp's two magics) or is a structurally complete one; false with the
+ * reason in why (len why_len) otherwise. */
 bool ply_check(const char *data, size_t len, char *why, size_t why_len);
 
 /* ply_check on the file at path (mapped read-only); an unreadable file passes (the importer

@@ -5,8 +5,11 @@
 #include "io/atomic.h"
 #include "io/exr.h"
 
+#include <OpenEXR/openexr.h>
 #include <errno.h>
 #include <jpeglib.h>
+#include <jerror.h>
+#include <limits.h>
 #include <math.h>
 #include <png.h>
 #include <setjmp.h>
@@ -62,13 +65,37 @@ void image_free(image *img)
 	img->width = img->height = 0;
 }
 
-static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
+/* Bytes of a w x h image as float RGBA: all that loading it takes, since the 8-bit samples are
+ * decoded into the tail of the same array (from_integers). */
+static double image_bytes(double w, double h)
 {
-	if (w <= 0 || h <= 0 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE) {
-		diag_file_error(d, path, "image size %dx%d is out of range (1 to %d per side)", w, h,
+	return w * h * 4.0 * sizeof(float);
+}
+
+/* The size the file's header gives, checked before anything is decoded: each side in range, and
+ * the float image within max_bytes (0: no limit). */
+static bool size_ok(double w, double h, size_t max_bytes, const char *path, diag *d)
+{
+	if (!(w >= 1 && h >= 1 && w <= IMAGE_MAX_SIDE && h <= IMAGE_MAX_SIDE)) {
+		diag_file_error(d, path, "image size %.0fx%.0f is out of range (1 to %d per side)", w, h,
 				IMAGE_MAX_SIDE);
 		return false;
 	}
+	if (max_bytes && image_bytes(w, h) > (double)max_bytes) {
+		diag_file_error(
+		    d, path,
+		    "a %.0fx%.0f image takes %.0f MiB as float RGBA, more than the %.0f MiB left under the "
+		    "memory limit (--max-memory)",
+		    w, h, image_bytes(w, h) / (1 << 20), (double)max_bytes / (1 << 20));
+		return false;
+	}
+	return true;
+}
+
+static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
+{
+	if (!size_ok(w, h, 0, path, d))
+		return false;
 	img->width = w;
 	img->height = h;
 	img->rgba = mem_alloc((size_t)w * (size_t)h * 4, sizeof(float));
@@ -79,42 +106,37 @@ static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
 	return true;
 }
 
-/* Fills the float image from 8- or 16-bit samples with `comps` channels (1 grey, 2 grey+alpha,
- * 3 RGB, 4 RGBA). */
-static void from_integers(image *img, const unsigned char *px, int comps, int bytes, image_encoding enc)
+/* Where the 8-bit samples of `comps` channels are decoded: the last comps * w * h bytes of the
+ * float array, so from_integers can widen them in place. */
+static unsigned char *sample_tail(const image *img, int comps)
+{
+	size_t n = (size_t)img->width * img->height;
+	return (unsigned char *)img->rgba + n * 4 * sizeof(float) - n * (size_t)comps;
+}
+
+/* Fills the float image from 8-bit samples with `comps` channels (1 grey, 2 grey+alpha, 3 RGB,
+ * 4 RGBA) at px, which may be sample_tail(img, comps): pixel i is read whole before its 16 bytes
+ * are written, and they end before pixel i + 1's samples begin. */
+static void from_integers(image *img, const unsigned char *px, int comps, image_encoding enc)
 {
 	float lut[256];
 	for (int i = 0; i < 256; i++)
 		lut[i] = enc == IMAGE_SRGB ? image_srgb_to_linear(i / 255.0f) : i / 255.0f;
 	size_t n = (size_t)img->width * img->height;
+	bool has_alpha = comps == 2 || comps == 4;
 	for (size_t i = 0; i < n; i++) {
-		float v[4];
-		for (int c = 0; c < comps; c++) {
-			const unsigned char *s = px + (i * comps + c) * bytes;
-			if (bytes == 1)
-				v[c] = lut[s[0]];
-			else {
-				float f = ((s[0] << 8) | s[1]) / 65535.0f; /* PNG is big-endian */
-				v[c] = enc == IMAGE_SRGB ? image_srgb_to_linear(f) : f;
-			}
-		}
-		float *o = img->rgba + i * 4;
-		bool has_alpha = comps == 2 || comps == 4;
-		if (comps <= 2)
-			o[0] = o[1] = o[2] = v[0];
-		else
-			o[0] = v[0], o[1] = v[1], o[2] = v[2];
+		const unsigned char *s = px + i * (size_t)comps;
+		float v[3];
+		for (int c = 0; c < 3; c++)
+			v[c] = lut[s[comps <= 2 ? 0 : c]];
 		/* Alpha is linear coverage, never sRGB-encoded. */
-		if (has_alpha) {
-			const unsigned char *s = px + (i * comps + comps - 1) * bytes;
-			o[3] = bytes == 1 ? s[0] / 255.0f : ((s[0] << 8) | s[1]) / 65535.0f;
-		} else {
-			o[3] = 1.0f;
-		}
+		float a = has_alpha ? s[comps - 1] / 255.0f : 1.0f;
+		float *o = img->rgba + i * 4;
+		o[0] = v[0], o[1] = v[1], o[2] = v[2], o[3] = a;
 	}
 }
 
-static bool load_png(FILE *fp, const char *path, image_encoding enc, image *out, diag *d)
+static bool load_png(FILE *fp, const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d)
 {
 	png_image pi;
 	memset(&pi, 0, sizeof pi);
@@ -123,27 +145,22 @@ static bool load_png(FILE *fp, const char *path, image_encoding enc, image *out,
 		diag_file_error(d, path, "cannot read PNG: %s", pi.message);
 		return false;
 	}
-	/* Let libpng expand palettes and low bit depths; keep 16-bit precision when present. */
-	bool sixteen = (pi.format & PNG_FORMAT_FLAG_LINEAR) != 0;
-	int comps = PNG_IMAGE_SAMPLE_CHANNELS(pi.format);
-	pi.format = (comps >= 3 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA);
-	comps = comps >= 3 ? 4 : 2;
-	(void)sixteen;
-	if (!image_alloc(out, (int)pi.width, (int)pi.height, path, d)) {
+	/* Let libpng expand palettes and low bit depths to 8-bit RGBA or grey+alpha. */
+	int comps = PNG_IMAGE_SAMPLE_CHANNELS(pi.format) >= 3 ? 4 : 2;
+	pi.format = comps == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA;
+	if (!size_ok(pi.width, pi.height, max_bytes, path, d) ||
+	    !image_alloc(out, (int)pi.width, (int)pi.height, path, d)) {
 		png_image_free(&pi);
 		return false;
 	}
-	size_t stride = (size_t)PNG_IMAGE_ROW_STRIDE(pi);
-	unsigned char *buf = mem_alloc(stride, pi.height);
-	if (!buf || !png_image_finish_read(&pi, NULL, buf, (png_int_32)stride, NULL)) {
-		diag_file_error(d, path, "cannot read PNG: %s", buf ? pi.message : "out of memory");
-		mem_free(buf);
+	unsigned char *buf = sample_tail(out, comps);
+	if (!png_image_finish_read(&pi, NULL, buf, (png_int_32)PNG_IMAGE_ROW_STRIDE(pi), NULL)) {
+		diag_file_error(d, path, "cannot read PNG: %s", pi.message);
 		png_image_free(&pi);
 		image_free(out);
 		return false;
 	}
-	from_integers(out, buf, comps, 1, enc);
-	mem_free(buf);
+	from_integers(out, buf, comps, enc);
 	return true;
 }
 
@@ -151,6 +168,7 @@ struct jpeg_fail {
 	struct jpeg_error_mgr pub;
 	jmp_buf jump;
 	char msg[JMSG_LENGTH_MAX];
+	char warning[JMSG_LENGTH_MAX]; /* the first warning (corrupt or missing data), or "" */
 };
 
 static void jpeg_on_error(j_common_ptr cinfo)
@@ -160,27 +178,52 @@ static void jpeg_on_error(j_common_ptr cinfo)
 	longjmp(f->jump, 1);
 }
 
-static void jpeg_quiet(j_common_ptr cinfo, int level) { (void)cinfo, (void)level; }
+/* Trace messages (level >= 0) are dropped; warnings (-1: data corrupt or cut short, which libjpeg
+ * fills with grey) are counted and the first kept. */
+static void jpeg_on_message(j_common_ptr cinfo, int level)
+{
+	struct jpeg_fail *f = (struct jpeg_fail *)cinfo->err;
+	if (level >= 0)
+		return;
+	if (!f->pub.num_warnings++)
+		(*cinfo->err->format_message)(cinfo, f->warning);
+}
 
-/* libjpeg reports errors by longjmp; every allocation made after setjmp is freed on that path. */
-static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, image *out, diag *d)
+/* libjpeg reports errors by longjmp; the image is the only allocation, freed on that path. */
+static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d)
 {
 	struct jpeg_decompress_struct cinfo;
 	struct jpeg_fail jerr;
-	unsigned char *volatile buf = NULL;
+	jerr.warning[0] = '\0';
 	cinfo.err = jpeg_std_error(&jerr.pub);
 	jerr.pub.error_exit = jpeg_on_error;
-	jerr.pub.emit_message = jpeg_quiet;
+	jerr.pub.emit_message = jpeg_on_message;
 	if (setjmp(jerr.jump)) {
-		diag_file_error(d, path, "cannot read JPEG: %s", jerr.msg);
+		if (jerr.pub.msg_code == JERR_NO_BACKING_STORE)
+			diag_file_error(d, path,
+					"a progressive %ux%u JPEG needs its coefficients in memory too, more than "
+					"the %.0f MiB left under the memory limit (--max-memory)",
+					cinfo.image_width, cinfo.image_height, (double)max_bytes / (1 << 20));
+		else
+			diag_file_error(d, path, "cannot read JPEG: %s", jerr.msg);
 		jpeg_destroy_decompress(&cinfo);
-		mem_free(buf);
 		image_free(out);
 		return false;
 	}
 	jpeg_create_decompress(&cinfo);
 	jpeg_stdio_src(&cinfo, fp);
 	jpeg_read_header(&cinfo, TRUE);
+	/* The header's size, before jpeg_start_decompress allocates anything for it. */
+	if (!size_ok(cinfo.image_width, cinfo.image_height, max_bytes, path, d)) {
+		jpeg_destroy_decompress(&cinfo);
+		return false;
+	}
+	/* A progressive file is decoded through a whole-image buffer of coefficients (2 bytes a
+	 * sample) on top of the image: libjpeg refuses it (JERR_NO_BACKING_STORE) beyond what the
+	 * limit leaves. Baseline files need no such buffer. */
+	double left = (double)max_bytes - image_bytes(cinfo.image_width, cinfo.image_height);
+	if (max_bytes)
+		cinfo.mem->max_memory_to_use = left < (double)LONG_MAX ? (long)left : LONG_MAX;
 	cinfo.out_color_space = cinfo.num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
 	jpeg_start_decompress(&cinfo);
 	int comps = cinfo.output_components;
@@ -188,27 +231,47 @@ static bool load_jpeg(FILE *fp, const char *path, image_encoding enc, image *out
 		jpeg_destroy_decompress(&cinfo);
 		return false;
 	}
+	unsigned char *buf = sample_tail(out, comps);
 	size_t stride = (size_t)cinfo.output_width * comps;
-	buf = mem_alloc(stride, cinfo.output_height);
-	if (!buf) {
-		diag_file_error(d, path, "out of memory");
-		jpeg_destroy_decompress(&cinfo);
-		image_free(out);
-		return false;
-	}
 	while (cinfo.output_scanline < cinfo.output_height) {
 		JSAMPROW row = buf + cinfo.output_scanline * stride;
 		jpeg_read_scanlines(&cinfo, &row, 1);
 	}
 	jpeg_finish_decompress(&cinfo);
 	jpeg_destroy_decompress(&cinfo);
-	from_integers(out, buf, comps, 1, enc);
-	mem_free(buf);
+	from_integers(out, buf, comps, enc);
+	if (jerr.pub.num_warnings)
+		diag_file_warning(
+		    d, path,
+		    "the JPEG data is corrupt or cut short (%ld warning(s), the first: %s): the "
+		    "missing part is grey",
+		    jerr.pub.num_warnings, jerr.warning);
 	return true;
 }
 
-static bool load_exr(const char *path, image *out, diag *d)
+/* The size of an EXR's first part from its header alone (OpenEXR reads nothing else at start);
+ * false when the header cannot be read, which exrfile_read then reports. */
+static bool exr_header_size(const char *path, double *w, double *h)
 {
+	exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+	init.flags = EXR_CONTEXT_FLAG_SILENT_HEADER_PARSE;
+	init.error_handler_fn = NULL;
+	exr_context_t ctx = NULL;
+	exr_attr_box2i_t dw;
+	bool ok = exr_start_read(&ctx, path, &init) == EXR_ERR_SUCCESS &&
+		  exr_get_data_window(ctx, 0, &dw) == EXR_ERR_SUCCESS;
+	if (ctx)
+		exr_finish(&ctx);
+	if (ok)
+		*w = (double)dw.max.x - dw.min.x + 1.0, *h = (double)dw.max.y - dw.min.y + 1.0;
+	return ok;
+}
+
+static bool load_exr(const char *path, size_t max_bytes, image *out, diag *d)
+{
+	double hw, hh;
+	if (max_bytes && exr_header_size(path, &hw, &hh) && !size_ok(hw, hh, max_bytes, path, d))
+		return false;
 	exrfile_image ex;
 	if (!exrfile_read(path, &ex, d))
 		return false;
@@ -220,7 +283,8 @@ static bool load_exr(const char *path, image *out, diag *d)
 		exrfile_free(&ex);
 		return false;
 	}
-	if (!image_alloc(out, ex.width, ex.height, path, d)) {
+	if (!size_ok(ex.width, ex.height, max_bytes, path, d) ||
+	    !image_alloc(out, ex.width, ex.height, path, d)) {
 		exrfile_free(&ex);
 		return false;
 	}
@@ -250,6 +314,11 @@ image_format image_format_of(const unsigned char *head, size_t n)
 
 bool image_load(const char *path, image_encoding enc, image *out, diag *d)
 {
+	return image_load_limited(path, enc, 0, out, d);
+}
+
+bool image_load_limited(const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d)
+{
 	out->rgba = NULL;
 	out->width = out->height = 0;
 	FILE *fp = fopen(path, "rb");
@@ -263,11 +332,11 @@ bool image_load(const char *path, image_encoding enc, image *out, diag *d)
 	bool ok;
 	image_format fmt = image_format_of(magic, got);
 	if (fmt == IMAGE_PNG)
-		ok = load_png(fp, path, enc, out, d);
+		ok = load_png(fp, path, enc, max_bytes, out, d);
 	else if (fmt == IMAGE_JPEG)
-		ok = load_jpeg(fp, path, enc, out, d);
+		ok = load_jpeg(fp, path, enc, max_bytes, out, d);
 	else if (fmt == IMAGE_EXR)
-		ok = load_exr(path, out, d);
+		ok = load_exr(path, max_bytes, out, d);
 	else {
 		diag_file_error(d, path, "not a PNG, JPEG or OpenEXR image");
 		ok = false;

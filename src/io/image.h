@@ -28,6 +28,10 @@ image_format image_format_of(const unsigned char *head, size_t n);
 /* Loads by content (PNG and JPEG signatures, EXR magic); missing channels: grey fills RGB, alpha 1.
  * EXR uses R, G, B, A (or Y for luminance). False with the reason reported to d. */
 bool image_load(const char *path, image_encoding enc, image *out, diag *d);
+/* image_load refusing, from the size in a PNG, JPEG or EXR header and before anything is decoded,
+ * an image whose float RGBA (16 bytes a pixel: all that loading takes for PNG and JPEG; an EXR's
+ * planes come on top) exceeds max_bytes (0: no limit). */
+bool image_load_limited(const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d);
 void image_free(image *img);
 
 /* Bilinear lookup at texture coordinates (u, v), repeating outside [0, 1): u runs left to right,

@@ -21,10 +21,20 @@
 /* The grey of an object without a material: mid-grey diffuse. */
 #define WORLD_DEFAULT_GREY 0.5f
 
+/* The bytes a texture may take: what the allocator's limit leaves (main sets it to --max-memory,
+ * or the machine's memory), 0 when there is no limit. */
+static size_t texture_room(void)
+{
+	size_t limit = mem_limit(), live = mem_live_bytes();
+	return !limit ? 0 : limit > live ? limit - live : 1;
+}
+
 /* The image at path (the language resolved it against the scene's folders), loaded once per
- * world; NULL after reporting an error at loc. */
+ * world; NULL after reporting an error at loc. One that would not fit in texture_room() is
+ * refused from its header's size, before it is decoded. */
 static const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d)
 {
+	size_t max_bytes = texture_room();
 	char *full = mem_strdup(path);
 	if (!full) {
 		diag_error(d, loc, "out of memory");
@@ -47,7 +57,7 @@ static const image *world_image(world *w, diag_loc loc, const char *path, image_
 		diag_error(d, loc, "out of memory");
 		return NULL;
 	}
-	if (!image_load(full, enc, img, d)) {
+	if (!image_load_limited(full, enc, max_bytes, img, d)) {
 		diag_note(d, loc, "the image was named here");
 		mem_free(img);
 		mem_free(full);
@@ -379,7 +389,8 @@ static bool build_material(world *w, size_t k, const scene *sc, const world_opti
 	if (albedo)
 		warn_reflectance_image(wm->albedo, sm->loc, albedo, d);
 	if (sss && sm->sss.normal_map) {
-		if (!(wm->normal_map = world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
+		if (!(wm->normal_map =
+			  world_image(w, sm->loc, sm->sss.normal_map, IMAGE_RAW, d)))
 			return false;
 		wm->normal_strength = sm->sss.normal_strength;
 	}
@@ -883,7 +894,7 @@ static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, dia
 	return true;
 }
 
-static bool build_lights(world *w, const scene *sc, diag *d)
+static bool build_lights(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	light_set_init(&w->lights);
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
@@ -1038,7 +1049,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
 	ok = ok && (o.geometry_only || build_top(w, d));
-	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, &o, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_free(w);
 		return false;

@@ -120,6 +120,23 @@ vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit
 	return v3_scale(ratio, ft / (2.0f * PI_F * H));
 }
 
+bool sss_circle_repeats(const sss_circle_hit *hits, int i)
+{
+	for (int j = 0; j < i; j++) {
+		float d = fabsf(hits[i].theta - hits[j].theta);
+		if (fminf(d, 2.0f * PI_F - d) <= SSS_CIRCLE_SAME_THETA)
+			return true;
+	}
+	return false;
+}
+
+/* The weight a hit counts with: zero for a repeat of an earlier hit's point. */
+static vec3 counted_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *hits, int i,
+			   const sss_circle_opts *o)
+{
+	return sss_circle_repeats(hits, i) ? v3s(0.0f) : sss_circle_hit_weight(c, ratio, &hits[i], o);
+}
+
 int sss_circle_choose(const sss_circle *c, vec3 ratio, const sss_circle_hit *hits, int k, float u,
 		      const sss_circle_opts *o, vec3 *weight, float *prob)
 {
@@ -127,14 +144,13 @@ int sss_circle_choose(const sss_circle *c, vec3 ratio, const sss_circle_hit *hit
 	*prob = 0.0f;
 	float total = 0.0f;
 	for (int i = 0; i < k; i++)
-		total += v3_luminance(sss_circle_hit_weight(c, ratio, &hits[i], o));
+		total += v3_luminance(counted_weight(c, ratio, hits, i, o));
 	if (!(total > 0.0f) || !isfinite(total))
 		return -1;
 	float x = u * total;
 	int last = -1;
 	for (int i = 0; i < k; i++) {
-		vec3 w = sss_circle_hit_weight(c, ratio, &hits[i], o);
-		float l = v3_luminance(w);
+		float l = v3_luminance(counted_weight(c, ratio, hits, i, o));
 		if (l <= 0.0f)
 			continue;
 		last = i;

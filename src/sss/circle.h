@@ -24,6 +24,13 @@ typedef enum sss_circle_weight {
  * It bounds every hit's weight by ratio_c / (2 pi p_phi SSS_CIRCLE_GRAZING_MIN). */
 #define SSS_CIRCLE_GRAZING_MIN 0.02f
 
+/* Hits of one circle whose angles differ by at most this (radians, either way round) are one point
+ * of the surface, counted once (README.md, "Coincident surfaces"): duplicated triangles, or two
+ * objects of one SSS volume in the same place, each report the same point. A few float ulps of
+ * an angle near 2 pi (4.8e-7), far below any distance between distinct surfaces that matters:
+ * two hits that close are r * 2e-6 apart. */
+#define SSS_CIRCLE_SAME_THETA 2e-6f
+
 /* Probabilities of the three circle families (axes n, b1, b2) under mis_axes: King et al. 2013's
  * probe-axis probabilities. */
 #define SSS_CIRCLE_MIS_Q_NORMAL 0.5f
@@ -82,8 +89,15 @@ float sss_circle_leak(vec3 n, vec3 n_i, vec3 d);
 vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *h,
 			   const sss_circle_opts *o);
 
+/* True when hits[i] is at the point of an earlier hit (hits[0] to hits[i - 1]): their angles within
+ * SSS_CIRCLE_SAME_THETA. Such a hit is not counted by sss_circle_choose. */
+bool sss_circle_repeats(const sss_circle_hit *hits, int i);
+
 /* Resampling among the k hits of one circle: picks hit i with probability
- * P_i = lum(w_i) / sum_j lum(w_j), w_i = sss_circle_hit_weight, using u in [0, 1). Returns i, with
+ * P_i = lum(w_i) / sum_j lum(w_j), w_i = sss_circle_hit_weight, using u in [0, 1), where hits that
+ * repeat an earlier one's point (sss_circle_repeats) weigh 0: each point of the surface counts
+ * once, however many coincident triangles report it (the first in the array stands for them, its
+ * normal used). Returns i, with
  * *weight = w_i / P_i (the estimator's factor: multiply by the light arriving at hit i) and
  * *prob = P_i; each channel of *weight is at most k times the bound of sss_circle_hit_weight.
  * Returns -1 with *weight = 0 and *prob = 0 when k is 0 or every weight is 0 (the caller counts

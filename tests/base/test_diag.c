@@ -20,6 +20,7 @@ int main(void)
 	diag_warning(&d, ((diag_loc){src, 2, 2}), "tab before");
 	diag_error(&d, diag_noloc(), "no place");
 	diag_file_error(&d, "missing.obj", "cannot open: %s", "No such file or directory");
+	diag_file_warning(&d, "cut.jpg", "the JPEG data %s", "ends early");
 	fclose(out);
 	const char *expect =
 		"scenes/a.pov:3:14: error: expected ',' after the x component, found '1'\n"
@@ -32,9 +33,10 @@ int main(void)
 		"\tlocation <0, 1, -3>\n"
 		"\t^\n"
 		"circe: error: no place\n"
-		"missing.obj: error: cannot open: No such file or directory\n";
+		"missing.obj: error: cannot open: No such file or directory\n"
+		"cut.jpg: warning: the JPEG data ends early\n";
 	CHECK(strcmp(buf, expect) == 0, "got:\n%s\nexpected:\n%s", buf, expect);
-	CHECK(d.errors == 3 && d.warnings == 1, "counts %d errors %d warnings", d.errors, d.warnings);
+	CHECK(d.errors == 3 && d.warnings == 2, "counts %d errors %d warnings", d.errors, d.warnings);
 
 	/* The error limit: the 21st and later are counted, not printed. */
 	free(buf);

@@ -324,8 +324,27 @@ static void check_ply(void)
 	}
 }
 
+/* Exact duplicate triangles, in either winding and with -0 for +0, are removed, the first kept;
+ * a triangle sharing two corners, or all three up to one float step, is not a duplicate. */
+static void check_duplicates(void)
+{
+	mesh m;
+	CHECK(mesh_alloc(&m, 5, 6, false, false, false), "alloc");
+	vec3 p[5] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-0.0f, 0, 0}, {0, nextafterf(1.0f, 2.0f), 0}};
+	/* Kept; reversed; rotated with -0; one float step off (kept); again; another (kept). */
+	uint32_t ix[18] = {0, 1, 2, 2, 1, 0, 1, 2, 3, 0, 1, 4, 0, 1, 2, 0, 2, 4};
+	memcpy(m.positions, p, sizeof p), memcpy(m.indices, ix, sizeof ix);
+	CHECK(mesh_remove_duplicate_triangles(&m) == 3 && m.num_triangles == 3, "%u triangles kept",
+	      m.num_triangles);
+	uint32_t want[9] = {0, 1, 2, 0, 1, 4, 0, 2, 4};
+	CHECK(!memcmp(m.indices, want, sizeof want), "the first of each kept, in order");
+	CHECK(mesh_remove_duplicate_triangles(&m) == 0, "nothing left to remove");
+	mesh_free(&m);
+}
+
 int main(void)
 {
+	check_duplicates();
 	check_ply();
 	check_prims();
 	check_sphere_levels();

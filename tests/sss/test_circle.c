@@ -493,6 +493,57 @@ static void check_scale_invariance(void)
 	}
 }
 
+/* Coincident surfaces (README.md, "Coincident surfaces"): every hit of the sphere reported again
+ * by `copies - 1` more surfaces at the same place (as duplicated triangles or two objects of one
+ * volume report it: after the originals, angles a float ulp or so apart, normals of either
+ * orientation) gives the same estimate, sample for sample, as the sphere alone. */
+static void check_coincident(const sss_profile *prof, long count)
+{
+	scene sp = sphere_scene();
+	sss_circle_opts o = sss_circle_default_opts();
+	enum { MAX_COPIES = 10 };
+	double mean[MAX_COPIES + 1] = {0};
+	for (int copies = 1; copies <= MAX_COPIES; copies += copies == 1 ? 1 : 8) {
+		rng g;
+		rng_seed(&g, 77, 3);
+		double sum = 0.0;
+		vec3 xf = d3_to_v3(sp.x), nf = d3_to_v3(sp.n);
+		for (long i = 0; i < count; i++) {
+			double u0 = rng_double(&g), u1 = rng_double(&g);
+			double r = sss_profile_sample(prof, u0, u1);
+			float uf = rng_float(&g), up = rng_float(&g), us = rng_float(&g);
+			sss_circle c = sss_circle_make(xf, nf, (float)r, uf, up, &o);
+			sss_circle_hit hits[8 * MAX_COPIES];
+			int k = circle_hits(&c, &sp.q, hits), n = k;
+			for (int cp = 1; cp < copies; cp++)
+				for (int j = 0; j < k; j++, n++) {
+					hits[n] = hits[j];
+					hits[n].theta = nextafterf(hits[j].theta, cp & 1 ? 10.0f : -10.0f);
+					if (cp & 1)
+						hits[n].n = v3_neg(hits[j].n);
+					CHECK(sss_circle_repeats(hits, n),
+					      "copy %d of hit %d not seen as a repeat", cp, j);
+				}
+			vec3 w;
+			float prob;
+			int pick =
+			    sss_circle_choose(&c, sss_profile_ratio(prof, r), hits, n, us, &o, &w, &prob);
+			CHECK(pick < k, "%d copies: picked hit %d, a copy (of %d hits)", copies, pick, k);
+			if (pick >= 0)
+				sum += w.x * g_fn(v3_to_d3(hits[pick].p));
+		}
+		mean[copies] = sum / count;
+		printf("coincident surfaces: %2d copies of the sphere: %.6f\n", copies, mean[copies]);
+		CHECK(mean[copies] == mean[1], "%d copies: %.6f, one copy %.6f", copies, mean[copies],
+		      mean[1]);
+	}
+	/* Hits a little apart, or at the two ends of a full circle's range. */
+	sss_circle_hit h[3] = {
+	    {v3s(0), v3(0, 0, 1), 0.0f}, {v3s(0), v3(0, 0, 1), 1e-4f}, {v3s(0), v3(0, 0, 1), 6.2831850f}};
+	CHECK(!sss_circle_repeats(h, 1), "hits 1e-4 apart are distinct points");
+	CHECK(sss_circle_repeats(h, 2), "theta 2 pi - 2e-7 is theta 0");
+}
+
 int main(void)
 {
 	gauss_legendre(GL_N, gl_x, gl_w);
@@ -546,6 +597,7 @@ int main(void)
 		}
 	}
 	check_grazing(&prof, n);
+	check_coincident(&prof, n / 10);
 
 	/* A colour profile (burley, different radius and albedo per channel) on the sphere: the
 	 * one-sample MIS over channels and the luminance resampling are exact in every channel. */
