@@ -894,7 +894,7 @@ static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, dia
 	return true;
 }
 
-static bool build_lights(world *w, const scene *sc, const world_options *opt, diag *d)
+static bool build_lights(world *w, const scene *sc, diag *d)
 {
 	light_set_init(&w->lights);
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
@@ -1049,7 +1049,7 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
 	ok = ok && (o.geometry_only || build_top(w, d));
-	ok = ok && (o.geometry_only || (build_lights(w, sc, &o, d) && build_camera(w, sc, &o, d)));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_free(w);
 		return false;
