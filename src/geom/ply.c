@@ -4,15 +4,11 @@
 
 #include "base/mem.h"
 
-#include <fcntl.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 /* More than any PLY writer produces; the header is refused beyond them. */
 enum { PLY_MAX_ELEMENTS = 64, PLY_MAX_PROPS = 64, PLY_MAX_LINE = 256, PLY_MAX_TOKEN = 64 };
@@ -285,23 +281,5 @@ bool ply_check(const char *data, size_t len, char *why, size_t why_len)
 		return fail(why, why_len, "out of memory");
 	bool ok = read_header(h, data, len, why, why_len) && check_body(h, data, len, why, why_len);
 	mem_free(h);
-	return ok;
-}
-
-bool ply_check_file(const char *path, char *why, size_t why_len)
-{
-	int fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0)
-		return true;
-	struct stat st;
-	bool ok = true;
-	if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-		void *map = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-		if (map != MAP_FAILED) {
-			ok = ply_check(map, (size_t)st.st_size, why, why_len);
-			munmap(map, (size_t)st.st_size);
-		}
-	}
-	close(fd);
 	return ok;
 }

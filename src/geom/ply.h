@@ -20,8 +20,4 @@
  * reason in why (len why_len) otherwise. */
 bool ply_check(const char *data, size_t len, char *why, size_t why_len);
 
-/* ply_check on the file at path (mapped read-only); an unreadable file passes (the importer
- * reports it). */
-bool ply_check_file(const char *path, char *why, size_t why_len);
-
 #endif
