@@ -94,11 +94,17 @@ bool lang_error_found(parser *p, const char *fmt, ...)
 	return lang_error(p, t->loc, "%s, found %s", what, lang_describe(t, found, sizeof found));
 }
 
+/* The one message for every limit of LANG_MAX_DEPTH: recursion and open #if/#while alike. */
+static bool nesting_too_deep(parser *p, diag_loc loc)
+{
+	return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
+}
+
 bool lang_enter(parser *p, diag_loc loc)
 {
 	if (++p->depth > LANG_MAX_DEPTH) {
 		p->depth--;
-		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
+		return nesting_too_deep(p, loc);
 	}
 	return true;
 }
@@ -534,7 +540,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 {
 	if (p->n_conds >= LANG_MAX_DEPTH)
-		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_DEPTH);
+		return nesting_too_deep(p, loc);
 	cond *c = &p->conds[p->n_conds++];
 	c->kind = kind;
 	c->loc = loc;
