@@ -274,7 +274,7 @@ static bool lex_string(lang_lexer *lx, diag *d, lang_token *t)
 
 static bool lex_word(lang_lexer *lx, diag *d, lang_token *t, bool directive)
 {
-	const char *s = lx->p + directive, *p = s;
+	const char *s = lx->p, *p = s;
 	while (p < lx->end && is_ident_char(*p))
 		p++;
 	size_t n = (size_t)(p - s);
@@ -292,7 +292,7 @@ static bool lex_word(lang_lexer *lx, diag *d, lang_token *t, bool directive)
 				return true;
 			}
 		if (find_word(unsupported_directives, N_OF(unsupported_directives), sizeof(char *), s, n) >= 0) {
-			t->kind = LTK_UNSUPPORTED_DIRECTIVE; /* blanks may stand between '#' and s */
+			t->kind = LTK_UNSUPPORTED_DIRECTIVE;
 			return true;
 		}
 		if (n == 0)
@@ -331,11 +331,13 @@ bool lang_lex(lang_lexer *lx, diag *d, lang_token *t)
 	if (is_ident_start(c))
 		return lex_word(lx, d, t, false);
 	if (c == '#') {
-		/* POV-Ray allows blanks between '#' and the directive name. */
-		const char *q = p + 1;
-		while (q < lx->end && (*q == ' ' || *q == '\t'))
-			q++;
-		lx->p = q - 1;
+		/* POV-Ray 3.7 reads the directive's name as the next token after '#', so whitespace,
+		 * newlines and comments may stand between them; the token stays at the '#'. */
+		lx->p = p + 1;
+		if (!skip_space(lx, d)) {
+			t->kind = LTK_EOF;
+			return false;
+		}
 		return lex_word(lx, d, t, true);
 	}
 	t->text = p;

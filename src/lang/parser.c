@@ -94,11 +94,17 @@ bool lang_error_found(parser *p, const char *fmt, ...)
 	return lang_error(p, t->loc, "%s, found %s", what, lang_describe(t, found, sizeof found));
 }
 
+/* The one message for every limit of LANG_MAX_DEPTH: recursion and open #if/#while alike. */
+static bool nesting_too_deep(parser *p, diag_loc loc)
+{
+	return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
+}
+
 bool lang_enter(parser *p, diag_loc loc)
 {
 	if (++p->depth > LANG_MAX_DEPTH) {
 		p->depth--;
-		return lang_error(p, loc, "nesting too deep (limit is %d levels)", LANG_MAX_DEPTH);
+		return nesting_too_deep(p, loc);
 	}
 	return true;
 }
@@ -476,16 +482,36 @@ typedef enum skip_kind {
 	SKIP_WHILE /* a false #while's body: up to #end; #else is an error */
 } skip_kind;
 
+/* A block opened inside a skipped one: an #if remembers its first #else (line 0: none yet). */
+typedef struct skipped_block {
+	diag_loc open, else_at;
+	bool is_if;
+} skipped_block;
+
+/* At an #else inside a skipped branch, in the block nested innermost: a second #else of an #if is
+ * an error there too, as at the skip's own level. */
+static bool skipped_else(parser *p, skipped_block *b, diag_loc at)
+{
+	if (!b->is_if)
+		return true;
+	if (b->else_at.line)
+		return second_else(p, at, b->open, b->else_at);
+	b->else_at = at;
+	return true;
+}
+
 /* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open;
  * for SKIP_THEN, *else_at receives the #else that ended the skip (line 0: the #end ended it).
  * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
- * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level; at the outer
- * level '#elseif' is refused, as it is where circe runs the tokens. */
+ * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level, and counts
+ * toward the LANG_MAX_DEPTH open at once with the skipped block and the running ones; at the
+ * outer level '#elseif' is refused, as it is where circe runs the tokens. */
 static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_else, diag_loc *else_at)
 {
 	const char *what = kind == SKIP_WHILE ? "#while" : "#if";
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
-	int level = 0;
+	skipped_block nested[LANG_MAX_DEPTH];
+	int level = 0, room = LANG_MAX_DEPTH - 1 - p->n_conds;
 	if (else_at)
 		else_at->line = 0;
 	for (;;) {
@@ -494,26 +520,30 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 			p->failed = true;
 			return false;
 		}
+		bool opens = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_WHILE || opens_pov_block(&t);
+		if (opens) {
+			if (level >= room)
+				return nesting_too_deep(p, t.loc);
+			nested[level++] = (skipped_block){t.loc, diag_noloc(), t.kind == LTK_DIR_IF};
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_EOF:
 			lang_error(p, t.loc, "'#end' expected (to close '%s' at line %u), found end of file", what, open.line);
 			note(p, open, "'%s' opened here", what);
 			return false;
-		case LTK_DIR_IF:
-		case LTK_DIR_WHILE:
-			level++;
-			break;
 		case LTK_UNSUPPORTED_DIRECTIVE:
-			if (opens_pov_block(&t)) {
-				level++;
-			} else if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6)) {
+			if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6)) {
 				report_unsupported(p, &t);
 				return false;
 			}
 			break;
 		case LTK_DIR_ELSE:
-			if (level > 0)
+			if (level > 0) {
+				if (!skipped_else(p, &nested[level - 1], t.loc))
+					return false;
 				break;
+			}
 			if (kind == SKIP_THEN) {
 				*else_at = t.loc;
 				return true;
@@ -534,7 +564,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 {
 	if (p->n_conds >= LANG_MAX_DEPTH)
-		return lang_error(p, loc, "directives nested too deeply (limit is %d)", LANG_MAX_DEPTH);
+		return nesting_too_deep(p, loc);
 	cond *c = &p->conds[p->n_conds++];
 	c->kind = kind;
 	c->loc = loc;

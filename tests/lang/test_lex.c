@@ -57,6 +57,10 @@ int main(void)
 	CHECK(lex_all(&d, "1e400") == -1 && d.errors == 2, "overflow");
 	CHECK(lex_all(&d, "#macro") == 2 && kinds[0] == LTK_UNSUPPORTED_DIRECTIVE, "#macro lexes as unsupported");
 	CHECK(lex_all(&d, "#  \tdeclare") == 2 && kinds[0] == LTK_DIR_DECLARE, "blanks after '#'");
+	CHECK(lex_all(&d, "#\r\n // c\n /* b\n */ declare x") == 3 && kinds[0] == LTK_DIR_DECLARE &&
+		      lines[0] == 1 && cols[0] == 1 && lines[1] == 4 && cols[1] == 13,
+	      "newlines and comments after '#', as POV-Ray reads them");
+	CHECK(lex_all(&d, "# /* b") == -1 && d.errors == 3, "unterminated comment after '#'");
 	CHECK(lex_all(&d, "merge") == 2 && kinds[0] == LTK_UNSUPPORTED, "merge lexes as unsupported");
 	diag_free(&d);
 	return check_done("test_lex");
