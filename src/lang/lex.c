@@ -24,20 +24,76 @@ static const word directives[] = {
 #undef LANG_DIR_WORD
 };
 
-/* POV-Ray words outside the language, recognised so the error can name them. Sorted: looked up by
- * binary search (test_lex checks every entry is found). */
-static const char *const unsupported_words[] = {
-	"agate", "ambient", "area_light", "bicubic_patch", "blob", "bounded_by", "bozo", "brilliance",
-	"caustics", "checker", "clipped_by", "cone", "conserve_energy", "cubic", "cylinder", "cylindrical",
-	"density", "difference", "disc", "fade_distance", "fade_power", "filter", "fisheye", "fog",
-	"fresnel", "function", "gradient", "granite", "height_field", "hollow", "interpolate",
-	"intersection", "inverse", "irid", "isosurface", "julia_fractal", "lathe", "lemon", "looks_like",
-	"material_map", "media", "merge", "mesh_camera", "metallic", "normal", "omnimax", "open",
-	"orthographic", "ovus", "panoramic", "parametric", "pattern", "phong", "photons", "pigment_map",
-	"poly", "polygon", "prism", "projected_through", "quadric", "quartic", "radiosity", "rainbow",
-	"reflection", "refraction", "rgbf", "rgbft", "rgbt", "scattering", "smooth", "sor", "sphere_sweep",
-	"spherical", "spline", "srgb", "sturm", "subsurface", "superellipsoid", "text", "texture_map",
-	"torus", "translucency", "transmit", "turbulence", "ultra_wide_angle", "uv_mapping"};
+/* Every reserved word of POV-Ray 3.7, as listed in its Reserved_Words table
+ * (source/backend/parser/reswords.cpp on the 3.7-stable branch of github.com/POV-Ray/povray; the
+ * table's descriptive token names such as "float identifier" and its punctuation left out), plus
+ * "lemon", a shape of POV-Ray 3.8. A word here that is not a circe keyword (the keywords table
+ * wins) lexes as LTK_UNSUPPORTED, so the parser can say "'WORD' is not supported by circe"; a
+ * feature added moves its word into LANG_KEYWORDS. The directive names are here too, as in
+ * POV-Ray's table. Sorted: looked up by binary search (test_lex checks every entry is found). */
+static const char *const pov_words[] = {
+	"aa_level", "aa_threshold", "abs", "absorption", "accuracy", "acos", "acosh", "adaptive",
+	"adc_bailout", "agate", "agate_turb", "albedo", "all", "all_intersections", "alpha", "altitude",
+	"always_sample", "ambient", "ambient_light", "angle", "anisotropy", "aoi", "aperture", "append",
+	"arc_angle", "area_illumination", "area_light", "array", "asc", "ascii", "asin", "asinh",
+	"assumed_gamma", "atan", "atan2", "atanh", "autostop", "average", "b_spline", "background",
+	"bezier_spline", "bicubic_patch", "bitwise_and", "bitwise_or", "bitwise_xor", "black_hole", "blob",
+	"blue", "blur_samples", "bmp", "bokeh", "bounded_by", "box", "boxed", "bozo", "break", "brick",
+	"brick_size", "brightness", "brilliance", "bump_map", "bump_size", "bumps", "camera", "case",
+	"caustics", "ceil", "cells", "charset", "checker", "chr", "circular", "clipped_by", "clock",
+	"clock_on", "collect", "color", "color_map", "colour", "colour_map", "component", "composite",
+	"concat", "cone", "confidence", "conic_sweep", "conserve_energy", "contained_by", "control0",
+	"control1", "coords", "cos", "cosh", "count", "crackle", "crand", "cube", "cubic", "cubic_spline",
+	"cubic_wave", "cutaway_textures", "cylinder", "cylindrical", "datetime", "debug", "declare",
+	"default", "defined", "degrees", "density", "density_file", "density_map", "dents", "deprecated",
+	"df3", "difference", "diffuse", "dimension_size", "dimensions", "direction", "disc", "dispersion",
+	"dispersion_samples", "dist_exp", "distance", "distance_maximum", "div", "double_illuminate",
+	"dtag", "eccentricity", "else", "elseif", "emission", "end", "error", "error_bound", "evaluate",
+	"exp", "expand_thresholds", "exponent", "exr", "exterior", "extinction", "face_indices", "facets",
+	"fade_color", "fade_colour", "fade_distance", "fade_power", "falloff", "falloff_angle", "false",
+	"fclose", "file_exists", "filter", "finish", "fisheye", "flatness", "flip", "floor", "focal_point",
+	"fog", "fog_alt", "fog_offset", "fog_type", "fopen", "for", "form", "frequency", "fresnel",
+	"function", "gamma", "gather", "gif", "global", "global_lights", "global_settings", "gradient",
+	"granite", "gray", "gray_threshold", "green", "hdr", "height_field", "hexagon", "hf_gray_16",
+	"hierarchy", "hollow", "hypercomplex", "if", "ifdef", "iff", "ifndef", "image_map",
+	"image_pattern", "importance", "include", "inside", "inside_vector", "int", "interior",
+	"interior_texture", "internal", "interpolate", "intersection", "intervals", "inverse", "ior",
+	"irid", "irid_wavelength", "isosurface", "jitter", "jpeg", "julia", "julia_fractal", "lambda",
+	"lathe", "lemon", "leopard", "light_group", "light_source", "linear_spline", "linear_sweep", "ln",
+	"load_file", "local", "location", "log", "look_at", "looks_like", "low_error_factor", "macro",
+	"magnet", "major_radius", "mandel", "map_type", "marble", "material", "material_map", "matrix",
+	"max", "max_extent", "max_gradient", "max_intersections", "max_iteration", "max_sample",
+	"max_trace", "max_trace_level", "maximum_reuse", "media", "media_attenuation", "media_interaction",
+	"merge", "mesh", "mesh2", "mesh_camera", "metallic", "method", "metric", "min", "min_extent",
+	"minimum_reuse", "mm_per_unit", "mod", "mortar", "natural_spline", "nearest_count", "no",
+	"no_bump_scale", "no_image", "no_radiosity", "no_reflection", "no_shadow", "noise_generator",
+	"normal", "normal_indices", "normal_map", "normal_vectors", "now", "number_of_sides",
+	"number_of_tiles", "number_of_waves", "object", "octaves", "off", "offset", "omega", "omnimax",
+	"on", "once", "onion", "open", "orient", "orientation", "orthographic", "ovus", "panoramic",
+	"parallel", "parametric", "pass_through", "pattern", "pavement", "perspective", "pgm", "phase",
+	"phong", "phong_size", "photons", "pi", "pigment", "pigment_map", "pigment_pattern", "planar",
+	"plane", "png", "point_at", "poly", "poly_wave", "polygon", "polynomial", "pot", "pow", "ppm",
+	"precision", "precompute", "premultiplied", "pretrace_end", "pretrace_start", "prism", "prod",
+	"projected_through", "pwr", "quadratic_spline", "quadric", "quartic", "quaternion", "quick_color",
+	"quick_colour", "quilted", "radial", "radians", "radiosity", "radius", "rainbow", "ramp_wave",
+	"rand", "range", "ratio", "read", "reciprocal", "recursion_limit", "red", "reflection",
+	"reflection_exponent", "refraction", "render", "repeat", "rgb", "rgbf", "rgbft", "rgbt", "right",
+	"ripples", "rotate", "roughness", "samples", "save_file", "sblue", "scale", "scallop_wave",
+	"scattering", "seed", "select", "sgreen", "shadowless", "sin", "sine_wave", "sinh", "sint16be",
+	"sint16le", "sint32be", "sint32le", "sint8", "size", "sky", "sky_sphere", "slice", "slope",
+	"slope_map", "smooth", "smooth_triangle", "solid", "sor", "spacing", "specular", "sphere",
+	"sphere_sweep", "spherical", "spiral1", "spiral2", "spline", "split_union", "spotlight", "spotted",
+	"sqr", "sqrt", "square", "sred", "srgb", "srgbf", "srgbft", "srgbt", "statistics", "steps", "str",
+	"strcmp", "strength", "strlen", "strlwr", "strupr", "sturm", "substr", "subsurface", "sum",
+	"superellipsoid", "switch", "sys", "t", "tan", "tanh", "target", "text", "texture", "texture_list",
+	"texture_map", "tga", "thickness", "threshold", "tiff", "tightness", "tile2", "tiles", "tiling",
+	"tolerance", "toroidal", "torus", "trace", "transform", "translate", "translucency", "transmit",
+	"triangle", "triangle_wave", "triangular", "true", "ttf", "turb_depth", "turbulence", "type", "u",
+	"u_steps", "uint16be", "uint16le", "uint8", "ultra_wide_angle", "undef", "union", "up",
+	"use_alpha", "use_color", "use_colour", "use_index", "utf8", "uv_indices", "uv_mapping",
+	"uv_vectors", "v", "v_steps", "val", "variance", "vaxis_rotate", "vcross", "vdot", "version",
+	"vertex_vectors", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "warning", "warp",
+	"water_level", "waves", "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z"};
 static const char *const unsupported_directives[] = {
 	"append", "break", "case", "debug", "default", "elseif", "error", "fclose", "fopen", "for",
 	"ifdef", "ifndef", "macro", "range", "read", "render", "statistics", "switch", "undef",
@@ -79,8 +135,12 @@ lang_tok lang_keyword(const char *s, size_t len)
 
 bool lang_unsupported_word(const char *s, size_t len)
 {
-	return find_word(unsupported_words, N_OF(unsupported_words), sizeof(char *), s, len) >= 0;
+	return lang_keyword(s, len) == LTK_IDENT && find_word(pov_words, N_OF(pov_words), sizeof(char *), s, len) >= 0;
 }
+
+size_t lang_pov_word_count(void) { return N_OF(pov_words); }
+
+const char *lang_pov_word(size_t i) { return i < N_OF(pov_words) ? pov_words[i] : NULL; }
 
 const char *lang_tok_name(lang_tok k)
 {

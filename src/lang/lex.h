@@ -103,7 +103,11 @@ bool lang_lex(lang_lexer *lx, diag *d, lang_token *tok);
 const char *lang_tok_name(lang_tok k);
 /* The keyword with this spelling, or LTK_IDENT. */
 lang_tok lang_keyword(const char *s, size_t len);
-/* True for a POV-Ray word outside the language ("difference", "media", ...). */
+/* True for a POV-Ray 3.7 reserved word that is not a keyword of circe ("difference", "media", ...). */
 bool lang_unsupported_word(const char *s, size_t len);
+/* POV-Ray 3.7's reserved words (the table lang_unsupported_word searches), for tests: the i-th
+ * in sorted order, NULL past the end. */
+size_t lang_pov_word_count(void);
+const char *lang_pov_word(size_t i);
 
 #endif

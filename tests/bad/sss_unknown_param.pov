@@ -1,1 +1,1 @@
-sphere { 0, 1 material { skin { thickness 2 } } }
+sphere { 0, 1 material { skin { thicknes 2 } } }

@@ -40,6 +40,15 @@ int main(void)
 	CHECK(lang_unsupported_word("difference", 10) && lang_unsupported_word("uv_mapping", 10) &&
 		      lang_unsupported_word("agate", 5) && !lang_unsupported_word("sphere", 6),
 	      "unsupported word table");
+	/* Every POV-Ray 3.7 reserved word lexes as a circe keyword or as unsupported, never as an
+	 * identifier; the table is sorted, so each is found by bisection. */
+	CHECK(lang_pov_word_count() >= 500, "POV-Ray's table has %zu words", lang_pov_word_count());
+	for (size_t i = 0; i < lang_pov_word_count(); i++) {
+		const char *w = lang_pov_word(i);
+		CHECK(i == 0 || strcmp(lang_pov_word(i - 1), w) < 0, "'%s' out of order", w);
+		CHECK(lang_keyword(w, strlen(w)) != LTK_IDENT || lang_unsupported_word(w, strlen(w)),
+		      "POV-Ray word '%s' lexes as an identifier", w);
+	}
 
 	int n = lex_all(&d, "sphere { <0, 1.5e1,.5>, R }\r\n// c\n/* b\n */ #declare x<=>=!=\"a\\\"b\"");
 	static const lang_tok want[] = {LTK_KW_SPHERE, LTK_LBRACE, LTK_LT, LTK_NUMBER, LTK_COMMA, LTK_NUMBER,
