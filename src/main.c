@@ -570,6 +570,10 @@ static int cmd_render(int argc, char **argv)
 	diag d;
 	diag_init(&d, stderr);
 	lang_options lo = {.include_dirs = o.include_dirs, .n_include_dirs = (size_t)o.ninclude, .clock = o.clock};
+	lo.width = o.width;
+	lo.height = o.height;
+	lo.animated = o.frame >= 0;
+	lo.frame = o.frame;
 	scene *sc = NULL;
 	lang_status ls = lang_parse_file(o.scene, &lo, &d, &sc);
 	if (ls != LANG_OK) {

@@ -9,6 +9,7 @@
 #include "base/diag.h"
 #include "scene/scene.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 
 /* Limits that keep hostile input harmless; each is stated in its error message. */
@@ -20,6 +21,9 @@ enum {
 	LANG_MAX_VECTOR = 16, /* components of a vector literal (the matrix needs 12) */
 };
 
+/* image_width x image_height when the caller gives none: circe's default image (`circe render`). */
+enum { LANG_DEFAULT_WIDTH = 640, LANG_DEFAULT_HEIGHT = 480 };
+
 /* Reads the file at path (exactly as resolved by the parser) into a heap buffer obtained from
  * mem_alloc; the parser frees it with mem_free. Returns 0, or an errno value (ENOENT when the file
  * does not exist, which makes the parser try the next folder of the search path). */
@@ -28,7 +32,10 @@ typedef int (*lang_read_fn)(void *user, const char *path, char **text, size_t *l
 typedef struct lang_options {
 	const char *const *include_dirs; /* the -I folders, searched after the including file's */
 	size_t n_include_dirs;
-	double clock; /* the value of `clock` */
+	double clock; /* the value of `clock` (and of initial_clock and final_clock) */
+	bool animated; /* a frame of an animation (--frame): `clock_on` is 1 and frame_number is frame */
+	long frame; /* with animated: the frame number (and initial_frame and final_frame) */
+	int width, height; /* image_width and image_height; 0: LANG_DEFAULT_WIDTH x LANG_DEFAULT_HEIGHT */
 	lang_read_fn read; /* NULL: read from the file system */
 	void *read_user;
 	long max_loop_iterations; /* per #while (and 10x that in all); 0: LANG_MAX_LOOP_ITERATIONS and

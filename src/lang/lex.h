@@ -24,11 +24,11 @@ enum {
 	KW(APERTURE, "aperture") KW(ASIN, "asin") KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN2, "atan2")  \
 	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
 	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
-	KW(CLOCK, "clock") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
+	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
 	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
 	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
 	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
-	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
+	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
 	KW(FOCAL_POINT, "focal_point") KW(FULLCIRCLE, "fullcircle") KW(GAUSSIAN, "gaussian")            \
 	KW(GLOBAL_SETTINGS, "global_settings") KW(GROUP, "group") KW(IMAGE, "image")                    \
 	KW(IMAGE_MAP, "image_map") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(IOR, "ior")   \
@@ -36,9 +36,9 @@ enum {
 	KW(LOG, "log") KW(LOOK_AT, "look_at") KW(LOOP, "loop") KW(MARBLE, "marble")                      \
 	KW(MATERIAL, "material") KW(MATRIX, "matrix") KW(MAX, "max") KW(MAX_EDGE, "max_edge")            \
 	KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") KW(MESH2, "mesh2") KW(METHOD, "method")  \
-	KW(MIN, "min") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO_SHADOW, "no_shadow")          \
+	KW(MIN, "min") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO, "no") KW(NO_SHADOW, "no_shadow")          \
 	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")                              \
-	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(PARALLEL, "parallel")              \
+	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(OFF, "off") KW(ON, "on") KW(PARALLEL, "parallel")              \
 	KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment") KW(PLANE, "plane")            \
 	KW(PNG, "png") KW(POINT_AT, "point_at") KW(POW, "pow") KW(PRESET, "preset") KW(PROFILE, "profile") \
 	KW(RADIANS, "radians") KW(RADIUS, "radius") KW(RGB, "rgb") KW(RIGHT, "right")                    \
@@ -47,11 +47,11 @@ enum {
 	KW(SKY_SPHERE, "sky_sphere") KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular")    \
 	KW(SPHERE, "sphere") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(STRENGTH, "strength")        \
 	KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUM_OF_GAUSSIANS, "sum_of_gaussians")        \
-	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle")        \
+	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle") KW(TRUE, "true")        \
 	KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") KW(UV_INDICES, "uv_indices")            \
-	KW(UV_VECTORS, "uv_vectors") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERTEX_VECTORS,            \
+	KW(UV_VECTORS, "uv_vectors") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERSION, "version") KW(VERTEX_VECTORS,            \
 	"vertex_vectors") KW(VLENGTH, "vlength") KW(VNORMALIZE, "vnormalize") KW(VOLUME, "volume")     \
-	KW(WAX, "wax") KW(X, "x") KW(Y, "y") KW(Z, "z")
+	KW(WAX, "wax") KW(X, "x") KW(Y, "y") KW(YES, "yes") KW(Z, "z")
 
 /* X(enum suffix, spelling without '#'). */
 #define LANG_DIRECTIVES(X)                                                                          \

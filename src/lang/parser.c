@@ -654,13 +654,15 @@ static bool do_end(parser *p, diag_loc loc)
 	return begin_iteration(p, c);
 }
 
-/* version = "#version" expression ";" */
+/* version = "#version" expression ";"   (sets what `version` reads) */
 static bool do_version(parser *p)
 {
 	double v;
 	p->directive_expr = true;
 	bool ok = lang_float(p, "after '#version'", &v) && lang_expect(p, LTK_SEMI, "after the #version number");
 	p->directive_expr = false;
+	if (ok)
+		p->version = v;
 	return ok;
 }
 
@@ -910,6 +912,7 @@ static const func funcs[] = {
 };
 
 static const double PI = 3.14159265358979323846;
+static const double POV_VERSION = 3.7; /* the language circe reads: `version` before any #version */
 
 static bool need_vec3(parser *p, diag_loc loc, const value *v, const char *fname)
 {
@@ -1030,7 +1033,8 @@ static bool call(parser *p, const lang_token *name, const func *f, value *out)
 static bool expr_additive(parser *p, value *out);
 
 /* primary = number | string | "(" expression ")" | vector | colour | identifier | "x" | "y" | "z"
- *         | "pi" | "clock" | call
+ *         | "pi" | "clock" | "clock_on" | "version" | "true" | "yes" | "on" | "false" | "no" | "off"
+ *         | call
  * colour  = ("color" | "colour") [ "rgb" ] additive | "rgb" additive */
 static bool primary(parser *p, value *out)
 {
@@ -1091,6 +1095,23 @@ static bool primary(parser *p, value *out)
 		return true;
 	case LTK_KW_CLOCK:
 		set_float(out, p->opt.clock);
+		lang_advance(p);
+		return true;
+	case LTK_KW_TRUE:
+	case LTK_KW_YES:
+	case LTK_KW_ON:
+	case LTK_KW_FALSE:
+	case LTK_KW_NO:
+	case LTK_KW_OFF:
+		set_float(out, t->kind == LTK_KW_TRUE || t->kind == LTK_KW_YES || t->kind == LTK_KW_ON);
+		lang_advance(p);
+		return true;
+	case LTK_KW_VERSION:
+		set_float(out, p->version);
+		lang_advance(p);
+		return true;
+	case LTK_KW_CLOCK_ON:
+		set_float(out, p->opt.animated);
 		lang_advance(p);
 		return true;
 	case LTK_IDENT: {
@@ -1324,6 +1345,37 @@ bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_l
 
 /* ---- entry point ------------------------------------------------------------------------- */
 
+/* The floats POV-Ray 3.7 declares before the scene is read, as ordinary globals that a scene may
+ * #declare again (its front end adds them: frontend/simplefrontend.h, animationprocessing.cpp).
+ * circe renders one frame at a time, so the animation's range is that frame: clock_delta is 0, as
+ * in POV-Ray outside an animation. `tau` (2 pi) is POV-Ray 3.8's. */
+static bool predeclare(parser *p)
+{
+	double frame = p->opt.animated ? (double)p->opt.frame : 0.0;
+	const struct {
+		const char *name;
+		double v;
+	} pre[] = {
+		{"tau", 2.0 * PI},
+		{"clock_delta", 0.0},
+		{"initial_clock", p->opt.clock},
+		{"final_clock", p->opt.clock},
+		{"frame_number", frame},
+		{"initial_frame", frame},
+		{"final_frame", frame},
+		{"image_width", p->opt.width > 0 ? p->opt.width : LANG_DEFAULT_WIDTH},
+		{"image_height", p->opt.height > 0 ? p->opt.height : LANG_DEFAULT_HEIGHT},
+	};
+	for (size_t i = 0; i < sizeof pre / sizeof pre[0]; i++) {
+		lang_token name = {.kind = LTK_IDENT, .loc = diag_noloc(), .text = pre[i].name,
+				   .len = (uint32_t)strlen(pre[i].name)};
+		value v = {.kind = VAL_FLOAT, .n = 1, .v = {pre[i].v}};
+		if (!define(p, &name, false, &v))
+			return false;
+	}
+	return true;
+}
+
 lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, scene **out)
 {
 	*out = NULL;
@@ -1344,6 +1396,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 	vecbuf_init(&p->globals, sizeof(symbol));
 	vecbuf_init(&p->locals, sizeof(symbol));
 	p->eof.kind = LTK_EOF;
+	p->version = POV_VERSION;
 	lang_status st = LANG_OK;
 	const diag_source *src;
 	int err = open_source(p, path, &src);
@@ -1357,6 +1410,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		}
 	} else {
 		push_file(p, src, arena_strdup(&sc->arena, path), diag_noloc());
+		predeclare(p);
 		p->eof.loc = (diag_loc){src, 1, 1};
 		while (!p->failed && lang_peek(p)->kind != LTK_EOF)
 			if (!lang_statement(p))

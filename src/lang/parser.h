@@ -71,6 +71,7 @@ typedef struct parser {
 	bool directive_expr; /* parsing a directive's own expression: directives there are errors */
 	int depth; /* recursion guard for expressions and nested blocks */
 	long total_iterations;
+	double version; /* `version`: 3.7 until a #version sets it */
 	vecbuf globals, locals; /* symbol */
 } parser;
 

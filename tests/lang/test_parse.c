@@ -26,6 +26,10 @@ static const memfile files[] = {
 	{"loops31.pov", "#include \"loops.pov\"\n#while (I = 3) #declare I = 0; #end"},
 	{"l3.inc", "#declare I = 0; #while (I < 3) #declare I = I + 1; #end"},
 	{"loop4.pov", "#declare I = 0;\n#while (I < 4) #declare I = I + 1; #end sphere { 0, 1 }"},
+	/* the values the caller gives: a box of the image size, spheres of the animation's values */
+	{"values.pov", "box { -1, <image_width, image_height, clock_on> }\n"
+		       "sphere { <frame_number, initial_frame, final_frame>, clock + 1 }\n"
+		       "sphere { <clock_delta, initial_clock, final_clock>, 1 }\n"},
 };
 
 static int read_mem(void *user, const char *path, char **text, size_t *len)
@@ -118,6 +122,36 @@ int main(void)
 						    "(limit is 30 in all)"),
 	      "31 iterations with a total limit of 30: %s", msg);
 	opt.max_loop_iterations = 0;
+
+	/* image_width, image_height, clock_on and the animation's frame from the options. */
+	lang_options vo = {.read = read_mem, .read_user = &reads, .clock = 0.5, .animated = true, .frame = 7,
+			   .width = 32, .height = 24};
+	st = parse_quiet("values.pov", &vo, &sc, msg, sizeof msg);
+	CHECK(st == LANG_OK && sc, "values.pov: status %d: %s", (int)st, msg);
+	if (sc) {
+		const scene_geom *b = scene_object_at(sc, 0)->geom, *s1 = scene_object_at(sc, 1)->geom,
+			    *s2 = scene_object_at(sc, 2)->geom;
+		CHECK(b->u.box.corner2.x == 32 && b->u.box.corner2.y == 24 && b->u.box.corner2.z == 1,
+		      "image_width, image_height, clock_on: %g %g %g", b->u.box.corner2.x, b->u.box.corner2.y,
+		      b->u.box.corner2.z);
+		CHECK(s1->u.sphere.center.x == 7 && s1->u.sphere.center.y == 7 && s1->u.sphere.center.z == 7 &&
+			      s1->u.sphere.radius == 1.5,
+		      "frame_number, initial_frame, final_frame, clock");
+		CHECK(s2->u.sphere.center.x == 0 && s2->u.sphere.center.y == 0.5 && s2->u.sphere.center.z == 0.5,
+		      "clock_delta, initial_clock, final_clock");
+	}
+	scene_free(sc);
+	vo.animated = false, vo.width = 0, vo.height = 0;
+	st = parse_quiet("values.pov", &vo, &sc, msg, sizeof msg);
+	CHECK(st == LANG_OK && sc, "values.pov, no animation: status %d: %s", (int)st, msg);
+	if (sc) {
+		const scene_geom *b = scene_object_at(sc, 0)->geom, *s1 = scene_object_at(sc, 1)->geom;
+		CHECK(b->u.box.corner2.x == LANG_DEFAULT_WIDTH && b->u.box.corner2.y == LANG_DEFAULT_HEIGHT &&
+			      b->u.box.corner2.z == 0,
+		      "default image size, clock_on 0");
+		CHECK(s1->u.sphere.center.x == 0 && s1->u.sphere.center.z == 0, "frame_number 0 outside an animation");
+	}
+	scene_free(sc);
 
 	/* Allocation failure anywhere is an error, never a crash or a leak (under the sanitizers). */
 	for (long n = 0; n < 400; n += 7) {
