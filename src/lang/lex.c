@@ -96,8 +96,7 @@ static const char *const pov_words[] = {
 	"water_level", "waves", "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z"};
 static const char *const unsupported_directives[] = {
 	"append", "break", "case", "debug", "default", "elseif", "error", "fclose", "fopen", "for",
-	"ifdef", "ifndef", "macro", "range", "read", "render", "statistics", "switch", "undef",
-	"warning", "write"};
+	"macro", "range", "read", "render", "statistics", "switch", "warning", "write"};
 
 /* strcmp of the NUL-terminated w against the n bytes at s. */
 static int cmp_word(const char *w, const char *s, size_t n)

@@ -56,7 +56,8 @@ enum {
 /* X(enum suffix, spelling without '#'). */
 #define LANG_DIRECTIVES(X)                                                                          \
 	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else")    \
-	X(END, "end") X(WHILE, "while") X(VERSION, "version")
+	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
+	X(UNDEF, "undef")
 
 typedef enum lang_tok {
 	LTK_EOF,

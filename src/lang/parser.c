@@ -460,7 +460,7 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
  * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
 static bool opens_pov_block(const lang_token *t)
 {
-	static const char *const names[] = {"for", "ifdef", "ifndef", "macro", "switch"};
+	static const char *const names[] = {"for", "macro", "switch"};
 	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 		return false;
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -469,10 +469,16 @@ static bool opens_pov_block(const lang_token *t)
 	return false;
 }
 
-static bool second_else(parser *p, diag_loc at, diag_loc if_loc, diag_loc first_else)
+/* The name of an #if-like directive token for messages: "#if", "#ifdef", "#ifndef". */
+static const char *if_name(lang_tok k)
 {
-	return lang_error(p, at, "a second '#else' for the '#if' at line %u (the first '#else' is at line %u)",
-			  if_loc.line, first_else.line);
+	return k == LTK_DIR_IFDEF ? "#ifdef" : k == LTK_DIR_IFNDEF ? "#ifndef" : "#if";
+}
+
+static bool second_else(parser *p, diag_loc at, const char *what, diag_loc if_loc, diag_loc first_else)
+{
+	return lang_error(p, at, "a second '#else' for the '%s' at line %u (the first '#else' is at line %u)",
+			  what, if_loc.line, first_else.line);
 }
 
 /* What a skip is looking for at its own level (not inside the blocks nested in it). */
@@ -486,6 +492,7 @@ typedef enum skip_kind {
 typedef struct skipped_block {
 	diag_loc open, else_at;
 	bool is_if;
+	const char *what; /* is_if: "#if", "#ifdef" or "#ifndef" */
 } skipped_block;
 
 /* At an #else inside a skipped branch, in the block nested innermost: a second #else of an #if is
@@ -495,7 +502,7 @@ static bool skipped_else(parser *p, skipped_block *b, diag_loc at)
 	if (!b->is_if)
 		return true;
 	if (b->else_at.line)
-		return second_else(p, at, b->open, b->else_at);
+		return second_else(p, at, b->what, b->open, b->else_at);
 	b->else_at = at;
 	return true;
 }
@@ -506,9 +513,9 @@ static bool skipped_else(parser *p, skipped_block *b, diag_loc at)
  * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level, and counts
  * toward the LANG_MAX_DEPTH open at once with the skipped block and the running ones; at the
  * outer level '#elseif' is refused, as it is where circe runs the tokens. */
-static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_else, diag_loc *else_at)
+static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *what, diag_loc first_else,
+		       diag_loc *else_at)
 {
-	const char *what = kind == SKIP_WHILE ? "#while" : "#if";
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	skipped_block nested[LANG_MAX_DEPTH];
 	int level = 0, room = LANG_MAX_DEPTH - 1 - p->n_conds;
@@ -520,11 +527,12 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 			p->failed = true;
 			return false;
 		}
-		bool opens = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_WHILE || opens_pov_block(&t);
+		bool is_if = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_IFDEF || t.kind == LTK_DIR_IFNDEF;
+		bool opens = is_if || t.kind == LTK_DIR_WHILE || opens_pov_block(&t);
 		if (opens) {
 			if (level >= room)
 				return nesting_too_deep(p, t.loc);
-			nested[level++] = (skipped_block){t.loc, diag_noloc(), t.kind == LTK_DIR_IF};
+			nested[level++] = (skipped_block){t.loc, diag_noloc(), is_if, if_name(t.kind)};
 			continue;
 		}
 		switch (t.kind) {
@@ -550,7 +558,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 			}
 			if (kind == SKIP_WHILE)
 				return lang_error(p, t.loc, "'#else' without '#if'");
-			return second_else(p, t.loc, open, first_else);
+			return second_else(p, t.loc, what, open, first_else);
 		case LTK_DIR_END:
 			if (level-- == 0)
 				return true;
@@ -561,15 +569,32 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, diag_loc first_
 	}
 }
 
-static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
+static bool push_cond(parser *p, cond_kind kind, diag_loc loc, const char *what)
 {
 	if (p->n_conds >= LANG_MAX_DEPTH)
 		return nesting_too_deep(p, loc);
 	cond *c = &p->conds[p->n_conds++];
 	c->kind = kind;
 	c->loc = loc;
+	c->what = what;
 	c->file = p->n_files - 1;
 	c->iterations = 0;
+	return true;
+}
+
+/* Runs the branch chosen by truth of the #if (or #ifdef, #ifndef) at loc, skipping the other. */
+static bool branch(parser *p, diag_loc loc, const char *what, bool truth)
+{
+	diag_loc else_at;
+	if (truth)
+		return push_cond(p, COND_IF, loc, what);
+	if (!skip_block(p, loc, SKIP_THEN, what, diag_noloc(), &else_at))
+		return false;
+	if (else_at.line == 0)
+		return true;
+	if (!push_cond(p, COND_ELSE, loc, what))
+		return false;
+	p->conds[p->n_conds - 1].else_loc = else_at;
 	return true;
 }
 
@@ -577,18 +602,70 @@ static bool push_cond(parser *p, cond_kind kind, diag_loc loc)
 static bool do_if(parser *p, diag_loc loc)
 {
 	bool truth;
-	diag_loc else_at;
-	if (!cond_expr(p, "after '#if'", &truth))
+	return cond_expr(p, "after '#if'", &truth) && branch(p, loc, "#if", truth);
+}
+
+/* The name a directive takes (#ifdef's, #undef's): an identifier, or a word of the language or of
+ * POV-Ray, which is never declared. *sym: its symbol, or NULL. */
+static bool directive_name(parser *p, const char *dname, lang_token *name, const symbol **sym)
+{
+	lang_token *t = lang_peek(p);
+	bool word = t->kind == LTK_IDENT || t->kind == LTK_UNSUPPORTED ||
+		    (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
+	if (!word)
+		return lang_error_found(p, "expected an identifier after '%s'", dname);
+	*name = *lang_advance(p);
+	*sym = name->kind == LTK_IDENT ? lang_lookup(p, name->text, name->len) : NULL;
+	return true;
+}
+
+/* Removes the innermost declaration of the name (as lang_lookup finds it: locals first). */
+static void forget(parser *p, const char *name, size_t len)
+{
+	vecbuf *tabs[] = {&p->locals, &p->globals};
+	for (int k = 0; k < 2; k++) {
+		symbol *base = tabs[k]->data;
+		for (size_t i = tabs[k]->len; i-- > 0;)
+			if (strlen(base[i].name) == len && !memcmp(base[i].name, name, len)) {
+				memmove(base + i, base + i + 1, (tabs[k]->len - i - 1) * sizeof *base);
+				tabs[k]->len--;
+				return;
+			}
+	}
+}
+
+/* ifdef = ( "#ifdef" | "#ifndef" ) "(" identifier ")" { token } [ "#else" { token } ] "#end"
+ * As POV-Ray 3.7's Parse_Ifdef_Param: true when the name is declared (a keyword never is). */
+static bool do_ifdef(parser *p, diag_loc loc, bool want_defined)
+{
+	const char *dname = want_defined ? "#ifdef" : "#ifndef";
+	char ctx[32];
+	snprintf(ctx, sizeof ctx, "after '%s'", dname);
+	lang_token name;
+	const symbol *s = NULL;
+	p->directive_expr = true;
+	bool ok = lang_expect(p, LTK_LPAREN, ctx) && directive_name(p, dname, &name, &s) &&
+		  lang_expect(p, LTK_RPAREN, "after the identifier");
+	p->directive_expr = false;
+	return ok && branch(p, loc, dname, (s != NULL) == want_defined);
+}
+
+/* undef = "#undef" identifier. Forgets the innermost declaration of the name; an unknown name is a
+ * warning, as in POV-Ray 3.7. */
+static bool do_undef(parser *p)
+{
+	lang_token name;
+	const symbol *s = NULL;
+	p->directive_expr = true;
+	bool ok = directive_name(p, "#undef", &name, &s);
+	p->directive_expr = false;
+	if (!ok)
 		return false;
-	if (truth)
-		return push_cond(p, COND_IF, loc);
-	if (!skip_block(p, loc, SKIP_THEN, diag_noloc(), &else_at))
-		return false;
-	if (else_at.line == 0)
+	if (!s) {
+		diag_warning(p->d, name.loc, "'#undef' of '%.*s', which is not declared", (int)name.len, name.text);
 		return true;
-	if (!push_cond(p, COND_ELSE, loc))
-		return false;
-	p->conds[p->n_conds - 1].else_loc = else_at;
+	}
+	forget(p, name.text, name.len);
 	return true;
 }
 
@@ -598,8 +675,8 @@ static bool do_else(parser *p, diag_loc loc)
 		return lang_error(p, loc, "'#else' without '#if'");
 	cond c = p->conds[--p->n_conds];
 	if (c.kind == COND_ELSE)
-		return second_else(p, loc, c.loc, c.else_loc);
-	return skip_block(p, c.loc, SKIP_ELSE, loc, NULL);
+		return second_else(p, loc, c.what, c.loc, c.else_loc);
+	return skip_block(p, c.loc, SKIP_ELSE, c.what, loc, NULL);
 }
 
 /* Counts an iteration that the loop c begins. The limits count iterations begun: a loop of
@@ -623,8 +700,8 @@ static bool do_while(parser *p, diag_loc loc)
 	if (!cond_expr(p, "after '#while'", &truth))
 		return false;
 	if (!truth)
-		return skip_block(p, loc, SKIP_WHILE, diag_noloc(), NULL);
-	if (!push_cond(p, COND_WHILE, loc))
+		return skip_block(p, loc, SKIP_WHILE, "#while", diag_noloc(), NULL);
+	if (!push_cond(p, COND_WHILE, loc, "#while"))
 		return false;
 	p->conds[p->n_conds - 1].restart = restart;
 	return begin_iteration(p, &p->conds[p->n_conds - 1]);
@@ -672,7 +749,7 @@ static bool end_of_file(parser *p, const lang_token *t)
 	include_frame *f = &p->files[p->n_files - 1];
 	if (p->n_conds > f->cond_base) {
 		cond *c = &p->conds[p->n_conds - 1];
-		const char *what = c->kind == COND_WHILE ? "#while" : "#if";
+		const char *what = c->what;
 		lang_error(p, t->loc, "'#end' expected (to close '%s' at line %u), found end of file", what, c->loc.line);
 		note(p, c->loc, "'%s' opened here", what);
 		return false;
@@ -700,6 +777,9 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_ELSE: ok = do_else(p, dir->loc); break;
 	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
 	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
+	case LTK_DIR_IFDEF: ok = do_ifdef(p, dir->loc, true); break;
+	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
+	case LTK_DIR_UNDEF: ok = do_undef(p); break;
 	default: ok = do_version(p); break;
 	}
 	lang_leave(p);

@@ -41,6 +41,7 @@ typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE } cond_kind;
 typedef struct cond {
 	cond_kind kind;
 	diag_loc loc;
+	const char *what; /* its directive for messages: "#if", "#ifdef", "#ifndef", "#while" */
 	int file; /* index into files */
 	diag_loc else_loc; /* COND_ELSE: its #else */
 	lang_lexer restart; /* COND_WHILE: just after the `#while` word */

@@ -14,6 +14,11 @@
 #declare Ball = sphere { 0, 1 }
 // rule: if, token
 #if (A < 0) sphere { 0, 2 } #else sphere { 0, 3 } #end
+// rule: ifdef, undef
+#declare Gone = 1;
+#undef Gone
+#ifdef (Gone) sphere { 0, 4 } #end
+#ifndef (Gone) sphere { 0, 5 } #else sphere { 0, 6 } #end
 // rule: while
 #declare I = 0;
 #while (I < 2) #declare I = I + 1; #end

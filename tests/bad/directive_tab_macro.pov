@@ -1,3 +1,3 @@
 // A tab between # and the name.
-#	ifdef (A)
+#	macro M()
 #end

@@ -1,0 +1,3 @@
+// An #ifdef must be closed in its file.
+#ifdef (Nothing)
+sphere { 0, 1 }
