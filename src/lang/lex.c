@@ -95,8 +95,8 @@ static const char *const pov_words[] = {
 	"vertex_vectors", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "warning", "warp",
 	"water_level", "waves", "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z"};
 static const char *const unsupported_directives[] = {
-	"append", "break", "case", "debug", "default", "elseif", "error", "fclose", "fopen", "for",
-	"macro", "range", "read", "render", "statistics", "switch", "warning", "write"};
+	"append", "break", "case", "default", "elseif", "fclose", "fopen", "for", "macro", "range",
+	"read", "render", "statistics", "switch", "write"};
 
 /* strcmp of the NUL-terminated w against the n bytes at s. */
 static int cmp_word(const char *w, const char *s, size_t n)
@@ -299,6 +299,24 @@ static bool lex_number(lang_lexer *lx, diag *d, lang_token *t)
 	return true;
 }
 
+/* The escapes of POV-Ray 3.7's strings (String_To_UCS2 in parsestr.cpp) but \\u: a backslash and
+ * one of these; lang_string_escape gives each one's byte. */
+static const char STRING_ESCAPES[] = "abfnrtv'\"\\";
+
+char lang_string_escape(char c)
+{
+	switch (c) {
+	case 'a': return '\a';
+	case 'b': return '\b';
+	case 'f': return '\f';
+	case 'n': return '\n';
+	case 'r': return '\r';
+	case 't': return '\t';
+	case 'v': return '\v';
+	default: return c; /* ' " \ */
+	}
+}
+
 static bool lex_string(lang_lexer *lx, diag *d, lang_token *t)
 {
 	const char *p = lx->p + 1;
@@ -310,11 +328,12 @@ static bool lex_string(lang_lexer *lx, diag *d, lang_token *t)
 		if (*p == '"')
 			break;
 		if (*p == '\\') {
-			if (p + 1 < lx->end && (p[1] == '"' || p[1] == '\\')) {
+			if (p + 1 < lx->end && p[1] != '\0' && strchr(STRING_ESCAPES, p[1])) {
 				p += 2;
 				continue;
 			}
-			diag_error(d, here(lx, p), "unknown escape in string: only \\\" and \\\\ are allowed");
+			diag_error(d, here(lx, p), "unknown escape in string: circe reads \\a \\b \\f \\n \\r \\t \\v "
+						   "\\' \\\" and \\\\");
 			return false;
 		}
 		p++;

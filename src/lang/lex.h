@@ -57,7 +57,7 @@ enum {
 #define LANG_DIRECTIVES(X)                                                                          \
 	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else")    \
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
-	X(UNDEF, "undef")
+	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error")
 
 typedef enum lang_tok {
 	LTK_EOF,
@@ -102,6 +102,8 @@ void lang_lexer_init(lang_lexer *lx, const diag_source *src);
 bool lang_lex(lang_lexer *lx, diag *d, lang_token *tok);
 /* The spelling of a token kind for messages: "'{'", "'sphere'", "a number", "end of file". */
 const char *lang_tok_name(lang_tok k);
+/* The byte a string escape stands for: 'n' gives '\n' (the lexer accepts only POV-Ray's escapes). */
+char lang_string_escape(char c);
 /* The keyword with this spelling, or LTK_IDENT. */
 lang_tok lang_keyword(const char *s, size_t len);
 /* True for a POV-Ray 3.7 reserved word that is not a keyword of circe ("difference", "media", ...). */

@@ -116,11 +116,8 @@ static bool decode_string(parser *p, const lang_token *s, value *out)
 	if (!buf)
 		return lang_error(p, s->loc, "out of memory");
 	size_t k = 0;
-	for (uint32_t i = 0; i < s->len; i++) {
-		if (s->text[i] == '\\')
-			i++;
-		buf[k++] = s->text[i];
-	}
+	for (uint32_t i = 0; i < s->len; i++)
+		buf[k++] = s->text[i] == '\\' ? lang_string_escape(s->text[++i]) : s->text[i];
 	buf[k] = '\0';
 	out->kind = VAL_STRING;
 	out->n = 0;
@@ -762,6 +759,76 @@ static bool end_of_file(parser *p, const lang_token *t)
 	return true;
 }
 
+/* The text of a #warning or #error as one line of a diagnostic: control characters (a "\n" at
+ * its end, say) become spaces, and trailing blanks go. */
+static const char *message_line(parser *p, const char *s)
+{
+	char *m = arena_strdup(&p->sc->arena, s);
+	if (!m)
+		return s;
+	size_t n = strlen(m);
+	for (size_t i = 0; i < n; i++)
+		if ((unsigned char)m[i] < 0x20 || m[i] == 0x7f)
+			m[i] = ' ';
+	while (n > 0 && m[n - 1] == ' ')
+		m[--n] = '\0';
+	return m;
+}
+
+/* The operand of #debug, #warning, #error: a string or a name declared as one. One token, as the
+ * directive has no terminator: reading on for an operator would take the next directive as the
+ * lookahead. (With string operators, such as concat, this becomes an expression.) */
+static bool message_text(parser *p, const char *what, const char **s)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind == LTK_STRING) {
+		value v;
+		if (!decode_string(p, lang_advance(p), &v))
+			return false;
+		*s = v.str;
+		return true;
+	}
+	const symbol *sym = t->kind == LTK_IDENT ? lang_lookup(p, t->text, t->len) : NULL;
+	if (sym && sym->val.kind == VAL_STRING) {
+		lang_advance(p);
+		*s = sym->val.str;
+		return true;
+	}
+	if (sym)
+		return lang_error(p, t->loc, "expected a string %s, found %s", what, lang_value_kind_name(&sym->val));
+	if (t->kind == LTK_IDENT)
+		return lang_error(p, t->loc, "undeclared identifier '%.*s'", (int)t->len, t->text);
+	return lang_error_found(p, "expected a string %s", what);
+}
+
+/* message = ( "#debug" | "#warning" | "#error" ) ( string | identifier )
+ * As POV-Ray 3.7: #debug writes the text as it is (its "\n" ends a line) to the diagnostics stream
+ * (stderr); #warning reports it as a warning at the directive; #error stops the parse with it. */
+static bool do_message(parser *p, const lang_token *dir)
+{
+	const char *dname = dir->kind == LTK_DIR_DEBUG ? "#debug" : dir->kind == LTK_DIR_WARNING ? "#warning" : "#error";
+	char what[32];
+	snprintf(what, sizeof what, "after '%s'", dname);
+	const char *s = NULL;
+	p->directive_expr = true;
+	bool ok = message_text(p, what, &s);
+	p->directive_expr = false;
+	if (!ok)
+		return false;
+	if (dir->kind == LTK_DIR_DEBUG) {
+		if (p->d->out) {
+			fputs(s, p->d->out);
+			fflush(p->d->out);
+		}
+		return true;
+	}
+	if (dir->kind == LTK_DIR_WARNING) {
+		diag_warning(p->d, dir->loc, "%s", message_line(p, s));
+		return true;
+	}
+	return lang_error(p, dir->loc, "parse halted by #error: %s", message_line(p, s));
+}
+
 /* Runs one directive. A directive reads its operands through the token stream, which may run
  * further directives inside it (`#declare X = #if ...`): each counts a level of LANG_MAX_DEPTH. */
 static bool run_directive(parser *p, const lang_token *dir)
@@ -780,6 +847,9 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_IFDEF: ok = do_ifdef(p, dir->loc, true); break;
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;
+	case LTK_DIR_DEBUG:
+	case LTK_DIR_WARNING:
+	case LTK_DIR_ERROR: ok = do_message(p, dir); break;
 	default: ok = do_version(p); break;
 	}
 	lang_leave(p);

@@ -19,6 +19,9 @@
 #undef Gone
 #ifdef (Gone) sphere { 0, 4 } #end
 #ifndef (Gone) sphere { 0, 5 } #else sphere { 0, 6 } #end
+// rule: message
+#debug ""
+#if (0) #warning "skipped" #error "skipped" #end
 // rule: while
 #declare I = 0;
 #while (I < 2) #declare I = I + 1; #end

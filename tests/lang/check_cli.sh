@@ -56,6 +56,24 @@ expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
 expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
 expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
 grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+# #debug, #warning and #undef's warning go to stderr exactly so; check still succeeds.
+expect 0 "#debug and #warning" -- sh -c 'cd "$1" && "$2" check messages.pov' sh "$good" "$CIRCE"
+cmp -s "$tmp/err" "$good/messages.stderr" ||
+	{ echo "FAIL #debug/#warning output differs (expected, then got):"; cat "$good/messages.stderr" "$tmp/err"; fail=1; }
+# #error stops with exit 3 and its message at the directive.
+printf 'sphere { 0, 1 }\n#error "stop"\n' >"$tmp/error.pov"
+expect 3 "#error" -- "$CIRCE" check "$tmp/error.pov"
+grep -qx "$tmp/error.pov:2:1: error: parse halted by #error: stop" "$tmp/err" ||
+	{ echo "FAIL #error message:"; cat "$tmp/err"; fail=1; }
+# render gives the scene its image size and frame (main.c fills lang_options).
+cat >"$tmp/values.pov" <<'EOF2'
+#if (image_width != 6 | image_height != 4 | frame_number != 3 | !clock_on | clock != 0.5)
+  #error "wrong values"
+#end
+sphere { 0, 1 }
+EOF2
+expect 0 "render's image_width, image_height, frame_number, clock_on" -- \
+	"$CIRCE" render "$tmp/values.pov" -W 6 -H 4 --spp 1 --frame 3 --clock 0.5 -o "$tmp/values.exr" --quiet
 printf 'sphere { 0, 1 scale <1, 2, 1> material { skin {} } }\nsphere { 0, 1 scale 2 material { wax {} } }\n' >"$tmp/nu.pov"
 expect 0 "non-uniform SSS" -- "$CIRCE" check "$tmp/nu.pov"
 grep -q "SSS objects under a non-uniform scale: 1 " "$tmp/out" || { echo "FAIL non-uniform SSS not reported"; fail=1; }

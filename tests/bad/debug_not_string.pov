@@ -1,0 +1,2 @@
+// #debug takes a string.
+#debug 1
