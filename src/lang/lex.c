@@ -95,7 +95,7 @@ static const char *const pov_words[] = {
 	"vertex_vectors", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "warning", "warp",
 	"water_level", "waves", "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z"};
 static const char *const unsupported_directives[] = {
-	"append", "break", "case", "default", "elseif", "fclose", "fopen", "for", "macro", "range",
+	"append", "break", "case", "default", "elseif", "fclose", "fopen", "macro", "range",
 	"read", "render", "statistics", "switch", "write"};
 
 /* strcmp of the NUL-terminated w against the n bytes at s. */

@@ -457,7 +457,7 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
  * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
 static bool opens_pov_block(const lang_token *t)
 {
-	static const char *const names[] = {"for", "macro", "switch"};
+	static const char *const names[] = {"macro", "switch"};
 	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 		return false;
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -525,7 +525,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 			return false;
 		}
 		bool is_if = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_IFDEF || t.kind == LTK_DIR_IFNDEF;
-		bool opens = is_if || t.kind == LTK_DIR_WHILE || opens_pov_block(&t);
+		bool opens = is_if || t.kind == LTK_DIR_WHILE || t.kind == LTK_DIR_FOR || opens_pov_block(&t);
 		if (opens) {
 			if (level >= room)
 				return nesting_too_deep(p, t.loc);
@@ -668,7 +668,8 @@ static bool do_undef(parser *p)
 
 static bool do_else(parser *p, diag_loc loc)
 {
-	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE)
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE ||
+	    p->conds[p->n_conds - 1].kind == COND_FOR)
 		return lang_error(p, loc, "'#else' without '#if'");
 	cond c = p->conds[--p->n_conds];
 	if (c.kind == COND_ELSE)
@@ -682,7 +683,7 @@ static bool begin_iteration(parser *p, cond *c)
 {
 	long limit = p->opt.max_loop_iterations > 0 ? p->opt.max_loop_iterations : LANG_MAX_LOOP_ITERATIONS;
 	if (++c->iterations > limit)
-		return lang_error(p, c->loc, "#while loop runs too long (limit is %ld iterations)", limit);
+		return lang_error(p, c->loc, "%s loop runs too long (limit is %ld iterations)", c->what, limit);
 	long total = p->opt.max_loop_iterations > 0 ? 10 * limit : DEFAULT_TOTAL_ITERATIONS;
 	if (++p->total_iterations > total)
 		return lang_error(p, c->loc, "too many loop iterations in this scene (limit is %ld in all)", total);
@@ -704,12 +705,83 @@ static bool do_while(parser *p, diag_loc loc)
 	return begin_iteration(p, &p->conds[p->n_conds - 1]);
 }
 
+/* The loop variable of #for goes on while it has not passed the end (POV-Ray 3.7's
+ * Parse_For_Param and its #end, with their tolerance). */
+static const double FOR_EPSILON = 1e-10;
+
+static bool for_goes_on(double v, double end, double step)
+{
+	return step > 0 ? v <= end + FOR_EPSILON : v >= end - FOR_EPSILON;
+}
+
+/* for = "#for" "(" identifier "," expression "," expression [ "," expression ] ")" { token } "#end"
+ * As POV-Ray 3.7: the identifier is declared in the current scope (as by #local), takes the start
+ * value, and the body runs while it has not passed the end, adding the step (default 1) at each
+ * #end; a step of 0 is an error. */
+static bool do_for(parser *p, diag_loc loc)
+{
+	p->directive_expr = true;
+	lang_token name;
+	double start = 0, end = 0, step = 1;
+	diag_loc step_loc = loc;
+	bool ok = lang_expect(p, LTK_LPAREN, "after '#for'");
+	if (ok && lang_peek(p)->kind != LTK_IDENT)
+		ok = lang_error_found(p, "expected the loop variable's name after '#for ('");
+	if (ok) {
+		name = *lang_advance(p);
+		ok = lang_expect(p, LTK_COMMA, "after the loop variable") && lang_float(p, "as the start", &start) &&
+		     lang_expect(p, LTK_COMMA, "after the start") && lang_float(p, "as the end", &end);
+	}
+	if (ok && lang_accept(p, LTK_COMMA)) {
+		step_loc = lang_peek(p)->loc;
+		ok = lang_float(p, "as the step", &step);
+	}
+	ok = ok && lang_expect(p, LTK_RPAREN, "to close '#for ('");
+	p->directive_expr = false;
+	if (!ok)
+		return false;
+	if (fabs(step) < FOR_EPSILON)
+		return lang_error(p, step_loc, "the step of '#for' must not be 0");
+	value v = {.kind = VAL_FLOAT, .n = 1, .v = {start}};
+	if (!define(p, &name, true, &v))
+		return false;
+	if (!for_goes_on(start, end, step))
+		return skip_block(p, loc, SKIP_WHILE, "#for", diag_noloc(), NULL);
+	if (!push_cond(p, COND_FOR, loc, "#for"))
+		return false;
+	cond *c = &p->conds[p->n_conds - 1];
+	c->restart = p->files[p->n_files - 1].lx;
+	c->var = arena_strndup(&p->sc->arena, name.text, name.len);
+	c->end = end, c->step = step;
+	if (!c->var)
+		return no_memory(p, loc);
+	return begin_iteration(p, c);
+}
+
+/* At a #for's #end: the step added, one more iteration while the variable has not passed the end. */
+static bool end_for(parser *p, cond *c, diag_loc at)
+{
+	symbol *s = (symbol *)lang_lookup(p, c->var, strlen(c->var));
+	if (!s || s->val.kind != VAL_FLOAT)
+		return lang_error(p, at, "the loop variable '%s' of the '#for' at line %u must stay a float (it is %s)",
+				  c->var, c->loc.line, s ? lang_value_kind_name(&s->val) : "undeclared");
+	s->val.v[0] += c->step;
+	if (!for_goes_on(s->val.v[0], c->end, c->step)) {
+		p->n_conds--;
+		return true;
+	}
+	p->files[p->n_files - 1].lx = c->restart;
+	return begin_iteration(p, c);
+}
+
 /* At a #while's #end: one more iteration when the condition still holds. */
 static bool do_end(parser *p, diag_loc loc)
 {
 	if (p->n_conds <= p->files[p->n_files - 1].cond_base)
 		return lang_error(p, loc, "'#end' without '#if' or '#while'");
 	cond *c = &p->conds[p->n_conds - 1];
+	if (c->kind == COND_FOR)
+		return end_for(p, c, loc);
 	if (c->kind != COND_WHILE) {
 		p->n_conds--;
 		return true;
@@ -844,6 +916,7 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_ELSE: ok = do_else(p, dir->loc); break;
 	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
 	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
+	case LTK_DIR_FOR: ok = do_for(p, dir->loc); break;
 	case LTK_DIR_IFDEF: ok = do_ifdef(p, dir->loc, true); break;
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;

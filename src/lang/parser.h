@@ -36,7 +36,7 @@ typedef struct include_frame {
 	const char *released; /* mapped sources: text before this was handed back to the kernel */
 } include_frame;
 
-typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE } cond_kind;
+typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE, COND_FOR } cond_kind;
 
 typedef struct cond {
 	cond_kind kind;
@@ -44,8 +44,10 @@ typedef struct cond {
 	const char *what; /* its directive for messages: "#if", "#ifdef", "#ifndef", "#while" */
 	int file; /* index into files */
 	diag_loc else_loc; /* COND_ELSE: its #else */
-	lang_lexer restart; /* COND_WHILE: just after the `#while` word */
-	long iterations; /* COND_WHILE: begun so far */
+	lang_lexer restart; /* COND_WHILE: just after the `#while` word; COND_FOR: after its ')' */
+	long iterations; /* COND_WHILE, COND_FOR: begun so far */
+	const char *var; /* COND_FOR: the loop variable, its end and step */
+	double end, step;
 } cond;
 
 typedef struct symbol {

@@ -25,6 +25,8 @@
 // rule: while
 #declare I = 0;
 #while (I < 2) #declare I = I + 1; #end
+// rule: for
+#for (F, 1, 0, -1) #end
 // rule: include
 #include "walk.inc"
 // rule: global_settings, integer
