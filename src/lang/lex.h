@@ -57,7 +57,8 @@ enum {
 #define LANG_DIRECTIVES(X)                                                                          \
 	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else")    \
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
-	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for")
+	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for") X(SWITCH, "switch")     \
+	X(CASE, "case") X(RANGE, "range") X(BREAK, "break")
 
 typedef enum lang_tok {
 	LTK_EOF,

@@ -442,13 +442,24 @@ static bool do_declare(parser *p, const lang_token *dir)
 	return ok && define(p, &name, local, &v);
 }
 
+/* "(" float ")" of a directive; what: "after '#if'". */
+static bool paren_float(parser *p, const char *what, const char *role, double *v)
+{
+	*v = 0;
+	p->directive_expr = true;
+	char after[64];
+	snprintf(after, sizeof after, "after the %s", role);
+	char as[64];
+	snprintf(as, sizeof as, "as the %s", role);
+	bool ok = lang_expect(p, LTK_LPAREN, what) && lang_float(p, as, v) && lang_expect(p, LTK_RPAREN, after);
+	p->directive_expr = false;
+	return ok;
+}
+
 static bool cond_expr(parser *p, const char *what, bool *truth)
 {
 	double v;
-	p->directive_expr = true;
-	bool ok = lang_expect(p, LTK_LPAREN, what) && lang_float(p, "as the condition", &v) &&
-		  lang_expect(p, LTK_RPAREN, "after the condition");
-	p->directive_expr = false;
+	bool ok = paren_float(p, what, "condition", &v);
 	*truth = v != 0.0;
 	return ok;
 }
@@ -457,7 +468,7 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
  * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
 static bool opens_pov_block(const lang_token *t)
 {
-	static const char *const names[] = {"macro", "switch"};
+	static const char *const names[] = {"macro"};
 	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 		return false;
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -482,7 +493,9 @@ static bool second_else(parser *p, diag_loc at, const char *what, diag_loc if_lo
 typedef enum skip_kind {
 	SKIP_THEN, /* a false #if's branch: up to its #else or #end */
 	SKIP_ELSE, /* the #else branch of a true #if: up to #end; a second #else is an error */
-	SKIP_WHILE /* a false #while's body: up to #end; #else is an error */
+	SKIP_WHILE, /* a false #while's body: up to #end; #else is an error */
+	SKIP_CASE, /* a #switch's case that does not match: up to its next #case, #range, #else or #end */
+	SKIP_TO_END /* after #break: up to #end, past #else, #case and #range */
 } skip_kind;
 
 /* A block opened inside a skipped one: an #if remembers its first #else (line 0: none yet). */
@@ -504,28 +517,30 @@ static bool skipped_else(parser *p, skipped_block *b, diag_loc at)
 	return true;
 }
 
-/* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open;
- * for SKIP_THEN, *else_at receives the #else that ended the skip (line 0: the #end ended it).
+/* Skips raw tokens up to the #else (SKIP_THEN only) or #end that closes the block opened at open
+ * (for SKIP_CASE also its #case and #range); *stop, when not NULL, receives the directive that ended
+ * the skip.
  * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
  * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level, and counts
  * toward the LANG_MAX_DEPTH open at once with the skipped block and the running ones; at the
  * outer level '#elseif' is refused, as it is where circe runs the tokens. */
 static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *what, diag_loc first_else,
-		       diag_loc *else_at)
+		       lang_token *stop)
 {
 	lang_lexer *lx = &p->files[p->n_files - 1].lx;
 	skipped_block nested[LANG_MAX_DEPTH];
 	int level = 0, room = LANG_MAX_DEPTH - 1 - p->n_conds;
-	if (else_at)
-		else_at->line = 0;
+	lang_token t;
+	if (!stop)
+		stop = &t;
 	for (;;) {
-		lang_token t;
 		if (!lang_lex(lx, p->d, &t)) {
 			p->failed = true;
 			return false;
 		}
 		bool is_if = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_IFDEF || t.kind == LTK_DIR_IFNDEF;
-		bool opens = is_if || t.kind == LTK_DIR_WHILE || t.kind == LTK_DIR_FOR || opens_pov_block(&t);
+		bool opens = is_if || t.kind == LTK_DIR_WHILE || t.kind == LTK_DIR_FOR || t.kind == LTK_DIR_SWITCH ||
+			     opens_pov_block(&t);
 		if (opens) {
 			if (level >= room)
 				return nesting_too_deep(p, t.loc);
@@ -549,16 +564,27 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 					return false;
 				break;
 			}
-			if (kind == SKIP_THEN) {
-				*else_at = t.loc;
+			if (kind == SKIP_THEN || kind == SKIP_CASE) {
+				*stop = t;
 				return true;
 			}
+			if (kind == SKIP_TO_END)
+				break;
 			if (kind == SKIP_WHILE)
 				return lang_error(p, t.loc, "'#else' without '#if'");
 			return second_else(p, t.loc, what, open, first_else);
-		case LTK_DIR_END:
-			if (level-- == 0)
+		case LTK_DIR_CASE:
+		case LTK_DIR_RANGE:
+			if (level == 0 && kind == SKIP_CASE) {
+				*stop = t;
 				return true;
+			}
+			break;
+		case LTK_DIR_END:
+			if (level-- == 0) {
+				*stop = t;
+				return true;
+			}
 			break;
 		default:
 			break;
@@ -582,16 +608,16 @@ static bool push_cond(parser *p, cond_kind kind, diag_loc loc, const char *what)
 /* Runs the branch chosen by truth of the #if (or #ifdef, #ifndef) at loc, skipping the other. */
 static bool branch(parser *p, diag_loc loc, const char *what, bool truth)
 {
-	diag_loc else_at;
+	lang_token stop;
 	if (truth)
 		return push_cond(p, COND_IF, loc, what);
-	if (!skip_block(p, loc, SKIP_THEN, what, diag_noloc(), &else_at))
+	if (!skip_block(p, loc, SKIP_THEN, what, diag_noloc(), &stop))
 		return false;
-	if (else_at.line == 0)
+	if (stop.kind == LTK_DIR_END)
 		return true;
 	if (!push_cond(p, COND_ELSE, loc, what))
 		return false;
-	p->conds[p->n_conds - 1].else_loc = else_at;
+	p->conds[p->n_conds - 1].else_loc = stop.loc;
 	return true;
 }
 
@@ -668,6 +694,8 @@ static bool do_undef(parser *p)
 
 static bool do_else(parser *p, diag_loc loc)
 {
+	if (p->n_conds > p->files[p->n_files - 1].cond_base && p->conds[p->n_conds - 1].kind == COND_SWITCH)
+		return true; /* a case that ran on without #break: on into the #else, as in POV-Ray */
 	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind == COND_WHILE ||
 	    p->conds[p->n_conds - 1].kind == COND_FOR)
 		return lang_error(p, loc, "'#else' without '#if'");
@@ -800,6 +828,100 @@ static bool do_end(parser *p, diag_loc loc)
 	return begin_iteration(p, c);
 }
 
+/* The tolerance of #case, as POV-Ray 3.7's (EPSILON, configbackend.h). */
+static const double CASE_EPSILON = 1e-10;
+
+/* case = "#case" "(" expression ")" ; range = "#range" "(" expression "," expression ")".
+ * *match: the switch value v equals the case's (within CASE_EPSILON) or lies in the range. */
+static bool case_matches(parser *p, const lang_token *t, double v, bool *match)
+{
+	if (t->kind == LTK_DIR_CASE) {
+		double x;
+		if (!paren_float(p, "after '#case'", "case value", &x))
+			return false;
+		*match = fabs(x - v) < CASE_EPSILON;
+		return true;
+	}
+	double lo = 0, hi = 0;
+	p->directive_expr = true;
+	bool ok = lang_expect(p, LTK_LPAREN, "after '#range'") && lang_float(p, "as the range's low end", &lo) &&
+		  lang_expect(p, LTK_COMMA, "after the range's low end") &&
+		  lang_float(p, "as the range's high end", &hi) && lang_expect(p, LTK_RPAREN, "after the range");
+	p->directive_expr = false;
+	*match = v >= lo && v <= hi;
+	return ok;
+}
+
+/* From the #case, #range, #else or #end t of the #switch at loc on: runs the first case that
+ * matches v (and, without #break, what follows it), or the #else, or nothing. */
+static bool select_case(parser *p, diag_loc loc, double v, lang_token t)
+{
+	for (;;) {
+		if (t.kind == LTK_DIR_END)
+			return true;
+		bool match = t.kind == LTK_DIR_ELSE;
+		if (!match && !case_matches(p, &t, v, &match))
+			return false;
+		if (match) {
+			if (!push_cond(p, COND_SWITCH, loc, "#switch"))
+				return false;
+			p->conds[p->n_conds - 1].value = v;
+			return true;
+		}
+		if (!skip_block(p, loc, SKIP_CASE, "#switch", diag_noloc(), &t))
+			return false;
+	}
+}
+
+/* switch = "#switch" "(" expression ")" { ( case | range ) { token } } [ "#else" { token } ] "#end"
+ * As POV-Ray 3.7: the first #case or #range that matches runs up to #break or the #end, on
+ * through the later #case, #range and #else; none matching runs the #else. */
+static bool do_switch(parser *p, diag_loc loc)
+{
+	double v;
+	if (!paren_float(p, "after '#switch'", "switch value", &v))
+		return false;
+	lang_token t;
+	if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, &t)) {
+		p->failed = true;
+		return false;
+	}
+	if (t.kind != LTK_DIR_CASE && t.kind != LTK_DIR_RANGE) {
+		char found[300];
+		return lang_error(p, t.loc, "'#switch' must be followed by '#case' or '#range', found %s",
+				  lang_describe(&t, found, sizeof found));
+	}
+	return select_case(p, loc, v, t);
+}
+
+/* A #case or #range met while a case runs: the case falls through; its operands are read. */
+static bool do_case(parser *p, const lang_token *t)
+{
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base || p->conds[p->n_conds - 1].kind != COND_SWITCH)
+		return lang_error(p, t->loc, "'%s' outside '#switch'", t->kind == LTK_DIR_CASE ? "#case" : "#range");
+	bool match;
+	return case_matches(p, t, p->conds[p->n_conds - 1].value, &match);
+}
+
+/* #break leaves the innermost #switch, #while or #for (POV-Ray 3.7's Break): the blocks open
+ * inside it are skipped to their #end, then it is. */
+static bool do_break(parser *p, diag_loc loc)
+{
+	int base = p->files[p->n_files - 1].cond_base, k = p->n_conds - 1;
+	while (k >= base && p->conds[k].kind != COND_SWITCH && p->conds[k].kind != COND_WHILE &&
+	       p->conds[k].kind != COND_FOR)
+		k--;
+	if (k < base)
+		return lang_error(p, loc, "'#break' outside '#switch', '#while' or '#for'");
+	while (p->n_conds > k) {
+		cond *c = &p->conds[p->n_conds - 1];
+		if (!skip_block(p, c->loc, SKIP_TO_END, c->what, diag_noloc(), NULL))
+			return false;
+		p->n_conds--;
+	}
+	return true;
+}
+
 /* version = "#version" expression ";"   (sets what `version` reads) */
 static bool do_version(parser *p)
 {
@@ -917,6 +1039,10 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
 	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
 	case LTK_DIR_FOR: ok = do_for(p, dir->loc); break;
+	case LTK_DIR_SWITCH: ok = do_switch(p, dir->loc); break;
+	case LTK_DIR_CASE:
+	case LTK_DIR_RANGE: ok = do_case(p, dir); break;
+	case LTK_DIR_BREAK: ok = do_break(p, dir->loc); break;
 	case LTK_DIR_IFDEF: ok = do_ifdef(p, dir->loc, true); break;
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;

@@ -36,7 +36,7 @@ typedef struct include_frame {
 	const char *released; /* mapped sources: text before this was handed back to the kernel */
 } include_frame;
 
-typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE, COND_FOR } cond_kind;
+typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE, COND_FOR, COND_SWITCH } cond_kind;
 
 typedef struct cond {
 	cond_kind kind;
@@ -48,6 +48,7 @@ typedef struct cond {
 	long iterations; /* COND_WHILE, COND_FOR: begun so far */
 	const char *var; /* COND_FOR: the loop variable, its end and step */
 	double end, step;
+	double value; /* COND_SWITCH (running a case that matched, or its #else): the switch's value */
 } cond;
 
 typedef struct symbol {

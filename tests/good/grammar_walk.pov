@@ -27,6 +27,8 @@
 #while (I < 2) #declare I = I + 1; #end
 // rule: for
 #for (F, 1, 0, -1) #end
+// rule: switch, case, range, break
+#switch (2) #case (1) sphere { 0, 7 } #range (2, 3) #break #else sphere { 0, 8 } #end
 // rule: include
 #include "walk.inc"
 // rule: global_settings, integer

@@ -1,0 +1,2 @@
+// #case outside a #switch.
+#case (1)

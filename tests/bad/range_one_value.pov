@@ -1,0 +1,2 @@
+// #range takes two values.
+#switch (2) #range (1) #end

@@ -1,0 +1,2 @@
+// POV-Ray directives circe lacks are named.
+#default { finish { ambient 0 } }

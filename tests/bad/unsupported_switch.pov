@@ -1,3 +1,0 @@
-#declare A = 1;
-#switch (A)
-#end
