@@ -55,7 +55,7 @@ enum {
 
 /* X(enum suffix, spelling without '#'). */
 #define LANG_DIRECTIVES(X)                                                                          \
-	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else")    \
+	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else") X(ELSEIF, "elseif")    \
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
 	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for") X(SWITCH, "switch")     \
 	X(CASE, "case") X(RANGE, "range") X(BREAK, "break")

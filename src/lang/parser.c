@@ -489,10 +489,16 @@ static bool second_else(parser *p, diag_loc at, const char *what, diag_loc if_lo
 			  what, if_loc.line, first_else.line);
 }
 
+static bool elseif_after_else(parser *p, diag_loc at, const char *what, diag_loc if_loc)
+{
+	return lang_error(p, at, "'#elseif' after the '#else' of the '%s' at line %u", what, if_loc.line);
+}
+
 /* What a skip is looking for at its own level (not inside the blocks nested in it). */
 typedef enum skip_kind {
-	SKIP_THEN, /* a false #if's branch: up to its #else or #end */
-	SKIP_ELSE, /* the #else branch of a true #if: up to #end; a second #else is an error */
+	SKIP_THEN, /* a false #if's branch: up to its #elseif, #else or #end */
+	SKIP_ELSE, /* the rest of an #if after the branch that ran: up to #end; an #elseif after its
+		      #else, or a second #else, is an error (first_else: the #else, if one began it) */
 	SKIP_WHILE, /* a false #while's body: up to #end; #else is an error */
 	SKIP_CASE, /* a #switch's case that does not match: up to its next #case, #range, #else or #end */
 	SKIP_TO_END /* after #break: up to #end, past #else, #case and #range */
@@ -521,9 +527,8 @@ static bool skipped_else(parser *p, skipped_block *b, diag_loc at)
  * (for SKIP_CASE also its #case and #range); *stop, when not NULL, receives the directive that ended
  * the skip.
  * first_else: for SKIP_ELSE, the #else that began the skipped branch. Every block directive
- * (#if, #while and POV-Ray's #ifdef, #ifndef, #for, #switch, #macro) nests a level, and counts
- * toward the LANG_MAX_DEPTH open at once with the skipped block and the running ones; at the
- * outer level '#elseif' is refused, as it is where circe runs the tokens. */
+ * (#if, #ifdef, #ifndef, #while, #for, #switch and POV-Ray's #macro) nests a level, and counts
+ * toward the LANG_MAX_DEPTH open at once with the skipped block and the running ones. */
 static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *what, diag_loc first_else,
 		       lang_token *stop)
 {
@@ -552,12 +557,18 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 			lang_error(p, t.loc, "'#end' expected (to close '%s' at line %u), found end of file", what, open.line);
 			note(p, open, "'%s' opened here", what);
 			return false;
-		case LTK_UNSUPPORTED_DIRECTIVE:
-			if (level == 0 && t.len == 6 && !memcmp(t.text, "elseif", 6)) {
-				report_unsupported(p, &t);
-				return false;
+		case LTK_DIR_ELSEIF:
+			if (level > 0 || kind == SKIP_TO_END)
+				break;
+			if (kind == SKIP_THEN) {
+				*stop = t;
+				return true;
 			}
-			break;
+			if (kind == SKIP_ELSE && first_else.line)
+				return elseif_after_else(p, t.loc, what, open);
+			if (kind == SKIP_ELSE)
+				break;
+			return lang_error(p, t.loc, "'#elseif' without '#if'");
 		case LTK_DIR_ELSE:
 			if (level > 0) {
 				if (!skipped_else(p, &nested[level - 1], t.loc))
@@ -572,7 +583,10 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 				break;
 			if (kind == SKIP_WHILE)
 				return lang_error(p, t.loc, "'#else' without '#if'");
-			return second_else(p, t.loc, what, open, first_else);
+			if (first_else.line)
+				return second_else(p, t.loc, what, open, first_else);
+			first_else = t.loc; /* the #else after an #elseif's taken branch */
+			break;
 		case LTK_DIR_CASE:
 		case LTK_DIR_RANGE:
 			if (level == 0 && kind == SKIP_CASE) {
@@ -609,10 +623,16 @@ static bool push_cond(parser *p, cond_kind kind, diag_loc loc, const char *what)
 static bool branch(parser *p, diag_loc loc, const char *what, bool truth)
 {
 	lang_token stop;
-	if (truth)
-		return push_cond(p, COND_IF, loc, what);
-	if (!skip_block(p, loc, SKIP_THEN, what, diag_noloc(), &stop))
-		return false;
+	for (;;) {
+		if (truth)
+			return push_cond(p, COND_IF, loc, what);
+		if (!skip_block(p, loc, SKIP_THEN, what, diag_noloc(), &stop))
+			return false;
+		if (stop.kind != LTK_DIR_ELSEIF)
+			break;
+		if (!cond_expr(p, "after '#elseif'", &truth))
+			return false;
+	}
 	if (stop.kind == LTK_DIR_END)
 		return true;
 	if (!push_cond(p, COND_ELSE, loc, what))
@@ -703,6 +723,19 @@ static bool do_else(parser *p, diag_loc loc)
 	if (c.kind == COND_ELSE)
 		return second_else(p, loc, c.what, c.loc, c.else_loc);
 	return skip_block(p, c.loc, SKIP_ELSE, c.what, loc, NULL);
+}
+
+/* elseif = "#elseif" "(" expression ")": met where a branch of an #if ran, it ends the #if's
+ * running part: the rest is skipped to its #end, as POV-Ray 3.7 does. */
+static bool do_elseif(parser *p, diag_loc loc)
+{
+	if (p->n_conds <= p->files[p->n_files - 1].cond_base ||
+	    (p->conds[p->n_conds - 1].kind != COND_IF && p->conds[p->n_conds - 1].kind != COND_ELSE))
+		return lang_error(p, loc, "'#elseif' without '#if'");
+	cond c = p->conds[--p->n_conds];
+	if (c.kind == COND_ELSE)
+		return elseif_after_else(p, loc, c.what, c.loc);
+	return skip_block(p, c.loc, SKIP_ELSE, c.what, diag_noloc(), NULL);
 }
 
 /* Counts an iteration that the loop c begins. The limits count iterations begun: a loop of
@@ -1036,6 +1069,7 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_LOCAL: ok = do_declare(p, dir); break;
 	case LTK_DIR_IF: ok = do_if(p, dir->loc); break;
 	case LTK_DIR_ELSE: ok = do_else(p, dir->loc); break;
+	case LTK_DIR_ELSEIF: ok = do_elseif(p, dir->loc); break;
 	case LTK_DIR_END: ok = do_end(p, dir->loc); break;
 	case LTK_DIR_WHILE: ok = do_while(p, dir->loc); break;
 	case LTK_DIR_FOR: ok = do_for(p, dir->loc); break;

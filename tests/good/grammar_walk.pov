@@ -22,6 +22,8 @@
 // rule: message
 #debug ""
 #if (0) #warning "skipped" #error "skipped" #end
+// rule: elseif
+#if (0) sphere { 0, 9 } #elseif (1) sphere { 0, 10 } #else sphere { 0, 11 } #end
 // rule: while
 #declare I = 0;
 #while (I < 2) #declare I = I + 1; #end
