@@ -4,7 +4,7 @@
  * a coordinate of several triangles. The width is chosen at build time by the CPU: 8-wide nodes
  * traversed with AVX2 where the CPU has it, else 4-wide nodes with SSE2 (the x86-64 baseline);
  * CIRCE_SIMD=sse2 in the environment forces the latter. Both run the same kernels (bvh_simd.h). */
-#include "accel/bvh.h"
+#include "accel/bvh_internal.h"
 
 #include "base/mem.h"
 

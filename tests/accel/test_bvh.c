@@ -1,5 +1,5 @@
 /* test_bvh: ray and circle traversal of the BVH equal brute force over every triangle, exactly. */
-#include "accel/bvh.h"
+#include "accel/bvh_internal.h"
 #include "check.h"
 #include "brute.h"
 

@@ -5,6 +5,7 @@
  * (BVH_CIRCLE_LEAF_BATCH). Circles on the head, radii up to half its size, must still equal
  * brute force exactly, having gone depth first many times (under AddressSanitizer, the queue's
  * bounds are checked too). */
+#include "accel/bvh_internal.h"
 #include "check.h"
 #include "brute.h"
 
