@@ -3,6 +3,7 @@
  * 2 bad command line, 3 scene error, 130 interrupted. */
 #include "config.h"
 
+#include "accel/bvh.h"
 #include "base/diag.h"
 #include "base/mem.h"
 #include "io/compare.h"
@@ -861,6 +862,10 @@ int main(int argc, char **argv)
 		printf("circe %s\n", PACKAGE_VERSION);
 		return EXIT_OK;
 	}
+	/* CIRCE_SIMD=sse2 forces the BVHs' SSE2 path on a CPU with AVX2 (the same pixels, bit for bit:
+	 * tests/render/determinism.sh). Read here once, before any build. */
+	const char *simd = getenv("CIRCE_SIMD");
+	bvh_set_simd(simd && !strcmp(simd, "sse2") ? BVH_SIMD_SSE2 : BVH_SIMD_AUTO);
 	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
 	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */

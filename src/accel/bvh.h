@@ -30,6 +30,14 @@ typedef struct bvh_hit {
 	uint32_t prim, inst;
 } bvh_hit;
 
+/* The SIMD path of the builds that follow. BVH_SIMD_AUTO, the default: 8-wide nodes traced with
+ * AVX2 where the CPU has it, else 4-wide nodes traced with SSE2 (the x86-64 baseline);
+ * BVH_SIMD_SSE2: the 4-wide path on any CPU (main.c chooses it when the environment variable
+ * CIRCE_SIMD is "sse2"). Both give the same hits, bit for bit. Set it before other threads build:
+ * a bvh keeps the width it was built with, so bvhs of both paths may be traced side by side. */
+typedef enum bvh_simd { BVH_SIMD_AUTO, BVH_SIMD_SSE2 } bvh_simd;
+void bvh_set_simd(bvh_simd simd);
+
 /* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out, an index
  * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh
  * gives a valid bvh that hits nothing. */

@@ -16,8 +16,8 @@ bool bvh_occluded_prepared(const bvh *b, const tri_ray *r);
 /* The bvh's node count, for statistics. */
 uint32_t bvh_num_nodes(const bvh *b);
 /* Children a node (4 or 8): 8 where the build found a CPU with AVX2, whose kernels then trace it;
- * 4, traced with SSE2, elsewhere or when the environment variable CIRCE_SIMD is "sse2" at the
- * build. Both give the same hits, bit for bit. */
+ * 4, traced with SSE2, elsewhere or when bvh_set_simd chose BVH_SIMD_SSE2 before the build. Both
+ * give the same hits, bit for bit. */
 uint32_t bvh_width(const bvh *b);
 
 /* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over

@@ -13,6 +13,7 @@ long bvh_circle_queue_lifo;
 
 int main(void)
 {
+	test_simd_from_env();
 	mesh m;
 	diag d;
 	diag_init(&d, stderr);
