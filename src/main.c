@@ -523,6 +523,31 @@ static void on_checkpoint(void *user, const film *f)
 	output_write_exr(c->path, f, c->info, c->d);
 }
 
+/* Seconds as H:MM:SS. */
+static void format_time(char *buf, size_t n, double s)
+{
+	long t = s > 0 && s < 1e9 ? (long)(s + 0.5) : 0;
+	snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+}
+
+/* The render's progress line on a terminal's stderr, redrawn in place (render_job.progress); the
+ * last report ends the line. */
+static void on_progress(void *user, const render_progress *p)
+{
+	(void)user;
+	char el[32], left[32];
+	format_time(el, sizeof el, p->elapsed);
+	if (p->fraction > 0.0)
+		format_time(left, sizeof left, p->elapsed * (1.0 - p->fraction) / p->fraction);
+	else
+		snprintf(left, sizeof left, "?");
+	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * p->fraction,
+		p->rate, el, left);
+	if (p->done)
+		fputc('\n', stderr);
+	fflush(stderr);
+}
+
 /* The SSS method the EXR header records: --sss, else the materials' one, "mixed" when they
  * differ, "none" without SSS materials. */
 static const char *sss_method_name(const world *w)
@@ -635,8 +660,9 @@ static int cmd_render(int argc, char **argv)
 			     .mode = RENDER_MIS,
 			     .circle_weight = o.talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
 		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
-		.threads = o.threads, .quiet = o.quiet, .checkpoint_interval_s = o.checkpoint_s,
-		.checkpoint = on_checkpoint, .checkpoint_user = &cp, .interrupt = &interrupted};
+		.threads = o.threads, .checkpoint_interval_s = o.checkpoint_s,
+		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
+		.progress = !o.quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted};
 	render_stats stats;
 	render_status rs = render_run(&job, &f, &stats);
 	int rc = EXIT_OK;
