@@ -80,6 +80,9 @@ int main(int argc, char **argv)
 	long circles = 0, repeat = 3;
 	float rlo = 1e-3f, rhi = 0.1f;
 	bool embree = false;
+	/* CIRCE_SIMD=sse2 times the SSE2 path on a CPU with AVX2, as it does for circe (main.c). */
+	const char *simd = getenv("CIRCE_SIMD");
+	bvh_set_simd(simd && strcmp(simd, "sse2") == 0 ? BVH_SIMD_SSE2 : BVH_SIMD_AUTO);
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "--circles") == 0 && i + 1 < argc)
 			circles = atol(argv[++i]);

@@ -2,6 +2,7 @@
  * mesh, or `incoherent` rays leaving its surface (uniform by area, origins offset off the
  * surface, cosine-distributed directions about the geometric normal). Format: bench/README.md. */
 #include "accel/bvh.h"
+#include "accel/offset.h"
 #include "base/mem.h"
 #include "base/rng.h"
 #include "obj.h"

@@ -3,6 +3,7 @@
  * 2 bad command line, 3 scene error, 130 interrupted. */
 #include "config.h"
 
+#include "accel/bvh.h"
 #include "base/diag.h"
 #include "base/mem.h"
 #include "io/compare.h"
@@ -20,10 +21,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <assert.h>
 #include <errno.h>
 #include <getopt.h>
 #include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -51,6 +54,163 @@ static int usage_error(const char *fmt, const char *arg)
 	fprintf(stderr, "\nTry 'circe --help' for the options.\n");
 	return EXIT_USAGE;
 }
+
+/* ---- Options: each subcommand's options are one table (cli_opt) that getopt_long, the parse of
+ * each value into its destination and `circe SUBCOMMAND --help` all read. */
+
+typedef struct cli_opt cli_opt;
+/* Reads arg into dest (the option's destination); false when arg is not a value the option takes. */
+typedef bool (*cli_parse)(const cli_opt *op, const char *arg, void *dest);
+struct cli_opt {
+	const char *name;  /* long name (--spp); NULL: short only */
+	char letter;	   /* short name (-W); 0: long only */
+	const char *arg;   /* the argument's name in --help; NULL: the option takes none */
+	const char *help;  /* one line for --help */
+	cli_parse parse;   /* NULL: --help itself */
+	size_t dest;	   /* offset of the destination in the subcommand's options struct */
+	long lo, hi;	   /* the range of opt_int, opt_long and opt_u64 */
+	const char *error; /* usage_error's message when parse fails (%s: the argument) */
+};
+/* The most options a subcommand has, and getopt_long's value of long option i (past any char). */
+enum { CLI_MAX_OPTIONS = 32, CLI_LONG = 256 };
+
+/* -I DIR, up to MAX_INCLUDE_DIRS of them. */
+#define MAX_INCLUDE_DIRS 64
+typedef struct include_list {
+	const char *dir[MAX_INCLUDE_DIRS];
+	int n;
+} include_list;
+
+static bool parse_double(const char *arg, double *out);
+static bool parse_long(const char *arg, long lo, long hi, long *out);
+static bool parse_size(const char *arg, size_t *out);
+
+static bool opt_flag(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op, (void)arg;
+	*(bool *)dest = true;
+	return true;
+}
+static bool opt_string(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	*(const char **)dest = arg;
+	return true;
+}
+static bool opt_long(const cli_opt *op, const char *arg, void *dest)
+{
+	return parse_long(arg, op->lo, op->hi, dest);
+}
+static bool opt_int(const cli_opt *op, const char *arg, void *dest)
+{
+	long v;
+	if (!parse_long(arg, op->lo, op->hi, &v))
+		return false;
+	*(int *)dest = (int)v;
+	return true;
+}
+static bool opt_u64(const cli_opt *op, const char *arg, void *dest)
+{
+	long v;
+	if (!parse_long(arg, op->lo, op->hi, &v))
+		return false;
+	*(uint64_t *)dest = (uint64_t)v;
+	return true;
+}
+/* A finite number (parse_double). */
+static bool opt_double(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return parse_double(arg, dest);
+}
+/* A finite number > 0. */
+static bool opt_positive(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	double v;
+	if (!parse_double(arg, &v) || v <= 0)
+		return false;
+	*(double *)dest = v;
+	return true;
+}
+static bool opt_size(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return parse_size(arg, dest);
+}
+static bool opt_include(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	include_list *l = dest;
+	if (l->n == MAX_INCLUDE_DIRS)
+		return false;
+	l->dir[l->n++] = arg;
+	return true;
+}
+
+/* The table's entry for getopt_long's value c; NULL for an unknown option. */
+static const cli_opt *cli_find(const cli_opt *table, size_t n, int c)
+{
+	if (c >= CLI_LONG && (size_t)(c - CLI_LONG) < n)
+		return &table[c - CLI_LONG];
+	for (size_t i = 0; i < n; i++)
+		if (table[i].letter && table[i].letter == c)
+			return &table[i];
+	return NULL;
+}
+
+/* `circe SUBCOMMAND --help`: the usage, then the subcommand's options from its table. */
+static void cli_print_help(const char *cmd, const cli_opt *table, size_t n)
+{
+	fputs(usage_text, stdout);
+	printf("\n%s options:\n", cmd);
+	for (size_t i = 0; i < n; i++) {
+		const cli_opt *op = &table[i];
+		char name[64];
+		snprintf(name, sizeof name, "%s%c%s%s%s%s%s", op->letter ? "-" : "", op->letter ? op->letter : ' ',
+			 op->letter && op->name ? ", " : "", op->name ? "--" : "", op->name ? op->name : "",
+			 op->arg ? " " : "", op->arg ? op->arg : "");
+		printf("  %-26s %s\n", op->letter ? name : name + 1, op->help);
+	}
+}
+
+/* Parses argv (from the subcommand's name on) by the table into cli. Returns EXIT_OK, EXIT_USAGE
+ * (after printing why) or -1 after --help. optind is then at the first operand. */
+static int cli_parse_options(int argc, char **argv, const char *cmd, const cli_opt *table, size_t n, void *cli)
+{
+	struct option longs[CLI_MAX_OPTIONS + 1];
+	char shorts[2 * CLI_MAX_OPTIONS + 1];
+	size_t nl = 0, ns = 0;
+	assert(n <= CLI_MAX_OPTIONS);
+	for (size_t i = 0; i < n; i++) {
+		int has_arg = table[i].arg ? required_argument : no_argument;
+		if (table[i].name)
+			longs[nl++] = (struct option){table[i].name, has_arg, NULL, CLI_LONG + (int)i};
+		if (table[i].letter) {
+			shorts[ns++] = table[i].letter;
+			if (table[i].arg)
+				shorts[ns++] = ':';
+		}
+	}
+	longs[nl] = (struct option){NULL, 0, NULL, 0};
+	shorts[ns] = '\0';
+	int c;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, shorts, longs, NULL)) != -1) {
+		const cli_opt *op = cli_find(table, n, c);
+		if (!op)
+			return usage_error("bad option for '%s'", cmd);
+		if (!op->parse) {
+			cli_print_help(cmd, table, n);
+			return -1;
+		}
+		if (!op->parse(op, optarg, (char *)cli + op->dest))
+			return usage_error(op->error, optarg);
+	}
+	return EXIT_OK;
+}
+
+#define CLI_HELP {"help", 'h', NULL, "this help", NULL, 0, 0, 0, NULL}
 
 /* `circe check` tessellates as a render would, at this image size (for adaptive subdivision and
  * the spheres' levels), and estimates the render's memory at it. */
@@ -118,48 +278,52 @@ static void print_check_summary(const char *path, const scene *sc, const world *
 	       CHECK_HEIGHT, (double)check_estimate(w) / 1048576.0, (double)mem_limit() / 1048576.0);
 }
 
-static bool parse_size(const char *arg, size_t *out);
+
+/* `check`'s options. */
+typedef struct check_cli {
+	include_list includes;
+	double clock;
+	bool dump;
+	size_t max_memory;
+} check_cli;
+
+/* --clock of check: a number strtod reads whole, finite. */
+static bool opt_check_clock(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	char *end;
+	double v = strtod(arg, &end);
+	if (end == arg || *end || !isfinite(v))
+		return false;
+	*(double *)dest = v;
+	return true;
+}
+
+#define C(field) offsetof(check_cli, field)
+static const cli_opt check_options[] = {
+	{NULL, 'I', "DIR", "a folder searched for included files and assets (up to 64)", opt_include, C(includes), 0,
+	 0, "too many -I folders (limit is 64)"},
+	{"clock", 0, "F", "the scene's clock (default 0)", opt_check_clock, C(clock), 0, 0,
+	 "--clock needs a number, got '%s'"},
+	{"dump", 0, NULL, "print the parsed scene instead of its statistics", opt_flag, C(dump), 0, 0, NULL},
+	{"max-memory", 0, "SIZE", "memory limit such as 512M or 2G (default: the machine's memory)", opt_size,
+	 C(max_memory), 0, 0, "--max-memory needs a size such as 512M or 2G, not '%s'"},
+	CLI_HELP,
+};
+#undef C
 
 /* circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE]: parse and build, print statistics;
  * a scene whose render would need more than the memory limit fails. */
 static int cmd_check(int argc, char **argv)
 {
-	static const struct option opts[] = {
-		{"clock", required_argument, NULL, 'c'}, {"dump", no_argument, NULL, 'd'},
-		{"max-memory", required_argument, NULL, 'm'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
-	size_t max_memory = 0;
-	const char *dirs[64];
-	lang_options lo = {.include_dirs = dirs};
-	int c;
-	bool dump = false;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "I:h", opts, NULL)) != -1) {
-		char *end;
-		switch (c) {
-		case 'I':
-			if (lo.n_include_dirs == sizeof dirs / sizeof dirs[0])
-				return usage_error("too many -I folders (limit is %s)", "64");
-			dirs[lo.n_include_dirs++] = optarg;
-			break;
-		case 'c':
-			lo.clock = strtod(optarg, &end);
-			if (end == optarg || *end || !isfinite(lo.clock))
-				return usage_error("--clock needs a number, got '%s'", optarg);
-			break;
-		case 'd':
-			dump = true;
-			break;
-		case 'm':
-			if (!parse_size(optarg, &max_memory))
-				return usage_error("--max-memory needs a size such as 512M or 2G, not '%s'", optarg);
-			break;
-		case 'h':
-			fputs(usage_text, stdout);
-			return EXIT_OK;
-		default:
-			return usage_error("%s", "bad option for 'check'");
-		}
-	}
+	check_cli o = {0};
+	int status = cli_parse_options(argc, argv, "check", check_options,
+				       sizeof check_options / sizeof check_options[0], &o);
+	if (status != EXIT_OK)
+		return status < 0 ? EXIT_OK : status;
+	size_t max_memory = o.max_memory;
+	bool dump = o.dump;
+	lang_options lo = {.include_dirs = o.includes.dir, .n_include_dirs = (size_t)o.includes.n, .clock = o.clock};
 	if (optind != argc - 1)
 		return usage_error("%s", optind >= argc ? "'check' needs a SCENE file" : "'check' takes one SCENE file");
 	mem_set_limit(max_memory ? max_memory : physical_memory());
@@ -228,8 +392,7 @@ typedef struct render_cli {
 	long frame; /* -1: none */
 	double checkpoint_s;
 	size_t max_memory;
-	const char *include_dirs[64];
-	int ninclude;
+	include_list includes;
 	bool quiet;
 } render_cli;
 
@@ -285,130 +448,96 @@ static bool parse_aovs(const char *arg, unsigned *out)
 	return *out != 0;
 }
 
-/* Parses `render`'s options; returns EXIT_OK or EXIT_USAGE (after printing why). */
+static bool opt_sss(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	if (strcmp(arg, "circle") && strcmp(arg, "fullcircle") && strcmp(arg, "disk") && strcmp(arg, "volume"))
+		return false;
+	*(const char **)dest = arg;
+	return true;
+}
+static bool opt_circle_weight(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	if (strcmp(arg, "exact") && strcmp(arg, "talk"))
+		return false;
+	*(bool *)dest = !strcmp(arg, "talk");
+	return true;
+}
+static bool opt_region(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	render_cli *o = dest;
+	int n = -1;
+	if (sscanf(arg, "%d,%d,%d,%d%n", &o->region[0], &o->region[1], &o->region[2], &o->region[3], &n) != 4 ||
+	    arg[n] != '\0' || o->region[0] < 0 || o->region[1] < 0 || o->region[2] <= o->region[0] ||
+	    o->region[3] <= o->region[1])
+		return false;
+	o->has_region = true;
+	return true;
+}
+static bool opt_aov(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return parse_aovs(arg, dest);
+}
+static bool opt_tile(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	render_cli *o = dest;
+	int n = -1;
+	return sscanf(arg, "%d/%d%n", &o->tile_i, &o->tile_n, &n) == 2 && arg[n] == '\0' && o->tile_n >= 1 &&
+	       o->tile_i >= 0 && o->tile_i < o->tile_n;
+}
+
+#define R(field) offsetof(render_cli, field)
+static const cli_opt render_options[] = {
+	{NULL, 'o', "FILE", "the EXR image to write (default: the scene's name with .exr)", opt_string, R(out), 0, 0, NULL},
+	{"png", 0, "FILE", "also write the image as an 8-bit sRGB PNG", opt_string, R(png), 0, 0, NULL},
+	{NULL, 'W', "W", "image width in pixels (default 640)", opt_int, R(width), 1, 65536,
+	 "-W needs a width from 1 to 65536, not '%s'"},
+	{NULL, 'H', "H", "image height in pixels (default 480)", opt_int, R(height), 1, 65536,
+	 "-H needs a height from 1 to 65536, not '%s'"},
+	{"spp", 0, "N", "samples per pixel (default 64)", opt_long, R(spp), 1, 1L << 30,
+	 "--spp needs a sample count from 1 to 2^30, not '%s'"},
+	{"time", 0, "S", "render for about S seconds instead of a sample count", opt_positive, R(time_s), 0, 0,
+	 "--time needs a number of seconds > 0, not '%s'"},
+	{"threads", 0, "N", "worker threads (default: every core)", opt_int, R(threads), 1, 1024,
+	 "--threads needs a count from 1 to 1024, not '%s'"},
+	{"sss", 0, "METHOD", "circle, fullcircle, disk or volume for every SSS material", opt_sss, R(sss), 0, 0,
+	 "--sss must be circle, fullcircle, disk or volume, not '%s'"},
+	{"circle-weight", 0, "W", "the circle estimator's weight: exact (default) or talk", opt_circle_weight,
+	 R(talk_weight), 0, 0, "--circle-weight must be exact or talk, not '%s'"},
+	{"seed", 0, "N", "the random seed (default 0)", opt_u64, R(seed), 0, LONG_MAX,
+	 "--seed needs an integer >= 0, not '%s'"},
+	{"region", 0, "X0,Y0,X1,Y1", "render only this rectangle of the image", opt_region, 0, 0, 0,
+	 "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'"},
+	{"aov", 0, "LIST", "extra layers: albedo, normal, depth, variance", opt_aov, R(aovs), 0, 0,
+	 "--aov takes a list of albedo, normal, depth, variance, not '%s'"},
+	{"tile", 0, "I/N", "render tile I of N (circe merge assembles them)", opt_tile, 0, 0, 0,
+	 "--tile needs I/N with 0 <= I < N, not '%s'"},
+	{"clock", 0, "F", "the scene's clock (default 0)", opt_double, R(clock), 0, 0, "--clock needs a number, not '%s'"},
+	{"frame", 0, "N", "frame number for the output names (their #s, else .NNNN)",
+	 opt_long, R(frame), 0, 99999999, "--frame needs a frame number >= 0, not '%s'"},
+	{"checkpoint", 0, "S", "write the image so far every S seconds (default 60)", opt_positive, R(checkpoint_s),
+	 0, 0, "--checkpoint needs a number of seconds > 0, not '%s'"},
+	{"max-memory", 0, "SIZE", "memory limit such as 512M or 2G (default: the machine's memory)", opt_size,
+	 R(max_memory), 0, 0, "--max-memory needs a size such as 512M or 2G, not '%s'"},
+	{NULL, 'I', "DIR", "a folder searched for included files and assets (up to 64)", opt_include, R(includes), 0,
+	 0, "too many -I directories (limit is 64)"},
+	{"quiet", 0, NULL, "no progress line; statistics only when samples were dropped", opt_flag, R(quiet), 0, 0, NULL},
+	CLI_HELP,
+};
+#undef R
+
+/* Parses `render`'s options; returns EXIT_OK, EXIT_USAGE (after printing why) or -1 after --help. */
 static int parse_render_cli(int argc, char **argv, render_cli *o)
 {
-	static const struct option opts[] = {
-		{"png", required_argument, NULL, 'P'},
-		{"spp", required_argument, NULL, 's'},
-		{"time", required_argument, NULL, 't'},
-		{"threads", required_argument, NULL, 'j'},
-		{"sss", required_argument, NULL, 'S'},
-		{"circle-weight", required_argument, NULL, 'w'},
-		{"seed", required_argument, NULL, 'e'},
-		{"region", required_argument, NULL, 'r'},
-		{"aov", required_argument, NULL, 'a'},
-		{"tile", required_argument, NULL, 'T'},
-		{"clock", required_argument, NULL, 'c'},
-		{"frame", required_argument, NULL, 'f'},
-		{"checkpoint", required_argument, NULL, 'k'},
-		{"max-memory", required_argument, NULL, 'm'},
-		{"quiet", no_argument, NULL, 'q'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
-	};
 	*o = (render_cli){.width = 640, .height = 480, .frame = -1, .checkpoint_s = 60.0};
-	long v;
-	double f;
-	int c;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "o:W:H:I:h", opts, NULL)) != -1) {
-		switch (c) {
-		case 'o':
-			o->out = optarg;
-			break;
-		case 'P':
-			o->png = optarg;
-			break;
-		case 'W':
-		case 'H':
-			if (!parse_long(optarg, 1, 65536, &v))
-				return usage_error(c == 'W' ? "-W needs a width from 1 to 65536, not '%s'"
-							    : "-H needs a height from 1 to 65536, not '%s'", optarg);
-			*(c == 'W' ? &o->width : &o->height) = (int)v;
-			break;
-		case 's':
-			if (!parse_long(optarg, 1, 1L << 30, &o->spp))
-				return usage_error("--spp needs a sample count from 1 to 2^30, not '%s'", optarg);
-			break;
-		case 't':
-			if (!parse_double(optarg, &o->time_s) || o->time_s <= 0)
-				return usage_error("--time needs a number of seconds > 0, not '%s'", optarg);
-			break;
-		case 'j':
-			if (!parse_long(optarg, 1, 1024, &v))
-				return usage_error("--threads needs a count from 1 to 1024, not '%s'", optarg);
-			o->threads = (int)v;
-			break;
-		case 'S':
-			if (strcmp(optarg, "circle") && strcmp(optarg, "fullcircle") && strcmp(optarg, "disk") &&
-			    strcmp(optarg, "volume"))
-				return usage_error("--sss must be circle, fullcircle, disk or volume, not '%s'", optarg);
-			o->sss = optarg;
-			break;
-		case 'w':
-			if (strcmp(optarg, "exact") && strcmp(optarg, "talk"))
-				return usage_error("--circle-weight must be exact or talk, not '%s'", optarg);
-			o->talk_weight = !strcmp(optarg, "talk");
-			break;
-		case 'e':
-			if (!parse_long(optarg, 0, LONG_MAX, &v))
-				return usage_error("--seed needs an integer >= 0, not '%s'", optarg);
-			o->seed = (uint64_t)v;
-			break;
-		case 'r': {
-			int n = -1;
-			if (sscanf(optarg, "%d,%d,%d,%d%n", &o->region[0], &o->region[1], &o->region[2],
-				   &o->region[3], &n) != 4 || optarg[n] != '\0' || o->region[0] < 0 ||
-			    o->region[1] < 0 || o->region[2] <= o->region[0] || o->region[3] <= o->region[1])
-				return usage_error("--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'",
-						   optarg);
-			o->has_region = true;
-			break;
-		}
-		case 'a':
-			if (!parse_aovs(optarg, &o->aovs))
-				return usage_error("--aov takes a list of albedo, normal, depth, variance, not '%s'", optarg);
-			break;
-		case 'T': {
-			int n = -1;
-			if (sscanf(optarg, "%d/%d%n", &o->tile_i, &o->tile_n, &n) != 2 || optarg[n] != '\0' ||
-			    o->tile_n < 1 || o->tile_i < 0 || o->tile_i >= o->tile_n)
-				return usage_error("--tile needs I/N with 0 <= I < N, not '%s'", optarg);
-			break;
-		}
-		case 'c':
-			if (!parse_double(optarg, &o->clock))
-				return usage_error("--clock needs a number, not '%s'", optarg);
-			break;
-		case 'f':
-			if (!parse_long(optarg, 0, 99999999, &o->frame))
-				return usage_error("--frame needs a frame number >= 0, not '%s'", optarg);
-			break;
-		case 'k':
-			if (!parse_double(optarg, &f) || f <= 0)
-				return usage_error("--checkpoint needs a number of seconds > 0, not '%s'", optarg);
-			o->checkpoint_s = f;
-			break;
-		case 'm':
-			if (!parse_size(optarg, &o->max_memory))
-				return usage_error("--max-memory needs a size such as 512M or 2G, not '%s'", optarg);
-			break;
-		case 'I':
-			if (o->ninclude == 64)
-				return usage_error("too many -I directories (limit is %s)", "64");
-			o->include_dirs[o->ninclude++] = optarg;
-			break;
-		case 'q':
-			o->quiet = true;
-			break;
-		case 'h':
-			fputs(usage_text, stdout);
-			return -1;
-		default:
-			return usage_error("%s", "bad option for 'render'");
-		}
-	}
+	int status = cli_parse_options(argc, argv, "render", render_options,
+				       sizeof render_options / sizeof render_options[0], o);
+	if (status != EXIT_OK)
+		return status;
 	if (o->spp && o->time_s > 0)
 		return usage_error("%s", "--spp and --time exclude each other");
 	if (argc - optind != 1)
@@ -522,6 +651,31 @@ static void on_checkpoint(void *user, const film *f)
 	output_write_exr(c->path, f, c->info, c->d);
 }
 
+/* Seconds as H:MM:SS. */
+static void format_time(char *buf, size_t n, double s)
+{
+	long t = s > 0 && s < 1e9 ? (long)(s + 0.5) : 0;
+	snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+}
+
+/* The render's progress line on a terminal's stderr, redrawn in place (render_job.progress); the
+ * last report ends the line. */
+static void on_progress(void *user, const render_progress *p)
+{
+	(void)user;
+	char el[32], left[32];
+	format_time(el, sizeof el, p->elapsed);
+	if (p->fraction > 0.0)
+		format_time(left, sizeof left, p->elapsed * (1.0 - p->fraction) / p->fraction);
+	else
+		snprintf(left, sizeof left, "?");
+	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * p->fraction,
+		p->rate, el, left);
+	if (p->done)
+		fputc('\n', stderr);
+	fflush(stderr);
+}
+
 /* The SSS method the EXR header records: --sss, else the materials' one, "mixed" when they
  * differ, "none" without SSS materials. */
 static const char *sss_method_name(const world *w)
@@ -569,7 +723,7 @@ static int cmd_render(int argc, char **argv)
 	mem_set_limit(o.max_memory ? o.max_memory : physical_memory());
 	diag d;
 	diag_init(&d, stderr);
-	lang_options lo = {.include_dirs = o.include_dirs, .n_include_dirs = (size_t)o.ninclude, .clock = o.clock};
+	lang_options lo = {.include_dirs = o.includes.dir, .n_include_dirs = (size_t)o.includes.n, .clock = o.clock};
 	lo.width = o.width;
 	lo.height = o.height;
 	lo.animated = o.frame >= 0;
@@ -638,8 +792,9 @@ static int cmd_render(int argc, char **argv)
 			     .mode = RENDER_MIS,
 			     .circle_weight = o.talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
 		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
-		.threads = o.threads, .quiet = o.quiet, .checkpoint_interval_s = o.checkpoint_s,
-		.checkpoint = on_checkpoint, .checkpoint_user = &cp, .interrupt = &interrupted};
+		.threads = o.threads, .checkpoint_interval_s = o.checkpoint_s,
+		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
+		.progress = !o.quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted};
 	render_stats stats;
 	render_status rs = render_run(&job, &f, &stats);
 	int rc = EXIT_OK;
@@ -718,56 +873,63 @@ static bool compare_channel_view(const exrfile_image *a, const char *pa, const e
 	return true;
 }
 
+/* `compare`'s options. */
+typedef struct compare_cli {
+	double threshold, percent;
+	const char *diff_path, *channels;
+} compare_cli;
+
+static bool opt_threshold(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return parse_double(arg, dest) && *(double *)dest >= 0;
+}
+static bool opt_percent(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return parse_double(arg, dest) && *(double *)dest >= 0 && *(double *)dest <= 100;
+}
+/* A comma-separated list of non-empty names. */
+static bool opt_channels(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	if (!*arg || strspn(arg, ",") == strlen(arg) || strstr(arg, ",,") || arg[strlen(arg) - 1] == ',')
+		return false;
+	*(const char **)dest = arg;
+	return true;
+}
+
+#define P(field) offsetof(compare_cli, field)
+static const cli_opt compare_options[] = {
+	{"fail", 0, "T", "a pixel fails when its error exceeds T (default 1e-6)", opt_threshold, P(threshold), 0, 0,
+	 "--fail needs a number >= 0, not '%s'"},
+	{"fail-percent", 0, "P", "the comparison fails when more than P % of the pixels fail (default 0)",
+	 opt_percent, P(percent), 0, 0, "--fail-percent needs a number from 0 to 100, not '%s'"},
+	{"diff", 0, "D.exr", "write |A - B| to D.exr", opt_string, P(diff_path), 0, 0, NULL},
+	{"channels", 0, "R,G,B", "compare only these channels", opt_channels, P(channels), 0, 0,
+	 "--channels needs a list of channel names such as R,G,B, not '%s'"},
+	CLI_HELP,
+};
+#undef P
+
 /* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
  * --fail-percent of the pixels have an error above --fail, 1 otherwise or on an I/O error. */
 static int cmd_compare(int argc, char **argv)
 {
-	static const struct option opts[] = {
-		{"fail", required_argument, NULL, 'f'},
-		{"fail-percent", required_argument, NULL, 'p'},
-		{"diff", required_argument, NULL, 'd'},
-		{"channels", required_argument, NULL, 'c'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
-	};
-	double threshold = 1e-6, percent = 0.0;
-	const char *diff_path = NULL, *channels = NULL;
-	int c;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
-		switch (c) {
-		case 'f':
-			if (!parse_double(optarg, &threshold) || threshold < 0)
-				return usage_error("--fail needs a number >= 0, not '%s'", optarg);
-			break;
-		case 'p':
-			if (!parse_double(optarg, &percent) || percent < 0 || percent > 100)
-				return usage_error("--fail-percent needs a number from 0 to 100, not '%s'", optarg);
-			break;
-		case 'd':
-			diff_path = optarg;
-			break;
-		case 'c':
-			if (!*optarg || strspn(optarg, ",") == strlen(optarg) || strstr(optarg, ",,") ||
-			    optarg[strlen(optarg) - 1] == ',')
-				return usage_error("--channels needs a list of channel names such as R,G,B, not '%s'",
-						   optarg);
-			channels = optarg;
-			break;
-		case 'h':
-			fputs(usage_text, stdout);
-			return EXIT_OK;
-		default:
-			return usage_error("%s", "bad option for 'compare'");
-		}
-	}
+	compare_cli o = {.threshold = 1e-6, .percent = 0.0};
+	int status = cli_parse_options(argc, argv, "compare", compare_options,
+				       sizeof compare_options / sizeof compare_options[0], &o);
+	if (status != EXIT_OK)
+		return status < 0 ? EXIT_OK : status;
+	double threshold = o.threshold, percent = o.percent;
+	const char *diff_path = o.diff_path, *channels = o.channels;
 	if (argc - optind != 2)
 		return usage_error("%s", "'compare' needs two images: A.exr B.exr");
 	const char *pa = argv[optind], *pb = argv[optind + 1];
 	diag d;
 	diag_init(&d, stderr);
 	exrfile_image a, b, diff;
-	int status = EXIT_RUNTIME;
+	status = EXIT_RUNTIME;
 	if (!exrfile_read(pa, &a, &d)) {
 		diag_free(&d);
 		return EXIT_RUNTIME;
@@ -818,28 +980,19 @@ static int cmd_compare(int argc, char **argv)
 	return status;
 }
 
+static const cli_opt merge_options[] = {
+	{NULL, 'o', "FULL.exr", "the assembled image to write", opt_string, 0, 0, 0, NULL},
+	CLI_HELP,
+};
+
 /* circe merge -o FULL.exr TILE.exr...: assembles tiles rendered apart. */
 static int cmd_merge(int argc, char **argv)
 {
-	static const struct option opts[] = {
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
-	};
 	const char *out = NULL;
-	int c;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
-		switch (c) {
-		case 'o':
-			out = optarg;
-			break;
-		case 'h':
-			fputs(usage_text, stdout);
-			return EXIT_OK;
-		default:
-			return usage_error("%s", "bad option for 'merge'");
-		}
-	}
+	int status = cli_parse_options(argc, argv, "merge", merge_options,
+				       sizeof merge_options / sizeof merge_options[0], &out);
+	if (status != EXIT_OK)
+		return status < 0 ? EXIT_OK : status;
 	if (!out)
 		return usage_error("%s", "'merge' needs -o FULL.exr");
 	if (optind >= argc)
@@ -865,6 +1018,10 @@ int main(int argc, char **argv)
 		printf("circe %s\n", PACKAGE_VERSION);
 		return EXIT_OK;
 	}
+	/* CIRCE_SIMD=sse2 forces the BVHs' SSE2 path on a CPU with AVX2 (the same pixels, bit for bit:
+	 * tests/render/determinism.sh). Read here once, before any build. */
+	const char *simd = getenv("CIRCE_SIMD");
+	bvh_set_simd(simd && !strcmp(simd, "sse2") ? BVH_SIMD_SSE2 : BVH_SIMD_AUTO);
 	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
 	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */

@@ -3,8 +3,8 @@
  * tests a plane of all of them; a leaf's triangles are stored pre-transposed, so one register holds
  * a coordinate of several triangles. The width is chosen at build time by the CPU: 8-wide nodes
  * traversed with AVX2 where the CPU has it, else 4-wide nodes with SSE2 (the x86-64 baseline);
- * CIRCE_SIMD=sse2 in the environment forces the latter. Both run the same kernels (bvh_simd.h). */
-#include "accel/bvh.h"
+ * bvh_set_simd(BVH_SIMD_SSE2) forces the latter. Both run the same kernels (bvh_simd.h). */
+#include "accel/bvh_internal.h"
 
 #include "base/mem.h"
 
@@ -482,12 +482,20 @@ bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_b
 	return ok;
 }
 
-/* Whether to build wide nodes for AVX2: when the CPU has it and CIRCE_SIMD is not "sse2". Read at
- * each build, so a test can build a tree for each path in one process. */
+/* The path of the builds that follow (bvh_set_simd). Written before other threads build, then
+ * only read. */
+static bvh_simd simd_path = BVH_SIMD_AUTO;
+
+void bvh_set_simd(bvh_simd simd)
+{
+	simd_path = simd;
+}
+
+/* Whether to build wide nodes for AVX2: when the CPU has it and bvh_set_simd did not choose SSE2.
+ * Asked at each build, so a test can build a tree for each path in one process. */
 static uint32_t simd_width(void)
 {
-	const char *s = getenv("CIRCE_SIMD");
-	if (s && strcmp(s, "sse2") == 0)
+	if (simd_path == BVH_SIMD_SSE2)
 		return 4;
 #if BVH_HAVE_AVX2
 	__builtin_cpu_init();

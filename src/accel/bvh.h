@@ -30,6 +30,14 @@ typedef struct bvh_hit {
 	uint32_t prim, inst;
 } bvh_hit;
 
+/* The SIMD path of the builds that follow. BVH_SIMD_AUTO, the default: 8-wide nodes traced with
+ * AVX2 where the CPU has it, else 4-wide nodes traced with SSE2 (the x86-64 baseline);
+ * BVH_SIMD_SSE2: the 4-wide path on any CPU (main.c chooses it when the environment variable
+ * CIRCE_SIMD is "sse2"). Both give the same hits, bit for bit. Set it before other threads build:
+ * a bvh keeps the width it was built with, so bvhs of both paths may be traced side by side. */
+typedef enum bvh_simd { BVH_SIMD_AUTO, BVH_SIMD_SSE2 } bvh_simd;
+void bvh_set_simd(bvh_simd simd);
+
 /* Builds over the triangles indices[3i..3i+2] of positions. NULL when memory runs out, an index
  * is out of range (num_vertices bounds them) or there are 2^27 triangles or more. An empty mesh
  * gives a valid bvh that hits nothing. */
@@ -50,68 +58,9 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray);
  * non-finite axes, has no hits. */
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits);
 
-/* Traversal on a prepared ray, for the top level: updates *hit when a hit is closer than
- * *tlimit, then lowers *tlimit to it. */
-bool bvh_intersect_prepared(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit *hit);
-bool bvh_occluded_prepared(const bvh *b, const tri_ray *r);
-
 /* Bounds of the triangles that can be hit; false when there are none. */
 bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi);
-/* Bytes held by the bvh (nodes and triangle copies), and its counts, for statistics. */
+/* Bytes held by the bvh (nodes and triangle copies), for statistics. */
 size_t bvh_bytes(const bvh *b);
-uint32_t bvh_num_nodes(const bvh *b);
-/* Children a node (4 or 8): 8 where the build found a CPU with AVX2, whose kernels then trace it;
- * 4, traced with SSE2, elsewhere or when the environment variable CIRCE_SIMD is "sse2" at the
- * build. Both give the same hits, bit for bit. */
-uint32_t bvh_width(const bvh *b);
-
-/* The origin of a ray leaving a surface at p with geometric normal n (pointing to the side the ray
- * goes to), moved off the surface so the ray cannot hit the triangle it left: Waechter & Binder
- * 2019, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, listing
- * 6-1. It sizes the offset by p's coordinates, with a fixed 1/65536 below 1/32, which is far too
- * large for small scenes and too small for a point in the middle of a large triangle: rays from a
- * known triangle use bvh_offset_scaled (offset.h), this is its fallback for an unknown one. */
-vec3 bvh_offset_origin(vec3 p, vec3 n);
-
-/* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
- * the boxes' centroids, pricing a leaf by its count rounded up to whole leaf_blocks (the
- * primitives its test takes at once; a power of two). perm receives the order of the boxes in the leaves.
- * Internal to accel. */
-typedef struct bvh_node {
-	float lo[3];
-	uint32_t first; /* leaf: first primitive in perm order; inner: index of the second child */
-	float hi[3];
-	uint32_t count; /* leaf: number of primitives (> 0); inner: BVH_INNER | split axis */
-} bvh_node;
-#define BVH_INNER 0x80000000u
-/* Max primitives in a leaf (SAH decides below it). */
-#define BVH_MAX_LEAF 8
-/* Max depth of a tree: traversal stacks hold this many entries. (A test, test_circle_queue,
- * compiles its own BVH with a smaller one.) */
-#ifndef BVH_MAX_DEPTH
-#define BVH_MAX_DEPTH 62
-#endif
-bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes,
-		     uint32_t *num_nodes, uint32_t *perm);
-static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }
-static inline vec3 bvh_node_hi(const bvh_node *nd) { return v3(nd->hi[0], nd->hi[1], nd->hi[2]); }
-/* One step down an unordered traversal from an inner node whose children c0, c0 + 1 were tested
- * (h0, h1): go to the first child hit and push the other if both were. False when neither was
- * (the caller pops). */
-static inline bool bvh_descend(bool h0, bool h1, uint32_t c0, uint32_t *stack, int *sp, uint32_t *ni)
-{
-	if (h0 && h1)
-		stack[(*sp)++] = c0 + 1;
-	if (!(h0 || h1))
-		return false;
-	*ni = h0 ? c0 : c0 + 1;
-	return true;
-}
-/* Slab test of a ray against a node, conservative against rounding: true when the box may hold
- * a hit with t in [r->tmin, tlimit]; *tnear receives the entry distance. */
-bool bvh_node_hit(const bvh_node *nd, const tri_ray *r, float tlimit, float *tnear);
-/* Conservative circle/box test: the box meets the circle's own bounds, its plane and the
- * spherical shell of its radius (and, for a half circle, the half space cos theta >= 0). */
-bool bvh_box_circle(vec3 lo, vec3 hi, const tri_circle *q);
 
 #endif

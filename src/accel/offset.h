@@ -9,10 +9,17 @@
 #ifndef CIRCE_ACCEL_OFFSET_H
 #define CIRCE_ACCEL_OFFSET_H
 
-#include "accel/bvh.h"
 #include "base/vec.h"
 
 #include <math.h>
+
+/* The origin of a ray leaving a surface at p with geometric normal n (pointing to the side the ray
+ * goes to), moved off the surface so the ray cannot hit the triangle it left: Waechter & Binder
+ * 2019, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, listing
+ * 6-1. It sizes the offset by p's coordinates, with a fixed 1/65536 below 1/32, which is far too
+ * large for small scenes and too small for a point in the middle of a large triangle: rays from a
+ * known triangle use bvh_offset_scaled, this is its fallback for an unknown one (bvh.c). */
+vec3 bvh_offset_origin(vec3 p, vec3 n);
 
 /* The offset relative to the scale: 2^-15, 256 ulps of a float of that magnitude (W&B's int_scale). */
 #define BVH_OFFSET_REL 3.0517578125e-5f

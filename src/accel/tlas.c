@@ -1,6 +1,7 @@
 /* tlas.c - the BVH over instances: rays and circles are moved into each instance's space and
  * traced through its mesh BVH. */
 #include "accel/tlas.h"
+#include "accel/bvh_internal.h"
 
 #include "base/mem.h"
 

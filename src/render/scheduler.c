@@ -1,4 +1,4 @@
-/* scheduler.c - the pass loop, the worker pool and the progress line (scheduler.h). The calling
+/* scheduler.c - the pass loop, the worker pool and the progress reports (scheduler.h). The calling
  * thread only coordinates: it starts a pass by bumping `generation` under the mutex, waits for
  * `active` to reach zero (waking up to refresh progress), then commits or discards the pass. */
 #include "render/scheduler.h"
@@ -6,7 +6,6 @@
 #include "base/mem.h"
 
 #include <pthread.h>
-#include <stdio.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -123,24 +122,11 @@ static void *worker(void *arg)
 	}
 }
 
-static void format_time(char *buf, size_t n, double s)
+/* One report to the job's progress callback; fraction in [0,1]. */
+static void report_progress(const render_job *job, double fraction, double rate, double elapsed, bool done)
 {
-	long t = s > 0 && s < 1e9 ? (long)(s + 0.5) : 0;
-	snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
-}
-
-/* One progress line; fraction in [0,1]. */
-static void show_progress(double fraction, double rate, double elapsed)
-{
-	char el[32], left[32];
-	format_time(el, sizeof el, elapsed);
-	if (fraction > 0.0)
-		format_time(left, sizeof left, elapsed * (1.0 - fraction) / fraction);
-	else
-		snprintf(left, sizeof left, "?");
-	fprintf(stderr, "\rcirce: %5.1f%%  %.3g samples/s  elapsed %s  remaining %s   ", 100.0 * fraction,
-		rate, el, left);
-	fflush(stderr);
+	render_progress p = {.fraction = fraction, .rate = rate, .elapsed = elapsed, .done = done};
+	job->progress(job->progress_user, &p);
 }
 
 /* Samples per pixel of the next pass: double the last, capped by the target, by RENDER_PASS_MAX_S
@@ -186,7 +172,6 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 		started++;
 
 	render_status status = started > 0 ? RENDER_DONE : RENDER_ERROR;
-	bool show = !job->quiet && isatty(fileno(stderr));
 	double npix = (double)film_region_width(f) * film_region_height(f);
 	double rate_px = 0.0, last_checkpoint = t0;
 	uint32_t last = 0;
@@ -223,13 +208,13 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 			ts.tv_sec += ns / 1000000000L;
 			ts.tv_nsec = ns % 1000000000L;
 			pthread_cond_timedwait(&p.done, &p.mu, &ts);
-			if (show && p.active > 0) {
+			if (job->progress && p.active > 0) {
 				double el = now_s() - t0;
 				double done_px = (double)f->spp * npix + (double)atomic_load(&p.samples_done);
 				double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
 				if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
 					frac = el / job->time_budget_s;
-				show_progress(frac > 1.0 ? 1.0 : frac, el > 0 ? done_px / el : 0.0, el);
+				report_progress(job, frac > 1.0 ? 1.0 : frac, el > 0 ? done_px / el : 0.0, el, false);
 			}
 		}
 		pthread_mutex_unlock(&p.mu);
@@ -265,11 +250,9 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	pthread_cond_destroy(&p.done);
 
 	double seconds = now_s() - t0;
-	if (show) {
-		show_progress(job->spp ? (double)f->spp / job->spp : 1.0,
-			      seconds > 0 ? f->spp * npix / seconds : 0.0, seconds);
-		fputc('\n', stderr);
-	}
+	if (job->progress)
+		report_progress(job, job->spp ? (double)f->spp / job->spp : 1.0,
+				seconds > 0 ? f->spp * npix / seconds : 0.0, seconds, true);
 	if (stats) {
 		stats->spp = f->spp;
 		stats->dropped = f->dropped;

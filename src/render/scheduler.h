@@ -17,9 +17,10 @@
  *     static _Atomic int stop;  static void on_signal(int sig) { (void)sig; atomic_store(&stop, 1); }
  * Checkpoints: every checkpoint_interval_s seconds (checked between passes) the callback is called
  * on the calling thread with the consistent film; it may read it (film_read) and write a file.
- * Progress: a line on stderr, refreshed about 4 times a second, only when stderr is a terminal and
- * quiet is false. Threads share only atomics and mutex-protected state; the scene's callbacks
- * must be thread-safe. */
+ * Progress: when a callback is given, it is called on the calling thread about 4 times a second
+ * during a pass, and once more when the render ends (done: true); render/ prints nothing itself
+ * (circe's main.c draws the terminal's progress line). Threads share only atomics and
+ * mutex-protected state; the scene's callbacks must be thread-safe. */
 #ifndef CIRCE_RENDER_SCHEDULER_H
 #define CIRCE_RENDER_SCHEDULER_H
 
@@ -34,6 +35,14 @@
 #define RENDER_PASS_MAX_S   2.0
 #define RENDER_DEFAULT_TILE 16
 
+/* What a progress callback is told. */
+typedef struct render_progress {
+	double fraction; /* of the samples (or of the time budget) done, in [0, 1] */
+	double rate;	 /* pixel samples per second since the render started */
+	double elapsed;	 /* seconds since the render started */
+	bool done;	 /* the last call: the render has ended */
+} render_progress;
+
 typedef struct render_job {
 	const render_scene *scene;
 	const cam *camera;
@@ -43,10 +52,11 @@ typedef struct render_job {
 	double time_budget_s;	      /* 0: none */
 	int threads;		      /* 0: all online cores */
 	int tile_size;		      /* 0: RENDER_DEFAULT_TILE */
-	bool quiet;		      /* no progress line even on a terminal */
 	double checkpoint_interval_s; /* 0: no checkpoints */
 	void (*checkpoint)(void *user, const film *f); /* may be NULL */
 	void *checkpoint_user;
+	void (*progress)(void *user, const render_progress *p); /* may be NULL */
+	void *progress_user;
 	_Atomic int *interrupt; /* may be NULL */
 } render_job;
 

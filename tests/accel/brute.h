@@ -21,6 +21,14 @@ static inline const char *test_path(const char *rel)
 	return buf;
 }
 
+/* The BVH path of the test's builds, from the environment as circe's main reads it: CIRCE_SIMD=sse2
+ * forces 4-wide SSE2 nodes on a CPU with AVX2 (tests/accel/sse2.sh runs every accel test so). */
+static inline void test_simd_from_env(void)
+{
+	const char *s = getenv("CIRCE_SIMD");
+	bvh_set_simd(s && strcmp(s, "sse2") == 0 ? BVH_SIMD_SSE2 : BVH_SIMD_AUTO);
+}
+
 /* CIRCE_TEST_SCALE divides the counts of the long tests; under AddressSanitizer (ten times
  * slower) it defaults to 20. */
 static inline long test_count(long n)

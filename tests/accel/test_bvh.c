@@ -1,5 +1,5 @@
 /* test_bvh: ray and circle traversal of the BVH equal brute force over every triangle, exactly. */
-#include "accel/bvh.h"
+#include "accel/bvh_internal.h"
 #include "check.h"
 #include "brute.h"
 
@@ -173,7 +173,9 @@ static void check_edge_rays(const char *rel)
 }
 
 /* The node width follows the dispatch: 4 (SSE2) when CIRCE_SIMD is "sse2" (tests/accel/sse2.sh runs
- * every accel test so), else 8 where the CPU has AVX2. */
+ * every accel test so; test_simd_from_env passes it to bvh_set_simd), else 8 where the CPU has
+ * AVX2. bvh_set_simd(BVH_SIMD_SSE2) gives 4 on any CPU, and a tree keeps its width after the
+ * setting changes. */
 static void check_width(void)
 {
 	vec3 p[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -187,6 +189,13 @@ static void check_width(void)
 #endif
 	printf("CIRCE_SIMD=%s: nodes of %u children\n", simd ? simd : "(unset)", b ? bvh_width(b) : 0);
 	CHECK(b && bvh_width(b) == want, "node width %u, expected %u", b ? bvh_width(b) : 0, want);
+	bvh_set_simd(BVH_SIMD_SSE2);
+	bvh *b4 = bvh_build(p, 3, ix, 1);
+	test_simd_from_env();
+	CHECK(b4 && bvh_width(b4) == 4, "node width %u under BVH_SIMD_SSE2, expected 4", b4 ? bvh_width(b4) : 0);
+	CHECK(b && bvh_width(b) == want, "node width %u after the setting changed, expected %u",
+	      b ? bvh_width(b) : 0, want);
+	bvh_free(b4);
 	bvh_free(b);
 }
 
@@ -252,6 +261,7 @@ static void check_box_circle(void)
 
 int main(void)
 {
+	test_simd_from_env();
 	check_width();
 	check_box_circle();
 	check_bad_input();

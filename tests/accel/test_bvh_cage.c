@@ -7,6 +7,7 @@
 
 int main(void)
 {
+	test_simd_from_env();
 	test_cage *t = cage_read(test_path("scenes/assets/opensubdiv_shapes/catmark_pawn.obj"));
 	CHECK(t != NULL, "read the pawn");
 	if (!t)

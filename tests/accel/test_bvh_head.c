@@ -4,6 +4,7 @@
 
 int main(void)
 {
+	test_simd_from_env();
 	check_mesh_file("scenes/assets/lee_perry_smith_head/LeePerrySmith.obj", test_count(100000),
 			test_count(100000));
 	return check_done("test_bvh_head");

@@ -230,6 +230,7 @@ static void check_pretest(long count)
 
 int main(void)
 {
+	test_simd_from_env();
 	check_pretest(test_count(200000));
 	check_plane(test_count(20000));
 	check_sphere(test_count(5000));

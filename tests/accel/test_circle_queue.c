@@ -5,6 +5,7 @@
  * (BVH_CIRCLE_LEAF_BATCH). Circles on the head, radii up to half its size, must still equal
  * brute force exactly, having gone depth first many times (under AddressSanitizer, the queue's
  * bounds are checked too). */
+#include "accel/bvh_internal.h"
 #include "check.h"
 #include "brute.h"
 
@@ -12,6 +13,7 @@ long bvh_circle_queue_lifo;
 
 int main(void)
 {
+	test_simd_from_env();
 	mesh m;
 	diag d;
 	diag_init(&d, stderr);

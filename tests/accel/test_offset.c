@@ -40,6 +40,7 @@ static long behind_face(float half, bool scaled, long count)
 
 int main(void)
 {
+	test_simd_from_env();
 	long n = test_count(100000);
 	long old = behind_face(200.0f, false, n), now = behind_face(200.0f, true, n);
 	printf("leaving a 400-unit face from behind: %ld of %ld rays back on it with the point's offset, %ld with "

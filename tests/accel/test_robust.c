@@ -138,6 +138,7 @@ static void check_spawn(const mesh *unit, double scale, double shift, long count
 
 int main(void)
 {
+	test_simd_from_env();
 	check_watertight(test_count(1000000));
 	diag d;
 	diag_init(&d, stderr);

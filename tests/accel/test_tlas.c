@@ -22,6 +22,7 @@ static xform random_similarity(rng *g, bool uniform)
 
 int main(void)
 {
+	test_simd_from_env();
 	diag d;
 	diag_init(&d, stderr);
 	mesh bunny, sphere;

@@ -48,8 +48,7 @@ static render_job job_for(uint32_t spp, int threads, int tile)
 			    .seed = 1234,
 			    .spp = spp,
 			    .threads = threads,
-			    .tile_size = tile,
-			    .quiet = true};
+			    .tile_size = tile};
 }
 
 /* Renders into f (a whole image or a region); returns the status. */
@@ -117,9 +116,53 @@ static void on_checkpoint(void *user, const film *f)
 	c->last_spp = f->spp;
 }
 
+/* What the progress callback saw: its calls, the last report, whether fraction and elapsed never
+ * went back and stayed in range, and how many calls said done (only the last may). */
+typedef struct progress_log {
+	int calls, done_calls;
+	bool ordered, done_last;
+	render_progress last;
+} progress_log;
+
+static void on_progress(void *user, const render_progress *p)
+{
+	progress_log *l = user;
+	bool in_range = p->fraction >= 0.0 && p->fraction <= 1.0 && p->rate >= 0.0 && p->elapsed >= 0.0;
+	bool forward = l->calls == 0 || (p->fraction >= l->last.fraction && p->elapsed >= l->last.elapsed);
+	l->ordered = (l->calls == 0 || l->ordered) && in_range && forward;
+	l->done_last = l->done_calls == 0;
+	l->done_calls += p->done;
+	l->last = *p;
+	l->calls++;
+}
+
+/* Progress reaches the caller through the callback: reports in order, the last one (done) at
+ * the whole count for an spp render. */
+static void check_progress(uint32_t spp, double budget_s)
+{
+	render_job j = job_for(spp, 2, 8);
+	j.time_budget_s = budget_s;
+	progress_log log = {0};
+	j.progress = on_progress;
+	j.progress_user = &log;
+	film f;
+	CHECK(film_init(&f, W, H, 0, 0, 0, 0), "film");
+	CHECK(render_run(&j, &f, NULL) == RENDER_DONE, "render with progress");
+	CHECK(log.calls >= 1 && log.ordered, "progress: %d calls, ordered %d", log.calls, log.ordered);
+	CHECK(log.done_calls == 1 && log.done_last && log.last.done, "progress: %d calls said done, the last %d",
+	      log.done_calls, log.last.done);
+	CHECK(!spp || log.last.fraction == 1.0, "progress ended at %g of %u spp", log.last.fraction, spp);
+	CHECK(log.last.rate > 0.0, "progress rate %g", log.last.rate);
+	printf("  progress (spp %u, budget %g s): %d reports, the last at %.3g after %.3f s\n", spp, budget_s,
+	       log.calls, log.last.fraction, log.last.elapsed);
+	film_free(&f);
+}
+
 int main(void)
 {
 	build_scene();
+	check_progress(6, 0.0);
+	check_progress(0, 0.6);
 	film whole, f;
 
 	/* Threads and tiles do not change a bit. */
