@@ -235,7 +235,7 @@ static void check_box_circle(void)
 			}
 			holding += holds;
 			if (holds && !bvh_box_circle(lo, hi, &q) && missed++ < 5)
-				CHECK(0, "circle %ld box %d holds a point of the arc and fails the test", i, j);
+				CHECK(0, "circle %d box %d holds a point of the arc and fails the test", i, j);
 		}
 		/* Boxes the test must cull, a tenth of r across: 0.3 r off the plane; at the centre;
 		 * 1.5 r out in the plane; for a half circle, 0.5 r behind the centre along t. Only
