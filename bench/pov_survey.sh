@@ -3,7 +3,8 @@
 # `circe check`, each from its own folder with -I at POV-Ray's include folder and the scene's
 # folder, under a time limit. The first error of each scene is classified by its message and a
 # markdown table printed: how many pass, what stops the rest. A crash (a signal) or a timeout is a
-# defect of circe and is listed loudly at the end (and the exit status is 1).
+# defect of circe and is listed loudly at the end (and the exit status is 1), as is any sanitizer
+# report when CIRCE is a build of --enable-sanitizers.
 # Exit 77 when povray-examples is not installed. Run from the build folder (default ./circe).
 # Environment: POV_INCLUDE (default /usr/share/povray-3.7/include), SURVEY_TIMEOUT (seconds per
 # scene, default 10), SURVEY_TOP (rows of first stops, default 25), SURVEY_LOG (a file that
@@ -30,6 +31,12 @@ for s in $scenes; do
 	dir=$(dirname "$s")
 	(cd "$dir" && exec timeout -k 2 "$limit" "$circe" check -I "$inc" -I "$dir" "$s") >/dev/null 2>"$work/err"
 	rc=$?
+	# A circe built with --enable-sanitizers: any report is a defect, whatever the exit status.
+	if grep -q -E 'ERROR: (Address|Leak)Sanitizer|runtime error: ' "$work/err"; then
+		echo "DEFECT sanitizer report: $s" >>"$work/defects"
+		echo "sanitizer report (defect)" >>"$work/stops"
+		continue
+	fi
 	if [ "$rc" -eq 0 ]; then
 		pass=$((pass + 1))
 		continue
