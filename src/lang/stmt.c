@@ -1334,8 +1334,98 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 
 /* ---- top-level statements ---------------------------------------------------------------- */
 
+/* The items of POV-Ray 3.7's global_settings whose work circe does on its own or has no use for
+ * (POV-Ray 3.7 documentation, "Global Settings"): each is read, dropped and warned about once
+ * where it stands, saying why. A block's contents are not parsed: its braces are matched. An
+ * integer setting takes any float, as POV-Ray's parser truncates it. */
+typedef enum { IGNORED_BLOCK, IGNORED_COLOR, IGNORED_FLOAT, IGNORED_CHARSET, IGNORED_OPT_BOOL } ignored_arg;
+
+static const struct ignored_setting {
+	const char *name;
+	ignored_arg arg;
+	const char *why;
+} ignored_settings[] = {
+	{"radiosity", IGNORED_BLOCK, "circe always computes global illumination"},
+	{"photons", IGNORED_BLOCK, "circe always computes global illumination, caustics included"},
+	{"ambient_light", IGNORED_COLOR, "circe has no ambient term: it always computes global illumination"},
+	{"noise_generator", IGNORED_FLOAT, "circe has no noise patterns"},
+	{"number_of_waves", IGNORED_FLOAT, "circe has no wave patterns"},
+	{"charset", IGNORED_CHARSET, "circe reads strings as bytes"},
+	{"hf_gray_16", IGNORED_OPT_BOOL, "circe's output format is chosen on its command line"},
+	{"adc_bailout", IGNORED_FLOAT, "circe ends paths by Russian roulette"},
+	{"irid_wavelength", IGNORED_COLOR, "circe has no iridescence"},
+	{"max_intersections", IGNORED_FLOAT, "circe's intersection tests need no limit"},
+};
+
+static const struct ignored_setting *ignored_setting(const lang_token *t)
+{
+	if (t->kind != LTK_UNSUPPORTED)
+		return NULL;
+	for (size_t i = 0; i < sizeof ignored_settings / sizeof ignored_settings[0]; i++)
+		if (strlen(ignored_settings[i].name) == t->len && !memcmp(ignored_settings[i].name, t->text, t->len))
+			return &ignored_settings[i];
+	return NULL;
+}
+
+/* "{" ... "}" with any tokens between, the braces balanced; directives still run. */
+static bool skip_block(parser *p, const char *what)
+{
+	diag_loc open;
+	TRY(open_block(p, what, &open));
+	for (unsigned long depth = 1;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k == LTK_EOF || (k == LTK_RBRACE && depth == 1))
+			return lang_expect_close(p, open, what);
+		depth += k == LTK_LBRACE;
+		depth -= k == LTK_RBRACE;
+		lang_advance(p);
+	}
+}
+
+/* Whether the lookahead ends hf_gray_16's optional value: '}' or the next item. */
+static bool settings_item_follows(parser *p)
+{
+	const lang_token *t = lang_peek(p);
+	return t->kind == LTK_RBRACE || t->kind == LTK_EOF || t->kind == LTK_UNSUPPORTED ||
+	       t->kind == LTK_KW_MM_PER_UNIT || t->kind == LTK_KW_MAX_TRACE_LEVEL || t->kind == LTK_KW_ASSUMED_GAMMA;
+}
+
+/* One ignored item, its keyword the lookahead: its value read (and checked) and dropped. */
+static bool ignored_item(parser *p, const struct ignored_setting *s)
+{
+	lang_token kw = *lang_advance(p);
+	char ctx[64];
+	snprintf(ctx, sizeof ctx, "after '%s'", s->name);
+	double x;
+	vec3 c;
+	switch (s->arg) {
+	case IGNORED_BLOCK: TRY(skip_block(p, s->name)); break;
+	case IGNORED_COLOR: TRY(lang_color(p, ctx, &c)); break;
+	case IGNORED_FLOAT: TRY(lang_float(p, ctx, &x)); break;
+	case IGNORED_OPT_BOOL:
+		if (!settings_item_follows(p))
+			TRY(lang_float(p, ctx, &x));
+		break;
+	case IGNORED_CHARSET: {
+		const lang_token *t = lang_peek(p);
+		bool word = t->kind == LTK_UNSUPPORTED || t->kind == LTK_IDENT;
+		if (!word || !((t->len == 5 && !memcmp(t->text, "ascii", 5)) || (t->len == 4 && !memcmp(t->text, "utf8", 4)) ||
+			       (t->len == 3 && !memcmp(t->text, "sys", 3))))
+			return lang_error_found(p, "expected ascii, utf8 or sys %s", ctx);
+		lang_advance(p);
+		break;
+	}
+	}
+	diag_warning(p->d, kw.loc, "'%s' is ignored: %s", s->name, s->why);
+	return true;
+}
+
 /* global_settings = "global_settings" "{" { "mm_per_unit" float | "max_trace_level" integer
- *                   | "assumed_gamma" float } "}" */
+ *                   | "assumed_gamma" float | ignored_setting } "}"
+ * ignored_setting = ( "radiosity" | "photons" ) "{" balanced-tokens "}"
+ *                 | ( "ambient_light" | "irid_wavelength" ) color
+ *                 | ( "adc_bailout" | "noise_generator" | "number_of_waves" | "max_intersections" ) float
+ *                 | "charset" ( "ascii" | "utf8" | "sys" ) | "hf_gray_16" [ float ] */
 static bool global_settings(parser *p)
 {
 	diag_loc open;
@@ -1365,8 +1455,13 @@ static bool global_settings(parser *p)
 			TRY(lang_float(p, "after 'assumed_gamma'", &x) && positive(p, t.loc, "assumed_gamma", x));
 			g->assumed_gamma = x;
 			break;
-		default:
-			return bad_item(p, open, "global_settings", "mm_per_unit, max_trace_level or assumed_gamma");
+		default: {
+			const struct ignored_setting *s = ignored_setting(&t);
+			if (!s)
+				return bad_item(p, open, "global_settings", "mm_per_unit, max_trace_level or assumed_gamma");
+			TRY(ignored_item(p, s));
+			break;
+		}
 		}
 	}
 }

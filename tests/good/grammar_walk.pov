@@ -33,8 +33,8 @@
 #switch (2) #case (1) sphere { 0, 7 } #range (2, 3) #break #else sphere { 0, 8 } #end
 // rule: include
 #include "walk.inc"
-// rule: global_settings, integer
-global_settings { mm_per_unit 10 max_trace_level 4 assumed_gamma 1 }
+// rule: global_settings, integer, ignored_setting, balanced
+global_settings { mm_per_unit 10 max_trace_level 4 assumed_gamma 1 radiosity { count 9 media { off } } ambient_light 0 adc_bailout 0.01 charset ascii hf_gray_16 }
 // rule: camera
 camera { perspective location <0, 1, -5> look_at 0 sky y angle 50 right x up y aperture 0.1 focal_point 0 }
 // rule: light_source

@@ -60,6 +60,16 @@ grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; 
 expect 0 "#debug and #warning" -- sh -c 'cd "$1" && "$2" check messages.pov' sh "$good" "$CIRCE"
 cmp -s "$tmp/err" "$good/messages.stderr" ||
 	{ echo "FAIL #debug/#warning output differs (expected, then got):"; cat "$good/messages.stderr" "$tmp/err"; fail=1; }
+# global_settings items circe does on its own: one warning each, exactly so, and the IR is that
+# of the scene without them (the lines between its "ignored" markers).
+expect 0 "ignored global_settings" -- sh -c 'cd "$1" && "$2" check --dump ignored_settings.pov' sh "$good" "$CIRCE"
+cmp -s "$tmp/err" "$good/ignored_settings.stderr" ||
+	{ echo "FAIL ignored settings' warnings differ (expected, then got):"; cat "$good/ignored_settings.stderr" "$tmp/err"; fail=1; }
+sed 's/@[^ ]*//g' "$tmp/out" >"$tmp/ignored.ir"
+sed '/ignored: begin/,/ignored: end/d' "$good/ignored_settings.pov" >"$tmp/plain.pov"
+expect 0 "global_settings without the ignored items" -- "$CIRCE" check --dump "$tmp/plain.pov"
+sed 's/@[^ ]*//g' "$tmp/out" | cmp -s - "$tmp/ignored.ir" ||
+	{ echo "FAIL the ignored settings change the IR:"; sed 's/@[^ ]*//g' "$tmp/out" | diff - "$tmp/ignored.ir"; fail=1; }
 # #error stops with exit 3 and its message at the directive.
 printf 'sphere { 0, 1 }\n#error "stop"\n' >"$tmp/error.pov"
 expect 3 "#error" -- "$CIRCE" check "$tmp/error.pov"

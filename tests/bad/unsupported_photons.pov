@@ -1,1 +1,0 @@
-global_settings { photons { count 1000 } }
