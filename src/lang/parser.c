@@ -411,14 +411,14 @@ static symbol *parameter(parser *p, const lang_token *name)
 		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
 		if (s->depth != depth)
 			break;
-		if (s->ref && strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len))
+		if (s->param && strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len))
 			return s;
 	}
 	return NULL;
 }
 
-/* As POV-Ray 3.7, #declare or #local of a parameter passed by reference assigns the caller's
- * variable. */
+/* As POV-Ray 3.7, #declare (as #local) of a parameter assigns the parameter: the caller's variable
+ * when it was passed by reference. */
 static bool define(parser *p, const lang_token *name, bool local, const value *v)
 {
 	symbol *param = parameter(p, name);
@@ -437,7 +437,7 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			return true;
 		}
 	}
-	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, 0};
+	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
 	return true;
@@ -1275,7 +1275,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 	for (int i = 0; i < m->n_params; i++) {
 		if (!set[i])
 			continue;
-		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], refs[i]};
+		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i]};
 		if (!vecbuf_push(&p->locals, &s))
 			return no_memory(p, name->loc);
 	}

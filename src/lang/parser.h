@@ -73,7 +73,8 @@ typedef struct symbol {
 	int depth; /* 0 global; k the k-th include level for #local */
 	diag_loc loc;
 	value val;
-	long ref; /* a macro parameter passed by reference: 0 none; k > 0 globals[k-1]; k < 0 locals[-k-1] */
+	bool param; /* a parameter of a macro call */
+	long ref; /* a parameter passed by reference: 0 none; k > 0 globals[k-1]; k < 0 locals[-k-1] */
 } symbol;
 
 typedef struct parser {

@@ -50,3 +50,11 @@ Hide(9)
 Show(14.5, V)
 // 15: a macro's name inside a skipped branch pairs its #end.
 #if (0) #macro Never() #end #else Show(15, 1) #end
+// 16: #declare of a parameter passed by value assigns the parameter, not a global.
+#macro ByValue(P) #declare P = 5; Show(16, P) #end
+ByValue(1)
+#ifdef (P) Show(16.5, P) #else Show(16.5, 0) #end
+// 17: a macro defined in an include file works after the file ends; the file's #local does not.
+#include "macro_lib.inc"
+FromInc(17)
+#ifdef (Hidden) Show(17.5, 1) #else Show(17.5, 0) #end
