@@ -324,7 +324,7 @@ static bool do_include(parser *p, diag_loc at)
 		name = s->val.str;
 	}
 	diag_loc nloc = p->prev.loc;
-	if (p->n_files > LANG_MAX_INCLUDE_DEPTH) {
+	if (p->n_files - p->n_macro_calls > LANG_MAX_INCLUDE_DEPTH) {
 		lang_error(p, at, "includes nested too deeply (limit is %d)", LANG_MAX_INCLUDE_DEPTH);
 		note_chain(p);
 		return false;
@@ -1153,8 +1153,10 @@ static bool do_macro(parser *p, diag_loc loc)
 	m->loc = loc;
 	m->body = f->lx;
 	m->path = f->path;
-	if (!m->name || !skip_block(p, loc, SKIP_WHILE, "#macro", diag_noloc(), NULL))
-		return !m->name ? no_memory(p, loc) : false;
+	if (!m->name)
+		return no_memory(p, loc);
+	if (!skip_block(p, loc, SKIP_WHILE, "#macro", diag_noloc(), NULL))
+		return false;
 	m->body_end = p->skip_stop_at;
 	value v = {.kind = VAL_MACRO, .mac = m};
 	return define(p, &name, false, &v);
@@ -1186,7 +1188,7 @@ static bool wrong_arg_count(parser *p, diag_loc at, const lang_macro *m, int giv
 
 /* One argument: *set false when it is omitted (an optional parameter stays undefined). A bare
  * identifier is passed by reference (*ref), anything else by value, as POV-Ray 3.7 documents. */
-static bool argument(parser *p, const lang_macro *m, int i, diag_loc call, value *v, long *ref, bool *set)
+static bool argument(parser *p, const lang_macro *m, int i, value *v, long *ref, bool *set)
 {
 	lang_token *t = lang_peek(p);
 	*ref = 0, *set = true;
@@ -1210,7 +1212,6 @@ static bool argument(parser *p, const lang_macro *m, int i, diag_loc call, value
 			return true;
 		}
 	}
-	(void)call;
 	return lang_expr(p, v);
 }
 
@@ -1243,7 +1244,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 		if (n > 0 && !lang_expect(p, LTK_COMMA, "between macro arguments"))
 			ok = false;
 		else
-			ok = argument(p, m, n, name->loc, &vals[n], &refs[n], &set[n]);
+			ok = argument(p, m, n, &vals[n], &refs[n], &set[n]);
 	}
 	if (n < 0)
 		n = 0;
