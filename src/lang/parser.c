@@ -1236,9 +1236,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 	snprintf(ctx, sizeof ctx, "after the macro name '%s'", m->name);
 	bool ok = lang_expect(p, LTK_LPAREN, ctx);
 	int n = 0;
-	if (ok && lang_peek(p)->kind == LTK_RPAREN && m->n_params == 0)
-		n = -1;
-	for (; ok && n >= 0 && n < m->n_params; n++) {
+	for (; ok && n < m->n_params; n++) {
 		if (n > 0 && lang_peek(p)->kind == LTK_RPAREN)
 			break;
 		if (n > 0 && !lang_expect(p, LTK_COMMA, "between macro arguments"))
@@ -1246,9 +1244,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 		else
 			ok = argument(p, m, n, &vals[n], &refs[n], &set[n]);
 	}
-	if (n < 0)
-		n = 0;
-	if (ok && lang_peek(p)->kind == LTK_COMMA)
+	if (ok && (lang_peek(p)->kind == LTK_COMMA || (m->n_params == 0 && lang_peek(p)->kind != LTK_RPAREN)))
 		ok = wrong_arg_count(p, lang_peek(p)->loc, m, n + 1);
 	for (int i = n; ok && i < m->n_params; i++)
 		if (!m->optional[i])
