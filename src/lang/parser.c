@@ -1111,10 +1111,9 @@ static bool do_message(parser *p, const lang_token *dir)
  * the source, lexed again at each call. A macro is global, as in POV-Ray 3.7. */
 static bool do_macro(parser *p, diag_loc loc)
 {
-	lang_macro *m = arena_alloc(&p->sc->arena, sizeof *m, _Alignof(lang_macro), 1);
+	lang_macro *m = arena_zalloc(&p->sc->arena, 1, sizeof *m);
 	if (!m)
 		return no_memory(p, loc);
-	memset(m, 0, sizeof *m);
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	p->no_expand = true;
 	lang_token name;
