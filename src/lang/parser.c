@@ -1417,13 +1417,19 @@ void lang_skip_optional_semi(parser *p)
 {
 	if (p->have_tok || p->n_files == 0)
 		return;
-	lang_lexer *lx = &p->files[p->n_files - 1].lx;
-	lang_lexer save = *lx;
-	lang_token t;
-	diag quiet;
-	diag_init(&quiet, NULL);
-	if (!lang_lex(lx, &quiet, &t) || t.kind != LTK_SEMI)
-		*lx = save; /* any error is reported again when the token is read for real */
+	for (;;) {
+		include_frame *f = &p->files[p->n_files - 1];
+		lang_lexer save = f->lx;
+		lang_token t;
+		diag quiet;
+		diag_init(&quiet, NULL);
+		bool ok = lang_lex(&f->lx, &quiet, &t);
+		if (ok && t.kind == LTK_EOF && f->macro && p->n_conds == f->cond_base && end_of_file(p, &t))
+			continue; /* a macro's body that ends with the block: `#declare B = Ball(1);` */
+		if (!ok || t.kind != LTK_SEMI)
+			f->lx = save; /* any error is reported again when the token is read for real */
+		return;
+	}
 }
 
 /* ---- expressions ------------------------------------------------------------------------- */

@@ -58,3 +58,9 @@ ByValue(1)
 #include "macro_lib.inc"
 FromInc(17)
 #ifdef (Hidden) Show(17.5, 1) #else Show(17.5, 0) #end
+// 18, 19: a macro as a #declare's object value (the ';' after the call), and as a material item.
+#macro Ball(P) sphere { P, 0.1 } #end
+#declare B = Ball(<18, 1, 0>);
+object { B }
+#macro Green() material { texture { pigment { rgb <0, 1, 0> } } } #end
+sphere { <19, 0, 0>, 0.1 Green() }
