@@ -18,6 +18,8 @@ enum {
 	LANG_MAX_DEPTH = 200, /* recursion: nested blocks, parentheses, unary operators, colours,
 				 directives run inside others (#declare X = #while ...), #if/#while */
 	LANG_MAX_LOOP_ITERATIONS = 1000000, /* per #while loop */
+	LANG_MAX_MACRO_DEPTH = 100, /* macro calls running at once (recursion) */
+	LANG_MAX_MACRO_PARAMS = 32, /* parameters of one #macro */
 	LANG_MAX_VECTOR = 16, /* components of a vector literal (the matrix needs 12) */
 };
 

@@ -58,7 +58,7 @@ enum {
 	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else") X(ELSEIF, "elseif")    \
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
 	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for") X(SWITCH, "switch")     \
-	X(CASE, "case") X(RANGE, "range") X(BREAK, "break")
+	X(CASE, "case") X(RANGE, "range") X(BREAK, "break") X(MACRO, "macro")
 
 typedef enum lang_tok {
 	LTK_EOF,

@@ -258,19 +258,27 @@ static bool push_file(parser *p, const diag_source *src, const char *path, diag_
 	f->included_at = at;
 	f->cond_base = p->n_conds;
 	f->released = src->text;
+	f->macro = NULL;
 	return true;
 }
 
-/* The include chain, innermost first, as notes. */
+/* The chain of includes and macro calls, innermost first, as notes. */
 static void note_chain(parser *p)
 {
 	enum { SHOWN = 8 }; /* innermost and outermost links; the middle of a deep chain is noise */
 	for (int i = p->n_files - 1; i >= 1; i--) {
 		if (i == p->n_files - 1 - SHOWN && i > SHOWN) {
-			note(p, diag_noloc(), "... %d more includes ...", i - SHOWN);
+			int calls = 0;
+			for (int k = SHOWN + 1; k <= i; k++)
+				calls += p->files[k].macro != NULL;
+			note(p, diag_noloc(), "... %d more %s ...", i - SHOWN,
+			     calls == 0 ? "includes" : calls == i - SHOWN ? "macro calls" : "includes or macro calls");
 			i = SHOWN;
 		}
-		note(p, p->files[i].included_at, "'%s' is included from here", p->files[i].path);
+		if (p->files[i].macro)
+			note(p, p->files[i].included_at, "'%s' called from here", p->files[i].macro->name);
+		else
+			note(p, p->files[i].included_at, "'%s' is included from here", p->files[i].path);
 	}
 }
 
@@ -316,7 +324,7 @@ static bool do_include(parser *p, diag_loc at)
 		name = s->val.str;
 	}
 	diag_loc nloc = p->prev.loc;
-	if (p->n_files > LANG_MAX_INCLUDE_DEPTH) {
+	if (p->n_files - p->n_macro_calls > LANG_MAX_INCLUDE_DEPTH) {
 		lang_error(p, at, "includes nested too deeply (limit is %d)", LANG_MAX_INCLUDE_DEPTH);
 		note_chain(p);
 		return false;
@@ -357,12 +365,31 @@ static bool do_include(parser *p, diag_loc at)
 
 /* ---- symbols ----------------------------------------------------------------------------- */
 
+/* The variable a by-reference parameter stands for (itself for any other symbol). */
+static symbol *target(parser *p, symbol *s)
+{
+	if (s->ref > 0 && (size_t)s->ref <= p->globals.len)
+		return &VECBUF_AT(&p->globals, symbol, (size_t)s->ref - 1);
+	if (s->ref < 0 && (size_t)-s->ref <= p->locals.len)
+		return &VECBUF_AT(&p->locals, symbol, (size_t)-s->ref - 1);
+	return s;
+}
+
+/* The ref that names s (a symbol in one of the tables). */
+static long ref_of(parser *p, const symbol *s)
+{
+	const symbol *g = p->globals.data, *l = p->locals.data;
+	if (l && s >= l && s < l + p->locals.len)
+		return -(long)(s - l) - 1;
+	return (long)(s - g) + 1;
+}
+
 const symbol *lang_lookup(parser *p, const char *name, size_t len)
 {
 	for (size_t i = p->locals.len; i-- > 0;) {
-		const symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
 		if (strlen(s->name) == len && !memcmp(s->name, name, len))
-			return s;
+			return target(p, s);
 	}
 	for (size_t i = p->globals.len; i-- > 0;) {
 		const symbol *s = &VECBUF_AT(&p->globals, symbol, i);
@@ -374,8 +401,31 @@ const symbol *lang_lookup(parser *p, const char *name, size_t len)
 
 /* #declare assigns the global; #local the current include file's scope (the main file's #local is
  * global, as in POV-Ray). */
+/* A parameter of the running macro call with this name, or NULL. */
+static symbol *parameter(parser *p, const lang_token *name)
+{
+	int depth = p->n_files - 1;
+	if (!p->files[depth].macro)
+		return NULL;
+	for (size_t i = p->locals.len; i-- > 0;) {
+		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (s->depth != depth)
+			break;
+		if (s->param && strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len))
+			return s;
+	}
+	return NULL;
+}
+
+/* As POV-Ray 3.7, #declare (as #local) of a parameter assigns the parameter: the caller's variable
+ * when it was passed by reference. */
 static bool define(parser *p, const lang_token *name, bool local, const value *v)
 {
+	symbol *param = parameter(p, name);
+	if (param) {
+		target(p, param)->val = *v;
+		return true;
+	}
 	int depth = local ? p->n_files - 1 : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
 	for (size_t i = tab->len; i-- > 0;) {
@@ -387,7 +437,7 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			return true;
 		}
 	}
-	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v};
+	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
 	return true;
@@ -406,8 +456,10 @@ static bool do_declare(parser *p, const lang_token *dir)
 {
 	bool local = dir->kind == LTK_DIR_LOCAL;
 	const char *dname = local ? "#local" : "#declare";
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
+	p->no_expand = true;
 	lang_token *t = lang_peek(p);
+	p->no_expand = false;
 	if (t->kind != LTK_IDENT) {
 		p->directive_expr = false;
 		if (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE)
@@ -430,7 +482,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 		lang_skip_optional_semi(p);
 		return true;
 	}
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_expr(p, &v);
 	if (ok) {
 		if (lang_peek(p)->kind != LTK_SEMI)
@@ -446,7 +498,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 static bool paren_float(parser *p, const char *what, const char *role, double *v)
 {
 	*v = 0;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	char after[64];
 	snprintf(after, sizeof after, "after the %s", role);
 	char as[64];
@@ -462,19 +514,6 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
 	bool ok = paren_float(p, what, "condition", &v);
 	*truth = v != 0.0;
 	return ok;
-}
-
-/* POV-Ray's block directives that circe does not run: a skipped branch still pairs each with its
- * '#end', as POV-Ray does, so that the '#end' of a skipped '#macro' does not close the '#if'. */
-static bool opens_pov_block(const lang_token *t)
-{
-	static const char *const names[] = {"macro"};
-	if (t->kind != LTK_UNSUPPORTED_DIRECTIVE)
-		return false;
-	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-		if (strlen(names[i]) == t->len && !memcmp(names[i], t->text, t->len))
-			return true;
-	return false;
 }
 
 /* The name of an #if-like directive token for messages: "#if", "#ifdef", "#ifndef". */
@@ -539,13 +578,14 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 	if (!stop)
 		stop = &t;
 	for (;;) {
+		p->skip_stop_at = lx->p;
 		if (!lang_lex(lx, p->d, &t)) {
 			p->failed = true;
 			return false;
 		}
 		bool is_if = t.kind == LTK_DIR_IF || t.kind == LTK_DIR_IFDEF || t.kind == LTK_DIR_IFNDEF;
 		bool opens = is_if || t.kind == LTK_DIR_WHILE || t.kind == LTK_DIR_FOR || t.kind == LTK_DIR_SWITCH ||
-			     opens_pov_block(&t);
+			     t.kind == LTK_DIR_MACRO;
 		if (opens) {
 			if (level >= room)
 				return nesting_too_deep(p, t.loc);
@@ -652,7 +692,9 @@ static bool do_if(parser *p, diag_loc loc)
  * POV-Ray, which is never declared. *sym: its symbol, or NULL. */
 static bool directive_name(parser *p, const char *dname, lang_token *name, const symbol **sym)
 {
+	p->no_expand = true;
 	lang_token *t = lang_peek(p);
+	p->no_expand = false;
 	bool word = t->kind == LTK_IDENT || t->kind == LTK_UNSUPPORTED ||
 		    (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
 	if (!word)
@@ -686,7 +728,7 @@ static bool do_ifdef(parser *p, diag_loc loc, bool want_defined)
 	snprintf(ctx, sizeof ctx, "after '%s'", dname);
 	lang_token name;
 	const symbol *s = NULL;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_expect(p, LTK_LPAREN, ctx) && directive_name(p, dname, &name, &s) &&
 		  lang_expect(p, LTK_RPAREN, "after the identifier");
 	p->directive_expr = false;
@@ -699,7 +741,7 @@ static bool do_undef(parser *p)
 {
 	lang_token name;
 	const symbol *s = NULL;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = directive_name(p, "#undef", &name, &s);
 	p->directive_expr = false;
 	if (!ok)
@@ -781,7 +823,7 @@ static bool for_goes_on(double v, double end, double step)
  * #end; a step of 0 is an error. */
 static bool do_for(parser *p, diag_loc loc)
 {
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	lang_token name;
 	double start = 0, end = 0, step = 1;
 	diag_loc step_loc = loc;
@@ -876,7 +918,7 @@ static bool case_matches(parser *p, const lang_token *t, double v, bool *match)
 		return true;
 	}
 	double lo = 0, hi = 0;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_expect(p, LTK_LPAREN, "after '#range'") && lang_float(p, "as the range's low end", &lo) &&
 		  lang_expect(p, LTK_COMMA, "after the range's low end") &&
 		  lang_float(p, "as the range's high end", &hi) && lang_expect(p, LTK_RPAREN, "after the range");
@@ -959,7 +1001,7 @@ static bool do_break(parser *p, diag_loc loc)
 static bool do_version(parser *p)
 {
 	double v;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_float(p, "after '#version'", &v) && lang_expect(p, LTK_SEMI, "after the #version number");
 	p->directive_expr = false;
 	if (ok)
@@ -979,6 +1021,11 @@ static bool end_of_file(parser *p, const lang_token *t)
 		return false;
 	}
 	pop_scope(p, p->n_files - 1);
+	if (f->macro) {
+		p->n_macro_calls--;
+		p->directive_expr = f->saved_directive_expr;
+		p->directive_expr_at = f->saved_directive_expr_at;
+	}
 	if (p->n_files > 1)
 		p->n_files--;
 	else
@@ -1037,7 +1084,7 @@ static bool do_message(parser *p, const lang_token *dir)
 	char what[32];
 	snprintf(what, sizeof what, "after '%s'", dname);
 	const char *s = NULL;
-	p->directive_expr = true;
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = message_text(p, what, &s);
 	p->directive_expr = false;
 	if (!ok)
@@ -1056,12 +1103,189 @@ static bool do_message(parser *p, const lang_token *dir)
 	return lang_error(p, dir->loc, "parse halted by #error: %s", message_line(p, s));
 }
 
+/* ---- macros ------------------------------------------------------------------------------ */
+
+/* macro = "#macro" identifier "(" [ param { "," param } ] ")" { token } "#end"
+ * param = [ "optional" ] identifier
+ * The body is not run here: it is skipped to its #end (blocks nest in it) and kept as a span of
+ * the source, lexed again at each call. A macro is global, as in POV-Ray 3.7. */
+static bool do_macro(parser *p, diag_loc loc)
+{
+	lang_macro *m = arena_zalloc(&p->sc->arena, 1, sizeof *m);
+	if (!m)
+		return no_memory(p, loc);
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
+	p->no_expand = true;
+	lang_token name;
+	bool ok = lang_peek(p)->kind == LTK_IDENT || lang_error_found(p, "expected the macro's name after '#macro'");
+	if (ok) {
+		name = *lang_advance(p);
+		ok = lang_expect(p, LTK_LPAREN, "after the macro's name");
+	}
+	while (ok && !lang_accept(p, LTK_RPAREN)) {
+		if (m->n_params && !lang_expect(p, LTK_COMMA, "between the macro's parameters")) {
+			ok = false;
+			break;
+		}
+		lang_token *t = lang_peek(p);
+		bool optional = t->kind == LTK_IDENT && t->len == 8 && !memcmp(t->text, "optional", 8);
+		if (optional)
+			t = lang_advance(p), t = lang_peek(p);
+		if (t->kind != LTK_IDENT) {
+			ok = lang_error_found(p, "expected a parameter name in '#macro %.*s'", (int)name.len, name.text);
+			break;
+		}
+		if (m->n_params == LANG_MAX_MACRO_PARAMS) {
+			ok = lang_error(p, t->loc, "too many parameters (limit is %d)", LANG_MAX_MACRO_PARAMS);
+			break;
+		}
+		m->params[m->n_params] = arena_strndup(&p->sc->arena, t->text, t->len);
+		m->optional[m->n_params++] = optional;
+		lang_advance(p);
+	}
+	p->directive_expr = false;
+	p->no_expand = false;
+	if (!ok)
+		return false;
+	include_frame *f = &p->files[p->n_files - 1];
+	m->name = arena_strndup(&p->sc->arena, name.text, name.len);
+	m->loc = loc;
+	m->body = f->lx;
+	m->path = f->path;
+	if (!m->name)
+		return no_memory(p, loc);
+	if (!skip_block(p, loc, SKIP_WHILE, "#macro", diag_noloc(), NULL))
+		return false;
+	m->body_end = p->skip_stop_at;
+	value v = {.kind = VAL_MACRO, .mac = m};
+	return define(p, &name, false, &v);
+}
+
+/* True when the identifier just peeked is followed by ',' or ')': a bare identifier argument. */
+static bool bare_identifier(parser *p)
+{
+	lang_lexer lx = p->files[p->n_files - 1].lx;
+	lang_token t;
+	diag quiet;
+	diag_init(&quiet, NULL);
+	return lang_lex(&lx, &quiet, &t) && (t.kind == LTK_COMMA || t.kind == LTK_RPAREN);
+}
+
+static bool wrong_arg_count(parser *p, diag_loc at, const lang_macro *m, int given)
+{
+	int needed = 0;
+	for (int i = 0; i < m->n_params; i++)
+		needed += !m->optional[i];
+	if (needed == m->n_params)
+		lang_error(p, at, "macro '%s' takes %d argument%s, %d given", m->name, m->n_params,
+			   m->n_params == 1 ? "" : "s", given);
+	else
+		lang_error(p, at, "macro '%s' takes %d to %d arguments, %d given", m->name, needed, m->n_params, given);
+	note(p, m->loc, "'%s' is defined here", m->name);
+	return false;
+}
+
+/* One argument: *set false when it is omitted (an optional parameter stays undefined). A bare
+ * identifier is passed by reference (*ref), anything else by value, as POV-Ray 3.7 documents. */
+static bool argument(parser *p, const lang_macro *m, int i, value *v, long *ref, bool *set)
+{
+	lang_token *t = lang_peek(p);
+	*ref = 0, *set = true;
+	if (t->kind == LTK_COMMA || t->kind == LTK_RPAREN) {
+		*set = false;
+		if (m->optional[i])
+			return true;
+		return lang_error(p, t->loc, "missing argument for the parameter '%s' of macro '%s'", m->params[i], m->name);
+	}
+	if (t->kind == LTK_IDENT && bare_identifier(p)) {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		if (!s && m->optional[i]) {
+			*set = false;
+			lang_advance(p);
+			return true;
+		}
+		if (s) {
+			*ref = ref_of(p, s);
+			*v = s->val;
+			lang_advance(p);
+			return true;
+		}
+	}
+	return lang_expr(p, v);
+}
+
+/* call = identifier "(" [ argument { "," argument } ] ")", where identifier names a macro: the
+ * arguments are evaluated in the caller's scope, then the body is read in place of the call, in a
+ * frame of its own (its #local names and parameters die at its end). */
+static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
+{
+	if (p->n_macro_calls >= LANG_MAX_MACRO_DEPTH) {
+		lang_error(p, name->loc, "macro calls nested too deeply calling '%s' (limit is %d)", m->name,
+			   LANG_MAX_MACRO_DEPTH);
+		note_chain(p);
+		return false;
+	}
+	bool saved = p->directive_expr;
+	int saved_at = p->directive_expr_at;
+	p->directive_expr = true, p->directive_expr_at = p->n_files;
+	value vals[LANG_MAX_MACRO_PARAMS];
+	long refs[LANG_MAX_MACRO_PARAMS];
+	bool set[LANG_MAX_MACRO_PARAMS];
+	char ctx[300];
+	snprintf(ctx, sizeof ctx, "after the macro name '%s'", m->name);
+	bool ok = lang_expect(p, LTK_LPAREN, ctx);
+	int n = 0;
+	for (; ok && n < m->n_params; n++) {
+		if (n > 0 && lang_peek(p)->kind == LTK_RPAREN)
+			break;
+		if (n > 0 && !lang_expect(p, LTK_COMMA, "between macro arguments"))
+			ok = false;
+		else
+			ok = argument(p, m, n, &vals[n], &refs[n], &set[n]);
+	}
+	if (ok && (lang_peek(p)->kind == LTK_COMMA || (m->n_params == 0 && lang_peek(p)->kind != LTK_RPAREN)))
+		ok = wrong_arg_count(p, lang_peek(p)->loc, m, n + 1);
+	for (int i = n; ok && i < m->n_params; i++)
+		if (!m->optional[i])
+			ok = wrong_arg_count(p, lang_peek(p)->loc, m, n);
+		else
+			set[i] = false;
+	ok = ok && lang_expect(p, LTK_RPAREN, "to close the macro's arguments");
+	p->directive_expr = saved, p->directive_expr_at = saved_at;
+	if (!ok)
+		return false;
+	if (p->n_files >= (int)(sizeof p->files / sizeof p->files[0]))
+		return lang_error(p, name->loc, "includes and macro calls nested too deeply");
+	include_frame *f = &p->files[p->n_files++];
+	f->lx = m->body;
+	f->lx.end = m->body_end;
+	f->path = m->path;
+	f->included_at = name->loc;
+	f->cond_base = p->n_conds;
+	f->released = m->body.p;
+	f->macro = m;
+	f->saved_directive_expr = saved;
+	f->saved_directive_expr_at = saved_at;
+	p->n_macro_calls++;
+	p->directive_expr = false;
+	for (int i = 0; i < m->n_params; i++) {
+		if (!set[i])
+			continue;
+		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i]};
+		if (!vecbuf_push(&p->locals, &s))
+			return no_memory(p, name->loc);
+	}
+	return true;
+}
+
 /* Runs one directive. A directive reads its operands through the token stream, which may run
  * further directives inside it (`#declare X = #if ...`): each counts a level of LANG_MAX_DEPTH. */
 static bool run_directive(parser *p, const lang_token *dir)
 {
 	if (!lang_enter(p, dir->loc))
 		return false;
+	int saved_frame = p->dir_frame;
+	p->dir_frame = p->n_files;
 	bool ok;
 	switch (dir->kind) {
 	case LTK_DIR_INCLUDE: ok = do_include(p, dir->loc); break;
@@ -1080,11 +1304,13 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_IFDEF: ok = do_ifdef(p, dir->loc, true); break;
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;
+	case LTK_DIR_MACRO: ok = do_macro(p, dir->loc); break;
 	case LTK_DIR_DEBUG:
 	case LTK_DIR_WARNING:
 	case LTK_DIR_ERROR: ok = do_message(p, dir); break;
 	default: ok = do_version(p); break;
 	}
+	p->dir_frame = saved_frame;
 	lang_leave(p);
 	return ok;
 }
@@ -1105,6 +1331,18 @@ static bool fetch(parser *p, lang_token *t)
 			return false;
 		}
 		release_behind(f);
+		if (t->kind == LTK_IDENT && !p->no_expand) {
+			const symbol *s = lang_lookup(p, t->text, t->len);
+			if (s && s->val.kind == VAL_MACRO) {
+				lang_token name = *t;
+				if (!invoke(p, &name, s->val.mac)) {
+					p->failed = true;
+					*t = p->eof;
+					return false;
+				}
+				continue;
+			}
+		}
 		if (t->kind < LANG_FIRST_DIRECTIVE && t->kind != LTK_EOF && t->kind != LTK_UNSUPPORTED_DIRECTIVE)
 			return true;
 		if (t->kind == LTK_UNSUPPORTED_DIRECTIVE) {
@@ -1113,13 +1351,13 @@ static bool fetch(parser *p, lang_token *t)
 			return false;
 		}
 		if (t->kind == LTK_EOF) {
-			if (p->n_files == 1 && p->directive_expr)
+			if (p->n_files == 1 && p->directive_expr && p->directive_expr_at == 1)
 				return true; /* a directive's expression met the end of the scene */
 			if (!end_of_file(p, t))
 				return false;
 			continue;
 		}
-		if (p->directive_expr)
+		if (p->directive_expr && p->directive_expr_at == p->n_files)
 			return true; /* "expected ';' ..., found '#declare'" */
 		lang_token dir = *t;
 		if (!run_directive(p, &dir)) {
@@ -1179,13 +1417,19 @@ void lang_skip_optional_semi(parser *p)
 {
 	if (p->have_tok || p->n_files == 0)
 		return;
-	lang_lexer *lx = &p->files[p->n_files - 1].lx;
-	lang_lexer save = *lx;
-	lang_token t;
-	diag quiet;
-	diag_init(&quiet, NULL);
-	if (!lang_lex(lx, &quiet, &t) || t.kind != LTK_SEMI)
-		*lx = save; /* any error is reported again when the token is read for real */
+	for (;;) {
+		include_frame *f = &p->files[p->n_files - 1];
+		lang_lexer save = f->lx;
+		lang_token t;
+		diag quiet;
+		diag_init(&quiet, NULL);
+		bool ok = lang_lex(&f->lx, &quiet, &t);
+		if (ok && t.kind == LTK_EOF && f->macro && p->n_conds == f->cond_base && end_of_file(p, &t))
+			continue; /* a macro's body that ends with the block: `#declare B = Ball(1);` */
+		if (!ok || t.kind != LTK_SEMI)
+			f->lx = save; /* any error is reported again when the token is read for real */
+		return;
+	}
 }
 
 /* ---- expressions ------------------------------------------------------------------------- */
@@ -1199,6 +1443,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_STRING: return "a string";
 	case VAL_MATERIAL: return "a material";
 	case VAL_OBJECT: return "an object";
+	case VAL_MACRO: return "a macro";
 	}
 	return "a value";
 }

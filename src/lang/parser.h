@@ -11,7 +11,7 @@
 
 #include <stdbool.h>
 
-typedef enum value_kind { VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT } value_kind;
+typedef enum value_kind { VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO } value_kind;
 
 /* A list of placed objects made by one object item (a union gives several). */
 typedef struct objlist {
@@ -26,7 +26,21 @@ typedef struct value {
 	const char *str; /* VAL_STRING, in the scene arena */
 	const scene_material *mat;
 	const objlist *obj;
+	const struct lang_macro *mac; /* VAL_MACRO */
 } value;
+
+/* A #macro: its parameters and where its body lies in its source (re-lexed at each call, as a
+ * #while body is: the lexer is a few compares a character). */
+typedef struct lang_macro {
+	const char *name;
+	diag_loc loc; /* its #macro */
+	int n_params;
+	const char *params[LANG_MAX_MACRO_PARAMS];
+	bool optional[LANG_MAX_MACRO_PARAMS];
+	lang_lexer body; /* just after the parameter list's ')' */
+	const char *body_end; /* the start of the #end that closes it */
+	const char *path; /* the file that defines it (the folder of includes in its body) */
+} lang_macro;
 
 typedef struct include_frame {
 	lang_lexer lx;
@@ -34,6 +48,9 @@ typedef struct include_frame {
 	diag_loc included_at; /* the #include directive (no source for the main file) */
 	int cond_base; /* the conditional stack depth when the file was entered */
 	const char *released; /* mapped sources: text before this was handed back to the kernel */
+	const lang_macro *macro; /* a macro call's frame (included_at: the call), or NULL */
+	bool saved_directive_expr; /* macro frames: the caller's directive_expr, restored at the end */
+	int saved_directive_expr_at;
 } include_frame;
 
 typedef enum cond_kind { COND_IF, COND_ELSE, COND_WHILE, COND_FOR, COND_SWITCH } cond_kind;
@@ -56,13 +73,15 @@ typedef struct symbol {
 	int depth; /* 0 global; k the k-th include level for #local */
 	diag_loc loc;
 	value val;
+	bool param; /* a parameter of a macro call */
+	long ref; /* a parameter passed by reference: 0 none; k > 0 globals[k-1]; k < 0 locals[-k-1] */
 } symbol;
 
 typedef struct parser {
 	diag *d;
 	scene *sc;
 	lang_options opt;
-	include_frame files[LANG_MAX_INCLUDE_DEPTH + 1];
+	include_frame files[LANG_MAX_INCLUDE_DEPTH + LANG_MAX_MACRO_DEPTH + 1];
 	int n_files;
 	cond conds[LANG_MAX_DEPTH];
 	int n_conds;
@@ -73,8 +92,14 @@ typedef struct parser {
 	bool failed; /* the first error was reported: report no more */
 	bool no_gt; /* inside < >: a '>' closes the vector */
 	bool directive_expr; /* parsing a directive's own expression: directives there are errors */
+	int directive_expr_at; /* the frame (n_files) of the directive that set directive_expr: a
+				  macro body read inside its expression (a deeper frame) runs directives */
+	int dir_frame; /* n_files where the running directive was read */
 	int depth; /* recursion guard for expressions and nested blocks */
 	long total_iterations;
+	int n_macro_calls; /* macro frames in files */
+	const char *skip_stop_at; /* skip_block: where the directive that ended it begins (before blanks) */
+	bool no_expand; /* reading a directive's name: a macro's name is not a call */
 	double version; /* `version`: 3.7 until a #version sets it */
 	vecbuf globals, locals; /* symbol */
 } parser;

@@ -1,3 +1,3 @@
-// A tab between # and the name.
+// A tab between # and the name: it is the directive #macro, here unterminated.
 #	macro M()
-#end
+  sphere { 0, 1 }

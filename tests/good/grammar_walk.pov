@@ -31,6 +31,10 @@
 #for (F, 1, 0, -1) #end
 // rule: switch, case, range, break
 #switch (2) #case (1) sphere { 0, 7 } #range (2, 3) #break #else sphere { 0, 8 } #end
+// rule: macro, macro_param, macro_call
+#macro Grow(R, optional S) #declare R = R + 1; #end
+#declare Size = 1;
+Grow(Size) Grow(Size, 2)
 // rule: include
 #include "walk.inc"
 // rule: global_settings, integer, ignored_setting, balanced

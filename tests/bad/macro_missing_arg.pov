@@ -1,0 +1,4 @@
+#macro Ball(C, R)
+  sphere { C, R }
+#end
+Ball(, 1)

@@ -1,0 +1,4 @@
+#macro Ball(R)
+  sphere { 0, R }
+#end
+Ball(Radius)

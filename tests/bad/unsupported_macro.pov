@@ -1,3 +1,0 @@
-#macro M(A)
-  sphere { 0, A }
-#end
