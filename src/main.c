@@ -4,6 +4,7 @@
 #include "config.h"
 
 #include "accel/bvh.h"
+#include "build/build.h"
 #include "base/diag.h"
 #include "base/mem.h"
 #include "io/compare.h"
@@ -13,7 +14,6 @@
 #include "lang/lang.h"
 #include "render/output.h"
 #include "render/scheduler.h"
-#include "render/world.h"
 #include "scene/scene.h"
 
 #include <signal.h>
@@ -215,16 +215,16 @@ static int cli_parse_options(int argc, char **argv, const char *cmd, const cli_o
 /* `circe check` tessellates as a render would, at this image size (for adaptive subdivision and
  * the spheres' levels), and estimates the render's memory at it. */
 enum { CHECK_WIDTH = 640, CHECK_HEIGHT = 480 };
-/* The top level's cost of one instance (tlas.h: about 100 bytes) in each of its two trees, with
- * the world's record of it; check builds neither. */
-#define CHECK_INSTANCE_BYTES (2 * 128 + sizeof(world_inst) + 16)
+/* The top level's cost of one instance (tlas.h: about 100 bytes) in each of its two trees, and
+ * 16 more beside the world's record of it (world_stats.instance_bytes); check builds neither. */
+#define CHECK_INSTANCE_BYTES (2 * 128 + 16)
 
 /* The memory a render at CHECK_WIDTH x CHECK_HEIGHT would need, from what check built: what is
  * allocated now (the IR and the meshes), the BVHs at bvh.h's 64 bytes a triangle, the instances
  * and the film's two buffers. Textures are not loaded by check, so not counted. */
-static size_t check_estimate(const world *w)
+static size_t check_estimate(const world_stats *ws)
 {
-	return mem_live_bytes() + 64 * w->stats.triangles + CHECK_INSTANCE_BYTES * w->n_insts +
+	return mem_live_bytes() + 64 * ws->triangles + CHECK_INSTANCE_BYTES * ws->instances + ws->instance_bytes +
 	       2 * sizeof(film_pixel) * CHECK_WIDTH * CHECK_HEIGHT;
 }
 
@@ -246,7 +246,7 @@ static void note_memory_limit(void)
 }
 
 /* Prints what `circe check` knows about a parsed scene. */
-static void print_check_summary(const char *path, const scene *sc, const world *w, bool fits)
+static void print_check_summary(const char *path, const scene *sc, const world_stats *ws, bool fits)
 {
 	scene_stats st;
 	scene_stats_get(sc, &st);
@@ -264,18 +264,18 @@ static void print_check_summary(const char *path, const scene *sc, const world *
 		}
 	printf("%s\n", total ? "" : " none");
 	printf("  mesh triangles given: %zu, subdivision cage faces: %zu\n", st.mesh_triangles,
-	       st.subdiv_faces + w->stats.cage_file_faces);
+	       st.subdiv_faces + ws->cage_file_faces);
 	printf("  triangles after tessellation: %zu unique, %zu with instances (%zu subdivision surfaces)\n",
-	       w->stats.triangles, w->stats.instanced_triangles, w->stats.subdiv_surfaces);
+	       ws->triangles, ws->instanced_triangles, ws->subdiv_surfaces);
 	if (st.sss_nonuniform)
 		printf("  SSS objects under a non-uniform scale: %zu (circles become ellipses there: their "
 		       "triangles are flattened into world space at build)\n", st.sss_nonuniform);
 	/* The BVH is not built by check: bvh.h keeps it under 64 bytes a triangle. */
 	printf("  estimated memory: IR %.1f KiB, meshes %.1f MiB, BVHs about %.1f MiB\n",
-	       (double)st.memory_bytes / 1024.0, (double)w->stats.geometry_bytes / 1048576.0,
-	       64.0 * (double)w->stats.triangles / 1048576.0);
+	       (double)st.memory_bytes / 1024.0, (double)ws->geometry_bytes / 1048576.0,
+	       64.0 * (double)ws->triangles / 1048576.0);
 	printf("  estimated render memory at %dx%d: %.1f MiB (limit %.1f MiB; textures not counted)\n", CHECK_WIDTH,
-	       CHECK_HEIGHT, (double)check_estimate(w) / 1048576.0, (double)mem_limit() / 1048576.0);
+	       CHECK_HEIGHT, (double)check_estimate(ws) / 1048576.0, (double)mem_limit() / 1048576.0);
 }
 
 
@@ -337,13 +337,15 @@ static int cmd_check(int argc, char **argv)
 	if (st == LANG_OK && dump)
 		scene_dump(sc, stdout);
 	else if (st == LANG_OK) {
-		world w;
 		world_options wo = {.width = CHECK_WIDTH, .height = CHECK_HEIGHT, .max_memory = max_memory,
 				    .geometry_only = true};
-		if (world_build(&w, sc, &wo, &d)) {
-			size_t need = check_estimate(&w);
+		world *w = world_build(sc, &wo, &d);
+		if (w) {
+			world_stats ws;
+			world_stats_get(w, &ws);
+			size_t need = check_estimate(&ws);
 			bool fits = need <= mem_limit();
-			print_check_summary(argv[optind], sc, &w, fits);
+			print_check_summary(argv[optind], sc, &ws, fits);
 			if (!fits) {
 				fprintf(stderr, "circe: error: %s: a render at %dx%d would need about %.1f MiB, over the memory "
 						"limit of %.1f MiB (--max-memory)\n",
@@ -351,7 +353,7 @@ static int cmd_check(int argc, char **argv)
 					(double)mem_limit() / 1048576.0);
 				rc = EXIT_SCENE;
 			}
-			world_free(&w);
+			world_free(w);
 		} else {
 			note_memory_limit();
 			rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
@@ -676,24 +678,6 @@ static void on_progress(void *user, const render_progress *p)
 	fflush(stderr);
 }
 
-/* The SSS method the EXR header records: --sss, else the materials' one, "mixed" when they
- * differ, "none" without SSS materials. */
-static const char *sss_method_name(const world *w)
-{
-	static const char *names[] = {[RENDER_SSS_CIRCLE] = "circle", [RENDER_SSS_FULLCIRCLE] = "fullcircle",
-				      [RENDER_SSS_DISK] = "disk", [RENDER_SSS_VOLUME] = "volume"};
-	const char *name = "none";
-	for (size_t i = 0; i < w->n_materials; i++) {
-		if (!w->sss_of[i])
-			continue;
-		const char *m = names[w->sss_of[i]->method];
-		if (strcmp(name, "none") && strcmp(name, m))
-			return "mixed";
-		name = m;
-	}
-	return name;
-}
-
 /* circe render SCENE [options]. */
 static int cmd_render(int argc, char **argv)
 {
@@ -741,7 +725,6 @@ static int cmd_render(int argc, char **argv)
 		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return EXIT_INTERRUPTED;
 	}
-	world w;
 	scene_sss_method sss = !o.sss			 ? SSS_METHOD_DEFAULT
 			       : !strcmp(o.sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
 			       : !strcmp(o.sss, "disk")	 ? SSS_METHOD_DISK
@@ -750,7 +733,8 @@ static int cmd_render(int argc, char **argv)
 	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory, .sss_method = sss};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
-	if (!world_build(&w, sc, &wo, &d)) {
+	world *w = world_build(sc, &wo, &d);
+	if (!w) {
 		note_memory_limit();
 		int rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
@@ -766,7 +750,7 @@ static int cmd_render(int argc, char **argv)
 		if (!merge_tile_rect(o.width, o.height, o.tile_i, o.tile_n, &r)) {
 			fprintf(stderr, "circe: error: a %dx%d image cannot be cut into %d tiles\n", o.width, o.height,
 				o.tile_n);
-			world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+			world_free(w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 			return EXIT_USAGE;
 		}
 		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
@@ -776,17 +760,17 @@ static int cmd_render(int argc, char **argv)
 	if (!film_init(&f, o.width, o.height, x0, y0, x1, y1)) {
 		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o.width, o.height);
 		note_memory_limit();
-		world_free(&w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
+		world_free(w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
 		return EXIT_RUNTIME;
 	}
 	char hash[17];
 	scene_hash(&d, hash);
 	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
-			    .sss_method = sss_method_name(&w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
+			    .sss_method = world_sss_method(w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
 			    .aovs = o.aovs};
 	checkpoint_ctx cp = {out, &info, &d, start};
 	render_job job = {
-		.scene = &w.rs, .camera = &w.camera,
+		.scene = world_scene(w), .camera = world_camera(w),
 		.settings = {.max_trace_level = sc->global.max_trace_level > 0 ? sc->global.max_trace_level
 									: RENDER_DEFAULT_MAX_TRACE_LEVEL,
 			     .mode = RENDER_MIS,
@@ -809,13 +793,15 @@ static int cmd_render(int argc, char **argv)
 		info.interrupted = rs == RENDER_INTERRUPTED;
 		info.render_seconds = seconds_since(&start);
 		bool ok = output_write_exr(out, &f, &info, &d) && (!png || output_write_png(png, &f, 0.0f, &d));
+		world_stats ws;
+		world_stats_get(w, &ws);
 		if (!o.quiet || stats.dropped)
 			fprintf(stderr, "circe: %s: %u samples per pixel in %.2f s (%.3g samples/s, %d threads); %llu "
 					"non-finite samples dropped\n"
 					"circe: time: parse %.3f s, build %.3f s (%zu triangles: tessellation and BVHs), "
 					"render %.3f s\n",
 				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
-				(unsigned long long)stats.dropped, parse_s, build_s, w.stats.triangles, stats.seconds);
+				(unsigned long long)stats.dropped, parse_s, build_s, ws.triangles, stats.seconds);
 		if (!o.quiet && stats.sss_searches)
 			fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g: circles or "
 					"probes that hit nothing, walks lost or at their step bound), %llu with more hits than "
@@ -826,7 +812,7 @@ static int cmd_render(int argc, char **argv)
 		rc = !ok ? EXIT_RUNTIME : info.interrupted ? EXIT_INTERRUPTED : EXIT_OK;
 	}
 	film_free(&f);
-	world_free(&w);
+	world_free(w);
 	scene_free(sc);
 	free(out), free(png), free(out_default);
 	diag_free(&d);

@@ -1,4 +1,5 @@
-/* build.c - world_build: the stages of build_*.c in order, then the per-mesh BVHs; world_free. */
+/* build.c - world_build: the stages of build_*.c in order, then the per-mesh BVHs; world_free and
+ * what main.c may ask of a world. */
 #include "build/build_impl.h"
 
 #include "build/assets.h"
@@ -8,9 +9,11 @@
 
 #include <string.h>
 
-bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
+static void world_release(world *w);
+
+/* Fills the zeroed w; on failure (reported to d) releases what it made. */
+static bool build_world(world *w, const scene *sc, const world_options *opt, diag *d)
 {
-	memset(w, 0, sizeof *w);
 	if (!assets_open(sc, d)) /* every named file, at its string, before any work */
 		return false;
 	light_set_init(&w->lights);
@@ -29,26 +32,17 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	w->sss_of = mem_calloc(w->n_materials, sizeof *w->sss_of);
 	if (!w->geoms || !w->bsdfs || !w->materials || !w->sss || !w->sss_of) {
 		diag_error(d, diag_noloc(), "out of memory");
-		world_free(w);
+		world_release(w);
 		return false;
 	}
 	bool ok = true;
 	for (const scene_geom *g = sc->geoms; g && ok; g = g->next)
 		ok = build_geom(w, sc, g, &o, d);
 	ok = ok && build_instances(w, sc, &o, d) && build_planes(w, sc, &o, d) && check_volumes(w, sc, &o, d);
-	/* Normal maps need tangents; meshes without them get generated ones. */
 	for (const scene_material *m = sc->materials; ok && m; m = m->next)
 		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
 	if (ok)
 		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
-	for (size_t i = 0; ok && !o.geometry_only && i < w->n_insts; i++) {
-		world_inst *in = &w->insts[i];
-		mesh *m = (mesh *)&in->g->m;
-		if (w->materials[in->material].normal_map && !m->tangents && m->normals && m->uvs)
-			ok = mesh_generate_tangents(m);
-		if (!ok)
-			diag_error(d, diag_noloc(), "out of memory while generating tangents");
-	}
 	for (size_t i = 0; i < w->n_geoms; i++) {
 		world_geom *g = &w->geoms[i];
 		w->stats.triangles += g->m.num_triangles;
@@ -68,14 +62,15 @@ bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
 	ok = ok && (o.geometry_only || build_top(w, d));
 	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
-		world_free(w);
+		world_release(w);
 		return false;
 	}
 	world_bind(w);
 	return true;
 }
 
-void world_free(world *w)
+/* Frees what w holds and zeroes it. */
+static void world_release(world *w)
 {
 	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
 		mesh_free(&w->geoms[i].m);
@@ -93,4 +88,37 @@ void world_free(world *w)
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
 	memset(w, 0, sizeof *w);
+}
+
+world *world_build(const scene *sc, const world_options *opt, diag *d)
+{
+	world *w = mem_calloc(1, sizeof *w);
+	if (!w) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return NULL;
+	}
+	if (!build_world(w, sc, opt, d)) {
+		mem_free(w);
+		return NULL;
+	}
+	return w;
+}
+
+void world_free(world *w)
+{
+	if (!w)
+		return;
+	world_release(w);
+	mem_free(w);
+}
+
+const render_scene *world_scene(const world *w) { return &w->rs; }
+
+const cam *world_camera(const world *w) { return &w->camera; }
+
+void world_stats_get(const world *w, world_stats *out)
+{
+	*out = w->stats;
+	out->instances = w->n_insts;
+	out->instance_bytes = w->n_insts * sizeof *w->insts;
 }

@@ -5,6 +5,8 @@
 #define CIRCE_BUILD_BUILD_H
 
 #include "base/diag.h"
+#include "render/camera.h"
+#include "render/integrator.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -37,14 +39,28 @@ typedef struct world_stats {
 	size_t subdiv_surfaces;
 	size_t cage_file_faces; /* faces of the cages read from files (the IR counts inline ones) */
 	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
+	size_t instances;       /* one per scene object */
+	size_t instance_bytes;  /* the world's records of them (not the top-level BVHs) */
 } world_stats;
 
-/* The world: render/world.h lays it out for the integrator's callbacks. */
+/* A scene made ready to render, read-only once built: any number of render threads share it.
+ * Opaque but to the build and render/world.c (render/world.h lays it out). */
 typedef struct world world;
 
-/* Builds w from the scene; errors (a file that cannot be read, tessellation over the memory limit,
- * a degenerate camera) are reported to d at the scene's location. On failure w is left empty. */
-bool world_build(world *w, const scene *sc, const world_options *opt, diag *d);
+/* Builds the world of sc; errors (a file that cannot be read, tessellation over the memory limit,
+ * a degenerate camera) are reported to d at the scene's location, and give NULL. */
+world *world_build(const scene *sc, const world_options *opt, diag *d);
+/* Frees w and all it holds; NULL is nothing. */
 void world_free(world *w);
+
+/* The integrator's view of w (integrator.h) and its camera, valid while w lives. */
+const render_scene *world_scene(const world *w);
+const cam *world_camera(const world *w);
+/* The build's counts. */
+void world_stats_get(const world *w, world_stats *out);
+/* The SSS method of w's materials, as the output's header records it: "circle", "fullcircle",
+ * "disk" or "volume" (--sss, else the materials' one), "mixed" when they differ, "none" without
+ * SSS materials. */
+const char *world_sss_method(const world *w);
 
 #endif

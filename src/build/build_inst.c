@@ -39,12 +39,31 @@ static void set_xf_bound(world_inst *in)
 	in->xf_gain = (float)gain, in->xf_shift = (float)shift;
 }
 
+/* Whether an object of material m shows a normal map, which needs its mesh's tangents (the shade
+ * callback of render/world.c reads them); check loads no textures, so needs none. */
+static bool wants_tangents(const scene_material *m, const world_options *opt)
+{
+	return !opt->geometry_only && is_sss(m) && m->sss.normal_map;
+}
 
+/* Makes g's tangents, for a normal-mapped object: unless the mesh has its own (a file's) or lacks
+ * the normals and UVs they are made from. */
+static bool make_tangents(world_geom *g, diag *d)
+{
+	if (g->m.tangents || !g->m.normals || !g->m.uvs)
+		return true;
+	if (!mesh_generate_tangents(&g->m)) {
+		diag_error(d, diag_noloc(), "out of memory while generating tangents");
+		return false;
+	}
+	g->tangents_made = true;
+	return true;
+}
 
 /* An SSS object under a non-uniform transform gets its own copy of the triangles in world space
  * (DESIGN.md): circles stay circles only under similarities, and circle tracing runs in an
  * instance's own space. Its geometry record is the one at index `slot` (past the scene's). */
-static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, diag_loc loc)
+static bool flatten_instance(world *w, world_inst *in, size_t slot, bool tangents, diag *d, diag_loc loc)
 {
 	world_geom *copy = &w->geoms[slot];
 	if (!mesh_copy(&copy->m, &in->g->m)) {
@@ -52,11 +71,15 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, diag *d, dia
 		return false;
 	}
 	mesh_transform(&copy->m, &in->xf);
+	if (in->g->tangents_made) { /* made for the shared mesh's users: the copy makes its own */
+		mem_free(copy->m.tangents);
+		copy->m.tangents = NULL;
+	}
 	in->g = copy;
 	in->xf = xform_identity();
 	in->identity = true;
 	w->stats.flattened++;
-	return true;
+	return !tangents || make_tangents(copy, d);
 }
 
 /* The largest length an axis of the object takes under t: a sphere's radius in the world (exact
@@ -95,15 +118,15 @@ static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double fo
 
 /* Makes the sphere object `in` an instance of the unit sphere at the level its size on screen
  * asks for: its transform gains the sphere's centre and radius. The unit spheres are made once
- * each, when first used. */
-static bool sphere_instance(world *w, const scene_geom *g, const subd_camera *view, const double rel_err[],
-			    world_inst *in, diag *d, diag_loc loc)
+ * each, when first used. Returns that unit sphere, NULL after reporting an error. */
+static world_geom *sphere_instance(world *w, const scene_geom *g, const subd_camera *view, const double rel_err[],
+				   world_inst *in, diag *d, diag_loc loc)
 {
 	xform place;
 	double r = g->u.sphere.radius;
 	if (!xform_scale(d3(r, r, r), &place)) {
 		diag_error(d, loc, "the sphere's radius %g is too small", r);
-		return false;
+		return NULL;
 	}
 	place = xform_then(xform_then(place, xform_translate(g->u.sphere.center)), in->xf);
 	dvec3 to_centre = d3_sub(xform_point(&in->xf, g->u.sphere.center), v3_to_d3(view->position));
@@ -113,11 +136,11 @@ static bool sphere_instance(world *w, const scene_geom *g, const subd_camera *vi
 	world_geom *unit = &w->geoms[w->unit_spheres + level];
 	if (!unit->m.num_triangles && !prim_sphere(v3s(0.0f), 1.0f, prim_sphere_level_segments(level), &unit->m)) {
 		diag_error(d, loc, "out of memory while tessellating");
-		return false;
+		return NULL;
 	}
 	in->g = unit;
 	in->xf = place;
-	return true;
+	return unit;
 }
 
 bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d)
@@ -137,9 +160,11 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 	for (size_t i = 0; i < n; i++) {
 		const scene_object *o = scene_object_at(sc, i);
 		world_inst *in = &w->insts[w->n_insts++];
-		in->g = &w->geoms[o->geom->id];
+		world_geom *g = &w->geoms[o->geom->id];
+		in->object = (uint32_t)i;
+		in->g = g;
 		in->xf = o->transform;
-		if (o->geom->kind == SHAPE_SPHERE && !sphere_instance(w, o->geom, &view, rel_err, in, d, o->loc))
+		if (o->geom->kind == SHAPE_SPHERE && !(g = sphere_instance(w, o->geom, &view, rel_err, in, d, o->loc)))
 			return false;
 		in->identity = is_identity(&in->xf);
 		set_xf_bound(in);
@@ -147,9 +172,14 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */
 		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;
-		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&in->xf, NULL) &&
-		    !flatten_instance(w, in, sc->n_geoms + i, d, o->loc))
+		/* A plane's mesh is made later (build_planes), with its tangents. */
+		bool tangents = wants_tangents(o->material, opt) && o->geom->kind != SHAPE_PLANE;
+		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&in->xf, NULL)) {
+			if (!flatten_instance(w, in, sc->n_geoms + i, tangents, d, o->loc))
+				return false;
+		} else if (tangents && !make_tangents(g, d)) {
 			return false;
+		}
 	}
 	build_groups(w, sc);
 	return true;
@@ -163,7 +193,7 @@ bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d)
 	vec3 lo = v3s(FLT_MAX), hi = v3s(-FLT_MAX);
 	for (size_t i = 0; i < w->n_insts; i++) {
 		world_inst *in = &w->insts[i];
-		const scene_object *o = scene_object_at(sc, i);
+		const scene_object *o = scene_object_at(sc, in->object);
 		if (o->geom->kind == SHAPE_PLANE || !mesh_bounds(&in->g->m, &in->lo, &in->hi))
 			continue;
 		xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);
@@ -184,11 +214,11 @@ bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d)
 		size = v3_max_comp(v3_abs(centre)) > 0.0f ? v3_max_comp(v3_abs(centre)) : 1.0f;
 	dvec3 eye = v3_to_d3(scene_view(sc, opt).position);
 	for (size_t i = 0; i < w->n_insts; i++) {
-		const scene_object *o = scene_object_at(sc, i);
 		world_inst *in = &w->insts[i];
+		const scene_object *o = scene_object_at(sc, in->object);
 		if (o->geom->kind != SHAPE_PLANE)
 			continue;
-		world_geom *own = &w->geoms[sc->n_geoms + i];
+		world_geom *own = &w->geoms[sc->n_geoms + in->object];
 		vec3 at = d3v(xform_inv_point(&in->xf, eye));
 		if (!prim_plane_view(d3v(o->geom->u.plane.normal), (float)o->geom->u.plane.offset, at,
 				     WORLD_PLANE_HORIZON_RAD, &own->m)) {
@@ -196,6 +226,8 @@ bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d)
 											      : "out of memory while tessellating");
 			return false;
 		}
+		if (wants_tangents(o->material, opt) && !make_tangents(own, d))
+			return false;
 		in->g = own;
 		if (mesh_bounds(&in->g->m, &in->lo, &in->hi))
 			xform_bounds(&in->xf, in->lo, in->hi, &in->lo, &in->hi);

@@ -59,8 +59,10 @@ bool build_lights(world *w, const scene *sc, diag *d)
 	}
 	if (sc->has_background) {
 		light l = light_background(sc->background);
-		if (!light_set_add(&w->lights, &l))
+		if (!light_set_add(&w->lights, &l)) {
+			diag_error(d, sc->background_loc, "out of memory");
 			return false;
+		}
 	}
 	if (sc->has_sky_sphere) {
 		const scene_sky_sphere *sky = &sc->sky_sphere;
@@ -87,7 +89,7 @@ bool build_lights(world *w, const scene *sc, diag *d)
 		}
 	}
 	for (size_t i = 0; i < w->n_insts; i++) {
-		const scene_object *o = scene_object_at(sc, i);
+		const scene_object *o = scene_object_at(sc, w->insts[i].object);
 		if (o->material && v3_max_comp(o->material->emission) > 0.0f &&
 		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
 			return false;

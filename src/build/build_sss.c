@@ -102,7 +102,7 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 		return false;
 	}
 	for (size_t i = 0; i < w->n_insts; i++) {
-		const scene_object *o = scene_object_at(sc, i);
+		const scene_object *o = scene_object_at(sc, w->insts[i].object);
 		if (!is_sss(o->material) || sss_method_of(o->material, opt) != SSS_METHOD_VOLUME)
 			continue;
 		const world_geom *g = w->insts[i].g;
@@ -166,4 +166,20 @@ void build_groups(world *w, const scene *sc)
 			w->sss_next[head] = (uint32_t)i;
 		}
 	}
+}
+
+const char *world_sss_method(const world *w)
+{
+	static const char *names[] = {[RENDER_SSS_CIRCLE] = "circle", [RENDER_SSS_FULLCIRCLE] = "fullcircle",
+				      [RENDER_SSS_DISK] = "disk", [RENDER_SSS_VOLUME] = "volume"};
+	const char *name = "none";
+	for (size_t i = 0; i < w->n_materials; i++) {
+		if (!w->sss_of[i])
+			continue;
+		const char *m = names[w->sss_of[i]->method];
+		if (strcmp(name, "none") && strcmp(name, m))
+			return "mixed";
+		name = m;
+	}
+	return name;
 }

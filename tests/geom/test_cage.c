@@ -31,15 +31,15 @@ static bool tessellate_scene(const char *text, mesh *m, char **errors)
 	diag d;
 	diag_init(&d, mem);
 	scene *sc = NULL;
-	world w;
+	world *w = NULL;
 	world_options o = {.width = 64, .height = 48, .geometry_only = true};
 	bool ok = lang_parse_file(check_path(dir, "s.pov"), NULL, &d, &sc) == LANG_OK &&
-		  world_build(&w, sc, &o, &d);
+		  (w = world_build(sc, &o, &d));
 	memset(m, 0, sizeof *m);
 	if (ok) {
-		*m = w.geoms[0].m;
-		memset(&w.geoms[0].m, 0, sizeof w.geoms[0].m);
-		world_free(&w);
+		*m = w->geoms[0].m;
+		memset(&w->geoms[0].m, 0, sizeof w->geoms[0].m);
+		world_free(w);
 	}
 	scene_free(sc);
 	diag_free(&d);

@@ -5,7 +5,7 @@
  * the lips' red fell on the chin and both checks fail. */
 #include "check.h"
 #include "lang/lang.h"
-#include "render/world.h"
+#include "build/build.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -14,13 +14,14 @@
 /* The albedo at the first hit of a ray along -z from (0, y, 20). */
 static bool albedo_at(const world *w, float y, vec3 *albedo)
 {
+	const render_scene *rs = world_scene(w);
 	render_ray r = {v3(0, y, 20), v3(0, 0, -1)};
 	render_hit h = {0};
-	if (!w->rs.intersect(w->rs.user, &r, 0.0f, INFINITY, &h) || h.material < 0)
+	if (!rs->intersect(rs->user, &r, 0.0f, INFINITY, &h) || h.material < 0)
 		return false;
-	bsdf_params b = w->rs.materials[h.material];
+	bsdf_params b = rs->materials[h.material];
 	vec3 ns = h.ns;
-	w->rs.shade(w->rs.user, &h, &b, &ns);
+	rs->shade(rs->user, &h, &b, &ns);
 	*albedo = b.diffuse;
 	return true;
 }
@@ -49,18 +50,18 @@ int main(void)
 	diag d;
 	diag_init(&d, stderr);
 	scene *sc = NULL;
-	world w;
+	world *w = NULL;
 	world_options o = {.width = 64, .height = 48};
-	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK && world_build(&w, sc, &o, &d);
+	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK && (w = world_build(sc, &o, &d));
 	CHECK(ok, "%s parsed and built", path);
 	if (ok) {
 		/* The midline in the head's frame (y up, face towards +z; about 8 units tall): the lips
 		 * span y 0.35 to 0.55, the chin y -0.25 to -0.05. Skin's albedo has red about 1.7 times
 		 * green; the lips' about 4 times. */
-		double lips = redness(&w, 0.40f, 0.55f, 8), chin = redness(&w, -0.25f, -0.05f, 8);
+		double lips = redness(w, 0.40f, 0.55f, 8), chin = redness(w, -0.25f, -0.05f, 8);
 		CHECK(lips > 3.0, "the lips are red: red/green %.2f (expected > 3)", lips);
 		CHECK(chin < 2.2, "the chin is skin: red/green %.2f (expected < 2.2)", chin);
-		world_free(&w);
+		world_free(w);
 	}
 	scene_free(sc);
 	diag_free(&d);

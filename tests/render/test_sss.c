@@ -7,7 +7,7 @@
  * model bias, is printed per material). */
 #include "check.h"
 #include "lang/lang.h"
-#include "render/world.h"
+#include "build/build.h"
 
 #include <limits.h>
 #include <stdlib.h>
@@ -22,7 +22,7 @@ static char dir[] = "/tmp/circe-test-sss-XXXXXX";
 static int last_warnings; /* of the last build */
 
 /* Parses text as a scene file and builds its world; false when either fails. */
-static bool build(const char *text, const world_options *o, world *w)
+static bool build(const char *text, const world_options *o, world **w)
 {
 	char path[256];
 	snprintf(path, sizeof path, "%s/s.pov", dir);
@@ -32,7 +32,8 @@ static bool build(const char *text, const world_options *o, world *w)
 	diag d;
 	diag_init(&d, stderr);
 	scene *sc = NULL;
-	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK && world_build(w, sc, o, &d);
+	*w = NULL;
+	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK && (*w = world_build(sc, o, &d));
 	last_warnings = d.warnings;
 	scene_free(sc);
 	diag_free(&d);
@@ -51,7 +52,7 @@ static void render_seed(const char *text, int spp, int max_level, sss_circle_wei
 			scene_sss_method method, uint64_t seed, image_stats *st)
 {
 	memset(st, 0, sizeof *st);
-	world w;
+	world *w;
 	world_options o = {.width = W, .height = H, .sss_method = method};
 	bool ok = build(text, &o, &w);
 	CHECK(ok, "scene builds");
@@ -66,7 +67,7 @@ static void render_seed(const char *text, int spp, int max_level, sss_circle_wei
 				rng g = rng_for_sample(seed, (uint32_t)x, (uint32_t)y, (uint32_t)s);
 				vec2 pu = v2(rng_float(&g), rng_float(&g));
 				vec2 lu = v2(rng_float(&g), rng_float(&g));
-				render_sample r = render_path(&w.rs, &set, cam_ray(&w.camera, x, y, pu, lu), &g);
+				render_sample r = render_path(world_scene(w), &set, cam_ray(world_camera(w), x, y, pu, lu), &g);
 				st->circles += r.sss_searches;
 				st->nohit += r.sss_nohit;
 				if (!v3_is_finite(r.radiance))
@@ -79,7 +80,7 @@ static void render_seed(const char *text, int spp, int max_level, sss_circle_wei
 			st->mean += v / (W * H);
 			st->min = fmin(st->min, v), st->max = fmax(st->max, v);
 		}
-	world_free(&w);
+	world_free(w);
 }
 
 static void render(const char *text, int spp, int max_level, sss_circle_weight weight, scene_sss_method method,
@@ -361,18 +362,18 @@ static void test_volume(void)
 	      "volume furnace: mean %.5f (SE %.2g), %lu failed walks", st.mean, se, st.nohit);
 
 	/* A medium the walk cannot finish in this object is announced before the render. */
-	world w;
+	world *w;
 	world_options wo = {.width = W, .height = H, .sss_method = SSS_METHOD_VOLUME};
 	CHECK(build("camera { location <0, 0, -4> look_at <0, 0, 0> }\n"
 		    "sphere { 0, 1 material { wax { color rgb <1, 0.999, 0.99> radius 1 } } }\n",
 		    &wo, &w) && last_warnings == 1,
 	      "albedo 1 under volume: %d warnings, expected 1", last_warnings);
-	world_free(&w);
+	world_free(w);
 	CHECK(build("camera { location <0, 0, -4> look_at <0, 0, 0> }\n"
 		    "sphere { 0, 1 material { wax { } } }\n",
 		    &wo, &w) && last_warnings == 0,
 	      "the wax preset under volume: %d warnings, expected none", last_warnings);
-	world_free(&w);
+	world_free(w);
 
 	const char *mats[] = {"skin { }", "wax { }", "marble { }", "wax { color rgb 0.3 radius 1 }"};
 	for (int m = 0; m < 4; m++) {

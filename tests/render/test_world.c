@@ -15,7 +15,7 @@
 static char dir[] = "/tmp/circe-test-world-XXXXXX";
 
 /* Parses text as a scene file and builds its world; false when either fails. */
-static bool build(const char *text, world *w, char **errors)
+static bool build(const char *text, world **w, char **errors)
 {
 	char path[256];
 	snprintf(path, sizeof path, "%s/s.pov", dir);
@@ -29,7 +29,8 @@ static bool build(const char *text, world *w, char **errors)
 	scene *sc = NULL;
 	bool ok = lang_parse_file(path, NULL, &d, &sc) == LANG_OK;
 	world_options o = {.width = 640, .height = 480};
-	ok = ok && world_build(w, sc, &o, &d);
+	*w = ok ? world_build(sc, &o, &d) : NULL;
+	ok = *w != NULL;
 	scene_free(sc);
 	diag_free(&d);
 	fclose(mem);
@@ -60,7 +61,7 @@ static bool level_fits(uint32_t k, double px)
  * different levels, and the rays still meet them where the analytic sphere is, within that error. */
 static void check_sphere_levels(void)
 {
-	world w;
+	world *w;
 	char *err = NULL;
 	bool ok = build("camera { location <0, 0, -10> look_at 0 }\n"
 			"sphere { <0, 0, 100>, 0.1 }\n"
@@ -75,7 +76,7 @@ static void check_sphere_levels(void)
 	double r[3] = {0.1, 2, 0.1}, dist[3] = {110, 5, sqrt(110 * 110 + 9)}, cos2[3] = {1, 1, 110 * 110 / (110 * 110 + 9.0)};
 	uint32_t level[3];
 	for (int i = 0; i < 3; i++) {
-		ptrdiff_t k = w.insts[i].g - w.geoms - (ptrdiff_t)w.unit_spheres;
+		ptrdiff_t k = w->insts[i].g - w->geoms - (ptrdiff_t)w->unit_spheres;
 		CHECK(k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS, "sphere %d is an instance of a unit sphere (%td)", i, k);
 		level[i] = k >= 0 && k < (ptrdiff_t)PRIM_SPHERE_LEVELS ? (uint32_t)k : 0;
 		double px = radius_px(r[i], dist[i]) / cos2[i];
@@ -87,19 +88,19 @@ static void check_sphere_levels(void)
 	}
 	CHECK(level[0] == 0 && level[1] >= 3, "the small far sphere gets level %u, the large near one %u", level[0],
 	      level[1]);
-	CHECK(w.insts[0].g == w.insts[2].g, "spheres alike on screen share one mesh");
+	CHECK(w->insts[0].g == w->insts[2].g, "spheres alike on screen share one mesh");
 	render_hit h;
-	CHECK(trace(&w, v3(0, 0, -10), v3(0, 0, 1), &h), "hit the near sphere");
+	CHECK(trace(w, v3(0, 0, -10), v3(0, 0, 1), &h), "hit the near sphere");
 	CHECK_NEAR(h.t, 3.0, 2 * prim_sphere_rel_error(prim_sphere_level_segments(level[1])));
-	CHECK(trace(&w, v3(3, 0, 0), v3(0, 0, 1), &h) && h.object == 2, "hit the far sphere at x = 3");
+	CHECK(trace(w, v3(3, 0, 0), v3(0, 0, 1), &h) && h.object == 2, "hit the far sphere at x = 3");
 	CHECK_NEAR(h.t, 99.9, 0.1 * prim_sphere_rel_error(prim_sphere_level_segments(level[2])) + 1e-4);
-	world_free(&w);
+	world_free(w);
 }
 
 /* Ten thousand spheres cost a few unit spheres and their instances, not ten thousand meshes. */
 static void check_many_spheres(void)
 {
-	world w;
+	world *w;
 	char *err = NULL;
 	bool ok = build("camera { location <0, 0, -30> look_at 0 }\n"
 			"#declare I = 0;\n"
@@ -112,18 +113,52 @@ static void check_many_spheres(void)
 	free(err);
 	if (!ok)
 		return;
-	CHECK(w.n_insts == 10000, "%zu instances", w.n_insts);
-	CHECK(w.stats.triangles <= 20000, "%zu unique triangles for 10^4 spheres", w.stats.triangles);
-	CHECK(w.stats.geometry_bytes <= (size_t)8 << 20, "meshes and BVHs of 10^4 spheres: %.1f MiB",
-	      w.stats.geometry_bytes / 1048576.0);
-	world_free(&w);
+	CHECK(w->n_insts == 10000, "%zu instances", w->n_insts);
+	CHECK(w->stats.triangles <= 20000, "%zu unique triangles for 10^4 spheres", w->stats.triangles);
+	CHECK(w->stats.geometry_bytes <= (size_t)8 << 20, "meshes and BVHs of 10^4 spheres: %.1f MiB",
+	      w->stats.geometry_bytes / 1048576.0);
+	world_free(w);
+}
+
+/* Normal maps need tangents, made for the mesh an object shows: the shared unit sphere of a
+ * plain instance, and the world-space copy of a flattened one made from its own triangles (not
+ * the shared mesh's tangents carried through the transform). */
+static void check_tangents(void)
+{
+	const char *top = getenv("top_srcdir");
+	char text[1024];
+	snprintf(text, sizeof text,
+		 "camera { location <0, 0, -10> look_at 0 }\n"
+		 "#declare M = material { wax { normal_map \"%s/scenes/assets/lee_perry_smith_head/"
+		 "Infinite-Level_02_Tangent_SmoothUV.jpg\" } }\n"
+		 "sphere { <-2, 0, 0>, 1 material { M } }\n"
+		 "sphere { 0, 1 scale <1, 0.8, 1> translate <2, 0, 0> material { M } }\n",
+		 top ? top : "..");
+	world *w;
+	char *err = NULL;
+	bool ok = build(text, &w, &err);
+	CHECK(ok, "normal-mapped spheres: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	const world_geom *shared = w->insts[0].g, *copy = w->insts[1].g;
+	CHECK(shared->m.tangents && shared->tangents_made, "the unit sphere has tangents");
+	CHECK(copy != shared && copy->m.tangents && w->stats.flattened == 1, "the flattened copy has tangents");
+	mesh fresh;
+	if (copy->m.tangents && mesh_copy(&fresh, &copy->m)) {
+		CHECK(mesh_generate_tangents(&fresh) &&
+			      !memcmp(fresh.tangents, copy->m.tangents, fresh.num_vertices * sizeof *fresh.tangents),
+		      "the copy's tangents are made from its world-space triangles");
+		mesh_free(&fresh);
+	}
+	world_free(w);
 }
 
 int main(void)
 {
 	if (!mkdtemp(dir))
 		return 99;
-	world w;
+	world *w;
 	char *err = NULL;
 	/* Two instances of one declared sphere (radius 1), one scaled non-uniformly in wax (flattened),
 	 * one diffuse with no_shadow, and a plane. */
@@ -138,37 +173,37 @@ int main(void)
 	free(err);
 	if (!ok)
 		return check_done("test_world");
-	CHECK(w.stats.flattened == 1, "%zu instances flattened, expected 1", w.stats.flattened);
-	CHECK(w.insts[1].identity && !w.insts[0].identity, "the flattened instance has no transform left");
+	CHECK(w->stats.flattened == 1, "%zu instances flattened, expected 1", w->stats.flattened);
+	CHECK(w->insts[1].identity && !w->insts[0].identity, "the flattened instance has no transform left");
 	/* Sphere 0 at x = -3: a ray along +z through its centre enters at z = -1. */
 	render_hit h;
-	CHECK(trace(&w, v3(-3, 0, -5), v3(0, 0, 1), &h), "hit sphere 0");
+	CHECK(trace(w, v3(-3, 0, -5), v3(0, 0, 1), &h), "hit sphere 0");
 	CHECK_NEAR(h.t, 4.0, 1e-3);
 	CHECK_NEAR(h.ng.z, -1.0, 1e-3);
-	CHECK(h.material >= 0 && w.bsdfs[h.material].kind == BSDF_DIFFUSE &&
-		      fabsf(w.bsdfs[h.material].diffuse.y - 0.4f) < 1e-6f,
+	CHECK(h.material >= 0 && w->bsdfs[h.material].kind == BSDF_DIFFUSE &&
+		      fabsf(w->bsdfs[h.material].diffuse.y - 0.4f) < 1e-6f,
 	      "sphere 0's material reaches the hit");
 	/* The flattened ellipsoid at x = 3 has half-axis 2 along x: a ray along -x from x = 10 enters at x = 5. */
-	CHECK(trace(&w, v3(10, 0, 0), v3(-1, 0, 0), &h), "hit the ellipsoid");
+	CHECK(trace(w, v3(10, 0, 0), v3(-1, 0, 0), &h), "hit the ellipsoid");
 	CHECK_NEAR(h.t, 5.0, 2e-3);
 	CHECK_NEAR(h.p.x, 5.0, 2e-3);
-	CHECK(w.bsdfs[h.material].kind == BSDF_COAT, "wax wears the coat");
+	CHECK(w->bsdfs[h.material].kind == BSDF_COAT, "wax wears the coat");
 	/* A ray grazing the ellipsoid at y = 0.9: x^2/4 + y^2 = 1 gives x = 3 +- 2 sqrt(0.19). */
-	CHECK(trace(&w, v3(10, 0.9f, 0), v3(-1, 0, 0), &h), "hit the ellipsoid off centre");
+	CHECK(trace(w, v3(10, 0.9f, 0), v3(-1, 0, 0), &h), "hit the ellipsoid off centre");
 	CHECK_NEAR(h.p.x, 3.0 + 2.0 * sqrt(0.19), 5e-3);
 	/* The plane under everything, at y = -1. */
-	CHECK(trace(&w, v3(0, 5, 0), v3(0, -1, 0), &h), "hit the plane");
+	CHECK(trace(w, v3(0, 5, 0), v3(0, -1, 0), &h), "hit the plane");
 	CHECK_NEAR(h.p.y, -1.0, 1e-5);
 	/* Shadows: the no_shadow sphere does not occlude, the ellipsoid does. */
 	render_ray down0 = {v3(-3, 5, 0), v3(0, -1, 0)}, down1 = {v3(3, 5, 0), v3(0, -1, 0)};
-	CHECK(!w.rs.occluded(w.rs.user, &down0, 0.0f, 5.9f), "no_shadow sphere casts no shadow");
-	CHECK(w.rs.occluded(w.rs.user, &down1, 0.0f, 5.9f), "the ellipsoid casts a shadow");
+	CHECK(!w->rs.occluded(w->rs.user, &down0, 0.0f, 5.9f), "no_shadow sphere casts no shadow");
+	CHECK(w->rs.occluded(w->rs.user, &down1, 0.0f, 5.9f), "the ellipsoid casts a shadow");
 	/* Misses, and a ray with a NaN never hits. */
-	CHECK(!trace(&w, v3(0, 5, 0), v3(0, 1, 0), &h), "a ray to the sky misses");
-	CHECK(!trace(&w, v3(NAN, 0, 0), v3(1, 0, 0), &h), "a NaN ray misses");
+	CHECK(!trace(w, v3(0, 5, 0), v3(0, 1, 0), &h), "a ray to the sky misses");
+	CHECK(!trace(w, v3(NAN, 0, 0), v3(1, 0, 0), &h), "a NaN ray misses");
 	/* Instances share: two objects, one sphere mesh (plus the flattened copy). */
-	CHECK(w.insts[0].g != w.insts[1].g, "the flattened object has its own mesh");
-	world_free(&w);
+	CHECK(w->insts[0].g != w->insts[1].g, "the flattened object has its own mesh");
+	world_free(w);
 
 	/* Two plain instances of one geometry, alike on screen, share its mesh. */
 	ok = build("camera { location <0, 0, -10> look_at 0 }\n#declare S = sphere { <0, 0, 0>, 1 }\nobject { S }\n"
@@ -176,10 +211,10 @@ int main(void)
 	CHECK(ok, "instances: %s", err);
 	free(err);
 	if (ok) {
-		CHECK(w.insts[0].g == w.insts[1].g, "object { Name } shares the mesh");
-		CHECK(w.stats.instanced_triangles == 2 * w.stats.triangles, "triangles %zu, instanced %zu",
-		      w.stats.triangles, w.stats.instanced_triangles);
-		world_free(&w);
+		CHECK(w->insts[0].g == w->insts[1].g, "object { Name } shares the mesh");
+		CHECK(w->stats.instanced_triangles == 2 * w->stats.triangles, "triangles %zu, instanced %zu",
+		      w->stats.triangles, w->stats.instanced_triangles);
+		world_free(w);
 	}
 
 	/* An SSS group (a box and a far sphere) beside 40 small boxes of another material set along
@@ -205,23 +240,24 @@ int main(void)
 			float theta[RENDER_SSS_MAX_HITS];
 			bool more = true;
 			tri_circle q = {v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), 0.5f, false};
-			uint32_t k = w.rs.circle(w.rs.user, &at, &q, hits, theta, RENDER_SSS_MAX_HITS, &more);
+			uint32_t k = w->rs.circle(w->rs.user, &at, &q, hits, theta, RENDER_SSS_MAX_HITS, &more);
 			CHECK(k == 1 && !more && hits[0].object == 0 && fabsf(hits[0].p.x - 0.5f) < 1e-5f &&
 				  fabsf(hits[0].p.y) < 1e-5f,
 			      "group circle: %u hits (more %d), the first on object %u at (%g %g)", k, more,
 			      k ? hits[0].object : 0, k ? hits[0].p.x : 0, k ? hits[0].p.y : 0);
 			render_ray down = {v3(0.25f, 1, 0), v3(0, -1, 0)};
 			render_hit h;
-			CHECK(trace(&w, down.o, down.d, &h) && h.object != 0 && h.t < 0.6f, "the ray meets a small box first");
-			CHECK(w.rs.sss_closest(w.rs.user, &at, &down, 0.0f, INFINITY, &h) && h.object == 0 &&
+			CHECK(trace(w, down.o, down.d, &h) && h.object != 0 && h.t < 0.6f, "the ray meets a small box first");
+			CHECK(w->rs.sss_closest(w->rs.user, &at, &down, 0.0f, INFINITY, &h) && h.object == 0 &&
 				  fabsf(h.t - 1.0f) < 1e-5f,
 			      "group nearest hit on object %u at t %g", h.object, h.t);
-			world_free(&w);
+			world_free(w);
 		}
 	}
 
 	check_sphere_levels();
 	check_many_spheres();
+	check_tangents();
 
 	/* Errors name the scene's place, the string of the file: a missing mesh file, a missing texture. */
 	ok = build("mesh { file \"nothere.obj\" }\n", &w, &err);
