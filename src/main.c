@@ -580,21 +580,6 @@ static void report_nothing_written(const char *out)
 		out);
 }
 
-/* FNV-1a (64-bit) of every source text the parser read, in the order it read them: the scene
- * and its includes. Tiles of one frame must agree on it. */
-static void scene_hash(const diag *d, char out[17])
-{
-	uint64_t h = 0xcbf29ce484222325ULL;
-	const diag_source *list[4096];
-	size_t n = 0;
-	for (const diag_source *s = d->sources; s && n < 4096; s = s->next)
-		list[n++] = s;
-	while (n-- > 0) /* the list is newest first */
-		for (size_t i = 0; i < list[n]->len; i++)
-			h = (h ^ (unsigned char)list[n]->text[i]) * 0x100000001b3ULL;
-	snprintf(out, 17, "%016llx", (unsigned long long)h);
-}
-
 /* The output name with the frame number in place of the run of '#' (zero-padded to its length),
  * or before the extension when there is no '#'. */
 static char *frame_name(const char *pattern, long frame)
@@ -678,6 +663,164 @@ static void on_progress(void *user, const render_progress *p)
 	fflush(stderr);
 }
 
+/* What `circe render` holds while it runs, released in one place (render_free). */
+typedef struct render_state {
+	struct timespec start;
+	char *out, *png, *out_default; /* the output names, the frame number put in */
+	diag d;
+	scene *sc;
+	world *w;
+	film f;
+	bool has_film;
+	double parse_s, build_s;
+} render_state;
+
+static void render_free(render_state *s)
+{
+	if (s->has_film)
+		film_free(&s->f);
+	world_free(s->w);
+	scene_free(s->sc);
+	free(s->out), free(s->png), free(s->out_default);
+	diag_free(&s->d);
+}
+
+/* The output names (-o or the scene's name, --png), with the frame number; EXIT_OK, or the exit
+ * status after saying why not. */
+static int render_names(const render_cli *o, render_state *s)
+{
+	s->out_default = o->out ? NULL : default_output(o->scene);
+	s->out = frame_name(o->out ? o->out : s->out_default, o->frame);
+	s->png = o->png ? frame_name(o->png, o->frame) : NULL;
+	if (!s->out || (o->png && !s->png)) {
+		fprintf(stderr, "circe: error: out of memory\n");
+		return EXIT_RUNTIME;
+	}
+	if (s->png && atomic_same_output(s->out, s->png)) {
+		char both[2 * PATH_MAX];
+		snprintf(both, sizeof both, "'%s' and --png '%s'", s->out, s->png);
+		return usage_error("-o %s name the same file: one would overwrite the other", both);
+	}
+	return EXIT_OK;
+}
+
+/* Parses the scene, then builds its world; EXIT_OK or the exit status (the errors reported). */
+static int render_scene_of(const render_cli *o, render_state *s)
+{
+	lang_options lo = {.include_dirs = o->includes.dir, .n_include_dirs = (size_t)o->includes.n,
+			   .clock = o->clock, .width = o->width, .height = o->height, .animated = o->frame >= 0,
+			   .frame = o->frame};
+	lang_status ls = lang_parse_file(o->scene, &lo, &s->d, &s->sc);
+	if (ls != LANG_OK) {
+		note_memory_limit();
+		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
+	}
+	s->parse_s = seconds_since(&s->start);
+	if (atomic_load(&interrupted)) { /* during the parse: the build would be wasted */
+		report_nothing_written(s->out);
+		return EXIT_INTERRUPTED;
+	}
+	scene_sss_method sss = !o->sss			 ? SSS_METHOD_DEFAULT
+			       : !strcmp(o->sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
+			       : !strcmp(o->sss, "disk")	 ? SSS_METHOD_DISK
+			       : !strcmp(o->sss, "volume")	 ? SSS_METHOD_VOLUME
+							 : SSS_METHOD_CIRCLE;
+	world_options wo = {.width = o->width, .height = o->height, .max_memory = o->max_memory, .sss_method = sss};
+	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
+	 * the machine's (memory): both were reported with their place. */
+	if (!(s->w = world_build(s->sc, &wo, &s->d))) {
+		note_memory_limit();
+		return s->d.errors ? EXIT_SCENE : EXIT_RUNTIME;
+	}
+	s->build_s = seconds_since(&s->start) - s->parse_s;
+	return EXIT_OK;
+}
+
+/* The film of the whole image, of --region or of --tile's rectangle (named in tile, "" for none);
+ * EXIT_OK or the exit status after saying why not. */
+static int render_film(const render_cli *o, render_state *s, char tile[32])
+{
+	int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+	tile[0] = '\0';
+	if (o->has_region) {
+		x0 = o->region[0], y0 = o->region[1], x1 = o->region[2], y1 = o->region[3];
+	} else if (o->tile_n) {
+		exrfile_rect r;
+		if (!merge_tile_rect(o->width, o->height, o->tile_i, o->tile_n, &r)) {
+			fprintf(stderr, "circe: error: a %dx%d image cannot be cut into %d tiles\n", o->width, o->height,
+				o->tile_n);
+			return EXIT_USAGE;
+		}
+		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
+		snprintf(tile, 32, "%d/%d", o->tile_i, o->tile_n);
+	}
+	if (!film_init(&s->f, o->width, o->height, x0, y0, x1, y1)) {
+		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o->width, o->height);
+		note_memory_limit();
+		return EXIT_RUNTIME;
+	}
+	s->has_film = true;
+	return EXIT_OK;
+}
+
+/* The render's closing lines on stderr: samples, times, dropped samples, SSS searches. */
+static void report_render(const render_cli *o, const render_state *s, const render_stats *stats)
+{
+	world_stats ws;
+	world_stats_get(s->w, &ws);
+	if (!o->quiet || stats->dropped)
+		fprintf(stderr, "circe: %s: %u samples per pixel in %.2f s (%.3g samples/s, %d threads); %llu "
+				"non-finite samples dropped\n"
+				"circe: time: parse %.3f s, build %.3f s (%zu triangles: tessellation and BVHs), "
+				"render %.3f s\n",
+			s->out, s->f.spp, stats->seconds, stats->samples_per_s, stats->threads,
+			(unsigned long long)stats->dropped, s->parse_s, s->build_s, ws.triangles, stats->seconds);
+	if (!o->quiet && stats->sss_searches)
+		fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g: circles or "
+				"probes that hit nothing, walks lost or at their step bound), %llu with more hits than "
+				"kept\n",
+			(unsigned long long)stats->sss_searches, (unsigned long long)stats->sss_nohit,
+			(double)stats->sss_nohit / (double)stats->sss_searches, (unsigned long long)stats->sss_overflow);
+}
+
+/* Renders the built world into the film, checkpointing to the output, and writes the outputs;
+ * the exit status. */
+static int render_and_write(const render_cli *o, render_state *s, const char *tile)
+{
+	char hash[17];
+	snprintf(hash, sizeof hash, "%016llx", (unsigned long long)s->sc->source_hash);
+	output_info info = {.scene_path = o->scene, .scene_hash = hash, .seed = o->seed,
+			    .sss_method = world_sss_method(s->w), .clock = o->clock, .tile = tile[0] ? tile : NULL,
+			    .aovs = o->aovs};
+	checkpoint_ctx cp = {s->out, &info, &s->d, s->start};
+	int max_level = s->sc->global.max_trace_level;
+	render_job job = {
+		.scene = world_scene(s->w), .camera = world_camera(s->w),
+		.settings = {.max_trace_level = max_level > 0 ? max_level : RENDER_DEFAULT_MAX_TRACE_LEVEL,
+			     .mode = RENDER_MIS,
+			     .circle_weight = o->talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
+		.seed = o->seed, .spp = o->time_s > 0 ? 0 : (uint32_t)(o->spp ? o->spp : 64), .time_budget_s = o->time_s,
+		.threads = o->threads, .checkpoint_interval_s = o->checkpoint_s,
+		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
+		.progress = !o->quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted};
+	render_stats stats;
+	render_status rs = render_run(&job, &s->f, &stats);
+	if (rs == RENDER_ERROR) {
+		fprintf(stderr, "circe: error: the render could not start (threads or memory)\n");
+		return EXIT_RUNTIME;
+	}
+	if (rs == RENDER_INTERRUPTED && s->f.spp == 0) {
+		/* No pass finished: a black 0-sample image must not replace a good older one. */
+		report_nothing_written(s->out);
+		return EXIT_INTERRUPTED;
+	}
+	info.interrupted = rs == RENDER_INTERRUPTED;
+	info.render_seconds = seconds_since(&s->start);
+	bool ok = output_write_exr(s->out, &s->f, &info, &s->d) && (!s->png || output_write_png(s->png, &s->f, 0.0f, &s->d));
+	report_render(o, s, &stats);
+	return !ok ? EXIT_RUNTIME : info.interrupted ? EXIT_INTERRUPTED : EXIT_OK;
+}
+
 /* circe render SCENE [options]. */
 static int cmd_render(int argc, char **argv)
 {
@@ -687,136 +830,21 @@ static int cmd_render(int argc, char **argv)
 		return status < 0 ? EXIT_OK : status;
 	/* From here on a signal only asks the render to stop: start-up and output included. */
 	install_stop_handlers();
-	struct timespec start;
-	clock_gettime(CLOCK_MONOTONIC, &start);
-	char *out_default = o.out ? NULL : default_output(o.scene);
-	char *out = frame_name(o.out ? o.out : out_default, o.frame);
-	char *png = o.png ? frame_name(o.png, o.frame) : NULL;
-	if (!out || (o.png && !png)) {
-		fprintf(stderr, "circe: error: out of memory\n");
-		free(out), free(png), free(out_default);
-		return EXIT_RUNTIME;
-	}
-	if (png && atomic_same_output(out, png)) {
-		char both[2 * PATH_MAX];
-		snprintf(both, sizeof both, "'%s' and --png '%s'", out, png);
-		status = usage_error("-o %s name the same file: one would overwrite the other", both);
-		free(out), free(png), free(out_default);
-		return status;
-	}
-	mem_set_limit(o.max_memory ? o.max_memory : physical_memory());
-	diag d;
-	diag_init(&d, stderr);
-	lang_options lo = {.include_dirs = o.includes.dir, .n_include_dirs = (size_t)o.includes.n, .clock = o.clock};
-	lo.width = o.width;
-	lo.height = o.height;
-	lo.animated = o.frame >= 0;
-	lo.frame = o.frame;
-	scene *sc = NULL;
-	lang_status ls = lang_parse_file(o.scene, &lo, &d, &sc);
-	if (ls != LANG_OK) {
-		note_memory_limit();
-		free(out), free(png), free(out_default), diag_free(&d);
-		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
-	}
-	double parse_s = seconds_since(&start);
-	if (atomic_load(&interrupted)) { /* during the parse: the build would be wasted */
-		report_nothing_written(out);
-		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
-		return EXIT_INTERRUPTED;
-	}
-	scene_sss_method sss = !o.sss			 ? SSS_METHOD_DEFAULT
-			       : !strcmp(o.sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
-			       : !strcmp(o.sss, "disk")	 ? SSS_METHOD_DISK
-			       : !strcmp(o.sss, "volume")	 ? SSS_METHOD_VOLUME
-							 : SSS_METHOD_CIRCLE;
-	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory, .sss_method = sss};
-	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
-	 * the machine's (memory): both were reported with their place. */
-	world *w = world_build(sc, &wo, &d);
-	if (!w) {
-		note_memory_limit();
-		int rc = d.errors ? EXIT_SCENE : EXIT_RUNTIME;
-		scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
-		return rc;
-	}
-	double build_s = seconds_since(&start) - parse_s;
-	int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+	render_state s = {0};
+	clock_gettime(CLOCK_MONOTONIC, &s.start);
+	diag_init(&s.d, stderr);
 	char tile[32] = "";
-	if (o.has_region) {
-		x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
-	} else if (o.tile_n) {
-		exrfile_rect r;
-		if (!merge_tile_rect(o.width, o.height, o.tile_i, o.tile_n, &r)) {
-			fprintf(stderr, "circe: error: a %dx%d image cannot be cut into %d tiles\n", o.width, o.height,
-				o.tile_n);
-			world_free(w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
-			return EXIT_USAGE;
-		}
-		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
-		snprintf(tile, sizeof tile, "%d/%d", o.tile_i, o.tile_n);
+	status = render_names(&o, &s);
+	if (status == EXIT_OK) {
+		mem_set_limit(o.max_memory ? o.max_memory : physical_memory());
+		status = render_scene_of(&o, &s);
 	}
-	film f;
-	if (!film_init(&f, o.width, o.height, x0, y0, x1, y1)) {
-		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o.width, o.height);
-		note_memory_limit();
-		world_free(w), scene_free(sc), free(out), free(png), free(out_default), diag_free(&d);
-		return EXIT_RUNTIME;
-	}
-	char hash[17];
-	scene_hash(&d, hash);
-	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
-			    .sss_method = world_sss_method(w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
-			    .aovs = o.aovs};
-	checkpoint_ctx cp = {out, &info, &d, start};
-	render_job job = {
-		.scene = world_scene(w), .camera = world_camera(w),
-		.settings = {.max_trace_level = sc->global.max_trace_level > 0 ? sc->global.max_trace_level
-									: RENDER_DEFAULT_MAX_TRACE_LEVEL,
-			     .mode = RENDER_MIS,
-			     .circle_weight = o.talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
-		.seed = o.seed, .spp = o.time_s > 0 ? 0 : (uint32_t)(o.spp ? o.spp : 64), .time_budget_s = o.time_s,
-		.threads = o.threads, .checkpoint_interval_s = o.checkpoint_s,
-		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
-		.progress = !o.quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted};
-	render_stats stats;
-	render_status rs = render_run(&job, &f, &stats);
-	int rc = EXIT_OK;
-	if (rs == RENDER_ERROR) {
-		fprintf(stderr, "circe: error: the render could not start (threads or memory)\n");
-		rc = EXIT_RUNTIME;
-	} else if (rs == RENDER_INTERRUPTED && f.spp == 0) {
-		/* No pass finished: a black 0-sample image must not replace a good older one. */
-		report_nothing_written(out);
-		rc = EXIT_INTERRUPTED;
-	} else {
-		info.interrupted = rs == RENDER_INTERRUPTED;
-		info.render_seconds = seconds_since(&start);
-		bool ok = output_write_exr(out, &f, &info, &d) && (!png || output_write_png(png, &f, 0.0f, &d));
-		world_stats ws;
-		world_stats_get(w, &ws);
-		if (!o.quiet || stats.dropped)
-			fprintf(stderr, "circe: %s: %u samples per pixel in %.2f s (%.3g samples/s, %d threads); %llu "
-					"non-finite samples dropped\n"
-					"circe: time: parse %.3f s, build %.3f s (%zu triangles: tessellation and BVHs), "
-					"render %.3f s\n",
-				out, f.spp, stats.seconds, stats.samples_per_s, stats.threads,
-				(unsigned long long)stats.dropped, parse_s, build_s, ws.triangles, stats.seconds);
-		if (!o.quiet && stats.sss_searches)
-			fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g: circles or "
-					"probes that hit nothing, walks lost or at their step bound), %llu with more hits than "
-					"kept\n",
-				(unsigned long long)stats.sss_searches, (unsigned long long)stats.sss_nohit,
-				(double)stats.sss_nohit / (double)stats.sss_searches,
-				(unsigned long long)stats.sss_overflow);
-		rc = !ok ? EXIT_RUNTIME : info.interrupted ? EXIT_INTERRUPTED : EXIT_OK;
-	}
-	film_free(&f);
-	world_free(w);
-	scene_free(sc);
-	free(out), free(png), free(out_default);
-	diag_free(&d);
-	return rc;
+	if (status == EXIT_OK)
+		status = render_film(&o, &s, tile);
+	if (status == EXIT_OK)
+		status = render_and_write(&o, &s, tile);
+	render_free(&s);
+	return status;
 }
 
 /* Restricts the reference b to the channels named in the comma-separated list (each must be in
@@ -898,6 +926,41 @@ static const cli_opt compare_options[] = {
 };
 #undef P
 
+/* Compares a with the reference b, prints the figures and writes --diff; the exit status. */
+static int compare_report(const exrfile_image *a, const char *pa, const exrfile_image *b, const char *pb,
+			  const compare_cli *o, diag *d)
+{
+	compare_result r;
+	exrfile_image diff;
+	if (!compare_images(a, pa, b, pb, o->threshold, &r, o->diff_path ? &diff : NULL, d))
+		return EXIT_RUNTIME;
+	double frac = r.pixels ? 100.0 * (double)r.over / (double)r.pixels : 0.0;
+	bool pass = frac <= o->percent;
+	printf("channels: %d\npixels: %zu\n", r.nchannels, r.pixels);
+	printf("rmse: %.9g\nrelmse: %.9g (epsilon %g)\nmean_abs: %.9g\n", r.rmse, r.relmse,
+	       COMPARE_RELMSE_EPS, r.mean_abs);
+	printf("max_abs: %.9g at %d,%d channel %s\n", r.max_abs, r.max_x, r.max_y, r.max_channel);
+	printf("mean: a %.9g b %.9g\n", r.mean_a, r.mean_b);
+	printf("psnr: %.3f dB (peak %g)\n", r.psnr, COMPARE_PSNR_PEAK);
+	printf("over_threshold: %.6g%% (%zu pixels with error > %g; allowed %g%%)\n", frac, r.over,
+	       o->threshold, o->percent);
+	printf("nonfinite_a: nan %zu inf %zu\n", r.nan_a, r.inf_a);
+	printf("result: %s\n", pass ? "PASS" : "FAIL");
+	int status = pass ? EXIT_OK : EXIT_RUNTIME;
+	if (o->diff_path) {
+		exrfile_channel chans[64];
+		for (int k = 0; k < diff.nchannels; k++)
+			chans[k] = (exrfile_channel){diff.names[k], diff.planes[k], 1, (size_t)diff.width};
+		exrfile_attr attr = {.name = "software", .kind = EXRFILE_ATTR_STRING,
+				     .s = "circe " PACKAGE_VERSION " compare: |A - B|"};
+		exrfile_write_desc desc = {diff.display, diff.data, diff.nchannels, chans, 1, &attr};
+		if (!exrfile_write(o->diff_path, &desc, d))
+			status = EXIT_RUNTIME;
+		exrfile_free(&diff);
+	}
+	return status;
+}
+
 /* circe compare A.exr B.exr: error figures of A against the reference B. Exit 0 when at most
  * --fail-percent of the pixels have an error above --fail, 1 otherwise or on an I/O error. */
 static int cmd_compare(int argc, char **argv)
@@ -907,61 +970,25 @@ static int cmd_compare(int argc, char **argv)
 				       sizeof compare_options / sizeof compare_options[0], &o);
 	if (status != EXIT_OK)
 		return status < 0 ? EXIT_OK : status;
-	double threshold = o.threshold, percent = o.percent;
-	const char *diff_path = o.diff_path, *channels = o.channels;
+	const char *channels = o.channels;
 	if (argc - optind != 2)
 		return usage_error("%s", "'compare' needs two images: A.exr B.exr");
 	const char *pa = argv[optind], *pb = argv[optind + 1];
 	diag d;
 	diag_init(&d, stderr);
-	exrfile_image a, b, diff;
+	exrfile_image a, b, ref = {0};
+	bool read_a = exrfile_read(pa, &a, &d), read_b = read_a && exrfile_read(pb, &b, &d);
+	if (read_b)
+		ref = b;
 	status = EXIT_RUNTIME;
-	if (!exrfile_read(pa, &a, &d)) {
-		diag_free(&d);
-		return EXIT_RUNTIME;
-	}
-	if (!exrfile_read(pb, &b, &d)) {
+	if (read_b && (!channels || compare_channel_view(&a, pa, &b, pb, channels, &ref)))
+		status = compare_report(&a, pa, &ref, pb, &o, &d);
+	if (read_b && channels) /* the view's own arrays; its planes are b's */
+		mem_free(ref.names), mem_free(ref.planes);
+	if (read_b)
+		exrfile_free(&b);
+	if (read_a)
 		exrfile_free(&a);
-		diag_free(&d);
-		return EXIT_RUNTIME;
-	}
-	exrfile_image ref = b;
-	if (channels && !compare_channel_view(&a, pa, &b, pb, channels, &ref)) {
-		mem_free(ref.names), mem_free(ref.planes);
-		exrfile_free(&a), exrfile_free(&b), diag_free(&d);
-		return EXIT_RUNTIME;
-	}
-	compare_result r;
-	if (compare_images(&a, pa, &ref, pb, threshold, &r, diff_path ? &diff : NULL, &d)) {
-		double frac = r.pixels ? 100.0 * (double)r.over / (double)r.pixels : 0.0;
-		bool pass = frac <= percent;
-		printf("channels: %d\npixels: %zu\n", r.nchannels, r.pixels);
-		printf("rmse: %.9g\nrelmse: %.9g (epsilon %g)\nmean_abs: %.9g\n", r.rmse, r.relmse,
-		       COMPARE_RELMSE_EPS, r.mean_abs);
-		printf("max_abs: %.9g at %d,%d channel %s\n", r.max_abs, r.max_x, r.max_y, r.max_channel);
-		printf("mean: a %.9g b %.9g\n", r.mean_a, r.mean_b);
-		printf("psnr: %.3f dB (peak %g)\n", r.psnr, COMPARE_PSNR_PEAK);
-		printf("over_threshold: %.6g%% (%zu pixels with error > %g; allowed %g%%)\n", frac, r.over,
-		       threshold, percent);
-		printf("nonfinite_a: nan %zu inf %zu\n", r.nan_a, r.inf_a);
-		printf("result: %s\n", pass ? "PASS" : "FAIL");
-		status = pass ? EXIT_OK : EXIT_RUNTIME;
-		if (diff_path) {
-			exrfile_channel chans[64];
-			for (int k = 0; k < diff.nchannels; k++)
-				chans[k] = (exrfile_channel){diff.names[k], diff.planes[k], 1, (size_t)diff.width};
-			exrfile_attr attr = {.name = "software", .kind = EXRFILE_ATTR_STRING,
-					     .s = "circe " PACKAGE_VERSION " compare: |A - B|"};
-			exrfile_write_desc desc = {diff.display, diff.data, diff.nchannels, chans, 1, &attr};
-			if (!exrfile_write(diff_path, &desc, &d))
-				status = EXIT_RUNTIME;
-			exrfile_free(&diff);
-		}
-	}
-	if (channels)
-		mem_free(ref.names), mem_free(ref.planes);
-	exrfile_free(&a);
-	exrfile_free(&b);
 	diag_free(&d);
 	return status;
 }

@@ -52,7 +52,9 @@ typedef enum lang_status {
 } lang_status;
 
 /* Parses and validates the scene at path. On LANG_OK *out is a new scene the caller frees with
- * scene_free; otherwise *out is NULL. opt may be NULL (defaults: no -I, clock 0, the disk). */
+ * scene_free, its source_hash the FNV-1a (64-bit) of the text of every file read for it (the
+ * scene and its includes, in the order read): tiles of one frame must agree on it. Otherwise
+ * *out is NULL. opt may be NULL (defaults: no -I, clock 0, the disk). */
 lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, scene **out);
 
 /* The default file reader (the file system). */

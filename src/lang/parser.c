@@ -2004,6 +2004,32 @@ static bool predeclare(parser *p)
 	return true;
 }
 
+/* FNV-1a (64-bit) offset basis and prime (Fowler, Noll, Vo; draft-eastlake-fnv). */
+#define LANG_FNV_BASIS 0xcbf29ce484222325ULL
+#define LANG_FNV_PRIME 0x100000001b3ULL
+
+/* The hash of every source d registered after `before` (this parse's files), oldest first: d
+ * keeps them newest first. False when memory runs out. */
+static bool hash_sources(const diag *d, const diag_source *before, uint64_t *hash)
+{
+	size_t n = 0;
+	for (const diag_source *s = d->sources; s && s != before; s = s->next)
+		n++;
+	const diag_source **list = mem_alloc(n ? n : 1, sizeof *list);
+	if (!list)
+		return false;
+	size_t k = n;
+	for (const diag_source *s = d->sources; s && s != before; s = s->next)
+		list[--k] = s;
+	uint64_t h = LANG_FNV_BASIS;
+	for (size_t i = 0; i < n; i++)
+		for (size_t j = 0; j < list[i]->len; j++)
+			h = (h ^ (unsigned char)list[i]->text[j]) * LANG_FNV_PRIME;
+	mem_free(list);
+	*hash = h;
+	return true;
+}
+
 lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, scene **out)
 {
 	*out = NULL;
@@ -2017,6 +2043,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 	}
 	p->d = d;
 	p->sc = sc;
+	const diag_source *before = d->sources; /* the sources this parse adds come before it */
 	if (opt)
 		p->opt = *opt;
 	if (!p->opt.read)
@@ -2051,6 +2078,10 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 	vecbuf_free(&p->globals);
 	vecbuf_free(&p->locals);
 	mem_free(p);
+	if (st == LANG_OK && !hash_sources(d, before, &sc->source_hash)) {
+		diag_error(d, diag_noloc(), "out of memory");
+		st = LANG_NO_MEMORY;
+	}
 	if (st != LANG_OK)
 		scene_free(sc);
 	else

@@ -177,6 +177,7 @@ typedef struct scene {
 	uint32_t n_materials;
 	vecbuf assets; /* scene_asset, in the order the text names them */
 	vecbuf clamped_colors; /* diag_loc of each colour clamped so far (scene_color_finalise) */
+	uint64_t source_hash; /* of every file the language read for it, includes too (lang.h) */
 } scene;
 
 scene *scene_new(void);
