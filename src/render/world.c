@@ -9,8 +9,7 @@
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
-/* ---- the integrator's callbacks ---------------------------------------------------------- */
-
+/* A normal and a vector of instance `in`'s object space in world space. */
 static vec3 xf_normal(const world_inst *in, vec3 n)
 {
 	return in->identity ? n : d3v(xform_normal(&in->xf, v3_to_d3(n)));
@@ -57,6 +56,7 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = scale};
 }
 
+/* render_scene.intersect: the nearest hit on any instance, through the top-level BVH. */
 static bool world_intersect(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
 {
 	const world *w = user;
@@ -141,6 +141,7 @@ static bool world_sss_closest(void *user, const render_hit *at, const render_ray
 	return true;
 }
 
+/* render_scene.occluded: any hit on an instance that casts shadows (not no_shadow). */
 static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
 {
 	const world *w = user;
@@ -148,6 +149,8 @@ static bool world_occluded(void *user, const render_ray *ray, float tmin, float 
 	return w->shadow && tlas_occluded(w->shadow, &r);
 }
 
+/* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
+ * (through the mesh's tangents, which the build made for it) at the hit. */
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
 {
 	const world *w = user;
@@ -175,6 +178,7 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	}
 }
 
+/* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables. */
 void world_bind(world *w)
 {
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,

@@ -1,9 +1,11 @@
-/* world.h - a scene made ready to render: the IR's geometry tessellated into meshes (one per
- * geometry record, shared by every object that instances it), a BVH per mesh, the objects as
+/* world.h - the layout of a world (build/build.h): the IR's geometry tessellated into meshes (one
+ * per geometry record, shared by every object that instances it), a BVH per mesh, the objects as
  * instances with their transforms, the materials as BSDF parameters with their textures, the
- * lights, and the camera. It backs the integrator's render_scene (integrator.h): its callbacks
- * trace the instances and apply textures and normal maps at a hit. Read-only once built, so any
- * number of render threads share one world. */
+ * lights, and the camera. src/build fills it; render/world.c backs the integrator's render_scene
+ * (integrator.h) with it: its callbacks trace the instances and apply textures and normal maps at
+ * a hit. Read-only once built, so any number of render threads share one world. Internal: only
+ * src/build, render/world.c and the unit tests that look inside include it; main.c goes through
+ * build.h's verbs. */
 #ifndef CIRCE_RENDER_WORLD_H
 #define CIRCE_RENDER_WORLD_H
 

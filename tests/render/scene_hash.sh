@@ -1,4 +1,5 @@
 #!/bin/sh
+# shellcheck disable=SC2086 # $opts is a word list by design
 # scene_hash.sh: the scene hash in a render's header (circe.scene_hash, which `circe merge`
 # checks) covers every file the language read: tiles of one scene merge, and a tile rendered
 # after an included file changed is refused as another scene's.
