@@ -1,8 +1,9 @@
 /* integrator.h - the unidirectional path tracer and the narrow scene interface it traces through.
  * The integrator knows nothing of the scene language, meshes or BVHs: a scene is a render_scene,
- * two callbacks (nearest hit, any hit) plus the material table and the light set. The lead's glue
- * backs intersect/occluded with bvh_intersect/bvh_occluded and fills render_hit from the triangle;
- * tests back them with analytic spheres and planes.
+ * five callbacks (nearest hit, any hit, shading, and for subsurface materials circle hits and the
+ * closest hit on one SSS volume) plus the material table and the light set. circe's world backs
+ * them with the BVHs (bvh_intersect, bvh_occluded, bvh_circle) and fills render_hit from the
+ * triangle; tests back them with analytic spheres and planes.
  *
  * Light transport: next-event estimation to one light chosen by power (light_set_pick) plus a BSDF
  * sample that continues the path; the two are combined by the power heuristic (Veach 1997, 9.2).
