@@ -84,67 +84,34 @@ static bool tag_sharpness(const cage_ctx *x, uint32_t line, const char *what, do
 	return true;
 }
 
-/* `t crease n/m/0 a b [c d ...] s [s ...]`: pairs of vertices (zero-based) with one sharpness
- * for all or one per pair; `t corner n/m/0 v... s...`: vertices; `t hole n/0/0 f...`: faces;
- * `t interpolateboundary 1/0/0 r`: 1 edge_and_corner, 2 edge_only. Others are ignored with a
- * warning. */
-static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags *t)
+/* The argument counts `ints/floats/strings` after a tag's name; *p moves past them. */
+static bool tag_counts(const cage_ctx *x, const char **p, uint32_t line, const char *name, long *ni, long *nf)
 {
-	char name[64];
-	int n = 0;
-	if (!more(&p) || sscanf(p, "%63s%n", name, &n) != 1)
-		return cage_fail(x, line, "a 't' line needs a tag name");
-	p += n;
-	long ni, nf, ns;
 	char *end;
-	more(&p);
-	ni = strtol(p, &end, 10);
-	if (end == p || *end != '/')
+	more(p);
+	*ni = strtol(*p, &end, 10);
+	if (end == *p || *end != '/')
 		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
 				 name);
-	p = end + 1;
-	nf = strtol(p, &end, 10);
-	if (end == p || *end != '/')
+	*p = end + 1;
+	*nf = strtol(*p, &end, 10);
+	if (end == *p || *end != '/')
 		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
 				 name);
-	p = end + 1;
-	ns = strtol(p, &end, 10);
-	if (end == p || ni < 0 || nf < 0 || ns < 0 || ni > CAGE_MAX_TAG_ARGS || nf > CAGE_MAX_TAG_ARGS)
+	*p = end + 1;
+	long ns = strtol(*p, &end, 10);
+	if (end == *p || *ni < 0 || *nf < 0 || ns < 0 || *ni > CAGE_MAX_TAG_ARGS || *nf > CAGE_MAX_TAG_ARGS)
 		return cage_fail(x, line, "tag '%s': bad argument counts", name);
-	p = end;
-	bool known = !strcmp(name, "crease") || !strcmp(name, "corner") || !strcmp(name, "hole") ||
-		     !strcmp(name, "interpolateboundary");
-	if (!known) {
-		diag_warning(x->d, x->loc,
-			     "cage file '%s', line %u: tag '%s' is not supported by circe; ignored", x->path,
-			     line, name);
-		return true;
-	}
-	long *ints = mem_alloc((size_t)ni + 1, sizeof *ints);
-	double *floats = mem_alloc((size_t)nf + 1, sizeof *floats);
-	bool ok = ints && floats;
-	if (!ok)
-		cage_oom(x);
-	for (long i = 0; ok && i < ni; i++) {
-		more(&p);
-		ints[i] = strtol(p, &end, 10);
-		if (end == p || ints[i] < 0 || ints[i] > (long)CAGE_MAX_COUNT)
-			ok = cage_fail(x, line,
-				       "tag '%s': integer argument %ld of %ld missing or out of range", name,
-				       i + 1, ni);
-		p = end;
-	}
-	for (long i = 0; ok && i < nf; i++) {
-		more(&p);
-		floats[i] = strtod(p, &end);
-		if (end == p)
-			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1,
-				       nf);
-		p = end;
-	}
-	if (!ok) {
-		/* reported above */
-	} else if (!strcmp(name, "crease")) {
+	*p = end;
+	return true;
+}
+
+/* A known tag's arguments, read, into t. */
+static bool apply_tag(const cage_ctx *x, uint32_t line, const char *name, const long *ints, long ni,
+		      const double *floats, long nf, cage_tags *t)
+{
+	bool ok = true;
+	if (!strcmp(name, "crease")) {
 		if (ni < 2 || ni % 2 || (nf != 1 && nf != ni / 2))
 			ok = cage_fail(
 			    x, line,
@@ -185,6 +152,55 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 			t->has_boundary = true,
 			t->boundary = ints[0] == 1 ? SUBD_BOUNDARY_EDGE_AND_CORNER : SUBD_BOUNDARY_EDGE_ONLY;
 	}
+	return ok;
+}
+
+/* `t crease n/m/0 a b [c d ...] s [s ...]`: pairs of vertices (zero-based) with one sharpness
+ * for all or one per pair; `t corner n/m/0 v... s...`: vertices; `t hole n/0/0 f...`: faces;
+ * `t interpolateboundary 1/0/0 r`: 1 edge_and_corner, 2 edge_only. Others are ignored with a
+ * warning. */
+static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags *t)
+{
+	char name[64];
+	int n = 0;
+	if (!more(&p) || sscanf(p, "%63s%n", name, &n) != 1)
+		return cage_fail(x, line, "a 't' line needs a tag name");
+	p += n;
+	long ni = 0, nf = 0;
+	if (!tag_counts(x, &p, line, name, &ni, &nf))
+		return false;
+	bool known = !strcmp(name, "crease") || !strcmp(name, "corner") || !strcmp(name, "hole") ||
+		     !strcmp(name, "interpolateboundary");
+	if (!known) {
+		diag_warning(x->d, x->loc,
+			     "cage file '%s', line %u: tag '%s' is not supported by circe; ignored", x->path,
+			     line, name);
+		return true;
+	}
+	long *ints = mem_alloc((size_t)ni + 1, sizeof *ints);
+	double *floats = mem_alloc((size_t)nf + 1, sizeof *floats);
+	bool ok = ints && floats;
+	if (!ok)
+		cage_oom(x);
+	char *end;
+	for (long i = 0; ok && i < ni; i++) {
+		more(&p);
+		ints[i] = strtol(p, &end, 10);
+		if (end == p || ints[i] < 0 || ints[i] > (long)CAGE_MAX_COUNT)
+			ok = cage_fail(x, line,
+				       "tag '%s': integer argument %ld of %ld missing or out of range", name,
+				       i + 1, ni);
+		p = end;
+	}
+	for (long i = 0; ok && i < nf; i++) {
+		more(&p);
+		floats[i] = strtod(p, &end);
+		if (end == p)
+			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1,
+				       nf);
+		p = end;
+	}
+	ok = ok && apply_tag(x, line, name, ints, ni, floats, nf, t);
 	mem_free(ints), mem_free(floats);
 	return ok;
 }
