@@ -38,8 +38,8 @@ static vec3 to_world(const frame *f, vec3 v)
  * triangle (barycentrics), not as o + t d, for the offset to cover their error. */
 static vec3 offset_origin(vec3 p, float scale, vec3 n_out) { return bvh_offset_scaled(p, n_out, scale); }
 
-/* Nearest surface: the scene's or a sphere light's. *light_hit receives the sphere light's index
- * when that is nearer, else -1. */
+/* Nearest surface: the scene's or a sphere light's. *sphere_light receives the sphere light's
+ * index when that is nearer, else -1. */
 static bool trace(const render_scene *s, const render_ray *ray, render_hit *hit, int *sphere_light)
 {
 	bool found = s->intersect(s->user, ray, 0.0f, INFINITY, hit);
@@ -138,6 +138,7 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 	sss_circle_hit ch[RENDER_SSS_MAX_HITS];
 	bool more = false;
 	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS, &more) : 0;
+	assert(k <= RENDER_SSS_MAX_HITS);
 	if (more)
 		out->sss_overflow++;
 	float side = v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f;
@@ -152,6 +153,7 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 		out->sss_nohit++;
 		return false;
 	}
+	assert((uint32_t)i < k);
 	e->hit = hits[i];
 	e->weight = w;
 	return true;
@@ -201,6 +203,7 @@ static bool disk_entry(const render_scene *s, const render_sss *m, const render_
 	sss_disk_hit hits[SSS_DISK_MAX_HITS];
 	bool more;
 	int k = sss_disk_gather(&m->profile, mm_per_unit, &f, &q, &pr, hits, SSS_DISK_MAX_HITS, &more);
+	assert(k >= 0 && k <= SSS_DISK_MAX_HITS);
 	if (more)
 		out->sss_overflow++;
 	vec3 w;
@@ -210,6 +213,7 @@ static bool disk_entry(const render_scene *s, const render_sss *m, const render_
 		out->sss_nohit++;
 		return false;
 	}
+	assert(i < k && i < n); /* the chosen hit was logged: log[i] is its surface */
 	e->hit = log[i];
 	e->weight = w;
 	return true;

@@ -55,6 +55,7 @@ static bool interrupted(const render_job *job)
 /* Renders one tile's pixels for samples [s0, s1) into film->work; false when interrupted. */
 static bool render_tile(pool *p, int tile)
 {
+	assert(tile >= 0 && tile < p->tile_count);
 	const render_job *job = p->job;
 	film *f = p->film;
 	int tx = tile % p->tiles_x, ty = tile / p->tiles_x;
