@@ -78,6 +78,8 @@ tlas *tlas_build(const tlas_instance *instances, uint32_t count)
 		tlas_free(t);
 		return NULL;
 	}
+	for (uint32_t i = 0; i < count; i++)
+		assert(t->order[i] < count); /* trace reads insts[order[...]] without a check */
 	t->count = count;
 	return t;
 }
@@ -116,13 +118,13 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = bvh_node_hit(&t->nodes[c0], &wr, tlimit, &tn);
 			bool h1 = bvh_node_hit(&t->nodes[c1], &wr, tlimit, &tn);
-			assert(sp < BVH_MAX_DEPTH + 2); /* one push a level: bvh_build_nodes bounds the depth */
+			/* No assert on sp here, in the rays' hot loop: one push a level, and
+			 * bvh_build_nodes asserts the depth. */
 			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
 		} else {
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t id = t->order[nd->first + k];
-				assert(id < t->count);
 				const inst *in = &t->insts[id];
 				tri_ray r;
 				if (!tri_ray_prepare(&r, mul_point(in->w2o, ray->org), mul_vector(in->w2o, ray->dir), ray->tmin,
