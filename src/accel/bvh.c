@@ -8,6 +8,7 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
 #include <immintrin.h>
 #include <stdlib.h>
 #include <string.h>
@@ -150,6 +151,7 @@ static uint32_t ceil_log2(uint32_t n) { return n <= 1 ? 0 : 32 - (uint32_t)__bui
 
 static void make_leaf(bvh_node *nd, uint32_t begin, uint32_t count)
 {
+	assert(count > 0 && count <= BVH_MAX_LEAF);
 	nd->first = begin;
 	nd->count = count;
 }
@@ -413,6 +415,7 @@ BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_blo
 		       uint32_t *num_nodes)
 {
 	uint32_t n = root.end;
+	assert(n > 0 && root.begin == 0);
 	bvh_node *nodes = mem_alloc(2 * (size_t)n - 1, sizeof *nodes);
 	if (!nodes)
 		return false;
@@ -450,6 +453,10 @@ BUILD_INLINE bool build_tree(build_ref *refs, build_task root, uint32_t leaf_blo
 			/* All centroids coincide (or no split helps): halve by position in the array. */
 			child_tasks(refs, &tk, left, tk.begin + count / 2, &l, &r);
 		}
+		/* A binary tree of n leaves has 2n - 1 nodes; the depth bound sizes every traversal
+		 * stack (bvh_simd.h's K_STACK, tlas.c's). */
+		assert((size_t)used + 2 <= 2 * (size_t)n - 1);
+		assert(l.depth < BVH_MAX_DEPTH && r.depth < BVH_MAX_DEPTH);
 		used += 2;
 		nd->first = left;
 		nd->count = BVH_INNER | (uint32_t)s.axis;

@@ -20,10 +20,7 @@ uint32_t bvh_num_nodes(const bvh *b);
  * give the same hits, bit for bit. */
 uint32_t bvh_width(const bvh *b);
 
-/* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
- * the boxes' centroids, pricing a leaf by its count rounded up to whole leaf_blocks (the
- * primitives its test takes at once; a power of two). perm receives the order of the boxes in the
- * leaves. */
+/* A node of the binary tree: its box, and a leaf's primitives or an inner node's children. */
 typedef struct bvh_node {
 	float lo[3];
 	uint32_t first; /* leaf: first primitive in perm order; inner: index of the second child */
@@ -38,6 +35,11 @@ typedef struct bvh_node {
 #ifndef BVH_MAX_DEPTH
 #define BVH_MAX_DEPTH 62
 #endif
+/* The node-level tree of any set of boxes (used for triangles and for instances): binned SAH over
+ * the boxes' centroids, pricing a leaf by its count rounded up to a whole number of leaf_block
+ * (the primitives its test takes at once; a power of two). perm receives the order of the boxes
+ * in the leaves. Every leaf holds 1 to BVH_MAX_LEAF boxes, no node is deeper than
+ * BVH_MAX_DEPTH - 1 (both asserted), and n boxes make at most 2n - 1 nodes. */
 bool bvh_build_nodes(const vec3 *lo, const vec3 *hi, uint32_t n, uint32_t leaf_block, bvh_node **nodes,
 		     uint32_t *num_nodes, uint32_t *perm);
 static inline vec3 bvh_node_lo(const bvh_node *nd) { return v3(nd->lo[0], nd->lo[1], nd->lo[2]); }

@@ -515,6 +515,8 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 		const K(node) *nd = &nodes[ni];
 		int mask = K(node_circle)(nd, &p);
 		int leaf = mask & K(leaf_mask)(nd);
+		/* Room for a whole vector's store in both (once a node, not a lane: no measurable cost). */
+		assert(back <= K_QUEUE - W && nl < K_LEAF_BATCH);
 		nl += V(compress)(&leaves[nl], nd->child, leaf);
 		back += V(compress)(&queue[back], nd->child, mask & ~leaf);
 		if (nl >= K_LEAF_BATCH) {

@@ -5,6 +5,8 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
+
 /* An instance as traced: world-to-object and object-to-world in float, 3x4 row-major. */
 typedef struct inst {
 	const bvh *geom;
@@ -76,6 +78,8 @@ tlas *tlas_build(const tlas_instance *instances, uint32_t count)
 		tlas_free(t);
 		return NULL;
 	}
+	for (uint32_t i = 0; i < count; i++)
+		assert(t->order[i] < count); /* trace reads insts[order[...]] without a check */
 	t->count = count;
 	return t;
 }
@@ -114,6 +118,8 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 			uint32_t c0 = nd->first, c1 = c0 + 1;
 			bool h0 = bvh_node_hit(&t->nodes[c0], &wr, tlimit, &tn);
 			bool h1 = bvh_node_hit(&t->nodes[c1], &wr, tlimit, &tn);
+			/* No assert on sp here, in the rays' hot loop: one push a level, and
+			 * bvh_build_nodes asserts the depth. */
 			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
 		} else {
@@ -181,11 +187,13 @@ static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32
 			const bvh_node *a = &t->nodes[c0], *b = &t->nodes[c1];
 			bool h0 = bvh_box_circle(bvh_node_lo(a), bvh_node_hi(a), q);
 			bool h1 = bvh_box_circle(bvh_node_lo(b), bvh_node_hi(b), q);
+			assert(sp < BVH_MAX_DEPTH + 2); /* one push a level: bvh_build_nodes bounds the depth */
 			if (bvh_descend(h0, h1, c0, stack, &sp, &ni))
 				continue;
 		} else {
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t id = t->order[nd->first + k];
+				assert(id < t->count);
 				if (!all && t->insts[id].set != set)
 					continue;
 				uint32_t room = total < max_hits ? max_hits - total : 0;

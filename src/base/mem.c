@@ -1,6 +1,7 @@
 /* mem.c - checked allocation, the scene arena and growable arrays. */
 #include "base/mem.h"
 
+#include <assert.h>
 #include <stdalign.h>
 #include <stdatomic.h>
 #include <stddef.h>
@@ -67,7 +68,12 @@ static bool take(size_t n)
 	return true;
 }
 
-static void give(size_t n) { atomic_fetch_sub(&live_bytes, n); }
+static void give(size_t n)
+{
+	size_t before = atomic_fetch_sub(&live_bytes, n);
+	assert(before >= n); /* only bytes taken are given back */
+	(void)before;
+}
 
 /* The user's block of a header, the size it records. */
 static void *block_of(void *h, size_t n)
@@ -191,6 +197,7 @@ void *arena_alloc(arena *a, size_t count, size_t size, size_t align)
 		if (pad <= b->size - b->used && n <= b->size - b->used - pad) {
 			void *r = b->data + b->used + pad;
 			b->used += pad + n;
+			assert(b->used <= b->size);
 			a->total += n;
 			return r;
 		}
@@ -260,6 +267,7 @@ void vecbuf_init(vecbuf *v, size_t elem_size)
 
 bool vecbuf_reserve(vecbuf *v, size_t n)
 {
+	assert(v->elem > 0 && v->len <= v->cap);
 	if (n > SIZE_MAX - v->len)
 		return false;
 	size_t need = v->len + n;

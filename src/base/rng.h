@@ -5,6 +5,7 @@
 #ifndef CIRCE_BASE_RNG_H
 #define CIRCE_BASE_RNG_H
 
+#include <assert.h>
 #include <stdint.h>
 
 typedef struct rng {
@@ -14,8 +15,9 @@ typedef struct rng {
 
 #define RNG_PCG_MULT 6364136223846793005ULL
 
-/* Seeds a generator on stream `stream` (any value; made odd internally). */
 static inline uint32_t rng_u32(rng *g);
+
+/* Seeds a generator on stream `stream` (any value; made odd internally). */
 static inline void rng_seed(rng *g, uint64_t seed, uint64_t stream)
 {
 	g->state = 0;
@@ -47,6 +49,7 @@ static inline double rng_double(rng *g)
 /* Uniform integer in [0, n), n > 0, without modulo bias (Lemire 2019). */
 static inline uint32_t rng_below(rng *g, uint32_t n)
 {
+	assert(n > 0);
 	uint64_t m = (uint64_t)rng_u32(g) * n;
 	uint32_t l = (uint32_t)m;
 	if (l < n) {

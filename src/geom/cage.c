@@ -3,6 +3,7 @@
  * cage.h. */
 #include "geom/cage.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -83,67 +84,34 @@ static bool tag_sharpness(const cage_ctx *x, uint32_t line, const char *what, do
 	return true;
 }
 
-/* `t crease n/m/0 a b [c d ...] s [s ...]`: pairs of vertices (zero-based) with one sharpness
- * for all or one per pair; `t corner n/m/0 v... s...`: vertices; `t hole n/0/0 f...`: faces;
- * `t interpolateboundary 1/0/0 r`: 1 edge_and_corner, 2 edge_only. Others are ignored with a
- * warning. */
-static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags *t)
+/* The argument counts `ints/floats/strings` after a tag's name; *p moves past them. */
+static bool tag_counts(const cage_ctx *x, const char **p, uint32_t line, const char *name, long *ni, long *nf)
 {
-	char name[64];
-	int n = 0;
-	if (!more(&p) || sscanf(p, "%63s%n", name, &n) != 1)
-		return cage_fail(x, line, "a 't' line needs a tag name");
-	p += n;
-	long ni, nf, ns;
 	char *end;
-	more(&p);
-	ni = strtol(p, &end, 10);
-	if (end == p || *end != '/')
+	more(p);
+	*ni = strtol(*p, &end, 10);
+	if (end == *p || *end != '/')
 		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
 				 name);
-	p = end + 1;
-	nf = strtol(p, &end, 10);
-	if (end == p || *end != '/')
+	*p = end + 1;
+	*nf = strtol(*p, &end, 10);
+	if (end == *p || *end != '/')
 		return cage_fail(x, line, "tag '%s': expected the argument counts 'ints/floats/strings'",
 				 name);
-	p = end + 1;
-	ns = strtol(p, &end, 10);
-	if (end == p || ni < 0 || nf < 0 || ns < 0 || ni > CAGE_MAX_TAG_ARGS || nf > CAGE_MAX_TAG_ARGS)
+	*p = end + 1;
+	long ns = strtol(*p, &end, 10);
+	if (end == *p || *ni < 0 || *nf < 0 || ns < 0 || *ni > CAGE_MAX_TAG_ARGS || *nf > CAGE_MAX_TAG_ARGS)
 		return cage_fail(x, line, "tag '%s': bad argument counts", name);
-	p = end;
-	bool known = !strcmp(name, "crease") || !strcmp(name, "corner") || !strcmp(name, "hole") ||
-		     !strcmp(name, "interpolateboundary");
-	if (!known) {
-		diag_warning(x->d, x->loc,
-			     "cage file '%s', line %u: tag '%s' is not supported by circe; ignored", x->path,
-			     line, name);
-		return true;
-	}
-	long *ints = mem_alloc((size_t)ni + 1, sizeof *ints);
-	double *floats = mem_alloc((size_t)nf + 1, sizeof *floats);
-	bool ok = ints && floats;
-	if (!ok)
-		cage_oom(x);
-	for (long i = 0; ok && i < ni; i++) {
-		more(&p);
-		ints[i] = strtol(p, &end, 10);
-		if (end == p || ints[i] < 0 || ints[i] > (long)CAGE_MAX_COUNT)
-			ok = cage_fail(x, line,
-				       "tag '%s': integer argument %ld of %ld missing or out of range", name,
-				       i + 1, ni);
-		p = end;
-	}
-	for (long i = 0; ok && i < nf; i++) {
-		more(&p);
-		floats[i] = strtod(p, &end);
-		if (end == p)
-			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1,
-				       nf);
-		p = end;
-	}
-	if (!ok) {
-		/* reported above */
-	} else if (!strcmp(name, "crease")) {
+	*p = end;
+	return true;
+}
+
+/* A known tag's arguments, read, into t. */
+static bool apply_tag(const cage_ctx *x, uint32_t line, const char *name, const long *ints, long ni,
+		      const double *floats, long nf, cage_tags *t)
+{
+	bool ok = true;
+	if (!strcmp(name, "crease")) {
 		if (ni < 2 || ni % 2 || (nf != 1 && nf != ni / 2))
 			ok = cage_fail(
 			    x, line,
@@ -184,6 +152,55 @@ static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags
 			t->has_boundary = true,
 			t->boundary = ints[0] == 1 ? SUBD_BOUNDARY_EDGE_AND_CORNER : SUBD_BOUNDARY_EDGE_ONLY;
 	}
+	return ok;
+}
+
+/* `t crease n/m/0 a b [c d ...] s [s ...]`: pairs of vertices (zero-based) with one sharpness
+ * for all or one per pair; `t corner n/m/0 v... s...`: vertices; `t hole n/0/0 f...`: faces;
+ * `t interpolateboundary 1/0/0 r`: 1 edge_and_corner, 2 edge_only. Others are ignored with a
+ * warning. */
+static bool parse_tag(const cage_ctx *x, const char *p, uint32_t line, cage_tags *t)
+{
+	char name[64];
+	int n = 0;
+	if (!more(&p) || sscanf(p, "%63s%n", name, &n) != 1)
+		return cage_fail(x, line, "a 't' line needs a tag name");
+	p += n;
+	long ni = 0, nf = 0;
+	if (!tag_counts(x, &p, line, name, &ni, &nf))
+		return false;
+	bool known = !strcmp(name, "crease") || !strcmp(name, "corner") || !strcmp(name, "hole") ||
+		     !strcmp(name, "interpolateboundary");
+	if (!known) {
+		diag_warning(x->d, x->loc,
+			     "cage file '%s', line %u: tag '%s' is not supported by circe; ignored", x->path,
+			     line, name);
+		return true;
+	}
+	long *ints = mem_alloc((size_t)ni + 1, sizeof *ints);
+	double *floats = mem_alloc((size_t)nf + 1, sizeof *floats);
+	bool ok = ints && floats;
+	if (!ok)
+		cage_oom(x);
+	char *end;
+	for (long i = 0; ok && i < ni; i++) {
+		more(&p);
+		ints[i] = strtol(p, &end, 10);
+		if (end == p || ints[i] < 0 || ints[i] > (long)CAGE_MAX_COUNT)
+			ok = cage_fail(x, line,
+				       "tag '%s': integer argument %ld of %ld missing or out of range", name,
+				       i + 1, ni);
+		p = end;
+	}
+	for (long i = 0; ok && i < nf; i++) {
+		more(&p);
+		floats[i] = strtod(p, &end);
+		if (end == p)
+			ok = cage_fail(x, line, "tag '%s': number argument %ld of %ld missing", name, i + 1,
+				       nf);
+		p = end;
+	}
+	ok = ok && apply_tag(x, line, name, ints, ni, floats, nf, t);
 	mem_free(ints), mem_free(floats);
 	return ok;
 }
@@ -423,17 +440,11 @@ bool cage_has_edge(const cage_data *c, uint32_t a, uint32_t b)
 	return a != b && bsearch(&k, c->edges, c->num_edges, sizeof k, cmp_u64) != NULL;
 }
 
-/* Welds positions, renumbers UVs, checks faces and collects edges. */
-static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
+/* Every face has at least three corners, each naming a vertex (and a UV) the file has. */
+static bool check_faces(const cage_ctx *x, const cage_raw *r)
 {
-	size_t nv = r->positions.len, nf = r->face_sizes.len, ni = r->indices.len;
-	const vec3 *pos = r->positions.data;
+	size_t nv = r->positions.len, nf = r->face_sizes.len;
 	const uint32_t *sizes = r->face_sizes.data, *idx = r->indices.data, *lines = r->face_lines.data;
-	if (nf == 0)
-		return cage_fail(x, 0, "the file has no faces");
-	if (nv > CAGE_MAX_COUNT || nf > CAGE_MAX_COUNT || ni > CAGE_MAX_COUNT)
-		return cage_fail(x, 0, "too many vertices, faces or face corners (the limit is %u)",
-				 CAGE_MAX_COUNT);
 	size_t k = 0;
 	for (size_t f = 0; f < nf; k += sizes[f], f++) {
 		if (sizes[f] < 3)
@@ -451,19 +462,18 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 				    ((const uint32_t *)r->uv_indices.data)[k + i] + 1, r->uvs.len);
 		}
 	}
-	c->num_file_vertices = (uint32_t)nv;
-	c->num_faces = (uint32_t)nf;
-	c->weld = mem_alloc(nv, sizeof *c->weld);
-	c->positions = mem_alloc(nv, sizeof *c->positions);
-	c->face_sizes = mem_alloc(nf, sizeof *c->face_sizes);
-	c->face_indices = mem_alloc(ni, sizeof *c->face_indices);
-	uint32_t *stamp = mem_alloc(nv, sizeof *stamp); /* the last face + 1 that used each vertex */
+	return true;
+}
+
+/* c->weld and c->positions: the file's vertices at equal positions become one, numbered by first
+ * occurrence. */
+static bool weld_positions(const cage_ctx *x, const cage_raw *r, cage_data *c)
+{
+	size_t nv = r->positions.len;
+	const vec3 *pos = r->positions.data;
 	weld_table t = {0};
-	bool ok = c->weld && c->positions && c->face_sizes && c->face_indices && stamp && table_init(&t, nv);
-	if (!ok) {
-		mem_free(stamp), mem_free(t.slot);
+	if (!table_init(&t, nv))
 		return cage_oom(x);
-	}
 	for (size_t v = 0; v < nv; v++) {
 		vec3 key = weld_key(pos[v]);
 		uint32_t before = c->num_vertices;
@@ -473,12 +483,24 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 			c->positions[c->weld[v]] = key;
 	}
 	mem_free(t.slot);
-	memcpy(c->face_sizes, sizes, nf * sizeof *sizes);
-	memset(stamp, 0, nv * sizeof *stamp);
-	k = 0;
+	assert(c->num_vertices <= nv);
+	return true;
+}
+
+/* c->face_indices in welded numbers; a face that uses one welded vertex twice is an error. */
+static bool weld_faces(const cage_ctx *x, const cage_raw *r, cage_data *c)
+{
+	size_t nv = r->positions.len, nf = r->face_sizes.len;
+	const uint32_t *sizes = r->face_sizes.data, *idx = r->indices.data, *lines = r->face_lines.data;
+	uint32_t *stamp = mem_calloc(nv, sizeof *stamp); /* the last face + 1 that used each vertex */
+	if (!stamp)
+		return cage_oom(x);
+	bool ok = true;
+	size_t k = 0;
 	for (size_t f = 0; ok && f < nf; k += sizes[f], f++)
 		for (uint32_t i = 0; ok && i < sizes[f]; i++) {
 			uint32_t w = c->weld[idx[k + i]];
+			assert(w < c->num_vertices);
 			if (stamp[w] == f + 1)
 				ok = cage_fail(x, lines[f],
 					       "face %zu uses vertex %u twice (after welding the vertices at "
@@ -488,46 +510,82 @@ static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
 			c->face_indices[k + i] = w;
 		}
 	mem_free(stamp);
-	if (!ok)
-		return false;
-	/* UVs: one value per (welded vertex, exact UV), so duplicated corners do not make false seams. */
-	if (!r->uv_missing && r->uv_indices.len == ni) {
-		const vec2 *uv = r->uvs.data;
-		const uint32_t *uidx = r->uv_indices.data;
-		uv_key *keys = mem_alloc(ni, sizeof *keys);
-		c->uvs = mem_alloc(ni, sizeof *c->uvs);
-		c->uv_indices = mem_alloc(ni, sizeof *c->uv_indices);
-		if (!keys || !c->uvs || !c->uv_indices || !table_init(&t, ni)) {
-			mem_free(keys);
-			return cage_oom(x);
-		}
-		for (size_t i = 0; i < ni; i++) {
-			uv_key key;
-			memset(&key, 0, sizeof key); /* no padding bytes in the compared key */
-			key.vertex = c->face_indices[i];
-			key.uv = v2(uv[uidx[i]].x + 0.0f, uv[uidx[i]].y + 0.0f);
-			uint32_t before = c->num_uvs;
-			c->uv_indices[i] =
-			    table_id(&t, &key, sizeof key, (const unsigned char *)keys, &c->num_uvs);
-			if (c->num_uvs != before)
-				keys[c->uv_indices[i]] = key, c->uvs[c->uv_indices[i]] = key.uv;
-		}
-		mem_free(t.slot), mem_free(keys);
+	return ok;
+}
+
+/* UVs: one value per (welded vertex, exact UV), so duplicated corners do not make false seams. */
+static bool weld_uvs(const cage_ctx *x, const cage_raw *r, cage_data *c)
+{
+	size_t ni = r->indices.len;
+	const vec2 *uv = r->uvs.data;
+	const uint32_t *uidx = r->uv_indices.data;
+	uv_key *keys = mem_alloc(ni, sizeof *keys);
+	c->uvs = mem_alloc(ni, sizeof *c->uvs);
+	c->uv_indices = mem_alloc(ni, sizeof *c->uv_indices);
+	weld_table t = {0};
+	if (!keys || !c->uvs || !c->uv_indices || !table_init(&t, ni)) {
+		mem_free(keys);
+		return cage_oom(x);
 	}
-	/* Edges, sorted and unique, for the crease checks. */
+	for (size_t i = 0; i < ni; i++) {
+		uv_key key;
+		memset(&key, 0, sizeof key); /* no padding bytes in the compared key */
+		key.vertex = c->face_indices[i];
+		key.uv = v2(uv[uidx[i]].x + 0.0f, uv[uidx[i]].y + 0.0f);
+		uint32_t before = c->num_uvs;
+		c->uv_indices[i] = table_id(&t, &key, sizeof key, (const unsigned char *)keys, &c->num_uvs);
+		if (c->num_uvs != before)
+			keys[c->uv_indices[i]] = key, c->uvs[c->uv_indices[i]] = key.uv;
+	}
+	mem_free(t.slot), mem_free(keys);
+	return true;
+}
+
+/* c->edges: the cage's edges, sorted and unique, for the crease checks (cage_has_edge). */
+static bool collect_edges(const cage_ctx *x, cage_data *c, size_t ni)
+{
 	c->edges = mem_alloc(ni, sizeof *c->edges);
 	if (!c->edges)
 		return cage_oom(x);
-	k = 0;
-	for (size_t f = 0; f < nf; k += sizes[f], f++)
+	const uint32_t *sizes = c->face_sizes;
+	size_t k = 0;
+	for (size_t f = 0; f < c->num_faces; k += sizes[f], f++)
 		for (uint32_t i = 0; i < sizes[f]; i++)
 			c->edges[k + i] =
 			    edge_key(c->face_indices[k + i], c->face_indices[k + (i + 1) % sizes[f]]);
+	assert(k == ni);
 	qsort(c->edges, ni, sizeof *c->edges, cmp_u64);
 	for (size_t i = 0; i < ni; i++)
 		if (c->num_edges == 0 || c->edges[c->num_edges - 1] != c->edges[i])
 			c->edges[c->num_edges++] = c->edges[i];
 	return true;
+}
+
+/* Welds positions, renumbers UVs, checks faces and collects edges. */
+static bool cage_build(const cage_ctx *x, const cage_raw *r, cage_data *c)
+{
+	size_t nv = r->positions.len, nf = r->face_sizes.len, ni = r->indices.len;
+	if (nf == 0)
+		return cage_fail(x, 0, "the file has no faces");
+	if (nv > CAGE_MAX_COUNT || nf > CAGE_MAX_COUNT || ni > CAGE_MAX_COUNT)
+		return cage_fail(x, 0, "too many vertices, faces or face corners (the limit is %u)",
+				 CAGE_MAX_COUNT);
+	if (!check_faces(x, r))
+		return false;
+	c->num_file_vertices = (uint32_t)nv;
+	c->num_faces = (uint32_t)nf;
+	c->weld = mem_alloc(nv, sizeof *c->weld);
+	c->positions = mem_alloc(nv, sizeof *c->positions);
+	c->face_sizes = mem_alloc(nf, sizeof *c->face_sizes);
+	c->face_indices = mem_alloc(ni, sizeof *c->face_indices);
+	if (!c->weld || !c->positions || !c->face_sizes || !c->face_indices)
+		return cage_oom(x);
+	memcpy(c->face_sizes, r->face_sizes.data, nf * sizeof *c->face_sizes);
+	if (!weld_positions(x, r, c) || !weld_faces(x, r, c))
+		return false;
+	if (!r->uv_missing && r->uv_indices.len == ni && !weld_uvs(x, r, c))
+		return false;
+	return collect_edges(x, c, ni);
 }
 
 /* The file's tags in welded numbers, each checked against the cage. */

@@ -3,6 +3,7 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
 #include <string.h>
 
 bool mesh_alloc(mesh *m, size_t nv, size_t nt, bool normals, bool uvs, bool tangents)
@@ -222,8 +223,17 @@ size_t mesh_remove_duplicate_triangles(mesh *m)
 	return removed;
 }
 
+bool mesh_indices_valid(const mesh *m)
+{
+	for (size_t i = 0; i < 3 * (size_t)m->num_triangles; i++)
+		if (m->indices[i] >= m->num_vertices)
+			return false;
+	return true;
+}
+
 bool mesh_generate_tangents(mesh *m)
 {
+	assert(mesh_indices_valid(m));
 	if (!m->normals || !m->uvs)
 		return false;
 	vec3 *acc = mem_calloc(m->num_vertices, 2 * sizeof(vec3));

@@ -38,6 +38,8 @@ void mesh_free(mesh *m);
 bool mesh_copy(mesh *dst, const mesh *src);
 /* Bytes held by the mesh's arrays. */
 size_t mesh_bytes(const mesh *m);
+/* Whether every index is below num_vertices (the invariant of a mesh; asserted where one is used). */
+bool mesh_indices_valid(const mesh *m);
 
 /* The POV-Ray mesh2 / mesh data: positions with per-corner index triples for positions and,
  * optionally, normals and UVs (normal_indices / uv_indices may be NULL: then the position indices

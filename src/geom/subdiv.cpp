@@ -17,6 +17,7 @@ extern "C" {
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cstdarg>
 #include <cstdio>
 #include <cmath>
@@ -228,9 +229,9 @@ void eval_point(const Bfr::Surface<float> &s, const std::vector<float> &patch, c
 	nrm[0] = nrm[1] = 0.0f, nrm[2] = 1.0f;
 }
 
-void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
+// The estimated size of the result against the memory limit; returns the triangle estimate.
+uint64_t check_budget(const subd_cage *cage, const subd_options *opt)
 {
-	validate(cage, opt);
 	size_t max_bytes = opt->max_bytes ? opt->max_bytes : SUBD_DEFAULT_MAX_BYTES;
 	uint64_t est = estimate_triangles(cage, opt);
 	if (est > UINT32_MAX / 3 || est * SUBD_BYTES_PER_TRIANGLE > max_bytes)
@@ -238,8 +239,13 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 					  "limit of %.1f MiB (lower the level or max_edge, or raise --max-memory)",
 					  (unsigned long long)est, est * (double)SUBD_BYTES_PER_TRIANGLE / 1048576.0,
 					  max_bytes / 1048576.0));
+	return est;
+}
 
-	// Topology.
+// The cage's topology as OpenSubdiv's refiner: faces, creases and corners (one entry each),
+// holes, face-varying UVs, the boundary rule and the scheme. Every crease must be a cage edge.
+std::unique_ptr<Far::TopologyRefiner> make_refiner(const subd_cage *cage)
+{
 	std::vector<int> sizes(cage->face_sizes, cage->face_sizes + cage->num_faces);
 	size_t nidx = 0;
 	for (int s : sizes)
@@ -279,8 +285,7 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 	Sdc::SchemeType scheme = cage->scheme == SUBD_LOOP ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
 	typedef Far::TopologyRefinerFactory<Far::TopologyDescriptor> Factory;
 	osd_errors.clear();
-	std::unique_ptr<Far::TopologyRefiner> refiner(
-		Factory::Create(desc, Factory::Options(scheme, sdc)));
+	std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(scheme, sdc)));
 	if (!refiner)
 		throw subd_failure("invalid cage topology" + (osd_errors.empty() ? std::string() : ": " + osd_errors));
 	const Far::TopologyLevel &base = refiner->GetLevel(0);
@@ -290,61 +295,49 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 		    base.FindEdge(a, b) == Far::INDEX_INVALID)
 			throw subd_failure(format("crease %zu: vertices %d and %d are not an edge of the cage", c, a, b));
 	}
+	return refiner;
+}
 
-	typedef Bfr::RefinerSurfaceFactory<> SurfaceFactory;
-	SurfaceFactory::Options fopts;
-	if (cage->uvs)
-		fopts.SetDefaultFVarID(0);
-	SurfaceFactory factory(*refiner, fopts);
-	Bfr::Tessellation::Options topts;
-	topts.SetFacetSize(3);
-
-	const bool uvs = cage->uvs != nullptr;
-	const float *cage_pos = &cage->positions[0].x;
-	const float *cage_uv = uvs ? &cage->uvs[0].x : nullptr;
+// The mesh being made, face after face, and the scratch each face reuses.
+struct tessellator {
+	const subd_cage *cage;
+	const subd_options *opt;
+	const Far::TopologyLevel &base;
+	bool uvs;
 	// Shared points (cage vertices and edge interiors): position and normal. Without UVs they are
 	// the output vertices themselves, and interior points are appended to the same table.
 	std::vector<float> ppos, pnrm;
 	std::vector<float> opos, onrm, ouv; // output vertices (UV mode only)
 	std::vector<uint32_t> tris;
-	std::vector<int> shared_vertex(cage->num_vertices, -1);
-	std::vector<shared_edge> shared_edges((size_t)base.GetNumEdges());
+	std::vector<int> shared_vertex;		 // point-table index of each cage vertex, -1: none yet
+	std::vector<shared_edge> shared_edges; // per cage edge
 	Bfr::Surface<float> psurf, uvsurf;
-	std::vector<float> patch, uvpatch, coords, facet_buf;
+	std::vector<float> patch, uvpatch, coords;
 	std::vector<int> facets, point_of; // point_of: point-table index of each coord (boundary)
 	std::vector<int> rates;
-	tris.reserve((size_t)est * 3);
 
-	auto new_point = [&](const float uv[2]) {
+	tessellator(const subd_cage *c, const subd_options *o, const Far::TopologyLevel &b)
+	    : cage(c), opt(o), base(b), uvs(c->uvs != nullptr), shared_vertex(c->num_vertices, -1),
+	      shared_edges((size_t)b.GetNumEdges())
+	{
+	}
+
+	// A point of the current face's surface at uv, appended to the point table; its index.
+	int new_point(const float uv[2])
+	{
 		float p[3], n[3];
 		eval_point(psurf, patch, uv, p, n);
 		ppos.insert(ppos.end(), p, p + 3);
 		pnrm.insert(pnrm.end(), n, n + 3);
 		return (int)(ppos.size() / 3 - 1);
-	};
+	}
 
-	for (int face = 0; face < factory.GetNumFaces(); face++) {
-		bool ok = uvs ? factory.InitSurfaces(face, &psurf, &uvsurf) : factory.InitVertexSurface(face, &psurf);
-		if (!ok || !psurf.IsValid())
-			continue; // a hole, or a boundary face without a limit surface
-		Far::ConstIndexArray fv = base.GetFaceVertices(face), fe = base.GetFaceEdges(face);
+	// point_of for the nb boundary coords: for each face vertex its point, then the points of
+	// the edge to the next, made by the first face to reach them and reused (reversed when the
+	// edge runs the other way) by the second.
+	void share_boundary(Far::ConstIndexArray fv, Far::ConstIndexArray fe, int nb, int face)
+	{
 		int n = fv.size();
-		rates.resize(n);
-		for (int i = 0; i < n; i++)
-			rates[i] = edge_rate(opt, cage->positions[fv[i]], cage->positions[fv[(i + 1) % n]]);
-		Bfr::Tessellation tess(psurf.GetParameterization(), n, rates.data(), topts);
-		if (!tess.IsValid())
-			throw subd_failure(format("face %d cannot be tessellated", face));
-		int nc = tess.GetNumCoords(), nb = tess.GetNumBoundaryCoords();
-		coords.resize(2 * (size_t)nc);
-		tess.GetCoords(coords.data());
-		patch.resize((size_t)psurf.GetNumPatchPoints() * 3);
-		psurf.PreparePatchPoints(cage_pos, 3, patch.data(), 3);
-		if (uvs) {
-			uvpatch.resize((size_t)uvsurf.GetNumPatchPoints() * 2);
-			uvsurf.PreparePatchPoints(cage_uv, 2, uvpatch.data(), 2);
-		}
-		// Boundary: for each face vertex, its point, then the points of the edge to the next.
 		point_of.assign(nb, -1);
 		int b = 0;
 		for (int i = 0; i < n; i++) {
@@ -366,45 +359,104 @@ void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
 		}
 		if (b != nb)
 			throw subd_failure(format("face %d: unexpected tessellation boundary", face));
-		// Output vertices of this face's coords.
-		std::vector<int> &local = point_of; // extended below to all coords
+	}
+
+	// point_of extended to all nc coords, each the index of its output vertex: without UVs the
+	// interior points join the point table; with UVs every coord gets an output vertex of its own
+	// (the boundary ones copied from the shared points) with the UV evaluated there.
+	void face_vertices(int nb, int nc)
+	{
+		std::vector<int> &local = point_of;
 		local.resize(nc);
 		if (!uvs) {
 			for (int c = nb; c < nc; c++)
 				local[c] = new_point(&coords[2 * c]);
-		} else {
-			for (int c = 0; c < nc; c++) {
-				float p[3], nn[3], t[2];
-				if (c < nb) {
-					std::memcpy(p, &ppos[3 * (size_t)local[c]], sizeof p);
-					std::memcpy(nn, &pnrm[3 * (size_t)local[c]], sizeof nn);
-				} else {
-					eval_point(psurf, patch, &coords[2 * c], p, nn);
-				}
-				uvsurf.Evaluate(&coords[2 * c], uvpatch.data(), 2, t);
-				local[c] = (int)(opos.size() / 3);
-				opos.insert(opos.end(), p, p + 3);
-				onrm.insert(onrm.end(), nn, nn + 3);
-				ouv.insert(ouv.end(), t, t + 2);
-			}
+			return;
 		}
+		for (int c = 0; c < nc; c++) {
+			float p[3], nn[3], t[2];
+			if (c < nb) {
+				std::memcpy(p, &ppos[3 * (size_t)local[c]], sizeof p);
+				std::memcpy(nn, &pnrm[3 * (size_t)local[c]], sizeof nn);
+			} else {
+				eval_point(psurf, patch, &coords[2 * c], p, nn);
+			}
+			uvsurf.Evaluate(&coords[2 * c], uvpatch.data(), 2, t);
+			local[c] = (int)(opos.size() / 3);
+			opos.insert(opos.end(), p, p + 3);
+			onrm.insert(onrm.end(), nn, nn + 3);
+			ouv.insert(ouv.end(), t, t + 2);
+		}
+	}
+
+	// One cage face: its surfaces, a tessellation at its edges' rates, its points and triangles.
+	void face(const Bfr::RefinerSurfaceFactory<> &factory, const Bfr::Tessellation::Options &topts, int face)
+	{
+		bool ok = uvs ? factory.InitSurfaces(face, &psurf, &uvsurf) : factory.InitVertexSurface(face, &psurf);
+		if (!ok || !psurf.IsValid())
+			return; // a hole, or a boundary face without a limit surface
+		Far::ConstIndexArray fv = base.GetFaceVertices(face), fe = base.GetFaceEdges(face);
+		int n = fv.size();
+		rates.resize(n);
+		for (int i = 0; i < n; i++)
+			rates[i] = edge_rate(opt, cage->positions[fv[i]], cage->positions[fv[(i + 1) % n]]);
+		Bfr::Tessellation tess(psurf.GetParameterization(), n, rates.data(), topts);
+		if (!tess.IsValid())
+			throw subd_failure(format("face %d cannot be tessellated", face));
+		int nc = tess.GetNumCoords(), nb = tess.GetNumBoundaryCoords();
+		coords.resize(2 * (size_t)nc);
+		tess.GetCoords(coords.data());
+		patch.resize((size_t)psurf.GetNumPatchPoints() * 3);
+		psurf.PreparePatchPoints(&cage->positions[0].x, 3, patch.data(), 3);
+		if (uvs) {
+			uvpatch.resize((size_t)uvsurf.GetNumPatchPoints() * 2);
+			uvsurf.PreparePatchPoints(&cage->uvs[0].x, 2, uvpatch.data(), 2);
+		}
+		share_boundary(fv, fe, nb, face);
+		face_vertices(nb, nc);
 		int nf = tess.GetNumFacets();
 		facets.resize(3 * (size_t)nf);
 		tess.GetFacets(facets.data());
-		for (int k = 0; k < 3 * nf; k++)
-			tris.push_back((uint32_t)local[facets[k]]);
+		for (int k = 0; k < 3 * nf; k++) {
+			assert(facets[k] >= 0 && facets[k] < nc);
+			tris.push_back((uint32_t)point_of[facets[k]]);
+		}
 	}
+
+	// The finished vertices and triangles copied into out.
+	void copy_to(mesh *out) const
+	{
+		const std::vector<float> &vp = uvs ? opos : ppos, &vn = uvs ? onrm : pnrm;
+		size_t nv = vp.size() / 3, nt = tris.size() / 3;
+		if (!mesh_alloc(out, nv, nt, true, uvs, false))
+			throw std::bad_alloc();
+		std::memcpy(out->positions, vp.data(), nv * sizeof(vec3));
+		std::memcpy(out->normals, vn.data(), nv * sizeof(vec3));
+		if (uvs)
+			std::memcpy(out->uvs, ouv.data(), nv * sizeof(vec2));
+		std::memcpy(out->indices, tris.data(), tris.size() * sizeof(uint32_t));
+	}
+};
+
+void tessellate(const subd_cage *cage, const subd_options *opt, mesh *out)
+{
+	validate(cage, opt);
+	uint64_t est = check_budget(cage, opt);
+	std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(cage);
+	typedef Bfr::RefinerSurfaceFactory<> SurfaceFactory;
+	SurfaceFactory::Options fopts;
+	if (cage->uvs)
+		fopts.SetDefaultFVarID(0);
+	SurfaceFactory factory(*refiner, fopts);
+	Bfr::Tessellation::Options topts;
+	topts.SetFacetSize(3);
+	tessellator t(cage, opt, refiner->GetLevel(0));
+	t.tris.reserve((size_t)est * 3);
+	for (int face = 0; face < factory.GetNumFaces(); face++)
+		t.face(factory, topts, face);
 	if (!osd_errors.empty())
 		throw subd_failure(osd_errors);
-	const std::vector<float> &vp = uvs ? opos : ppos, &vn = uvs ? onrm : pnrm;
-	size_t nv = vp.size() / 3, nt = tris.size() / 3;
-	if (!mesh_alloc(out, nv, nt, true, uvs, false))
-		throw std::bad_alloc();
-	std::memcpy(out->positions, vp.data(), nv * sizeof(vec3));
-	std::memcpy(out->normals, vn.data(), nv * sizeof(vec3));
-	if (uvs)
-		std::memcpy(out->uvs, ouv.data(), nv * sizeof(vec2));
-	std::memcpy(out->indices, tris.data(), tris.size() * sizeof(uint32_t));
+	t.copy_to(out);
 }
 
 } // namespace

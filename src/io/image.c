@@ -6,6 +6,7 @@
 #include "io/exr.h"
 
 #include <OpenEXR/openexr.h>
+#include <assert.h>
 #include <errno.h>
 #include <jpeglib.h>
 #include <jerror.h>
@@ -44,9 +45,11 @@ void image_bilinear(const image *img, float u, float v, float out[4])
 	float tx = x - fx, ty = y - fy;
 	int x0 = (int)fx, y0 = (int)fy;
 	int xs[2] = {x0, x0 + 1}, ys[2] = {y0, y0 + 1};
+	assert(img->width > 0 && img->height > 0); /* image_load refuses an empty image */
 	for (int k = 0; k < 2; k++) {
 		xs[k] = (xs[k] % img->width + img->width) % img->width;
 		ys[k] = (ys[k] % img->height + img->height) % img->height;
+		assert(xs[k] >= 0 && xs[k] < img->width && ys[k] >= 0 && ys[k] < img->height);
 	}
 	float w[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
 	for (int c = 0; c < 4; c++)

@@ -3,6 +3,7 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
 #include <string.h>
 
 bool film_init(film *f, int width, int height, int x0, int y0, int x1, int y1)
@@ -64,6 +65,7 @@ bool film_pixel_add(film_pixel *p, const render_sample *s)
 
 void film_commit(film *f, uint32_t spp)
 {
+	assert(spp > f->spp); /* a pass adds samples */
 	film_pixel *t = f->acc;
 	f->acc = f->work;
 	f->work = t;

@@ -9,6 +9,8 @@
 #include "sss/disk.h"
 #include "sss/probe.h"
 
+#include <assert.h>
+
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
 
@@ -36,8 +38,8 @@ static vec3 to_world(const frame *f, vec3 v)
  * triangle (barycentrics), not as o + t d, for the offset to cover their error. */
 static vec3 offset_origin(vec3 p, float scale, vec3 n_out) { return bvh_offset_scaled(p, n_out, scale); }
 
-/* Nearest surface: the scene's or a sphere light's. *light_hit receives the sphere light's index
- * when that is nearer, else -1. */
+/* Nearest surface: the scene's or a sphere light's. *sphere_light receives the sphere light's
+ * index when that is nearer, else -1. */
 static bool trace(const render_scene *s, const render_ray *ray, render_hit *hit, int *sphere_light)
 {
 	bool found = s->intersect(s->user, ray, 0.0f, INFINITY, hit);
@@ -136,6 +138,7 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 	sss_circle_hit ch[RENDER_SSS_MAX_HITS];
 	bool more = false;
 	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS, &more) : 0;
+	assert(k <= RENDER_SSS_MAX_HITS);
 	if (more)
 		out->sss_overflow++;
 	float side = v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f;
@@ -150,6 +153,7 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 		out->sss_nohit++;
 		return false;
 	}
+	assert((uint32_t)i < k);
 	e->hit = hits[i];
 	e->weight = w;
 	return true;
@@ -199,6 +203,7 @@ static bool disk_entry(const render_scene *s, const render_sss *m, const render_
 	sss_disk_hit hits[SSS_DISK_MAX_HITS];
 	bool more;
 	int k = sss_disk_gather(&m->profile, mm_per_unit, &f, &q, &pr, hits, SSS_DISK_MAX_HITS, &more);
+	assert(k >= 0 && k <= SSS_DISK_MAX_HITS);
 	if (more)
 		out->sss_overflow++;
 	vec3 w;
@@ -208,6 +213,7 @@ static bool disk_entry(const render_scene *s, const render_sss *m, const render_
 		out->sss_nohit++;
 		return false;
 	}
+	assert(i < k && i < n); /* the chosen hit was logged: log[i] is its surface */
 	e->hit = log[i];
 	e->weight = w;
 	return true;
@@ -289,35 +295,168 @@ static float sss_branch_prob(float fresnel, vec3 albedo)
 	return fresnel < 1.0f ? fmaxf(p, RENDER_SSS_MIN_PROB) : 0.0f;
 }
 
+/* What a path carries from one scattering event to the next. */
+typedef struct path {
+	vec3 radiance, beta; /* gathered so far; throughput */
+	float prev_pdf;	     /* of the BSDF sample that left prev_p */
+	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
+	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
+} path;
+
+/* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
+typedef struct vertex {
+	bsdf_params b;
+	frame f;
+	vec3 ng_out;   /* geometric normal on the side of wo */
+	vec3 p;	       /* rays leave from p, offset by p_scale (offset_origin) */
+	float p_scale;
+	vec3 wo_local; /* the outgoing direction in f */
+} vertex;
+
+/* A path that escapes the scene sees every infinite light, weighed against the BSDF sample. */
+static inline void add_escaped(const render_scene *s, const render_settings *set, int bounce, vec3 d, path *pa)
+{
+	const light_set *ls = s->lights;
+	for (size_t k = 0; ls && k < ls->infinite_count; k++) {
+		const light *l = &ls->lights[ls->infinite[k]];
+		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
+		float w = emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
+		pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
+	}
+}
+
+/* The emission of the light the surface hit belongs to (an emissive mesh or a sphere light). */
+static inline void add_emitted(const render_scene *s, const render_settings *set, int bounce, vec3 d,
+			       const render_hit *hit, path *pa)
+{
+	const light_set *ls = s->lights;
+	if (hit->light < 0 || !ls || (size_t)hit->light >= ls->count)
+		return;
+	const light *l = &ls->lights[hit->light];
+	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, hit->t, hit->ng);
+	float w = emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
+	pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, l->color), w));
+}
+
+/* The vertex at a surface hit from direction -wo: the material shaded there, the frame about the
+ * shading normal turned to wo's side. */
+static inline void make_vertex(const render_scene *s, const render_hit *hit, vec3 wo, vertex *v)
+{
+	v->b = s->materials[hit->material];
+	vec3 ns = hit->ns;
+	if (s->shade)
+		s->shade(s->user, hit, &v->b, &ns);
+	v->ng_out = v3_dot(hit->ng, wo) >= 0.0f ? hit->ng : v3_neg(hit->ng);
+	v->f.n = v3_dot(ns, v->ng_out) >= 0.0f ? ns : v3_neg(ns);
+	/* A shading normal turned away from the viewer (strong normal maps, coarse meshes)
+	 * would leave wo below the BSDF's horizon: shade with the true normal instead. */
+	if (v3_dot(v->f.n, wo) <= 0.0f)
+		v->f.n = v->ng_out;
+	v3_basis(v->f.n, &v->f.t, &v->f.b);
+	v->wo_local = to_local(&v->f, wo);
+	v->p = hit->p;
+	v->p_scale = hit->scale;
+}
+
+/* Next-event estimation at v through the BSDF b (v's own, or a part of it). */
+static inline void add_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
+			      const vertex *v, rng *g, path *pa)
+{
+	if (set->mode != RENDER_BSDF_ONLY)
+		pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p,
+									       v->p_scale, v->wo_local, g)));
+}
+
+/* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
+ * leaves it through the entry lobe, outside the medium. fr is the coat's Fresnel at the exit,
+ * p_sss the branch's probability. */
+static inline void enter_at(const render_scene *s, const render_settings *set, const render_sss *sm,
+			    const sss_entry *e, float fr, float p_sss, vertex *v, rng *g, path *pa)
+{
+	bsdf_params at = s->materials[e->hit.material];
+	vec3 ns_i = e->hit.ns;
+	if (s->shade)
+		s->shade(s->user, &e->hit, &at, &ns_i);
+	vec3 w = v3_scale(e->weight, (1.0f - fr) / p_sss);
+	/* Diffuse colour blurring: the albedo texture at x_i, not at x. */
+	if (sm->textured)
+		w = v3_mul(w, v3(ratio_or_zero(at.diffuse.x, sm->albedo.x), ratio_or_zero(at.diffuse.y, sm->albedo.y),
+				 ratio_or_zero(at.diffuse.z, sm->albedo.z)));
+	pa->beta = v3_mul(pa->beta, w);
+	v->p = e->hit.p;
+	v->p_scale = e->hit.scale;
+	v->ng_out = e->hit.ng;
+	v->f.n = v3_dot(ns_i, v->ng_out) > 0.0f ? ns_i : v->ng_out;
+	v3_basis(v->f.n, &v->f.t, &v->f.b);
+	v->wo_local = v3(0.0f, 0.0f, 1.0f);
+	v->b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm), .alpha = 1.0f, .ior = sm->ior};
+	add_direct(s, set, &v->b, v, g, pa);
+}
+
+/* Scattering at a subsurface material: the coat's reflection is a lobe of its own (light sampled
+ * here, and v keeps only it), its transmission the BSSRDF (v moves to the entry point). False
+ * when the BSSRDF found no entry: the path ends. */
+static inline bool sss_scatter(const render_scene *s, const render_settings *set, const render_sss *sm,
+			       const render_hit *hit, vec3 wo, vertex *v, rng *g, path *pa, render_sample *out)
+{
+	float fr = bsdf_fresnel_dielectric(v->wo_local.z, sm->ior);
+	float p_sss = sss_branch_prob(fr, v->b.diffuse);
+	bsdf_params spec = v->b;
+	spec.diffuse = v3s(0.0f);
+	add_direct(s, set, &spec, v, g, pa);
+	if (!(rng_float(g) < p_sss)) {
+		v->b = spec;
+		pa->beta = v3_scale(pa->beta, 1.0f / (1.0f - p_sss));
+		return true;
+	}
+	sss_entry e;
+	if (!sss_find_entry(s, set, sm, hit, v->f.n, v->ng_out, wo, g, &e, out))
+		return false;
+	enter_at(s, set, sm, &e, fr, p_sss, v, g, pa);
+	return true;
+}
+
+/* The BSDF sample that continues the path from v, and Russian roulette; false when the path ends.
+ * *ray becomes the next ray. */
+static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, render_ray *ray)
+{
+	float u_lobe = rng_float(g);
+	vec2 u = v2(rng_float(g), rng_float(g));
+	vec3 wi_local, fval;
+	float pdf;
+	if (!bsdf_sample(&v->b, v->wo_local, u_lobe, u, &wi_local, &fval, &pdf))
+		return false;
+	vec3 wi = to_world(&v->f, wi_local);
+	if (v3_dot(wi, v->ng_out) <= 0.0f)
+		return false;
+	pa->beta = v3_mul(pa->beta, v3_scale(fval, fabsf(wi_local.z) / pdf));
+	pa->prev_pdf = pdf;
+	pa->prev_delta = false;
+	pa->prev_p = v->p, pa->prev_n = v->ng_out;
+	if (bounce + 1 >= RENDER_RR_DEPTH) {
+		float q = fminf(1.0f, v3_max_comp(pa->beta));
+		if (!(rng_float(g) < q))
+			return false;
+		pa->beta = v3_scale(pa->beta, 1.0f / q);
+	}
+	*ray = (render_ray){offset_origin(v->p, v->p_scale, v->ng_out), v3_normalize(wi)};
+	return true;
+}
+
 render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
 {
+	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
-	vec3 radiance = v3s(0.0f), beta = v3s(1.0f);
-	float prev_pdf = 0.0f;
-	bool prev_delta = true; /* the camera: whatever it sees directly counts fully */
-	vec3 prev_p = ray.o, prev_n = v3s(0.0f); /* the vertex a BSDF sample left, its ng_out */
-	const light_set *ls = s->lights;
+	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
+	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f)};
 	for (int bounce = 0;; bounce++) {
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		if (!trace(s, &ray, &hit, &sphere_light)) {
-			for (size_t k = 0; ls && k < ls->infinite_count; k++) {
-				const light *l = &ls->lights[ls->infinite[k]];
-				float lp = light_set_prob(ls, ls->infinite[k]) *
-					   light_pdf(l, prev_p, prev_n, ray.d, INFINITY, v3s(0));
-				float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
-				radiance =
-				    v3_add(radiance, v3_scale(v3_mul(beta, light_radiance_dir(l, ray.d)), w));
-			}
+			add_escaped(s, set, bounce, ray.d, &pa);
 			break;
 		}
-		if (hit.light >= 0 && ls && (size_t)hit.light < ls->count) {
-			const light *l = &ls->lights[hit.light];
-			float lp = light_set_prob(ls, (size_t)hit.light) *
-				   light_pdf(l, prev_p, prev_n, ray.d, hit.t, hit.ng);
-			float w = emitter_weight(set, bounce, prev_delta, prev_pdf, lp);
-			radiance = v3_add(radiance, v3_scale(v3_mul(beta, l->color), w));
-		}
+		add_emitted(s, set, bounce, ray.d, &hit, &pa);
 		if (bounce == 0) {
 			out.depth = hit.t;
 			out.normal = v3_dot(hit.ns, ray.d) > 0.0f ? v3_neg(hit.ns) : hit.ns;
@@ -325,92 +464,21 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (sphere_light >= 0 || hit.material < 0 || (size_t)hit.material >= s->material_count ||
 		    bounce >= set->max_trace_level)
 			break;
-
-		bsdf_params b = s->materials[hit.material];
-		vec3 ns = hit.ns;
-		if (s->shade)
-			s->shade(s->user, &hit, &b, &ns);
-		if (bounce == 0)
-			out.albedo = bsdf_albedo(&b);
 		vec3 wo = v3_neg(ray.d);
-		vec3 ng_out = v3_dot(hit.ng, wo) >= 0.0f ? hit.ng : v3_neg(hit.ng);
-		frame f;
-		f.n = v3_dot(ns, ng_out) >= 0.0f ? ns : v3_neg(ns);
-		/* A shading normal turned away from the viewer (strong normal maps, coarse meshes)
-		 * would leave wo below the BSDF's horizon: shade with the true normal instead. */
-		if (v3_dot(f.n, wo) <= 0.0f)
-			f.n = ng_out;
-		v3_basis(f.n, &f.t, &f.b);
-		vec3 wo_local = to_local(&f, wo);
-		vec3 p = hit.p;
-		float p_scale = hit.scale;
-
+		vertex v;
+		make_vertex(s, &hit, wo, &v);
+		if (bounce == 0)
+			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
 		if (sm) {
-			/* The coat's reflection is a lobe of its own; its transmission, the BSSRDF. */
-			float fr = bsdf_fresnel_dielectric(wo_local.z, sm->ior);
-			float p_sss = sss_branch_prob(fr, b.diffuse);
-			bsdf_params spec = b;
-			spec.diffuse = v3s(0.0f);
-			if (set->mode != RENDER_BSDF_ONLY)
-				radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &spec, &f, ng_out, p,
-										     p_scale, wo_local, g)));
-			if (!(rng_float(g) < p_sss)) {
-				b = spec;
-				beta = v3_scale(beta, 1.0f / (1.0f - p_sss));
-			} else {
-				sss_entry e;
-				if (!sss_find_entry(s, set, sm, &hit, f.n, ng_out, wo, g, &e, &out))
-					break;
-				bsdf_params at = s->materials[e.hit.material];
-				vec3 ns_i = e.hit.ns;
-				if (s->shade)
-					s->shade(s->user, &e.hit, &at, &ns_i);
-				vec3 w = v3_scale(e.weight, (1.0f - fr) / p_sss);
-				/* Diffuse colour blurring: the albedo texture at x_i, not at x. */
-				if (sm->textured)
-					w = v3_mul(w, v3(ratio_or_zero(at.diffuse.x, sm->albedo.x),
-							 ratio_or_zero(at.diffuse.y, sm->albedo.y),
-							 ratio_or_zero(at.diffuse.z, sm->albedo.z)));
-				beta = v3_mul(beta, w);
-				/* From here on the path leaves x_i through the entry lobe, outside the medium. */
-				p = e.hit.p;
-				p_scale = e.hit.scale;
-				ng_out = e.hit.ng;
-				f.n = v3_dot(ns_i, ng_out) > 0.0f ? ns_i : ng_out;
-				v3_basis(f.n, &f.t, &f.b);
-				wo_local = v3(0.0f, 0.0f, 1.0f);
-				b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm),
-						  .alpha = 1.0f, .ior = sm->ior};
-				if (set->mode != RENDER_BSDF_ONLY)
-					radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out,
-											     p, p_scale, wo_local, g)));
-			}
-		} else if (set->mode != RENDER_BSDF_ONLY) {
-			radiance = v3_add(radiance, v3_mul(beta, sample_direct(s, set, &b, &f, ng_out, p, p_scale, wo_local, g)));
-		}
-
-		float u_lobe = rng_float(g);
-		vec2 u = v2(rng_float(g), rng_float(g));
-		vec3 wi_local, fval;
-		float pdf;
-		if (!bsdf_sample(&b, wo_local, u_lobe, u, &wi_local, &fval, &pdf))
-			break;
-		vec3 wi = to_world(&f, wi_local);
-		if (v3_dot(wi, ng_out) <= 0.0f)
-			break;
-		beta = v3_mul(beta, v3_scale(fval, fabsf(wi_local.z) / pdf));
-		prev_pdf = pdf;
-		prev_delta = false;
-		prev_p = p, prev_n = ng_out;
-		if (bounce + 1 >= RENDER_RR_DEPTH) {
-			float q = fminf(1.0f, v3_max_comp(beta));
-			if (!(rng_float(g) < q))
+			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-			beta = v3_scale(beta, 1.0f / q);
+		} else {
+			add_direct(s, set, &v.b, &v, g, &pa);
 		}
-		ray = (render_ray){offset_origin(p, p_scale, ng_out), v3_normalize(wi)};
+		if (!continue_path(&v, bounce, g, &pa, &ray))
+			break;
 	}
-	out.radiance = radiance;
+	out.radiance = pa.radiance;
 	return out;
 }

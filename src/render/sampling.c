@@ -4,6 +4,7 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
 #include <string.h>
 
 vec2 render_concentric_disk(vec2 u)
@@ -104,6 +105,7 @@ void render_distrib1d_free(render_distrib1d *d)
 /* The cell i with cdf[i] <= u < cdf[i+1], skipping empty cells. */
 static size_t find_cell(const render_distrib1d *d, double u)
 {
+	assert(d->n > 0); /* render_distrib1d_init refuses n = 0 */
 	size_t lo = 0, hi = d->n; /* invariant: cdf[lo] <= u, answer in [lo, hi) */
 	while (hi - lo > 1) {
 		size_t mid = lo + (hi - lo) / 2;
@@ -112,6 +114,7 @@ static size_t find_cell(const render_distrib1d *d, double u)
 		else
 			hi = mid;
 	}
+	assert(lo < d->n);
 	return lo;
 }
 
@@ -185,6 +188,7 @@ vec2 render_distrib2d_sample(const render_distrib2d *d, vec2 u, float *pdf)
 	float pv, pu;
 	size_t row;
 	float y = render_distrib1d_sample(&d->marginal, u.y, &pv, &row);
+	assert(row < d->nv);
 	float x = render_distrib1d_sample(&d->rows[row], u.x, &pu, NULL);
 	*pdf = pv * pu;
 	return v2(x, y);

@@ -5,6 +5,7 @@
 
 #include "base/mem.h"
 
+#include <assert.h>
 #include <pthread.h>
 #include <time.h>
 #include <unistd.h>
@@ -54,6 +55,7 @@ static bool interrupted(const render_job *job)
 /* Renders one tile's pixels for samples [s0, s1) into film->work; false when interrupted. */
 static bool render_tile(pool *p, int tile)
 {
+	assert(tile >= 0 && tile < p->tile_count);
 	const render_job *job = p->job;
 	film *f = p->film;
 	int tx = tile % p->tiles_x, ty = tile / p->tiles_x;
@@ -149,6 +151,98 @@ static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t la
 	return (uint32_t)want;
 }
 
+/* Starts up to `threads` workers on p, their ids in tid; returns how many started. */
+static int pool_start(pool *p, pthread_t *tid, int threads)
+{
+	pthread_mutex_init(&p->mu, NULL);
+	pthread_cond_init(&p->start, NULL);
+	pthread_cond_init(&p->done, NULL);
+	int started = 0;
+	while (started < threads && pthread_create(&tid[started], NULL, worker, p) == 0)
+		started++;
+	return started;
+}
+
+/* Tells the `started` workers to quit, joins them and destroys p's mutex and conditions. */
+static void pool_stop(pool *p, pthread_t *tid, int started)
+{
+	pthread_mutex_lock(&p->mu);
+	p->quit = true;
+	pthread_cond_broadcast(&p->start);
+	pthread_mutex_unlock(&p->mu);
+	for (int i = 0; i < started; i++)
+		pthread_join(tid[i], NULL);
+	pthread_mutex_destroy(&p->mu);
+	pthread_cond_destroy(&p->start);
+	pthread_cond_destroy(&p->done);
+}
+
+/* Waits (holding p->mu) for the workers to finish the pass, reporting progress every
+ * RENDER_PROGRESS_PERIOD_S. npix: the region's pixel count; t0: when the render started. */
+static void wait_pass(pool *p, double t0, double npix)
+{
+	const render_job *job = p->job;
+	const film *f = p->film;
+	while (p->active > 0) {
+		struct timespec ts;
+		clock_gettime(CLOCK_REALTIME, &ts);
+		long ns = ts.tv_nsec + (long)(RENDER_PROGRESS_PERIOD_S * 1e9);
+		ts.tv_sec += ns / 1000000000L;
+		ts.tv_nsec = ns % 1000000000L;
+		pthread_cond_timedwait(&p->done, &p->mu, &ts);
+		if (job->progress && p->active > 0) {
+			double el = now_s() - t0;
+			double done_px = (double)f->spp * npix + (double)atomic_load(&p->samples_done);
+			double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
+			if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
+				frac = el / job->time_budget_s;
+			report_progress(job, frac > 1.0 ? 1.0 : frac, el > 0 ? done_px / el : 0.0, el, false);
+		}
+	}
+}
+
+/* Runs samples [film->spp, film->spp + n) of every tile on the `workers` started; true when
+ * every tile completed (false: interrupted, the film's work buffer is to be discarded). */
+static bool run_pass(pool *p, int workers, uint32_t n, double t0, double npix)
+{
+	assert(workers > 0 && n > 0);
+	pthread_mutex_lock(&p->mu);
+	p->s0 = p->film->spp;
+	p->s1 = p->film->spp + n;
+	atomic_store(&p->next_tile, 0);
+	atomic_store(&p->tiles_done, 0);
+	atomic_store(&p->samples_done, 0);
+	atomic_store(&p->dropped, 0);
+	atomic_store(&p->sss_searches, 0);
+	atomic_store(&p->sss_nohit, 0);
+	atomic_store(&p->sss_overflow, 0);
+	p->active = workers;
+	p->generation++;
+	pthread_cond_broadcast(&p->start);
+	wait_pass(p, t0, npix);
+	pthread_mutex_unlock(&p->mu);
+	assert(atomic_load(&p->tiles_done) <= p->tile_count);
+	return atomic_load(&p->tiles_done) == p->tile_count;
+}
+
+/* Commits the completed pass to the film and adds its counts to the render's. */
+static void commit_pass(pool *p, render_stats *total)
+{
+	film_commit(p->film, p->s1);
+	p->film->dropped += atomic_load(&p->dropped);
+	total->sss_searches += atomic_load(&p->sss_searches);
+	total->sss_nohit += atomic_load(&p->sss_nohit);
+	total->sss_overflow += atomic_load(&p->sss_overflow);
+	total->passes++;
+}
+
+/* Whether the render has reached its target: the samples, the time budget or RENDER_MAX_SPP. */
+static bool target_reached(const render_job *job, const film *f, double elapsed)
+{
+	return (job->spp && f->spp >= job->spp) || (job->time_budget_s > 0.0 && elapsed >= job->time_budget_s) ||
+	       f->spp >= RENDER_MAX_SPP;
+}
+
 render_status render_run(const render_job *job, film *f, render_stats *stats)
 {
 	if (!job->scene || !job->camera || (job->spp == 0 && !(job->time_budget_s > 0.0)) ||
@@ -164,23 +258,16 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	pthread_t *tid = mem_alloc((size_t)threads, sizeof *tid);
 	if (!tid)
 		return RENDER_ERROR;
-	pthread_mutex_init(&p.mu, NULL);
-	pthread_cond_init(&p.start, NULL);
-	pthread_cond_init(&p.done, NULL);
-	int started = 0;
-	while (started < threads && pthread_create(&tid[started], NULL, worker, &p) == 0)
-		started++;
+	int started = pool_start(&p, tid, threads);
 
 	render_status status = started > 0 ? RENDER_DONE : RENDER_ERROR;
 	double npix = (double)film_region_width(f) * film_region_height(f);
 	double rate_px = 0.0, last_checkpoint = t0;
 	uint32_t last = 0;
-	int passes = 0;
-	uint64_t sss_searches = 0, sss_nohit = 0, sss_overflow = 0;
+	render_stats total = {0};
 	while (status == RENDER_DONE) {
 		double elapsed = now_s() - t0;
-		if ((job->spp && f->spp >= job->spp) ||
-		    (job->time_budget_s > 0.0 && elapsed >= job->time_budget_s) || f->spp >= RENDER_MAX_SPP)
+		if (target_reached(job, f, elapsed))
 			break;
 		if (interrupted(job)) {
 			status = RENDER_INTERRUPTED;
@@ -188,46 +275,11 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 		}
 		uint32_t n = next_pass_size(job, f->spp, last, rate_px, job->time_budget_s - elapsed);
 		double pass_start = now_s();
-		pthread_mutex_lock(&p.mu);
-		p.s0 = f->spp;
-		p.s1 = f->spp + n;
-		atomic_store(&p.next_tile, 0);
-		atomic_store(&p.tiles_done, 0);
-		atomic_store(&p.samples_done, 0);
-		atomic_store(&p.dropped, 0);
-		atomic_store(&p.sss_searches, 0);
-		atomic_store(&p.sss_nohit, 0);
-		atomic_store(&p.sss_overflow, 0);
-		p.active = started;
-		p.generation++;
-		pthread_cond_broadcast(&p.start);
-		while (p.active > 0) {
-			struct timespec ts;
-			clock_gettime(CLOCK_REALTIME, &ts);
-			long ns = ts.tv_nsec + (long)(RENDER_PROGRESS_PERIOD_S * 1e9);
-			ts.tv_sec += ns / 1000000000L;
-			ts.tv_nsec = ns % 1000000000L;
-			pthread_cond_timedwait(&p.done, &p.mu, &ts);
-			if (job->progress && p.active > 0) {
-				double el = now_s() - t0;
-				double done_px = (double)f->spp * npix + (double)atomic_load(&p.samples_done);
-				double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
-				if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
-					frac = el / job->time_budget_s;
-				report_progress(job, frac > 1.0 ? 1.0 : frac, el > 0 ? done_px / el : 0.0, el, false);
-			}
-		}
-		pthread_mutex_unlock(&p.mu);
-		if (atomic_load(&p.tiles_done) < p.tile_count) { /* interrupted: discard the pass */
+		if (!run_pass(&p, started, n, t0, npix)) { /* interrupted: discard the pass */
 			status = RENDER_INTERRUPTED;
 			break;
 		}
-		film_commit(f, p.s1);
-		f->dropped += atomic_load(&p.dropped);
-		sss_searches += atomic_load(&p.sss_searches);
-		sss_nohit += atomic_load(&p.sss_nohit);
-		sss_overflow += atomic_load(&p.sss_overflow);
-		passes++;
+		commit_pass(&p, &total);
 		last = n;
 		double pass_s = now_s() - pass_start;
 		if (pass_s > 0.0)
@@ -238,30 +290,19 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 			last_checkpoint = now_s();
 		}
 	}
-	pthread_mutex_lock(&p.mu);
-	p.quit = true;
-	pthread_cond_broadcast(&p.start);
-	pthread_mutex_unlock(&p.mu);
-	for (int i = 0; i < started; i++)
-		pthread_join(tid[i], NULL);
+	pool_stop(&p, tid, started);
 	mem_free(tid);
-	pthread_mutex_destroy(&p.mu);
-	pthread_cond_destroy(&p.start);
-	pthread_cond_destroy(&p.done);
 
 	double seconds = now_s() - t0;
 	if (job->progress)
 		report_progress(job, job->spp ? (double)f->spp / job->spp : 1.0,
 				seconds > 0 ? f->spp * npix / seconds : 0.0, seconds, true);
 	if (stats) {
+		*stats = total;
 		stats->spp = f->spp;
 		stats->dropped = f->dropped;
-		stats->sss_searches = sss_searches;
-		stats->sss_nohit = sss_nohit;
-		stats->sss_overflow = sss_overflow;
 		stats->seconds = seconds;
 		stats->samples_per_s = seconds > 0.0 ? (double)f->spp * npix / seconds : 0.0;
-		stats->passes = passes;
 		stats->threads = started;
 	}
 	return status;

@@ -4,12 +4,42 @@
  * then 120 nodes, and the build splits at the median near the limit) and leaf batches of one
  * (BVH_CIRCLE_LEAF_BATCH). Circles on the head, radii up to half its size, must still equal
  * brute force exactly, having gone depth first many times (under AddressSanitizer, the queue's
- * bounds are checked too). */
+ * bounds are checked too). A row of triangles at x = 2^k, which binned SAH peels off one a level,
+ * reaches the depth limit: the build keeps within it (asserted in bvh.c) and rays agree with
+ * brute force. */
 #include "accel/bvh_internal.h"
 #include "check.h"
 #include "brute.h"
 
 long bvh_circle_queue_lifo;
+
+/* Triangles of unit size in the planes x = 2^k, k = 0 .. n - 1 (binning peels off about four a
+ * level: 100 reach depth 16 well before the last). */
+static void check_deep_tree(int n)
+{
+	mesh m;
+	CHECK(mesh_alloc(&m, 3 * (size_t)n, (size_t)n, false, false, false), "mesh of %d triangles", n);
+	for (int k = 0; k < n; k++) {
+		float x = ldexpf(1.0f, k);
+		m.positions[3 * k] = v3(x, 0, 0), m.positions[3 * k + 1] = v3(x, 1, 0), m.positions[3 * k + 2] = v3(x, 0, 1);
+		for (int c = 0; c < 3; c++)
+			m.indices[3 * k + c] = (uint32_t)(3 * k + c);
+	}
+	bvh *b = bvh_build(m.positions, m.num_vertices, m.indices, m.num_triangles);
+	CHECK(b != NULL, "bvh of %d triangles at x = 2^k", n);
+	if (b) {
+		brute bf = brute_make(&m);
+		check_rays("triangles at x = 2^k", &m, &bf, b, test_count(20000), 5);
+		/* Along +x from the origin every plane is crossed: the nearest is x = 1. */
+		bvh_ray r = {v3(0, 0.25f, 0.25f), v3(1, 0, 0), 0.0f, INFINITY};
+		bvh_hit h;
+		CHECK(bvh_intersect(b, &r, &h) && h.prim == 0 && fabsf(h.t - 1.0f) < 1e-6f, "ray along the row: prim %u t %g",
+		      h.prim, h.t);
+		brute_free(&bf);
+		bvh_free(b);
+	}
+	mesh_free(&m);
+}
 
 int main(void)
 {
@@ -36,5 +66,6 @@ int main(void)
 	}
 	mesh_free(&m);
 	diag_free(&d);
+	check_deep_tree(100);
 	return check_done("test_circle_queue");
 }

@@ -21,6 +21,8 @@ static double correlation(const double *a, const double *b, int n)
 	return sab / sqrt(saa * sbb);
 }
 
+static void below_zero(void *g) { (void)rng_below(g, 0); }
+
 int main(void)
 {
 	/* The reference pcg32 demo (pcg32-global-demo) seeded with (42, 54) prints these first six. */
@@ -82,6 +84,12 @@ int main(void)
 	}
 	for (int k = 0; k < 7; k++)
 		CHECK(seen[k] > 850 && seen[k] < 1150, "value %d seen %d times of 7000", k, seen[k]);
+	/* The boundary of rng_below: n = 1 has the one value 0; n = 0 has none, an assert refuses it. */
+	for (int i = 0; i < 100; i++)
+		CHECK(rng_below(&g, 1) == 0, "below(1) gave a value other than 0");
+#ifndef NDEBUG
+	CHECK(check_aborts(below_zero, &g), "rng_below(g, 0) did not stop at its assert");
+#endif
 	free(u0), free(ux), free(us), free(u2);
 	return check_done("test_rng");
 }

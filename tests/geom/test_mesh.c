@@ -342,6 +342,30 @@ static void check_duplicates(void)
 	mesh_free(&m);
 }
 
+static void tangents_of(void *m) { (void)mesh_generate_tangents(m); }
+
+/* The invariant of a mesh, every index below num_vertices, at its boundary; mesh_generate_tangents
+ * asserts it. */
+static void check_indices_valid(void)
+{
+	mesh m;
+	CHECK(mesh_alloc(&m, 3, 1, true, true, false), "mesh of one triangle");
+	for (int i = 0; i < 3; i++) {
+		m.positions[i] = v3(i == 1, i == 2, 0);
+		m.normals[i] = v3(0, 0, 1);
+		m.uvs[i] = v2(i == 1, i == 2);
+		m.indices[i] = (uint32_t)i;
+	}
+	CHECK(mesh_indices_valid(&m), "indices 0, 1, 2 of three vertices refused");
+	CHECK(mesh_generate_tangents(&m), "tangents of a valid mesh");
+	m.indices[2] = 3;
+	CHECK(!mesh_indices_valid(&m), "index 3 of three vertices accepted");
+#ifndef NDEBUG
+	CHECK(check_aborts(tangents_of, &m), "mesh_generate_tangents on an index out of range did not assert");
+#endif
+	mesh_free(&m);
+}
+
 int main(void)
 {
 	check_duplicates();
@@ -351,5 +375,6 @@ int main(void)
 	check_plane_view();
 	check_arrays();
 	check_import();
+	check_indices_valid();
 	return check_done("test_mesh");
 }

@@ -136,6 +136,36 @@ static void test_distributions(long n)
 	render_distrib1d_free(&d);
 }
 
+/* The cells at the ends of a 1D distribution: u = 0 and the largest float below 1 land in the
+ * first and last cell with weight (find_cell asserts its answer is a cell), empty cells are skipped. */
+static void test_distrib1d_edges(void)
+{
+	const float below_one = nextafterf(1.0f, 0.0f);
+	float one[1] = {2.0f}, four[4] = {1, 1, 1, 1}, middle[4] = {0, 1, 0, 0};
+	render_distrib1d d;
+	size_t cell;
+	float pdf;
+	CHECK(render_distrib1d_init(&d, one, 1), "one cell");
+	float x = render_distrib1d_sample(&d, below_one, &pdf, &cell);
+	CHECK(cell == 0 && x < 1.0f && pdf == 1.0f, "one cell: cell %zu, x %.9g, pdf %g", cell, x, pdf);
+	render_distrib1d_free(&d);
+	CHECK(render_distrib1d_init(&d, four, 4), "four cells");
+	render_distrib1d_sample(&d, 0.0f, NULL, &cell);
+	CHECK(cell == 0, "u = 0: cell %zu", cell);
+	x = render_distrib1d_sample(&d, below_one, NULL, &cell);
+	CHECK(cell == 3 && x < 1.0f, "u below 1: cell %zu, x %.9g", cell, x);
+	render_distrib1d_free(&d);
+	CHECK(render_distrib1d_init(&d, middle, 4), "one cell of four with weight");
+	float ends[2] = {0.0f, below_one};
+	for (int k = 0; k < 2; k++) {
+		float prob;
+		size_t i = render_distrib1d_sample_discrete(&d, ends[k], &prob);
+		CHECK(i == 1 && prob == 1.0f, "u = %.9g: cell %zu (prob %g), expected the one with weight", ends[k], i,
+		      prob);
+	}
+	render_distrib1d_free(&d);
+}
+
 int main(void)
 {
 	long n = test_samples(1000000);
@@ -146,6 +176,7 @@ int main(void)
 	chi2_sphere("uniform cone", s_cone, p_cone, &cmax, z, cmax, 10, 32, 4, n, 3);
 	test_disk_and_triangle(n);
 	test_distributions(n);
+	test_distrib1d_edges();
 
 	CHECK_NEAR(render_power_heuristic(1.0f, 1.0f), 0.5, 1e-7);
 	CHECK_NEAR(render_power_heuristic(3.0f, 1.0f), 0.9, 1e-7);

@@ -158,6 +158,8 @@ static void check_progress(uint32_t spp, double budget_s)
 	film_free(&f);
 }
 
+static void commit_nothing(void *f) { film_commit(f, ((film *)f)->spp); }
+
 int main(void)
 {
 	build_scene();
@@ -310,6 +312,12 @@ int main(void)
 	CHECK(film_init(&f, W, H, 0, 0, 0, 0), "film");
 	CHECK(render_run(&j, &f, NULL) == RENDER_ERROR, "no spp and no time budget accepted");
 	film_free(&f);
+#ifndef NDEBUG
+	/* A commit that adds no samples breaks the film's invariant: film_commit asserts. */
+	CHECK(film_init(&f, W, H, 0, 0, 0, 0), "film");
+	CHECK(check_aborts(commit_nothing, &f), "film_commit without new samples did not assert");
+	film_free(&f);
+#endif
 	mem_free(buf);
 	light_set_free(&scene.lights);
 	return check_done("test_scheduler");
