@@ -165,7 +165,8 @@ static uint32_t circle_instance(const tlas *t, uint32_t id, const tri_circle *q,
 	return n;
 }
 
-/* The circle through the tree, on every instance (all) or on those of one set. */
+/* The circle through the tree, on every instance (all) or on those of one set, in the
+ * traversal's order. */
 static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32_t set, tri_circle_hit *hits,
 			    uint32_t max_hits)
 {
@@ -198,14 +199,21 @@ static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32
 	}
 }
 
+/* The hits of several instances, each already in bvh_circle's order, put in the canonical one. */
+static uint32_t sorted(tri_circle_hit *hits, uint32_t total, uint32_t max_hits)
+{
+	tri_circle_hits_sort(hits, total < max_hits ? total : max_hits);
+	return total;
+}
+
 uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits)
 {
-	if (only != TLAS_ALL_INSTANCES)
+	if (only != TLAS_ALL_INSTANCES) /* one instance: bvh_circle's order is the canonical one */
 		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
-	return circle_tree(t, q, true, 0, hits, max_hits);
+	return sorted(hits, circle_tree(t, q, true, 0, hits, max_hits), max_hits);
 }
 
 uint32_t tlas_circle_set(const tlas *t, const tri_circle *q, uint32_t set, tri_circle_hit *hits, uint32_t max_hits)
 {
-	return circle_tree(t, q, false, set, hits, max_hits);
+	return sorted(hits, circle_tree(t, q, false, set, hits, max_hits), max_hits);
 }

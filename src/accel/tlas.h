@@ -34,7 +34,8 @@ bool tlas_occluded(const tlas *t, const bvh_ray *ray);
  * positions and normals in world space and inst set. A circle is traced in an instance's own
  * space, which keeps it a circle only under a similarity transform (DESIGN.md): instances with a
  * non-uniform scale or shear are skipped - the scene build flattens SSS objects that have one.
- * Returns the total count; at most max_hits are written. */
+ * The hits come in the canonical order (tri_circle_hits_sort: by instance index, triangle,
+ * angle), whatever the trees. Returns the total count; at most max_hits are written. */
 uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits);
 
 /* tlas_circle over the instances whose set is `set`, found through the tree: the others cost

@@ -92,11 +92,16 @@ typedef struct render_scene {
 	 * for the whole table when no material is subsurface. */
 	const render_sss *const *sss;
 	/* Every hit of the world-space circle q on the SSS volume of the surface `at` (its object or
-	 * its SSS group), filled like intersect's (t is 0) with the circle angle of each in theta.
-	 * Returns how many were written (at most max); *more tells whether there were others.
-	 * Needed when sss is not NULL. Thread-safe. */
-	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, render_hit *hits,
-			   float *theta, uint32_t max, bool *more);
+	 * its SSS group), in the canonical order (tri_circle_hits_sort, whatever the trees): its
+	 * world position pos on the circle, its angle theta, the geometric normal ng as intersect
+	 * fills render_hit's (in the shading normal's hemisphere), inst the object, prim and
+	 * barycentrics. Returns how many were written (at most max); *more tells whether there were
+	 * others. Needed when sss is not NULL. Thread-safe. */
+	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, tri_circle_hit *hits,
+			   uint32_t max, bool *more);
+	/* The full surface at a hit that circle returned, filled like intersect's (t is 0, p the
+	 * circle's position): asked for the chosen hit only. Needed with circle. Thread-safe. */
+	void (*circle_surface)(void *user, const tri_circle_hit *h, render_hit *hit);
 	/* The nearest hit with t in [tmin, tmax] of a ray on the SSS volume of the surface `at`
 	 * alone (other objects are transparent to it), filled like intersect's: the disk's probes
 	 * and the volume's walk. Needed when a material uses disk or volume. Thread-safe. */
