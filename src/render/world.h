@@ -10,6 +10,7 @@
 #include "accel/bvh.h"
 #include "accel/tlas.h"
 #include "base/diag.h"
+#include "build/build.h"
 #include "geom/mesh.h"
 #include "io/image.h"
 #include "render/camera.h"
@@ -20,26 +21,6 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
-
-/* Spheres are instances of one unit sphere per tessellation level (prim.h), the level the coarsest
- * whose silhouette stays within WORLD_SPHERE_MAX_ERROR_PX of the true one and whose edges (along
- * the equator) are at most WORLD_SPHERE_MAX_EDGE_PX long on screen, from the sphere's size and
- * distance to the camera. Shading normals are the sphere's own, so the outline shows the facets
- * first; but facets wider than a pixel also show in the shading, where the interpolated normals
- * depart from them (tests/render/furnace.sh sees it), hence the edge bound, as subdivision's
- * max_edge. */
-#define WORLD_SPHERE_MAX_ERROR_PX 0.1
-#define WORLD_SPHERE_MAX_EDGE_PX 1.0
-/* A plane reaches out from the camera until it is seen within this angle of its horizon (a
- * pixel of a 4K image 60 degrees wide is 2.7e-4 rad), whatever else the scene holds. */
-#define WORLD_PLANE_HORIZON_RAD 1e-4f
-
-typedef struct world_options {
-	int width, height;    /* the image, for the camera and adaptive tessellation */
-	size_t max_memory;    /* tessellation and per-texture limit in bytes (0: 1 GiB) */
-	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
-	scene_sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
-} world_options;
 
 /* One geometry record made triangles: its mesh and BVH (object space). */
 typedef struct world_geom {
@@ -68,16 +49,8 @@ typedef struct world_material {
 	float normal_strength;
 } world_material;
 
-typedef struct world_stats {
-	size_t triangles;       /* of the unique meshes */
-	size_t instanced_triangles; /* counting each instance */
-	size_t geometry_bytes;  /* meshes and BVHs */
-	size_t subdiv_surfaces;
-	size_t cage_file_faces; /* faces of the cages read from files (the IR counts inline ones) */
-	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
-} world_stats;
 
-typedef struct world {
+struct world {
 	world_geom *geoms;      /* indexed by scene_geom.id; then one private mesh per object (a flattened
 				 * instance, a plane); then the unit spheres of each level (prim.h) */
 	size_t n_geoms;
@@ -106,11 +79,11 @@ typedef struct world {
 	uint32_t *sss_next;     /* insts index -> the next member of its SSS group (UINT32_MAX: none) */
 	world_stats stats;
 	render_scene rs;        /* the integrator's view of this world */
-} world;
+};
 
-/* Builds w from the scene; errors (a file that cannot be read, tessellation over the memory limit,
- * a degenerate camera) are reported to d at the scene's location. On failure w is left empty. */
-bool world_build(world *w, const scene *sc, const world_options *opt, diag *d);
-void world_free(world *w);
+/* render/world.c: the top level's set of instance i (its SSS volume), which the build gives it. */
+uint32_t sss_set(const world *w, size_t i);
+/* render/world.c: w->rs, the integrator's view of the built w through world.c's callbacks. */
+void world_bind(world *w);
 
 #endif

@@ -1,5 +1,5 @@
 /* assets.c - open, stat and read the head of every file a scene names. */
-#include "render/assets.h"
+#include "build/assets.h"
 
 #include "io/image.h"
 

@@ -2,8 +2,8 @@
  * unreadable or non-regular one, or an image whose first bytes are no known format, is a scene
  * error at the string that names it. `check` and `render` both go through here, so they say the
  * same thing; the files' contents are read later by their importers. */
-#ifndef CIRCE_RENDER_ASSETS_H
-#define CIRCE_RENDER_ASSETS_H
+#ifndef CIRCE_BUILD_ASSETS_H
+#define CIRCE_BUILD_ASSETS_H
 
 #include "base/diag.h"
 #include "scene/scene.h"

@@ -1,0 +1,96 @@
+/* build.c - world_build: the stages of build_*.c in order, then the per-mesh BVHs; world_free. */
+#include "build/build_impl.h"
+
+#include "build/assets.h"
+#include "base/mem.h"
+#include "geom/prim.h"
+#include "geom/subdiv.h"
+
+#include <string.h>
+
+bool world_build(world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	memset(w, 0, sizeof *w);
+	if (!assets_open(sc, d)) /* every named file, at its string, before any work */
+		return false;
+	light_set_init(&w->lights);
+	world_options o = *opt;
+	if (!o.max_memory)
+		o.max_memory = SUBD_DEFAULT_MAX_BYTES;
+	/* Room for the scene's geometry, a private mesh per object (used only when flattened, or for a
+	 * plane), and the unit spheres. */
+	w->unit_spheres = sc->n_geoms + scene_n_objects(sc);
+	w->n_geoms = w->unit_spheres + PRIM_SPHERE_LEVELS;
+	w->geoms = mem_calloc(w->n_geoms ? w->n_geoms : 1, sizeof *w->geoms);
+	w->n_materials = sc->n_materials + 1;
+	w->bsdfs = mem_calloc(w->n_materials, sizeof *w->bsdfs);
+	w->materials = mem_calloc(w->n_materials, sizeof *w->materials);
+	w->sss = mem_calloc(w->n_materials, sizeof *w->sss);
+	w->sss_of = mem_calloc(w->n_materials, sizeof *w->sss_of);
+	if (!w->geoms || !w->bsdfs || !w->materials || !w->sss || !w->sss_of) {
+		diag_error(d, diag_noloc(), "out of memory");
+		world_free(w);
+		return false;
+	}
+	bool ok = true;
+	for (const scene_geom *g = sc->geoms; g && ok; g = g->next)
+		ok = build_geom(w, sc, g, &o, d);
+	ok = ok && build_instances(w, sc, &o, d) && build_planes(w, sc, &o, d) && check_volumes(w, sc, &o, d);
+	/* Normal maps need tangents; meshes without them get generated ones. */
+	for (const scene_material *m = sc->materials; ok && m; m = m->next)
+		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
+	if (ok)
+		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
+	for (size_t i = 0; ok && !o.geometry_only && i < w->n_insts; i++) {
+		world_inst *in = &w->insts[i];
+		mesh *m = (mesh *)&in->g->m;
+		if (w->materials[in->material].normal_map && !m->tangents && m->normals && m->uvs)
+			ok = mesh_generate_tangents(m);
+		if (!ok)
+			diag_error(d, diag_noloc(), "out of memory while generating tangents");
+	}
+	for (size_t i = 0; i < w->n_geoms; i++) {
+		world_geom *g = &w->geoms[i];
+		w->stats.triangles += g->m.num_triangles;
+		w->stats.geometry_bytes += mesh_bytes(&g->m);
+		if (!ok || o.geometry_only || !g->m.num_triangles)
+			continue;
+		g->b = bvh_build(g->m.positions, g->m.num_vertices, g->m.indices, g->m.num_triangles);
+		if (!g->b) {
+			diag_error(d, diag_noloc(), "out of memory while building the BVH");
+			ok = false;
+		} else {
+			w->stats.geometry_bytes += bvh_bytes(g->b);
+		}
+	}
+	for (size_t i = 0; i < w->n_insts; i++)
+		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
+	ok = ok && (o.geometry_only || build_top(w, d));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	if (!ok) {
+		world_free(w);
+		return false;
+	}
+	world_bind(w);
+	return true;
+}
+
+void world_free(world *w)
+{
+	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
+		mesh_free(&w->geoms[i].m);
+		bvh_free(w->geoms[i].b);
+	}
+	for (size_t i = 0; i < w->n_images; i++) {
+		image_free(w->images[i]);
+		mem_free(w->images[i]);
+		mem_free(w->image_paths[i]);
+	}
+	light_set_free(&w->lights);
+	tlas_free(w->top), tlas_free(w->shadow);
+	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group), mem_free(w->sss_next);
+	mem_free(w->sss), mem_free(w->sss_of);
+	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
+	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
+	memset(w, 0, sizeof *w);
+}

@@ -1,0 +1,50 @@
+/* build.h - the build stage: the scene IR (scene/scene.h) made a world ready to render, its
+ * geometry tessellated into meshes with their BVHs, its objects placed as instances, its
+ * materials as BSDF parameters with their textures, its lights and its camera (README.md). */
+#ifndef CIRCE_BUILD_BUILD_H
+#define CIRCE_BUILD_BUILD_H
+
+#include "base/diag.h"
+#include "scene/scene.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+
+/* Spheres are instances of one unit sphere per tessellation level (prim.h), the level the coarsest
+ * whose silhouette stays within WORLD_SPHERE_MAX_ERROR_PX of the true one and whose edges (along
+ * the equator) are at most WORLD_SPHERE_MAX_EDGE_PX long on screen, from the sphere's size and
+ * distance to the camera. Shading normals are the sphere's own, so the outline shows the facets
+ * first; but facets wider than a pixel also show in the shading, where the interpolated normals
+ * depart from them (tests/render/furnace.sh sees it), hence the edge bound, as subdivision's
+ * max_edge. */
+#define WORLD_SPHERE_MAX_ERROR_PX 0.1
+#define WORLD_SPHERE_MAX_EDGE_PX 1.0
+/* A plane reaches out from the camera until it is seen within this angle of its horizon (a
+ * pixel of a 4K image 60 degrees wide is 2.7e-4 rad), whatever else the scene holds. */
+#define WORLD_PLANE_HORIZON_RAD 1e-4f
+
+typedef struct world_options {
+	int width, height;    /* the image, for the camera and adaptive tessellation */
+	size_t max_memory;    /* tessellation and per-texture limit in bytes (0: 1 GiB) */
+	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
+	scene_sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
+} world_options;
+
+typedef struct world_stats {
+	size_t triangles;       /* of the unique meshes */
+	size_t instanced_triangles; /* counting each instance */
+	size_t geometry_bytes;  /* meshes and BVHs */
+	size_t subdiv_surfaces;
+	size_t cage_file_faces; /* faces of the cages read from files (the IR counts inline ones) */
+	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
+} world_stats;
+
+/* The world: render/world.h lays it out for the integrator's callbacks. */
+typedef struct world world;
+
+/* Builds w from the scene; errors (a file that cannot be read, tessellation over the memory limit,
+ * a degenerate camera) are reported to d at the scene's location. On failure w is left empty. */
+bool world_build(world *w, const scene *sc, const world_options *opt, diag *d);
+void world_free(world *w);
+
+#endif

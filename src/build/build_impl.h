@@ -1,0 +1,44 @@
+/* build_impl.h - what the build's files share, for src/build/ only: the stages world_build
+ * (build.c) calls in order, and the helpers more than one of them uses. */
+#ifndef CIRCE_BUILD_BUILD_IMPL_H
+#define CIRCE_BUILD_BUILD_IMPL_H
+
+#include "build/build.h"
+#include "geom/subdiv.h"
+#include "render/world.h"
+
+/* The grey of an object without a material: mid-grey diffuse. */
+#define WORLD_DEFAULT_GREY 0.5f
+
+static inline vec3 d3v(dvec3 v) { return d3_to_v3(v); }
+
+/* build_camera.c */
+subd_camera scene_view(const scene *sc, const world_options *opt);
+double view_focal_px(const subd_camera *v);
+bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d);
+
+/* build_geom.c */
+bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d);
+
+/* build_inst.c */
+bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d);
+bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d);
+bool build_top(world *w, diag *d);
+
+/* build_material.c */
+const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d);
+size_t clamp_texels(const image *img, scene_color_use use, float *rgb);
+bool build_material(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
+		    diag *d);
+
+/* build_sss.c */
+bool is_sss(const scene_material *m);
+scene_sss_method sss_method_of(const scene_material *m, const world_options *opt);
+bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm, diag *d);
+bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d);
+void build_groups(world *w, const scene *sc);
+
+/* build_light.c */
+bool build_lights(world *w, const scene *sc, diag *d);
+
+#endif

@@ -1,0 +1,102 @@
+/* build_light.c - the scene's lights, its environment and its emissive objects as one light set. */
+#include "build/build_impl.h"
+
+#include "base/mem.h"
+
+/* Adds an emissive instance as a mesh light over its world-space triangles. */
+static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, diag_loc loc)
+{
+	const mesh *m = &in->g->m;
+	vec3 *v = mem_alloc((size_t)m->num_triangles * 3, sizeof *v);
+	if (!v) {
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	for (size_t t = 0; t < (size_t)m->num_triangles * 3; t++) {
+		vec3 p = m->positions[m->indices[t]];
+		v[t] = in->identity ? p : d3v(xform_point(&in->xf, v3_to_d3(p)));
+	}
+	light l;
+	bool ok = light_mesh_init(&l, v, m->num_triangles, radiance);
+	mem_free(v);
+	if (!ok)
+		return true; /* zero area: it emits nothing */
+	in->light = (int)w->lights.count;
+	if (!light_set_add(&w->lights, &l)) {
+		light_free(&l);
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	return true;
+}
+
+bool build_lights(world *w, const scene *sc, diag *d)
+{
+	light_set_init(&w->lights);
+	for (size_t i = 0; i < scene_n_lights(sc); i++) {
+		const scene_light *sl = scene_light_at(sc, i);
+		vec3 c = v3_scale(sl->color, (float)sl->intensity);
+		vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
+		light l;
+		switch (sl->kind) {
+		case SCENE_LIGHT_POINT:
+			l = light_point(pos, c);
+			break;
+		case SCENE_LIGHT_SPHERE:
+			l = light_sphere(pos, (float)sl->radius, c);
+			break;
+		case SCENE_LIGHT_SPOT:
+			l = light_spot(pos, at, c, (float)sl->cone_deg, (float)sl->falloff_deg);
+			break;
+		default:
+			l = light_parallel(pos, at, c);
+			break;
+		}
+		if (!light_set_add(&w->lights, &l)) {
+			diag_error(d, sl->loc, "out of memory");
+			return false;
+		}
+	}
+	if (sc->has_background) {
+		light l = light_background(sc->background);
+		if (!light_set_add(&w->lights, &l))
+			return false;
+	}
+	if (sc->has_sky_sphere) {
+		const scene_sky_sphere *sky = &sc->sky_sphere;
+		const image *img = world_image(w, sky->loc, sky->image, IMAGE_SRGB, d);
+		if (!img)
+			return false;
+		size_t n = (size_t)img->width * (size_t)img->height;
+		w->env_rgb = mem_alloc(n, 3 * sizeof(float));
+		if (!w->env_rgb) {
+			diag_error(d, sky->loc, "out of memory");
+			return false;
+		}
+		size_t clamped = clamp_texels(img, SCENE_COLOR_RADIANCE, w->env_rgb);
+		if (clamped)
+			diag_warning(d, sky->loc, "%zu texels of the environment are outside [0, inf), the range of a "
+						  "radiance (negative, NaN or infinite): clamped, a non-finite one to 0",
+				     clamped);
+		xform rot = xform_rotate(sky->rotate_deg);
+		light l;
+		if (!light_envmap_init(&l, w->env_rgb, img->width, img->height, (float)sky->intensity, &rot) ||
+		    !light_set_add(&w->lights, &l)) {
+			diag_error(d, sky->loc, "out of memory");
+			return false;
+		}
+	}
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		if (o->material && v3_max_comp(o->material->emission) > 0.0f &&
+		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
+			return false;
+	}
+	/* The scene's own radius, however small: a floor in absolute units would weigh infinite and
+	 * parallel lights against the others differently at different scales. */
+	if (!light_set_finish(&w->lights, w->radius)) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	return true;
+}

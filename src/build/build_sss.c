@@ -1,0 +1,169 @@
+/* build_sss.c - what subsurface scattering adds to the build: each SSS material's BSSRDF, the
+ * closed-volume check of the volume method, and the SSS groups of instances. */
+#include "build/build_impl.h"
+
+#include "base/mem.h"
+#include "sss/profile.h"
+#include "sss/walk.h"
+
+#include <math.h>
+#include <string.h>
+
+bool is_sss(const scene_material *m)
+{
+	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
+}
+
+scene_sss_method sss_method_of(const scene_material *m, const world_options *opt)
+{
+	return opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : m->sss.method;
+}
+
+/* The BSSRDF of an SSS material: its profile from the artist form (the albedo the coat shows and
+ * a texture scales), the method (the command line's over the material's), and f_t's normalisation. */
+bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
+		      diag *d)
+{
+	static const sss_profile_kind kinds[] = {[PROFILE_GAUSSIAN] = SSS_PROFILE_GAUSSIAN,
+						 [PROFILE_SUM_OF_GAUSSIANS] = SSS_PROFILE_SUM_OF_GAUSSIANS,
+						 [PROFILE_BURLEY] = SSS_PROFILE_BURLEY,
+						 [PROFILE_DIPOLE] = SSS_PROFILE_DIPOLE};
+	const scene_sss *ss = &sm->sss;
+	render_sss *r = &w->sss[k];
+	double albedo[3] = {ss->albedo.x, ss->albedo.y, ss->albedo.z};
+	double ld_mm[3] = {ss->radius_mm.x, ss->radius_mm.y, ss->radius_mm.z};
+	if (!sss_profile_from_artist(&r->profile, kinds[ss->profile], albedo, ld_mm, ss->ior)) {
+		diag_error(d, sm->loc, "the subsurface medium is out of range (albedo %g %g %g, radius %g %g %g mm, ior %g)",
+			   albedo[0], albedo[1], albedo[2], ld_mm[0], ld_mm[1], ld_mm[2], (double)ss->ior);
+		return false;
+	}
+	scene_sss_method m = sss_method_of(sm, opt);
+	r->method = m == SSS_METHOD_FULLCIRCLE ? RENDER_SSS_FULLCIRCLE
+		    : m == SSS_METHOD_DISK     ? RENDER_SSS_DISK
+		    : m == SSS_METHOD_VOLUME   ? RENDER_SSS_VOLUME
+					       : RENDER_SSS_CIRCLE;
+	r->units_per_mm = (float)(1.0 / sc->global.mm_per_unit);
+	/* The walk's medium from the physical form the scene derived from the artist one: the same
+	 * coefficients the dipole's albedo comes from, so volume against the profiles measures the
+	 * diffusion models' error and nothing else. */
+	double ss_mm[3] = {ss->sigma_s_per_mm.x, ss->sigma_s_per_mm.y, ss->sigma_s_per_mm.z};
+	double sa_mm[3] = {ss->sigma_a_per_mm.x, ss->sigma_a_per_mm.y, ss->sigma_a_per_mm.z};
+	if (r->method == RENDER_SSS_VOLUME &&
+	    !sss_walk_medium_from_reduced(&r->medium, ss_mm, sa_mm, ss->anisotropy, ss->ior, sc->global.mm_per_unit)) {
+		diag_error(d, sm->loc, "the subsurface medium is out of range for the volume method (sigma_s' %g %g %g, "
+				       "sigma_a %g %g %g per mm, anisotropy %g, ior %g)",
+			   ss_mm[0], ss_mm[1], ss_mm[2], sa_mm[0], sa_mm[1], sa_mm[2], (double)ss->anisotropy,
+			   (double)ss->ior);
+		return false;
+	}
+	r->ior = ss->ior;
+	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
+	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
+	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
+	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
+	r->albedo = ss->albedo;
+	r->textured = ss->albedo_image != NULL;
+	w->sss_of[k] = r;
+	w->has_sss = true;
+	return true;
+}
+
+/* A walk's length grows like the square of the object's size in transport mean free paths
+ * (diffusion), capped by absorption at about sigma_t'/sigma_a interactions. When the smaller of
+ * the two exceeds the walk's step bound most long walks will be dropped (dark, counted): say so
+ * before the render rather than after. High albedos given in the artist form are the usual cause
+ * (albedo 1 needs sigma_a = 0, so the inversion makes sigma_s' very large). */
+static void warn_dense_medium(const world_inst *in, const scene *sc, const scene_object *o, diag *d)
+{
+	const scene_sss *ss = &o->material->sss;
+	double size_mm = v3_length(v3_sub(in->hi, in->lo)) * sc->global.mm_per_unit, worst = 0.0;
+	const float *s_s = &ss->sigma_s_per_mm.x, *s_a = &ss->sigma_a_per_mm.x;
+	for (int c = 0; c < 3; c++) {
+		double st = (double)s_s[c] + s_a[c], tau = st * size_mm;
+		double steps = fmin(tau * tau, s_a[c] > 0.0f ? st / s_a[c] : INFINITY);
+		worst = fmax(worst, steps);
+	}
+	if (worst > SSS_WALK_MAX_STEPS)
+		diag_warning(d, o->loc,
+			     "the volume method's walks in this object need about %.3g interactions (its medium is "
+			     "dense for its size and hardly absorbs); walks stop at %d, and those are dropped and "
+			     "counted",
+			     worst, SSS_WALK_MAX_STEPS);
+}
+
+/* The volume method walks inside the object: an SSS object rendered by it must bound a volume
+ * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
+bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	bool ok = true;
+	int8_t *closed = mem_calloc(w->n_geoms ? w->n_geoms : 1, 1); /* 0 unknown, 1 closed, -1 open */
+	if (!closed) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		if (!is_sss(o->material) || sss_method_of(o->material, opt) != SSS_METHOD_VOLUME)
+			continue;
+		const world_geom *g = w->insts[i].g;
+		size_t gi = (size_t)(g - w->geoms);
+		uint64_t open_edges = 0;
+		if (!closed[gi]) {
+			sss_mesh_closure c = sss_walk_mesh_closure(&g->m, &open_edges);
+			if (c == SSS_MESH_NO_MEMORY) {
+				diag_error(d, o->loc, "out of memory while checking that the object is closed");
+				ok = false;
+				break;
+			}
+			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+		}
+		if (closed[gi] < 0) {
+			if (o->geom->kind == SHAPE_PLANE)
+				diag_error(d, o->loc, "the volume SSS method needs a closed object, and a plane bounds "
+						      "no volume");
+			else
+				diag_error(d, o->loc, "the volume SSS method needs a closed object: this one has %llu "
+						      "edge(s) not shared by exactly two triangles",
+					   (unsigned long long)open_edges);
+			if (opt->sss_method == SSS_METHOD_VOLUME)
+				diag_note(d, diag_noloc(), "--sss volume applies to every SSS material; render this "
+							   "scene with circle, fullcircle or disk");
+			else
+				diag_note(d, o->material->loc, "its material is here; give it method circle, fullcircle "
+							      "or disk for an open surface");
+			ok = false;
+		} else {
+			warn_dense_medium(&w->insts[i], sc, o, d);
+		}
+	}
+	mem_free(closed);
+	return ok;
+}
+
+/* The SSS volume of each instance: alone (-1), or the first instance of its material's group;
+ * and each group's members as a list in instance order (sss_next). */
+void build_groups(world *w, const scene *sc)
+{
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_material *m = scene_object_at(sc, i)->material;
+		w->sss_group[i] = -1;
+		w->sss_next[i] = UINT32_MAX;
+		for (size_t j = 0; is_sss(m) && m->sss.group && j <= i; j++) {
+			const scene_material *mj = scene_object_at(sc, j)->material;
+			if (is_sss(mj) && mj->sss.group && !strcmp(mj->sss.group, m->sss.group)) {
+				w->sss_group[i] = (int)j;
+				break;
+			}
+		}
+	}
+	/* Each member links to the next: walk back from the end, keeping each group's last seen. */
+	for (size_t i = w->n_insts; i-- > 0;) {
+		if (w->sss_group[i] < 0)
+			continue;
+		size_t head = (size_t)w->sss_group[i];
+		if (i != head) {
+			w->sss_next[i] = w->sss_next[head];
+			w->sss_next[head] = (uint32_t)i;
+		}
+	}
+}
