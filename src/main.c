@@ -451,7 +451,8 @@ static bool parse_aovs(const char *arg, unsigned *out)
 static bool opt_sss(const cli_opt *op, const char *arg, void *dest)
 {
 	(void)op;
-	if (strcmp(arg, "circle") && strcmp(arg, "fullcircle") && strcmp(arg, "disk") && strcmp(arg, "volume"))
+	sss_method m;
+	if (!sss_method_from_name(arg, &m) || m == SSS_METHOD_DEFAULT)
 		return false;
 	*(const char **)dest = arg;
 	return true;
@@ -678,15 +679,13 @@ static void on_progress(void *user, const render_progress *p)
 
 /* The SSS method the EXR header records: --sss, else the materials' one, "mixed" when they
  * differ, "none" without SSS materials. */
-static const char *sss_method_name(const world *w)
+static const char *header_sss_method(const world *w)
 {
-	static const char *names[] = {[RENDER_SSS_CIRCLE] = "circle", [RENDER_SSS_FULLCIRCLE] = "fullcircle",
-				      [RENDER_SSS_DISK] = "disk", [RENDER_SSS_VOLUME] = "volume"};
 	const char *name = "none";
 	for (size_t i = 0; i < w->n_materials; i++) {
 		if (!w->sss_of[i])
 			continue;
-		const char *m = names[w->sss_of[i]->method];
+		const char *m = sss_method_name(w->sss_of[i]->method);
 		if (strcmp(name, "none") && strcmp(name, m))
 			return "mixed";
 		name = m;
@@ -742,11 +741,9 @@ static int cmd_render(int argc, char **argv)
 		return EXIT_INTERRUPTED;
 	}
 	world w;
-	scene_sss_method sss = !o.sss			 ? SSS_METHOD_DEFAULT
-			       : !strcmp(o.sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
-			       : !strcmp(o.sss, "disk")	 ? SSS_METHOD_DISK
-			       : !strcmp(o.sss, "volume")	 ? SSS_METHOD_VOLUME
-							 : SSS_METHOD_CIRCLE;
+	sss_method sss = SSS_METHOD_DEFAULT;
+	if (o.sss)
+		sss_method_from_name(o.sss, &sss); /* opt_sss let only the table's names through */
 	world_options wo = {.width = o.width, .height = o.height, .max_memory = o.max_memory, .sss_method = sss};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
@@ -782,7 +779,7 @@ static int cmd_render(int argc, char **argv)
 	char hash[17];
 	scene_hash(&d, hash);
 	output_info info = {.scene_path = o.scene, .scene_hash = hash, .seed = o.seed,
-			    .sss_method = sss_method_name(&w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
+			    .sss_method = header_sss_method(&w), .clock = o.clock, .tile = tile[0] ? tile : NULL,
 			    .aovs = o.aovs};
 	checkpoint_ctx cp = {out, &info, &d, start};
 	render_job job = {

@@ -9,6 +9,8 @@
 #include "sss/disk.h"
 #include "sss/probe.h"
 
+#include <assert.h>
+
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
 
@@ -127,7 +129,7 @@ static bool circle_entry(const render_scene *s, const render_settings *set, cons
 			 const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
 {
 	sss_circle_opts o = sss_circle_default_opts();
-	o.kind = m->method == RENDER_SSS_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
+	o.kind = m->method == SSS_METHOD_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
 	o.weight = set->circle_weight;
 	float u_channel = rng_float(g), u_r = rng_float(g), u_phi = rng_float(g), u_pick = rng_float(g);
 	double r_mm = sss_profile_sample(&m->profile, u_channel, u_r);
@@ -265,14 +267,17 @@ static bool sss_find_entry(const render_scene *s, const render_settings *set, co
 {
 	out->sss_searches++;
 	switch (m->method) {
-	case RENDER_SSS_CIRCLE:
-	case RENDER_SSS_FULLCIRCLE:
+	case SSS_METHOD_CIRCLE:
+	case SSS_METHOD_FULLCIRCLE:
 		return circle_entry(s, set, m, exit, n_out, g, e, out);
-	case RENDER_SSS_DISK:
+	case SSS_METHOD_DISK:
 		return disk_entry(s, m, exit, n_out, g, e, out);
-	case RENDER_SSS_VOLUME:
+	case SSS_METHOD_VOLUME:
 		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
+	case SSS_METHOD_DEFAULT: /* never: the build chose the method */
+		break;
 	}
+	assert(!"an SSS material without a method");
 	return false;
 }
 

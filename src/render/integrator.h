@@ -15,7 +15,7 @@
  * Subsurface scattering (DESIGN.md, "Subsurface scattering"): at a material with a render_sss the
  * coat's specular reflection stays a BSDF lobe; the light it transmits, 1 - F(w_o), goes through
  * the BSSRDF instead of the coat's diffuse interior. One of the two continues the path, chosen by
- * their estimated weights. The BSSRDF samples an entry point x_i (render_sss_method picks how: the
+ * their estimated weights. The BSSRDF samples an entry point x_i (render_sss.method picks how: the
  * dispatch is in integrator.c) and the path goes on from x_i through the entry lobe
  * (1 - F(w_i)) / (c pi) with the shading normal and textures evaluated at x_i; the whole exit-entry
  * step counts as one scattering event. */
@@ -29,6 +29,7 @@
 #include "render/camera.h"
 #include "render/light.h"
 #include "sss/circle.h"
+#include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
 
@@ -51,22 +52,14 @@ typedef struct render_hit {
 			  bvh_offset_scaled(p, n, scale) (accel/offset.h); 0: unknown */
 } render_hit;
 
-/* How a subsurface material finds its entry point (src/sss: circle.*, disk.*, walk.*). */
-typedef enum render_sss_method {
-	RENDER_SSS_CIRCLE,     /* half circles (Legros & Corvazier 2016) */
-	RENDER_SSS_FULLCIRCLE, /* full circles */
-	RENDER_SSS_DISK,       /* King et al. 2013 probe segments */
-	RENDER_SSS_VOLUME,     /* random walk in the medium: the reference the profiles approximate */
-} render_sss_method;
-
 /* The BSSRDF of one material (plain data, built once per material). */
 typedef struct render_sss {
-	render_sss_method method;
+	sss_method method;   /* never SSS_METHOD_DEFAULT: the build chose */
 	sss_profile profile; /* radii in mm, channel albedos A = the material's albedo */
 	float units_per_mm;  /* scene units per mm (1 / mm_per_unit): a profile radius to the scene */
 	float ior;	     /* of the boundary; the coat's */
 	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
-	sss_walk_medium medium; /* RENDER_SSS_VOLUME: the medium's coefficients per scene unit */
+	sss_walk_medium medium; /* SSS_METHOD_VOLUME: the medium's coefficients per scene unit */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;

@@ -15,10 +15,6 @@
 #define SSS_BISECT_STEPS 200
 /* Relative bracket width at which a bisection stops: a few ulps of a double. */
 #define SSS_BISECT_REL 1e-15
-/* The artist form's largest alpha': A = 1 with a finite l_d = 1/sigma_tr would need sigma_a = 0
- * and sigma_t' infinite; alpha' stays this close to 1 instead (R_d then falls short of 1 by
- * about 1e-5). */
-#define SSS_ALPHA_PRIME_MAX (1.0 - 1e-12)
 /* Relative Newton step below which the dipole's CDF inversion stops (see invert_cdf0). */
 #define SSS_NEWTON_DONE 1e-9
 /* Intervals of the Simpson rule for the Fresnel moment; the integrand is smooth on each piece
