@@ -94,9 +94,10 @@ size_t tlas_bytes(const tlas *t)
 
 bool tlas_circle_ok(const tlas *t, uint32_t i) { return i < t->count && t->insts[i].scale > 0.0f; }
 
-/* Visits the leaves of the top level whose boxes the ray reaches; for each instance calls the
- * mesh traversal with the ray in object space. any: stop at the first hit. */
-static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
+/* Visits the leaves of the top level whose boxes the ray reaches; for each instance (every one,
+ * or those whose set is *set) calls the mesh traversal with the ray in object space. any: stop at
+ * the first hit. */
+static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any, const uint32_t *set)
 {
 	tri_ray wr;
 	if (t->num_nodes == 0 || !tri_ray_prepare(&wr, ray->org, ray->dir, ray->tmin, ray->tmax))
@@ -120,6 +121,8 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t id = t->order[nd->first + k];
 				const inst *in = &t->insts[id];
+				if (set && in->set != *set)
+					continue;
 				tri_ray r;
 				if (!tri_ray_prepare(&r, mul_point(in->w2o, ray->org), mul_vector(in->w2o, ray->dir), ray->tmin,
 						     tlimit))
@@ -139,12 +142,17 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 	}
 }
 
-bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit) { return trace(t, ray, hit, false); }
+bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit) { return trace(t, ray, hit, false, NULL); }
+
+bool tlas_intersect_set(const tlas *t, const bvh_ray *ray, uint32_t set, bvh_hit *hit)
+{
+	return trace(t, ray, hit, false, &set);
+}
 
 bool tlas_occluded(const tlas *t, const bvh_ray *ray)
 {
 	bvh_hit unused;
-	return trace(t, ray, &unused, true);
+	return trace(t, ray, &unused, true, NULL);
 }
 
 /* The circle in instance space, traced there, hits moved back to world space. */

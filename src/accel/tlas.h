@@ -8,8 +8,8 @@
 
 typedef struct tlas tlas;
 
-/* set: a tag tlas_circle_set selects instances by (for the renderer, the SSS volume the
- * instance belongs to); 0 when unused. */
+/* set: a tag tlas_circle_set and tlas_intersect_set select instances by (for the renderer, the
+ * SSS volume the instance belongs to); 0 when unused. */
 typedef struct tlas_instance {
 	const bvh *geom;
 	xform to_world;
@@ -29,6 +29,8 @@ size_t tlas_bytes(const tlas *t);
  * components are rejected. */
 bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit);
 bool tlas_occluded(const tlas *t, const bvh_ray *ray);
+/* tlas_intersect over the instances whose set is `set` alone (the others are transparent). */
+bool tlas_intersect_set(const tlas *t, const bvh_ray *ray, uint32_t set, bvh_hit *hit);
 
 /* Every hit of the world-space circle q on instance `only` (or on all, TLAS_ALL_INSTANCES), with
  * positions and normals in world space and inst set. A circle is traced in an instance's own

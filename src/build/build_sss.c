@@ -142,30 +142,20 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 	return ok;
 }
 
-/* The SSS volume of each instance: alone (-1), or the first instance of its material's group;
- * and each group's members as a list in instance order (sss_next). */
+/* The SSS volume of each instance: alone (-1), or the first instance of its material's group.
+ * The one record of membership: the top level's set of each instance is sss_set's, and both SSS
+ * queries (circles, nearest hits) find a group's members through it. */
 void build_groups(world *w, const scene *sc)
 {
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_material *m = scene_object_at(sc, i)->material;
 		w->sss_group[i] = -1;
-		w->sss_next[i] = UINT32_MAX;
 		for (size_t j = 0; is_sss(m) && m->sss.group && j <= i; j++) {
 			const scene_material *mj = scene_object_at(sc, j)->material;
 			if (is_sss(mj) && mj->sss.group && !strcmp(mj->sss.group, m->sss.group)) {
 				w->sss_group[i] = (int)j;
 				break;
 			}
-		}
-	}
-	/* Each member links to the next: walk back from the end, keeping each group's last seen. */
-	for (size_t i = w->n_insts; i-- > 0;) {
-		if (w->sss_group[i] < 0)
-			continue;
-		size_t head = (size_t)w->sss_group[i];
-		if (i != head) {
-			w->sss_next[i] = w->sss_next[head];
-			w->sss_next[head] = (uint32_t)i;
 		}
 	}
 }

@@ -117,37 +117,35 @@ static void world_circle_surface(void *user, const tri_circle_hit *h, render_hit
 	hit->p = h->pos;
 }
 
-/* The nearest hit of a ray on the SSS volume of `at`: its instance, or each member of its group
- * in turn (the ray moved into each one's object space: t is kept, the direction not being
- * renormalised), the members found through the group's list. */
+/* The nearest hit of a ray on the SSS volume of `at`: its instance alone (the ray moved into its
+ * object space: t is kept, the direction not being renormalised), or the members of its group,
+ * found by the top level through the group's set (sss_set), as world_circle finds them. */
 static bool world_sss_closest(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
 			      render_hit *hit)
 {
 	const world *w = user;
-	if (at->object >= w->n_insts)
+	if (!w->top || at->object >= w->n_insts)
 		return false;
-	int group = w->sss_group[at->object];
+	bvh_ray r = {ray->o, ray->d, tmin, tmax};
 	bvh_hit best;
-	uint32_t best_inst = UINT32_MAX;
-	for (size_t i = group < 0 ? at->object : (size_t)group; i < w->n_insts;
-	     i = group < 0 ? w->n_insts : w->sss_next[i]) {
-		const world_inst *in = &w->insts[i];
+	uint32_t inst;
+	if (w->sss_group[at->object] >= 0) {
+		if (!tlas_intersect_set(w->top, &r, sss_set(w, at->object), &best))
+			return false;
+		inst = w->top_inst[best.inst];
+	} else {
+		const world_inst *in = &w->insts[at->object];
 		if (!in->g->b)
-			continue;
-		bvh_ray r = {ray->o, ray->d, tmin, tmax};
+			return false;
 		if (!in->identity) {
 			r.org = d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o)));
 			r.dir = d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d)));
 		}
-		bvh_hit h;
-		if (bvh_intersect(in->g->b, &r, &h)) {
-			best = h, best_inst = (uint32_t)i;
-			tmax = h.t;
-		}
+		if (!bvh_intersect(in->g->b, &r, &best))
+			return false;
+		inst = at->object;
 	}
-	if (best_inst == UINT32_MAX)
-		return false;
-	fill_hit(w, best_inst, best.prim, best.u, best.v, hit);
+	fill_hit(w, inst, best.prim, best.u, best.v, hit);
 	hit->t = best.t;
 	return true;
 }

@@ -110,7 +110,7 @@ int main(void)
 
 	/* Rays: the top level against every instance traced alone (the same float transform is not
 	 * available here, so t is compared with a tolerance). */
-	long count = test_count(20000), bad = 0, hits = 0;
+	long count = test_count(20000), bad = 0, hits = 0, set_bad = 0, set_hits = 0;
 	for (long k = 0; k < count; k++) {
 		vec3 o = v3(60.0f * rng_float(&g) - 30.0f, 60.0f * rng_float(&g) - 30.0f, 60.0f * rng_float(&g) - 30.0f);
 		bvh_ray r = {o, test_unit_vector(&g), 0.0f, INFINITY};
@@ -125,6 +125,21 @@ int main(void)
 		}
 		bool fb = hb.inst != UINT32_MAX;
 		hits += fb;
+		/* The nearest hit of one set's instances (set k % 3): the others are transparent. */
+		uint32_t set = (uint32_t)(k % 3);
+		bvh_hit hs, bs = {INFINITY, 0, 0, 0, UINT32_MAX};
+		for (uint32_t i = set; i < NUM_INST; i += 3) {
+			bvh_ray lr = {d3_to_v3(xform_inv_point(&in[i].to_world, v3_to_d3(r.org))),
+				      d3_to_v3(xform_inv_vector(&in[i].to_world, v3_to_d3(r.dir))), 0.0f, bs.t};
+			bvh_hit h;
+			if (bvh_intersect(in[i].geom, &lr, &h) && h.t < bs.t)
+				bs = h, bs.inst = i;
+		}
+		bool fs = tlas_intersect_set(t, &r, set, &hs), fbs = bs.inst != UINT32_MAX;
+		set_hits += fs;
+		if ((fs != fbs || (fs && (fabsf(hs.t - bs.t) > 6e-4f || hs.inst % 3 != set))) && set_bad++ < 5)
+			CHECK(0, "ray %ld, set %u: tlas %d (t %g inst %u), alone %d (t %g inst %u)", k, set, fs, hs.t, hs.inst,
+			      fbs, bs.t, bs.inst);
 		/* The float transforms differ in rounding: t agrees to 1e-5 of the scene's size (60);
 		 * the triangle may then differ at shared edges and vertices. */
 		const float tol = 6e-4f;
@@ -135,6 +150,8 @@ int main(void)
 			      ht.prim, fb, hb.t, hb.inst, hb.prim);
 	}
 	CHECK(bad == 0 && hits > count / 10, "rays: %ld differ, %ld hits of %ld", bad, hits, count);
+	CHECK(set_bad == 0 && set_hits > count / 30, "rays on one set: %ld differ, %ld hits of %ld", set_bad, set_hits,
+	      count);
 	bvh_ray nan_ray = {{NAN, 0, 0}, {0, 0, 1}, 0, INFINITY};
 	bvh_hit h;
 	CHECK(!tlas_intersect(t, &nan_ray, &h) && !tlas_occluded(t, &nan_ray), "NaN rays are refused");
