@@ -3,6 +3,7 @@
  * coefficients to each profile's parameters (README.md has the derivations). */
 #include "sss/profile.h"
 
+#include <assert.h>
 #include <float.h>
 #include <math.h>
 
@@ -236,6 +237,7 @@ static void set_truncation(sss_channel *c)
 	}
 	c->r_max_mm = hi;
 	c->norm = cdf0(c, hi);
+	assert(c->r_max_mm > 0.0 && c->norm > 0.0); /* sss_channel's: r_max > 0, the renormalisation */
 	if (c->kind == SSS_PROFILE_DIPOLE)
 		for (int i = 0; i < SSS_DIPOLE_TABLE; i++)
 			c->dipole.table_cdf[i] = cdf0(c, dipole_table_r(c, i));
@@ -533,6 +535,8 @@ bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const doub
 
 double sss_profile_sample(const sss_profile *p, double u_channel, double u_r)
 {
+	/* sss_profile_make's q sum to 1, so the loop below ends */
+	assert(p->q[0] > 0.0 || p->q[1] > 0.0 || p->q[2] > 0.0);
 	int c = u_channel < p->q[0] ? 0 : u_channel < p->q[0] + p->q[1] ? 1 : 2;
 	while (p->q[c] <= 0.0) /* rounding at the top of u_channel: never a channel of q = 0 */
 		c = (c + 2) % 3;

@@ -6,6 +6,7 @@
 #include "base/mem.h"
 #include "sss/profile.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -132,6 +133,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		int c = uc < q[0] ? 0 : uc < q[0] + q[1] ? 1 : 2;
 		if (q[c] == 0.0) /* uc fell on a channel of probability 0 only by rounding */
 			c = q[0] > 0.0 ? 0 : q[1] > 0.0 ? 1 : 2;
+		assert(q[c] > 0.0); /* walk_channel_probs: the q sum to s > 0 */
 		double t = sigma_t[c] > 0.0 ? -log1p(-ut) / sigma_t[c] : INFINITY;
 		double scale = fmax(h.scale, fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z))));
 		double cos_n = fmax(1e-6, fabs((double)v3_dot(w, h.ng)));
