@@ -453,7 +453,8 @@ static bool parse_aovs(const char *arg, unsigned *out)
 static bool opt_sss(const cli_opt *op, const char *arg, void *dest)
 {
 	(void)op;
-	if (strcmp(arg, "circle") && strcmp(arg, "fullcircle") && strcmp(arg, "disk") && strcmp(arg, "volume"))
+	sss_method m;
+	if (!sss_method_from_name(arg, &m) || m == SSS_METHOD_DEFAULT)
 		return false;
 	*(const char **)dest = arg;
 	return true;
@@ -720,11 +721,9 @@ static int render_scene_of(const render_cli *o, render_state *s)
 		report_nothing_written(s->out);
 		return EXIT_INTERRUPTED;
 	}
-	scene_sss_method sss = !o->sss			 ? SSS_METHOD_DEFAULT
-			       : !strcmp(o->sss, "fullcircle") ? SSS_METHOD_FULLCIRCLE
-			       : !strcmp(o->sss, "disk")	 ? SSS_METHOD_DISK
-			       : !strcmp(o->sss, "volume")	 ? SSS_METHOD_VOLUME
-							 : SSS_METHOD_CIRCLE;
+	sss_method sss = SSS_METHOD_DEFAULT;
+	if (o->sss && !sss_method_from_name(o->sss, &sss))
+		assert(!"--sss was checked by its option parser");
 	world_options wo = {.width = o->width, .height = o->height, .max_memory = o->max_memory, .sss_method = sss};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */

@@ -1088,7 +1088,8 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray)
 	return bvh_occluded_prepared(b, &r);
 }
 
-uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
+/* Every hit of q, in the traversal's order (which depends on the tree). */
+static uint32_t circle_traverse(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
 {
 	circle_prep p;
 	if (b->num_nodes == 0)
@@ -1101,6 +1102,13 @@ uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uin
 		return circle_8(b, q, &p, hits, max_hits);
 #endif
 	return circle_4(b, q, &p, hits, max_hits);
+}
+
+uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
+{
+	uint32_t total = circle_traverse(b, q, hits, max_hits);
+	tri_circle_hits_sort(hits, total < max_hits ? total : max_hits);
+	return total;
 }
 
 vec3 bvh_offset_origin(vec3 p, vec3 n)

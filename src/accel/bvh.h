@@ -52,9 +52,10 @@ bool bvh_intersect(const bvh *b, const bvh_ray *ray, bvh_hit *hit);
 /* Any hit with t in [tmin, tmax]. */
 bool bvh_occluded(const bvh *b, const bvh_ray *ray);
 
-/* Every hit of the circle q (tri.h) on the mesh, in no particular order; prim set, inst 0.
- * Writes at most max_hits to hits and returns the total count (which may be larger: call again
- * with a larger buffer to get them all). A circle with a non-finite or negative radius, or
+/* Every hit of the circle q (tri.h) on the mesh, in the canonical order (tri_circle_hits_sort:
+ * the same for any tree built over the mesh); prim set, inst 0. Writes at most max_hits to hits
+ * and returns the total count (which may be larger: call again with a larger buffer to get them
+ * all; which hits are kept when there are more is the traversal's choice). A circle with a non-finite or negative radius, or
  * non-finite axes, has no hits. */
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits);
 

@@ -98,9 +98,10 @@ size_t tlas_bytes(const tlas *t)
 
 bool tlas_circle_ok(const tlas *t, uint32_t i) { return i < t->count && t->insts[i].scale > 0.0f; }
 
-/* Visits the leaves of the top level whose boxes the ray reaches; for each instance calls the
- * mesh traversal with the ray in object space. any: stop at the first hit. */
-static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
+/* Visits the leaves of the top level whose boxes the ray reaches; for each instance (every one,
+ * or those whose set is *set) calls the mesh traversal with the ray in object space. any: stop at
+ * the first hit. */
+static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any, const uint32_t *set)
 {
 	tri_ray wr;
 	if (t->num_nodes == 0 || !tri_ray_prepare(&wr, ray->org, ray->dir, ray->tmin, ray->tmax))
@@ -126,6 +127,8 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 			for (uint32_t k = 0; k < nd->count; k++) {
 				uint32_t id = t->order[nd->first + k];
 				const inst *in = &t->insts[id];
+				if (set && in->set != *set)
+					continue;
 				tri_ray r;
 				if (!tri_ray_prepare(&r, mul_point(in->w2o, ray->org), mul_vector(in->w2o, ray->dir), ray->tmin,
 						     tlimit))
@@ -145,12 +148,17 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any)
 	}
 }
 
-bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit) { return trace(t, ray, hit, false); }
+bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit) { return trace(t, ray, hit, false, NULL); }
+
+bool tlas_intersect_set(const tlas *t, const bvh_ray *ray, uint32_t set, bvh_hit *hit)
+{
+	return trace(t, ray, hit, false, &set);
+}
 
 bool tlas_occluded(const tlas *t, const bvh_ray *ray)
 {
 	bvh_hit unused;
-	return trace(t, ray, &unused, true);
+	return trace(t, ray, &unused, true, NULL);
 }
 
 /* The circle in instance space, traced there, hits moved back to world space. */
@@ -171,7 +179,8 @@ static uint32_t circle_instance(const tlas *t, uint32_t id, const tri_circle *q,
 	return n;
 }
 
-/* The circle through the tree, on every instance (all) or on those of one set. */
+/* The circle through the tree, on every instance (all) or on those of one set, in the
+ * traversal's order. */
 static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32_t set, tri_circle_hit *hits,
 			    uint32_t max_hits)
 {
@@ -206,14 +215,21 @@ static uint32_t circle_tree(const tlas *t, const tri_circle *q, bool all, uint32
 	}
 }
 
+/* The hits of several instances, each already in bvh_circle's order, put in the canonical one. */
+static uint32_t sorted(tri_circle_hit *hits, uint32_t total, uint32_t max_hits)
+{
+	tri_circle_hits_sort(hits, total < max_hits ? total : max_hits);
+	return total;
+}
+
 uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits)
 {
-	if (only != TLAS_ALL_INSTANCES)
+	if (only != TLAS_ALL_INSTANCES) /* one instance: bvh_circle's order is the canonical one */
 		return only < t->count ? circle_instance(t, only, q, hits, max_hits) : 0;
-	return circle_tree(t, q, true, 0, hits, max_hits);
+	return sorted(hits, circle_tree(t, q, true, 0, hits, max_hits), max_hits);
 }
 
 uint32_t tlas_circle_set(const tlas *t, const tri_circle *q, uint32_t set, tri_circle_hit *hits, uint32_t max_hits)
 {
-	return circle_tree(t, q, false, set, hits, max_hits);
+	return sorted(hits, circle_tree(t, q, false, set, hits, max_hits), max_hits);
 }

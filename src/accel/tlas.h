@@ -8,8 +8,8 @@
 
 typedef struct tlas tlas;
 
-/* set: a tag tlas_circle_set selects instances by (for the renderer, the SSS volume the
- * instance belongs to); 0 when unused. */
+/* set: a tag tlas_circle_set and tlas_intersect_set select instances by (for the renderer, the
+ * SSS volume the instance belongs to); 0 when unused. */
 typedef struct tlas_instance {
 	const bvh *geom;
 	xform to_world;
@@ -29,12 +29,15 @@ size_t tlas_bytes(const tlas *t);
  * components are rejected. */
 bool tlas_intersect(const tlas *t, const bvh_ray *ray, bvh_hit *hit);
 bool tlas_occluded(const tlas *t, const bvh_ray *ray);
+/* tlas_intersect over the instances whose set is `set` alone (the others are transparent). */
+bool tlas_intersect_set(const tlas *t, const bvh_ray *ray, uint32_t set, bvh_hit *hit);
 
 /* Every hit of the world-space circle q on instance `only` (or on all, TLAS_ALL_INSTANCES), with
  * positions and normals in world space and inst set. A circle is traced in an instance's own
  * space, which keeps it a circle only under a similarity transform (DESIGN.md): instances with a
  * non-uniform scale or shear are skipped - the scene build flattens SSS objects that have one.
- * Returns the total count; at most max_hits are written. */
+ * The hits come in the canonical order (tri_circle_hits_sort: by instance index, triangle,
+ * angle), whatever the trees. Returns the total count; at most max_hits are written. */
 uint32_t tlas_circle(const tlas *t, const tri_circle *q, uint32_t only, tri_circle_hit *hits, uint32_t max_hits);
 
 /* tlas_circle over the instances whose set is `set`, found through the tree: the others cost

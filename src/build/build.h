@@ -29,7 +29,7 @@ typedef struct world_options {
 	int width, height;    /* the image, for the camera and adaptive tessellation */
 	size_t max_memory;    /* tessellation and per-texture limit in bytes (0: 1 GiB) */
 	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
-	scene_sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
+	sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
 } world_options;
 
 typedef struct world_stats {

@@ -152,8 +152,7 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 	size_t n = scene_n_objects(sc);
 	w->insts = mem_calloc(n ? n : 1, sizeof *w->insts);
 	w->sss_group = mem_calloc(n ? n : 1, sizeof *w->sss_group);
-	w->sss_next = mem_calloc(n ? n : 1, sizeof *w->sss_next);
-	if (!w->insts || !w->sss_group || !w->sss_next) {
+	if (!w->insts || !w->sss_group) {
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}

@@ -98,9 +98,9 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 	case MAT_MARBLE:
 		/* The coat's reflection; its diffuse interior is replaced by the BSSRDF in the
 		 * integrator, but keeps the albedo for the AOV and the choice of lobe. */
-		w->bsdfs[k] = bsdf_coat(sm->sss.albedo, sm->sss.ior, sm->sss.roughness);
 		if (!build_sss(w, k, sc, opt, sm, d))
 			return false;
+		w->bsdfs[k] = bsdf_coat(w->sss[k].albedo, sm->sss.ior, sm->sss.roughness);
 		break;
 	default:
 		w->bsdfs[k] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));

@@ -3,6 +3,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
+#include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
 
@@ -14,41 +15,42 @@ bool is_sss(const scene_material *m)
 	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
 }
 
-scene_sss_method sss_method_of(const scene_material *m, const world_options *opt)
+sss_method sss_method_of(const scene_material *m, const world_options *opt)
 {
-	return opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : m->sss.method;
+	sss_method s = opt->sss_method != SSS_METHOD_DEFAULT ? opt->sss_method : m->sss.method;
+	return s == SSS_METHOD_DEFAULT ? SSS_METHOD_CIRCLE : s;
 }
 
-/* The BSSRDF of an SSS material: its profile from the artist form (the albedo the coat shows and
- * a texture scales), the method (the command line's over the material's), and f_t's normalisation. */
+/* Both forms of an SSS material's medium, from what the scene wrote: the one derivation
+ * (sss/medium.h), at build time. */
+static sss_medium medium_of(const scene_material *m)
+{
+	sss_medium md;
+	sss_medium_derive(&m->sss.medium, m->sss.ior, &md);
+	return md;
+}
+
+/* The BSSRDF of an SSS material: the medium derived from what the scene wrote, its profile from
+ * the artist form (the albedo the coat shows and a texture scales), the method (the command
+ * line's over the material's), and f_t's normalisation. */
 bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
 		      diag *d)
 {
-	static const sss_profile_kind kinds[] = {[PROFILE_GAUSSIAN] = SSS_PROFILE_GAUSSIAN,
-						 [PROFILE_SUM_OF_GAUSSIANS] = SSS_PROFILE_SUM_OF_GAUSSIANS,
-						 [PROFILE_BURLEY] = SSS_PROFILE_BURLEY,
-						 [PROFILE_DIPOLE] = SSS_PROFILE_DIPOLE};
 	const scene_sss *ss = &sm->sss;
 	render_sss *r = &w->sss[k];
-	double albedo[3] = {ss->albedo.x, ss->albedo.y, ss->albedo.z};
-	double ld_mm[3] = {ss->radius_mm.x, ss->radius_mm.y, ss->radius_mm.z};
-	if (!sss_profile_from_artist(&r->profile, kinds[ss->profile], albedo, ld_mm, ss->ior)) {
+	sss_medium md = medium_of(sm);
+	if (!sss_profile_from_artist(&r->profile, ss->profile, md.albedo, md.ld_mm, ss->ior)) {
 		diag_error(d, sm->loc, "the subsurface medium is out of range (albedo %g %g %g, radius %g %g %g mm, ior %g)",
-			   albedo[0], albedo[1], albedo[2], ld_mm[0], ld_mm[1], ld_mm[2], (double)ss->ior);
+			   md.albedo[0], md.albedo[1], md.albedo[2], md.ld_mm[0], md.ld_mm[1], md.ld_mm[2], (double)ss->ior);
 		return false;
 	}
-	scene_sss_method m = sss_method_of(sm, opt);
-	r->method = m == SSS_METHOD_FULLCIRCLE ? RENDER_SSS_FULLCIRCLE
-		    : m == SSS_METHOD_DISK     ? RENDER_SSS_DISK
-		    : m == SSS_METHOD_VOLUME   ? RENDER_SSS_VOLUME
-					       : RENDER_SSS_CIRCLE;
+	r->method = sss_method_of(sm, opt);
 	r->units_per_mm = (float)(1.0 / sc->global.mm_per_unit);
-	/* The walk's medium from the physical form the scene derived from the artist one: the same
-	 * coefficients the dipole's albedo comes from, so volume against the profiles measures the
-	 * diffusion models' error and nothing else. */
-	double ss_mm[3] = {ss->sigma_s_per_mm.x, ss->sigma_s_per_mm.y, ss->sigma_s_per_mm.z};
-	double sa_mm[3] = {ss->sigma_a_per_mm.x, ss->sigma_a_per_mm.y, ss->sigma_a_per_mm.z};
-	if (r->method == RENDER_SSS_VOLUME &&
+	/* The walk's medium from the physical form of the same derivation: the coefficients the
+	 * profile's albedo comes from, so volume against the profiles measures the diffusion
+	 * models' error and nothing else. */
+	const double *ss_mm = md.sigma_s_per_mm, *sa_mm = md.sigma_a_per_mm;
+	if (r->method == SSS_METHOD_VOLUME &&
 	    !sss_walk_medium_from_reduced(&r->medium, ss_mm, sa_mm, ss->anisotropy, ss->ior, sc->global.mm_per_unit)) {
 		diag_error(d, sm->loc, "the subsurface medium is out of range for the volume method (sigma_s' %g %g %g, "
 				       "sigma_a %g %g %g per mm, anisotropy %g, ior %g)",
@@ -61,7 +63,7 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
-	r->albedo = ss->albedo;
+	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
 	r->textured = ss->albedo_image != NULL;
 	w->sss_of[k] = r;
 	w->has_sss = true;
@@ -75,12 +77,12 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
  * (albedo 1 needs sigma_a = 0, so the inversion makes sigma_s' very large). */
 static void warn_dense_medium(const world_inst *in, const scene *sc, const scene_object *o, diag *d)
 {
-	const scene_sss *ss = &o->material->sss;
+	sss_medium md = medium_of(o->material);
 	double size_mm = v3_length(v3_sub(in->hi, in->lo)) * sc->global.mm_per_unit, worst = 0.0;
-	const float *s_s = &ss->sigma_s_per_mm.x, *s_a = &ss->sigma_a_per_mm.x;
+	const double *s_s = md.sigma_s_per_mm, *s_a = md.sigma_a_per_mm;
 	for (int c = 0; c < 3; c++) {
-		double st = (double)s_s[c] + s_a[c], tau = st * size_mm;
-		double steps = fmin(tau * tau, s_a[c] > 0.0f ? st / s_a[c] : INFINITY);
+		double st = s_s[c] + s_a[c], tau = st * size_mm;
+		double steps = fmin(tau * tau, s_a[c] > 0.0 ? st / s_a[c] : INFINITY);
 		worst = fmax(worst, steps);
 	}
 	if (worst > SSS_WALK_MAX_STEPS)
@@ -140,43 +142,31 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 	return ok;
 }
 
-/* The SSS volume of each instance: alone (-1), or the first instance of its material's group;
- * and each group's members as a list in instance order (sss_next). */
+/* The SSS volume of each instance: alone (-1), or the first instance of its material's group.
+ * The one record of membership: the top level's set of each instance is sss_set's, and both SSS
+ * queries (circles, nearest hits) find a group's members through it. */
 void build_groups(world *w, const scene *sc)
 {
 	for (size_t i = 0; i < w->n_insts; i++) {
-		const scene_material *m = scene_object_at(sc, i)->material;
+		const scene_material *m = scene_object_at(sc, w->insts[i].object)->material;
 		w->sss_group[i] = -1;
-		w->sss_next[i] = UINT32_MAX;
 		for (size_t j = 0; is_sss(m) && m->sss.group && j <= i; j++) {
-			const scene_material *mj = scene_object_at(sc, j)->material;
+			const scene_material *mj = scene_object_at(sc, w->insts[j].object)->material;
 			if (is_sss(mj) && mj->sss.group && !strcmp(mj->sss.group, m->sss.group)) {
 				w->sss_group[i] = (int)j;
 				break;
 			}
 		}
 	}
-	/* Each member links to the next: walk back from the end, keeping each group's last seen. */
-	for (size_t i = w->n_insts; i-- > 0;) {
-		if (w->sss_group[i] < 0)
-			continue;
-		size_t head = (size_t)w->sss_group[i];
-		if (i != head) {
-			w->sss_next[i] = w->sss_next[head];
-			w->sss_next[head] = (uint32_t)i;
-		}
-	}
 }
 
 const char *world_sss_method(const world *w)
 {
-	static const char *names[] = {[RENDER_SSS_CIRCLE] = "circle", [RENDER_SSS_FULLCIRCLE] = "fullcircle",
-				      [RENDER_SSS_DISK] = "disk", [RENDER_SSS_VOLUME] = "volume"};
 	const char *name = "none";
 	for (size_t i = 0; i < w->n_materials; i++) {
 		if (!w->sss_of[i])
 			continue;
-		const char *m = names[w->sss_of[i]->method];
+		const char *m = sss_method_name(w->sss_of[i]->method);
 		if (strcmp(name, "none") && strcmp(name, m))
 			return "mixed";
 		name = m;

@@ -4,6 +4,7 @@
 #include "lang/parser.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #define TRY(x)                                                                                     \
@@ -258,10 +259,11 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 	return true;
 }
 
-static bool form(parser *p, scene_material *m, scene_sss_form f, const lang_token *t)
+/* Records that the SSS parameter t gives form f: an error when the other form was given. */
+static bool form(parser *p, scene_material *m, sss_form f, const lang_token *t)
 {
 	scene_sss *s = &m->sss;
-	if (s->given != SSS_FORM_DEFAULT && s->given != f) {
+	if (s->medium.form != SSS_FORM_DEFAULT && s->medium.form != f) {
 		diag_loc other = f == SSS_FORM_PHYSICAL ? s->artist_loc : s->physical_loc;
 		return lang_error(p, t->loc,
 				  "'%.*s' gives the %s form, but the %s form was given at line %u; give sigma_s/sigma_a "
@@ -269,13 +271,13 @@ static bool form(parser *p, scene_material *m, scene_sss_form f, const lang_toke
 				  (int)t->len, t->text, f == SSS_FORM_PHYSICAL ? "physical" : "artist",
 				  f == SSS_FORM_PHYSICAL ? "artist" : "physical", other.line);
 	}
-	if (s->given == SSS_FORM_DEFAULT) {
+	if (s->medium.form == SSS_FORM_DEFAULT) {
 		if (f == SSS_FORM_PHYSICAL)
 			s->physical_loc = t->loc;
 		else
 			s->artist_loc = t->loc;
 	}
-	s->given = f;
+	s->medium.form = f;
 	return true;
 }
 
@@ -286,124 +288,176 @@ static bool positive3(parser *p, diag_loc loc, const char *what, vec3 c)
 	return lang_error(p, loc, "%s must be > 0 in every channel, found <%g, %g, %g>", what, c.x, c.y, c.z);
 }
 
-/* sss_block = ( "skin" | "wax" | "marble" ) "{" { sss_param } "}"
- * sss_param = "preset" string | "sigma_s" colour | "sigma_a" colour | colour
+/* The most characters of the list of preset names in a message. */
+#define SSS_PRESET_LIST_MAX 256
+
+/* colour: the artist form's albedo, in [0, 1]. */
+static bool sss_colour(parser *p, scene_material *m, const lang_token *t)
+{
+	sss_medium_spec *s = &m->sss.medium;
+	TRY(form(p, m, SSS_FORM_ARTIST, t));
+	TRY(lang_color(p, "as the SSS colour", &s->albedo));
+	if (!(s->albedo.x >= 0 && s->albedo.y >= 0 && s->albedo.z >= 0 && s->albedo.x <= 1 && s->albedo.y <= 1 &&
+	      s->albedo.z <= 1))
+		return lang_error(p, t->loc, "SSS colour must be in [0, 1] in every channel, found <%g, %g, %g>",
+				  s->albedo.x, s->albedo.y, s->albedo.z);
+	s->has |= SSS_HAS_ALBEDO;
+	return true;
+}
+
+/* "preset" string: the physical form of a measured medium (sss/medium.h), replacing any sigma_s
+ * or sigma_a written before it. */
+static bool sss_preset_item(parser *p, scene_material *m, const lang_token *t)
+{
+	lang_advance(p);
+	TRY(form(p, m, SSS_FORM_PHYSICAL, t));
+	diag_loc sloc = lang_peek(p)->loc;
+	const char *name;
+	TRY(lang_string(p, "after 'preset'", &name));
+	const sss_preset *pr = sss_preset_find(name);
+	if (!pr) {
+		char list[SSS_PRESET_LIST_MAX];
+		size_t n = 0;
+		for (int i = 0; i < sss_n_presets && n < sizeof list; i++)
+			n += (size_t)snprintf(list + n, sizeof list - n, "%s%s", i ? ", " : "", sss_presets[i].name);
+		return lang_error(p, sloc, "unknown preset '%s' (presets: %s)", name, list);
+	}
+	m->sss.medium.preset = pr->name;
+	m->sss.medium.has &= ~(unsigned)(SSS_HAS_SIGMA_S | SSS_HAS_SIGMA_A);
+	return true;
+}
+
+/* "sigma_s" colour | "sigma_a" colour: one coefficient of the physical form, per mm, > 0. */
+static bool sss_sigma(parser *p, scene_material *m, const lang_token *t)
+{
+	bool scat = t->kind == LTK_KW_SIGMA_S;
+	sss_medium_spec *s = &m->sss.medium;
+	lang_advance(p);
+	TRY(form(p, m, SSS_FORM_PHYSICAL, t));
+	vec3 *c = scat ? &s->sigma_s_per_mm : &s->sigma_a_per_mm;
+	TRY(lang_color(p, scat ? "after 'sigma_s'" : "after 'sigma_a'", c));
+	TRY(positive3(p, t->loc, scat ? "sigma_s" : "sigma_a", *c));
+	s->has |= scat ? SSS_HAS_SIGMA_S : SSS_HAS_SIGMA_A;
+	return true;
+}
+
+/* "image" string | "radius" colour: the artist form's albedo texture, or its radius (mm, > 0). */
+static bool sss_artist_item(parser *p, scene_material *m, const lang_token *t)
+{
+	lang_advance(p);
+	TRY(form(p, m, SSS_FORM_ARTIST, t));
+	if (t->kind == LTK_KW_IMAGE)
+		return asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &m->sss.albedo_image);
+	TRY(lang_color(p, "after 'radius'", &m->sss.medium.radius_mm));
+	TRY(positive3(p, t->loc, "radius", m->sss.medium.radius_mm));
+	m->sss.medium.has |= SSS_HAS_RADIUS;
+	return true;
+}
+
+/* "ior" float | "roughness" float | "anisotropy" float: the boundary and the phase function. */
+static bool sss_number(parser *p, scene_sss *s, const lang_token *t)
+{
+	double x;
+	lang_advance(p);
+	switch (t->kind) {
+	case LTK_KW_IOR:
+		TRY(lang_float(p, "after 'ior'", &x) && positive(p, t->loc, "ior", x));
+		s->ior = (float)x;
+		return true;
+	case LTK_KW_ROUGHNESS:
+		TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, t->loc, "roughness", x, 0, 1));
+		s->roughness = (float)x;
+		return true;
+	default: /* LTK_KW_ANISOTROPY */
+		TRY(lang_float(p, "after 'anisotropy'", &x) && in_range(p, t->loc, "anisotropy", x, -0.99, 0.99));
+		s->anisotropy = (float)x;
+		return true;
+	}
+}
+
+/* "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" ) | "method" ( "circle" |
+ * "fullcircle" | "disk" | "volume" ): the keywords in the order of sss_profile_kind and of
+ * sss_method after its default. */
+static bool sss_choice(parser *p, scene_sss *s, const lang_token *t)
+{
+	static const lang_tok profiles[] = {LTK_KW_GAUSSIAN, LTK_KW_SUM_OF_GAUSSIANS, LTK_KW_BURLEY, LTK_KW_DIPOLE};
+	static const lang_tok methods[] = {LTK_KW_CIRCLE, LTK_KW_FULLCIRCLE, LTK_KW_DISK, LTK_KW_VOLUME};
+	lang_advance(p);
+	if (t->kind == LTK_KW_PROFILE) {
+		int i = one_of(p, profiles, 4, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
+		TRY(i >= 0);
+		s->profile = (sss_profile_kind)i;
+	} else {
+		int i = one_of(p, methods, 4, "expected circle, fullcircle, disk or volume after 'method'");
+		TRY(i >= 0);
+		s->method = (sss_method)(SSS_METHOD_CIRCLE + i);
+	}
+	return true;
+}
+
+/* "normal_map" string [ "strength" float ] */
+static bool sss_normal_map(parser *p, scene_sss *s)
+{
+	lang_advance(p);
+	TRY(asset_path(p, "after 'normal_map'", SCENE_ASSET_IMAGE, &s->normal_map));
+	if (lang_peek(p)->kind == LTK_KW_STRENGTH) {
+		double x;
+		lang_advance(p);
+		TRY(lang_float(p, "after 'strength'", &x));
+		s->normal_strength = (float)x;
+	}
+	return true;
+}
+
+/* sss_param = "preset" string | "sigma_s" colour | "sigma_a" colour | colour
  *           | "image" string | "radius" colour | "ior" float | "roughness" float
  *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
  *           | "normal_map" string [ "strength" float ] | "anisotropy" float
  *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" ) | "group" string */
+static bool sss_param(parser *p, scene_material *m, diag_loc open, const char *what)
+{
+	lang_token t = *lang_peek(p);
+	if (starts_colour(p))
+		return sss_colour(p, m, &t);
+	switch (t.kind) {
+	case LTK_KW_PRESET:
+		return sss_preset_item(p, m, &t);
+	case LTK_KW_SIGMA_S:
+	case LTK_KW_SIGMA_A:
+		return sss_sigma(p, m, &t);
+	case LTK_KW_IMAGE:
+	case LTK_KW_RADIUS:
+		return sss_artist_item(p, m, &t);
+	case LTK_KW_IOR:
+	case LTK_KW_ROUGHNESS:
+	case LTK_KW_ANISOTROPY:
+		return sss_number(p, &m->sss, &t);
+	case LTK_KW_PROFILE:
+	case LTK_KW_METHOD:
+		return sss_choice(p, &m->sss, &t);
+	case LTK_KW_NORMAL_MAP:
+		return sss_normal_map(p, &m->sss);
+	case LTK_KW_GROUP:
+		lang_advance(p);
+		return lang_string(p, "after 'group'", &m->sss.group);
+	default:
+		return bad_item(p, open, what, "an SSS parameter (preset, sigma_s, sigma_a, color, radius, ior, ...)");
+	}
+}
+
+/* sss_block = ( "skin" | "wax" | "marble" ) "{" { sss_param } "}"
+ * The block's defaults (scene_sss_defaults), then the parameters as written: the medium's other
+ * form is the build's to derive (sss_medium_derive). */
 static bool sss_block(parser *p, scene_material *m)
 {
 	lang_token kw = *lang_advance(p);
 	const char *what = kw.kind == LTK_KW_SKIN ? "skin" : kw.kind == LTK_KW_WAX ? "wax" : "marble";
 	diag_loc open;
 	TRY(open_block(p, what, &open));
-	scene_sss *s = &m->sss;
 	scene_sss_defaults(m);
-	scene_sss_derive(s); /* both forms of the defaults; the user's values override one */
-	for (;;) {
-		lang_token t = *lang_peek(p);
-		double x;
-		if (t.kind == LTK_RBRACE)
-			break;
-		if (starts_colour(p)) {
-			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(lang_color(p, "as the SSS colour", &s->albedo));
-			if (!(s->albedo.x >= 0 && s->albedo.y >= 0 && s->albedo.z >= 0 && s->albedo.x <= 1 &&
-			      s->albedo.y <= 1 && s->albedo.z <= 1))
-				return lang_error(p, t.loc, "SSS colour must be in [0, 1] in every channel, found <%g, %g, %g>",
-						  s->albedo.x, s->albedo.y, s->albedo.z);
-			continue;
-		}
-		switch (t.kind) {
-		case LTK_KW_PRESET: {
-			lang_advance(p);
-			TRY(form(p, m, SSS_FORM_PHYSICAL, &t));
-			diag_loc sloc = lang_peek(p)->loc;
-			const char *name;
-			TRY(lang_string(p, "after 'preset'", &name));
-			const scene_sss_preset *pr = scene_sss_preset_find(name);
-			if (!pr)
-				return lang_error(p, sloc,
-						  "unknown preset '%s' (presets: apple, chicken1, chicken2, cream, ketchup, "
-						  "marble, potato, skimmilk, skin1, skin2, wholemilk)",
-						  name);
-			s->preset = pr->name;
-			s->sigma_s_per_mm = v3(pr->sigma_s_per_mm[0], pr->sigma_s_per_mm[1], pr->sigma_s_per_mm[2]);
-			s->sigma_a_per_mm = v3(pr->sigma_a_per_mm[0], pr->sigma_a_per_mm[1], pr->sigma_a_per_mm[2]);
-			break;
-		}
-		case LTK_KW_SIGMA_S:
-		case LTK_KW_SIGMA_A: {
-			lang_advance(p);
-			TRY(form(p, m, SSS_FORM_PHYSICAL, &t));
-			vec3 *c = t.kind == LTK_KW_SIGMA_S ? &s->sigma_s_per_mm : &s->sigma_a_per_mm;
-			TRY(lang_color(p, t.kind == LTK_KW_SIGMA_S ? "after 'sigma_s'" : "after 'sigma_a'", c));
-			TRY(positive3(p, t.loc, t.kind == LTK_KW_SIGMA_S ? "sigma_s" : "sigma_a", *c));
-			break;
-		}
-		case LTK_KW_IMAGE:
-			lang_advance(p);
-			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->albedo_image));
-			break;
-		case LTK_KW_RADIUS:
-			lang_advance(p);
-			TRY(form(p, m, SSS_FORM_ARTIST, &t));
-			TRY(lang_color(p, "after 'radius'", &s->radius_mm));
-			TRY(positive3(p, t.loc, "radius", s->radius_mm));
-			break;
-		case LTK_KW_IOR:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'ior'", &x) && positive(p, t.loc, "ior", x));
-			s->ior = (float)x;
-			break;
-		case LTK_KW_ROUGHNESS:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, t.loc, "roughness", x, 0, 1));
-			s->roughness = (float)x;
-			break;
-		case LTK_KW_ANISOTROPY:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'anisotropy'", &x) && in_range(p, t.loc, "anisotropy", x, -0.99, 0.99));
-			s->anisotropy = (float)x;
-			break;
-		case LTK_KW_PROFILE: {
-			static const lang_tok kinds[] = {LTK_KW_GAUSSIAN, LTK_KW_SUM_OF_GAUSSIANS, LTK_KW_BURLEY,
-							 LTK_KW_DIPOLE};
-			lang_advance(p);
-			int i = one_of(p, kinds, 4, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
-			TRY(i >= 0);
-			s->profile = (scene_sss_profile)(PROFILE_GAUSSIAN + i);
-			break;
-		}
-		case LTK_KW_METHOD: {
-			static const lang_tok kinds[] = {LTK_KW_CIRCLE, LTK_KW_FULLCIRCLE, LTK_KW_DISK, LTK_KW_VOLUME};
-			lang_advance(p);
-			int i = one_of(p, kinds, 4, "expected circle, fullcircle, disk or volume after 'method'");
-			TRY(i >= 0);
-			s->method = (scene_sss_method)(SSS_METHOD_CIRCLE + i);
-			break;
-		}
-		case LTK_KW_NORMAL_MAP:
-			lang_advance(p);
-			TRY(asset_path(p, "after 'normal_map'", SCENE_ASSET_IMAGE, &s->normal_map));
-			if (lang_peek(p)->kind == LTK_KW_STRENGTH) {
-				lang_advance(p);
-				TRY(lang_float(p, "after 'strength'", &x));
-				s->normal_strength = (float)x;
-			}
-			break;
-		case LTK_KW_GROUP:
-			lang_advance(p);
-			TRY(lang_string(p, "after 'group'", &s->group));
-			break;
-		default:
-			return bad_item(p, open, what, "an SSS parameter (preset, sigma_s, sigma_a, color, radius, ior, ...)");
-		}
-	}
+	while (lang_peek(p)->kind != LTK_RBRACE)
+		TRY(sss_param(p, m, open, what));
 	lang_advance(p);
-	scene_sss_derive(s);
 	return true;
 }
 

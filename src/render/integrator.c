@@ -123,38 +123,36 @@ static void turn_hit(render_hit *h, float side)
 /* Circle tracing (Legros & Corvazier 2016; src/sss/README.md "Plugging in"): r from the profile,
  * the circle of that radius about the exit x in a plane through its normal n_out, every hit on
  * the same SSS volume, one chosen by resampling proportional to its full weight. */
+_Static_assert(RENDER_SSS_MAX_HITS <= SSS_CIRCLE_MAX_HITS, "sss_circle_choose weighs every hit kept");
+
 static bool circle_entry(const render_scene *s, const render_settings *set, const render_sss *m,
 			 const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
 {
 	sss_circle_opts o = sss_circle_default_opts();
-	o.kind = m->method == RENDER_SSS_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
+	o.kind = m->method == SSS_METHOD_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
 	o.weight = set->circle_weight;
 	float u_channel = rng_float(g), u_r = rng_float(g), u_phi = rng_float(g), u_pick = rng_float(g);
 	double r_mm = sss_profile_sample(&m->profile, u_channel, u_r);
 	sss_circle c = sss_circle_make(exit->p, n_out, (float)(r_mm * m->units_per_mm), 0.0f, u_phi, &o);
-	tri_circle q = {c.center, c.t, c.axis, c.radius, o.kind == SSS_CIRCLE_FULL};
-	render_hit hits[RENDER_SSS_MAX_HITS];
-	float theta[RENDER_SSS_MAX_HITS];
-	sss_circle_hit ch[RENDER_SSS_MAX_HITS];
+	tri_circle_hit hits[RENDER_SSS_MAX_HITS];
 	bool more = false;
-	uint32_t k = c.radius > 0.0f ? s->circle(s->user, exit, &q, hits, theta, RENDER_SSS_MAX_HITS, &more) : 0;
+	uint32_t k = c.q.radius > 0.0f ? s->circle(s->user, exit, &c.q, hits, RENDER_SSS_MAX_HITS, &more) : 0;
 	assert(k <= RENDER_SSS_MAX_HITS);
 	if (more)
 		out->sss_overflow++;
 	float side = v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f;
-	for (uint32_t i = 0; i < k; i++) {
-		turn_hit(&hits[i], side);
-		ch[i] = (sss_circle_hit){hits[i].p, hits[i].ng, theta[i]};
-	}
+	for (uint32_t i = 0; i < k; i++)
+		hits[i].ng = v3_scale(hits[i].ng, side); /* turn_hit's turn */
 	vec3 w;
 	float prob;
-	int i = sss_circle_choose(&c, sss_profile_ratio(&m->profile, r_mm), ch, (int)k, u_pick, &o, &w, &prob);
+	int i = sss_circle_choose(&c, sss_profile_ratio(&m->profile, r_mm), hits, (int)k, u_pick, &o, &w, &prob);
 	if (i < 0 || !v3_is_finite(w)) {
 		out->sss_nohit++;
 		return false;
 	}
 	assert((uint32_t)i < k);
-	e->hit = hits[i];
+	s->circle_surface(s->user, &hits[i], &e->hit); /* the full record of the chosen hit only */
+	turn_hit(&e->hit, side);
 	e->weight = w;
 	return true;
 }
@@ -273,14 +271,17 @@ static bool sss_find_entry(const render_scene *s, const render_settings *set, co
 {
 	out->sss_searches++;
 	switch (m->method) {
-	case RENDER_SSS_CIRCLE:
-	case RENDER_SSS_FULLCIRCLE:
+	case SSS_METHOD_CIRCLE:
+	case SSS_METHOD_FULLCIRCLE:
 		return circle_entry(s, set, m, exit, n_out, g, e, out);
-	case RENDER_SSS_DISK:
+	case SSS_METHOD_DISK:
 		return disk_entry(s, m, exit, n_out, g, e, out);
-	case RENDER_SSS_VOLUME:
+	case SSS_METHOD_VOLUME:
 		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
+	case SSS_METHOD_DEFAULT: /* never: the build chose the method */
+		break;
 	}
+	assert(!"an SSS material without a method");
 	return false;
 }
 

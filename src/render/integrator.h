@@ -16,7 +16,7 @@
  * Subsurface scattering (DESIGN.md, "Subsurface scattering"): at a material with a render_sss the
  * coat's specular reflection stays a BSDF lobe; the light it transmits, 1 - F(w_o), goes through
  * the BSSRDF instead of the coat's diffuse interior. One of the two continues the path, chosen by
- * their estimated weights. The BSSRDF samples an entry point x_i (render_sss_method picks how: the
+ * their estimated weights. The BSSRDF samples an entry point x_i (render_sss.method picks how: the
  * dispatch is in integrator.c) and the path goes on from x_i through the entry lobe
  * (1 - F(w_i)) / (c pi) with the shading normal and textures evaluated at x_i; the whole exit-entry
  * step counts as one scattering event. */
@@ -30,6 +30,7 @@
 #include "render/camera.h"
 #include "render/light.h"
 #include "sss/circle.h"
+#include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
 
@@ -52,22 +53,14 @@ typedef struct render_hit {
 			  bvh_offset_scaled(p, n, scale) (accel/offset.h); 0: unknown */
 } render_hit;
 
-/* How a subsurface material finds its entry point (src/sss: circle.*, disk.*, walk.*). */
-typedef enum render_sss_method {
-	RENDER_SSS_CIRCLE,     /* half circles (Legros & Corvazier 2016) */
-	RENDER_SSS_FULLCIRCLE, /* full circles */
-	RENDER_SSS_DISK,       /* King et al. 2013 probe segments */
-	RENDER_SSS_VOLUME,     /* random walk in the medium: the reference the profiles approximate */
-} render_sss_method;
-
 /* The BSSRDF of one material (plain data, built once per material). */
 typedef struct render_sss {
-	render_sss_method method;
+	sss_method method;   /* never SSS_METHOD_DEFAULT: the build chose */
 	sss_profile profile; /* radii in mm, channel albedos A = the material's albedo */
 	float units_per_mm;  /* scene units per mm (1 / mm_per_unit): a profile radius to the scene */
 	float ior;	     /* of the boundary; the coat's */
 	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
-	sss_walk_medium medium; /* RENDER_SSS_VOLUME: the medium's coefficients per scene unit */
+	sss_walk_medium medium; /* SSS_METHOD_VOLUME: the medium's coefficients per scene unit */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;
@@ -93,11 +86,16 @@ typedef struct render_scene {
 	 * for the whole table when no material is subsurface. */
 	const render_sss *const *sss;
 	/* Every hit of the world-space circle q on the SSS volume of the surface `at` (its object or
-	 * its SSS group), filled like intersect's (t is 0) with the circle angle of each in theta.
-	 * Returns how many were written (at most max); *more tells whether there were others.
-	 * Needed when sss is not NULL. Thread-safe. */
-	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, render_hit *hits,
-			   float *theta, uint32_t max, bool *more);
+	 * its SSS group), in the canonical order (tri_circle_hits_sort, whatever the trees): its
+	 * world position pos on the circle, its angle theta, the geometric normal ng as intersect
+	 * fills render_hit's (in the shading normal's hemisphere), inst the object, prim and
+	 * barycentrics. Returns how many were written (at most max); *more tells whether there were
+	 * others. Needed when sss is not NULL. Thread-safe. */
+	uint32_t (*circle)(void *user, const render_hit *at, const tri_circle *q, tri_circle_hit *hits,
+			   uint32_t max, bool *more);
+	/* The full surface at a hit that circle returned, filled like intersect's (t is 0, p the
+	 * circle's position): asked for the chosen hit only. Needed with circle. Thread-safe. */
+	void (*circle_surface)(void *user, const tri_circle_hit *h, render_hit *hit);
 	/* The nearest hit with t in [tmin, tmax] of a ray on the SSS volume of the surface `at`
 	 * alone (other objects are transparent to it), filled like intersect's: the disk's probes
 	 * and the volume's walk. Needed when a material uses disk or volume. Thread-safe. */

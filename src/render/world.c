@@ -20,11 +20,10 @@ static vec3 xf_vector(const world_inst *in, vec3 v)
 	return in->identity ? v : d3v(xform_vector(&in->xf, v3_to_d3(v)));
 }
 
-/* The surface of instance `inst` at triangle prim, barycentrics (u, v) of its second and third
- * vertex: world position, normals (both in one hemisphere), uv. */
-static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, float v, render_hit *hit)
+/* The world-space normals of instance `in` at triangle prim, barycentrics (u, v) of its second
+ * and third vertex: the geometric one *ng turned into the hemisphere of the shading one *ns. */
+static void hit_normals(const world_inst *in, uint32_t prim, float u, float v, vec3 *ng_out, vec3 *ns_out)
 {
-	const world_inst *in = &w->insts[inst];
 	const mesh *m = &in->g->m;
 	const uint32_t *ix = m->indices + 3 * (size_t)prim;
 	float b0 = 1.0f - u - v;
@@ -40,6 +39,20 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 		if (v3_dot(ns, ng) < 0.0f)
 			ng = v3_neg(ng); /* render_hit wants both normals in one hemisphere */
 	}
+	*ng_out = ng, *ns_out = ns;
+}
+
+/* The surface of instance `inst` at triangle prim, barycentrics (u, v) of its second and third
+ * vertex: world position, normals (both in one hemisphere), uv. */
+static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, float v, render_hit *hit)
+{
+	const world_inst *in = &w->insts[inst];
+	const mesh *m = &in->g->m;
+	const uint32_t *ix = m->indices + 3 * (size_t)prim;
+	float b0 = 1.0f - u - v;
+	vec3 p0 = m->positions[ix[0]], p1 = m->positions[ix[1]], p2 = m->positions[ix[2]];
+	vec3 ng, ns;
+	hit_normals(in, prim, u, v, &ng, &ns);
 	vec2 uv = v2(0.0f, 0.0f);
 	if (m->uvs)
 		uv = v2(b0 * m->uvs[ix[0]].x + u * m->uvs[ix[1]].x + v * m->uvs[ix[2]].x,
@@ -77,66 +90,62 @@ uint32_t sss_set(const world *w, size_t i)
 }
 
 /* Every hit of the circle on the SSS volume of `at`: its instance alone, or every member of its
- * group (the top level's set of the group: other objects cost no traversal and take no room). The
- * position is the circle's exact one. */
-static uint32_t world_circle(void *user, const render_hit *at, const tri_circle *q, render_hit *hits, float *theta,
-			     uint32_t max, bool *more)
+ * group (the top level's set of the group: other objects cost no traversal and take no room), in
+ * the top level's canonical order. The position is the circle's exact one; the normal is the
+ * one fill_hit gives (the weights must see the normal the chosen hit is shaded with). */
+static uint32_t world_circle(void *user, const render_hit *at, const tri_circle *q, tri_circle_hit *hits, uint32_t max,
+			     bool *more)
 {
 	const world *w = user;
 	if (!w->top || at->object >= w->n_insts || w->inst_top[at->object] == UINT32_MAX)
 		return 0;
-	tri_circle_hit th[RENDER_SSS_MAX_HITS];
-	uint32_t total = w->sss_group[at->object] < 0
-			     ? tlas_circle(w->top, q, w->inst_top[at->object], th, RENDER_SSS_MAX_HITS)
-			     : tlas_circle_set(w->top, q, sss_set(w, at->object), th, RENDER_SSS_MAX_HITS);
-	uint32_t n = total < RENDER_SSS_MAX_HITS ? total : RENDER_SSS_MAX_HITS;
-	qsort(th, n, sizeof *th, tri_circle_hit_cmp); /* the choice among them must not see the BVH */
-	uint32_t k = 0;
-	*more = total > n; /* beyond the traversal's buffer: known only by count */
+	uint32_t total = w->sss_group[at->object] < 0 ? tlas_circle(w->top, q, w->inst_top[at->object], hits, max)
+						      : tlas_circle_set(w->top, q, sss_set(w, at->object), hits, max);
+	uint32_t n = total < max ? total : max;
+	*more = total > n; /* beyond the buffer: known only by count */
 	for (uint32_t i = 0; i < n; i++) {
-		uint32_t inst = w->top_inst[th[i].inst];
-		if (k == max) {
-			*more = true;
-			break;
-		}
-		fill_hit(w, inst, th[i].prim, th[i].u, th[i].v, &hits[k]);
-		hits[k].p = th[i].pos;
-		theta[k++] = th[i].theta;
+		vec3 ns;
+		hits[i].inst = w->top_inst[hits[i].inst];
+		hit_normals(&w->insts[hits[i].inst], hits[i].prim, hits[i].u, hits[i].v, &hits[i].ng, &ns);
 	}
-	return k;
+	return n;
 }
 
-/* The nearest hit of a ray on the SSS volume of `at`: its instance, or each member of its group
- * in turn (the ray moved into each one's object space: t is kept, the direction not being
- * renormalised), the members found through the group's list. */
+static void world_circle_surface(void *user, const tri_circle_hit *h, render_hit *hit)
+{
+	fill_hit(user, h->inst, h->prim, h->u, h->v, hit);
+	hit->p = h->pos;
+}
+
+/* The nearest hit of a ray on the SSS volume of `at`: its instance alone (the ray moved into its
+ * object space: t is kept, the direction not being renormalised), or the members of its group,
+ * found by the top level through the group's set (sss_set), as world_circle finds them. */
 static bool world_sss_closest(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
 			      render_hit *hit)
 {
 	const world *w = user;
-	if (at->object >= w->n_insts)
+	if (!w->top || at->object >= w->n_insts)
 		return false;
-	int group = w->sss_group[at->object];
+	bvh_ray r = {ray->o, ray->d, tmin, tmax};
 	bvh_hit best;
-	uint32_t best_inst = UINT32_MAX;
-	for (size_t i = group < 0 ? at->object : (size_t)group; i < w->n_insts;
-	     i = group < 0 ? w->n_insts : w->sss_next[i]) {
-		const world_inst *in = &w->insts[i];
+	uint32_t inst;
+	if (w->sss_group[at->object] >= 0) {
+		if (!tlas_intersect_set(w->top, &r, sss_set(w, at->object), &best))
+			return false;
+		inst = w->top_inst[best.inst];
+	} else {
+		const world_inst *in = &w->insts[at->object];
 		if (!in->g->b)
-			continue;
-		bvh_ray r = {ray->o, ray->d, tmin, tmax};
+			return false;
 		if (!in->identity) {
 			r.org = d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o)));
 			r.dir = d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d)));
 		}
-		bvh_hit h;
-		if (bvh_intersect(in->g->b, &r, &h)) {
-			best = h, best_inst = (uint32_t)i;
-			tmax = h.t;
-		}
+		if (!bvh_intersect(in->g->b, &r, &best))
+			return false;
+		inst = at->object;
 	}
-	if (best_inst == UINT32_MAX)
-		return false;
-	fill_hit(w, best_inst, best.prim, best.u, best.v, hit);
+	fill_hit(w, inst, best.prim, best.u, best.v, hit);
 	hit->t = best.t;
 	return true;
 }
@@ -184,5 +193,6 @@ void world_bind(world *w)
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
+			       .circle_surface = world_circle_surface,
 			       .sss_closest = world_sss_closest};
 }

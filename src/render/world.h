@@ -79,8 +79,8 @@ struct world {
 	render_sss *sss;        /* indexed like materials; meaningful where sss_of is not NULL */
 	const render_sss **sss_of; /* the integrator's table: NULL for materials without SSS */
 	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
-	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index */
-	uint32_t *sss_next;     /* insts index -> the next member of its SSS group (UINT32_MAX: none) */
+	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index;
+				 * the one record of membership (the top level's sets are sss_set's) */
 	world_stats stats;
 	render_scene rs;        /* the integrator's view of this world */
 };

@@ -238,31 +238,11 @@ static int validate_camera(const scene_camera *c, diag *d)
 	return 0;
 }
 
-static int validate_material(const scene_material *m, diag *d)
-{
-	if (m->kind < MAT_SKIN)
-		return 0;
-	const scene_sss *s = &m->sss;
-	int e = 0;
-	for (int i = 0; i < 3; i++) {
-		float ss = i == 0 ? s->sigma_s_per_mm.x : i == 1 ? s->sigma_s_per_mm.y : s->sigma_s_per_mm.z;
-		float sa = i == 0 ? s->sigma_a_per_mm.x : i == 1 ? s->sigma_a_per_mm.y : s->sigma_a_per_mm.z;
-		if (!(ss > 0) || !(sa > 0) || !isfinite(ss) || !isfinite(sa)) {
-			diag_error(d, m->loc, "%s material: sigma_s and sigma_a must be positive in every channel",
-				   scene_material_kind_name(m->kind));
-			return 1;
-		}
-	}
-	return e;
-}
-
 int scene_validate(const scene *s, diag *d)
 {
 	int e = 0;
 	if (s->has_camera)
 		e += validate_camera(&s->camera, d);
-	for (scene_material *m = s->materials; m; m = m->next)
-		e += validate_material(m, d);
 	for (scene_geom *g = s->geoms; g; g = g->next) {
 		if (g->kind == SHAPE_MESH)
 			e += validate_mesh(g, d);
@@ -354,18 +334,26 @@ static void dump_material(FILE *o, const scene_material *m)
 	if (m->kind >= MAT_SKIN) {
 		const scene_sss *s = &m->sss;
 		static const char *const forms[] = {"default", "physical", "artist"};
-		fprintf(o, "  form %s", forms[s->given]);
-		if (s->preset)
-			fprintf(o, " preset %s", s->preset);
+		const sss_medium_spec *md = &s->medium;
+		fprintf(o, "  form %s", forms[md->form]);
+		if (md->preset)
+			fprintf(o, " preset %s", md->preset);
 		fputc('\n', o);
-		fprintf(o, " ");
-		dump_v3(o, "sigma_s", s->sigma_s_per_mm);
-		dump_v3(o, "sigma_a", s->sigma_a_per_mm);
-		fprintf(o, "\n ");
-		fprintf(o, " albedo <%.4f, %.4f, %.4f> radius <%.4f, %.4f, %.4f>\n", s->albedo.x, s->albedo.y,
-			s->albedo.z, s->radius_mm.x, s->radius_mm.y, s->radius_mm.z);
+		/* The parameters as written (or the block's defaults); the build derives the others. */
+		if (md->has) {
+			fprintf(o, " ");
+			if (md->has & SSS_HAS_SIGMA_S)
+				dump_v3(o, "sigma_s", md->sigma_s_per_mm);
+			if (md->has & SSS_HAS_SIGMA_A)
+				dump_v3(o, "sigma_a", md->sigma_a_per_mm);
+			if (md->has & SSS_HAS_ALBEDO)
+				dump_v3(o, "albedo", md->albedo);
+			if (md->has & SSS_HAS_RADIUS)
+				dump_v3(o, "radius", md->radius_mm);
+			fputc('\n', o);
+		}
 		fprintf(o, "  ior %g roughness %g anisotropy %g profile %s method %s", s->ior, s->roughness,
-			s->anisotropy, scene_sss_profile_name(s->profile), scene_sss_method_name(s->method));
+			s->anisotropy, sss_profile_name(s->profile), sss_method_name(s->method));
 		if (s->albedo_image)
 			fprintf(o, " image \"%s\"", s->albedo_image);
 		if (s->normal_map)

@@ -4,6 +4,8 @@
  * p_A = p(r) p_phi |n_i . e_a| / (r sqrt(1 - (a . d)^2)), e_a the unit tangent of the circle there. */
 #include "sss/circle.h"
 
+#include <assert.h>
+
 #define PI_F 3.14159265358979f
 
 sss_circle_opts sss_circle_default_opts(void)
@@ -31,18 +33,19 @@ static void family_frame(const sss_circle *c, int f, vec3 *a, vec3 *u1, vec3 *u2
 sss_circle sss_circle_make(vec3 x, vec3 n, float r, float u_family, float u_phi, const sss_circle_opts *o)
 {
 	sss_circle c;
-	c.center = x;
+	c.q.centre = x;
 	c.n = n;
 	v3_basis(n, &c.b1, &c.b2);
-	c.radius = r;
+	c.q.radius = r;
 	c.family = 0;
 	if (o->mis_axes)
 		c.family = u_family < family_q(o, 0) ? 0 : u_family < family_q(o, 0) + family_q(o, 1) ? 1 : 2;
 	vec3 u1, u2;
-	family_frame(&c, c.family, &c.axis, &u1, &u2);
+	family_frame(&c, c.family, &c.q.n, &u1, &u2);
 	bool half = o->kind == SSS_CIRCLE_HALF;
+	c.q.full = !half;
 	float phi = (half ? 2.0f * PI_F : PI_F) * u_phi;
-	c.t = v3_add(v3_scale(u1, cosf(phi)), v3_scale(u2, sinf(phi)));
+	c.q.t = v3_add(v3_scale(u1, cosf(phi)), v3_scale(u2, sinf(phi)));
 	c.theta_min = half ? -0.5f * PI_F : 0.0f;
 	c.theta_max = half ? 0.5f * PI_F : 2.0f * PI_F;
 	c.p_phi = half ? 1.0f / (2.0f * PI_F) : 1.0f / PI_F;
@@ -51,19 +54,19 @@ sss_circle sss_circle_make(vec3 x, vec3 n, float r, float u_family, float u_phi,
 
 vec3 sss_circle_point(const sss_circle *c, float theta)
 {
-	vec3 d = v3_add(v3_scale(c->t, cosf(theta)), v3_scale(c->axis, sinf(theta)));
-	return v3_madd(c->center, d, c->radius);
+	vec3 d = v3_add(v3_scale(c->q.t, cosf(theta)), v3_scale(c->q.n, sinf(theta)));
+	return v3_madd(c->q.centre, d, c->q.radius);
 }
 
 vec3 sss_circle_tangent(const sss_circle *c, float theta)
 {
-	return v3_add(v3_scale(c->t, -sinf(theta)), v3_scale(c->axis, cosf(theta)));
+	return v3_add(v3_scale(c->q.t, -sinf(theta)), v3_scale(c->q.n, cosf(theta)));
 }
 
 /* The unit direction d = (x_i - x)/r of the point at theta. */
 static vec3 circle_dir(const sss_circle *c, float theta)
 {
-	return v3_add(v3_scale(c->t, cosf(theta)), v3_scale(c->axis, sinf(theta)));
+	return v3_add(v3_scale(c->q.t, cosf(theta)), v3_scale(c->q.n, sinf(theta)));
 }
 
 /* H_a = p_phi |n_i . e_a| / sqrt(1 - (a . d)^2) of the family with axis a, with
@@ -84,23 +87,23 @@ static float family_h(vec3 a, vec3 d, vec3 n_i, float p_phi, const sss_circle_op
 }
 
 /* H = r p_A / p(r) of a hit: the sampled family's, or the q-weighted sum over the families. */
-static float hit_h(const sss_circle *c, const sss_circle_hit *h, const sss_circle_opts *o)
+static float hit_h(const sss_circle *c, const tri_circle_hit *h, const sss_circle_opts *o)
 {
 	vec3 d = circle_dir(c, h->theta);
 	if (!o->mis_axes)
-		return family_h(c->axis, d, h->n, c->p_phi, o);
+		return family_h(c->q.n, d, h->ng, c->p_phi, o);
 	float sum = 0.0f;
 	for (int f = 0; f < 3; f++) {
 		vec3 a, u1, u2;
 		family_frame(c, f, &a, &u1, &u2);
-		sum += family_q(o, f) * family_h(a, d, h->n, c->p_phi, o);
+		sum += family_q(o, f) * family_h(a, d, h->ng, c->p_phi, o);
 	}
 	return sum;
 }
 
-float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const sss_circle_hit *h, const sss_circle_opts *o)
+float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const tri_circle_hit *h, const sss_circle_opts *o)
 {
-	return pdf_r * hit_h(c, h, o) / c->radius;
+	return pdf_r * hit_h(c, h, o) / c->q.radius;
 }
 
 float sss_circle_leak(vec3 n, vec3 n_i, vec3 d)
@@ -110,17 +113,17 @@ float sss_circle_leak(vec3 n, vec3 n_i, vec3 d)
 	return 1.0f + (fminf(1.0f, fmaxf(0.0f, v3_dot(n, n_i))) - 1.0f) * t;
 }
 
-vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *h, const sss_circle_opts *o)
+vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const tri_circle_hit *h, const sss_circle_opts *o)
 {
 	float H = hit_h(c, h, o);
 	/* H = 0 only for an exactly grazing hit under grazing_min = 0: density zero, never sampled. */
 	if (!(H > 0.0f) || isinf(H))
 		return v3s(0.0f);
-	float ft = sss_circle_leak(c->n, h->n, circle_dir(c, h->theta));
+	float ft = sss_circle_leak(c->n, h->ng, circle_dir(c, h->theta));
 	return v3_scale(ratio, ft / (2.0f * PI_F * H));
 }
 
-bool sss_circle_repeats(const sss_circle_hit *hits, int i)
+bool sss_circle_repeats(const tri_circle_hit *hits, int i)
 {
 	for (int j = 0; j < i; j++) {
 		float d = fabsf(hits[i].theta - hits[j].theta);
@@ -130,38 +133,36 @@ bool sss_circle_repeats(const sss_circle_hit *hits, int i)
 	return false;
 }
 
-/* The weight a hit counts with: zero for a repeat of an earlier hit's point. */
-static vec3 counted_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *hits, int i,
-			   const sss_circle_opts *o)
-{
-	return sss_circle_repeats(hits, i) ? v3s(0.0f) : sss_circle_hit_weight(c, ratio, &hits[i], o);
-}
-
-int sss_circle_choose(const sss_circle *c, vec3 ratio, const sss_circle_hit *hits, int k, float u,
+int sss_circle_choose(const sss_circle *c, vec3 ratio, const tri_circle_hit *hits, int k, float u,
 		      const sss_circle_opts *o, vec3 *weight, float *prob)
 {
+	assert(k >= 0 && k <= SSS_CIRCLE_MAX_HITS);
 	*weight = v3s(0.0f);
 	*prob = 0.0f;
-	float total = 0.0f;
-	for (int i = 0; i < k; i++)
-		total += v3_luminance(counted_weight(c, ratio, hits, i, o));
+	/* Each hit's weight once (zero for a repeat of an earlier hit's point), then the walk. */
+	vec3 w[SSS_CIRCLE_MAX_HITS];
+	float lum[SSS_CIRCLE_MAX_HITS], total = 0.0f;
+	for (int i = 0; i < k; i++) {
+		w[i] = sss_circle_repeats(hits, i) ? v3s(0.0f) : sss_circle_hit_weight(c, ratio, &hits[i], o);
+		lum[i] = v3_luminance(w[i]);
+		total += lum[i];
+	}
 	if (!(total > 0.0f) || !isfinite(total))
 		return -1;
 	float x = u * total;
 	int last = -1;
 	for (int i = 0; i < k; i++) {
-		float l = v3_luminance(counted_weight(c, ratio, hits, i, o));
-		if (l <= 0.0f)
+		if (lum[i] <= 0.0f)
 			continue;
 		last = i;
-		if (x < l)
+		if (x < lum[i])
 			break;
-		x -= l;
+		x -= lum[i];
 	}
 	/* `last` is the hit where x ran out, or the last hit of positive weight when rounding left
-	 * x over: either way a hit of positive weight. */
-	vec3 w = sss_circle_hit_weight(c, ratio, &hits[last], o);
-	*prob = v3_luminance(w) / total;
-	*weight = v3_scale(w, 1.0f / *prob);
+	 * x over: either way a hit of positive weight (total > 0 has one). */
+	assert(last >= 0 && lum[last] > 0.0f);
+	*prob = lum[last] / total;
+	*weight = v3_scale(w[last], 1.0f / *prob);
 	return last;
 }

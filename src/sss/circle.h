@@ -5,6 +5,7 @@
 #ifndef CIRCE_SSS_CIRCLE_H
 #define CIRCE_SSS_CIRCLE_H
 
+#include "accel/tri.h"
 #include "base/vec.h"
 
 #include <stdbool.h>
@@ -31,6 +32,10 @@ typedef enum sss_circle_weight {
  * two hits that close are r * 2e-6 apart. */
 #define SSS_CIRCLE_SAME_THETA 2e-6f
 
+/* The most hits sss_circle_choose weighs in one call: it keeps their weights on the stack (16
+ * bytes each). Twice the renderer's RENDER_SSS_MAX_HITS (64), the hits it keeps of one circle. */
+#define SSS_CIRCLE_MAX_HITS 128
+
 /* Probabilities of the three circle families (axes n, b1, b2) under mis_axes: King et al. 2013's
  * probe-axis probabilities. */
 #define SSS_CIRCLE_MIS_Q_NORMAL 0.5f
@@ -47,23 +52,20 @@ typedef struct sss_circle_opts {
 /* Half circles, exact weight, no MIS, the grazing floor SSS_CIRCLE_GRAZING_MIN. */
 sss_circle_opts sss_circle_default_opts(void);
 
-/* One circle: c(theta) = center + radius (cos(theta) t + sin(theta) axis). */
+/* One circle: c(theta) = q.centre + q.radius (cos(theta) q.t + sin(theta) q.n), the query the
+ * BVH traces (accel/tri.h) with what the estimator adds to it. */
 typedef struct sss_circle {
-	vec3 center;		    /* x, the exit point */
+	tri_circle q;		    /* centre x (the exit point), radius r > 0 (the sampled profile radius,
+				     * scene units), the plane's t and axis q.n: the exit's normal unless
+				     * mis_axes chose b1 or b2; q.full for full circles */
 	vec3 n, b1, b2;		    /* the exit's geometric normal and its basis (v3_basis) */
-	vec3 axis, t;		    /* the plane of the circle: axis is n unless mis_axes chose b1, b2 */
-	float radius;		    /* r > 0, the sampled profile radius (scene units) */
 	float theta_min, theta_max; /* the arc to trace */
 	float p_phi;		    /* density of phi: 1/(2 pi) half, 1/pi full */
 	int family;		    /* 0 (axis n), 1 (b1), 2 (b2) */
 } sss_circle;
 
-/* One intersection of the circle with the surface. */
-typedef struct sss_circle_hit {
-	vec3 p;	     /* position x_i */
-	vec3 n;	     /* geometric normal n_i, unit (either orientation) */
-	float theta; /* the circle's angle at the hit */
-} sss_circle_hit;
+/* A hit of the circle on the surface is the BVH's tri_circle_hit: the estimator reads its
+ * position pos, its unit geometric normal ng (either orientation) and its angle theta. */
 
 /* The circle at exit point x with unit normal n, of radius r, with phi = 2 pi u_phi (half) or
  * pi u_phi (full); u_family (in [0, 1)) picks the family when o->mis_axes, else is ignored. */
@@ -76,7 +78,7 @@ vec3 sss_circle_tangent(const sss_circle *c, float theta);
  * of r (pdf_r = sss_profile_pdf(r)): p(r) p_phi |n_i . e_theta| / (r sqrt(1 - (n . d)^2)) for
  * the exact weight, summed over the families with their probabilities under mis_axes. Zero at
  * an exactly grazing hit when grazing_min is 0; +Inf for a hit on the axis (theta = +-pi/2). */
-float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const sss_circle_hit *h,
+float sss_circle_pdf_area(const sss_circle *c, float pdf_r, const tri_circle_hit *h,
 			  const sss_circle_opts *o);
 
 /* The leak filter of DESIGN.md: mix(1, max(0, n . n_i), max(0, n . d)), d = (x_i - x)/|x_i - x|. */
@@ -86,12 +88,12 @@ float sss_circle_leak(vec3 n, vec3 n_i, vec3 d);
  * computed as ratio f_t / (2 pi H) with H = r p_A / p(r), so r and p(r) never divide. Zero for a
  * hit on the circle's axis. Finite for every input when grazing_min > 0, and then each channel is
  * at most ratio_c / (2 pi p_phi grazing_min) (ratio_c / grazing_min for half circles). */
-vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const sss_circle_hit *h,
+vec3 sss_circle_hit_weight(const sss_circle *c, vec3 ratio, const tri_circle_hit *h,
 			   const sss_circle_opts *o);
 
 /* True when hits[i] is at the point of an earlier hit (hits[0] to hits[i - 1]): their angles within
  * SSS_CIRCLE_SAME_THETA. Such a hit is not counted by sss_circle_choose. */
-bool sss_circle_repeats(const sss_circle_hit *hits, int i);
+bool sss_circle_repeats(const tri_circle_hit *hits, int i);
 
 /* Resampling among the k hits of one circle: picks hit i with probability
  * P_i = lum(w_i) / sum_j lum(w_j), w_i = sss_circle_hit_weight, using u in [0, 1), where hits that
@@ -101,8 +103,8 @@ bool sss_circle_repeats(const sss_circle_hit *hits, int i);
  * *weight = w_i / P_i (the estimator's factor: multiply by the light arriving at hit i) and
  * *prob = P_i; each channel of *weight is at most k times the bound of sss_circle_hit_weight.
  * Returns -1 with *weight = 0 and *prob = 0 when k is 0 or every weight is 0 (the caller counts
- * the no-hit case). */
-int sss_circle_choose(const sss_circle *c, vec3 ratio, const sss_circle_hit *hits, int k, float u,
+ * the no-hit case). k is at most SSS_CIRCLE_MAX_HITS (asserted); each weight is computed once. */
+int sss_circle_choose(const sss_circle *c, vec3 ratio, const tri_circle_hit *hits, int k, float u,
 		      const sss_circle_opts *o, vec3 *weight, float *prob);
 
 #endif

@@ -4,6 +4,7 @@
 
 #include "sss/circle.h"
 
+#include <assert.h>
 #include <math.h>
 
 #define DISK_PI 3.14159265358979323846
@@ -113,6 +114,7 @@ int sss_disk_choose(const sss_disk_hit *hits, int k, float u, vec3 *weight, floa
 			break;
 		x -= l;
 	}
+	assert(pick >= 0); /* total > 0: some hit has a positive weight */
 	*prob = (float)(v3_luminance(hits[pick].weight) / total);
 	*weight = v3_scale(hits[pick].weight, 1.0f / *prob);
 	return pick;

@@ -3,6 +3,7 @@
  * coefficients to each profile's parameters (README.md has the derivations). */
 #include "sss/profile.h"
 
+#include <assert.h>
 #include <float.h>
 #include <math.h>
 
@@ -15,10 +16,6 @@
 #define SSS_BISECT_STEPS 200
 /* Relative bracket width at which a bisection stops: a few ulps of a double. */
 #define SSS_BISECT_REL 1e-15
-/* The artist form's largest alpha': A = 1 with a finite l_d = 1/sigma_tr would need sigma_a = 0
- * and sigma_t' infinite; alpha' stays this close to 1 instead (R_d then falls short of 1 by
- * about 1e-5). */
-#define SSS_ALPHA_PRIME_MAX (1.0 - 1e-12)
 /* Relative Newton step below which the dipole's CDF inversion stops (see invert_cdf0). */
 #define SSS_NEWTON_DONE 1e-9
 /* Intervals of the Simpson rule for the Fresnel moment; the integrand is smooth on each piece
@@ -240,6 +237,7 @@ static void set_truncation(sss_channel *c)
 	}
 	c->r_max_mm = hi;
 	c->norm = cdf0(c, hi);
+	assert(c->r_max_mm > 0.0 && c->norm > 0.0); /* sss_channel's: r_max > 0, the renormalisation */
 	if (c->kind == SSS_PROFILE_DIPOLE)
 		for (int i = 0; i < SSS_DIPOLE_TABLE; i++)
 			c->dipole.table_cdf[i] = cdf0(c, dipole_table_r(c, i));
@@ -537,6 +535,8 @@ bool sss_profile_from_artist(sss_profile *out, sss_profile_kind kind, const doub
 
 double sss_profile_sample(const sss_profile *p, double u_channel, double u_r)
 {
+	/* sss_profile_make's q sum to 1, so the loop below ends */
+	assert(p->q[0] > 0.0 || p->q[1] > 0.0 || p->q[2] > 0.0);
 	int c = u_channel < p->q[0] ? 0 : u_channel < p->q[0] + p->q[1] ? 1 : 2;
 	while (p->q[c] <= 0.0) /* rounding at the top of u_channel: never a channel of q = 0 */
 		c = (c + 2) % 3;

@@ -16,6 +16,8 @@ typedef enum sss_profile_kind {
 	SSS_PROFILE_BURLEY,
 	SSS_PROFILE_DIPOLE,
 } sss_profile_kind;
+/* The number of kinds (a #define, not an enumerator: switches over the kinds stay complete). */
+#define SSS_PROFILE_KINDS 4
 
 /* The tail left out by truncation: the untruncated CDF reaches 1 - SSS_PROFILE_TAIL at r_max.
  * Both R and p are renormalised over [0, r_max] (divided by 1 - SSS_PROFILE_TAIL), so the
@@ -24,6 +26,11 @@ typedef enum sss_profile_kind {
 
 /* Entries of the dipole's CDF table: half-octave steps in r below r_max. */
 #define SSS_DIPOLE_TABLE 48
+
+/* The artist form's largest alpha': A = 1 with a finite l_d = 1/sigma_tr would need sigma_a = 0
+ * and sigma_t' infinite; alpha' stays this close to 1 instead (R_d then falls short of 1 by
+ * about 1e-5). */
+#define SSS_ALPHA_PRIME_MAX (1.0 - 1e-12)
 
 /* Components of a Gaussian mixture (d'Eon & Luebke's skin fit has six). */
 #define SSS_PROFILE_MAX_GAUSSIANS 6

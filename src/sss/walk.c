@@ -6,6 +6,7 @@
 #include "base/mem.h"
 #include "sss/profile.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -15,9 +16,11 @@
  * digits as g -> 0. */
 #define WALK_G_ISOTROPIC 1e-4
 
-/* No collision happens within WALK_SKIN times the hit's largest coordinate of the boundary (about
+/* No collision happens within WALK_SKIN times the hit's scale (the larger of its largest
+ * coordinate and its triangle's: the hit's t carries the error of the triangle's vertices; about
  * 8 float ulps), measured along the normal: a collision point rounded onto or across the surface
- * would start the next ray outside. The skin only transmits (weight e^{-sigma_t d_skin}, sampled consistently): a bias of
+ * would start the next ray outside (on a 400 mm box the point's own scale let walks land 5e-6
+ * outside its face, lost). The skin only transmits (weight e^{-sigma_t d_skin}, sampled consistently): a bias of
  * the order sigma_t * 1e-6 * |coordinates|, negligible. */
 #define WALK_SKIN 1e-6
 
@@ -130,8 +133,9 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		int c = uc < q[0] ? 0 : uc < q[0] + q[1] ? 1 : 2;
 		if (q[c] == 0.0) /* uc fell on a channel of probability 0 only by rounding */
 			c = q[0] > 0.0 ? 0 : q[1] > 0.0 ? 1 : 2;
+		assert(q[c] > 0.0); /* walk_channel_probs: the q sum to s > 0 */
 		double t = sigma_t[c] > 0.0 ? -log1p(-ut) / sigma_t[c] : INFINITY;
-		double scale = fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z)));
+		double scale = fmax(h.scale, fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z))));
 		double cos_n = fmax(1e-6, fabs((double)v3_dot(w, h.ng)));
 		double d = fmax(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */
 		res.steps++;

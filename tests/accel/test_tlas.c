@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define NUM_INST 300
 
@@ -18,6 +19,59 @@ static xform random_similarity(rng *g, bool uniform)
 	xform_scale(uniform ? d3(s, s, s) : d3(s, 0.5 * s, 1.5 * s), &sc);
 	xform t = xform_translate(d3(40.0 * rng_float(g) - 20.0, 40.0 * rng_float(g) - 20.0, 40.0 * rng_float(g) - 20.0));
 	return xform_then(xform_then(sc, r), t);
+}
+
+/* True when hits[0, n) are in the canonical order (tri_circle_hit_cmp never decreases). */
+static bool in_order(const tri_circle_hit *hits, uint32_t n)
+{
+	for (uint32_t i = 1; i < n; i++)
+		if (tri_circle_hit_cmp(&hits[i - 1], &hits[i]) > 0)
+			return false;
+	return true;
+}
+
+/* The circle queries return their hits in the canonical order whatever the trees: the mesh m's
+ * hits come out the same, bit for bit and in the same order, from a bvh of m and from a bvh of m
+ * with far triangles appended (ids of m's unchanged, the tree a different one), and likewise
+ * through two top levels over the same instances with far ones appended to the second. */
+static void check_canonical_order(const mesh *m)
+{
+	uint32_t nv = m->num_vertices, nt = m->num_triangles;
+	vec3 *pos = malloc(2 * (size_t)nv * sizeof *pos);
+	uint32_t *ix = malloc(6 * (size_t)nt * sizeof *ix);
+	for (uint32_t v = 0; v < nv; v++)
+		pos[v] = m->positions[v], pos[nv + v] = v3_add(v3_scale(m->positions[v], 0.5f), v3(7.0f, 0.0f, 0.0f));
+	for (uint32_t k = 0; k < 3 * nt; k++)
+		ix[k] = m->indices[k], ix[3 * nt + k] = nv + m->indices[k];
+	bvh *a = bvh_build(m->positions, nv, m->indices, nt), *b = bvh_build(pos, 2 * nv, ix, 2 * nt);
+	tlas_instance in[8];
+	for (int i = 0; i < 8; i++) /* instances 0-3 overlap the unit box; 4-7 lie far away */
+		in[i] = (tlas_instance){i < 4 ? a : b, xform_translate(d3(i < 4 ? 0.1 * i : 30.0 + 5.0 * i, 0.0, 0.0)),
+					(uint32_t)i % 2};
+	tlas *t4 = tlas_build(in, 4), *t8 = tlas_build(in, 8);
+	static tri_circle_hit ha[256], hb[256];
+	vec3 lo, hi;
+	mesh_bounds(m, &lo, &hi);
+	rng g;
+	rng_seed(&g, 5, 5);
+	long bad = 0, multi = 0;
+	for (int k = 0; k < 2000; k++) {
+		tri_circle q = test_random_circle(m, v3_length(v3_sub(hi, lo)), &g);
+		uint32_t na = bvh_circle(a, &q, ha, 256), nb = bvh_circle(b, &q, hb, 256);
+		bool ok = na == nb && na <= 256 && in_order(ha, na) && memcmp(ha, hb, na * sizeof *ha) == 0;
+		uint32_t sa = tlas_circle_set(t4, &q, 0, ha, 256), sb = tlas_circle_set(t8, &q, 0, hb, 256);
+		ok = ok && sa == sb && sa <= 256 && in_order(ha, sa) && memcmp(ha, hb, sa * sizeof *ha) == 0;
+		uint32_t aa = tlas_circle(t4, &q, TLAS_ALL_INSTANCES, ha, 256);
+		ok = ok && aa <= 256 && in_order(ha, aa);
+		multi += na > 1;
+		if (!ok && bad++ < 5)
+			CHECK(0, "circle %d: %u and %u hits on the two bvhs, %u and %u on the two top levels' set", k, na,
+			      nb, sa, sb);
+	}
+	CHECK(bad == 0 && multi > 100, "canonical order: %ld circles differ (%ld with several hits)", bad, multi);
+	tlas_free(t4), tlas_free(t8);
+	bvh_free(a), bvh_free(b);
+	free(pos), free(ix);
 }
 
 int main(void)
@@ -56,7 +110,7 @@ int main(void)
 
 	/* Rays: the top level against every instance traced alone (the same float transform is not
 	 * available here, so t is compared with a tolerance). */
-	long count = test_count(20000), bad = 0, hits = 0;
+	long count = test_count(20000), bad = 0, hits = 0, set_bad = 0, set_hits = 0;
 	for (long k = 0; k < count; k++) {
 		vec3 o = v3(60.0f * rng_float(&g) - 30.0f, 60.0f * rng_float(&g) - 30.0f, 60.0f * rng_float(&g) - 30.0f);
 		bvh_ray r = {o, test_unit_vector(&g), 0.0f, INFINITY};
@@ -71,6 +125,21 @@ int main(void)
 		}
 		bool fb = hb.inst != UINT32_MAX;
 		hits += fb;
+		/* The nearest hit of one set's instances (set k % 3): the others are transparent. */
+		uint32_t set = (uint32_t)(k % 3);
+		bvh_hit hs, bs = {INFINITY, 0, 0, 0, UINT32_MAX};
+		for (uint32_t i = set; i < NUM_INST; i += 3) {
+			bvh_ray lr = {d3_to_v3(xform_inv_point(&in[i].to_world, v3_to_d3(r.org))),
+				      d3_to_v3(xform_inv_vector(&in[i].to_world, v3_to_d3(r.dir))), 0.0f, bs.t};
+			bvh_hit h;
+			if (bvh_intersect(in[i].geom, &lr, &h) && h.t < bs.t)
+				bs = h, bs.inst = i;
+		}
+		bool fs = tlas_intersect_set(t, &r, set, &hs), fbs = bs.inst != UINT32_MAX;
+		set_hits += fs;
+		if ((fs != fbs || (fs && (fabsf(hs.t - bs.t) > 6e-4f || hs.inst % 3 != set))) && set_bad++ < 5)
+			CHECK(0, "ray %ld, set %u: tlas %d (t %g inst %u), alone %d (t %g inst %u)", k, set, fs, hs.t, hs.inst,
+			      fbs, bs.t, bs.inst);
 		/* The float transforms differ in rounding: t agrees to 1e-5 of the scene's size (60);
 		 * the triangle may then differ at shared edges and vertices. */
 		const float tol = 6e-4f;
@@ -81,6 +150,8 @@ int main(void)
 			      ht.prim, fb, hb.t, hb.inst, hb.prim);
 	}
 	CHECK(bad == 0 && hits > count / 10, "rays: %ld differ, %ld hits of %ld", bad, hits, count);
+	CHECK(set_bad == 0 && set_hits > count / 30, "rays on one set: %ld differ, %ld hits of %ld", set_bad, set_hits,
+	      count);
 	bvh_ray nan_ray = {{NAN, 0, 0}, {0, 0, 1}, 0, INFINITY};
 	bvh_hit h;
 	CHECK(!tlas_intersect(t, &nan_ray, &h) && !tlas_occluded(t, &nan_ray), "NaN rays are refused");
@@ -135,6 +206,7 @@ int main(void)
 		free(w.positions);
 	}
 	CHECK(cbad == 0 && ctotal > 0, "circles: %ld differ (%ld hits)", cbad, ctotal);
+	check_canonical_order(&bunny);
 	tlas_free(t);
 	bvh_free(geoms[0]), bvh_free(geoms[1]);
 	mesh_free(&bunny), mesh_free(&sphere);

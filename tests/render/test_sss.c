@@ -49,7 +49,7 @@ typedef struct image_stats {
 } image_stats;
 
 static void render_seed(const char *text, int spp, int max_level, sss_circle_weight weight,
-			scene_sss_method method, uint64_t seed, image_stats *st)
+			sss_method method, uint64_t seed, image_stats *st)
 {
 	memset(st, 0, sizeof *st);
 	world *w;
@@ -83,7 +83,7 @@ static void render_seed(const char *text, int spp, int max_level, sss_circle_wei
 	world_free(w);
 }
 
-static void render(const char *text, int spp, int max_level, sss_circle_weight weight, scene_sss_method method,
+static void render(const char *text, int spp, int max_level, sss_circle_weight weight, sss_method method,
 		   image_stats *st)
 {
 	render_seed(text, spp, max_level, weight, method, 7, st);
@@ -207,7 +207,7 @@ static void test_extremes(void)
 			      "skin { ior 1.0 }", "marble { }", "wax { color rgb 1 radius 30 ior 1.0 profile dipole }",
 			      "wax { color rgb <1, 0, 0.5> radius <5, 0.01, 1> ior 3 roughness 0.001 }"};
 	static const struct {
-		scene_sss_method method;
+		sss_method method;
 		const char *name;
 	} methods[] = {{SSS_METHOD_CIRCLE, "circle"}, {SSS_METHOD_DISK, "disk"}, {SSS_METHOD_VOLUME, "volume"}};
 	for (int k = 0; k < 3; k++)
@@ -271,8 +271,8 @@ static void test_talk_weight(void)
 /* Two renders with different seeds per method; every block of 6 x 6 pixels must agree between
  * the methods within 4 standard errors (each estimated from its pair of seeds: (a - b)^2 / 2 per
  * pixel). Same model, different sampling: a biased estimator shows as a block out of bounds. */
-static void expect_same_image(const char *what, const char *text, int spp, scene_sss_method ma,
-			      scene_sss_method mb)
+static void expect_same_image(const char *what, const char *text, int spp, sss_method ma,
+			      sss_method mb)
 {
 	static image_stats a[2], b[2];
 	for (int k = 0; k < 2; k++) {

@@ -154,6 +154,9 @@ static void check_tangents(void)
 	world_free(w);
 }
 
+/* Bit for bit. */
+static bool same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
 int main(void)
 {
 	if (!mkdtemp(dir))
@@ -235,16 +238,26 @@ int main(void)
 		CHECK(ok, "SSS group: %s", err);
 		free(err);
 		if (ok) {
-			render_hit at = {0}, hits[RENDER_SSS_MAX_HITS];
+			render_hit at = {0};
 			at.object = 0;
-			float theta[RENDER_SSS_MAX_HITS];
+			tri_circle_hit hits[RENDER_SSS_MAX_HITS];
 			bool more = true;
 			tri_circle q = {v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), 0.5f, false};
-			uint32_t k = w->rs.circle(w->rs.user, &at, &q, hits, theta, RENDER_SSS_MAX_HITS, &more);
-			CHECK(k == 1 && !more && hits[0].object == 0 && fabsf(hits[0].p.x - 0.5f) < 1e-5f &&
-				  fabsf(hits[0].p.y) < 1e-5f,
+			uint32_t k = w->rs.circle(w->rs.user, &at, &q, hits, RENDER_SSS_MAX_HITS, &more);
+			CHECK(k == 1 && !more && hits[0].inst == 0 && fabsf(hits[0].pos.x - 0.5f) < 1e-5f &&
+				  fabsf(hits[0].pos.y) < 1e-5f,
 			      "group circle: %u hits (more %d), the first on object %u at (%g %g)", k, more,
-			      k ? hits[0].object : 0, k ? hits[0].p.x : 0, k ? hits[0].p.y : 0);
+			      k ? hits[0].inst : 0, k ? hits[0].pos.x : 0, k ? hits[0].pos.y : 0);
+			/* The chosen hit's full record: the circle's position, the normal the weights saw. */
+			if (k == 1) {
+				render_hit full;
+				w->rs.circle_surface(w->rs.user, &hits[0], &full);
+				CHECK(full.object == 0 && same_vec(full.p, hits[0].pos) && same_vec(full.ng, hits[0].ng) &&
+					  full.prim == hits[0].prim && full.t == 0.0f,
+				      "the circle hit's surface: object %u, p (%g %g %g), ng (%g %g %g) of (%g %g %g)",
+				      full.object, full.p.x, full.p.y, full.p.z, full.ng.x, full.ng.y, full.ng.z,
+				      hits[0].ng.x, hits[0].ng.y, hits[0].ng.z);
+			}
 			render_ray down = {v3(0.25f, 1, 0), v3(0, -1, 0)};
 			render_hit h;
 			CHECK(trace(w, down.o, down.d, &h) && h.object != 0 && h.t < 0.6f, "the ray meets a small box first");

@@ -10,6 +10,12 @@
 #include <stdio.h>
 #include <string.h>
 
+/* A circle hit at p with normal n and angle theta (the fields the estimator reads). */
+static tri_circle_hit hit_at(vec3 p, vec3 n, float theta)
+{
+	return (tri_circle_hit){.pos = p, .ng = n, .theta = theta};
+}
+
 /* ---- the surfaces: quadrics sum_k w_k (p_k - c_k)^2 = R^2 (sphere w = 1,1,1; cylinder about
  * the y axis w = 1,0,1), hits by exact polynomial root isolation ------------------------------ */
 
@@ -74,12 +80,12 @@ static int poly_roots(const double *c, int deg, double lo, double hi, double *ou
 }
 
 /* Appends the hits of the arc theta in [base - pi/2, base + pi/2] of circle c on surface q. */
-static int arc_hits(const sss_circle *c, const quadric *q, double base, sss_circle_hit *out)
+static int arc_hits(const sss_circle *c, const quadric *q, double base, tri_circle_hit *out)
 {
 	double sgn = cos(base) > 0.0 ? 1.0 : -1.0; /* base is 0 or pi: theta = base + theta' */
-	dvec3 x = d3_sub(v3_to_d3(c->center), q->c), t = d3_scale(v3_to_d3(c->t), sgn),
-	      a = d3_scale(v3_to_d3(c->axis), sgn);
-	double r = c->radius, poly[5] = {0};
+	dvec3 x = d3_sub(v3_to_d3(c->q.centre), q->c), t = d3_scale(v3_to_d3(c->q.t), sgn),
+	      a = d3_scale(v3_to_d3(c->q.n), sgn);
+	double r = c->q.radius, poly[5] = {0};
 	/* (1 + u^2) (p(theta) - centre) = P2 u^2 + P1 u + P0 with u = tan(theta'/2). */
 	double X[3] = {x.x, x.y, x.z}, T[3] = {t.x, t.y, t.z}, A[3] = {a.x, a.y, a.z};
 	for (int k = 0; k < 3; k++) {
@@ -99,13 +105,13 @@ static int arc_hits(const sss_circle *c, const quadric *q, double base, sss_circ
 		vec3 p = sss_circle_point(c, theta);
 		dvec3 g = d3_sub(v3_to_d3(p), q->c);
 		g = d3_scale(d3_mul(g, d3(q->w[0], q->w[1], q->w[2])), q->orient);
-		out[i] = (sss_circle_hit){p, d3_to_v3(d3_normalize(g)), theta};
+		out[i] = hit_at(p, d3_to_v3(d3_normalize(g)), theta);
 	}
 	return n;
 }
 
 /* Every hit of the circle's arc (half: one arc; full: two). At most 8. */
-static int circle_hits(const sss_circle *c, const quadric *q, sss_circle_hit *out)
+static int circle_hits(const sss_circle *c, const quadric *q, tri_circle_hit *out)
 {
 	int n = arc_hits(c, q, 0.0, out);
 	if (c->theta_max > 4.0f)
@@ -218,7 +224,7 @@ static estimate run_estimator(const sss_profile *prof, const quadric *q, dvec3 x
 		double r = sss_profile_sample(prof, u0, u1);
 		float uf = rng_float(&g), up = rng_float(&g), us = rng_float(&g);
 		sss_circle c = sss_circle_make(xf, nf, (float)r, uf, up, o);
-		sss_circle_hit hits[8];
+		tri_circle_hit hits[8];
 		int k = circle_hits(&c, q, hits);
 		vec3 w;
 		float prob;
@@ -227,7 +233,7 @@ static estimate run_estimator(const sss_profile *prof, const quadric *q, dvec3 x
 		if (pick < 0)
 			none++;
 		else
-			f = v3_get(w, test_channel) * g_fn(v3_to_d3(hits[pick].p));
+			f = v3_get(w, test_channel) * g_fn(v3_to_d3(hits[pick].pos));
 		sum += f, sum2 += f * f, mx = fmax(mx, fabs(f));
 	}
 	estimate e;
@@ -270,8 +276,8 @@ static void check_plane_zero_variance(void)
 				vec3 x = v3(rng_float(&g) * 10.0f, rng_float(&g), -rng_float(&g) * 5.0f);
 				double r = sss_profile_sample(&prof, rng_double(&g), rng_double(&g));
 				sss_circle c = sss_circle_make(x, n, (float)r, 0.0f, rng_float(&g), &o);
-				sss_circle_hit hits[2] = {{sss_circle_point(&c, 0.0f), n, 0.0f},
-							  {sss_circle_point(&c, (float)PI), n, (float)PI}};
+				tri_circle_hit hits[2] = {hit_at(sss_circle_point(&c, 0.0f), n, 0.0f),
+							  hit_at(sss_circle_point(&c, (float)PI), n, (float)PI)};
 				vec3 w;
 				float prob;
 				int pick = sss_circle_choose(&c, sss_profile_ratio(&prof, r), hits,
@@ -376,7 +382,7 @@ static void check_extremes(void)
 	/* A radius far larger than the object: no hit, zero, reported as -1. */
 	scene sp = sphere_scene();
 	sss_circle c = sss_circle_make(d3_to_v3(sp.x), d3_to_v3(sp.n), 100.0f, 0.0f, 0.3f, &o);
-	sss_circle_hit hits[8];
+	tri_circle_hit hits[8];
 	int k = circle_hits(&c, &sp.q, hits);
 	vec3 w;
 	float prob;
@@ -408,7 +414,7 @@ static void check_extremes(void)
 			CHECK(sss_profile_from_artist(&p, kind, a3, l3, 1.0), "A %g kind %d", alb[ia], kind);
 			double r = sss_profile_sample(&p, 0.3, 0.7);
 			c = sss_circle_make(x, n, (float)r, 0.0f, 0.2f, &o);
-			sss_circle_hit h = {sss_circle_point(&c, 0.0f), n, 0.0f};
+			tri_circle_hit h = hit_at(sss_circle_point(&c, 0.0f), n, 0.0f);
 			pick = sss_circle_choose(&c, sss_profile_ratio(&p, r), &h, 1, 0.5f, &o, &w, &prob);
 			vec3 ratio =
 			    sss_profile_ratio(&p, r); /* on a plane the weight is the profile's ratio */
@@ -430,10 +436,10 @@ static void check_extremes(void)
 			float th = (rng_float(&g) - 0.5f) * 3.14159f;
 			vec3 e = sss_circle_tangent(&c, th);
 			vec3 ni = v3_normalize(v3_cross(e, v3(rng_float(&g), rng_float(&g), rng_float(&g))));
-			sss_circle_hit hs[3] = {{sss_circle_point(&c, th), ni, th},
-						{sss_circle_point(&c, 1.5707964f), nn, 1.5707964f},
-						{sss_circle_point(&c, th),
-						 v3_normalize(v3_sub(sss_circle_point(&c, th), x)), th}};
+			tri_circle_hit hs[3] = {hit_at(sss_circle_point(&c, th), ni, th),
+						hit_at(sss_circle_point(&c, 1.5707964f), nn, 1.5707964f),
+						hit_at(sss_circle_point(&c, th),
+						       v3_normalize(v3_sub(sss_circle_point(&c, th), x)), th)};
 			for (int j = 0; j < 3; j++) {
 				vec3 hw = sss_circle_hit_weight(&c, v3s(1.0f), &hs[j], &om);
 				float pa = sss_circle_pdf_area(&c, 1.0f, &hs[j], &om);
@@ -477,7 +483,7 @@ static void check_scale_invariance(void)
 				double f = v ? k : 1.0;
 				sss_circle c = sss_circle_make(d3_to_v3(d3_scale(sp.x, f)), d3_to_v3(sp.n),
 							       (float)(r * f), 0.0f, up, &o);
-				sss_circle_hit hits[8];
+				tri_circle_hit hits[8];
 				int n = circle_hits(&c, q, hits);
 				vec3 w;
 				float prob;
@@ -513,14 +519,14 @@ static void check_coincident(const sss_profile *prof, long count)
 			double r = sss_profile_sample(prof, u0, u1);
 			float uf = rng_float(&g), up = rng_float(&g), us = rng_float(&g);
 			sss_circle c = sss_circle_make(xf, nf, (float)r, uf, up, &o);
-			sss_circle_hit hits[8 * MAX_COPIES];
+			tri_circle_hit hits[8 * MAX_COPIES];
 			int k = circle_hits(&c, &sp.q, hits), n = k;
 			for (int cp = 1; cp < copies; cp++)
 				for (int j = 0; j < k; j++, n++) {
 					hits[n] = hits[j];
 					hits[n].theta = nextafterf(hits[j].theta, cp & 1 ? 10.0f : -10.0f);
 					if (cp & 1)
-						hits[n].n = v3_neg(hits[j].n);
+						hits[n].ng = v3_neg(hits[j].ng);
 					CHECK(sss_circle_repeats(hits, n),
 					      "copy %d of hit %d not seen as a repeat", cp, j);
 				}
@@ -530,7 +536,7 @@ static void check_coincident(const sss_profile *prof, long count)
 			    sss_circle_choose(&c, sss_profile_ratio(prof, r), hits, n, us, &o, &w, &prob);
 			CHECK(pick < k, "%d copies: picked hit %d, a copy (of %d hits)", copies, pick, k);
 			if (pick >= 0)
-				sum += w.x * g_fn(v3_to_d3(hits[pick].p));
+				sum += w.x * g_fn(v3_to_d3(hits[pick].pos));
 		}
 		mean[copies] = sum / count;
 		printf("coincident surfaces: %2d copies of the sphere: %.6f\n", copies, mean[copies]);
@@ -538,8 +544,8 @@ static void check_coincident(const sss_profile *prof, long count)
 		      mean[1]);
 	}
 	/* Hits a little apart, or at the two ends of a full circle's range. */
-	sss_circle_hit h[3] = {
-	    {v3s(0), v3(0, 0, 1), 0.0f}, {v3s(0), v3(0, 0, 1), 1e-4f}, {v3s(0), v3(0, 0, 1), 6.2831850f}};
+	tri_circle_hit h[3] = {hit_at(v3s(0), v3(0, 0, 1), 0.0f), hit_at(v3s(0), v3(0, 0, 1), 1e-4f),
+			       hit_at(v3s(0), v3(0, 0, 1), 6.2831850f)};
 	CHECK(!sss_circle_repeats(h, 1), "hits 1e-4 apart are distinct points");
 	CHECK(sss_circle_repeats(h, 2), "theta 2 pi - 2e-7 is theta 0");
 }

@@ -1,0 +1,130 @@
+/* medium.c - the SSS presets, the names of methods and profiles, and the one derivation of a
+ * medium's physical and artist forms. Sources: H. W. Jensen, S. R. Marschner, M. Levoy,
+ * P. Hanrahan, "A Practical Model for Subsurface Light Transport", SIGGRAPH 2001 (JMLH01);
+ * H. W. Jensen, J. Buhler, "A Rapid Hierarchical Rendering Technique for Translucent Materials",
+ * SIGGRAPH 2002 (JB02). The dipole's albedo and its inverse are profile.c's (exact FM1). */
+#include "sss/medium.h"
+
+#include <assert.h>
+#include <math.h>
+#include <string.h>
+
+static const char *const method_names[SSS_METHODS] = {"default", "circle", "fullcircle", "disk", "volume"};
+static const char *const profile_names[SSS_PROFILE_KINDS] = {"gaussian", "sum_of_gaussians", "burley", "dipole"};
+
+const char *sss_method_name(sss_method m)
+{
+	return (unsigned)m < SSS_METHODS ? method_names[m] : "?";
+}
+
+bool sss_method_from_name(const char *name, sss_method *m)
+{
+	for (int i = 0; i < SSS_METHODS; i++)
+		if (!strcmp(name, method_names[i]))
+			return *m = (sss_method)i, true;
+	return false;
+}
+
+const char *sss_profile_name(sss_profile_kind k)
+{
+	return (unsigned)k < SSS_PROFILE_KINDS ? profile_names[k] : "?";
+}
+
+bool sss_profile_from_name(const char *name, sss_profile_kind *k)
+{
+	for (int i = 0; i < SSS_PROFILE_KINDS; i++)
+		if (!strcmp(name, profile_names[i]))
+			return *k = (sss_profile_kind)i, true;
+	return false;
+}
+
+/* JMLH01, Figure 5: sigma_s' and sigma_a in mm^-1 for R, G, B, with the eta their Rd column implies. */
+const sss_preset sss_presets[] = {
+	{"apple", {2.29f, 2.39f, 1.97f}, {0.0030f, 0.0034f, 0.046f}, 1.3f},
+	{"chicken1", {0.15f, 0.21f, 0.38f}, {0.015f, 0.077f, 0.19f}, 1.3f},
+	{"chicken2", {0.19f, 0.25f, 0.32f}, {0.018f, 0.088f, 0.20f}, 1.3f},
+	{"cream", {7.38f, 5.47f, 3.15f}, {0.0002f, 0.0028f, 0.0163f}, 1.3f},
+	{"ketchup", {0.18f, 0.07f, 0.03f}, {0.061f, 0.97f, 1.45f}, 1.3f},
+	/* marble: the Rd column of Figure 5 is reproduced with eta 1.5 (1.3 gives 0.83/0.83/0.80). */
+	{"marble", {2.19f, 2.62f, 3.00f}, {0.0021f, 0.0041f, 0.0071f}, 1.5f},
+	{"potato", {0.68f, 0.70f, 0.55f}, {0.0024f, 0.0090f, 0.12f}, 1.3f},
+	{"skimmilk", {0.70f, 1.22f, 1.90f}, {0.0014f, 0.0025f, 0.0142f}, 1.3f},
+	{"skin1", {0.74f, 0.88f, 1.01f}, {0.032f, 0.17f, 0.48f}, 1.3f},
+	{"skin2", {1.09f, 1.59f, 1.79f}, {0.013f, 0.070f, 0.145f}, 1.3f},
+	{"wholemilk", {2.55f, 3.21f, 3.77f}, {0.0011f, 0.0024f, 0.014f}, 1.3f},
+};
+const int sss_n_presets = (int)(sizeof sss_presets / sizeof sss_presets[0]);
+
+const sss_preset *sss_preset_find(const char *name)
+{
+	for (int i = 0; i < sss_n_presets; i++)
+		if (!strcmp(sss_presets[i].name, name))
+			return &sss_presets[i];
+	return NULL;
+}
+
+void sss_medium_to_artist(double sigma_s, double sigma_a, double eta, double *albedo, double *ld_mm)
+{
+	double sigma_t = sigma_s + sigma_a; /* reduced extinction sigma_t' */
+	*albedo = sss_dipole_albedo(sigma_t > 0.0 ? fmin(1.0, sigma_s / sigma_t) : 0.0, eta);
+	/* JMLH01: sigma_tr = sqrt(3 sigma_a sigma_t'); JB02 calls l_d = 1/sigma_tr the diffuse mean
+	 * free path and uses it as the artist's "scattering distance". */
+	double sigma_tr = sqrt(3.0 * sigma_a * sigma_t);
+	*ld_mm = sigma_tr > 0.0 ? 1.0 / sigma_tr : INFINITY;
+}
+
+void sss_medium_to_physical(double albedo, double ld_mm, double eta, double *sigma_s, double *sigma_a)
+{
+	/* JB02 section 4: alpha' with R_d(alpha') = A, then sigma_t' = sigma_tr / sqrt(3 (1 - alpha')). */
+	double alpha_prime = fmin(sss_dipole_alpha_prime(albedo, eta), SSS_ALPHA_PRIME_MAX);
+	double sigma_t = 1.0 / (ld_mm * sqrt(3.0 * (1.0 - alpha_prime)));
+	*sigma_s = alpha_prime * sigma_t;
+	*sigma_a = sigma_t - *sigma_s;
+}
+
+/* Channel c of a vec3. */
+static double channel(vec3 v, int c)
+{
+	return c == 0 ? v.x : c == 1 ? v.y : v.z;
+}
+
+/* The base of one channel: the preset's coefficients and their artist form, or the spec's albedo
+ * and radius (the block's defaults) and their physical form. */
+static void base_channel(const sss_medium_spec *s, const sss_preset *pr, int c, double eta, double phys[2],
+			 double art[2])
+{
+	if (pr) {
+		phys[0] = pr->sigma_s_per_mm[c], phys[1] = pr->sigma_a_per_mm[c];
+		sss_medium_to_artist(phys[0], phys[1], eta, &art[0], &art[1]);
+	} else {
+		art[0] = channel(s->albedo, c), art[1] = channel(s->radius_mm, c);
+		sss_medium_to_physical(art[0], art[1], eta, &phys[0], &phys[1]);
+	}
+}
+
+void sss_medium_derive(const sss_medium_spec *s, double eta, sss_medium *out)
+{
+	const sss_preset *pr = s->preset ? sss_preset_find(s->preset) : NULL;
+	assert(!s->preset || pr);
+	/* Without a preset the base is the artist form, which the spec must then hold. */
+	assert(pr || (s->has & (SSS_HAS_ALBEDO | SSS_HAS_RADIUS)) == (SSS_HAS_ALBEDO | SSS_HAS_RADIUS));
+	for (int c = 0; c < 3; c++) {
+		double phys[2], art[2];
+		base_channel(s, pr, c, eta, phys, art);
+		if (s->form == SSS_FORM_PHYSICAL) {
+			if (s->has & SSS_HAS_SIGMA_S)
+				phys[0] = channel(s->sigma_s_per_mm, c);
+			if (s->has & SSS_HAS_SIGMA_A)
+				phys[1] = channel(s->sigma_a_per_mm, c);
+			sss_medium_to_artist(phys[0], phys[1], eta, &art[0], &art[1]);
+		} else if (s->form == SSS_FORM_ARTIST) {
+			if (s->has & SSS_HAS_ALBEDO)
+				art[0] = channel(s->albedo, c);
+			if (s->has & SSS_HAS_RADIUS)
+				art[1] = channel(s->radius_mm, c);
+			sss_medium_to_physical(art[0], art[1], eta, &phys[0], &phys[1]);
+		}
+		out->sigma_s_per_mm[c] = phys[0], out->sigma_a_per_mm[c] = phys[1];
+		out->albedo[c] = art[0], out->ld_mm[c] = art[1];
+	}
+}

@@ -1,0 +1,88 @@
+/* medium.h - the one owner of an SSS material's physics: the measured presets, the names of the
+ * SSS methods and profiles, and the single derivation of a medium's two forms (physical:
+ * reduced scattering sigma_s' and absorption sigma_a in mm^-1; artist: diffuse albedo A and
+ * diffuse mean free path l_d in mm) from what a scene wrote. The scene IR keeps what was written
+ * (an sss_medium_spec); the build calls sss_medium_derive. Pure functions, no allocation. */
+#ifndef CIRCE_SSS_MEDIUM_H
+#define CIRCE_SSS_MEDIUM_H
+
+#include "base/vec.h"
+#include "sss/profile.h"
+
+#include <stdbool.h>
+
+/* ---- the names ---------------------------------------------------------------------------------- */
+
+/* How a subsurface material finds its entry point (src/sss: circle.*, disk.*, walk.*). */
+typedef enum sss_method {
+	SSS_METHOD_DEFAULT,    /* a material's: whatever the command line says (circle without --sss) */
+	SSS_METHOD_CIRCLE,     /* half circles (Legros & Corvazier 2016) */
+	SSS_METHOD_FULLCIRCLE, /* full circles */
+	SSS_METHOD_DISK,       /* King et al. 2013 probe segments */
+	SSS_METHOD_VOLUME,     /* random walk in the medium: the reference the profiles approximate */
+} sss_method;
+/* The number of methods, default included (a #define: switches over them stay complete). */
+#define SSS_METHODS 5
+
+/* "default", "circle", "fullcircle", "disk", "volume"; "?" out of range. */
+const char *sss_method_name(sss_method m);
+/* The method of that name (the table of sss_method_name); false when none is. */
+bool sss_method_from_name(const char *name, sss_method *m);
+
+/* "gaussian", "sum_of_gaussians", "burley", "dipole" (the scene language's words); "?" out of range. */
+const char *sss_profile_name(sss_profile_kind k);
+bool sss_profile_from_name(const char *name, sss_profile_kind *k);
+
+/* ---- the presets ---------------------------------------------------------------------------------- */
+
+/* Jensen et al. 2001 measured coefficients (their Figure 5), with the eta their Rd column implies. */
+typedef struct sss_preset {
+	const char *name;
+	float sigma_s_per_mm[3], sigma_a_per_mm[3];
+	float eta;
+} sss_preset;
+extern const sss_preset sss_presets[];
+extern const int sss_n_presets;
+/* NULL when the name is not a preset's. */
+const sss_preset *sss_preset_find(const char *name);
+
+/* ---- a medium as written, and its derivation ------------------------------------------------------ */
+
+/* Which form the scene wrote; the other is derived. */
+typedef enum sss_form { SSS_FORM_DEFAULT, SSS_FORM_PHYSICAL, SSS_FORM_ARTIST } sss_form;
+
+/* Which parameters of an sss_medium_spec hold a value (written, or the block's default). */
+enum { SSS_HAS_SIGMA_S = 1, SSS_HAS_SIGMA_A = 2, SSS_HAS_ALBEDO = 4, SSS_HAS_RADIUS = 8 };
+
+/* A medium as the scene wrote it: a preset (the physical base), the parameters that hold a value
+ * (`has`), and the form they were written in. */
+typedef struct sss_medium_spec {
+	const char *preset; /* a name sss_preset_find knows, or NULL */
+	sss_form form;	    /* DEFAULT: nothing written, the base (preset, or albedo and radius) alone */
+	unsigned has;	    /* SSS_HAS_*: the others are derived */
+	vec3 sigma_s_per_mm, sigma_a_per_mm; /* reduced scattering sigma_s', absorption sigma_a */
+	vec3 albedo;			     /* diffuse (multiple-scattering) reflectance A, in [0, 1] */
+	vec3 radius_mm;			     /* diffuse mean free path l_d = 1 / sigma_tr, > 0 */
+} sss_medium_spec;
+
+/* Both forms, per channel. */
+typedef struct sss_medium {
+	double sigma_s_per_mm[3], sigma_a_per_mm[3];
+	double albedo[3], ld_mm[3];
+} sss_medium;
+
+/* Physical -> artist, one channel: A = sss_dipole_albedo(sigma_s'/sigma_t', eta) (exact FM1) and
+ * l_d = 1/sqrt(3 sigma_a sigma_t') (Jensen et al. 2001, section 2.4; +Inf when sigma_a = 0). */
+void sss_medium_to_artist(double sigma_s, double sigma_a, double eta, double *albedo, double *ld_mm);
+/* Artist -> physical, one channel: alpha' = sss_dipole_alpha_prime(A, eta), held at or below the
+ * profiles' SSS_ALPHA_PRIME_MAX as sss_channel_from_artist holds it, then sigma_t' =
+ * 1/(l_d sqrt(3 (1 - alpha'))) (Jensen & Buhler 2002, section 4). ld_mm > 0. */
+void sss_medium_to_physical(double albedo, double ld_mm, double eta, double *sigma_s, double *sigma_a);
+
+/* The medium of a spec, boundary index eta: the base's two forms (the preset's coefficients and
+ * their artist form, or without a preset the spec's albedo and radius and their physical form);
+ * then the written form, each parameter the spec's where it has one and the base's where not; then
+ * the other form derived from it. The preset, when there is one, must be known (asserted). */
+void sss_medium_derive(const sss_medium_spec *s, double eta, sss_medium *out);
+
+#endif

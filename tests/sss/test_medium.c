@@ -1,0 +1,168 @@
+/* test_medium: the one derivation of an SSS medium (sss/medium.h) - the presets, each form from
+ * the other against values computed independently (JMLH01's Figure 5, the polynomial F_dr the
+ * scene used before, l_d by hand), the round trips, what a spec's base and written parameters
+ * give, and the name tables of methods and profiles read both ways. */
+#include "check.h"
+#include "sss/medium.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* JMLH01 section 2.4's polynomial fit of the diffuse Fresnel reflectance (after Egan &
+ * Hilgeman), and the dipole's R_d with it: the derivation the parser made before, an
+ * independent value the exact FM1 must stay close to. */
+static double rd_polynomial(double alpha_p, double eta)
+{
+	double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta;
+	double A = (1.0 + fdr) / (1.0 - fdr), s = sqrt(3.0 * (1.0 - alpha_p));
+	return 0.5 * alpha_p * (1.0 + exp(-4.0 / 3.0 * A * s)) * exp(-s);
+}
+
+static void check_presets(void)
+{
+	static const char *const names[] = {"skin1", "skin2", "marble", "wholemilk", "skimmilk", "cream",
+					    "ketchup", "apple", "potato", "chicken1", "chicken2"};
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+		CHECK(sss_preset_find(names[i]) != NULL, "preset %s missing", names[i]);
+	CHECK(sss_preset_find("skin3") == NULL, "unknown preset found");
+	CHECK(sss_n_presets == 11, "%d presets", sss_n_presets);
+	const sss_preset *skin1 = sss_preset_find("skin1");
+	CHECK_NEAR(skin1->sigma_s_per_mm[0], 0.74, 1e-6);
+	CHECK_NEAR(skin1->sigma_a_per_mm[2], 0.48, 1e-6);
+}
+
+/* Physical -> artist against known values. */
+static void check_to_artist(void)
+{
+	/* JMLH01, Figure 5 lists the diffuse reflectance Rd the coefficients give with the preset's
+	 * eta: the derivation must reproduce it to about the table's two digits. */
+	struct { const char *name; double rd[3]; } rd[] = {
+		{"marble", {0.83, 0.79, 0.75}}, {"skin1", {0.44, 0.22, 0.13}}, {"ketchup", {0.16, 0.01, 0.00}},
+		{"potato", {0.77, 0.62, 0.21}}, {"wholemilk", {0.91, 0.88, 0.76}}, {"apple", {0.85, 0.84, 0.53}}};
+	for (size_t i = 0; i < sizeof rd / sizeof rd[0]; i++) {
+		const sss_preset *p = sss_preset_find(rd[i].name);
+		for (int c = 0; c < 3; c++) {
+			double a, l;
+			sss_medium_to_artist(p->sigma_s_per_mm[c], p->sigma_a_per_mm[c], p->eta, &a, &l);
+			CHECK(a > rd[i].rd[c] - 0.04 && a < rd[i].rd[c] + 0.04, "%s channel %d: Rd %.4f, paper %.2f",
+			      rd[i].name, c, a, rd[i].rd[c]);
+		}
+	}
+	/* The exact FM1 against the polynomial F_dr: within 0.5 % of each other on every preset
+	 * and the block iors (the polynomial's own error). */
+	static const double etas[] = {1.3, 1.4, 1.45, 1.5};
+	double worst = 0.0;
+	for (int i = 0; i < sss_n_presets; i++)
+		for (int e = 0; e < 4; e++)
+			for (int c = 0; c < 3; c++) {
+				const sss_preset *p = &sss_presets[i];
+				double a, l, s = p->sigma_s_per_mm[c], k = p->sigma_a_per_mm[c];
+				sss_medium_to_artist(s, k, etas[e], &a, &l);
+				double poly = rd_polynomial(s / (s + k), etas[e]);
+				worst = fmax(worst, fabs(a - poly) / poly);
+			}
+	printf("test_medium: exact FM1 and the polynomial F_dr: R_d differ by at most %.3g (relative)\n", worst);
+	CHECK(worst < 5e-3 && worst > 0.0, "exact FM1 and the polynomial F_dr differ by %.3g (relative)", worst);
+	/* l_d = 1/sqrt(3 sigma_a sigma_t'): skin1's red, 1/sqrt(3 * 0.032 * 0.772) = 3.6732944 mm. */
+	double a, l;
+	sss_medium_to_artist(0.74, 0.032, 1.4, &a, &l);
+	CHECK_NEAR(l, 3.6732944, 1e-6);
+	sss_medium_to_artist(1.0, 0.0, 1.4, &a, &l);
+	CHECK(isinf(l) && a > 0.99, "no absorption: l_d infinite (%g), A near 1 (%g)", l, a);
+}
+
+static void check_round_trips(void)
+{
+	for (int i = 0; i < sss_n_presets; i++)
+		for (int c = 0; c < 3; c++) {
+			const sss_preset *p = &sss_presets[i];
+			double a, r, s2, a2;
+			sss_medium_to_artist(p->sigma_s_per_mm[c], p->sigma_a_per_mm[c], 1.4, &a, &r);
+			sss_medium_to_physical(a, r, 1.4, &s2, &a2);
+			CHECK(fabs(s2 - p->sigma_s_per_mm[c]) < 1e-9 * (1 + p->sigma_s_per_mm[c]) &&
+				      fabs(a2 - p->sigma_a_per_mm[c]) < 1e-9 * (1 + p->sigma_a_per_mm[c]),
+			      "%s channel %d: sigma_s %g -> %.12g, sigma_a %g -> %.12g", p->name, c, p->sigma_s_per_mm[c], s2,
+			      p->sigma_a_per_mm[c], a2);
+		}
+	for (double alb = 0.05; alb < 0.9; alb += 0.1)
+		for (double rad = 0.1; rad < 20; rad *= 3) {
+			double s, a, alb2, rad2;
+			sss_medium_to_physical(alb, rad, 1.3, &s, &a);
+			sss_medium_to_artist(s, a, 1.3, &alb2, &rad2);
+			CHECK_NEAR(alb2, alb, 1e-9);
+			CHECK_NEAR(rad2, rad, 1e-9 * rad);
+		}
+}
+
+/* What sss_medium_derive makes of a spec: the base, the written form over it, the other derived. */
+static void check_derive(void)
+{
+	const sss_preset *skin1 = sss_preset_find("skin1");
+	sss_medium m;
+	double a, l, s, k;
+	/* A preset alone: its coefficients exactly, their artist form. */
+	sss_medium_spec sp = {.preset = "skin1"};
+	sss_medium_derive(&sp, 1.4, &m);
+	sss_medium_to_artist(skin1->sigma_s_per_mm[1], skin1->sigma_a_per_mm[1], 1.4, &a, &l);
+	CHECK(m.sigma_s_per_mm[1] == skin1->sigma_s_per_mm[1] && m.sigma_a_per_mm[1] == skin1->sigma_a_per_mm[1] &&
+		  m.albedo[1] == a && m.ld_mm[1] == l,
+	      "preset alone: sigma_s %g sigma_a %g albedo %g l_d %g", m.sigma_s_per_mm[1], m.sigma_a_per_mm[1],
+	      m.albedo[1], m.ld_mm[1]);
+	/* An artist colour over a preset (skin { color 0.5 }): the preset's radius, the colour. */
+	sp = (sss_medium_spec){.preset = "skin1", .form = SSS_FORM_ARTIST, .has = SSS_HAS_ALBEDO, .albedo = v3s(0.5f)};
+	sss_medium_derive(&sp, 1.4, &m);
+	sss_medium_to_artist(skin1->sigma_s_per_mm[0], skin1->sigma_a_per_mm[0], 1.4, &a, &l);
+	sss_medium_to_physical(0.5, l, 1.4, &s, &k);
+	CHECK(m.albedo[0] == 0.5 && m.ld_mm[0] == l && m.sigma_s_per_mm[0] == s && m.sigma_a_per_mm[0] == k,
+	      "colour over a preset: albedo %g l_d %g (want %g), sigma_s %g sigma_a %g", m.albedo[0], m.ld_mm[0], l,
+	      m.sigma_s_per_mm[0], m.sigma_a_per_mm[0]);
+	/* Artist defaults with one physical coefficient written (wax { sigma_s 1 }): sigma_a from
+	 * the defaults' physical form. */
+	sp = (sss_medium_spec){.form = SSS_FORM_PHYSICAL, .has = SSS_HAS_SIGMA_S | SSS_HAS_ALBEDO | SSS_HAS_RADIUS,
+			       .sigma_s_per_mm = v3s(1.0f), .albedo = v3(0.95f, 0.78f, 0.45f), .radius_mm = v3(2, 1.2f, 0.6f)};
+	sss_medium_derive(&sp, 1.45, &m);
+	sss_medium_to_physical(0.45f, 0.6f, 1.45, &s, &k);
+	sss_medium_to_artist(1.0, k, 1.45, &a, &l);
+	CHECK(m.sigma_s_per_mm[2] == 1.0 && m.sigma_a_per_mm[2] == k && m.albedo[2] == a && m.ld_mm[2] == l,
+	      "sigma_s over artist defaults: sigma_a %g (want %g), albedo %g (want %g)", m.sigma_a_per_mm[2], k,
+	      m.albedo[2], a);
+	/* A preset written after nothing else of its form, then a coefficient over it. */
+	sp = (sss_medium_spec){.preset = "apple", .form = SSS_FORM_PHYSICAL, .has = SSS_HAS_SIGMA_A,
+			       .sigma_a_per_mm = v3s(0.5f)};
+	sss_medium_derive(&sp, 1.3, &m);
+	CHECK(m.sigma_s_per_mm[0] == sss_preset_find("apple")->sigma_s_per_mm[0] && m.sigma_a_per_mm[0] == 0.5,
+	      "sigma_a over a preset: sigma_s %g sigma_a %g", m.sigma_s_per_mm[0], m.sigma_a_per_mm[0]);
+}
+
+/* Each name table read both ways. */
+static void check_names(void)
+{
+	for (int i = 0; i < SSS_METHODS; i++) {
+		sss_method m = SSS_METHOD_VOLUME;
+		CHECK(sss_method_from_name(sss_method_name((sss_method)i), &m) && m == (sss_method)i,
+		      "method %d: '%s' reads back as %d", i, sss_method_name((sss_method)i), (int)m);
+	}
+	for (int i = 0; i < SSS_PROFILE_KINDS; i++) {
+		sss_profile_kind k = SSS_PROFILE_DIPOLE;
+		CHECK(sss_profile_from_name(sss_profile_name((sss_profile_kind)i), &k) && k == (sss_profile_kind)i,
+		      "profile %d: '%s' reads back as %d", i, sss_profile_name((sss_profile_kind)i), (int)k);
+	}
+	sss_method m;
+	sss_profile_kind k;
+	CHECK(!sss_method_from_name("circles", &m) && !sss_profile_from_name("Burley", &k), "unknown names refused");
+	CHECK(!strcmp(sss_method_name(SSS_METHOD_FULLCIRCLE), "fullcircle") &&
+		  !strcmp(sss_profile_name(SSS_PROFILE_SUM_OF_GAUSSIANS), "sum_of_gaussians") &&
+		  !strcmp(sss_method_name((sss_method)SSS_METHODS), "?"),
+	      "the names of the scene language");
+}
+
+int main(void)
+{
+	check_presets();
+	check_to_artist();
+	check_round_trips();
+	check_derive();
+	check_names();
+	return check_done("test_medium");
+}
