@@ -422,7 +422,7 @@ bool lang_array_index(parser *p, const lang_array *a, const char *name, size_t *
 					  name ? " of '" : "", name ? name : "", name ? "'" : "");
 		at = at * (size_t)a->size[d] + (size_t)k;
 	}
-	if (lang_peek(p)->kind == LTK_LBRACKET)
+	if (lang_raw_next(p) == LTK_LBRACKET) /* raw: #debug A[i] has no terminator to read up to */
 		return lang_error(p, lang_peek(p)->loc, "'%s' has %d dimension%s", name ? name : "the array", a->dims,
 				  a->dims == 1 ? "" : "s");
 	*index = at;
@@ -444,10 +444,11 @@ static bool array_items(parser *p, lang_array *a, int d, size_t base)
 			break;
 		if (i == a->size[d])
 			return lang_error_found(p, "expected '}' after %ld items (the dimension's size)", a->size[d]);
+		if (lang_peek(p)->kind == LTK_RBRACE)
+			return lang_error(p, lang_peek(p)->loc, "%ld item%s where the dimension has %ld", i, i == 1 ? "" : "s",
+					  a->size[d]);
 		if (i > 0 && !lang_expect(p, LTK_COMMA, "between the array's items"))
 			return false;
-		if (lang_peek(p)->kind == LTK_RBRACE)
-			return lang_error(p, lang_peek(p)->loc, "%ld items where the dimension has %ld", i, a->size[d]);
 		if (d + 1 < a->dims) {
 			if (!array_items(p, a, d + 1, base + (size_t)i * stride))
 				return false;
@@ -818,7 +819,8 @@ static bool fn_str(parser *p, const args *a, value *out)
 	return set_string(p, a->name.loc, out, buf, k);
 }
 
-/* vstr(N, V, S, L, P): N components of V (2 to 5; a float is promoted), separated by S. */
+/* vstr(N, V, S, L, P): N components of V (N clamped to 2..5), separated by S; those V lacks are 0
+ * (a float too is not copied, as povray 3.7.0 prints it). */
 static bool fn_vstr(parser *p, const args *a, value *out)
 {
 	char fmt[32], buf[4096];
@@ -826,7 +828,8 @@ static bool fn_vstr(parser *p, const args *a, value *out)
 	double nd = fmin(fmax(trunc(arg_f(a, 0)), 2), 5);
 	int n = (int)nd;
 	value v = a->v[1];
-	promote(&v, n);
+	for (int i = v.n; i < n; i++)
+		v.v[i] = 0;
 	if (!number_format(p, a, 3, fmt, sizeof fmt))
 		return false;
 	const char *sep = a->v[2].str;
@@ -882,9 +885,11 @@ static bool fn_string_float(parser *p, const args *a, value *out)
 	switch (a->name.kind) {
 	case LTK_KW_ASC: set_float(out, (unsigned char)s[0]); return true;
 	case LTK_KW_STRLEN: set_float(out, (double)strlen(s)); return true;
-	case LTK_KW_STRCMP: {
-		int c = strcmp(s, a->v[1].str);
-		set_float(out, c < 0 ? -1 : c > 0);
+	case LTK_KW_STRCMP: { /* as POV-Ray: the difference of the first characters that differ */
+		const unsigned char *x = (const unsigned char *)s, *y = (const unsigned char *)a->v[1].str;
+		while (*x && *x == *y)
+			x++, y++;
+		set_float(out, (double)*x - (double)*y);
 		return true;
 	}
 	case LTK_KW_VAL: {

@@ -497,7 +497,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 	lang_token name = *lang_advance(p);
 	lang_array *arr = NULL;
 	size_t index = 0;
-	diag_loc index_at = lang_peek(p)->loc;
+	diag_loc index_at;
 	if (lang_peek(p)->kind == LTK_LBRACKET && !declare_element(p, &name, &arr, &index)) {
 		p->directive_expr = false;
 		return false;
@@ -509,6 +509,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 	value v;
 	bool handled = false;
 	p->directive_expr = false;
+	index_at = lang_peek(p)->loc; /* an element's value, for its kind's error */
 	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
 		if (!lang_array_value(p, &v))
 			return false;
