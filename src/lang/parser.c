@@ -453,6 +453,22 @@ static void pop_scope(parser *p, int depth)
 
 /* ---- directives -------------------------------------------------------------------------- */
 
+/* A string's #declare may end without ';' (POV-Ray 3.7 forces it for floats, vectors and colours
+ * only: Parse_Semi_Colon). The lookahead read after it (a directive is not run there) is given
+ * back, to be read again in its turn; false when it came from another file or macro frame. */
+static bool unread_lookahead(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	(void)t;
+	if (p->failed)
+		return false;
+	if (p->peek_files != p->n_files || p->n_files == 0)
+		return false;
+	p->files[p->n_files - 1].lx = p->peek_from;
+	p->have_tok = false;
+	return true;
+}
+
 /* `#declare A[i]...`: the array A names (declared) and the element's index. */
 static bool declare_element(parser *p, const lang_token *name, lang_array **arr, size_t *index)
 {
@@ -525,12 +541,8 @@ static bool do_declare(parser *p, const lang_token *dir)
 	}
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_expr(p, &v);
-	if (ok) {
-		if (lang_peek(p)->kind != LTK_SEMI)
-			ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
-		else
-			lang_advance(p);
-	}
+	if (ok && !lang_accept(p, LTK_SEMI) && !(v.kind == VAL_STRING && unread_lookahead(p)))
+		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
 	p->directive_expr = false;
 	if (ok && v.kind == VAL_ARRAY) /* POV-Ray copies an array declared from another */
 		ok = lang_array_copy(p, name.loc, &v);
@@ -1444,6 +1456,9 @@ lang_token *lang_peek(parser *p)
 {
 	if (!p->have_tok) {
 		lang_token t;
+		p->peek_files = p->n_files;
+		if (p->n_files > 0)
+			p->peek_from = p->files[p->n_files - 1].lx;
 		fetch(p, &t);
 		p->tok = t;
 		p->have_tok = true;

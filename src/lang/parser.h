@@ -125,6 +125,8 @@ typedef struct parser {
 	vecbuf globals, locals; /* symbol */
 	/* expressions (expr.c): */
 	vecbuf rand_streams; /* rng, one per seed() call: rand(S) draws from stream S */
+	lang_lexer peek_from; /* the lexer before the lookahead was read, in frame peek_files */
+	int peek_files;
 } parser;
 
 /* ---- token stream (parser.c) ---- */
