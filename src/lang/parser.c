@@ -453,8 +453,8 @@ static void pop_scope(parser *p, int depth)
 
 /* ---- directives -------------------------------------------------------------------------- */
 
-/* A string's #declare may end without ';' (POV-Ray 3.7 forces it for floats, vectors and colours
- * only: Parse_Semi_Colon). The lookahead read after it (a directive is not run there) is given
+/* A #declare of a string, an array, ... may end without ';' (POV-Ray 3.7 forces it for floats,
+ * vectors and colours only: Parse_Semi_Colon). The lookahead read after it (a directive is not run there) is given
  * back, to be read again in its turn; false when it came from another file or macro frame. */
 static bool unread_lookahead(parser *p)
 {
@@ -541,7 +541,8 @@ static bool do_declare(parser *p, const lang_token *dir)
 	}
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	bool ok = lang_expr(p, &v);
-	if (ok && !lang_accept(p, LTK_SEMI) && !(v.kind == VAL_STRING && unread_lookahead(p)))
+	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
+	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
 		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
 	p->directive_expr = false;
 	if (ok && v.kind == VAL_ARRAY) /* POV-Ray copies an array declared from another */
