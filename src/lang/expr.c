@@ -533,6 +533,13 @@ static bool defined(parser *p, value *out)
 			if (!lang_array_index(p, s->val.arr, nm, &i))
 				return false;
 			is = s->val.arr->set[i];
+		} else {
+			while (lang_accept(p, LTK_LBRACKET)) { /* an element of no array: not defined */
+				double x;
+				if (!lang_float(p, "as an array index", &x) || !lang_expect(p, LTK_RBRACKET, "to close the array index"))
+					return false;
+				is = false;
+			}
 		}
 	} else {
 		return lang_error_found(p, "expected an identifier after 'defined ('");
