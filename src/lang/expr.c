@@ -370,6 +370,7 @@ static lang_array *new_array(parser *p, diag_loc loc, int dims, const long *size
 	memcpy(a->size, size, (size_t)dims * sizeof *size);
 	a->count = count;
 	a->mixed = mixed;
+	a->kind = -1;
 	a->elems = elems;
 	a->set = set;
 	return a;
@@ -383,6 +384,7 @@ bool lang_array_copy(parser *p, diag_loc loc, value *v)
 		return false;
 	memcpy(b->elems, a->elems, a->count * sizeof *a->elems);
 	memcpy(b->set, a->set, a->count * sizeof *a->set);
+	b->kind = a->kind;
 	for (size_t i = 0; i < b->count; i++)
 		if (b->set[i] && b->elems[i].kind == VAL_ARRAY && !lang_array_copy(p, loc, &b->elems[i]))
 			return false;
@@ -390,17 +392,15 @@ bool lang_array_copy(parser *p, diag_loc loc, value *v)
 	return true;
 }
 
-/* A non-mixed array takes one kind, that of its first element set. */
+/* A non-mixed array holds one kind of value: that of the first element assigned. */
 bool lang_array_store(parser *p, diag_loc loc, lang_array *a, size_t i, const value *v)
 {
-	for (size_t k = 0; !a->mixed && k < a->count; k++) {
-		if (!a->set[k] || k == i)
-			continue;
-		if (a->elems[k].kind != v->kind)
-			return lang_error(p, loc, "this array holds %s, not %s (declare it 'array mixed' to hold both)",
-					  lang_value_kind_name(&a->elems[k]), lang_value_kind_name(v));
-		break;
+	if (!a->mixed && a->kind >= 0 && a->kind != (int)v->kind) {
+		value held = {.kind = (value_kind)a->kind, .n = 1};
+		return lang_error(p, loc, "this array holds %s, not %s (declare it 'array mixed' to hold both)",
+				  lang_value_kind_name(&held), lang_value_kind_name(v));
 	}
+	a->kind = (int)v->kind;
 	a->elems[i] = *v;
 	a->set[i] = true;
 	return true;

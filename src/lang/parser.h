@@ -46,6 +46,7 @@ typedef struct lang_array {
 	long size[LANG_MAX_ARRAY_DIMS];
 	size_t count; /* the product of the sizes */
 	bool mixed;
+	int kind; /* not mixed: the value_kind of its elements once one is set; -1 before */
 	value *elems;
 	bool *set;
 } lang_array;
