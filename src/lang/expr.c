@@ -1117,7 +1117,7 @@ static bool identifier(parser *p, value *out)
 	const symbol *s = lang_lookup(p, name.text, name.len);
 	if (!s)
 		return lang_error(p, name.loc, "undeclared identifier '%.*s'", (int)name.len, name.text);
-	if (lang_peek(p)->kind == LTK_LBRACKET) {
+	if (lang_raw_next(p) == LTK_LBRACKET) { /* raw: a value's end is not read past (lone_value) */
 		if (s->val.kind != VAL_ARRAY)
 			return lang_error(p, lang_peek(p)->loc, "'%.*s' is %s, not an array", (int)name.len, name.text,
 					  lang_value_kind_name(&s->val));

@@ -469,6 +469,30 @@ static bool unread_lookahead(parser *p)
 	return true;
 }
 
+/* True when the lookahead starts a value POV-Ray reads without operators: a string, a string
+ * function's call, a name declared as a string or an array. Its #declare needs no ';', and is
+ * read without a lookahead past it (`#declare C = ""` then a macro call that reads C). */
+static bool lone_value(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	switch (t->kind) {
+	case LTK_STRING:
+	case LTK_KW_CONCAT:
+	case LTK_KW_STR:
+	case LTK_KW_VSTR:
+	case LTK_KW_CHR:
+	case LTK_KW_SUBSTR:
+	case LTK_KW_STRUPR:
+	case LTK_KW_STRLWR:
+	case LTK_KW_DATETIME: return true;
+	case LTK_IDENT: {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		return s && (s->val.kind == VAL_STRING || s->val.kind == VAL_ARRAY) && lang_raw_next(p) != LTK_LBRACKET;
+	}
+	default: return false;
+	}
+}
+
 /* `#declare A[i]...`: the array A names (declared) and the element's index. */
 static bool declare_element(parser *p, const lang_token *name, lang_array **arr, size_t *index)
 {
@@ -540,6 +564,15 @@ static bool do_declare(parser *p, const lang_token *dir)
 		return true;
 	}
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
+	if (lone_value(p)) { /* no lookahead past it: what follows may be a macro call using the name */
+		bool ok = lang_primary(p, &v);
+		p->directive_expr = false;
+		if (ok && lang_raw_next(p) == LTK_SEMI)
+			lang_advance(p);
+		if (ok && v.kind == VAL_ARRAY)
+			ok = lang_array_copy(p, name.loc, &v);
+		return ok && assign(p, &name, local, arr, index, index_at, &v);
+	}
 	bool ok = lang_expr(p, &v);
 	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
 	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
