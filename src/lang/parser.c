@@ -475,6 +475,13 @@ static bool unread_lookahead(parser *p)
 static bool lone_value(parser *p)
 {
 	lang_token *t = lang_peek(p);
+	lang_tok after = t->kind == LTK_STRING || t->kind == LTK_IDENT ? lang_raw_next(p) : LTK_EOF;
+	bool operand = after == LTK_PLUS || after == LTK_MINUS || after == LTK_STAR || after == LTK_SLASH ||
+		       after == LTK_DOT || after == LTK_LBRACKET || after == LTK_LT || after == LTK_GT ||
+		       after == LTK_LE || after == LTK_GE || after == LTK_EQ || after == LTK_NE || after == LTK_AMP ||
+		       after == LTK_BAR || after == LTK_QUESTION;
+	if (operand) /* "a" + 1: the expression's own error */
+		return false;
 	switch (t->kind) {
 	case LTK_STRING:
 	case LTK_KW_CONCAT:
@@ -487,7 +494,7 @@ static bool lone_value(parser *p)
 	case LTK_KW_DATETIME: return true;
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
-		return s && (s->val.kind == VAL_STRING || s->val.kind == VAL_ARRAY) && lang_raw_next(p) != LTK_LBRACKET;
+		return s && (s->val.kind == VAL_STRING || s->val.kind == VAL_ARRAY);
 	}
 	default: return false;
 	}
