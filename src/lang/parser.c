@@ -180,8 +180,6 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	return 0;
 }
 
-/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
- * The text is handed to diag, not copied: a 100 MB mesh is held once. */
 /* Files at least this large are mapped rather than read, and the pages the lexer has left
  * behind are dropped as it goes: a 100 MB mesh then never holds 100 MB of text at once. */
 enum { MAP_MIN_BYTES = 1 << 20, RELEASE_STEP = 8 << 20, RELEASE_MARGIN = 1 << 20 };
@@ -226,6 +224,8 @@ static void release_behind(include_frame *f)
 	}
 }
 
+/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
+ * The text is handed to diag, not copied: a 100 MB mesh is held once. */
 static int open_source(parser *p, const char *path, const diag_source **out)
 {
 	if (p->opt.read == lang_read_file) {
@@ -401,8 +401,6 @@ const symbol *lang_lookup(parser *p, const char *name, size_t len)
 	return NULL;
 }
 
-/* #declare assigns the global; #local the current include file's scope (the main file's #local is
- * global, as in POV-Ray). */
 /* A parameter of the running macro call with this name, or NULL. */
 static symbol *parameter(parser *p, const lang_token *name)
 {
@@ -419,8 +417,9 @@ static symbol *parameter(parser *p, const lang_token *name)
 	return NULL;
 }
 
-/* As POV-Ray 3.7, #declare (as #local) of a parameter assigns the parameter: the caller's variable
- * when it was passed by reference. */
+/* #declare assigns the global; #local the current include file's scope (the main file's #local is
+ * global, as in POV-Ray). As POV-Ray 3.7, #declare (as #local) of a parameter assigns the
+ * parameter: the caller's variable when it was passed by reference. */
 static bool define(parser *p, const lang_token *name, bool local, const value *v)
 {
 	symbol *param = parameter(p, name);
