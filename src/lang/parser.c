@@ -515,13 +515,59 @@ static bool declare_element(parser *p, const lang_token *name, lang_array **arr,
 	return lang_array_index(p, *arr, nm, index);
 }
 
-/* Stores a #declare's value: in the array element when arr is set, else in the name. */
-static bool assign(parser *p, const lang_token *name, bool local, lang_array *arr, size_t index, diag_loc at,
-		   const value *v)
+/* What a #declare assigns: a name (global, or local for #local) or an array's element. */
+typedef struct decl_target {
+	lang_token name;
+	bool local;
+	lang_array *arr; /* an element's array, or NULL */
+	size_t index;
+	diag_loc at; /* the value, for an element's kind error */
+} decl_target;
+
+/* Stores a #declare's value: in the array element when arr is set, else in the name. An array
+ * taken from another (not fresh) is copied, as POV-Ray does. */
+static bool assign(parser *p, const decl_target *tg, value *v, bool fresh)
 {
-	if (arr)
-		return lang_array_store(p, at, arr, index, v);
-	return define(p, name, local, v);
+	if (v->kind == VAL_ARRAY && !fresh && !lang_array_copy(p, tg->name.loc, v))
+		return false;
+	if (tg->arr)
+		return lang_array_store(p, tg->at, tg->arr, tg->index, v);
+	return define(p, &tg->name, tg->local, v);
+}
+
+/* The value after '=': a block or array (';' optional), a lone string or array (';' optional, no
+ * lookahead past it), or an expression and its ';'. */
+static bool declare_value(parser *p, const decl_target *tg)
+{
+	value v;
+	bool handled = false;
+	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
+		if (!lang_array_value(p, &v))
+			return false;
+		handled = true;
+	} else if (!lang_declare_block(p, &v, &handled)) {
+		return false;
+	}
+	if (handled) {
+		if (!assign(p, tg, &v, true))
+			return false;
+		lang_skip_optional_semi(p);
+		return true;
+	}
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
+	if (lone_value(p)) { /* no lookahead past it: what follows may be a macro call using the name */
+		bool ok = lang_primary(p, &v);
+		p->directive_expr = false;
+		if (ok && lang_raw_next(p) == LTK_SEMI)
+			lang_advance(p);
+		return ok && assign(p, tg, &v, false);
+	}
+	bool ok = lang_expr(p, &v);
+	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
+	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
+		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)tg->name.len, tg->name.text);
+	p->directive_expr = false;
+	return ok && assign(p, tg, &v, false);
 }
 
 /* declare = ("#declare" | "#local") identifier [ index ] "=" ( block_value [";"] | array [";"]
@@ -540,11 +586,8 @@ static bool do_declare(parser *p, const lang_token *dir)
 			return lang_error(p, t->loc, "cannot %s '%.*s': it is a keyword", dname, (int)t->len, t->text);
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
-	lang_token name = *lang_advance(p);
-	lang_array *arr = NULL;
-	size_t index = 0;
-	diag_loc index_at;
-	if (lang_peek(p)->kind == LTK_LBRACKET && !declare_element(p, &name, &arr, &index)) {
+	decl_target tg = {.name = *lang_advance(p), .local = local};
+	if (lang_peek(p)->kind == LTK_LBRACKET && !declare_element(p, &tg.name, &tg.arr, &tg.index)) {
 		p->directive_expr = false;
 		return false;
 	}
@@ -552,41 +595,9 @@ static bool do_declare(parser *p, const lang_token *dir)
 		p->directive_expr = false;
 		return false;
 	}
-	value v;
-	bool handled = false;
 	p->directive_expr = false;
-	index_at = lang_peek(p)->loc; /* an element's value, for its kind's error */
-	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
-		if (!lang_array_value(p, &v))
-			return false;
-		handled = true;
-	} else if (!lang_declare_block(p, &v, &handled)) {
-		return false;
-	}
-	if (handled) {
-		if (!assign(p, &name, local, arr, index, index_at, &v))
-			return false;
-		lang_skip_optional_semi(p);
-		return true;
-	}
-	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
-	if (lone_value(p)) { /* no lookahead past it: what follows may be a macro call using the name */
-		bool ok = lang_primary(p, &v);
-		p->directive_expr = false;
-		if (ok && lang_raw_next(p) == LTK_SEMI)
-			lang_advance(p);
-		if (ok && v.kind == VAL_ARRAY)
-			ok = lang_array_copy(p, name.loc, &v);
-		return ok && assign(p, &name, local, arr, index, index_at, &v);
-	}
-	bool ok = lang_expr(p, &v);
-	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
-	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
-		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
-	p->directive_expr = false;
-	if (ok && v.kind == VAL_ARRAY) /* POV-Ray copies an array declared from another */
-		ok = lang_array_copy(p, name.loc, &v);
-	return ok && assign(p, &name, local, arr, index, index_at, &v);
+	tg.at = lang_peek(p)->loc;
+	return declare_value(p, &tg);
 }
 
 /* "(" float ")" of a directive; what: "after '#if'". */
