@@ -792,7 +792,7 @@ static bool number_format(parser *p, const args *a, int li, char *fmt, size_t si
 	double l = arg_f(a, li), d = arg_f(a, li + 1);
 	if (fabs(l) > 100 || d > 100)
 		return lang_error(p, a->at[fabs(l) > 100 ? li : li + 1], "'%s' width and precision must be at most 100", a->fname);
-	int w = (int)l, pr = (int)d;
+	int w = (int)l, pr = d < 0 ? -1 : (int)d; /* d may be any negative float */
 	int k = snprintf(fmt, size, "%%");
 	if (w > 0)
 		k += snprintf(fmt + k, size - (size_t)k, "%d", w);
