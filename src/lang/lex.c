@@ -146,7 +146,7 @@ const char *lang_tok_name(lang_tok k)
 		"end of file", "a number", "a string", "an identifier", "an unsupported word",
 		"an unsupported directive",
 		"'{'", "'}'", "'('", "')'", "'<'", "'>'", "'<='", "'>='", "'='", "'!='", "','", "';'",
-		"'+'", "'-'", "'*'", "'/'", "'!'", "'&'", "'|'", "'?'", "':'", "'.'"};
+		"'+'", "'-'", "'*'", "'/'", "'!'", "'&'", "'|'", "'?'", "':'", "'.'", "'['", "']'"};
 	static const char *const names[] = {
 #define LANG_KW_NAME(e, s) "'" s "'",
 		LANG_KEYWORDS(LANG_KW_NAME)
@@ -436,6 +436,9 @@ bool lang_lex(lang_lexer *lx, diag *d, lang_token *t)
 	case '|': t->kind = LTK_BAR; return true;
 	case '?': t->kind = LTK_QUESTION; return true;
 	case ':': t->kind = LTK_COLON; return true;
+	case '.': t->kind = LTK_DOT; return true;
+	case '[': t->kind = LTK_LBRACKET; return true;
+	case ']': t->kind = LTK_RBRACKET; return true;
 	case '=': t->kind = LTK_EQ; return true;
 	case '<': t->kind = two ? LTK_LE : LTK_LT; break;
 	case '>': t->kind = two ? LTK_GE : LTK_GT; break;

@@ -4,6 +4,8 @@
  * The first error is reported and ends the parse: every function returns false from then on. */
 #include "lang/parser.h"
 
+#include "base/rng.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -110,7 +112,7 @@ bool lang_enter(parser *p, diag_loc loc)
 }
 
 /* The value of a string token, escapes resolved, in the scene arena. */
-static bool decode_string(parser *p, const lang_token *s, value *out)
+bool lang_decode_string(parser *p, const lang_token *s, value *out)
 {
 	char *buf = arena_alloc(&p->sc->arena, s->len + 1, 1, 1);
 	if (!buf)
@@ -178,8 +180,6 @@ int lang_read_file(void *user, const char *path, char **text, size_t *len)
 	return 0;
 }
 
-/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
- * The text is handed to diag, not copied: a 100 MB mesh is held once. */
 /* Files at least this large are mapped rather than read, and the pages the lexer has left
  * behind are dropped as it goes: a 100 MB mesh then never holds 100 MB of text at once. */
 enum { MAP_MIN_BYTES = 1 << 20, RELEASE_STEP = 8 << 20, RELEASE_MARGIN = 1 << 20 };
@@ -224,6 +224,8 @@ static void release_behind(include_frame *f)
 	}
 }
 
+/* Reads path through the hook and registers it with diag (BOM removed). 0 or an errno value.
+ * The text is handed to diag, not copied: a 100 MB mesh is held once. */
 static int open_source(parser *p, const char *path, const diag_source **out)
 {
 	if (p->opt.read == lang_read_file) {
@@ -311,7 +313,7 @@ static bool do_include(parser *p, diag_loc at)
 	p->prev = t;
 	if (t.kind == LTK_STRING) {
 		value v;
-		if (!decode_string(p, &t, &v))
+		if (!lang_decode_string(p, &t, &v))
 			return false;
 		name = v.str;
 	} else {
@@ -399,8 +401,6 @@ const symbol *lang_lookup(parser *p, const char *name, size_t len)
 	return NULL;
 }
 
-/* #declare assigns the global; #local the current include file's scope (the main file's #local is
- * global, as in POV-Ray). */
 /* A parameter of the running macro call with this name, or NULL. */
 static symbol *parameter(parser *p, const lang_token *name)
 {
@@ -417,8 +417,9 @@ static symbol *parameter(parser *p, const lang_token *name)
 	return NULL;
 }
 
-/* As POV-Ray 3.7, #declare (as #local) of a parameter assigns the parameter: the caller's variable
- * when it was passed by reference. */
+/* #declare assigns the global; #local the current include file's scope (the main file's #local is
+ * global, as in POV-Ray). As POV-Ray 3.7, #declare (as #local) of a parameter assigns the
+ * parameter: the caller's variable when it was passed by reference. */
 static bool define(parser *p, const lang_token *name, bool local, const value *v)
 {
 	symbol *param = parameter(p, name);
@@ -451,7 +452,126 @@ static void pop_scope(parser *p, int depth)
 
 /* ---- directives -------------------------------------------------------------------------- */
 
-/* declare = ("#declare" | "#local") identifier "=" ( block_value [";"] | expression ";" ) */
+/* A #declare of a string, an array, ... may end without ';' (POV-Ray 3.7 forces it for floats,
+ * vectors and colours only: Parse_Semi_Colon). The lookahead read after it (a directive is not run there) is given
+ * back, to be read again in its turn; false when it came from another file or macro frame. */
+static bool unread_lookahead(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	(void)t;
+	if (p->failed)
+		return false;
+	if (p->peek_files != p->n_files || p->n_files == 0)
+		return false;
+	p->files[p->n_files - 1].lx = p->peek_from;
+	p->have_tok = false;
+	return true;
+}
+
+/* True when the lookahead starts a value POV-Ray reads without operators: a string, a string
+ * function's call, a name declared as a string or an array. Its #declare needs no ';', and is
+ * read without a lookahead past it (`#declare C = ""` then a macro call that reads C). */
+static bool lone_value(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	lang_tok after = t->kind == LTK_STRING || t->kind == LTK_IDENT ? lang_raw_next(p) : LTK_EOF;
+	bool operand = after == LTK_PLUS || after == LTK_MINUS || after == LTK_STAR || after == LTK_SLASH ||
+		       after == LTK_DOT || after == LTK_LBRACKET || after == LTK_LT || after == LTK_GT ||
+		       after == LTK_LE || after == LTK_GE || after == LTK_EQ || after == LTK_NE || after == LTK_AMP ||
+		       after == LTK_BAR || after == LTK_QUESTION;
+	if (operand) /* "a" + 1: the expression's own error */
+		return false;
+	switch (t->kind) {
+	case LTK_STRING:
+	case LTK_KW_CONCAT:
+	case LTK_KW_STR:
+	case LTK_KW_VSTR:
+	case LTK_KW_CHR:
+	case LTK_KW_SUBSTR:
+	case LTK_KW_STRUPR:
+	case LTK_KW_STRLWR:
+	case LTK_KW_DATETIME: return true;
+	case LTK_IDENT: {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		return s && (s->val.kind == VAL_STRING || s->val.kind == VAL_ARRAY);
+	}
+	default: return false;
+	}
+}
+
+/* `#declare A[i]...`: the array A names (declared) and the element's index. */
+static bool declare_element(parser *p, const lang_token *name, lang_array **arr, size_t *index)
+{
+	const symbol *s = lang_lookup(p, name->text, name->len);
+	if (!s)
+		return lang_error(p, name->loc, "cannot assign an element of '%.*s': it is not declared", (int)name->len,
+				  name->text);
+	if (s->val.kind != VAL_ARRAY)
+		return lang_error(p, name->loc, "cannot assign an element of '%.*s': it is %s, not an array",
+				  (int)name->len, name->text, lang_value_kind_name(&s->val));
+	char nm[LANG_MAX_IDENT + 1];
+	snprintf(nm, sizeof nm, "%.*s", (int)name->len, name->text);
+	*arr = s->val.arr;
+	return lang_array_index(p, *arr, nm, index);
+}
+
+/* What a #declare assigns: a name (global, or local for #local) or an array's element. */
+typedef struct decl_target {
+	lang_token name;
+	bool local;
+	lang_array *arr; /* an element's array, or NULL */
+	size_t index;
+	diag_loc at; /* the value, for an element's kind error */
+} decl_target;
+
+/* Stores a #declare's value: in the array element when arr is set, else in the name. An array
+ * taken from another (not fresh) is copied, as POV-Ray does. */
+static bool assign(parser *p, const decl_target *tg, value *v, bool fresh)
+{
+	if (v->kind == VAL_ARRAY && !fresh && !lang_array_copy(p, tg->name.loc, v))
+		return false;
+	if (tg->arr)
+		return lang_array_store(p, tg->at, tg->arr, tg->index, v);
+	return define(p, &tg->name, tg->local, v);
+}
+
+/* The value after '=': a block or array (';' optional), a lone string or array (';' optional, no
+ * lookahead past it), or an expression and its ';'. */
+static bool declare_value(parser *p, const decl_target *tg)
+{
+	value v;
+	bool handled = false;
+	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
+		if (!lang_array_value(p, &v))
+			return false;
+		handled = true;
+	} else if (!lang_declare_block(p, &v, &handled)) {
+		return false;
+	}
+	if (handled) {
+		if (!assign(p, tg, &v, true))
+			return false;
+		lang_skip_optional_semi(p);
+		return true;
+	}
+	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
+	if (lone_value(p)) { /* no lookahead past it: what follows may be a macro call using the name */
+		bool ok = lang_primary(p, &v);
+		p->directive_expr = false;
+		if (ok && lang_raw_next(p) == LTK_SEMI)
+			lang_advance(p);
+		return ok && assign(p, tg, &v, false);
+	}
+	bool ok = lang_expr(p, &v);
+	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
+	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
+		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)tg->name.len, tg->name.text);
+	p->directive_expr = false;
+	return ok && assign(p, tg, &v, false);
+}
+
+/* declare = ("#declare" | "#local") identifier [ index ] "=" ( block_value [";"] | array [";"]
+ *         | expression ";" ) */
 static bool do_declare(parser *p, const lang_token *dir)
 {
 	bool local = dir->kind == LTK_DIR_LOCAL;
@@ -466,32 +586,18 @@ static bool do_declare(parser *p, const lang_token *dir)
 			return lang_error(p, t->loc, "cannot %s '%.*s': it is a keyword", dname, (int)t->len, t->text);
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
-	lang_token name = *lang_advance(p);
+	decl_target tg = {.name = *lang_advance(p), .local = local};
+	if (lang_peek(p)->kind == LTK_LBRACKET && !declare_element(p, &tg.name, &tg.arr, &tg.index)) {
+		p->directive_expr = false;
+		return false;
+	}
 	if (!lang_expect(p, LTK_EQ, "after the name in #declare")) {
 		p->directive_expr = false;
 		return false;
 	}
-	value v;
-	bool handled = false;
 	p->directive_expr = false;
-	if (!lang_declare_block(p, &v, &handled))
-		return false;
-	if (handled) {
-		if (!define(p, &name, local, &v))
-			return false;
-		lang_skip_optional_semi(p);
-		return true;
-	}
-	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
-	bool ok = lang_expr(p, &v);
-	if (ok) {
-		if (lang_peek(p)->kind != LTK_SEMI)
-			ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
-		else
-			lang_advance(p);
-	}
-	p->directive_expr = false;
-	return ok && define(p, &name, local, &v);
+	tg.at = lang_peek(p)->loc;
+	return declare_value(p, &tg);
 }
 
 /* "(" float ")" of a directive; what: "after '#if'". */
@@ -719,8 +825,9 @@ static void forget(parser *p, const char *name, size_t len)
 	}
 }
 
-/* ifdef = ( "#ifdef" | "#ifndef" ) "(" identifier ")" { token } [ "#else" { token } ] "#end"
- * As POV-Ray 3.7's Parse_Ifdef_Param: true when the name is declared (a keyword never is). */
+/* ifdef = ( "#ifdef" | "#ifndef" ) "(" identifier [ index ] ")" { token } [ "#else" { token } ] "#end"
+ * As POV-Ray 3.7's Parse_Ifdef_Param: true when the name is declared (a keyword never is), or
+ * the array's element assigned. */
 static bool do_ifdef(parser *p, diag_loc loc, bool want_defined)
 {
 	const char *dname = want_defined ? "#ifdef" : "#ifndef";
@@ -729,10 +836,21 @@ static bool do_ifdef(parser *p, diag_loc loc, bool want_defined)
 	lang_token name;
 	const symbol *s = NULL;
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
-	bool ok = lang_expect(p, LTK_LPAREN, ctx) && directive_name(p, dname, &name, &s) &&
-		  lang_expect(p, LTK_RPAREN, "after the identifier");
+	bool ok = lang_expect(p, LTK_LPAREN, ctx) && directive_name(p, dname, &name, &s);
+	bool is = s != NULL;
+	if (ok && lang_peek(p)->kind == LTK_LBRACKET) {
+		size_t i;
+		char nm[LANG_MAX_IDENT + 1];
+		snprintf(nm, sizeof nm, "%.*s", (int)name.len, name.text);
+		if (!s || s->val.kind != VAL_ARRAY)
+			ok = lang_error(p, name.loc, "'%s' of an element of '%s', which is %s, not an array", dname, nm,
+					s ? lang_value_kind_name(&s->val) : "not declared");
+		else if ((ok = lang_array_index(p, s->val.arr, nm, &i)))
+			is = s->val.arr->set[i];
+	}
+	ok = ok && lang_expect(p, LTK_RPAREN, "after the identifier");
 	p->directive_expr = false;
-	return ok && branch(p, loc, dname, (s != NULL) == want_defined);
+	return ok && branch(p, loc, dname, is == want_defined);
 }
 
 /* undef = "#undef" identifier. Forgets the innermost declaration of the name; an unknown name is a
@@ -1049,16 +1167,29 @@ static const char *message_line(parser *p, const char *s)
 	return m;
 }
 
-/* The operand of #debug, #warning, #error: a string or a name declared as one. One token, as the
- * directive has no terminator: reading on for an operator would take the next directive as the
- * lookahead. (With string operators, such as concat, this becomes an expression.) */
+lang_tok lang_raw_next(parser *p)
+{
+	lang_lexer lx = p->files[p->n_files - 1].lx;
+	lang_token t;
+	diag quiet;
+	diag_init(&quiet, NULL);
+	return lang_lex(&lx, &quiet, &t) ? t.kind : LTK_EOF;
+}
+
+/* The operand of #debug, #warning, #error: a string, a name declared as one, an array element or a
+ * function call (concat, str, ...). One primary, as the directive has no terminator: reading on
+ * for an operator would take the next directive as the lookahead. */
 static bool message_text(parser *p, const char *what, const char **s)
 {
 	lang_token *t = lang_peek(p);
-	if (t->kind == LTK_STRING) {
+	bool call = t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE;
+	if (t->kind == LTK_STRING || call || (t->kind == LTK_IDENT && lang_raw_next(p) == LTK_LBRACKET)) {
+		diag_loc at = t->loc;
 		value v;
-		if (!decode_string(p, lang_advance(p), &v))
+		if (!lang_primary(p, &v))
 			return false;
+		if (v.kind != VAL_STRING)
+			return lang_error(p, at, "expected a string %s, found %s", what, lang_value_kind_name(&v));
 		*s = v.str;
 		return true;
 	}
@@ -1140,6 +1271,10 @@ static bool do_macro(parser *p, diag_loc loc)
 			break;
 		}
 		m->params[m->n_params] = arena_strndup(&p->sc->arena, t->text, t->len);
+		if (!m->params[m->n_params]) {
+			ok = no_memory(p, t->loc);
+			break;
+		}
 		m->optional[m->n_params++] = optional;
 		lang_advance(p);
 	}
@@ -1372,6 +1507,9 @@ lang_token *lang_peek(parser *p)
 {
 	if (!p->have_tok) {
 		lang_token t;
+		p->peek_files = p->n_files;
+		if (p->n_files > 0)
+			p->peek_from = p->files[p->n_files - 1].lx;
 		fetch(p, &t);
 		p->tok = t;
 		p->have_tok = true;
@@ -1432,546 +1570,10 @@ void lang_skip_optional_semi(parser *p)
 	}
 }
 
-/* ---- expressions ------------------------------------------------------------------------- */
-
-const char *lang_value_kind_name(const value *v)
-{
-	switch (v->kind) {
-	case VAL_FLOAT: return "a float";
-	case VAL_VECTOR: return v->n == 2 ? "a 2-vector" : v->n == 3 ? "a vector" : "a vector of another size";
-	case VAL_COLOR: return "a colour";
-	case VAL_STRING: return "a string";
-	case VAL_MATERIAL: return "a material";
-	case VAL_OBJECT: return "an object";
-	case VAL_MACRO: return "a macro";
-	}
-	return "a value";
-}
-
-static void set_float(value *v, double x)
-{
-	v->kind = VAL_FLOAT;
-	v->n = 1;
-	v->v[0] = x;
-}
-
-static bool finite_result(parser *p, diag_loc loc, const value *v, const char *op)
-{
-	for (int i = 0; i < v->n; i++)
-		if (!isfinite(v->v[i]))
-			return lang_error(p, loc, "%s produces %s", op, isnan(v->v[i]) ? "NaN (not a number)" : "an infinity");
-	return true;
-}
-
-static bool is_numeric(const value *v) { return v->kind == VAL_FLOAT || v->kind == VAL_VECTOR || v->kind == VAL_COLOR; }
-
-/* Brings a and b to the same shape for a component-wise operation (a float is promoted). */
-static bool unify(parser *p, diag_loc loc, value *a, value *b, const char *op)
-{
-	if (!is_numeric(a) || !is_numeric(b))
-		return lang_error(p, loc, "cannot apply '%s' to %s and %s", op, lang_value_kind_name(a), lang_value_kind_name(b));
-	if (a->kind == VAL_FLOAT && b->kind != VAL_FLOAT) {
-		for (int i = 1; i < b->n; i++)
-			a->v[i] = a->v[0];
-		a->n = b->n;
-		a->kind = b->kind;
-	} else if (b->kind == VAL_FLOAT && a->kind != VAL_FLOAT) {
-		for (int i = 1; i < a->n; i++)
-			b->v[i] = b->v[0];
-		b->n = a->n;
-	}
-	if (a->n != b->n)
-		return lang_error(p, loc, "cannot apply '%s' to vectors of %d and %d components", op, a->n, b->n);
-	if (b->kind == VAL_COLOR)
-		a->kind = VAL_COLOR;
-	return true;
-}
-
-static bool need_float(parser *p, diag_loc loc, const value *v, const char *what)
-{
-	if (v->kind == VAL_FLOAT)
-		return true;
-	return lang_error(p, loc, "%s needs a float, found %s", what, lang_value_kind_name(v));
-}
-
-static bool expr_or(parser *p, value *out);
-
-/* vector = "<" expression { "," expression } ">"   (a '>' here closes the vector) */
-static bool vector_literal(parser *p, value *out)
-{
-	diag_loc open = p->prev.loc;
-	bool saved = p->no_gt;
-	p->no_gt = true;
-	out->kind = VAL_VECTOR;
-	out->n = 0;
-	for (;;) {
-		value c;
-		if (!expr_or(p, &c))
-			return false;
-		if (!need_float(p, p->prev.loc, &c, "a vector component"))
-			return false;
-		if (out->n >= LANG_MAX_VECTOR)
-			return lang_error(p, open, "vector has too many components (limit is %d)", LANG_MAX_VECTOR);
-		out->v[out->n++] = c.v[0];
-		if (lang_accept(p, LTK_COMMA))
-			continue;
-		if (lang_peek(p)->kind == LTK_GT)
-			break;
-		p->no_gt = saved;
-		return lang_error_found(p, "expected ',' or '>' in the vector opened at line %u, column %u", open.line, open.col);
-	}
-	lang_advance(p);
-	p->no_gt = saved;
-	return true;
-}
-
-typedef struct func {
-	lang_tok tok;
-	int arity; /* -1: two or more */
-} func;
-
-static const func funcs[] = {
-	{LTK_KW_SIN, 1},     {LTK_KW_COS, 1},     {LTK_KW_TAN, 1},        {LTK_KW_ASIN, 1},
-	{LTK_KW_ACOS, 1},    {LTK_KW_ATAN2, 2},   {LTK_KW_SQRT, 1},       {LTK_KW_POW, 2},
-	{LTK_KW_EXP, 1},     {LTK_KW_LOG, 1},     {LTK_KW_ABS, 1},        {LTK_KW_MIN, -1},
-	{LTK_KW_MAX, -1},    {LTK_KW_MOD, 2},     {LTK_KW_FLOOR, 1},      {LTK_KW_CEIL, 1},
-	{LTK_KW_RADIANS, 1}, {LTK_KW_DEGREES, 1}, {LTK_KW_VLENGTH, 1},    {LTK_KW_VNORMALIZE, 1},
-	{LTK_KW_VDOT, 2},    {LTK_KW_VCROSS, 2},
-};
+/* ---- entry point ------------------------------------------------------------------------- */
 
 static const double PI = 3.14159265358979323846;
 static const double POV_VERSION = 3.7; /* the language circe reads: `version` before any #version */
-
-static bool need_vec3(parser *p, diag_loc loc, const value *v, const char *fname)
-{
-	if ((v->kind == VAL_VECTOR || v->kind == VAL_COLOR) && v->n == 3)
-		return true;
-	return lang_error(p, loc, "'%s' needs a 3-vector, found %s", fname, lang_value_kind_name(v));
-}
-
-/* call = function "(" expression { "," expression } ")" */
-static bool call(parser *p, const lang_token *name, const func *f, value *out)
-{
-	const char *fname = lang_tok_name(name->kind);
-	char nm[32];
-	snprintf(nm, sizeof nm, "%.*s", (int)name->len, name->text);
-	fname = nm;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "after '%s'", fname);
-	if (!lang_expect(p, LTK_LPAREN, ctx))
-		return false;
-	bool saved = p->no_gt;
-	p->no_gt = false;
-	value a[LANG_MAX_VECTOR];
-	diag_loc aloc[LANG_MAX_VECTOR];
-	int n = 0;
-	for (;;) {
-		if (n == LANG_MAX_VECTOR)
-			return lang_error(p, name->loc, "too many arguments to '%s' (limit is %d)", fname, LANG_MAX_VECTOR);
-		aloc[n] = lang_peek(p)->loc;
-		if (!expr_or(p, &a[n]))
-			return false;
-		n++;
-		if (!lang_accept(p, LTK_COMMA))
-			break;
-	}
-	snprintf(ctx, sizeof ctx, "to close the arguments of '%s'", fname);
-	if (!lang_expect(p, LTK_RPAREN, ctx))
-		return false;
-	p->no_gt = saved;
-	if ((f->arity > 0 && n != f->arity) || (f->arity < 0 && n < 2))
-		return lang_error(p, name->loc, "'%s' takes %s%d argument%s, found %d", fname, f->arity < 0 ? "at least " : "",
-				  f->arity < 0 ? 2 : f->arity, (f->arity == 1) ? "" : "s", n);
-	lang_tok k = f->tok;
-	if (k == LTK_KW_VLENGTH || k == LTK_KW_VNORMALIZE || k == LTK_KW_VDOT || k == LTK_KW_VCROSS) {
-		for (int i = 0; i < n; i++)
-			if (!need_vec3(p, aloc[i], &a[i], fname))
-				return false;
-		dvec3 u = d3(a[0].v[0], a[0].v[1], a[0].v[2]);
-		dvec3 w = n > 1 ? d3(a[1].v[0], a[1].v[1], a[1].v[2]) : u;
-		if (k == LTK_KW_VLENGTH) {
-			set_float(out, d3_length(u));
-		} else if (k == LTK_KW_VDOT) {
-			set_float(out, d3_dot(u, w));
-		} else {
-			dvec3 r;
-			if (k == LTK_KW_VCROSS) {
-				r = d3_cross(u, w);
-			} else {
-				double len = d3_length(u);
-				if (!(len > 0))
-					return lang_error(p, aloc[0], "'vnormalize' of a zero-length vector");
-				r = d3_scale(u, 1.0 / len);
-			}
-			*out = a[0];
-			out->kind = VAL_VECTOR;
-			out->v[0] = r.x, out->v[1] = r.y, out->v[2] = r.z;
-		}
-		return finite_result(p, name->loc, out, fname);
-	}
-	for (int i = 0; i < n; i++)
-		if (!need_float(p, aloc[i], &a[i], fname))
-			return false;
-	double x = a[0].v[0], y = n > 1 ? a[1].v[0] : 0, r = 0;
-	switch (k) {
-	case LTK_KW_SIN: r = sin(x); break;
-	case LTK_KW_COS: r = cos(x); break;
-	case LTK_KW_TAN: r = tan(x); break;
-	case LTK_KW_ASIN:
-	case LTK_KW_ACOS:
-		if (x < -1 || x > 1)
-			return lang_error(p, aloc[0], "'%s' of %g is outside [-1, 1]", fname, x);
-		r = k == LTK_KW_ASIN ? asin(x) : acos(x);
-		break;
-	case LTK_KW_ATAN2: r = atan2(x, y); break;
-	case LTK_KW_SQRT:
-		if (x < 0)
-			return lang_error(p, aloc[0], "'sqrt' of a negative number (%g)", x);
-		r = sqrt(x);
-		break;
-	case LTK_KW_POW: r = pow(x, y); break;
-	case LTK_KW_EXP: r = exp(x); break;
-	case LTK_KW_LOG:
-		if (!(x > 0))
-			return lang_error(p, aloc[0], "'log' of %g: the argument must be positive", x);
-		r = log(x);
-		break;
-	case LTK_KW_ABS: r = fabs(x); break;
-	case LTK_KW_MIN:
-	case LTK_KW_MAX:
-		r = x;
-		for (int i = 1; i < n; i++)
-			r = k == LTK_KW_MIN ? fmin(r, a[i].v[0]) : fmax(r, a[i].v[0]);
-		break;
-	case LTK_KW_MOD:
-		if (y == 0)
-			return lang_error(p, aloc[1], "'mod' by zero");
-		r = fmod(x, y);
-		break;
-	case LTK_KW_FLOOR: r = floor(x); break;
-	case LTK_KW_CEIL: r = ceil(x); break;
-	case LTK_KW_RADIANS: r = x * PI / 180.0; break;
-	case LTK_KW_DEGREES: r = x * 180.0 / PI; break;
-	default: break;
-	}
-	set_float(out, r);
-	return finite_result(p, name->loc, out, fname);
-}
-
-static bool expr_additive(parser *p, value *out);
-
-/* primary = number | string | "(" expression ")" | vector | colour | identifier | "x" | "y" | "z"
- *         | "pi" | "clock" | "clock_on" | "version" | "true" | "yes" | "on" | "false" | "no" | "off"
- *         | call
- * colour  = ("color" | "colour") [ "rgb" ] additive | "rgb" additive */
-static bool primary(parser *p, value *out)
-{
-	lang_token *t = lang_peek(p);
-	out->str = NULL, out->mat = NULL, out->obj = NULL;
-	switch (t->kind) {
-	case LTK_NUMBER:
-		set_float(out, t->number);
-		lang_advance(p);
-		return true;
-	case LTK_STRING:
-		return decode_string(p, lang_advance(p), out);
-	case LTK_LPAREN: {
-		lang_advance(p);
-		bool saved = p->no_gt;
-		p->no_gt = false;
-		if (!expr_or(p, out) || !lang_expect(p, LTK_RPAREN, "to close '('"))
-			return false;
-		p->no_gt = saved;
-		return true;
-	}
-	case LTK_LT:
-		lang_advance(p);
-		return vector_literal(p, out);
-	case LTK_KW_COLOR:
-	case LTK_KW_COLOUR:
-	case LTK_KW_RGB: {
-		diag_loc loc = t->loc;
-		if (lang_advance(p)->kind != LTK_KW_RGB)
-			lang_accept(p, LTK_KW_RGB);
-		if (!lang_enter(p, loc)) /* rgb rgb rgb ... recurses */
-			return false;
-		bool ok = expr_additive(p, out);
-		lang_leave(p);
-		if (!ok)
-			return false;
-		if (out->kind == VAL_FLOAT) {
-			out->v[1] = out->v[2] = out->v[0];
-			out->n = 3;
-			out->kind = VAL_VECTOR;
-		}
-		if ((out->kind != VAL_VECTOR && out->kind != VAL_COLOR) || out->n != 3)
-			return lang_error(p, loc, "a colour needs a float or a 3-vector, found %s", lang_value_kind_name(out));
-		out->kind = VAL_COLOR;
-		return true;
-	}
-	case LTK_KW_X:
-	case LTK_KW_Y:
-	case LTK_KW_Z:
-		out->kind = VAL_VECTOR;
-		out->n = 3;
-		out->v[0] = t->kind == LTK_KW_X, out->v[1] = t->kind == LTK_KW_Y, out->v[2] = t->kind == LTK_KW_Z;
-		lang_advance(p);
-		return true;
-	case LTK_KW_PI:
-		set_float(out, PI);
-		lang_advance(p);
-		return true;
-	case LTK_KW_CLOCK:
-		set_float(out, p->opt.clock);
-		lang_advance(p);
-		return true;
-	case LTK_KW_TRUE:
-	case LTK_KW_YES:
-	case LTK_KW_ON:
-	case LTK_KW_FALSE:
-	case LTK_KW_NO:
-	case LTK_KW_OFF:
-		set_float(out, t->kind == LTK_KW_TRUE || t->kind == LTK_KW_YES || t->kind == LTK_KW_ON);
-		lang_advance(p);
-		return true;
-	case LTK_KW_VERSION:
-		set_float(out, p->version);
-		lang_advance(p);
-		return true;
-	case LTK_KW_CLOCK_ON:
-		set_float(out, p->opt.animated);
-		lang_advance(p);
-		return true;
-	case LTK_IDENT: {
-		const symbol *s = lang_lookup(p, t->text, t->len);
-		if (!s)
-			return lang_error(p, t->loc, "undeclared identifier '%.*s'", (int)t->len, t->text);
-		*out = s->val;
-		lang_advance(p);
-		return true;
-	}
-	default:
-		for (size_t i = 0; i < sizeof funcs / sizeof funcs[0]; i++)
-			if (funcs[i].tok == t->kind) {
-				lang_token name = *lang_advance(p);
-				return call(p, &name, &funcs[i], out);
-			}
-		return lang_error_found(p, "expected an expression");
-	}
-}
-
-/* unary = ( "-" | "+" | "!" ) unary | primary */
-static bool unary(parser *p, value *out)
-{
-	lang_token *t = lang_peek(p);
-	if (t->kind != LTK_MINUS && t->kind != LTK_PLUS && t->kind != LTK_BANG)
-		return primary(p, out);
-	lang_token op = *lang_advance(p);
-	if (!lang_enter(p, op.loc))
-		return false;
-	bool ok = unary(p, out);
-	lang_leave(p);
-	if (!ok)
-		return false;
-	if (op.kind == LTK_BANG) {
-		if (!need_float(p, op.loc, out, "'!'"))
-			return false;
-		set_float(out, out->v[0] == 0.0);
-	} else if (op.kind == LTK_MINUS) {
-		if (!is_numeric(out))
-			return lang_error(p, op.loc, "cannot negate %s", lang_value_kind_name(out));
-		for (int i = 0; i < out->n; i++)
-			out->v[i] = -out->v[i];
-	} else if (!is_numeric(out)) {
-		return lang_error(p, op.loc, "unary '+' needs a number, found %s", lang_value_kind_name(out));
-	}
-	return true;
-}
-
-/* term = unary { ( "*" | "/" ) unary } */
-static bool term(parser *p, value *out)
-{
-	if (!unary(p, out))
-		return false;
-	for (;;) {
-		lang_tok k = lang_peek(p)->kind;
-		if (k != LTK_STAR && k != LTK_SLASH)
-			return true;
-		lang_token op = *lang_advance(p);
-		value b;
-		if (!unary(p, &b) || !unify(p, op.loc, out, &b, k == LTK_STAR ? "*" : "/"))
-			return false;
-		for (int i = 0; i < out->n; i++) {
-			if (k == LTK_SLASH && b.v[i] == 0.0)
-				return lang_error(p, op.loc, "division by zero");
-			out->v[i] = k == LTK_STAR ? out->v[i] * b.v[i] : out->v[i] / b.v[i];
-		}
-		if (!finite_result(p, op.loc, out, k == LTK_STAR ? "'*'" : "'/'"))
-			return false;
-	}
-}
-
-/* additive = term { ( "+" | "-" ) term } */
-static bool expr_additive(parser *p, value *out)
-{
-	if (!term(p, out))
-		return false;
-	for (;;) {
-		lang_tok k = lang_peek(p)->kind;
-		if (k != LTK_PLUS && k != LTK_MINUS)
-			return true;
-		lang_token op = *lang_advance(p);
-		value b;
-		if (!term(p, &b) || !unify(p, op.loc, out, &b, k == LTK_PLUS ? "+" : "-"))
-			return false;
-		for (int i = 0; i < out->n; i++)
-			out->v[i] = k == LTK_PLUS ? out->v[i] + b.v[i] : out->v[i] - b.v[i];
-		if (!finite_result(p, op.loc, out, k == LTK_PLUS ? "'+'" : "'-'"))
-			return false;
-	}
-}
-
-/* comparison = additive { ( "<" | "<=" | "=" | "!=" | ">=" | ">" ) additive }
- * Inside a vector literal a '>' is not an operator: it closes the vector. */
-static bool comparison(parser *p, value *out)
-{
-	if (!expr_additive(p, out))
-		return false;
-	for (;;) {
-		lang_tok k = lang_peek(p)->kind;
-		if (k != LTK_LT && k != LTK_LE && k != LTK_EQ && k != LTK_NE && k != LTK_GE && k != LTK_GT)
-			return true;
-		if (k == LTK_GT && p->no_gt)
-			return true;
-		lang_token op = *lang_advance(p);
-		value b;
-		if (!expr_additive(p, &b))
-			return false;
-		if (!need_float(p, op.loc, out, "a comparison") || !need_float(p, op.loc, &b, "a comparison"))
-			return false;
-		double x = out->v[0], y = b.v[0];
-		bool r = k == LTK_LT ? x < y : k == LTK_LE ? x <= y : k == LTK_EQ ? x == y : k == LTK_NE ? x != y
-			 : k == LTK_GE ? x >= y : x > y;
-		set_float(out, r);
-	}
-}
-
-/* and = comparison { "&" comparison } */
-static bool expr_and(parser *p, value *out)
-{
-	if (!comparison(p, out))
-		return false;
-	while (lang_peek(p)->kind == LTK_AMP) {
-		lang_token op = *lang_advance(p);
-		value b;
-		if (!comparison(p, &b) || !need_float(p, op.loc, out, "'&'") || !need_float(p, op.loc, &b, "'&'"))
-			return false;
-		set_float(out, out->v[0] != 0 && b.v[0] != 0);
-	}
-	return true;
-}
-
-/* expression = and { "|" and } */
-static bool expr_or(parser *p, value *out)
-{
-	if (!lang_enter(p, lang_peek(p)->loc))
-		return false;
-	bool ok = expr_and(p, out);
-	while (ok && lang_peek(p)->kind == LTK_BAR) {
-		lang_token op = *lang_advance(p);
-		value b;
-		ok = expr_and(p, &b) && need_float(p, op.loc, out, "'|'") && need_float(p, op.loc, &b, "'|'");
-		if (ok)
-			set_float(out, out->v[0] != 0 || b.v[0] != 0);
-	}
-	lang_leave(p);
-	return ok;
-}
-
-bool lang_expr(parser *p, value *out) { return expr_or(p, out); }
-
-bool lang_float(parser *p, const char *what, double *out)
-{
-	diag_loc loc = lang_peek(p)->loc;
-	value v;
-	if (!lang_expr(p, &v))
-		return false;
-	if (v.kind != VAL_FLOAT)
-		return lang_error(p, loc, "expected a float %s, found %s", what, lang_value_kind_name(&v));
-	*out = v.v[0];
-	return true;
-}
-
-bool lang_int(parser *p, const char *what, long lo, long hi, long *out)
-{
-	diag_loc loc = lang_peek(p)->loc;
-	double x;
-	if (!lang_float(p, what, &x))
-		return false;
-	if (x != floor(x))
-		return lang_error(p, loc, "expected an integer %s, found %g", what, x);
-	if (x < (double)lo || x > (double)hi)
-		return lang_error(p, loc, "%g is out of range %s (limit is %ld to %ld)", x, what, lo, hi);
-	*out = (long)x;
-	return true;
-}
-
-bool lang_vec3(parser *p, const char *what, dvec3 *out)
-{
-	diag_loc loc = lang_peek(p)->loc;
-	value v;
-	if (!lang_expr(p, &v))
-		return false;
-	if (v.kind == VAL_FLOAT) {
-		*out = d3(v.v[0], v.v[0], v.v[0]);
-		return true;
-	}
-	if ((v.kind != VAL_VECTOR && v.kind != VAL_COLOR) || v.n != 3)
-		return lang_error(p, loc, "expected a vector %s, found %s", what, lang_value_kind_name(&v));
-	*out = d3(v.v[0], v.v[1], v.v[2]);
-	return true;
-}
-
-bool lang_color(parser *p, const char *what, vec3 *out)
-{
-	dvec3 c;
-	if (!lang_vec3(p, what, &c))
-		return false;
-	*out = d3_to_v3(c);
-	return true;
-}
-
-bool lang_string(parser *p, const char *what, const char **out)
-{
-	diag_loc loc = lang_peek(p)->loc;
-	value v;
-	if (!lang_expr(p, &v))
-		return false;
-	if (v.kind != VAL_STRING)
-		return lang_error(p, loc, "expected a string %s, found %s", what, lang_value_kind_name(&v));
-	*out = v.str;
-	return true;
-}
-
-bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc)
-{
-	*loc = lang_peek(p)->loc;
-	value v;
-	if (!lang_expr(p, &v))
-		return false;
-	if (v.kind != VAL_VECTOR)
-		return lang_error(p, *loc, "expected a vector of indices %s, found %s", what, lang_value_kind_name(&v));
-	for (int i = 0; i < v.n; i++) {
-		double x = v.v[i];
-		if (x != floor(x) || x < 0 || x > 4294967295.0)
-			return lang_error(p, *loc, "index %g %s is not a non-negative integer", x, what);
-		idx[i] = (uint32_t)x;
-	}
-	*n = v.n;
-	return true;
-}
-
-/* ---- entry point ------------------------------------------------------------------------- */
 
 /* The floats POV-Ray 3.7 declares before the scene is read, as ordinary globals that a scene may
  * #declare again (its front end adds them: frontend/simplefrontend.h, animationprocessing.cpp).
@@ -2050,6 +1652,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		p->opt.read = lang_read_file;
 	vecbuf_init(&p->globals, sizeof(symbol));
 	vecbuf_init(&p->locals, sizeof(symbol));
+	vecbuf_init(&p->rand_streams, sizeof(rng));
 	p->eof.kind = LTK_EOF;
 	p->version = POV_VERSION;
 	lang_status st = LANG_OK;
@@ -2064,7 +1667,13 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 			st = LANG_IO_ERROR;
 		}
 	} else {
-		push_file(p, src, arena_strdup(&sc->arena, path), diag_noloc());
+		const char *main_path = arena_strdup(&sc->arena, path);
+		if (!main_path) {
+			diag_error(d, diag_noloc(), "out of memory");
+			st = LANG_NO_MEMORY;
+			goto done;
+		}
+		push_file(p, src, main_path, diag_noloc());
 		predeclare(p);
 		p->eof.loc = (diag_loc){src, 1, 1};
 		while (!p->failed && lang_peek(p)->kind != LTK_EOF)
@@ -2075,8 +1684,10 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		else if (scene_validate(sc, d) > 0)
 			st = LANG_SCENE_ERROR;
 	}
+done:
 	vecbuf_free(&p->globals);
 	vecbuf_free(&p->locals);
+	vecbuf_free(&p->rand_streams);
 	mem_free(p);
 	if (st == LANG_OK && !hash_sources(d, before, &sc->source_hash)) {
 		diag_error(d, diag_noloc(), "out of memory");

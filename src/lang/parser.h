@@ -11,7 +11,14 @@
 
 #include <stdbool.h>
 
-typedef enum value_kind { VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO } value_kind;
+typedef enum value_kind {
+	VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO,
+	/* expressions (expr.c): */
+	VAL_ARRAY, /* arr; POV-Ray's array[N]... */
+} value_kind;
+
+/* A colour is POV-Ray's 5-vector: red, green, blue, filter, transmit (VAL_COLOR has n == 5). */
+enum { LANG_COLOR_TERMS = 5 };
 
 /* A list of placed objects made by one object item (a union gives several). */
 typedef struct objlist {
@@ -27,7 +34,22 @@ typedef struct value {
 	const scene_material *mat;
 	const objlist *obj;
 	const struct lang_macro *mac; /* VAL_MACRO */
+	struct lang_array *arr; /* VAL_ARRAY: shared by reference, as a macro's parameter is */
 } value;
+
+/* An array: its dimensions and its elements in row-major order, each unset until assigned (kind
+ * `set` false). POV-Ray 3.7's arrays: at most LANG_MAX_ARRAY_DIMS dimensions; `mixed` lets the
+ * elements be of different kinds (otherwise all take the kind of the first one assigned). */
+enum { LANG_MAX_ARRAY_DIMS = 5 }; /* POV-Ray 3.7's limit (EXPRESS terms of a subscript) */
+typedef struct lang_array {
+	int dims;
+	long size[LANG_MAX_ARRAY_DIMS];
+	size_t count; /* the product of the sizes */
+	bool mixed;
+	int kind; /* not mixed: the value_kind of its elements once one is set; -1 before */
+	value *elems;
+	bool *set;
+} lang_array;
 
 /* A #macro: its parameters and where its body lies in its source (re-lexed at each call, as a
  * #while body is: the lexer is a few compares a character). */
@@ -102,6 +124,10 @@ typedef struct parser {
 	bool no_expand; /* reading a directive's name: a macro's name is not a call */
 	double version; /* `version`: 3.7 until a #version sets it */
 	vecbuf globals, locals; /* symbol */
+	/* expressions (expr.c): */
+	vecbuf rand_streams; /* rng, one per seed() call: rand(S) draws from stream S */
+	lang_lexer peek_from; /* the lexer before the lookahead was read, in frame peek_files */
+	int peek_files;
 } parser;
 
 /* ---- token stream (parser.c) ---- */
@@ -119,16 +145,38 @@ bool lang_error(parser *p, diag_loc loc, const char *fmt, ...) __attribute__((fo
 /* A description of a token for messages: "'1'", "'sphere'", "end of file", "identifier 'Foo'". */
 const char *lang_describe(const lang_token *t, char *buf, size_t size);
 bool lang_enter(parser *p, diag_loc loc); /* recursion guard */
+/* The value of a string token, escapes resolved, in the scene arena. */
+bool lang_decode_string(parser *p, const lang_token *s, value *out);
 static inline void lang_leave(parser *p) { p->depth--; }
+/* The kind of the token after the lookahead (the next one when none is held), read without running
+ * directives: for constructs that end without a terminator (#debug's operand, an array's size). */
+lang_tok lang_raw_next(parser *p);
 /* After a block value of #declare: consumes an optional ';' without running directives. */
 void lang_skip_optional_semi(parser *p);
 
-/* ---- expressions (parser.c) ---- */
+/* ---- expressions (expr.c) ---- */
 bool lang_expr(parser *p, value *out);
+/* One primary with its members and indices but no operator after it: the operand of #debug, which
+ * has no terminator to read an operator up to. */
+bool lang_primary(parser *p, value *out);
+/* True for a word that begins a colour: color colour rgb rgbf ... srgbft red green blue filter
+ * transmit. */
+bool lang_colour_word(lang_tok k);
+/* array = "array" [ "mixed" ] "[" int "]" { "[" int "]" } [ "{" items "}" ]; the lookahead is
+ * "array". */
+bool lang_array_value(parser *p, value *out);
+/* "[" int "]" ... after an array's name: the element's index into a->elems, bounds checked. */
+bool lang_array_index(parser *p, const lang_array *a, const char *name, size_t *index);
+/* A copy of an array (for #declare B = A: POV-Ray copies; a macro's argument is by reference). */
+bool lang_array_copy(parser *p, diag_loc loc, value *v);
+/* Stores v in element i of a (a non-mixed array holds one kind). */
+bool lang_array_store(parser *p, diag_loc loc, lang_array *a, size_t i, const value *v);
 bool lang_float(parser *p, const char *what, double *out);
 bool lang_int(parser *p, const char *what, long lo, long hi, long *out);
 bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted */
-bool lang_color(parser *p, const char *what, vec3 *out); /* a float is promoted */
+/* A colour's red, green and blue (a float is promoted); a filter or transmit other than 0 is
+ * warned about and dropped (circe's materials have none yet). */
+bool lang_color(parser *p, const char *what, vec3 *out);
 bool lang_string(parser *p, const char *what, const char **out);
 /* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);

@@ -73,7 +73,7 @@ static bool in_range(parser *p, diag_loc loc, const char *what, double x, double
 static bool starts_colour(parser *p)
 {
 	lang_token *t = lang_peek(p);
-	if (t->kind == LTK_KW_COLOR || t->kind == LTK_KW_COLOUR || t->kind == LTK_KW_RGB)
+	if (lang_colour_word(t->kind))
 		return true;
 	if (t->kind != LTK_IDENT)
 		return false;
@@ -713,13 +713,14 @@ static bool sphere(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return object_tail(p, out, start, open, "sphere");
 }
 
-/* box = "box" "{" vector "," vector { modifier } "}" */
+/* box = "box" "{" vector [ "," ] vector { modifier } "}"   (the comma optional, as POV-Ray's
+ * Parse_Comma: `box { <a><b> }` is two corners) */
 static bool box(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	scene_geom *g;
 	TRY(g = new_geom(p, SHAPE_BOX, kw));
 	TRY(lang_vec3(p, "as the first box corner", &g->u.box.corner1));
-	TRY(lang_expect(p, LTK_COMMA, "after the first box corner"));
+	lang_accept(p, LTK_COMMA);
 	TRY(lang_vec3(p, "as the second box corner", &g->u.box.corner2));
 	dvec3 a = g->u.box.corner1, b = g->u.box.corner2;
 	if (a.x == b.x || a.y == b.y || a.z == b.z)

@@ -1,2 +1,2 @@
 sphere { 0, 1 }
-box { 0 1 }
+box { 0, "a" }

@@ -80,3 +80,6 @@ sphere { 0, 1 material { marble { sigma_s 0 + 2 sigma_a 0.01 } } }
 // rule: texture, pigment, finish, interior
 sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.5 specular 0.2 roughness 0.1 } } interior { ior 1.3 } }
 sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } interior { ior 1.2 } } }
+// rule: postfix, member, colour_item, array, array_items, index, defined
+#declare Ar = array[2] { C.red, defined(Ar[0]) }
+#declare Ar[1] = (color rgbf <1, 1, 1, 0.5> transmit 0.25).filter;

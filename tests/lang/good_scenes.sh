@@ -1,6 +1,7 @@
 #!/bin/sh
 # good_scenes: every tests/good/*.pov parses (`circe check --dump`, -I tests/good/inc) to exactly the IR
-# in its .dump golden file, and a NAME_literal.pov twin to NAME's IR but for the locations.
+# in its .dump golden file (and, where a NAME.stderr is, writes exactly that to stderr: #debug
+# output, warnings), and a NAME_literal.pov twin to NAME's IR but for the locations.
 # CIRCE_UPDATE_GOLDEN=1 rewrites the goldens (a developer's act: it writes into the source tree,
 # so never in make check).
 set -u
@@ -17,6 +18,11 @@ for pov in *.pov; do
 		cat "$tmp/err"
 		fail=$((fail + 1))
 		continue
+	fi
+	if [ -e "$name.stderr" ] && [ "${CIRCE_UPDATE_GOLDEN:-0}" != 1 ] && ! cmp -s "$tmp/err" "$name.stderr"; then
+		echo "FAIL $pov: its #debug output and warnings differ from $name.stderr (expected, then got):"
+		diff "$name.stderr" "$tmp/err" | head -40
+		fail=$((fail + 1))
 	fi
 	if [ "${CIRCE_UPDATE_GOLDEN:-0}" = 1 ]; then
 		cp "$tmp/got" "$name.dump"

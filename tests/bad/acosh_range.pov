@@ -1,0 +1,1 @@
+#declare A = acosh(0.5);

@@ -1,0 +1,1 @@
+#declare Nope[1] = 2;

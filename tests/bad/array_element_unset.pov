@@ -1,0 +1,3 @@
+#declare A = array[3];
+#declare A[0] = 1;
+#declare B = A[2];

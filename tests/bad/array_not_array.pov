@@ -1,0 +1,2 @@
+#declare F = 1;
+#declare G = F[0];

@@ -1,0 +1,2 @@
+#declare C = rgb 1;
+box { C, 1 }

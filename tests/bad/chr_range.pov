@@ -1,0 +1,1 @@
+#declare S = chr(300);

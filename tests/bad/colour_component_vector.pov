@@ -1,0 +1,1 @@
+#declare C = color red <1, 0, 0>;

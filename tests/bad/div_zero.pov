@@ -1,0 +1,1 @@
+#declare A = div(1, 0);

@@ -1,0 +1,1 @@
+#declare N = dimensions(3);

@@ -1,0 +1,1 @@
+#declare S = strupr(3);

@@ -1,0 +1,1 @@
+#declare S = strlen("abc", "d");

@@ -1,0 +1,1 @@
+#declare A = ln(0);

@@ -1,0 +1,1 @@
+#declare A = log(-1);

@@ -1,0 +1,1 @@
+#declare G = <1, 2>.gray;

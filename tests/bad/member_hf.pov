@@ -1,0 +1,2 @@
+#declare C = rgb 1;
+#declare H = C.hf;

@@ -1,0 +1,2 @@
+#declare S = "abc";
+#declare X = S.x;

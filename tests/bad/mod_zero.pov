@@ -1,0 +1,1 @@
+#declare A = mod(1, 0);

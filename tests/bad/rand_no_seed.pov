@@ -1,0 +1,1 @@
+#declare R = rand(3);

@@ -1,0 +1,1 @@
+#declare C = rgbf <1, 0, 0>;

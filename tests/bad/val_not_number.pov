@@ -1,0 +1,1 @@
+#declare V = val("abc");

@@ -1,0 +1,16 @@
+#!/bin/sh
+# pov_includes: POV-Ray 3.7's colors.inc (each colour it declares printed), strings.inc, arrays.inc,
+# consts.inc and rand.inc parse and their macros work: tests/lang/pov_includes_scene.pov's #debug output
+# is exactly pov_includes_scene.stderr (povray 3.7.0 printed the same). Skips (77) without
+# povray-includes; POV_INCLUDE names another include folder.
+set -u
+: "${CIRCE:?set CIRCE to the circe binary}" "${srcdir:?set srcdir to the source tree}"
+inc=${POV_INCLUDE:-/usr/share/povray-3.7/include}
+[ -f "$inc/colors.inc" ] || { echo "pov_includes: skipped: no colors.inc in $inc"; exit 77; }
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/circe-povinc.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' EXIT
+"$CIRCE" check -I "$inc" "$srcdir/tests/lang/pov_includes_scene.pov" >"$tmp/out" 2>"$tmp/err" ||
+	{ echo "FAIL: pov_includes_scene.pov does not parse"; cat "$tmp/err"; exit 1; }
+cmp -s "$tmp/err" "$srcdir/tests/lang/pov_includes_scene.stderr" ||
+	{ echo "FAIL: output differs (expected, then got):"; diff "$srcdir/tests/lang/pov_includes_scene.stderr" "$tmp/err" | head -40; exit 1; }
+echo "pov_includes: $(grep -c ' color rgbft ' "$tmp/err") colours of colors.inc, the macros of strings.inc and arrays.inc"
