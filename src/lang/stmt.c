@@ -1093,6 +1093,18 @@ static bool item_corner(parser *p, void *c, uint32_t i)
 	return push(p, &x->corners, &co);
 }
 
+/* level (uniform) and max_edge (adaptive) choose the tessellation: one of them, not both. other:
+ * whether the other was given (at *first); otherwise *first becomes this one's place. */
+static bool level_or_max_edge(parser *p, bool other, const lang_token *t, diag_loc *first)
+{
+	if (other)
+		return lang_error(p, t->loc, "'%.*s' after '%s' at line %u: a subdivision_surface has a uniform 'level' or "
+					     "an adaptive 'max_edge', not both",
+				  (int)t->len, t->text, t->kind == LTK_KW_LEVEL ? "max_edge" : "level", first->line);
+	*first = t->loc;
+	return true;
+}
+
 /* subdivision_surface = "subdivision_surface" "{" { subd_item } { modifier } "}"
  * subd_item = "file" string | "vertex_vectors" list | "faces" list | "uv_vectors" list
  *           | "uv_faces" list | "creases" list | "corners" list
@@ -1100,7 +1112,8 @@ static bool item_corner(parser *p, void *c, uint32_t i)
  *           | "level" integer | "max_edge" float */
 static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, diag_loc kw)
 {
-	bool seen[10] = {false};
+	bool seen[11] = {false};
+	diag_loc level_loc = kw; /* the first of level and max_edge: they are alternatives */
 	uint32_t cnt;
 	for (;;) {
 		lang_token t = *lang_peek(p);
@@ -1162,13 +1175,13 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			break;
 		}
 		case LTK_KW_LEVEL:
-			TRY(once(p, &seen[9], &t));
+			TRY(once(p, &seen[9], &t) && level_or_max_edge(p, seen[10], &t, &level_loc));
 			lang_advance(p);
 			TRY(lang_int(p, "after 'level'", 1, 8, &n));
 			d->level = (int)n;
 			break;
 		case LTK_KW_MAX_EDGE:
-			TRY(once(p, &seen[9], &t));
+			TRY(once(p, &seen[10], &t) && level_or_max_edge(p, seen[9], &t, &level_loc));
 			lang_advance(p);
 			TRY(lang_float(p, "after 'max_edge'", &x) && positive(p, t.loc, "max_edge", x));
 			d->max_edge_px = x;
