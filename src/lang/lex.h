@@ -31,7 +31,7 @@ enum {
 	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
 	KW(FOCAL_POINT, "focal_point") KW(FULLCIRCLE, "fullcircle") KW(GAUSSIAN, "gaussian")            \
 	KW(GLOBAL_SETTINGS, "global_settings") KW(GROUP, "group") KW(IMAGE, "image")                    \
-	KW(IMAGE_MAP, "image_map") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(IOR, "ior")   \
+	KW(IMAGE_MAP, "image_map") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(INVERSE, "inverse") KW(IOR, "ior")   \
 	KW(JPEG, "jpeg") KW(LEVEL, "level") KW(LIGHT_SOURCE, "light_source") KW(LOCATION, "location")   \
 	KW(LOG, "log") KW(LOOK_AT, "look_at") KW(LOOP, "loop") KW(MARBLE, "marble")                      \
 	KW(MATERIAL, "material") KW(MATRIX, "matrix") KW(MAX, "max") KW(MAX_EDGE, "max_edge")            \
@@ -47,7 +47,7 @@ enum {
 	KW(SKY_SPHERE, "sky_sphere") KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular")    \
 	KW(SPHERE, "sphere") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(STRENGTH, "strength")        \
 	KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUM_OF_GAUSSIANS, "sum_of_gaussians")        \
-	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle") KW(TRUE, "true")        \
+	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSFORM, "transform") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle") KW(TRUE, "true")        \
 	KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") KW(UV_INDICES, "uv_indices")            \
 	KW(UV_VECTORS, "uv_vectors") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERSION, "version") KW(VERTEX_VECTORS,            \
 	"vertex_vectors") KW(VLENGTH, "vlength") KW(VNORMALIZE, "vnormalize") KW(VOLUME, "volume")     \
@@ -58,7 +58,8 @@ enum {
 	X(DECLARE, "declare") X(LOCAL, "local") X(INCLUDE, "include") X(IF, "if") X(ELSE, "else") X(ELSEIF, "elseif")    \
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
 	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for") X(SWITCH, "switch")     \
-	X(CASE, "case") X(RANGE, "range") X(BREAK, "break") X(MACRO, "macro")
+	X(CASE, "case") X(RANGE, "range") X(BREAK, "break") X(MACRO, "macro") \
+	X(DEFAULT, "default")
 
 typedef enum lang_tok {
 	LTK_EOF,

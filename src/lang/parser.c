@@ -1305,6 +1305,7 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;
 	case LTK_DIR_MACRO: ok = do_macro(p, dir->loc); break;
+	case LTK_DIR_DEFAULT: ok = lang_default(p); break;
 	case LTK_DIR_DEBUG:
 	case LTK_DIR_WARNING:
 	case LTK_DIR_ERROR: ok = do_message(p, dir); break;
@@ -1444,6 +1445,12 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_MATERIAL: return "a material";
 	case VAL_OBJECT: return "an object";
 	case VAL_MACRO: return "a macro";
+	case VAL_PIGMENT: return "a pigment";
+	case VAL_FINISH: return "a finish";
+	case VAL_INTERIOR: return "an interior";
+	case VAL_CAMERA: return "a camera";
+	case VAL_LIGHT: return "a light_source";
+	case VAL_TRANSFORM: return "a transform";
 	}
 	return "a value";
 }

@@ -11,7 +11,12 @@
 
 #include <stdbool.h>
 
-typedef enum value_kind { VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO } value_kind;
+typedef enum value_kind {
+	VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO,
+	/* declared scene blocks (stmt.c): a pigment, finish or interior is a texture record of which
+	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
+	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM
+} value_kind;
 
 /* A list of placed objects made by one object item (a union gives several). */
 typedef struct objlist {
@@ -27,6 +32,10 @@ typedef struct value {
 	const scene_material *mat;
 	const objlist *obj;
 	const struct lang_macro *mac; /* VAL_MACRO */
+	/* declared scene blocks (stmt.c) */
+	const scene_camera *cam; /* VAL_CAMERA */
+	const scene_light *light; /* VAL_LIGHT */
+	const xform *xf; /* VAL_TRANSFORM */
 } value;
 
 /* A #macro: its parameters and where its body lies in its source (re-lexed at each call, as a
@@ -101,6 +110,9 @@ typedef struct parser {
 	const char *skip_stop_at; /* skip_block: where the directive that ended it begins (before blanks) */
 	bool no_expand; /* reading a directive's name: a macro's name is not a call */
 	double version; /* `version`: 3.7 until a #version sets it */
+	/* statements' state (stmt.c) */
+	const scene_material *default_tex; /* #default's texture; NULL until a #default */
+	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
 	vecbuf globals, locals; /* symbol */
 } parser;
 
@@ -141,5 +153,7 @@ bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* default = "#default" "{" { texture | pigment | finish } "}"   (after the directive's word) */
+bool lang_default(parser *p);
 
 #endif

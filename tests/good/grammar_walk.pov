@@ -80,3 +80,13 @@ sphere { 0, 1 material { marble { sigma_s 0 + 2 sigma_a 0.01 } } }
 // rule: texture, pigment, finish, interior
 sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.5 specular 0.2 roughness 0.1 } } interior { ior 1.3 } }
 sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } interior { ior 1.2 } } }
+// rule: transform_item, transform, pigment_type, default
+#declare Turn = transform { rotate y * 90 translate x inverse }
+#declare Paint = pigment { rgb <1, 0, 0> }
+#declare Gloss = finish { specular 0.5 }
+#declare Glass = interior { ior 1.5 }
+#declare Eye = camera { location -z }
+#declare Lamp = light_source { y, 1 }
+light_source { Lamp translate x }
+#default { texture { pigment { Paint } } finish { Gloss } }
+sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }
