@@ -25,7 +25,7 @@ enum {
 	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
 	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
 	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
-	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
+	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
 	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
 	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
 	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
@@ -38,7 +38,7 @@ enum {
 	KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") KW(MESH2, "mesh2") KW(METHOD, "method")  \
 	KW(MIN, "min") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO, "no") KW(NO_SHADOW, "no_shadow")          \
 	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")                              \
-	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(OFF, "off") KW(ON, "on") KW(PARALLEL, "parallel")              \
+	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(OFF, "off") KW(ON, "on") KW(ONCE, "once") KW(PARALLEL, "parallel")              \
 	KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment") KW(PLANE, "plane")            \
 	KW(PNG, "png") KW(POINT_AT, "point_at") KW(POW, "pow") KW(PRESET, "preset") KW(PROFILE, "profile") \
 	KW(RADIANS, "radians") KW(RADIUS, "radius") KW(RGB, "rgb") KW(RIGHT, "right")                    \

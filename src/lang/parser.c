@@ -426,6 +426,8 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 		target(p, param)->val = *v;
 		return true;
 	}
+	deprecation dep = p->pending_dep;
+	p->pending_dep = (deprecation){0};
 	int depth = local ? p->n_files - 1 : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
 	for (size_t i = tab->len; i-- > 0;) {
@@ -434,10 +436,12 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			break;
 		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
 			s->val = *v;
+			if (dep.on) /* as POV-Ray 3.7: a name stays deprecated when declared again */
+				s->dep = dep;
 			return true;
 		}
 	}
-	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0};
+	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0, dep};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
 	return true;
@@ -451,7 +455,36 @@ static void pop_scope(parser *p, int depth)
 
 /* ---- directives -------------------------------------------------------------------------- */
 
-/* declare = ("#declare" | "#local") identifier "=" ( block_value [";"] | expression ";" ) */
+/* deprecation = "deprecated" [ "once" ] [ string ]   (the lookahead is 'deprecated'; names are
+ * not expanded) */
+static bool deprecation_of(parser *p, deprecation *d)
+{
+	lang_advance(p);
+	*d = (deprecation){.on = true, .once = lang_accept(p, LTK_KW_ONCE)};
+	if (lang_peek(p)->kind == LTK_STRING) {
+		value v;
+		lang_token s = *lang_advance(p);
+		if (!decode_string(p, &s, &v))
+			return false;
+		d->msg = v.str;
+	}
+	return true;
+}
+
+/* A use of a name declared deprecated: POV-Ray 3.7's warning, at each use or the first (once). */
+static void warn_deprecated(parser *p, const lang_token *t, const symbol *s)
+{
+	deprecation *d = (deprecation *)&s->dep; /* the symbol tables are the parser's own */
+	if (d->once && d->warned)
+		return;
+	d->warned = true;
+	if (d->msg)
+		diag_warning(p->d, t->loc, "%s", d->msg);
+	else
+		diag_warning(p->d, t->loc, "identifier '%.*s' was declared deprecated", (int)t->len, t->text);
+}
+
+/* declare = ("#declare" | "#local") deprecation? identifier "=" ( block_value [";"] | expression ";" ) */
 static bool do_declare(parser *p, const lang_token *dir)
 {
 	bool local = dir->kind == LTK_DIR_LOCAL;
@@ -459,6 +492,14 @@ static bool do_declare(parser *p, const lang_token *dir)
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	p->no_expand = true;
 	lang_token *t = lang_peek(p);
+	deprecation dep = {0};
+	if (t->kind == LTK_KW_DEPRECATED) {
+		if (!deprecation_of(p, &dep)) {
+			p->no_expand = false;
+			return false;
+		}
+		t = lang_peek(p);
+	}
 	p->no_expand = false;
 	if (t->kind != LTK_IDENT) {
 		p->directive_expr = false;
@@ -467,6 +508,9 @@ static bool do_declare(parser *p, const lang_token *dir)
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
 	lang_token name = *lang_advance(p);
+	const symbol *old = lang_lookup(p, name.text, name.len);
+	if (old && old->dep.on)
+		warn_deprecated(p, &name, old);
 	if (!lang_expect(p, LTK_EQ, "after the name in #declare")) {
 		p->directive_expr = false;
 		return false;
@@ -477,6 +521,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 	if (!lang_declare_block(p, &v, &handled))
 		return false;
 	if (handled) {
+		p->pending_dep = dep;
 		if (!define(p, &name, local, &v))
 			return false;
 		lang_skip_optional_semi(p);
@@ -491,6 +536,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 			lang_advance(p);
 	}
 	p->directive_expr = false;
+	p->pending_dep = dep;
 	return ok && define(p, &name, local, &v);
 }
 
@@ -750,6 +796,8 @@ static bool do_undef(parser *p)
 		diag_warning(p->d, name.loc, "'#undef' of '%.*s', which is not declared", (int)name.len, name.text);
 		return true;
 	}
+	if (s->dep.on)
+		warn_deprecated(p, &name, s);
 	forget(p, name.text, name.len);
 	return true;
 }
@@ -1271,7 +1319,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 	for (int i = 0; i < m->n_params; i++) {
 		if (!set[i])
 			continue;
-		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i]};
+		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i], {0}};
 		if (!vecbuf_push(&p->locals, &s))
 			return no_memory(p, name->loc);
 	}
@@ -1334,6 +1382,8 @@ static bool fetch(parser *p, lang_token *t)
 		release_behind(f);
 		if (t->kind == LTK_IDENT && !p->no_expand) {
 			const symbol *s = lang_lookup(p, t->text, t->len);
+			if (s && s->dep.on)
+				warn_deprecated(p, t, s);
 			if (s && s->val.kind == VAL_MACRO) {
 				lang_token name = *t;
 				if (!invoke(p, &name, s->val.mac)) {

@@ -77,6 +77,13 @@ typedef struct cond {
 	double value; /* COND_SWITCH (running a case that matched, or its #else): the switch's value */
 } cond;
 
+/* `#declare deprecated [once] ["message"] Name = ...`: a warning at each use of Name (the first
+ * only, with once), the message or POV-Ray's own. */
+typedef struct deprecation {
+	bool on, once, warned;
+	const char *msg; /* NULL: "identifier 'Name' was declared deprecated" */
+} deprecation;
+
 typedef struct symbol {
 	const char *name;
 	int depth; /* 0 global; k the k-th include level for #local */
@@ -84,6 +91,7 @@ typedef struct symbol {
 	value val;
 	bool param; /* a parameter of a macro call */
 	long ref; /* a parameter passed by reference: 0 none; k > 0 globals[k-1]; k < 0 locals[-k-1] */
+	deprecation dep;
 } symbol;
 
 typedef struct parser {
@@ -113,6 +121,7 @@ typedef struct parser {
 	/* statements' state (stmt.c) */
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
+	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
 	vecbuf globals, locals; /* symbol */
 } parser;
 

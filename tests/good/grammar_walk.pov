@@ -10,6 +10,8 @@
 #declare V = <vlength(<3, 4, 0>), sin(0), clock>;
 #declare S = "tex.png";
 #declare C = color rgb <1, 0.5, 0.25>;
+// rule: deprecation
+#declare deprecated once "use Ball" OldBall = 1;
 // rule: block_value
 #declare Ball = sphere { 0, 1 }
 // rule: if, token

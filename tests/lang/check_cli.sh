@@ -60,6 +60,10 @@ grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; 
 expect 0 "#debug and #warning" -- sh -c 'cd "$1" && "$2" check messages.pov' sh "$good" "$CIRCE"
 cmp -s "$tmp/err" "$good/messages.stderr" ||
 	{ echo "FAIL #debug/#warning output differs (expected, then got):"; cat "$good/messages.stderr" "$tmp/err"; fail=1; }
+# Uses of names declared deprecated warn exactly so (POV-Ray 3.7's rules); check still succeeds.
+expect 0 "#declare deprecated" -- sh -c 'cd "$1" && "$2" check deprecated.pov' sh "$good" "$CIRCE"
+cmp -s "$tmp/err" "$good/deprecated.stderr" ||
+	{ echo "FAIL deprecation warnings differ (expected, then got):"; cat "$good/deprecated.stderr" "$tmp/err"; fail=1; }
 # global_settings items circe does on its own: one warning each, exactly so, and the IR is that
 # of the scene without them (the lines between its "ignored" markers).
 expect 0 "ignored global_settings" -- sh -c 'cd "$1" && "$2" check --dump ignored_settings.pov' sh "$good" "$CIRCE"
