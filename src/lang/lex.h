@@ -25,7 +25,7 @@ enum {
 	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
 	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
 	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
-	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
+	KW(CREASES, "creases") KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
 	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
 	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
 	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
@@ -59,7 +59,7 @@ enum {
 	X(END, "end") X(WHILE, "while") X(VERSION, "version") X(IFDEF, "ifdef") X(IFNDEF, "ifndef") \
 	X(UNDEF, "undef") X(DEBUG, "debug") X(WARNING, "warning") X(ERROR, "error") X(FOR, "for") X(SWITCH, "switch")     \
 	X(CASE, "case") X(RANGE, "range") X(BREAK, "break") X(MACRO, "macro") \
-	X(DEFAULT, "default")
+	X(DEFAULT, "default") X(FOPEN, "fopen") X(FCLOSE, "fclose") X(READ, "read") X(WRITE, "write")
 
 typedef enum lang_tok {
 	LTK_EOF,

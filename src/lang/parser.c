@@ -447,6 +447,8 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	return true;
 }
 
+bool lang_define(parser *p, const lang_token *name, bool local, const value *v) { return define(p, name, local, v); }
+
 static void pop_scope(parser *p, int depth)
 {
 	while (p->locals.len && VECBUF_AT(&p->locals, symbol, p->locals.len - 1).depth >= depth)
@@ -764,6 +766,8 @@ static void forget(parser *p, const char *name, size_t len)
 			}
 	}
 }
+
+void lang_forget(parser *p, const char *name, size_t len) { forget(p, name, len); }
 
 /* ifdef = ( "#ifdef" | "#ifndef" ) "(" identifier ")" { token } [ "#else" { token } ] "#end"
  * As POV-Ray 3.7's Parse_Ifdef_Param: true when the name is declared (a keyword never is). */
@@ -1354,6 +1358,10 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;
 	case LTK_DIR_MACRO: ok = do_macro(p, dir->loc); break;
 	case LTK_DIR_DEFAULT: ok = lang_default(p); break;
+	case LTK_DIR_FOPEN: ok = lang_fopen(p, dir->loc); break;
+	case LTK_DIR_FCLOSE: ok = lang_fclose(p); break;
+	case LTK_DIR_READ: ok = lang_read_directive(p, dir->loc); break;
+	case LTK_DIR_WRITE: ok = lang_write_directive(p); break;
 	case LTK_DIR_DEBUG:
 	case LTK_DIR_WARNING:
 	case LTK_DIR_ERROR: ok = do_message(p, dir); break;
@@ -1501,6 +1509,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_CAMERA: return "a camera";
 	case VAL_LIGHT: return "a light_source";
 	case VAL_TRANSFORM: return "a transform";
+	case VAL_FILE: return "a data file";
 	}
 	return "a value";
 }
@@ -1799,6 +1808,7 @@ static bool primary(parser *p, value *out)
 		set_float(out, p->opt.animated);
 		lang_advance(p);
 		return true;
+	case LTK_KW_DEFINED: return lang_defined(p, out);
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
 		if (!s)
@@ -2080,6 +2090,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		p->opt.read = lang_read_file;
 	vecbuf_init(&p->globals, sizeof(symbol));
 	vecbuf_init(&p->locals, sizeof(symbol));
+	lang_datafiles_init(p);
 	p->eof.kind = LTK_EOF;
 	p->version = POV_VERSION;
 	lang_status st = LANG_OK;
@@ -2105,6 +2116,9 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		else if (scene_validate(sc, d) > 0)
 			st = LANG_SCENE_ERROR;
 	}
+	lang_datafiles_close(p);
+	if (p->failed || d->errors) /* a data file's failure to close */
+		st = st == LANG_OK ? LANG_SCENE_ERROR : st;
 	vecbuf_free(&p->globals);
 	vecbuf_free(&p->locals);
 	mem_free(p);

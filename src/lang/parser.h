@@ -15,7 +15,8 @@ typedef enum value_kind {
 	VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO,
 	/* declared scene blocks (stmt.c): a pigment, finish or interior is a texture record of which
 	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
-	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM
+	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
+	VAL_FILE /* a data file of #fopen (datafile.c) */
 } value_kind;
 
 /* A list of placed objects made by one object item (a union gives several). */
@@ -36,6 +37,7 @@ typedef struct value {
 	const scene_camera *cam; /* VAL_CAMERA */
 	const scene_light *light; /* VAL_LIGHT */
 	const xform *xf; /* VAL_TRANSFORM */
+	int file; /* VAL_FILE: its index in the parser's datafiles */
 } value;
 
 /* A #macro: its parameters and where its body lies in its source (re-lexed at each call, as a
@@ -122,6 +124,7 @@ typedef struct parser {
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
+	vecbuf datafiles; /* lang_datafile (datafile.c): every data file opened, open or not */
 	vecbuf globals, locals; /* symbol */
 } parser;
 
@@ -155,6 +158,20 @@ bool lang_string(parser *p, const char *what, const char **out);
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);
 const symbol *lang_lookup(parser *p, const char *name, size_t len);
 const char *lang_value_kind_name(const value *v);
+
+/* Declares name (#declare, or #local with local) as v; false after reporting. */
+bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
+/* Forgets the innermost declaration of the name (#undef). */
+void lang_forget(parser *p, const char *name, size_t len);
+
+/* ---- data files (datafile.c) ---- */
+bool lang_fopen(parser *p, diag_loc at); /* after '#fopen' */
+bool lang_fclose(parser *p);
+bool lang_read_directive(parser *p, diag_loc at);
+bool lang_write_directive(parser *p);
+bool lang_defined(parser *p, value *out); /* the lookahead is 'defined' */
+void lang_datafiles_init(parser *p);
+void lang_datafiles_close(parser *p); /* the end of the parse: streams closed, the list freed */
 
 /* ---- statements (stmt.c) ---- */
 /* statement = global_settings | camera | light_source | background | sky_sphere | object_item */

@@ -37,6 +37,11 @@
 #macro Grow(R, optional S) #declare R = R + 1; #end
 #declare Size = 1;
 Grow(Size) Grow(Size, 2)
+// rule: fopen, read, fclose, data_file, data_value, write
+#fopen Data "data/points.txt" read
+#read (Data, Count, Radius)
+#fclose Data
+#if (defined(Data)) #fopen Out "never.txt" write #write (Out, Count, "\n") #end
 // rule: include
 #include "walk.inc"
 // rule: global_settings, integer, ignored_setting, balanced
