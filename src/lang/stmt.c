@@ -355,6 +355,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
 		copy_pigment(m, v->mat);
 	}
+	if (lang_peek(p)->kind == LTK_KW_MARBLE) /* a circe keyword (the SSS block), a POV-Ray pattern */
+		return lang_error(p, lang_peek(p)->loc, "'marble' (a pattern) is not supported by circe");
 	if (lang_accept(p, LTK_KW_IMAGE_MAP)) {
 		TRY(open_block(p, "image_map", &io));
 		lang_tok k = lang_peek(p)->kind;
@@ -363,7 +365,7 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		lang_advance(p);
 		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
 		TRY(lang_expect_close(p, io, "image_map"));
-	} else if (!named || (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p))) {
+	} else if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(physical_color(p, "as the pigment colour", what, use, &m->color));
 		m->image = NULL;
@@ -412,6 +414,9 @@ static bool finish(parser *p, scene_material *m)
 			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, loc, "finish roughness", x, 0, 1));
 			m->roughness = (float)x;
 			break;
+		case LTK_KW_EMISSION:
+			return lang_error(p, loc, "'emission' in a finish is not supported by circe (a glowing object is "
+						  "material { emission C })");
 		default:
 			return bad_item(p, open, "finish", "diffuse, specular or roughness");
 		}
@@ -2070,6 +2075,9 @@ bool lang_statement(parser *p)
 	case LTK_KW_LIGHT_SOURCE: return light_source(p);
 	case LTK_KW_BACKGROUND: return background(p);
 	case LTK_KW_SKY_SPHERE: return sky_sphere(p);
+	case LTK_KW_DEFAULT: /* POV-Ray 3.7 still reads the old `default {...}` as #default */
+		lang_advance(p);
+		return lang_default(p);
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
 		const char *kw = !s ? NULL : s->val.kind == VAL_OBJECT ? "object" : s->val.kind == VAL_LIGHT ? "light_source"

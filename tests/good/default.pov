@@ -18,3 +18,5 @@ union {
 }
 #default { texture { T } }
 sphere { 6, 1 }                                    // T itself
+default { pigment { rgb <0, 0, 1> } }              // the old form without '#', a statement
+sphere { 7, 1 pigment { } }                        // an empty pigment: the default's, blue
