@@ -486,6 +486,31 @@ static void warn_deprecated(parser *p, const lang_token *t, const symbol *s)
 		diag_warning(p->d, t->loc, "identifier '%.*s' was declared deprecated", (int)t->len, t->text);
 }
 
+/* As POV-Ray 3.7: only a float, vector or colour value needs its ';', and only from language
+ * version 3.5 on (`#declare Font = "cyrvetic.ttf"` has none in POV-Ray's samples). */
+static bool semi_optional(parser *p, const value *v)
+{
+	bool numeric = v->kind == VAL_FLOAT || v->kind == VAL_VECTOR || v->kind == VAL_COLOR;
+	if (numeric && p->version < 3.5) /* povray 3.7.0 warns too ("Possible Parse Error") */
+		diag_warning(p->d, lang_peek(p)->loc, "a float, vector or colour #declare without ';' (accepted below "
+						      "#version 3.5)");
+	return !numeric || p->version < 3.5;
+}
+
+/* The lookahead read past a #declare's value without ';' is given back to the token stream
+ * (fetch), after the name is defined: a directive there then runs, in order. An end of file is
+ * dropped instead: the lexer meets it again and closes its file properly. */
+static void hold_lookahead(parser *p)
+{
+	if (!p->have_tok)
+		return;
+	p->have_tok = false;
+	if (p->tok.kind == LTK_EOF)
+		return;
+	p->held = p->tok;
+	p->has_held = true;
+}
+
 /* declare = ("#declare" | "#local") deprecation? identifier "=" ( block_value [";"] | expression ";" ) */
 static bool do_declare(parser *p, const lang_token *dir)
 {
@@ -530,16 +555,22 @@ static bool do_declare(parser *p, const lang_token *dir)
 		return true;
 	}
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
-	bool ok = lang_expr(p, &v);
+	bool ok = lang_expr(p, &v), semi = false;
 	if (ok) {
-		if (lang_peek(p)->kind != LTK_SEMI)
-			ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)name.len, name.text);
-		else
+		semi = lang_peek(p)->kind == LTK_SEMI;
+		if (semi)
 			lang_advance(p);
+		else if (!semi_optional(p, &v))
+			ok = lang_error_found(p, "expected ';' after the value of '%.*s' (a float, vector or colour "
+						 "needs it from #version 3.5 on)",
+					      (int)name.len, name.text);
 	}
 	p->directive_expr = false;
 	p->pending_dep = dep;
-	return ok && define(p, &name, local, &v);
+	ok = ok && define(p, &name, local, &v);
+	if (ok && !semi)
+		hold_lookahead(p);
+	return ok;
 }
 
 /* "(" float ")" of a directive; what: "after '#if'". */
@@ -1379,6 +1410,24 @@ static bool fetch(parser *p, lang_token *t)
 		if (p->failed || p->n_files == 0) {
 			*t = p->eof;
 			return !p->failed;
+		}
+		if (p->has_held) { /* the token after a #declare without ';' (hold_lookahead) */
+			p->has_held = false;
+			*t = p->held;
+			if (t->kind == LTK_UNSUPPORTED_DIRECTIVE) {
+				report_unsupported(p, t);
+				*t = p->eof;
+				return false;
+			}
+			if (t->kind < LANG_FIRST_DIRECTIVE)
+				return true;
+			lang_token dir = *t;
+			if (!run_directive(p, &dir)) {
+				p->failed = true;
+				*t = p->eof;
+				return false;
+			}
+			continue;
 		}
 		include_frame *f = &p->files[p->n_files - 1];
 		if (!lang_lex(&f->lx, p->d, t)) {

@@ -125,6 +125,8 @@ typedef struct parser {
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
 	vecbuf datafiles; /* lang_datafile (datafile.c): every data file opened, open or not */
+	lang_token held; /* with has_held: the token after a #declare without ';', read again next */
+	bool has_held;
 	vecbuf globals, locals; /* symbol */
 } parser;
 

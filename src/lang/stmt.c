@@ -208,9 +208,8 @@ static xform xform_inverse(xform t)
 
 /* transform = "transform" ( identifier | "{" [ identifier ] { transform_item | "inverse" } "}" )
  * As POV-Ray 3.7: `inverse` anywhere in the block inverts the whole block. */
-static bool transform_block(parser *p, xform *out)
+static bool transform_body(parser *p, xform *out)
 {
-	lang_advance(p);
 	const value *v;
 	if (lang_peek(p)->kind == LTK_IDENT) {
 		TRY(v = declared(p, VAL_TRANSFORM, "a transform"));
@@ -239,6 +238,16 @@ static bool transform_block(parser *p, xform *out)
 	}
 	*out = inverse ? xform_inverse(t) : t;
 	return true;
+}
+
+/* A transform block nests in itself (transform { transform {...} }): each counts a level. */
+static bool transform_block(parser *p, xform *out)
+{
+	diag_loc kw = lang_advance(p)->loc;
+	TRY(lang_enter(p, kw));
+	bool ok = transform_body(p, out);
+	lang_leave(p);
+	return ok;
 }
 
 /* A texture's own transforms (of a pigment, texture or material): they move its pattern, and a
