@@ -25,7 +25,7 @@ enum {
 	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
 	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
 	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
-	KW(CREASES, "creases") KW(DEFAULT, "default") KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
+	KW(CREASES, "creases") KW(DEFAULT, "default") KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole") KW(DIRECTION, "direction")        \
 	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
 	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
 	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \

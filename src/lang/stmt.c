@@ -1742,12 +1742,34 @@ static bool global_settings(parser *p)
 }
 
 /* camera = "camera" "{" [ identifier ] { "perspective" | "location" vector | "look_at" vector
- *          | "sky" vector | "angle" float | "right" vector | "up" vector | "aperture" float
- *          | "focal_point" vector } "}"
+ *          | "direction" vector | "sky" vector | "angle" float | "right" vector | "up" vector
+ *          | "aperture" float | "focal_point" vector } "}"
  * Into *c, the keyword consumed (at kw). */
+/* POV-Ray's camera `direction`: without look_at it is where the camera looks (look_at = location
+ * + direction); without angle its length sets the field of view against right's, horizontal
+ * angle = 2 atan(|right| / (2 |direction|)) (POV-Ray 3.7 documentation, "Camera": angle sets the
+ * direction's length from right's). Applied at the block's end, as POV-Ray applies angle. */
+static bool camera_direction(parser *p, scene_camera *c, dvec3 dir, diag_loc at, bool look_at, bool angle)
+{
+	double d = d3_length(dir), r = d3_length(c->right);
+	if (!(d > 0))
+		return lang_error(p, at, "camera direction is the zero vector");
+	if (!look_at)
+		c->look_at = d3_add(c->location, dir);
+	if (!angle) {
+		double deg = 2 * atan(r / (2 * d)) * 180 / M_PI;
+		if (!(deg > 0 && deg < 180))
+			return lang_error(p, at, "camera direction and right give an angle of %g degrees, outside (0, 180)", deg);
+		c->angle_deg = deg;
+	}
+	return true;
+}
+
 static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 {
-	diag_loc open;
+	diag_loc open, dir_loc = kw;
+	bool has_dir = false, has_look_at = false, has_angle = false;
+	dvec3 dir = d3(0, 0, 1);
 	TRY(open_block(p, "camera", &open));
 	*c = (scene_camera){.loc = kw,
 			    .location = d3(0, 0, 0),
@@ -1769,12 +1791,19 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			return true;
+			return !has_dir || camera_direction(p, c, dir, dir_loc, has_look_at, has_angle);
 		case LTK_KW_PERSPECTIVE:
 			lang_advance(p);
 			continue;
 		case LTK_KW_LOCATION: v = &c->location; break;
-		case LTK_KW_LOOK_AT: v = &c->look_at; break;
+		case LTK_KW_LOOK_AT:
+			v = &c->look_at;
+			has_look_at = true;
+			break;
+		case LTK_KW_DIRECTION:
+			v = &dir;
+			has_dir = true, dir_loc = t.loc;
+			break;
 		case LTK_KW_SKY: v = &c->sky; break;
 		case LTK_KW_RIGHT: v = &c->right; break;
 		case LTK_KW_UP: v = &c->up; break;
@@ -1788,6 +1817,7 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 			if (!(x > 0 && x < 180))
 				return lang_error(p, t.loc, "camera angle must be in (0, 180) degrees, found %g", x);
 			c->angle_deg = x;
+			has_angle = true;
 			continue;
 		case LTK_KW_APERTURE:
 			lang_advance(p);
