@@ -350,7 +350,7 @@ static bool starts_transform(parser *p)
 	       k == LTK_KW_TRANSFORM;
 }
 
-/* pigment = "pigment" "{" ( identifier [ pigment_type ] | pigment_type ) { transform_item } "}"
+/* pigment = "pigment" "{" [ identifier ] [ pigment_type ] { transform_item } "}"   (empty: unchanged)
  * pigment_type = colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}"
  * use: what the colour becomes (an albedo; a sky's radiance). */
 static bool pigment(parser *p, scene_material *m, scene_color_use use)
@@ -1741,10 +1741,6 @@ static bool global_settings(parser *p)
 	}
 }
 
-/* camera = "camera" "{" [ identifier ] { "perspective" | "location" vector | "look_at" vector
- *          | "direction" vector | "sky" vector | "angle" float | "right" vector | "up" vector
- *          | "aperture" float | "focal_point" vector } "}"
- * Into *c, the keyword consumed (at kw). */
 /* POV-Ray's camera `direction`: without look_at it is where the camera looks (look_at = location
  * + direction); without angle its length sets the field of view against right's, horizontal
  * angle = 2 atan(|right| / (2 |direction|)) (POV-Ray 3.7 documentation, "Camera": angle sets the
@@ -1765,6 +1761,12 @@ static bool camera_direction(parser *p, scene_camera *c, dvec3 dir, diag_loc at,
 	return true;
 }
 
+/* camera = "camera" "{" [ identifier ] { "perspective" | "location" vector | "look_at" vector
+ *          | "direction" vector | "sky" vector | "angle" float | "right" vector | "up" vector
+ *          | "aperture" float | "focal_point" vector | transform_item } "}"
+ * A transform moves what was set before it (location, look_at, focal point; sky, right, up and
+ * direction as directions).
+ * Into *c, the keyword consumed (at kw). */
 static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 {
 	diag_loc open, dir_loc = kw;
@@ -1788,6 +1790,19 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		lang_token t = *lang_peek(p);
 		double x;
 		dvec3 *v = NULL;
+		xform moved = xform_identity();
+		bool matched;
+		TRY(transform_item(p, &moved, &matched));
+		if (matched) { /* moves the camera as set so far, as POV-Ray's camera transforms do */
+			c->location = xform_point(&moved, c->location);
+			c->look_at = xform_point(&moved, c->look_at);
+			c->focal_point = xform_point(&moved, c->focal_point);
+			c->sky = xform_vector(&moved, c->sky);
+			c->right = xform_vector(&moved, c->right);
+			c->up = xform_vector(&moved, c->up);
+			dir = xform_vector(&moved, dir);
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
@@ -1827,7 +1842,7 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 			c->aperture = x;
 			continue;
 		default:
-			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ...)");
+			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ..., a transform)");
 		}
 		lang_advance(p);
 		char ctx[48];
