@@ -38,6 +38,13 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_OBJECT: return "an object";
 	case VAL_MACRO: return "a macro";
 	case VAL_ARRAY: return "an array";
+	case VAL_PIGMENT: return "a pigment";
+	case VAL_FINISH: return "a finish";
+	case VAL_INTERIOR: return "an interior";
+	case VAL_CAMERA: return "a camera";
+	case VAL_LIGHT: return "a light_source";
+	case VAL_TRANSFORM: return "a transform";
+	case VAL_FILE: return "a data file";
 	}
 	return "a value";
 }

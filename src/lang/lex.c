@@ -95,7 +95,7 @@ static const char *const pov_words[] = {
 	"vertex_vectors", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "warning", "warp",
 	"water_level", "waves", "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z"};
 static const char *const unsupported_directives[] = {
-	"append", "default", "fclose", "fopen", "read", "render", "statistics", "write"};
+	"append", "render", "statistics"};
 
 /* strcmp of the NUL-terminated w against the n bytes at s. */
 static int cmp_word(const char *w, const char *s, size_t n)

@@ -427,6 +427,8 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 		target(p, param)->val = *v;
 		return true;
 	}
+	deprecation dep = p->pending_dep;
+	p->pending_dep = (deprecation){0};
 	int depth = local ? p->n_files - 1 : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
 	for (size_t i = tab->len; i-- > 0;) {
@@ -435,14 +437,18 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			break;
 		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
 			s->val = *v;
+			if (dep.on) /* as POV-Ray 3.7: a name stays deprecated when declared again */
+				s->dep = dep;
 			return true;
 		}
 	}
-	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0};
+	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0, dep};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
 	return true;
 }
+
+bool lang_define(parser *p, const lang_token *name, bool local, const value *v) { return define(p, name, local, v); }
 
 static void pop_scope(parser *p, int depth)
 {
@@ -452,20 +458,58 @@ static void pop_scope(parser *p, int depth)
 
 /* ---- directives -------------------------------------------------------------------------- */
 
-/* A #declare of a string, an array, ... may end without ';' (POV-Ray 3.7 forces it for floats,
- * vectors and colours only: Parse_Semi_Colon). The lookahead read after it (a directive is not run there) is given
- * back, to be read again in its turn; false when it came from another file or macro frame. */
-static bool unread_lookahead(parser *p)
+/* deprecation = "deprecated" [ "once" ] [ string ]   (the lookahead is 'deprecated'; names are
+ * not expanded) */
+static bool deprecation_of(parser *p, deprecation *d)
 {
-	lang_token *t = lang_peek(p);
-	(void)t;
-	if (p->failed)
-		return false;
-	if (p->peek_files != p->n_files || p->n_files == 0)
-		return false;
-	p->files[p->n_files - 1].lx = p->peek_from;
-	p->have_tok = false;
+	lang_advance(p);
+	*d = (deprecation){.on = true, .once = lang_accept(p, LTK_KW_ONCE)};
+	if (lang_peek(p)->kind == LTK_STRING) {
+		value v;
+		lang_token s = *lang_advance(p);
+		if (!lang_decode_string(p, &s, &v))
+			return false;
+		d->msg = v.str;
+	}
 	return true;
+}
+
+/* A use of a name declared deprecated: POV-Ray 3.7's warning, at each use or the first (once). */
+static void warn_deprecated(parser *p, const lang_token *t, const symbol *s)
+{
+	deprecation *d = (deprecation *)&s->dep; /* the symbol tables are the parser's own */
+	if (d->once && d->warned)
+		return;
+	d->warned = true;
+	if (d->msg)
+		diag_warning(p->d, t->loc, "%s", d->msg);
+	else
+		diag_warning(p->d, t->loc, "identifier '%.*s' was declared deprecated", (int)t->len, t->text);
+}
+
+/* As POV-Ray 3.7: only a float, vector or colour value needs its ';', and only from language
+ * version 3.5 on (`#declare Font = "cyrvetic.ttf"` has none in POV-Ray's samples). */
+static bool semi_optional(parser *p, const value *v)
+{
+	bool numeric = v->kind == VAL_FLOAT || v->kind == VAL_VECTOR || v->kind == VAL_COLOR;
+	if (numeric && p->version < 3.5) /* povray 3.7.0 warns too ("Possible Parse Error") */
+		diag_warning(p->d, lang_peek(p)->loc, "a float, vector or colour #declare without ';' (accepted below "
+						      "#version 3.5)");
+	return !numeric || p->version < 3.5;
+}
+
+/* The lookahead read past a #declare's value without ';' is given back to the token stream
+ * (fetch), after the name is defined: a directive there then runs, in order. An end of file is
+ * dropped instead: the lexer meets it again and closes its file properly. */
+static void hold_lookahead(parser *p)
+{
+	if (!p->have_tok)
+		return;
+	p->have_tok = false;
+	if (p->tok.kind == LTK_EOF)
+		return;
+	p->held = p->tok;
+	p->has_held = true;
 }
 
 /* True when the lookahead starts a value POV-Ray reads without operators: a string, a string
@@ -524,20 +568,23 @@ typedef struct decl_target {
 	diag_loc at; /* the value, for an element's kind error */
 } decl_target;
 
-/* Stores a #declare's value: in the array element when arr is set, else in the name. An array
- * taken from another (not fresh) is copied, as POV-Ray does. */
-static bool assign(parser *p, const decl_target *tg, value *v, bool fresh)
+/* Stores a #declare's value: in the array element when arr is set, else in the name, which
+ * takes the #declare's deprecation. An array taken from another (not fresh) is copied, as
+ * POV-Ray does. */
+static bool assign(parser *p, const decl_target *tg, value *v, bool fresh, deprecation dep)
 {
 	if (v->kind == VAL_ARRAY && !fresh && !lang_array_copy(p, tg->name.loc, v))
 		return false;
 	if (tg->arr)
 		return lang_array_store(p, tg->at, tg->arr, tg->index, v);
+	p->pending_dep = dep;
 	return define(p, &tg->name, tg->local, v);
 }
 
 /* The value after '=': a block or array (';' optional), a lone string or array (';' optional, no
- * lookahead past it), or an expression and its ';'. */
-static bool declare_value(parser *p, const decl_target *tg)
+ * lookahead past it), or an expression and its ';' (optional but for numbers: semi_optional;
+ * the lookahead read in its place is held for after the name is defined). */
+static bool declare_value(parser *p, const decl_target *tg, deprecation dep)
 {
 	value v;
 	bool handled = false;
@@ -549,7 +596,7 @@ static bool declare_value(parser *p, const decl_target *tg)
 		return false;
 	}
 	if (handled) {
-		if (!assign(p, tg, &v, true))
+		if (!assign(p, tg, &v, true, dep))
 			return false;
 		lang_skip_optional_semi(p);
 		return true;
@@ -560,14 +607,21 @@ static bool declare_value(parser *p, const decl_target *tg)
 		p->directive_expr = false;
 		if (ok && lang_raw_next(p) == LTK_SEMI)
 			lang_advance(p);
-		return ok && assign(p, tg, &v, false);
+		return ok && assign(p, tg, &v, false, dep);
 	}
-	bool ok = lang_expr(p, &v);
-	bool numeric = v.kind == VAL_FLOAT || v.kind == VAL_VECTOR || v.kind == VAL_COLOR;
-	if (ok && !lang_accept(p, LTK_SEMI) && (numeric || !unread_lookahead(p)))
-		ok = lang_error_found(p, "expected ';' after the value of '%.*s'", (int)tg->name.len, tg->name.text);
+	bool ok = lang_expr(p, &v), semi = false;
+	if (ok) {
+		semi = lang_accept(p, LTK_SEMI);
+		if (!semi && !semi_optional(p, &v))
+			ok = lang_error_found(p, "expected ';' after the value of '%.*s' (a float, vector or colour "
+						 "needs it from #version 3.5 on)",
+					      (int)tg->name.len, tg->name.text);
+	}
 	p->directive_expr = false;
-	return ok && assign(p, tg, &v, false);
+	ok = ok && assign(p, tg, &v, false, dep);
+	if (ok && !semi)
+		hold_lookahead(p);
+	return ok;
 }
 
 /* declare = ("#declare" | "#local") identifier [ index ] "=" ( block_value [";"] | array [";"]
@@ -579,6 +633,14 @@ static bool do_declare(parser *p, const lang_token *dir)
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	p->no_expand = true;
 	lang_token *t = lang_peek(p);
+	deprecation dep = {0};
+	if (t->kind == LTK_KW_DEPRECATED) {
+		if (!deprecation_of(p, &dep)) {
+			p->no_expand = false;
+			return false;
+		}
+		t = lang_peek(p);
+	}
 	p->no_expand = false;
 	if (t->kind != LTK_IDENT) {
 		p->directive_expr = false;
@@ -591,13 +653,16 @@ static bool do_declare(parser *p, const lang_token *dir)
 		p->directive_expr = false;
 		return false;
 	}
+	const symbol *old = lang_lookup(p, tg.name.text, tg.name.len);
+	if (old && old->dep.on)
+		warn_deprecated(p, &tg.name, old);
 	if (!lang_expect(p, LTK_EQ, "after the name in #declare")) {
 		p->directive_expr = false;
 		return false;
 	}
 	p->directive_expr = false;
 	tg.at = lang_peek(p)->loc;
-	return declare_value(p, &tg);
+	return declare_value(p, &tg, dep);
 }
 
 /* "(" float ")" of a directive; what: "after '#if'". */
@@ -825,6 +890,8 @@ static void forget(parser *p, const char *name, size_t len)
 	}
 }
 
+void lang_forget(parser *p, const char *name, size_t len) { forget(p, name, len); }
+
 /* ifdef = ( "#ifdef" | "#ifndef" ) "(" identifier [ index ] ")" { token } [ "#else" { token } ] "#end"
  * As POV-Ray 3.7's Parse_Ifdef_Param: true when the name is declared (a keyword never is), or
  * the array's element assigned. */
@@ -868,6 +935,8 @@ static bool do_undef(parser *p)
 		diag_warning(p->d, name.loc, "'#undef' of '%.*s', which is not declared", (int)name.len, name.text);
 		return true;
 	}
+	if (s->dep.on)
+		warn_deprecated(p, &name, s);
 	forget(p, name.text, name.len);
 	return true;
 }
@@ -1406,7 +1475,7 @@ static bool invoke(parser *p, const lang_token *name, const lang_macro *m)
 	for (int i = 0; i < m->n_params; i++) {
 		if (!set[i])
 			continue;
-		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i]};
+		symbol s = {m->params[i], p->n_files - 1, name->loc, vals[i], true, refs[i], {0}};
 		if (!vecbuf_push(&p->locals, &s))
 			return no_memory(p, name->loc);
 	}
@@ -1440,6 +1509,11 @@ static bool run_directive(parser *p, const lang_token *dir)
 	case LTK_DIR_IFNDEF: ok = do_ifdef(p, dir->loc, false); break;
 	case LTK_DIR_UNDEF: ok = do_undef(p); break;
 	case LTK_DIR_MACRO: ok = do_macro(p, dir->loc); break;
+	case LTK_DIR_DEFAULT: ok = lang_default(p); break;
+	case LTK_DIR_FOPEN: ok = lang_fopen(p, dir->loc); break;
+	case LTK_DIR_FCLOSE: ok = lang_fclose(p); break;
+	case LTK_DIR_READ: ok = lang_read_directive(p, dir->loc); break;
+	case LTK_DIR_WRITE: ok = lang_write_directive(p); break;
 	case LTK_DIR_DEBUG:
 	case LTK_DIR_WARNING:
 	case LTK_DIR_ERROR: ok = do_message(p, dir); break;
@@ -1458,6 +1532,24 @@ static bool fetch(parser *p, lang_token *t)
 			*t = p->eof;
 			return !p->failed;
 		}
+		if (p->has_held) { /* the token after a #declare without ';' (hold_lookahead) */
+			p->has_held = false;
+			*t = p->held;
+			if (t->kind == LTK_UNSUPPORTED_DIRECTIVE) {
+				report_unsupported(p, t);
+				*t = p->eof;
+				return false;
+			}
+			if (t->kind < LANG_FIRST_DIRECTIVE)
+				return true;
+			lang_token dir = *t;
+			if (!run_directive(p, &dir)) {
+				p->failed = true;
+				*t = p->eof;
+				return false;
+			}
+			continue;
+		}
 		include_frame *f = &p->files[p->n_files - 1];
 		if (!lang_lex(&f->lx, p->d, t)) {
 			p->failed = true;
@@ -1468,6 +1560,8 @@ static bool fetch(parser *p, lang_token *t)
 		release_behind(f);
 		if (t->kind == LTK_IDENT && !p->no_expand) {
 			const symbol *s = lang_lookup(p, t->text, t->len);
+			if (s && s->dep.on)
+				warn_deprecated(p, t, s);
 			if (s && s->val.kind == VAL_MACRO) {
 				lang_token name = *t;
 				if (!invoke(p, &name, s->val.mac)) {
@@ -1507,9 +1601,6 @@ lang_token *lang_peek(parser *p)
 {
 	if (!p->have_tok) {
 		lang_token t;
-		p->peek_files = p->n_files;
-		if (p->n_files > 0)
-			p->peek_from = p->files[p->n_files - 1].lx;
 		fetch(p, &t);
 		p->tok = t;
 		p->have_tok = true;
@@ -1653,6 +1744,7 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 	vecbuf_init(&p->globals, sizeof(symbol));
 	vecbuf_init(&p->locals, sizeof(symbol));
 	vecbuf_init(&p->rand_streams, sizeof(rng));
+	lang_datafiles_init(p);
 	p->eof.kind = LTK_EOF;
 	p->version = POV_VERSION;
 	lang_status st = LANG_OK;
@@ -1685,6 +1777,9 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 			st = LANG_SCENE_ERROR;
 	}
 done:
+	lang_datafiles_close(p);
+	if (p->failed || d->errors) /* a data file's failure to close */
+		st = st == LANG_OK ? LANG_SCENE_ERROR : st;
 	vecbuf_free(&p->globals);
 	vecbuf_free(&p->locals);
 	vecbuf_free(&p->rand_streams);

@@ -15,6 +15,10 @@ typedef enum value_kind {
 	VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO,
 	/* expressions (expr.c): */
 	VAL_ARRAY, /* arr; POV-Ray's array[N]... */
+	/* declared scene blocks (stmt.c): a pigment, finish or interior is a texture record of which
+	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
+	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
+	VAL_FILE /* a data file of #fopen (datafile.c) */
 } value_kind;
 
 /* A colour is POV-Ray's 5-vector: red, green, blue, filter, transmit (VAL_COLOR has n == 5). */
@@ -35,6 +39,11 @@ typedef struct value {
 	const objlist *obj;
 	const struct lang_macro *mac; /* VAL_MACRO */
 	struct lang_array *arr; /* VAL_ARRAY: shared by reference, as a macro's parameter is */
+	/* declared scene blocks (stmt.c) */
+	const scene_camera *cam; /* VAL_CAMERA */
+	const scene_light *light; /* VAL_LIGHT */
+	const xform *xf; /* VAL_TRANSFORM */
+	int file; /* VAL_FILE: its index in the parser's datafiles */
 } value;
 
 /* An array: its dimensions and its elements in row-major order, each unset until assigned (kind
@@ -90,6 +99,13 @@ typedef struct cond {
 	double value; /* COND_SWITCH (running a case that matched, or its #else): the switch's value */
 } cond;
 
+/* `#declare deprecated [once] ["message"] Name = ...`: a warning at each use of Name (the first
+ * only, with once), the message or POV-Ray's own. */
+typedef struct deprecation {
+	bool on, once, warned;
+	const char *msg; /* NULL: "identifier 'Name' was declared deprecated" */
+} deprecation;
+
 typedef struct symbol {
 	const char *name;
 	int depth; /* 0 global; k the k-th include level for #local */
@@ -97,6 +113,7 @@ typedef struct symbol {
 	value val;
 	bool param; /* a parameter of a macro call */
 	long ref; /* a parameter passed by reference: 0 none; k > 0 globals[k-1]; k < 0 locals[-k-1] */
+	deprecation dep;
 } symbol;
 
 typedef struct parser {
@@ -123,11 +140,16 @@ typedef struct parser {
 	const char *skip_stop_at; /* skip_block: where the directive that ended it begins (before blanks) */
 	bool no_expand; /* reading a directive's name: a macro's name is not a call */
 	double version; /* `version`: 3.7 until a #version sets it */
+	/* statements' state (stmt.c) */
+	const scene_material *default_tex; /* #default's texture; NULL until a #default */
+	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
+	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
+	vecbuf datafiles; /* lang_datafile (datafile.c): every data file opened, open or not */
+	lang_token held; /* with has_held: the token after a #declare without ';', read again next */
+	bool has_held;
 	vecbuf globals, locals; /* symbol */
 	/* expressions (expr.c): */
 	vecbuf rand_streams; /* rng, one per seed() call: rand(S) draws from stream S */
-	lang_lexer peek_from; /* the lexer before the lookahead was read, in frame peek_files */
-	int peek_files;
 } parser;
 
 /* ---- token stream (parser.c) ---- */
@@ -183,11 +205,26 @@ bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_l
 const symbol *lang_lookup(parser *p, const char *name, size_t len);
 const char *lang_value_kind_name(const value *v);
 
+/* Declares name (#declare, or #local with local) as v; false after reporting. */
+bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
+/* Forgets the innermost declaration of the name (#undef). */
+void lang_forget(parser *p, const char *name, size_t len);
+
+/* ---- data files (datafile.c) ---- */
+bool lang_fopen(parser *p, diag_loc at); /* after '#fopen' */
+bool lang_fclose(parser *p);
+bool lang_read_directive(parser *p, diag_loc at);
+bool lang_write_directive(parser *p);
+void lang_datafiles_init(parser *p);
+void lang_datafiles_close(parser *p); /* the end of the parse: streams closed, the list freed */
+
 /* ---- statements (stmt.c) ---- */
 /* statement = global_settings | camera | light_source | background | sky_sphere | object_item */
 bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* default = "#default" "{" { texture | pigment | finish } "}"   (after the directive's word) */
+bool lang_default(parser *p);
 
 #endif

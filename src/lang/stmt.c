@@ -105,6 +105,175 @@ static bool asset_path(parser *p, const char *what, scene_asset_kind kind, const
 	return scene_add_asset(p->sc, kind, path, loc) || lang_error(p, loc, "out of memory");
 }
 
+/* The value of the declared name that comes next (consumed), which must be of kind k (what: "a
+ * pigment" for the message); NULL after reporting. */
+static const value *declared(parser *p, value_kind k, const char *what)
+{
+	lang_token t = *lang_advance(p);
+	const symbol *s = lang_lookup(p, t.text, t.len);
+	if (!s) {
+		lang_error(p, t.loc, "undeclared identifier '%.*s'", (int)t.len, t.text);
+		return NULL;
+	}
+	if (s->val.kind != k) {
+		lang_error(p, t.loc, "'%.*s' is %s, not %s", (int)t.len, t.text, lang_value_kind_name(&s->val), what);
+		return NULL;
+	}
+	return &s->val;
+}
+
+/* True when the lookahead is a name declared as a value of kind k. */
+static bool names(parser *p, value_kind k)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_IDENT)
+		return false;
+	const symbol *s = lang_lookup(p, t->text, t->len);
+	return s && s->val.kind == k;
+}
+
+/* True when the lookahead is a name declared as a block (neither a number nor a string): where a
+ * colour could stand too, it must be the block the context asks for. */
+static bool names_block(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_IDENT)
+		return false;
+	const symbol *s = lang_lookup(p, t->text, t->len);
+	return s && s->val.kind != VAL_FLOAT && s->val.kind != VAL_VECTOR && s->val.kind != VAL_COLOR &&
+	       s->val.kind != VAL_STRING;
+}
+
+/* ---- transforms -------------------------------------------------------------------------- */
+
+static bool transform_block(parser *p, xform *out);
+
+/* transform_item = "translate" vector | "rotate" vector | "scale" ( float | vector )
+ *                | "matrix" "<" float { "," float } ">" | transform
+ * One item at the lookahead, composed after *t; *matched false (nothing read) when the
+ * lookahead is none. */
+static bool transform_item(parser *p, xform *t, bool *matched)
+{
+	lang_token k = *lang_peek(p);
+	dvec3 v;
+	xform x;
+	*matched = true;
+	switch (k.kind) {
+	case LTK_KW_TRANSLATE:
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'translate'", &v));
+		x = xform_translate(v);
+		break;
+	case LTK_KW_ROTATE:
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'rotate'", &v));
+		x = xform_rotate(v);
+		break;
+	case LTK_KW_SCALE:
+		lang_advance(p);
+		TRY(lang_vec3(p, "after 'scale'", &v));
+		if (!xform_scale(v, &x))
+			return lang_error(p, k.loc, "scale by zero (<%g, %g, %g>) flattens the object", v.x, v.y, v.z);
+		break;
+	case LTK_KW_MATRIX: {
+		lang_advance(p);
+		diag_loc loc = lang_peek(p)->loc;
+		value mv;
+		TRY(lang_expr(p, &mv));
+		if (mv.kind != VAL_VECTOR || mv.n != 12)
+			return lang_error(p, loc, "'matrix' needs 12 numbers <m00, m01, ..., m32>, found %s",
+					  lang_value_kind_name(&mv));
+		if (!xform_from_pov_matrix(mv.v, &x))
+			return lang_error(p, loc, "'matrix' is singular (its 3x3 part has no inverse)");
+		break;
+	}
+	case LTK_KW_TRANSFORM:
+		TRY(transform_block(p, &x));
+		break;
+	default:
+		*matched = false;
+		return true;
+	}
+	*t = xform_then(*t, x);
+	return true;
+}
+
+/* The inverse of an affine transform: xform keeps it beside the matrix. */
+static xform xform_inverse(xform t)
+{
+	xform r;
+	memcpy(r.m, t.inv, sizeof r.m);
+	memcpy(r.inv, t.m, sizeof r.inv);
+	return r;
+}
+
+/* transform = "transform" ( identifier | "{" [ identifier ] { transform_item | "inverse" } "}" )
+ * As POV-Ray 3.7: `inverse` anywhere in the block inverts the whole block. */
+static bool transform_body(parser *p, xform *out)
+{
+	const value *v;
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		TRY(v = declared(p, VAL_TRANSFORM, "a transform"));
+		*out = *v->xf;
+		return true;
+	}
+	diag_loc open;
+	TRY(open_block(p, "transform", &open));
+	xform t = xform_identity();
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		TRY(v = declared(p, VAL_TRANSFORM, "a transform"));
+		t = *v->xf;
+	}
+	bool inverse = false;
+	for (;;) {
+		if (lang_accept(p, LTK_RBRACE))
+			break;
+		if (lang_accept(p, LTK_KW_INVERSE)) {
+			inverse = true;
+			continue;
+		}
+		bool matched;
+		TRY(transform_item(p, &t, &matched));
+		if (!matched)
+			return bad_item(p, open, "transform", "translate, rotate, scale, matrix, transform or inverse");
+	}
+	*out = inverse ? xform_inverse(t) : t;
+	return true;
+}
+
+/* A transform block nests in itself (transform { transform {...} }): each counts a level. */
+static bool transform_block(parser *p, xform *out)
+{
+	diag_loc kw = lang_advance(p)->loc;
+	TRY(lang_enter(p, kw));
+	bool ok = transform_body(p, out);
+	lang_leave(p);
+	return ok;
+}
+
+/* A texture's own transforms (of a pigment, texture or material): they move its pattern, and a
+ * plain colour has none, so they change nothing; an image has one, which circe maps by the
+ * surface's uv coordinates and cannot move. at: the first transform (line 0: none). */
+static bool pattern_transform(parser *p, const scene_material *m, diag_loc at, const char *what)
+{
+	if (at.line == 0 || (!m->image && !m->sss.albedo_image))
+		return true;
+	return lang_error(p, at, "a transform of an image-mapped %s is not supported by circe (its image is mapped by "
+				 "the surface's uv coordinates)",
+			  what);
+}
+
+/* transform_item in a pigment, texture or material: read, recorded in *at when first, dropped. */
+static bool pattern_transform_item(parser *p, diag_loc *at, bool *matched)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	xform ignored = xform_identity();
+	TRY(transform_item(p, &ignored, matched));
+	if (*matched && at->line == 0)
+		*at = loc;
+	return true;
+}
+
 /* ---- materials --------------------------------------------------------------------------- */
 
 static scene_material *new_material(parser *p, diag_loc loc, scene_material_kind kind)
@@ -122,6 +291,45 @@ static scene_material *new_material(parser *p, diag_loc loc, scene_material_kind
 	return m;
 }
 
+/* A record that holds a declared pigment, finish or interior: a texture of which only that part
+ * is read. In the arena, not the scene's list: it is no material of the scene. */
+static scene_material *new_part(parser *p, diag_loc loc)
+{
+	scene_material *m = arena_zalloc(&p->sc->arena, 1, sizeof *m);
+	if (!m) {
+		lang_error(p, loc, "out of memory");
+		return NULL;
+	}
+	m->loc = loc;
+	m->kind = MAT_TEXTURE;
+	m->diffuse = 0.6f; /* POV-Ray's finish defaults, as new_material */
+	m->roughness = 0.05f;
+	return m;
+}
+
+static void copy_pigment(scene_material *to, const scene_material *from)
+{
+	to->color = from->color;
+	to->image = from->image;
+}
+
+static void copy_finish(scene_material *to, const scene_material *from)
+{
+	to->diffuse = from->diffuse, to->specular = from->specular, to->roughness = from->roughness;
+}
+
+/* A new texture record: POV-Ray's default texture, or the one of the last #default (POV-Ray 3.7
+ * makes every texture from a copy of its default texture). */
+static scene_material *new_texture(parser *p, diag_loc loc)
+{
+	scene_material *m = new_material(p, loc, MAT_TEXTURE);
+	if (m && p->default_tex) {
+		copy_pigment(m, p->default_tex);
+		copy_finish(m, p->default_tex);
+	}
+	return m;
+}
+
 /* A new record with the contents of base (a declared material being modified). */
 static scene_material *copy_material(parser *p, const scene_material *base, diag_loc loc)
 {
@@ -135,12 +343,30 @@ static scene_material *copy_material(parser *p, const scene_material *base, diag
 	return m;
 }
 
-/* pigment = "pigment" "{" ( colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}" ) "}" */
-static bool pigment(parser *p, scene_material *m)
+/* True when the lookahead is a transform item (which may follow a declared pigment alone). */
+static bool starts_transform(parser *p)
 {
-	diag_loc open, io;
+	lang_tok k = lang_peek(p)->kind;
+	return k == LTK_KW_TRANSLATE || k == LTK_KW_ROTATE || k == LTK_KW_SCALE || k == LTK_KW_MATRIX ||
+	       k == LTK_KW_TRANSFORM;
+}
+
+/* pigment = "pigment" "{" [ identifier ] [ pigment_type ] { transform_item } "}"   (empty: unchanged)
+ * pigment_type = colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}"
+ * use: what the colour becomes (an albedo; a sky's radiance). */
+static bool pigment(parser *p, scene_material *m, scene_color_use use)
+{
+	diag_loc open, io, moved = {0};
 	lang_advance(p);
 	TRY(open_block(p, "pigment", &open));
+	bool named = names_block(p);
+	if (named) {
+		const value *v;
+		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
+		copy_pigment(m, v->mat);
+	}
+	if (lang_peek(p)->kind == LTK_KW_MARBLE) /* a circe keyword (the SSS block), a POV-Ray pattern */
+		return lang_error(p, lang_peek(p)->loc, "'marble' (a pattern) is not supported by circe");
 	if (lang_accept(p, LTK_KW_IMAGE_MAP)) {
 		TRY(open_block(p, "image_map", &io));
 		lang_tok k = lang_peek(p)->kind;
@@ -149,18 +375,32 @@ static bool pigment(parser *p, scene_material *m)
 		lang_advance(p);
 		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
 		TRY(lang_expect_close(p, io, "image_map"));
-	} else {
-		TRY(physical_color(p, "as the pigment colour", "pigment colour", SCENE_COLOR_REFLECTANCE, &m->color));
+	} else if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
+		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
+		TRY(physical_color(p, "as the pigment colour", what, use, &m->color));
+		m->image = NULL;
 	}
-	return lang_expect_close(p, open, "pigment");
+	for (;;) {
+		if (lang_accept(p, LTK_RBRACE))
+			return pattern_transform(p, m, moved, "pigment");
+		bool matched;
+		TRY(pattern_transform_item(p, &moved, &matched));
+		if (!matched)
+			return lang_expect_close(p, open, "pigment");
+	}
 }
 
-/* finish = "finish" "{" { "diffuse" float | "specular" float | "roughness" float } "}" */
+/* finish = "finish" "{" [ identifier ] { "diffuse" float | "specular" float | "roughness" float } "}" */
 static bool finish(parser *p, scene_material *m)
 {
 	diag_loc open;
 	lang_advance(p);
 	TRY(open_block(p, "finish", &open));
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_FINISH, "a finish"));
+		copy_finish(m, v->mat);
+	}
 	for (;;) {
 		lang_token *t = lang_peek(p);
 		diag_loc loc = t->loc;
@@ -184,18 +424,26 @@ static bool finish(parser *p, scene_material *m)
 			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, loc, "finish roughness", x, 0, 1));
 			m->roughness = (float)x;
 			break;
+		case LTK_KW_EMISSION:
+			return lang_error(p, loc, "'emission' in a finish is not supported by circe (a glowing object is "
+						  "material { emission C })");
 		default:
 			return bad_item(p, open, "finish", "diffuse, specular or roughness");
 		}
 	}
 }
 
-/* interior = "interior" "{" [ "ior" float ] "}" */
+/* interior = "interior" "{" [ identifier ] [ "ior" float ] "}" */
 static bool interior(parser *p, float *ior)
 {
 	diag_loc open;
 	lang_advance(p);
 	TRY(open_block(p, "interior", &open));
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_INTERIOR, "an interior"));
+		*ior = v->mat->ior;
+	}
 	if (lang_peek(p)->kind == LTK_KW_IOR) {
 		diag_loc loc = lang_advance(p)->loc;
 		double x;
@@ -207,20 +455,11 @@ static bool interior(parser *p, float *ior)
 
 static const scene_material *declared_material(parser *p)
 {
-	lang_token t = *lang_advance(p);
-	const symbol *s = lang_lookup(p, t.text, t.len);
-	if (!s) {
-		lang_error(p, t.loc, "undeclared identifier '%.*s'", (int)t.len, t.text);
-		return NULL;
-	}
-	if (s->val.kind != VAL_MATERIAL) {
-		lang_error(p, t.loc, "'%.*s' is %s, not a material", (int)t.len, t.text, lang_value_kind_name(&s->val));
-		return NULL;
-	}
-	return s->val.mat;
+	const value *v = declared(p, VAL_MATERIAL, "a material");
+	return v ? v->mat : NULL;
 }
 
-/* texture = "texture" "{" [ identifier ] { pigment | finish } "}"
+/* texture = "texture" "{" [ identifier ] { pigment | finish | transform_item } "}"
  * *fresh (may be NULL) tells whether the record is new, hence the caller's to modify. */
 static bool texture(parser *p, const scene_material **out, bool *fresh)
 {
@@ -236,23 +475,29 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 		*out = base;
 		return true;
 	}
-	scene_material *m = base ? copy_material(p, base, kw) : new_material(p, kw, MAT_TEXTURE);
+	scene_material *m = base ? copy_material(p, base, kw) : new_texture(p, kw);
 	TRY(m);
 	if (base && m->kind != MAT_TEXTURE)
 		return lang_error(p, kw, "'texture' needs a texture, but this one is a %s material",
 				  scene_material_kind_name(m->kind));
+	diag_loc moved = {0};
 	for (;;) {
 		lang_tok k = lang_peek(p)->kind;
+		bool matched;
 		if (k == LTK_KW_PIGMENT)
-			TRY(pigment(p, m));
+			TRY(pigment(p, m, SCENE_COLOR_REFLECTANCE));
 		else if (k == LTK_KW_FINISH)
 			TRY(finish(p, m));
 		else if (k == LTK_RBRACE)
 			break;
-		else
-			return bad_item(p, open, "texture", "pigment or finish");
+		else {
+			TRY(pattern_transform_item(p, &moved, &matched));
+			if (!matched)
+				return bad_item(p, open, "texture", "pigment, finish or a transform");
+		}
 	}
 	lang_advance(p);
+	TRY(pattern_transform(p, m, moved, "texture"));
 	*out = m;
 	if (fresh)
 		*fresh = true;
@@ -463,7 +708,7 @@ static bool sss_block(parser *p, scene_material *m)
 
 /* material = "material" "{" [ identifier ] { material_item } "}"
  * material_item = "diffuse" "{" ( colour | "image" string ) "}" | sss_block | texture
- *               | interior | "emission" colour */
+ *               | interior | "emission" colour | transform_item */
 static bool material(parser *p, const scene_material **out)
 {
 	diag_loc kw = lang_advance(p)->loc, open;
@@ -479,11 +724,15 @@ static bool material(parser *p, const scene_material **out)
 	scene_material *m = base ? copy_material(p, base, kw) : new_material(p, kw, MAT_DIFFUSE);
 	TRY(m);
 	bool has_kind = base != NULL, has_emission = false;
-	diag_loc kind_loc = kw;
+	diag_loc kind_loc = kw, moved = {0};
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		if (t.kind == LTK_RBRACE)
 			break;
+		bool matched;
+		TRY(pattern_transform_item(p, &moved, &matched));
+		if (matched)
+			continue;
 		bool is_kind = t.kind == LTK_KW_DIFFUSE || t.kind == LTK_KW_SKIN || t.kind == LTK_KW_WAX ||
 			       t.kind == LTK_KW_MARBLE || t.kind == LTK_KW_TEXTURE;
 		if (is_kind && has_kind)
@@ -534,6 +783,7 @@ static bool material(parser *p, const scene_material **out)
 		}
 	}
 	lang_advance(p);
+	TRY(pattern_transform(p, m, moved, "material"));
 	if (!has_kind && !has_emission)
 		return lang_error(p, kw, "empty material: give diffuse, texture, skin, wax, marble, emission or a declared "
 					 "material");
@@ -567,48 +817,17 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 	return true;
 }
 
-/* modifier = "translate" vector | "rotate" vector | "scale" ( float | vector )
- *          | "matrix" "<" float { "," float } ">" | material | texture | pigment | finish
- *          | interior | "no_shadow" */
+/* modifier = transform_item | material | texture | pigment | finish | interior | "no_shadow" */
 static bool modifier(parser *p, mods *m, bool *matched)
 {
 	lang_token t = *lang_peek(p);
-	dvec3 v;
+	TRY(transform_item(p, &m->t, matched));
+	if (*matched)
+		return true;
 	*matched = true;
 	switch (t.kind) {
-	case LTK_KW_TRANSLATE:
-		lang_advance(p);
-		TRY(lang_vec3(p, "after 'translate'", &v));
-		m->t = xform_then(m->t, xform_translate(v));
-		return true;
-	case LTK_KW_ROTATE:
-		lang_advance(p);
-		TRY(lang_vec3(p, "after 'rotate'", &v));
-		m->t = xform_then(m->t, xform_rotate(v));
-		return true;
-	case LTK_KW_SCALE: {
-		lang_advance(p);
-		TRY(lang_vec3(p, "after 'scale'", &v));
-		xform s;
-		if (!xform_scale(v, &s))
-			return lang_error(p, t.loc, "scale by zero (<%g, %g, %g>) flattens the object", v.x, v.y, v.z);
-		m->t = xform_then(m->t, s);
-		return true;
-	}
-	case LTK_KW_MATRIX: {
-		lang_advance(p);
-		diag_loc loc = lang_peek(p)->loc;
-		value mv;
-		TRY(lang_expr(p, &mv));
-		if (mv.kind != VAL_VECTOR || mv.n != 12)
-			return lang_error(p, loc, "'matrix' needs 12 numbers <m00, m01, ..., m32>, found %s%s",
-					  lang_value_kind_name(&mv), mv.kind == VAL_VECTOR ? "" : "");
-		xform x;
-		if (!xform_from_pov_matrix(mv.v, &x))
-			return lang_error(p, loc, "'matrix' is singular (its 3x3 part has no inverse)");
-		m->t = xform_then(m->t, x);
-		return true;
-	}
+	case LTK_KW_INVERSE:
+		return lang_error(p, t.loc, "'inverse' of an object (CSG) is not supported by circe");
 	case LTK_KW_MATERIAL: {
 		const scene_material *mat;
 		TRY(material(p, &mat));
@@ -625,10 +844,10 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	case LTK_KW_PIGMENT:
 	case LTK_KW_FINISH:
 		if (!m->tex) {
-			TRY(m->tex = new_material(p, t.loc, MAT_TEXTURE));
+			TRY(m->tex = new_texture(p, t.loc));
 			TRY(set_material(p, m, m->tex, t.loc));
 		}
-		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex) : finish(p, m->tex);
+		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex, SCENE_COLOR_REFLECTANCE) : finish(p, m->tex);
 	case LTK_KW_INTERIOR:
 		m->has_interior = true;
 		m->interior_loc = t.loc;
@@ -1148,6 +1367,18 @@ static bool item_corner(parser *p, void *c, uint32_t i)
 	return push(p, &x->corners, &co);
 }
 
+/* level (uniform) and max_edge (adaptive) choose the tessellation: one of them, not both. other:
+ * whether the other was given (at *first); otherwise *first becomes this one's place. */
+static bool level_or_max_edge(parser *p, bool other, const lang_token *t, diag_loc *first)
+{
+	if (other)
+		return lang_error(p, t->loc, "'%.*s' after '%s' at line %u: a subdivision_surface has a uniform 'level' or "
+					     "an adaptive 'max_edge', not both",
+				  (int)t->len, t->text, t->kind == LTK_KW_LEVEL ? "max_edge" : "level", first->line);
+	*first = t->loc;
+	return true;
+}
+
 /* subdivision_surface = "subdivision_surface" "{" { subd_item } { modifier } "}"
  * subd_item = "file" string | "vertex_vectors" list | "faces" list | "uv_vectors" list
  *           | "uv_faces" list | "creases" list | "corners" list
@@ -1155,7 +1386,8 @@ static bool item_corner(parser *p, void *c, uint32_t i)
  *           | "level" integer | "max_edge" float */
 static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, diag_loc kw)
 {
-	bool seen[10] = {false};
+	bool seen[11] = {false};
+	diag_loc level_loc = kw; /* the first of level and max_edge: they are alternatives */
 	uint32_t cnt;
 	for (;;) {
 		lang_token t = *lang_peek(p);
@@ -1217,13 +1449,13 @@ static bool subdiv_items(parser *p, meshbuf *b, subd_ctx *sx, scene_subdiv *d, d
 			break;
 		}
 		case LTK_KW_LEVEL:
-			TRY(once(p, &seen[9], &t));
+			TRY(once(p, &seen[9], &t) && level_or_max_edge(p, seen[10], &t, &level_loc));
 			lang_advance(p);
 			TRY(lang_int(p, "after 'level'", 1, 8, &n));
 			d->level = (int)n;
 			break;
 		case LTK_KW_MAX_EDGE:
-			TRY(once(p, &seen[9], &t));
+			TRY(once(p, &seen[10], &t) && level_or_max_edge(p, seen[9], &t, &level_loc));
 			lang_advance(p);
 			TRY(lang_float(p, "after 'max_edge'", &x) && positive(p, t.loc, "max_edge", x));
 			d->max_edge_px = x;
@@ -1354,6 +1586,45 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	return ok;
 }
 
+/* A declared pigment, finish or interior: a part record (new_part). */
+static bool declare_part(parser *p, value *out, lang_tok k)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	scene_material *m;
+	TRY(m = new_part(p, loc));
+	out->mat = m;
+	switch (k) {
+	case LTK_KW_PIGMENT: out->kind = VAL_PIGMENT; return pigment(p, m, SCENE_COLOR_REFLECTANCE);
+	case LTK_KW_FINISH: out->kind = VAL_FINISH; return finish(p, m);
+	default: out->kind = VAL_INTERIOR; return interior(p, &m->ior);
+	}
+}
+
+static bool camera_block(parser *p, scene_camera *c, diag_loc kw);
+static bool light_block(parser *p, scene_light *out, diag_loc kw);
+
+/* A declared camera, light_source or transform: its IR record, in the arena. */
+static bool declare_record(parser *p, value *out, lang_tok k)
+{
+	lang_token kw = *lang_peek(p);
+	size_t size = k == LTK_KW_CAMERA ? sizeof(scene_camera) : k == LTK_KW_LIGHT_SOURCE ? sizeof(scene_light)
+											 : sizeof(xform);
+	void *r = arena_zalloc(&p->sc->arena, 1, size);
+	if (!r)
+		return lang_error(p, kw.loc, "out of memory");
+	if (k == LTK_KW_TRANSFORM) {
+		out->kind = VAL_TRANSFORM, out->xf = r;
+		return transform_block(p, r);
+	}
+	lang_advance(p);
+	if (k == LTK_KW_CAMERA) {
+		out->kind = VAL_CAMERA, out->cam = r;
+		return camera_block(p, r, kw.loc);
+	}
+	out->kind = VAL_LIGHT, out->light = r;
+	return light_block(p, r, kw.loc);
+}
+
 bool lang_declare_block(parser *p, value *out, bool *handled)
 {
 	lang_tok k = lang_peek(p)->kind;
@@ -1363,6 +1634,10 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		out->kind = VAL_MATERIAL;
 		return k == LTK_KW_MATERIAL ? material(p, &out->mat) : texture(p, &out->mat, NULL);
 	}
+	if (k == LTK_KW_PIGMENT || k == LTK_KW_FINISH || k == LTK_KW_INTERIOR)
+		return declare_part(p, out, k);
+	if (k == LTK_KW_CAMERA || k == LTK_KW_LIGHT_SOURCE || k == LTK_KW_TRANSFORM)
+		return declare_record(p, out, k);
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
@@ -1521,41 +1796,84 @@ static bool global_settings(parser *p)
 	}
 }
 
-/* camera = "camera" "{" { "perspective" | "location" vector | "look_at" vector | "sky" vector
- *          | "angle" float | "right" vector | "up" vector | "aperture" float
- *          | "focal_point" vector } "}" */
-static bool camera(parser *p)
+/* POV-Ray's camera `direction`: without look_at it is where the camera looks (look_at = location
+ * + direction); without angle its length sets the field of view against right's, horizontal
+ * angle = 2 atan(|right| / (2 |direction|)) (POV-Ray 3.7 documentation, "Camera": angle sets the
+ * direction's length from right's). Applied at the block's end, as POV-Ray applies angle. */
+static bool camera_direction(parser *p, scene_camera *c, dvec3 dir, diag_loc at, bool look_at, bool angle)
 {
-	lang_token kw = *lang_advance(p);
-	if (p->sc->has_camera) {
-		lang_error(p, kw.loc, "a second camera (a scene has one)");
-		diag_note(p->d, p->sc->camera.loc, "the first camera is here");
-		return false;
+	double d = d3_length(dir), r = d3_length(c->right);
+	if (!(d > 0))
+		return lang_error(p, at, "camera direction is the zero vector");
+	if (!look_at)
+		c->look_at = d3_add(c->location, dir);
+	if (!angle) {
+		double deg = 2 * atan(r / (2 * d)) * 180 / M_PI;
+		if (!(deg > 0 && deg < 180))
+			return lang_error(p, at, "camera direction and right give an angle of %g degrees, outside (0, 180)", deg);
+		c->angle_deg = deg;
 	}
-	diag_loc open;
+	return true;
+}
+
+/* camera = "camera" "{" [ identifier ] { "perspective" | "location" vector | "look_at" vector
+ *          | "direction" vector | "sky" vector | "angle" float | "right" vector | "up" vector
+ *          | "aperture" float | "focal_point" vector | transform_item } "}"
+ * A transform moves what was set before it (location, look_at, focal point; sky, right, up and
+ * direction as directions).
+ * Into *c, the keyword consumed (at kw). */
+static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
+{
+	diag_loc open, dir_loc = kw;
+	bool has_dir = false, has_look_at = false, has_angle = false;
+	dvec3 dir = d3(0, 0, 1);
 	TRY(open_block(p, "camera", &open));
-	scene_camera *c = &p->sc->camera;
-	*c = (scene_camera){.loc = kw.loc,
+	*c = (scene_camera){.loc = kw,
 			    .location = d3(0, 0, 0),
 			    .look_at = d3(0, 0, 1),
 			    .sky = d3(0, 1, 0),
 			    .right = d3(1.33, 0, 0),
 			    .up = d3(0, 1, 0),
 			    .angle_deg = 67.380135}; /* POV-Ray's default: 2 atan(1.33 / 2) */
-	p->sc->has_camera = true;
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_CAMERA, "a camera"));
+		*c = *v->cam;
+		c->loc = kw;
+	}
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		dvec3 *v = NULL;
+		xform moved = xform_identity();
+		bool matched;
+		TRY(transform_item(p, &moved, &matched));
+		if (matched) { /* moves the camera as set so far, as POV-Ray's camera transforms do */
+			c->location = xform_point(&moved, c->location);
+			c->look_at = xform_point(&moved, c->look_at);
+			c->focal_point = xform_point(&moved, c->focal_point);
+			c->sky = xform_vector(&moved, c->sky);
+			c->right = xform_vector(&moved, c->right);
+			c->up = xform_vector(&moved, c->up);
+			dir = xform_vector(&moved, dir);
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			return true;
+			return !has_dir || camera_direction(p, c, dir, dir_loc, has_look_at, has_angle);
 		case LTK_KW_PERSPECTIVE:
 			lang_advance(p);
 			continue;
 		case LTK_KW_LOCATION: v = &c->location; break;
-		case LTK_KW_LOOK_AT: v = &c->look_at; break;
+		case LTK_KW_LOOK_AT:
+			v = &c->look_at;
+			has_look_at = true;
+			break;
+		case LTK_KW_DIRECTION:
+			v = &dir;
+			has_dir = true, dir_loc = t.loc;
+			break;
 		case LTK_KW_SKY: v = &c->sky; break;
 		case LTK_KW_RIGHT: v = &c->right; break;
 		case LTK_KW_UP: v = &c->up; break;
@@ -1569,6 +1887,7 @@ static bool camera(parser *p)
 			if (!(x > 0 && x < 180))
 				return lang_error(p, t.loc, "camera angle must be in (0, 180) degrees, found %g", x);
 			c->angle_deg = x;
+			has_angle = true;
 			continue;
 		case LTK_KW_APERTURE:
 			lang_advance(p);
@@ -1578,7 +1897,7 @@ static bool camera(parser *p)
 			c->aperture = x;
 			continue;
 		default:
-			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ...)");
+			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ..., a transform)");
 		}
 		lang_advance(p);
 		char ctx[48];
@@ -1587,26 +1906,68 @@ static bool camera(parser *p)
 	}
 }
 
-/* light_source = "light_source" "{" vector [ "," ] { colour | "intensity" float | "radius" float
- *                | "spotlight" | "parallel" | "point_at" vector | "falloff" float } "}" */
-static bool light_source(parser *p)
+/* The scene's camera statement: one per scene. */
+static bool camera(parser *p)
 {
 	lang_token kw = *lang_advance(p);
+	if (p->sc->has_camera) {
+		lang_error(p, kw.loc, "a second camera (a scene has one)");
+		diag_note(p->d, p->sc->camera.loc, "the first camera is here");
+		return false;
+	}
+	p->sc->has_camera = true;
+	return camera_block(p, &p->sc->camera, kw.loc);
+}
+
+static bool light_colour(parser *p, vec3 *c)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	TRY(lang_color(p, "as the light colour", c));
+	if (!(c->x >= 0 && c->y >= 0 && c->z >= 0))
+		return lang_error(p, loc, "light colour must be >= 0 in every channel");
+	return true;
+}
+
+/* light_source = "light_source" "{" ( identifier | vector [ "," colour ] ) { colour
+ *                | "intensity" float | "radius" float | "spotlight" | "parallel" | "point_at" vector
+ *                | "falloff" float | transform_item } "}"
+ * Into *out, the keyword consumed (at kw). A float colour is grey (`<0, 9, 0>, 1`). A transform
+ * moves the position and point_at given before it, as in POV-Ray. */
+static bool light_block(parser *p, scene_light *out, diag_loc kw)
+{
 	diag_loc open;
 	TRY(open_block(p, "light_source", &open));
-	scene_light l = {.loc = kw.loc, .kind = SCENE_LIGHT_POINT, .color = v3s(1), .intensity = 1,
+	scene_light l = {.loc = kw, .kind = SCENE_LIGHT_POINT, .color = v3s(1), .intensity = 1,
 			 .point_at = d3(0, 0, 1), .cone_deg = 30, .falloff_deg = 45};
-	TRY(lang_vec3(p, "as the light position", &l.position));
-	lang_accept(p, LTK_COMMA);
 	bool point_at = false, falloff = false;
-	diag_loc point_at_loc = kw.loc, falloff_loc = kw.loc;
+	diag_loc point_at_loc = kw, falloff_loc = kw;
+	if (names(p, VAL_LIGHT)) {
+		const value *v;
+		TRY(v = declared(p, VAL_LIGHT, "a light_source"));
+		l = *v->light;
+		l.loc = kw;
+		point_at = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL;
+	} else {
+		TRY(lang_vec3(p, "as the light position", &l.position));
+		if (lang_accept(p, LTK_COMMA)) { /* a colour led by no keyword: a float, a vector, a name */
+			lang_tok k = lang_peek(p)->kind;
+			if (k < LANG_FIRST_KEYWORD && k != LTK_RBRACE && k != LTK_UNSUPPORTED && k != LTK_EOF)
+				TRY(light_colour(p, &l.color));
+		}
+	}
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		if (starts_colour(p)) {
-			TRY(lang_color(p, "as the light colour", &l.color));
-			if (!(l.color.x >= 0 && l.color.y >= 0 && l.color.z >= 0))
-				return lang_error(p, t.loc, "light colour must be >= 0 in every channel");
+			TRY(light_colour(p, &l.color));
+			continue;
+		}
+		xform moved = xform_identity();
+		bool matched;
+		TRY(transform_item(p, &moved, &matched));
+		if (matched) {
+			l.position = xform_point(&moved, l.position);
+			l.point_at = xform_point(&moved, l.point_at);
 			continue;
 		}
 		switch (t.kind) {
@@ -1617,13 +1978,12 @@ static bool light_source(parser *p)
 			if (falloff && l.kind != SCENE_LIGHT_SPOT)
 				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight'");
 			if (l.kind == SCENE_LIGHT_SPOT && l.falloff_deg < l.cone_deg)
-				return lang_error(p, kw.loc, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
+				return lang_error(p, kw, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
 						  l.falloff_deg, l.cone_deg);
 			if ((l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL) &&
 			    !(d3_length(d3_sub(l.point_at, l.position)) > 0))
-				return lang_error(p, kw.loc, "point_at is the light position: the light has no direction");
-			if (!vecbuf_push(&p->sc->lights, &l))
-				return lang_error(p, kw.loc, "out of memory");
+				return lang_error(p, kw, "point_at is the light position: the light has no direction");
+			*out = l;
 			return true;
 		case LTK_KW_INTENSITY:
 			lang_advance(p);
@@ -1665,9 +2025,20 @@ static bool light_source(parser *p)
 			point_at = true, point_at_loc = t.loc;
 			break;
 		default:
-			return bad_item(p, open, "light_source", "a colour, intensity, radius, spotlight, parallel or point_at");
+			return bad_item(p, open, "light_source",
+					"a colour, intensity, radius, spotlight, parallel, point_at or a transform");
 		}
 	}
+}
+
+static bool light_source(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	scene_light l;
+	TRY(light_block(p, &l, kw.loc));
+	if (!vecbuf_push(&p->sc->lights, &l))
+		return lang_error(p, kw.loc, "out of memory");
+	return true;
 }
 
 /* background = "background" "{" colour "}" */
@@ -1676,14 +2047,36 @@ static bool background(parser *p)
 	lang_token kw = *lang_advance(p);
 	diag_loc open;
 	TRY(open_block(p, "background", &open));
-	TRY(physical_color(p, "as the background colour", "background colour", SCENE_COLOR_RADIANCE,
-			    &p->sc->background));
-	p->sc->has_background = true;
-	p->sc->background_loc = kw.loc;
+	vec3 c;
+	TRY(physical_color(p, "as the background colour", "background colour", SCENE_COLOR_RADIANCE, &c));
+	if (!p->sky_colour) { /* as POV-Ray: a sky_sphere hides the background */
+		p->sc->background = c;
+		p->sc->has_background = true;
+		p->sc->background_loc = kw.loc;
+	}
 	return lang_expect_close(p, open, "background");
 }
 
-/* sky_sphere = "sky_sphere" "{" "image" string { "intensity" float | "rotate" vector } "}" */
+/* sky_sphere { pigment { C } }: a sky of one colour is circe's background (a constant
+ * environment light), which it replaces, before or after, as POV-Ray's sky_sphere hides the
+ * background. An image pigment is refused: circe's sky image is `image`, mapped lat-long. */
+static bool sky_pigment(parser *p, diag_loc kw, const scene_material *pg, double intensity)
+{
+	if (pg->image)
+		return lang_error(p, pg->loc, "an image_map pigment in sky_sphere is not supported by circe: give the "
+					      "lat-long image as sky_sphere { image \"file\" }");
+	vec3 c = v3_scale(pg->color, (float)intensity);
+	if (!v3_is_finite(c))
+		return lang_error(p, kw, "sky_sphere intensity %g makes its colour overflow a float", intensity);
+	p->sc->background = c;
+	p->sc->has_background = true;
+	p->sc->background_loc = kw;
+	p->sky_colour = true;
+	return true;
+}
+
+/* sky_sphere = "sky_sphere" "{" ( "image" string | pigment ) { "intensity" float | "rotate" vector } "}"
+ * (one image or one pigment of a colour) */
 static bool sky_sphere(parser *p)
 {
 	lang_token kw = *lang_advance(p);
@@ -1691,16 +2084,27 @@ static bool sky_sphere(parser *p)
 	TRY(open_block(p, "sky_sphere", &open));
 	scene_sky_sphere *s = &p->sc->sky_sphere;
 	*s = (scene_sky_sphere){.loc = kw.loc, .intensity = 1};
+	scene_material *pg = NULL;
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
+			if (pg && s->image)
+				return lang_error(p, pg->loc, "sky_sphere has an 'image' and a pigment: give one");
+			if (pg)
+				return sky_pigment(p, kw.loc, pg, s->intensity);
 			if (!s->image)
-				return lang_error(p, kw.loc, "sky_sphere needs an 'image'");
+				return lang_error(p, kw.loc, "sky_sphere needs an 'image' or a pigment");
 			p->sc->has_sky_sphere = true;
 			return true;
+		case LTK_KW_PIGMENT:
+			if (pg)
+				return lang_error(p, t.loc, "a second pigment in sky_sphere (circe's sky has one colour)");
+			TRY(pg = new_part(p, t.loc));
+			TRY(pigment(p, pg, SCENE_COLOR_RADIANCE));
+			break;
 		case LTK_KW_IMAGE:
 			lang_advance(p);
 			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->image));
@@ -1717,8 +2121,57 @@ static bool sky_sphere(parser *p)
 			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
 			break;
 		default:
-			return bad_item(p, open, "sky_sphere", "image, intensity or rotate");
+			return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
 		}
+	}
+}
+
+/* default = "#default" "{" { texture | pigment | finish } "}"
+ * As POV-Ray 3.7: each item changes the default texture, which every texture made after it
+ * starts from (a texture { finish {...} } takes the default's pigment), and which an object
+ * placed after it without a texture receives (lang_statement). Each #default makes a new record,
+ * so the textures that took an earlier default keep it. */
+bool lang_default(parser *p)
+{
+	diag_loc open;
+	TRY(open_block(p, "#default", &open));
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		scene_material *d;
+		const scene_material *tex;
+		switch (t.kind) {
+		case LTK_RBRACE:
+			lang_advance(p);
+			return true;
+		case LTK_KW_TEXTURE:
+			TRY(texture(p, &tex, NULL));
+			if (tex->kind != MAT_TEXTURE)
+				return lang_error(p, t.loc, "#default needs a texture, but this one is a %s material",
+						  scene_material_kind_name(tex->kind));
+			p->default_tex = tex;
+			break;
+		case LTK_KW_PIGMENT:
+		case LTK_KW_FINISH:
+			TRY(d = new_texture(p, t.loc));
+			TRY(t.kind == LTK_KW_PIGMENT ? pigment(p, d, SCENE_COLOR_REFLECTANCE) : finish(p, d));
+			p->default_tex = d;
+			break;
+		default:
+			return bad_item(p, open, "#default", "texture, pigment or finish");
+		}
+	}
+}
+
+/* Objects placed at the top level without a texture take the #default one (POV-Ray 3.7 gives
+ * it when the object is placed, so a declared object placed after a #default takes it). */
+static void give_default(parser *p, size_t start)
+{
+	if (!p->default_tex)
+		return;
+	for (size_t i = start; i < p->sc->objects.len; i++) {
+		scene_object *o = &VECBUF_AT(&p->sc->objects, scene_object, i);
+		if (!o->material)
+			o->material = p->default_tex;
 	}
 }
 
@@ -1731,20 +2184,27 @@ bool lang_statement(parser *p)
 	case LTK_KW_LIGHT_SOURCE: return light_source(p);
 	case LTK_KW_BACKGROUND: return background(p);
 	case LTK_KW_SKY_SPHERE: return sky_sphere(p);
+	case LTK_KW_DEFAULT: /* POV-Ray 3.7 still reads the old `default {...}` as #default */
+		lang_advance(p);
+		return lang_default(p);
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
-		if (s && s->val.kind == VAL_OBJECT)
-			return lang_error(p, t->loc, "'%.*s' is a declared object: place it with object { %.*s }", (int)t->len,
-					  t->text, (int)t->len, t->text);
+		const char *kw = !s ? NULL : s->val.kind == VAL_OBJECT ? "object" : s->val.kind == VAL_LIGHT ? "light_source"
+					 : s->val.kind == VAL_CAMERA ? "camera" : NULL;
+		if (kw)
+			return lang_error(p, t->loc, "'%.*s' is a declared %s: place it with %s { %.*s }", (int)t->len,
+					  t->text, kw, kw, (int)t->len, t->text);
 		break;
 	}
 	default:
 		break;
 	}
 	bool matched;
+	size_t start = p->sc->objects.len;
 	TRY(object_item(p, &p->sc->objects, &matched));
 	if (!matched)
 		return lang_error_found(p, "expected a statement (camera, light_source, background, sky_sphere, "
 					   "global_settings or an object)");
+	give_default(p, start);
 	return true;
 }

@@ -10,6 +10,8 @@
 #declare V = <vlength(<3, 4, 0>), sin(0), clock>;
 #declare S = "tex.png";
 #declare C = color rgb <1, 0.5, 0.25>;
+// rule: deprecation
+#declare deprecated once "use Ball" OldBall = 1;
 // rule: block_value
 #declare Ball = sphere { 0, 1 }
 // rule: if, token
@@ -35,6 +37,11 @@
 #macro Grow(R, optional S) #declare R = R + 1; #end
 #declare Size = 1;
 Grow(Size) Grow(Size, 2)
+// rule: fopen, read, fclose, data_file, data_value, write
+#fopen Data "data/points.txt" read
+#read (Data, Count, Radius)
+#fclose Data
+#if (defined(Data)) #fopen Out "never.txt" write #write (Out, Count, "\n") #end
 // rule: include
 #include "walk.inc"
 // rule: global_settings, integer, ignored_setting, balanced
@@ -83,3 +90,13 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 // rule: postfix, member, colour_item, array, array_items, index, defined
 #declare Ar = array[2] { C.red, defined(Ar[0]) }
 #declare Ar[1] = (color rgbf <1, 1, 1, 0.5> transmit 0.25).filter;
+// rule: transform_item, transform, pigment_type, default
+#declare Turn = transform { rotate y * 90 translate x inverse }
+#declare Paint = pigment { rgb <1, 0, 0> }
+#declare Gloss = finish { specular 0.5 }
+#declare Glass = interior { ior 1.5 }
+#declare Eye = camera { location -z }
+#declare Lamp = light_source { y, 1 }
+light_source { Lamp translate x }
+#default { texture { pigment { Paint } } finish { Gloss } }
+sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }

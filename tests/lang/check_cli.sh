@@ -60,6 +60,39 @@ grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; 
 expect 0 "#debug and #warning" -- sh -c 'cd "$1" && "$2" check messages.pov' sh "$good" "$CIRCE"
 cmp -s "$tmp/err" "$good/messages.stderr" ||
 	{ echo "FAIL #debug/#warning output differs (expected, then got):"; cat "$good/messages.stderr" "$tmp/err"; fail=1; }
+# Uses of names declared deprecated warn exactly so (POV-Ray 3.7's rules); check still succeeds.
+expect 0 "#declare deprecated" -- sh -c 'cd "$1" && "$2" check deprecated.pov' sh "$good" "$CIRCE"
+cmp -s "$tmp/err" "$good/deprecated.stderr" ||
+	{ echo "FAIL deprecation warnings differ (expected, then got):"; cat "$good/deprecated.stderr" "$tmp/err"; fail=1; }
+# Data files: #read's warnings exactly so; #write writes as povray 3.7.0 does (floats %g, vectors
+# <a,b,...> and a blank, strings as they are), under check as under render; a file outside the
+# scene's folder is refused unless an -I folder holds it, and #read searches the -I folders.
+expect 0 "#fopen/#read" -- sh -c 'cd "$1" && "$2" check datafile.pov' sh "$good" "$CIRCE"
+cmp -s "$tmp/err" "$good/datafile.stderr" ||
+	{ echo "FAIL #read warnings differ (expected, then got):"; cat "$good/datafile.stderr" "$tmp/err"; fail=1; }
+mkdir "$tmp/scene" "$tmp/lib"
+cat >"$tmp/scene/write.pov" <<'EOF2'
+#fopen F "out.txt" write
+#write (F, 1.23456789, ",", <1, 2.5, 3>, ",", "\"str\"", ",\n", -1e10, ", ", <1, 2>, "\n")
+#fclose F
+#fopen F "out.txt" append
+#write (F, 7, "\n")
+#fclose F
+#fopen G "out.txt" read
+#read (G, A, B, C, D, E, H)
+#if (A != 1.23457 | H != 7 | defined(G)) #error "out.txt was not read back" #end
+sphere { B, A }
+EOF2
+expect 0 "#write" -- sh -c 'cd "$1" && "$2" check write.pov' sh "$tmp/scene" "$CIRCE"
+printf '1.23457,<1,2.5,3> ,"str",\n-1e+10, <1,2> \n7\n' | cmp -s - "$tmp/scene/out.txt" ||
+	{ echo "FAIL #write output:"; cat "$tmp/scene/out.txt"; fail=1; }
+printf '2\n' >"$tmp/lib/radius.txt"
+printf '#fopen F "../lib/radius.txt" read\n#read (F, R)\nsphere { 0, R }\n' >"$tmp/scene/up.pov"
+expect 3 "a data file outside the scene's folder" -- "$CIRCE" check "$tmp/scene/up.pov"
+grep -q "is outside the scene's folder and the -I folders" "$tmp/err" || { echo "FAIL outside message:"; cat "$tmp/err"; fail=1; }
+expect 0 "a data file in an -I folder" -- "$CIRCE" check -I "$tmp/lib" "$tmp/scene/up.pov"
+printf '#fopen F "radius.txt" read\n#read (F, R)\nsphere { 0, R }\n' >"$tmp/scene/search.pov"
+expect 0 "#fopen read searches the -I folders" -- "$CIRCE" check -I "$tmp/lib" "$tmp/scene/search.pov"
 # global_settings items circe does on its own: one warning each, exactly so, and the IR is that
 # of the scene without them (the lines between its "ignored" markers).
 expect 0 "ignored global_settings" -- sh -c 'cd "$1" && "$2" check --dump ignored_settings.pov' sh "$good" "$CIRCE"

@@ -1,0 +1,2 @@
+// A camera direction of length zero has no view.
+camera { location -z direction 0 }

@@ -1,2 +1,0 @@
-// POV-Ray directives circe lacks are named.
-#default { finish { ambient 0 } }
