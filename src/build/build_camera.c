@@ -28,6 +28,17 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 	cp.up = d3v(c->up);
 	cp.aperture = (float)c->aperture;
 	cp.focal_point = c->has_focal_point ? c->focal_point : cp.look_at;
+	cp.type = (cam_type)c->type;
+	cp.has_look_at = c->has_look_at;
+	cp.has_angle = c->has_angle;
+	cp.direction = c->has_direction ? d3v(c->direction) : v3s(0.0f);
+	if (!c->has_right)
+		cp.right = v3s(0.0f);
+	if (!c->has_up)
+		cp.up = v3s(0.0f);
+	cp.v_angle_deg = (float)c->v_angle_deg;
+	cp.has_xform = c->has_xform;
+	cp.xf = c->xf;
 	return cp;
 }
 
@@ -38,6 +49,15 @@ subd_camera scene_view(const scene *sc, const world_options *opt)
 	double angle_deg;
 	diag_loc loc;
 	cam_params cp = scene_cam(sc, &angle_deg, &loc);
+	cam c;
+	bool simple = cp.type == CAM_PERSPECTIVE && cp.has_look_at && !cp.has_xform && v3_length(cp.direction) == 0.0f;
+	if (!simple && cam_init(&c, &cp, opt->width, opt->height)) {
+		/* The derived frame; a wide projection's view is its perspective centre. */
+		float half_h = c.type == CAM_PERSPECTIVE ? c.half_h : tanf(0.25f * (float)M_PI);
+		return (subd_camera){.position = c.origin, .look = c.forward, .up = c.up,
+				     .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+				     .image_height = (uint32_t)opt->height};
+	}
 	double aspect = (double)opt->width / (double)opt->height;
 	double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
 	/* The view in double: a difference of positions far from the origin would cancel in float. */
@@ -57,8 +77,9 @@ bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d)
 	double angle_deg;
 	diag_loc loc;
 	cam_params cp = scene_cam(sc, &angle_deg, &loc);
-	if (!cam_init(&w->camera, &cp, opt->width, opt->height)) {
-		diag_error(d, loc, "the camera is degenerate (look_at at the location, sky along the view, or angle out of range)");
+	const char *why;
+	if (!cam_init_why(&w->camera, &cp, opt->width, opt->height, &why)) {
+		diag_error(d, loc, "the camera is degenerate: %s", why);
 		return false;
 	}
 	return true;

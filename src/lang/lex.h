@@ -22,13 +22,13 @@ enum {
 #define LANG_KEYWORDS(KW)                                                                           \
 	KW(ABS, "abs") KW(ACOS, "acos") KW(ANGLE, "angle") KW(ANISOTROPY, "anisotropy")                 \
 	KW(APERTURE, "aperture") KW(ASIN, "asin") KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN2, "atan2")  \
-	KW(BACKGROUND, "background") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
+	KW(BACKGROUND, "background") KW(BLUR_SAMPLES, "blur_samples") KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley")        \
 	KW(CAMERA, "camera") KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CIRCLE, "circle")    \
-	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CORNERS, "corners") KW(COS, "cos")  \
-	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole")        \
+	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") KW(CONFIDENCE, "confidence") KW(CORNERS, "corners") KW(COS, "cos")  \
+	KW(CREASES, "creases") KW(DEGREES, "degrees") KW(DIFFUSE, "diffuse") KW(DIPOLE, "dipole") KW(DIRECTION, "direction")        \
 	KW(DISK, "disk") KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only")              \
 	KW(EMISSION, "emission") KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices")          \
-	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FLOOR, "floor") \
+	KW(FACES, "faces") KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FINISH, "finish") KW(FISHEYE, "fisheye") KW(FLOOR, "floor") \
 	KW(FOCAL_POINT, "focal_point") KW(FULLCIRCLE, "fullcircle") KW(GAUSSIAN, "gaussian")            \
 	KW(GLOBAL_SETTINGS, "global_settings") KW(GROUP, "group") KW(IMAGE, "image")                    \
 	KW(IMAGE_MAP, "image_map") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(IOR, "ior")   \
@@ -38,18 +38,18 @@ enum {
 	KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") KW(MESH2, "mesh2") KW(METHOD, "method")  \
 	KW(MIN, "min") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO, "no") KW(NO_SHADOW, "no_shadow")          \
 	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")                              \
-	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(OFF, "off") KW(ON, "on") KW(PARALLEL, "parallel")              \
+	KW(NORMAL_VECTORS, "normal_vectors") KW(OBJECT, "object") KW(OFF, "off") KW(ON, "on") KW(ORTHOGRAPHIC, "orthographic") KW(PANORAMIC, "panoramic") KW(PARALLEL, "parallel")              \
 	KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment") KW(PLANE, "plane")            \
 	KW(PNG, "png") KW(POINT_AT, "point_at") KW(POW, "pow") KW(PRESET, "preset") KW(PROFILE, "profile") \
 	KW(RADIANS, "radians") KW(RADIUS, "radius") KW(RGB, "rgb") KW(RIGHT, "right")                    \
 	KW(ROTATE, "rotate") KW(ROUGHNESS, "roughness") KW(SCALE, "scale") KW(SCHEME, "scheme")          \
 	KW(SIGMA_A, "sigma_a") KW(SIGMA_S, "sigma_s") KW(SIN, "sin") KW(SKIN, "skin") KW(SKY, "sky")      \
 	KW(SKY_SPHERE, "sky_sphere") KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular")    \
-	KW(SPHERE, "sphere") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(STRENGTH, "strength")        \
+	KW(SPHERE, "sphere") KW(SPHERICAL, "spherical") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(STRENGTH, "strength")        \
 	KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUM_OF_GAUSSIANS, "sum_of_gaussians")        \
-	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle") KW(TRUE, "true")        \
+	KW(TAN, "tan") KW(TEXTURE, "texture") KW(TRANSLATE, "translate") KW(TRIANGLE, "triangle") KW(TRUE, "true") KW(ULTRA_WIDE_ANGLE, "ultra_wide_angle")        \
 	KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") KW(UV_INDICES, "uv_indices")            \
-	KW(UV_VECTORS, "uv_vectors") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERSION, "version") KW(VERTEX_VECTORS,            \
+	KW(UV_VECTORS, "uv_vectors") KW(VARIANCE, "variance") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERSION, "version") KW(VERTEX_VECTORS,            \
 	"vertex_vectors") KW(VLENGTH, "vlength") KW(VNORMALIZE, "vnormalize") KW(VOLUME, "volume")     \
 	KW(WAX, "wax") KW(X, "x") KW(Y, "y") KW(YES, "yes") KW(Z, "z")
 

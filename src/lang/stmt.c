@@ -516,7 +516,7 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 /* modifier = "translate" vector | "rotate" vector | "scale" ( float | vector )
  *          | "matrix" "<" float { "," float } ">" | material | texture | pigment | finish
  *          | interior | "no_shadow" */
-static bool modifier(parser *p, mods *m, bool *matched)
+static bool modifier_transform(parser *p, mods *m, bool *matched)
 {
 	lang_token t = *lang_peek(p);
 	dvec3 v;
@@ -555,6 +555,20 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		m->t = xform_then(m->t, x);
 		return true;
 	}
+	default:
+		*matched = false;
+		return true;
+	}
+}
+
+static bool modifier(parser *p, mods *m, bool *matched)
+{
+	lang_token t = *lang_peek(p);
+	TRY(modifier_transform(p, m, matched));
+	if (*matched)
+		return true;
+	*matched = true;
+	switch (t.kind) {
 	case LTK_KW_MATERIAL: {
 		const scene_material *mat;
 		TRY(material(p, &mat));
@@ -1466,9 +1480,51 @@ static bool global_settings(parser *p)
 	}
 }
 
-/* camera = "camera" "{" { "perspective" | "location" vector | "look_at" vector | "sky" vector
- *          | "angle" float | "right" vector | "up" vector | "aperture" float
- *          | "focal_point" vector } "}" */
+/* The camera's projection keyword, or -1. "cylinder" is not a circe keyword (the shape is not
+ * supported): it is read by its spelling here, followed by its number 1 to 4. */
+static int camera_type(parser *p, const lang_token *t, bool *ok)
+{
+	*ok = true;
+	switch (t->kind) {
+	case LTK_KW_PERSPECTIVE: return SCENE_CAM_PERSPECTIVE;
+	case LTK_KW_ORTHOGRAPHIC: return SCENE_CAM_ORTHOGRAPHIC;
+	case LTK_KW_FISHEYE: return SCENE_CAM_FISHEYE;
+	case LTK_KW_ULTRA_WIDE_ANGLE: return SCENE_CAM_ULTRA_WIDE_ANGLE;
+	case LTK_KW_PANORAMIC: return SCENE_CAM_PANORAMIC;
+	case LTK_KW_SPHERICAL: return SCENE_CAM_SPHERICAL;
+	default: break;
+	}
+	if (t->kind != LTK_UNSUPPORTED || t->len != 8 || memcmp(t->text, "cylinder", 8) != 0)
+		return -1;
+	lang_advance(p);
+	int64_t n;
+	if (!lang_int(p, "after 'cylinder'", 1, 4, &n)) {
+		*ok = false;
+		return -1;
+	}
+	return SCENE_CAM_CYLINDER_1 + (int)(n - 1);
+}
+
+/* A camera transform (translate, rotate, scale, matrix) into c->xf; *matched false when t is none. */
+static bool camera_transform(parser *p, scene_camera *c, bool *matched)
+{
+	mods m = {.t = xform_identity()};
+	TRY(modifier_transform(p, &m, matched));
+	if (*matched) {
+		c->xf = c->has_xform ? xform_then(c->xf, m.t) : m.t;
+		c->has_xform = true;
+	}
+	return true;
+}
+
+/* camera = "camera" "{" [ projection ] { "location" vector | "look_at" vector | "sky" vector
+ *          | "direction" vector | "angle" float [ "," float ] | "right" vector | "up" vector
+ *          | "aperture" float | "focal_point" vector | "blur_samples" float [ "," float ]
+ *          | "confidence" float | "variance" float | transform } "}"
+ * projection = "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle" | "panoramic"
+ *          | "cylinder" int | "spherical"
+ * As POV-Ray 3.7 (Parse_Camera), the order of the settings does not matter: angle applies after
+ * right and direction, look_at after angle, the transforms last (render/camera.c). */
 static bool camera(parser *p)
 {
 	lang_token kw = *lang_advance(p);
@@ -1486,41 +1542,103 @@ static bool camera(parser *p)
 			    .sky = d3(0, 1, 0),
 			    .right = d3(1.33, 0, 0),
 			    .up = d3(0, 1, 0),
+			    .direction = d3(0, 0, 1),
+			    .v_angle_deg = 180,
 			    .angle_deg = 67.380135}; /* POV-Ray's default: 2 atan(1.33 / 2) */
 	p->sc->has_camera = true;
+	bool first = true;
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		dvec3 *v = NULL;
+		bool ok, matched;
+		int type = camera_type(p, &t, &ok);
+		TRY(ok);
+		if (type >= 0) {
+			if (!first)
+				return lang_error(p, t.loc, "the projection ('%.*s') must come first in the camera, as in POV-Ray",
+						  (int)t.len, t.text);
+			if (type < SCENE_CAM_CYLINDER_1 || type > SCENE_CAM_CYLINDER_4)
+				lang_advance(p);
+			c->type = type;
+			if (type != SCENE_CAM_PERSPECTIVE && type != SCENE_CAM_ORTHOGRAPHIC)
+				c->angle_deg = type == SCENE_CAM_SPHERICAL ? 360 : 90; /* POV-Ray's Camera::Init */
+			first = false;
+			continue;
+		}
+		first = false;
+		TRY(camera_transform(p, c, &matched));
+		if (matched)
+			continue;
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
 			return true;
-		case LTK_KW_PERSPECTIVE:
-			lang_advance(p);
-			continue;
 		case LTK_KW_LOCATION: v = &c->location; break;
-		case LTK_KW_LOOK_AT: v = &c->look_at; break;
+		case LTK_KW_LOOK_AT:
+			v = &c->look_at;
+			c->has_look_at = true;
+			break;
 		case LTK_KW_SKY: v = &c->sky; break;
-		case LTK_KW_RIGHT: v = &c->right; break;
-		case LTK_KW_UP: v = &c->up; break;
+		case LTK_KW_RIGHT:
+			v = &c->right;
+			c->has_right = true;
+			break;
+		case LTK_KW_UP:
+			v = &c->up;
+			c->has_up = true;
+			break;
+		case LTK_KW_DIRECTION:
+			v = &c->direction;
+			c->has_direction = true;
+			break;
 		case LTK_KW_FOCAL_POINT:
 			v = &c->focal_point;
 			c->has_focal_point = true;
 			break;
-		case LTK_KW_ANGLE:
+		case LTK_KW_ANGLE: {
 			lang_advance(p);
 			TRY(lang_float(p, "after 'angle'", &x));
-			if (!(x > 0 && x < 180))
-				return lang_error(p, t.loc, "camera angle must be in (0, 180) degrees, found %g", x);
+			bool screen = c->type == SCENE_CAM_PERSPECTIVE || c->type == SCENE_CAM_ORTHOGRAPHIC;
+			if (!(x > 0 && x < (screen ? 180 : 360.000001)))
+				return lang_error(p, t.loc, "camera angle must be in (0, %s) degrees, found %g",
+						  screen ? "180" : "360]", x);
 			c->angle_deg = x;
+			c->has_angle = true;
+			if (c->type == SCENE_CAM_SPHERICAL) {
+				c->v_angle_deg = 0.5 * x; /* POV-Ray: the vertical half the horizontal */
+				if (lang_peek(p)->kind == LTK_COMMA) {
+					lang_advance(p);
+					diag_loc at = lang_peek(p)->loc;
+					TRY(lang_float(p, "after 'angle' h ','", &x));
+					if (!(x > 0 && x <= 180))
+						return lang_error(p, at, "spherical camera's vertical angle must be in (0, 180], found %g", x);
+					c->v_angle_deg = x;
+				}
+			}
 			continue;
+		}
 		case LTK_KW_APERTURE:
 			lang_advance(p);
 			TRY(lang_float(p, "after 'aperture'", &x));
 			if (x < 0)
 				return lang_error(p, t.loc, "aperture must be >= 0, found %g", x);
 			c->aperture = x;
+			continue;
+		case LTK_KW_BLUR_SAMPLES:
+			/* Accepted: circe is progressive, every sample a lens sample. */
+			lang_advance(p);
+			TRY(lang_float(p, "after 'blur_samples'", &x) && positive(p, t.loc, "blur_samples", x));
+			if (lang_peek(p)->kind == LTK_COMMA) {
+				lang_advance(p);
+				TRY(lang_float(p, "after 'blur_samples' min ','", &x));
+			}
+			continue;
+		case LTK_KW_CONFIDENCE:
+		case LTK_KW_VARIANCE:
+			/* Accepted: POV-Ray's adaptive stop for focal blur; circe samples until --spp. */
+			lang_advance(p);
+			TRY(lang_float(p, t.kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x));
 			continue;
 		default:
 			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ...)");

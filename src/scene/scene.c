@@ -220,6 +220,17 @@ static int validate_subdiv(const scene_geom *g, diag *d)
 
 static int validate_camera(const scene_camera *c, diag *d)
 {
+	/* POV-Ray's handedness, the sign of (up x direction) . right (Parse_Camera), must exist:
+	 * a zero or coplanar right, up, direction is degenerate with or without look_at. */
+	double rl = d3_length(c->right), ul = d3_length(c->up), dl = d3_length(c->direction);
+	if (!(rl > 0 && ul > 0 && dl > 0) ||
+	    !(fabs(d3_dot(d3_cross(c->up, c->direction), c->right)) > 1e-9 * rl * ul * dl)) {
+		diag_error(d, c->loc, "degenerate camera: right, up and direction do not span space (one is zero, or "
+				      "two are parallel)");
+		return 1;
+	}
+	if (!c->has_look_at)
+		return 0; /* the frame is direction, right, up */
 	dvec3 dir = d3_sub(c->look_at, c->location);
 	double len = d3_length(dir);
 	if (!(len > 0)) {
@@ -231,7 +242,7 @@ static int validate_camera(const scene_camera *c, diag *d)
 		diag_error(d, c->loc, "degenerate camera: sky is parallel to the view direction");
 		return 1;
 	}
-	if (!(c->angle_deg > 0 && c->angle_deg < 180)) {
+	if (c->type == 0 && !(c->angle_deg > 0 && c->angle_deg < 180)) {
 		diag_error(d, c->loc, "camera angle %g is outside (0, 180) degrees", c->angle_deg);
 		return 1;
 	}

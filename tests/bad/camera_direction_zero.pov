@@ -1,0 +1,1 @@
+camera { direction <0, 0, 0> }
