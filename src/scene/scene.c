@@ -478,6 +478,25 @@ static void dump_xform(FILE *o, const xform *t)
 	fputc('\n', o);
 }
 
+/* What the camera says beyond POV-Ray's perspective defaults; nothing for those. */
+static void dump_camera_more(FILE *o, const scene_camera *c)
+{
+	static const char *const types[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
+					    "panoramic", "cylinder 1", "cylinder 2", "cylinder 3",
+					    "cylinder 4", "spherical"};
+	if (c->type != SCENE_CAM_PERSPECTIVE)
+		fprintf(o, " %s", types[c->type]);
+	if (c->type == SCENE_CAM_SPHERICAL)
+		fprintf(o, " v_angle %g", c->v_angle_deg);
+	if (c->has_direction)
+		dump_d3(o, "direction", c->direction);
+	if (!c->has_look_at)
+		fprintf(o, " (no look_at)");
+	if (c->has_xform)
+		for (int r = 0; r < 3; r++)
+			fprintf(o, " m%d <%g, %g, %g, %g>", r, c->xf.m[r][0], c->xf.m[r][1], c->xf.m[r][2], c->xf.m[r][3]);
+}
+
 void scene_dump(const scene *s, FILE *o)
 {
 	fprintf(o, "global mm_per_unit %g max_trace_level %d assumed_gamma %g\n", s->global.mm_per_unit,
@@ -494,6 +513,7 @@ void scene_dump(const scene *s, FILE *o)
 		fprintf(o, " angle %g aperture %g", c->angle_deg, c->aperture);
 		if (c->has_focal_point)
 			dump_d3(o, "focal_point", c->focal_point);
+		dump_camera_more(o, c);
 		fputc('\n', o);
 	}
 	if (s->has_background) {
