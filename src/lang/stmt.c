@@ -1600,7 +1600,7 @@ static bool camera(parser *p)
 			lang_advance(p);
 			TRY(lang_float(p, "after 'angle'", &x));
 			bool screen = c->type == SCENE_CAM_PERSPECTIVE || c->type == SCENE_CAM_ORTHOGRAPHIC;
-			if (!(x > 0 && x < (screen ? 180 : 360.000001)))
+			if (!(x > 0 && (screen ? x < 180 : x <= 360)))
 				return lang_error(p, t.loc, "camera angle must be in (0, %s) degrees, found %g",
 						  screen ? "180" : "360]", x);
 			c->angle_deg = x;

@@ -1,6 +1,10 @@
-/* camera.c - POV-Ray's perspective camera. POV-Ray sets |direction| so that `angle` spans |right|:
- * half width = tan(angle / 2) at unit distance; the vertical extent follows |up| / |right|.
- * Handedness: in POV-Ray's left-handed frame right = sky x forward (x = y x z). */
+/* camera.c - POV-Ray's camera. POV-Ray sets |direction| so that `angle` spans |right|: half
+ * width = tan(angle / 2) at unit distance; the vertical extent follows |up| / |right|. Without an
+ * angle the half width is |right| / (2 |direction|). Handedness: in POV-Ray's left-handed frame
+ * right = sky x forward (x = y x z). The projections other than perspective follow
+ * TracePixel::CreateCameraRay and TracePixel::SetupCamera (POV-Ray 3.7,
+ * source/core/render/tracepixel.cpp; read, not copied): their screen vectors normalised where
+ * POV-Ray normalises them, |right| and |up| kept as the aspect they read. */
 #include "render/camera.h"
 
 #include "render/sampling.h"
@@ -74,7 +78,7 @@ static const char *cam_frame(cam *c, const cam_params *p, int width, int height)
 	} else {
 		/* No look_at: direction, right and up as given, not made orthogonal (POV-Ray's
 		 * sheared cameras). */
-		if (v3_length(dir0) < CAM_PARALLEL_SIN * fmaxf(right_len, up_len))
+		if (!(v3_length(dir0) > 0.0f))
 			return "direction is the zero vector";
 		c->forward = v3_normalize(dir0);
 		c->right = v3_normalize(right0);
@@ -96,21 +100,26 @@ static const char *cam_frame(cam *c, const cam_params *p, int width, int height)
 }
 
 /* The camera's own transform on the frame: points move, the screen vectors transform as
- * directions (POV-Ray's Camera::Transform: MTransPoint, MTransDirection). */
-static const char *cam_transform(cam *c, const xform *t)
+ * directions (POV-Ray's Camera::Transform: MTransPoint, MTransDirection), and |right|, |up| with
+ * them (SetupCamera reads them after the transform). An orthographic screen's half widths are
+ * lengths in the scene; the others' are per unit of forward. */
+static const char *cam_transform(cam *c, const xform *t, bool orthographic)
 {
 	dvec3 f = xform_vector(t, v3_to_d3(c->forward));
-	dvec3 r = xform_vector(t, v3_to_d3(v3_scale(c->right, c->half_w)));
-	dvec3 u = xform_vector(t, v3_to_d3(v3_scale(c->up, c->half_h)));
+	dvec3 r = xform_vector(t, v3_to_d3(c->right));
+	dvec3 u = xform_vector(t, v3_to_d3(c->up));
 	double fl = d3_length(f), rl = d3_length(r), ul = d3_length(u);
 	if (!(fl > 0.0 && rl > 0.0 && ul > 0.0))
 		return "its transform flattens it";
+	double per = orthographic ? 1.0 : fl;
 	c->origin = d3_to_v3(xform_point(t, v3_to_d3(c->origin)));
 	c->forward = d3_to_v3(d3_scale(f, 1.0 / fl));
 	c->right = d3_to_v3(d3_scale(r, 1.0 / rl));
 	c->up = d3_to_v3(d3_scale(u, 1.0 / ul));
-	c->half_w = (float)(rl / fl);
-	c->half_h = (float)(ul / fl);
+	c->half_w = (float)(c->half_w * rl / per);
+	c->half_h = (float)(c->half_h * ul / per);
+	c->len_right = (float)(c->len_right * rl);
+	c->len_up = (float)(c->len_up * ul);
 	return NULL;
 }
 
@@ -152,7 +161,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 	if (!*why && p->type == CAM_ORTHOGRAPHIC)
 		cam_orthographic(c, p);
 	if (!*why && p->has_xform)
-		*why = cam_transform(c, &p->xf);
+		*why = cam_transform(c, &p->xf, p->type == CAM_ORTHOGRAPHIC);
 	if (*why)
 		return false;
 	c->type = p->type;

@@ -1,6 +1,9 @@
-/* camera.h - POV-Ray's perspective camera: location, look_at, sky, angle, right/up, and a thin
- * lens (aperture, focal_point). Coordinates are POV-Ray's: left-handed, +y up, the default camera
- * at the origin looking along +z. Pixel (0,0) is the top-left corner of the image. */
+/* camera.h - POV-Ray's camera: location, look_at, sky, angle, direction, right/up, its own
+ * transform, the projections of POV-Ray 3.7 but omnimax, and a thin lens (aperture, focal_point).
+ * Coordinates are POV-Ray's: left-handed, +y up, the default camera at the origin looking along
+ * +z. Pixel (0,0) is the top-left corner of the image. grammar/README.md (Cameras) says what the
+ * scene means; this file is the one derivation of it (the render's camera and build_camera.c's
+ * view for tessellation). */
 #ifndef CIRCE_RENDER_CAMERA_H
 #define CIRCE_RENDER_CAMERA_H
 

@@ -61,6 +61,11 @@ static void test_projections(void)
 	q.look_at = d3(1, 2, 0);
 	CHECK(cam_init(&c, &q, 2, 2), "orthographic");
 	CHECK_RAY(&c, 0.5f, -1, v3(2, 0.5f, -5), v3(0, 0, 1), "orthographic right 4 up 3");
+	/* A camera scale scales the orthographic screen (and the location) with the scene. */
+	q.has_xform = xform_scale(d3(2, 2, 2), &q.xf);
+	CHECK(cam_init(&c, &q, 2, 2), "scaled orthographic");
+	CHECK_RAY(&c, 0.5f, -1, v3(4, 1, -10), v3(0, 0, 1), "orthographic scaled by 2");
+	q.has_xform = false;
 	/* With an angle: the perspective image's area at the look_at distance (5 tan 45 = 5). */
 	q.has_angle = true;
 	q.angle_deg = 90;
