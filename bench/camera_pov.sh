@@ -25,7 +25,9 @@ persp_transform|location <0, 0, -5> look_at <0, 0, 0> rotate <10, 20, 0> transla
 ortho_default|orthographic $L
 ortho_right_up|orthographic $L right 6*x up 4.5*y
 ortho_angle|orthographic $L angle 40
+ortho_scaled|orthographic $L right 6*x up 4.5*y scale 0.8
 fisheye|fisheye $L angle 180
+fisheye_square|fisheye $L angle 120 right x up y
 ultra_wide_angle|ultra_wide_angle $L angle 150
 panoramic|panoramic $L
 cylinder_1|cylinder 1 $L angle 150
