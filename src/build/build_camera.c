@@ -22,12 +22,18 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 	cp.sky = d3v(c->sky);
 	cp.angle_deg = (float)c->angle_deg;
 	/* POV-Ray's default right <1.33,0,0> is its 4:3 default image; circe fits the image
-	 * instead, unless the scene sets another right. */
-	bool default_right = c->right.x == 1.33 && c->right.y == 0.0 && c->right.z == 0.0;
-	cp.right = default_right ? v3s(0.0f) : d3v(c->right);
-	cp.up = d3v(c->up);
+	 * instead (square pixels at any size), unless the scene writes a right. */
+	cp.right = c->has_right ? d3v(c->right) : v3s(0.0f);
+	cp.up = c->has_up ? d3v(c->up) : v3s(0.0f);
 	cp.aperture = (float)c->aperture;
 	cp.focal_point = c->has_focal_point ? c->focal_point : cp.look_at;
+	cp.type = (cam_type)c->type;
+	cp.has_look_at = c->has_look_at;
+	cp.has_angle = c->has_angle;
+	cp.direction = c->has_direction ? d3v(c->direction) : v3s(0.0f);
+	cp.v_angle_deg = (float)c->v_angle_deg;
+	cp.has_xform = c->has_xform;
+	cp.xf = c->xf;
 	return cp;
 }
 
@@ -38,6 +44,20 @@ subd_camera scene_view(const scene *sc, const world_options *opt)
 	double angle_deg;
 	diag_loc loc;
 	cam_params cp = scene_cam(sc, &angle_deg, &loc);
+	cam c;
+	bool simple = cp.type == CAM_PERSPECTIVE && cp.has_look_at && !cp.has_xform && v3_length(cp.direction) == 0.0f;
+	if (!simple && cam_init(&c, &cp, opt->width, opt->height)) {
+		/* The derived frame. An orthographic screen as the perspective one of the same size
+		 * at the look_at distance; a wide projection as a 90 degree view, its centre's
+		 * pixel size roughly. */
+		double view = d3_length(d3_sub(cp.look_at, cp.location));
+		float half_h = c.type == CAM_PERSPECTIVE	 ? c.half_h
+			       : c.type == CAM_ORTHOGRAPHIC && view > 0.0 ? (float)(c.half_h / view)
+								       : 1.0f;
+		return (subd_camera){.position = c.origin, .look = c.forward, .up = c.up,
+				     .fov_y_deg = (float)(2.0 * atan(half_h) * 180.0 / M_PI),
+				     .image_height = (uint32_t)opt->height};
+	}
 	double aspect = (double)opt->width / (double)opt->height;
 	double half_h = tan(angle_deg * M_PI / 360.0) / aspect;
 	/* The view in double: a difference of positions far from the origin would cancel in float. */
@@ -57,8 +77,9 @@ bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d)
 	double angle_deg;
 	diag_loc loc;
 	cam_params cp = scene_cam(sc, &angle_deg, &loc);
-	if (!cam_init(&w->camera, &cp, opt->width, opt->height)) {
-		diag_error(d, loc, "the camera is degenerate (look_at at the location, sky along the view, or angle out of range)");
+	const char *why;
+	if (!cam_init_why(&w->camera, &cp, opt->width, opt->height, &why)) {
+		diag_error(d, loc, "the camera is degenerate: %s", why);
 		return false;
 	}
 	return true;

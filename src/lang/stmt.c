@@ -1796,37 +1796,56 @@ static bool global_settings(parser *p)
 	}
 }
 
-/* POV-Ray's camera `direction`: without look_at it is where the camera looks (look_at = location
- * + direction); without angle its length sets the field of view against right's, horizontal
- * angle = 2 atan(|right| / (2 |direction|)) (POV-Ray 3.7 documentation, "Camera": angle sets the
- * direction's length from right's). Applied at the block's end, as POV-Ray applies angle. */
-static bool camera_direction(parser *p, scene_camera *c, dvec3 dir, diag_loc at, bool look_at, bool angle)
+/* The camera's projection keyword, or -1. "cylinder" is not a circe keyword (the shape is not
+ * supported): it is read by its spelling here, followed by its number 1 to 4. */
+static int camera_type(parser *p, const lang_token *t, bool *ok)
 {
-	double d = d3_length(dir), r = d3_length(c->right);
-	if (!(d > 0))
-		return lang_error(p, at, "camera direction is the zero vector");
-	if (!look_at)
-		c->look_at = d3_add(c->location, dir);
-	if (!angle) {
-		double deg = 2 * atan(r / (2 * d)) * 180 / M_PI;
-		if (!(deg > 0 && deg < 180))
-			return lang_error(p, at, "camera direction and right give an angle of %g degrees, outside (0, 180)", deg);
-		c->angle_deg = deg;
+	*ok = true;
+	switch (t->kind) {
+	case LTK_KW_PERSPECTIVE: return SCENE_CAM_PERSPECTIVE;
+	case LTK_KW_ORTHOGRAPHIC: return SCENE_CAM_ORTHOGRAPHIC;
+	case LTK_KW_FISHEYE: return SCENE_CAM_FISHEYE;
+	case LTK_KW_ULTRA_WIDE_ANGLE: return SCENE_CAM_ULTRA_WIDE_ANGLE;
+	case LTK_KW_PANORAMIC: return SCENE_CAM_PANORAMIC;
+	case LTK_KW_SPHERICAL: return SCENE_CAM_SPHERICAL;
+	default: break;
+	}
+	if (t->kind != LTK_UNSUPPORTED || t->len != 8 || memcmp(t->text, "cylinder", 8) != 0)
+		return -1;
+	lang_advance(p);
+	int64_t n;
+	if (!lang_int(p, "after 'cylinder'", 1, 4, &n)) {
+		*ok = false;
+		return -1;
+	}
+	return SCENE_CAM_CYLINDER_1 + (int)(n - 1);
+}
+
+/* A camera transform (translate, rotate, scale, matrix, transform) into c->xf, applied after
+ * every other setting (render/camera.c); *matched false when the lookahead is none. */
+static bool camera_transform(parser *p, scene_camera *c, bool *matched)
+{
+	xform t = xform_identity();
+	TRY(transform_item(p, &t, matched));
+	if (*matched) {
+		c->xf = c->has_xform ? xform_then(c->xf, t) : t;
+		c->has_xform = true;
 	}
 	return true;
 }
 
-/* camera = "camera" "{" [ identifier ] { "perspective" | "location" vector | "look_at" vector
- *          | "direction" vector | "sky" vector | "angle" float | "right" vector | "up" vector
- *          | "aperture" float | "focal_point" vector | transform_item } "}"
- * A transform moves what was set before it (location, look_at, focal point; sky, right, up and
- * direction as directions).
- * Into *c, the keyword consumed (at kw). */
+/* camera = "camera" "{" [ projection ] { "location" vector | "look_at" vector | "sky" vector
+ *          | "direction" vector | "angle" float [ "," float ] | "right" vector | "up" vector
+ *          | "aperture" float | "focal_point" vector | "blur_samples" float [ "," float ]
+ *          | "confidence" float | "variance" float | transform } "}"
+ * (an identifier first: a declared camera, then modified)
+ * projection = "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle" | "panoramic"
+ *          | "cylinder" int | "spherical"
+ * As POV-Ray 3.7 (Parse_Camera), the order of the settings does not matter: angle applies after
+ * right and direction, look_at after angle, the transforms last (render/camera.c). */
 static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 {
-	diag_loc open, dir_loc = kw;
-	bool has_dir = false, has_look_at = false, has_angle = false;
-	dvec3 dir = d3(0, 0, 1);
+	diag_loc open;
 	TRY(open_block(p, "camera", &open));
 	*c = (scene_camera){.loc = kw,
 			    .location = d3(0, 0, 0),
@@ -1834,6 +1853,8 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 			    .sky = d3(0, 1, 0),
 			    .right = d3(1.33, 0, 0),
 			    .up = d3(0, 1, 0),
+			    .direction = d3(0, 0, 1),
+			    .v_angle_deg = 180,
 			    .angle_deg = 67.380135}; /* POV-Ray's default: 2 atan(1.33 / 2) */
 	if (lang_peek(p)->kind == LTK_IDENT) {
 		const value *v;
@@ -1841,60 +1862,99 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		*c = *v->cam;
 		c->loc = kw;
 	}
+	bool first = true;
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		dvec3 *v = NULL;
-		xform moved = xform_identity();
-		bool matched;
-		TRY(transform_item(p, &moved, &matched));
-		if (matched) { /* moves the camera as set so far, as POV-Ray's camera transforms do */
-			c->location = xform_point(&moved, c->location);
-			c->look_at = xform_point(&moved, c->look_at);
-			c->focal_point = xform_point(&moved, c->focal_point);
-			c->sky = xform_vector(&moved, c->sky);
-			c->right = xform_vector(&moved, c->right);
-			c->up = xform_vector(&moved, c->up);
-			dir = xform_vector(&moved, dir);
+		bool ok, matched;
+		int type = camera_type(p, &t, &ok);
+		TRY(ok);
+		if (type >= 0) {
+			if (!first)
+				return lang_error(p, t.loc, "the projection ('%.*s') must come first in the camera, as in POV-Ray",
+						  (int)t.len, t.text);
+			if (type < SCENE_CAM_CYLINDER_1 || type > SCENE_CAM_CYLINDER_4)
+				lang_advance(p);
+			c->type = type;
+			if (type != SCENE_CAM_PERSPECTIVE && type != SCENE_CAM_ORTHOGRAPHIC)
+				c->angle_deg = type == SCENE_CAM_SPHERICAL ? 360 : 90; /* POV-Ray's Camera::Init */
+			first = false;
 			continue;
 		}
+		first = false;
+		TRY(camera_transform(p, c, &matched));
+		if (matched)
+			continue;
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			return !has_dir || camera_direction(p, c, dir, dir_loc, has_look_at, has_angle);
-		case LTK_KW_PERSPECTIVE:
-			lang_advance(p);
-			continue;
+			return true;
 		case LTK_KW_LOCATION: v = &c->location; break;
 		case LTK_KW_LOOK_AT:
 			v = &c->look_at;
-			has_look_at = true;
-			break;
-		case LTK_KW_DIRECTION:
-			v = &dir;
-			has_dir = true, dir_loc = t.loc;
+			c->has_look_at = true;
 			break;
 		case LTK_KW_SKY: v = &c->sky; break;
-		case LTK_KW_RIGHT: v = &c->right; break;
-		case LTK_KW_UP: v = &c->up; break;
+		case LTK_KW_RIGHT:
+			v = &c->right;
+			c->has_right = true;
+			break;
+		case LTK_KW_UP:
+			v = &c->up;
+			c->has_up = true;
+			break;
+		case LTK_KW_DIRECTION:
+			v = &c->direction;
+			c->has_direction = true;
+			break;
 		case LTK_KW_FOCAL_POINT:
 			v = &c->focal_point;
 			c->has_focal_point = true;
 			break;
-		case LTK_KW_ANGLE:
+		case LTK_KW_ANGLE: {
 			lang_advance(p);
 			TRY(lang_float(p, "after 'angle'", &x));
-			if (!(x > 0 && x < 180))
-				return lang_error(p, t.loc, "camera angle must be in (0, 180) degrees, found %g", x);
+			bool screen = c->type == SCENE_CAM_PERSPECTIVE || c->type == SCENE_CAM_ORTHOGRAPHIC;
+			if (!(x > 0 && (screen ? x < 180 : x <= 360)))
+				return lang_error(p, t.loc, "camera angle must be in (0, %s) degrees, found %g",
+						  screen ? "180" : "360]", x);
 			c->angle_deg = x;
-			has_angle = true;
+			c->has_angle = true;
+			if (c->type == SCENE_CAM_SPHERICAL) {
+				c->v_angle_deg = 0.5 * x; /* POV-Ray: the vertical half the horizontal */
+				if (lang_peek(p)->kind == LTK_COMMA) {
+					lang_advance(p);
+					diag_loc at = lang_peek(p)->loc;
+					TRY(lang_float(p, "after 'angle' h ','", &x));
+					if (!(x > 0 && x <= 180))
+						return lang_error(p, at, "spherical camera's vertical angle must be in (0, 180], found %g", x);
+					c->v_angle_deg = x;
+				}
+			}
 			continue;
+		}
 		case LTK_KW_APERTURE:
 			lang_advance(p);
 			TRY(lang_float(p, "after 'aperture'", &x));
 			if (x < 0)
 				return lang_error(p, t.loc, "aperture must be >= 0, found %g", x);
 			c->aperture = x;
+			continue;
+		case LTK_KW_BLUR_SAMPLES:
+			/* Accepted: circe is progressive, every sample a lens sample. */
+			lang_advance(p);
+			TRY(lang_float(p, "after 'blur_samples'", &x) && positive(p, t.loc, "blur_samples", x));
+			if (lang_peek(p)->kind == LTK_COMMA) {
+				lang_advance(p);
+				TRY(lang_float(p, "after 'blur_samples' min ','", &x));
+			}
+			continue;
+		case LTK_KW_CONFIDENCE:
+		case LTK_KW_VARIANCE:
+			/* Accepted: POV-Ray's adaptive stop for focal blur; circe samples until --spp. */
+			lang_advance(p);
+			TRY(lang_float(p, t.kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x));
 			continue;
 		default:
 			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ..., a transform)");

@@ -1,6 +1,10 @@
-/* camera.c - POV-Ray's perspective camera. POV-Ray sets |direction| so that `angle` spans |right|:
- * half width = tan(angle / 2) at unit distance; the vertical extent follows |up| / |right|.
- * Handedness: in POV-Ray's left-handed frame right = sky x forward (x = y x z). */
+/* camera.c - POV-Ray's camera. POV-Ray sets |direction| so that `angle` spans |right|: half
+ * width = tan(angle / 2) at unit distance; the vertical extent follows |up| / |right|. Without an
+ * angle the half width is |right| / (2 |direction|). Handedness: in POV-Ray's left-handed frame
+ * right = sky x forward (x = y x z). The projections other than perspective follow
+ * TracePixel::CreateCameraRay and TracePixel::SetupCamera (POV-Ray 3.7,
+ * source/core/render/tracepixel.cpp; read, not copied): their screen vectors normalised where
+ * POV-Ray normalises them, |right| and |up| kept as the aspect they read. */
 #include "render/camera.h"
 
 #include "render/sampling.h"
@@ -8,6 +12,12 @@
 /* Below this sine of the angle between the view and the sky they are treated as parallel: the
  * frame would be meaningless. Dimensionless (both are unit vectors), so it holds at any scale. */
 #define CAM_PARALLEL_SIN 1e-6
+/* The thin lens refocuses only rays within about 89.4 degrees of forward: the focal plane's
+ * distance along a ray is focal_distance / cos, unbounded at 90 degrees. */
+#define CAM_LENS_MIN_COS 1e-2f
+/* Panoramic's tan(y0) is kept finite: POV-Ray's BOUND_HUGE at the poles; this bound is a
+ * millionth of a radian short of them, tan ~ 1e6, enough to look straight up. */
+#define CAM_PANORAMIC_MAX (0.5f * RENDER_PI - 1e-6f)
 
 cam_params cam_params_default(void)
 {
@@ -20,52 +30,250 @@ cam_params cam_params_default(void)
 	    .up = v3(0, 0, 0),
 	    .aperture = 0.0f,
 	    .focal_point = d3(0, 0, 1),
+	    .type = CAM_PERSPECTIVE,
+	    .has_look_at = true,
+	    .has_angle = true,
+	    .v_angle_deg = 180.0f,
 	};
 }
 
-bool cam_init(cam *c, const cam_params *p, int width, int height)
+/* POV-Ray's camera, as its parser applies the modifiers whatever their order
+ * (source/parser/parser.cpp, Parse_Camera, language >= 3.5): right, direction, angle (sets
+ * |direction| = |right| / (2 tan(angle / 2))), up, sky, location, look_at (re-aims direction,
+ * right = sky x direction and up = direction x right, keeping their lengths and the handedness
+ * sign of (up x direction) . right), then the camera's transforms. Here the frame is kept as unit
+ * vectors and the half widths at unit forward distance, the same rays. */
+static const char *cam_frame(cam *c, const cam_params *p, int width, int height)
 {
-	if (width <= 0 || height <= 0 || !(p->angle_deg > 0.0f && p->angle_deg < 180.0f))
-		return false;
-	/* The frame in double, from the positions in double: only a view of length exactly 0 (or
-	 * one that overflows) has no direction, whatever the scene's scale. */
-	double view_len = d3_length(d3_sub(p->look_at, p->location));
-	dvec3 sky = v3_to_d3(p->sky);
-	double sky_len = d3_length(sky);
-	if (!(view_len > 0.0) || !isfinite(view_len) || !(sky_len > 0.0) || !isfinite(sky_len))
-		return false;
-	dvec3 forward = d3_scale(d3_sub(p->look_at, p->location), 1.0 / view_len);
-	dvec3 r = d3_cross(d3_scale(sky, 1.0 / sky_len), forward);
-	double r_len = d3_length(r);
-	if (!(r_len >= CAM_PARALLEL_SIN))
-		return false;
-	dvec3 right = d3_scale(r, 1.0 / r_len);
-	c->forward = d3_to_v3(forward);
-	c->right = d3_to_v3(right);
-	c->up = d3_to_v3(d3_cross(forward, right));
-	c->origin = d3_to_v3(p->location);
 	float right_len = v3_length(p->right) > 0.0f ? v3_length(p->right) : (float)width / (float)height;
 	float up_len = v3_length(p->up) > 0.0f ? v3_length(p->up) : 1.0f;
-	/* POV-Ray's handedness test on the vectors as given, before look_at: with the default
-	 * direction +z and up +y, a right along -x is a right-handed (mirrored) camera. */
+	vec3 dir0 = v3_length(p->direction) > 0.0f ? p->direction : v3(0, 0, 1);
 	vec3 up0 = v3_length(p->up) > 0.0f ? p->up : v3(0, 1, 0);
-	if (v3_length(p->right) > 0.0f && v3_dot(v3_cross(up0, v3(0, 0, 1)), p->right) < 0.0f)
-		c->right = v3_neg(c->right);
-	c->half_w = tanf(0.5f * p->angle_deg * RENDER_PI / 180.0f);
+	vec3 right0 = v3_length(p->right) > 0.0f ? p->right : v3(1, 0, 0);
+	if (p->has_look_at) {
+		/* The frame in double, from the positions in double: only a view of length exactly 0
+		 * (or one that overflows) has no direction, whatever the scene's scale. */
+		double view_len = d3_length(d3_sub(p->look_at, p->location));
+		dvec3 sky = v3_to_d3(p->sky);
+		double sky_len = d3_length(sky);
+		if (!(view_len > 0.0) || !isfinite(view_len))
+			return "look_at is the camera's location";
+		if (!(sky_len > 0.0) || !isfinite(sky_len))
+			return "sky is the zero vector";
+		dvec3 forward = d3_scale(d3_sub(p->look_at, p->location), 1.0 / view_len);
+		dvec3 r = d3_cross(d3_scale(sky, 1.0 / sky_len), forward);
+		double r_len = d3_length(r);
+		if (!(r_len >= CAM_PARALLEL_SIN))
+			return "sky is parallel to the view direction";
+		dvec3 right = d3_scale(r, 1.0 / r_len);
+		c->forward = d3_to_v3(forward);
+		c->right = d3_to_v3(right);
+		c->up = d3_to_v3(d3_cross(forward, right));
+		c->focal_distance = (float)d3_dot(d3_sub(p->focal_point, p->location), forward);
+		/* POV-Ray's handedness test on the vectors as given, before look_at: with the
+		 * default direction +z and up +y, a right along -x is a right-handed (mirrored)
+		 * camera. */
+		if (v3_length(p->right) > 0.0f && v3_dot(v3_cross(up0, dir0), p->right) < 0.0f)
+			c->right = v3_neg(c->right);
+	} else {
+		/* No look_at: direction, right and up as given, not made orthogonal (POV-Ray's
+		 * sheared cameras). */
+		if (!(v3_length(dir0) > 0.0f))
+			return "direction is the zero vector";
+		c->forward = v3_normalize(dir0);
+		c->right = v3_normalize(right0);
+		c->up = v3_normalize(up0);
+		if (v3_length(v3_cross(c->right, c->up)) < CAM_PARALLEL_SIN ||
+		    fabsf(v3_dot(v3_cross(c->right, c->up), c->forward)) < CAM_PARALLEL_SIN)
+			return "direction, right and up do not span space";
+		c->focal_distance = (float)d3_dot(d3_sub(p->focal_point, p->location), v3_to_d3(c->forward));
+	}
+	c->origin = d3_to_v3(p->location);
+	if (p->has_angle)
+		c->half_w = tanf(0.5f * p->angle_deg * RENDER_PI / 180.0f);
+	else
+		c->half_w = 0.5f * right_len / v3_length(dir0); /* POV-Ray: x0 in [-0.5, 0.5] of right */
 	c->half_h = c->half_w * up_len / right_len;
-	c->lens_radius = 0.5f * fmaxf(p->aperture, 0.0f);
-	c->focal_distance = (float)d3_dot(d3_sub(p->focal_point, p->location), forward);
-	if (c->lens_radius > 0.0f && !(c->focal_distance > 0.0f))
+	c->len_right = right_len;
+	c->len_up = up_len;
+	return NULL;
+}
+
+/* The camera's own transform on the frame: points move, the screen vectors transform as
+ * directions (POV-Ray's Camera::Transform: MTransPoint, MTransDirection), and |right|, |up| with
+ * them (SetupCamera reads them after the transform). An orthographic screen's half widths are
+ * lengths in the scene; the others' are per unit of forward. */
+static const char *cam_transform(cam *c, const xform *t, bool orthographic)
+{
+	dvec3 f = xform_vector(t, v3_to_d3(c->forward));
+	dvec3 r = xform_vector(t, v3_to_d3(c->right));
+	dvec3 u = xform_vector(t, v3_to_d3(c->up));
+	double fl = d3_length(f), rl = d3_length(r), ul = d3_length(u);
+	if (!(fl > 0.0 && rl > 0.0 && ul > 0.0))
+		return "its transform flattens it";
+	double per = orthographic ? 1.0 : fl;
+	c->origin = d3_to_v3(xform_point(t, v3_to_d3(c->origin)));
+	c->forward = d3_to_v3(d3_scale(f, 1.0 / fl));
+	c->right = d3_to_v3(d3_scale(r, 1.0 / rl));
+	c->up = d3_to_v3(d3_scale(u, 1.0 / ul));
+	c->half_w = (float)(c->half_w * rl / per);
+	c->half_h = (float)(c->half_h * ul / per);
+	c->len_right = (float)(c->len_right * rl);
+	c->len_up = (float)(c->len_up * ul);
+	return NULL;
+}
+
+/* POV-Ray's orthographic size (Parse_Camera, "apply orthographic"): with neither up nor right
+ * given, or with an angle, right and up are scaled by |look_at - location| / |direction|, the
+ * perspective camera's image area at the look_at distance; otherwise they are the screen's
+ * size in scene units. */
+static void cam_orthographic(cam *c, const cam_params *p)
+{
+	bool given = v3_length(p->right) > 0.0f || v3_length(p->up) > 0.0f;
+	if (!given || p->has_angle) {
+		float k = (float)d3_length(d3_sub(p->look_at, p->location));
+		c->half_w *= k;
+		c->half_h *= k;
+	} else {
+		c->half_w = 0.5f * c->len_right;
+		c->half_h = 0.5f * c->len_up;
+	}
+}
+
+bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char **why)
+{
+	bool screen = p->type == CAM_PERSPECTIVE || p->type == CAM_ORTHOGRAPHIC;
+	*why = NULL;
+	if (width <= 0 || height <= 0)
+		*why = "the image has no pixels";
+	else if (screen && !(p->angle_deg > 0.0f && p->angle_deg < 180.0f))
+		*why = "its angle is outside (0, 180) degrees";
+	else if (!(p->angle_deg > 0.0f && p->angle_deg <= 360.0f))
+		*why = "its angle is outside (0, 360] degrees";
+	else if (p->type == CAM_SPHERICAL && !(p->v_angle_deg > 0.0f && p->v_angle_deg <= 180.0f))
+		*why = "its vertical angle is outside (0, 180] degrees";
+	if (*why)
 		return false;
+	cam_params q = *p;
+	if (p->type != CAM_PERSPECTIVE && p->type != CAM_ORTHOGRAPHIC)
+		q.has_angle = false; /* the angle is the projection's own, not the screen's */
+	*why = cam_frame(c, &q, width, height);
+	if (!*why && p->type == CAM_ORTHOGRAPHIC)
+		cam_orthographic(c, p);
+	if (!*why && p->has_xform)
+		*why = cam_transform(c, &p->xf, p->type == CAM_ORTHOGRAPHIC);
+	if (*why)
+		return false;
+	c->type = p->type;
+	c->angle = p->angle_deg * RENDER_PI / 180.0f;
+	c->v_angle = p->v_angle_deg * RENDER_PI / 180.0f;
+	c->lens_radius = 0.5f * fmaxf(p->aperture, 0.0f);
+	if (c->lens_radius > 0.0f && !(c->focal_distance > 0.0f)) {
+		*why = "focal_point is not in front of it";
+		return false;
+	}
 	c->width = width;
 	c->height = height;
 	return true;
 }
 
-render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u)
+bool cam_init(cam *c, const cam_params *p, int width, int height)
 {
-	float sx = 2.0f * (((float)px + pixel_u.x) / (float)c->width) - 1.0f;  /* -1 left, +1 right */
-	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
+	const char *why;
+	return cam_init_why(c, p, width, height, &why);
+}
+
+/* The thin lens for the projections other than perspective: the ray through a lens point meets
+ * the pinhole ray on the focal plane (distance focal_distance along forward); a ray that does not
+ * run forward (wide projections) keeps its pinhole. */
+static render_ray cam_lens(const cam *c, render_ray ray, vec2 lens_u)
+{
+	float along = v3_dot(ray.d, c->forward);
+	if (!(c->lens_radius > 0.0f) || !(along > CAM_LENS_MIN_COS))
+		return ray;
+	vec3 focus = v3_madd(ray.o, ray.d, c->focal_distance / along);
+	vec2 l = render_concentric_disk(lens_u);
+	vec3 o = v3_madd(v3_madd(ray.o, c->right, l.x * c->lens_radius), c->up, l.y * c->lens_radius);
+	return (render_ray){o, v3_normalize(v3_sub(focus, o))};
+}
+
+/* A direction from the frame: a along right, b along up, f along forward. */
+static vec3 cam_dir(const cam *c, float a, float b, float f)
+{
+	return v3_normalize(v3_madd(v3_madd(v3_scale(c->forward, f), c->right, a), c->up, b));
+}
+
+/* The projections of TracePixel::CreateCameraRay (POV-Ray 3.7, tracepixel.cpp), with sx, sy the
+ * image point in [-1, 1] (POV-Ray's x0, y0 are sx / 2, sy / 2 for most). False: no ray. */
+static bool cam_project(const cam *c, float sx, float sy, render_ray *ray)
+{
+	ray->o = c->origin;
+	switch (c->type) {
+	case CAM_ORTHOGRAPHIC:
+		ray->o = v3_madd(v3_madd(c->origin, c->right, sx * c->half_w), c->up, sy * c->half_h);
+		ray->d = c->forward;
+		return true;
+	case CAM_FISHEYE: {
+		/* x0 = sx |right|, y0 = sy |up|; outside the unit circle no ray; the polar angle
+		 * rad * angle / 2 from forward. */
+		float x = sx * c->len_right, y = sy * c->len_up, rad = sqrtf(x * x + y * y);
+		if (rad > 1.0f)
+			return false;
+		float phi = rad > 0.0f ? atan2f(y, x) : 0.0f, theta = 0.5f * rad * c->angle;
+		ray->d = cam_dir(c, cosf(phi) * sinf(theta), sinf(phi) * sinf(theta), cosf(theta));
+		return true;
+	}
+	case CAM_ULTRA_WIDE_ANGLE: {
+		/* x0 = sx / 2 angle, y0 = sy / 2 angle |up| / |right|. */
+		float x = 0.5f * sx * c->angle, y = 0.5f * sy * c->angle * c->len_up / c->len_right;
+		ray->d = cam_dir(c, sinf(x), sinf(y), cosf(x) * cosf(y));
+		return true;
+	}
+	case CAM_PANORAMIC: {
+		/* Graphics Gems III's: x0 = (1 - x / width) pi across a half turn, y0 = sy pi / 2
+		 * through tan; the screen vectors at their lengths (2 half_w right, 2 half_h up). */
+		float x = 0.5f * (1.0f - sx) * RENDER_PI;
+		float y = fminf(fmaxf(0.5f * sy * RENDER_PI, -CAM_PANORAMIC_MAX), CAM_PANORAMIC_MAX);
+		ray->d = cam_dir(c, cosf(x) * 2.0f * c->half_w, tanf(y) * 2.0f * c->half_h, sinf(x));
+		return true;
+	}
+	case CAM_CYLINDER_1:
+	case CAM_CYLINDER_3: {
+		/* The axis along up: x0 = sx / 2 angle around it, y0 = sy / 2 |up| along it. */
+		float x = 0.5f * sx * c->angle, y = 0.5f * sy * c->len_up;
+		if (c->type == CAM_CYLINDER_1) {
+			ray->d = cam_dir(c, sinf(x), y, cosf(x));
+		} else {
+			ray->d = cam_dir(c, sinf(x), 0.0f, cosf(x));
+			ray->o = v3_madd(c->origin, c->up, y);
+		}
+		return true;
+	}
+	case CAM_CYLINDER_2:
+	case CAM_CYLINDER_4: {
+		/* The axis along right: y0 = sy / 2 angle around it, x0 = sx / 2 |right| along it. */
+		float y = 0.5f * sy * c->angle, x = 0.5f * sx * c->len_right;
+		if (c->type == CAM_CYLINDER_2) {
+			ray->d = cam_dir(c, x, sinf(y), cosf(y));
+		} else {
+			ray->d = cam_dir(c, 0.0f, sinf(y), cosf(y));
+			ray->o = v3_madd(c->origin, c->right, x);
+		}
+		return true;
+	}
+	case CAM_SPHERICAL: {
+		/* Latitude sy / 2 v_angle about right, then longitude sx / 2 h_angle about up. */
+		float lon = 0.5f * sx * c->angle, lat = 0.5f * sy * c->v_angle;
+		ray->d = cam_dir(c, cosf(lat) * sinf(lon), sinf(lat), cosf(lat) * cosf(lon));
+		return true;
+	}
+	case CAM_PERSPECTIVE: break;
+	}
+	return false;
+}
+
+static render_ray cam_perspective(const cam *c, float sx, float sy, vec2 lens_u)
+{
 	vec3 d = v3_madd(v3_madd(c->forward, c->right, sx * c->half_w), c->up, sy * c->half_h);
 	render_ray ray = {c->origin, v3_normalize(d)};
 	if (c->lens_radius > 0.0f) {
@@ -78,4 +286,26 @@ render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u)
 		ray.d = v3_normalize(v3_sub(focus, o));
 	}
 	return ray;
+}
+
+bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_ray *out)
+{
+	float sx = 2.0f * (((float)px + pixel_u.x) / (float)c->width) - 1.0f;  /* -1 left, +1 right */
+	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
+	if (c->type == CAM_PERSPECTIVE) {
+		*out = cam_perspective(c, sx, sy, lens_u);
+		return true;
+	}
+	if (!cam_project(c, sx, sy, out))
+		return false;
+	*out = cam_lens(c, *out, lens_u);
+	return true;
+}
+
+render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u)
+{
+	render_ray r;
+	if (!cam_sample(c, px, py, pixel_u, lens_u, &r))
+		r = (render_ray){c->origin, c->forward};
+	return r;
 }

@@ -1,6 +1,9 @@
-/* camera.h - POV-Ray's perspective camera: location, look_at, sky, angle, right/up, and a thin
- * lens (aperture, focal_point). Coordinates are POV-Ray's: left-handed, +y up, the default camera
- * at the origin looking along +z. Pixel (0,0) is the top-left corner of the image. */
+/* camera.h - POV-Ray's camera: location, look_at, sky, angle, direction, right/up, its own
+ * transform, the projections of POV-Ray 3.7 but omnimax, and a thin lens (aperture, focal_point).
+ * Coordinates are POV-Ray's: left-handed, +y up, the default camera at the origin looking along
+ * +z. Pixel (0,0) is the top-left corner of the image. grammar/README.md (Cameras) says what the
+ * scene means; this file is the one derivation of it (the render's camera and build_camera.c's
+ * view for tessellation). */
 #ifndef CIRCE_RENDER_CAMERA_H
 #define CIRCE_RENDER_CAMERA_H
 
@@ -12,6 +15,20 @@
 typedef struct render_ray {
 	vec3 o, d;
 } render_ray;
+
+/* POV-Ray's projections (source/core/render/tracepixel.cpp, TracePixel::CreateCameraRay). */
+typedef enum cam_type {
+	CAM_PERSPECTIVE,
+	CAM_ORTHOGRAPHIC,
+	CAM_FISHEYE,
+	CAM_ULTRA_WIDE_ANGLE,
+	CAM_PANORAMIC,
+	CAM_CYLINDER_1, /* axis along up */
+	CAM_CYLINDER_2, /* axis along right */
+	CAM_CYLINDER_3, /* axis along up, orthographic along up */
+	CAM_CYLINDER_4, /* axis along right, orthographic along right */
+	CAM_SPHERICAL,
+} cam_type;
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are
  * doubles, as the scene gives them: the view look_at - location and the focal distance are
@@ -27,13 +44,26 @@ typedef struct cam_params {
 	vec3 up;	  /* POV-Ray's up: only its length counts (the zero vector: 1) */
 	float aperture;	   /* lens diameter in scene units; 0 is a pinhole */
 	dvec3 focal_point; /* the plane through it, facing the camera, is in focus */
+	cam_type type;	   /* default CAM_PERSPECTIVE */
+	bool has_look_at;  /* false: the frame is direction, right, up as given (POV-Ray without
+			      look_at; sky unused); default true */
+	bool has_angle;	   /* false: the width comes from |right| / |direction| (default true) */
+	vec3 direction;	   /* the zero vector: <0,0,1> */
+	float v_angle_deg; /* spherical: the vertical field of view (angle_deg the horizontal) */
+	bool has_xform;	   /* the camera's own translate/rotate/scale/matrix, applied last */
+	xform xf;
 } cam_params;
 
 /* The ready camera: an orthonormal frame and the screen vectors at unit forward distance. */
 typedef struct cam {
 	vec3 origin;
 	vec3 forward, right, up; /* unit vectors */
-	float half_w, half_h;	 /* screen half extents at distance 1 along forward */
+	float half_w, half_h;	 /* screen half extents at distance 1 along forward (orthographic:
+				    in scene units) */
+	float len_right, len_up; /* POV-Ray's |right| and |up|: the other projections' aspect */
+	float angle;		 /* the projections' angle in radians (spherical: horizontal) */
+	float v_angle;		 /* spherical: vertical, radians */
+	cam_type type;
 	float lens_radius, focal_distance;
 	int width, height;
 } cam;
@@ -44,8 +74,13 @@ cam_params cam_params_default(void);
  * Nothing depends on the scene's scale: a camera 1e-9 from its look_at is as good as one 1e9
  * away, and so is one at 1e8 looking at a point 1 away. */
 bool cam_init(cam *c, const cam_params *p, int width, int height);
+/* cam_init with the reason of a refusal in *why (a constant string), for the scene's error. */
+bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char **why);
 /* The primary ray through image point (px + pixel_u.x, py + pixel_u.y), pixel_u in [0,1)^2, with
  * lens_u in [0,1)^2 choosing the point on the lens (ignored for a pinhole). */
 render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u);
+/* cam_ray for every projection: false where the projection has no ray (outside fisheye's
+ * circle), the pixel then black as in POV-Ray. */
+bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_ray *out);
 
 #endif

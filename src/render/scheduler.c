@@ -74,8 +74,10 @@ static bool render_tile(pool *p, int tile)
 				rng g = rng_for_sample(job->seed, (uint32_t)x, (uint32_t)y, s);
 				vec2 pu = v2(rng_float(&g), rng_float(&g));
 				vec2 lu = v2(rng_float(&g), rng_float(&g));
-				render_ray ray = cam_ray(job->camera, x, y, pu, lu);
-				render_sample smp = render_path(job->scene, &job->settings, ray, &g);
+				render_ray ray;
+				render_sample smp = {0}; /* no ray (outside a fisheye's circle): black */
+				if (cam_sample(job->camera, x, y, pu, lu, &ray))
+					smp = render_path(job->scene, &job->settings, ray, &g);
 				searches += smp.sss_searches;
 				nohit += smp.sss_nohit;
 				overflow += smp.sss_overflow;

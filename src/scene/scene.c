@@ -220,6 +220,17 @@ static int validate_subdiv(const scene_geom *g, diag *d)
 
 static int validate_camera(const scene_camera *c, diag *d)
 {
+	/* POV-Ray's handedness, the sign of (up x direction) . right (Parse_Camera), must exist:
+	 * a zero or coplanar right, up, direction is degenerate with or without look_at. */
+	double rl = d3_length(c->right), ul = d3_length(c->up), dl = d3_length(c->direction);
+	if (!(rl > 0 && ul > 0 && dl > 0) ||
+	    !(fabs(d3_dot(d3_cross(c->up, c->direction), c->right)) > 1e-9 * rl * ul * dl)) {
+		diag_error(d, c->loc, "degenerate camera: right, up and direction do not span space (one is zero, or "
+				      "two are parallel)");
+		return 1;
+	}
+	if (!c->has_look_at)
+		return 0; /* the frame is direction, right, up */
 	dvec3 dir = d3_sub(c->look_at, c->location);
 	double len = d3_length(dir);
 	if (!(len > 0)) {
@@ -231,7 +242,7 @@ static int validate_camera(const scene_camera *c, diag *d)
 		diag_error(d, c->loc, "degenerate camera: sky is parallel to the view direction");
 		return 1;
 	}
-	if (!(c->angle_deg > 0 && c->angle_deg < 180)) {
+	if (c->type == 0 && !(c->angle_deg > 0 && c->angle_deg < 180)) {
 		diag_error(d, c->loc, "camera angle %g is outside (0, 180) degrees", c->angle_deg);
 		return 1;
 	}
@@ -455,6 +466,25 @@ static void dump_xform(FILE *o, const xform *t)
 	fputc('\n', o);
 }
 
+/* What the camera says beyond POV-Ray's perspective defaults; nothing for those. */
+static void dump_camera_more(FILE *o, const scene_camera *c)
+{
+	static const char *const types[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
+					    "panoramic", "cylinder 1", "cylinder 2", "cylinder 3",
+					    "cylinder 4", "spherical"};
+	if (c->type != SCENE_CAM_PERSPECTIVE)
+		fprintf(o, " %s", types[c->type]);
+	if (c->type == SCENE_CAM_SPHERICAL)
+		fprintf(o, " v_angle %g", c->v_angle_deg);
+	if (c->has_direction)
+		dump_d3(o, "direction", c->direction);
+	if (!c->has_look_at)
+		fprintf(o, " (no look_at)");
+	if (c->has_xform)
+		for (int r = 0; r < 3; r++)
+			fprintf(o, " m%d <%g, %g, %g, %g>", r, c->xf.m[r][0], c->xf.m[r][1], c->xf.m[r][2], c->xf.m[r][3]);
+}
+
 void scene_dump(const scene *s, FILE *o)
 {
 	fprintf(o, "global mm_per_unit %g max_trace_level %d assumed_gamma %g\n", s->global.mm_per_unit,
@@ -471,6 +501,7 @@ void scene_dump(const scene *s, FILE *o)
 		fprintf(o, " angle %g aperture %g", c->angle_deg, c->aperture);
 		if (c->has_focal_point)
 			dump_d3(o, "focal_point", c->focal_point);
+		dump_camera_more(o, c);
 		fputc('\n', o);
 	}
 	if (s->has_background) {

@@ -13,6 +13,13 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+/* The camera's projections, in render/camera.h's cam_type order (build_camera casts). */
+typedef enum scene_cam_type {
+	SCENE_CAM_PERSPECTIVE, SCENE_CAM_ORTHOGRAPHIC, SCENE_CAM_FISHEYE, SCENE_CAM_ULTRA_WIDE_ANGLE,
+	SCENE_CAM_PANORAMIC, SCENE_CAM_CYLINDER_1, SCENE_CAM_CYLINDER_2, SCENE_CAM_CYLINDER_3,
+	SCENE_CAM_CYLINDER_4, SCENE_CAM_SPHERICAL,
+} scene_cam_type;
+
 typedef struct scene_camera {
 	diag_loc loc;
 	dvec3 location, look_at, sky, right, up;
@@ -20,6 +27,12 @@ typedef struct scene_camera {
 	double aperture; /* thin lens when > 0 */
 	dvec3 focal_point;
 	bool has_focal_point;
+	int type; /* render/camera.h's cam_type (0 perspective) */
+	dvec3 direction; /* POV-Ray's direction; <0,0,1> by default */
+	bool has_look_at, has_angle, has_direction, has_right, has_up;
+	double v_angle_deg; /* spherical's vertical angle */
+	bool has_xform; /* translate/rotate/scale/matrix on the camera, applied last */
+	xform xf;
 } scene_camera;
 
 typedef enum scene_light_kind { SCENE_LIGHT_POINT, SCENE_LIGHT_SPHERE, SCENE_LIGHT_SPOT, SCENE_LIGHT_PARALLEL } scene_light_kind;

@@ -1,2 +1,1 @@
-// A camera direction of length zero has no view.
-camera { location -z direction 0 }
+camera { direction <0, 0, 0> }

@@ -46,8 +46,8 @@ Grow(Size) Grow(Size, 2)
 #include "walk.inc"
 // rule: global_settings, integer, ignored_setting, balanced
 global_settings { mm_per_unit 10 max_trace_level 4 assumed_gamma 1 radiosity { count 9 media { off } } ambient_light 0 adc_bailout 0.01 charset ascii hf_gray_16 }
-// rule: camera
-camera { perspective location <0, 1, -5> look_at 0 sky y angle 50 right x up y aperture 0.1 focal_point 0 }
+// rule: camera, projection, camera_item
+camera { cylinder 2 location <0, 1, -5> look_at 0 sky y direction z angle 50 right x up y aperture 0.1 focal_point 0 blur_samples 4, 16 confidence 0.9 variance 0.001 translate x rotate y*5 scale 1 matrix <1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0> }
 // rule: light_source
 light_source { <0, 5, 0>, color C intensity 2 radius 0.5 }
 light_source { <0, 5, 0> rgb 1 spotlight point_at 0 radius 10 falloff 20 }

@@ -4,6 +4,149 @@
 #include "check.h"
 #include "render/camera.h"
 
+/* The ray through image point (sx, sy) in [-1, 1]^2 (+1 right, +1 top) of a 2 x 2 image. */
+static bool ray_at(const cam *c, float sx, float sy, render_ray *r)
+{
+	return cam_sample(c, 0, 0, v2(sx + 1.0f, 1.0f - sy), v2(0.5f, 0.5f), r);
+}
+
+static bool near3(vec3 a, vec3 b, float tol)
+{
+	return fabsf(a.x - b.x) <= tol && fabsf(a.y - b.y) <= tol && fabsf(a.z - b.z) <= tol;
+}
+
+#define CHECK_RAY(c, sx, sy, want_o, want_d, what)                                                        \
+	do {                                                                                              \
+		render_ray r_;                                                                            \
+		CHECK(ray_at(c, sx, sy, &r_), "%s: no ray at (%g, %g)", what, (double)(sx), (double)(sy)); \
+		vec3 wd_ = v3_normalize(want_d), wo_ = (want_o);                                          \
+		CHECK(near3(r_.d, wd_, 1e-5f) && near3(r_.o, wo_, 1e-5f),                                 \
+		      "%s at (%g, %g): ray (%g %g %g) + t (%g %g %g), want (%g %g %g) + t (%g %g %g)", what,  \
+		      (double)(sx), (double)(sy), r_.o.x, r_.o.y, r_.o.z, r_.d.x, r_.d.y, r_.d.z, wo_.x, wo_.y, \
+		      wo_.z, wd_.x, wd_.y, wd_.z);                                                        \
+	} while (0)
+
+/* Each projection against rays worked by hand from POV-Ray 3.7's formulas (tracepixel.cpp,
+ * CreateCameraRay), the default frame: forward +z, right +x, up +y. */
+static void test_projections(void)
+{
+	cam c;
+	const float h = 0.70710678f; /* sin 45 = cos 45 */
+	vec3 o = v3(0, 0, 0);
+	cam_params p = cam_params_default();
+	p.right = v3(1, 0, 0);
+	p.up = v3(0, 1, 0);
+	p.has_angle = false;
+
+	/* Perspective without angle: half width |right| / (2 |direction|). */
+	p.direction = v3(0, 0, 2);
+	p.has_look_at = false;
+	CHECK(cam_init(&c, &p, 2, 2), "perspective from direction");
+	CHECK_RAY(&c, 1, 0, o, v3(0.25f, 0, 1), "perspective |direction| 2");
+	/* ... and angle wins over direction's length (POV-Ray sets |direction| from it). */
+	p.has_angle = true;
+	p.angle_deg = 90;
+	CHECK(cam_init(&c, &p, 2, 2), "perspective angle 90");
+	CHECK_RAY(&c, 1, -1, o, v3(1, -1, 1), "perspective angle 90");
+	p.direction = v3(0, 0, 0);
+	p.has_look_at = true;
+
+	/* Orthographic, right and up given without angle: the screen is right x up in scene units. */
+	cam_params q = p;
+	q.type = CAM_ORTHOGRAPHIC;
+	q.has_angle = false;
+	q.right = v3(4, 0, 0);
+	q.up = v3(0, 3, 0);
+	q.location = d3(1, 2, -5);
+	q.look_at = d3(1, 2, 0);
+	CHECK(cam_init(&c, &q, 2, 2), "orthographic");
+	CHECK_RAY(&c, 0.5f, -1, v3(2, 0.5f, -5), v3(0, 0, 1), "orthographic right 4 up 3");
+	/* A camera scale scales the orthographic screen (and the location) with the scene. */
+	q.has_xform = xform_scale(d3(2, 2, 2), &q.xf);
+	CHECK(cam_init(&c, &q, 2, 2), "scaled orthographic");
+	CHECK_RAY(&c, 0.5f, -1, v3(4, 1, -10), v3(0, 0, 1), "orthographic scaled by 2");
+	q.has_xform = false;
+	/* With an angle: the perspective image's area at the look_at distance (5 tan 45 = 5). */
+	q.has_angle = true;
+	q.angle_deg = 90;
+	q.right = v3(1, 0, 0);
+	q.up = v3(0, 1, 0);
+	CHECK(cam_init(&c, &q, 2, 2), "orthographic angle");
+	CHECK_RAY(&c, 1, 1, v3(6, 7, -5), v3(0, 0, 1), "orthographic angle 90 at distance 5");
+	/* Thin lens on it: every lens ray meets the pinhole ray at the focal distance 4. */
+	q.aperture = 1;
+	q.focal_point = d3(1, 2, -1);
+	CHECK(cam_init(&c, &q, 2, 2), "orthographic lens");
+	for (int i = 0; i < 16; i++) {
+		render_ray lr;
+		CHECK(cam_sample(&c, 0, 0, v2(1.5f, 0.5f), v2((float)(i % 4) / 4, (float)(i / 4) / 4), &lr), "lens ray");
+		vec3 at = v3_madd(lr.o, lr.d, (-1.0f - lr.o.z) / lr.d.z);
+		CHECK(near3(at, v3(3.5f, 4.5f, -1), 1e-4f), "orthographic lens ray meets (%g %g %g)", at.x, at.y, at.z);
+	}
+
+	/* Fisheye 180: the circle's edge looks sideways, its inside at rad * 90 degrees. */
+	q = p;
+	q.type = CAM_FISHEYE;
+	q.angle_deg = 180;
+	CHECK(cam_init(&c, &q, 2, 2), "fisheye");
+	CHECK_RAY(&c, 1, 0, o, v3(1, 0, 0), "fisheye edge");
+	float th = 0.70710678f * 0.5f * (float)M_PI;
+	CHECK_RAY(&c, 0.5f, 0.5f, o, v3(h * sinf(th), h * sinf(th), cosf(th)), "fisheye diagonal");
+	render_ray none;
+	CHECK(!ray_at(&c, 1, 1, &none), "fisheye: a corner outside the circle has a ray");
+
+	q.type = CAM_ULTRA_WIDE_ANGLE;
+	CHECK(cam_init(&c, &q, 2, 2), "ultra_wide_angle");
+	CHECK_RAY(&c, 1, 0, o, v3(1, 0, 0), "ultra_wide_angle edge");
+	CHECK_RAY(&c, 0.5f, 0.5f, o, v3(h, h, 0.5f), "ultra_wide_angle diagonal");
+
+	/* Panoramic: x0 = (1 - x / width) pi, the vertical through tan. */
+	q.type = CAM_PANORAMIC;
+	CHECK(cam_init(&c, &q, 2, 2), "panoramic");
+	CHECK_RAY(&c, -1, 0, o, v3(-1, 0, 0), "panoramic left edge");
+	CHECK_RAY(&c, 0, 0.5f, o, v3(0, 1, 1), "panoramic centre column, 45 up");
+
+	q.type = CAM_CYLINDER_1;
+	q.angle_deg = 90;
+	CHECK(cam_init(&c, &q, 2, 2), "cylinder 1");
+	CHECK_RAY(&c, 1, 1, o, v3(h, 0.5f, h), "cylinder 1");
+	q.type = CAM_CYLINDER_2;
+	CHECK(cam_init(&c, &q, 2, 2), "cylinder 2");
+	CHECK_RAY(&c, 1, 1, o, v3(0.5f, h, h), "cylinder 2");
+	q.type = CAM_CYLINDER_3;
+	CHECK(cam_init(&c, &q, 2, 2), "cylinder 3");
+	CHECK_RAY(&c, 1, 1, v3(0, 0.5f, 0), v3(h, 0, h), "cylinder 3");
+	q.type = CAM_CYLINDER_4;
+	CHECK(cam_init(&c, &q, 2, 2), "cylinder 4");
+	CHECK_RAY(&c, 1, 1, v3(0.5f, 0, 0), v3(0, h, h), "cylinder 4");
+
+	q.type = CAM_SPHERICAL;
+	q.angle_deg = 360;
+	q.v_angle_deg = 180;
+	CHECK(cam_init(&c, &q, 2, 2), "spherical");
+	CHECK_RAY(&c, 0.5f, 0, o, v3(1, 0, 0), "spherical quarter turn");
+	CHECK_RAY(&c, 0, 1, o, v3(0, 1, 0), "spherical top");
+	CHECK_RAY(&c, -1, 0, o, v3(0, 0, -1), "spherical half turn");
+
+	/* The camera's transform, after everything: rotate y 90 (+z to +x), then translate. */
+	q = cam_params_default();
+	q.has_xform = true;
+	q.xf = xform_then(xform_rotate(d3(0, 90, 0)), xform_translate(d3(1, 2, 3)));
+	CHECK(cam_init(&c, &q, 2, 2), "transformed camera");
+	CHECK_RAY(&c, 0, 0, v3(1, 2, 3), v3(1, 0, 0), "rotated and translated camera");
+
+	/* Degenerate frames are refused with a reason. */
+	const char *why = NULL;
+	q = p;
+	q.has_look_at = false;
+	q.up = v3(1, 0, 0);
+	CHECK(!cam_init_why(&c, &q, 2, 2, &why) && why, "up parallel to right accepted");
+	q = p;
+	q.has_look_at = false;
+	q.direction = v3(0, 1, 0);
+	CHECK(!cam_init_why(&c, &q, 2, 2, &why) && why, "direction in the right-up plane accepted");
+}
+
 static double angle_deg(vec3 a, vec3 b)
 {
 	double c = v3_dot(v3_normalize(a), v3_normalize(b));
@@ -115,5 +258,6 @@ int main(void)
 		max_off = fmaxf(max_off, v3_length(lr.o));
 	}
 	CHECK(max_off > 0.2f, "lens samples cover the aperture: max offset %g", max_off);
+	test_projections();
 	return check_done("test_camera");
 }

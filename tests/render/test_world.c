@@ -38,6 +38,57 @@ static bool build(const char *text, world **w, char **errors)
 	return ok;
 }
 
+/* The camera ray through pixel (px, py)'s corner of build()'s 640x480 image, of the scene text. */
+static render_ray camera_ray(const char *text, float px, float py)
+{
+	world *w;
+	char *err = NULL;
+	render_ray r = {v3(NAN, NAN, NAN), v3(NAN, NAN, NAN)};
+	if (build(text, &w, &err)) {
+		r = cam_ray(world_camera(w), 0, 0, v2(px, py), v2(0.5f, 0.5f));
+		world_free(w);
+	} else {
+		fprintf(stderr, "%s", err);
+	}
+	free(err);
+	return r;
+}
+
+static bool same_ray(render_ray a, render_ray b, float tol)
+{
+	return v3_length(v3_sub(a.o, b.o)) <= tol && v3_length(v3_sub(a.d, b.d)) <= tol;
+}
+
+/* The camera block as POV-Ray 3.7 reads it: the order of the settings does not matter, angle sets
+ * |direction|, right x*image_width/image_height is the default's aspect, no look_at looks along
+ * direction, the camera's transforms come last. */
+static void check_camera_text(void)
+{
+	render_ray a = camera_ray("camera { angle 60 right 2*x location <1, 2, -5> look_at <0, 0, 0> }\n", 100, 50);
+	render_ray b = camera_ray("camera { look_at <0, 0, 0> location <1, 2, -5> right 2*x angle 60 }\n", 100, 50);
+	CHECK(same_ray(a, b, 0.0f), "camera settings' order changed the ray: (%g %g %g) vs (%g %g %g)", a.d.x, a.d.y,
+	      a.d.z, b.d.x, b.d.y, b.d.z);
+	a = camera_ray("camera { location <0, 0, -5> look_at 0 angle 50 }\n", 10, 400);
+	b = camera_ray("camera { location <0, 0, -5> look_at 0 angle 50 right x*image_width/image_height }\n", 10, 400);
+	CHECK(same_ray(a, b, 1e-6f), "right x*image_width/image_height differs from the default at 4:3");
+	/* angle overrides direction's length; without angle the length sets the width. */
+	a = camera_ray("camera { direction <0, 0, 3> angle 90 }\n", 640, 240);
+	CHECK(fabsf(a.d.x - a.d.z) < 1e-5f && fabsf(a.d.y) < 1e-5f, "angle 90 with direction 3: edge ray (%g %g %g)",
+	      a.d.x, a.d.y, a.d.z);
+	a = camera_ray("camera { direction <0, 0, 2> right x }\n", 640, 240);
+	CHECK(fabsf(a.d.x * 4 - a.d.z) < 1e-5f, "direction 2, right 1: edge ray (%g %g %g), want x / z = 1/4", a.d.x,
+	      a.d.y, a.d.z);
+	a = camera_ray("camera { location <0, 2, -5> }\n", 320, 240);
+	CHECK(same_ray(a, (render_ray){v3(0, 2, -5), v3(0, 0, 1)}, 1e-6f),
+	      "no look_at: the centre ray (%g %g %g) should run along direction +z", a.d.x, a.d.y, a.d.z);
+	a = camera_ray("camera { location <0, 0, -5> look_at 0 rotate <0, 90, 0> translate <0, 1, 0> }\n", 320, 240);
+	CHECK(same_ray(a, (render_ray){v3(-5, 1, 0), v3(1, 0, 0)}, 1e-5f),
+	      "camera transform: centre ray (%g %g %g) + t (%g %g %g)", a.o.x, a.o.y, a.o.z, a.d.x, a.d.y, a.d.z);
+	/* The mirrored camera: right -x*4/3 turns the image's left column to +x. */
+	a = camera_ray("camera { location <0, 0, -5> look_at 0 right -x*4/3 }\n", 0, 240);
+	CHECK(a.d.x > 0.3f, "right -x*4/3: left column looks along (%g %g %g)", a.d.x, a.d.y, a.d.z);
+}
+
 static bool trace(const world *w, vec3 o, vec3 dir_, render_hit *h)
 {
 	render_ray r = {o, v3_normalize(dir_)};
@@ -270,6 +321,7 @@ int main(void)
 
 	check_sphere_levels();
 	check_many_spheres();
+	check_camera_text();
 	check_tangents();
 
 	/* Errors name the scene's place, the string of the file: a missing mesh file, a missing texture. */

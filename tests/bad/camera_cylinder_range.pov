@@ -1,0 +1,1 @@
+camera { cylinder 5 location <0, 0, -5> }

@@ -1,0 +1,1 @@
+camera { omnimax location <0, 0, -5> }

@@ -1,0 +1,1 @@
+camera { location <0, 0, -5> orthographic }

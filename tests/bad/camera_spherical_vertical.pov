@@ -1,0 +1,1 @@
+camera { spherical angle 360, 200 }
