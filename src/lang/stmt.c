@@ -1585,9 +1585,9 @@ static bool area_light(parser *p, scene_light *l, light_seen *seen, diag_loc at)
 	n2_loc = lang_peek(p)->loc;
 	TRY(lang_float(p, "as area_light's second count", &n2));
 	if (!(n1 >= 1 && n1 <= INT_MAX))
-		return lang_error(p, n1_loc, "area_light's counts must be whole numbers >= 1, found %g", n1);
+		return lang_error(p, n1_loc, "area_light's counts must be >= 1 (POV-Ray truncates them to integers), found %g", n1);
 	if (!(n2 >= 1 && n2 <= INT_MAX))
-		return lang_error(p, n2_loc, "area_light's counts must be whole numbers >= 1, found %g", n2);
+		return lang_error(p, n2_loc, "area_light's counts must be >= 1 (POV-Ray truncates them to integers), found %g", n2);
 	l->area = true;
 	l->area_n1 = (int)n1, l->area_n2 = (int)n2;
 	seen->area_loc = at;

@@ -32,7 +32,8 @@
  * Radiance is looked up at the nearest pixel (matching the sampling density exactly).
  * Light selection: each light is chosen with probability proportional to its power estimate
  * (luminance of its flux; infinite and parallel lights count over a disk or sphere of the scene's
- * bounding radius, as PBRT does) — see light_power. Lights are read-only once the set is finished,
+ * bounding radius, as PBRT does; a light without the inverse square as what it gives at that
+ * radius, a POV-Ray spot as its point light) — see light_power. Lights are read-only once the set is finished,
  * so any number of threads may sample them. */
 #ifndef CIRCE_RENDER_LIGHT_H
 #define CIRCE_RENDER_LIGHT_H

@@ -1,7 +1,7 @@
 #!/bin/sh
 # plane.sh: a plane renders on its own (POV-Ray's first scene: a plane and a light) with the
 # shading a diffuse plane under a point light has in closed form (a physical light with intensity,
-# and POV-Ray's without: no falloff, or its fade), and what it shows does not
+# and POV-Ray's without: no falloff, or its fade; shadowless through an occluder), and what it shows does not
 # depend on the other objects of the scene: a small object far behind the camera leaves its
 # pixels as they were (the plane reaches out to its horizon from the camera, not to the bounds of
 # the rest of the scene).
@@ -22,7 +22,9 @@ expect_status 0 "$CIRCE" compare alone.exr ref.exr --fail 0.0032 --channels R,G,
 # again; and one faded at its fade_distance, where POV-Ray's 2 / (1 + 1^3) is 1.
 sed 's|light_source {.*|light_source { <0, 40, 0> color rgb 1 }|' alone.pov >pov.pov
 sed 's|light_source {.*|light_source { <0, 8, 0> color rgb 1 fade_distance 8 fade_power 3 }|' alone.pov >fade.pov
-for f in pov fade; do
+# A shadowless light through a black sphere above the centre: the plane lit as without it.
+sed 's|light_source {.*|light_source { <0, 40, 0> color rgb 1 shadowless }\nsphere { <0, 3, 0>, 0.5 material { diffuse { color rgb 0 } } }|' alone.pov >shadowless.pov
+for f in pov fade shadowless; do
 	expect_status 0 "$CIRCE" render $f.pov -o $f.exr -W 32 -H 24 --spp 16 --quiet --region 15,11,17,13
 	expect_status 0 "$CIRCE" compare $f.exr ref.exr --fail 0.0032 --channels R,G,B
 done
