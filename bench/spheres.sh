@@ -16,7 +16,7 @@ for n in $counts; do
 	k=$(awk -v n="$n" 'BEGIN { k = int(n ^ (1 / 3)); while (k * k * k < n) k++; print k }')
 	cat >"$work/s.pov" <<EOS
 camera { location <$k * 1.8, $k * 1.6, -$k * 1.5> look_at <$k / 2, $k / 2, $k / 2> angle 50 }
-light_source { <-$k, $k * 3, -$k * 2> color rgb $((k * k * 20)) }
+light_source { <-$k, $k * 3, -$k * 2> color rgb 1 intensity $((k * k * 20)) }
 background { color rgb 0.2 }
 #declare K = $k;
 #declare I = 0;

@@ -30,28 +30,56 @@ static bool add_mesh_light(world *w, world_inst *in, vec3 radiance, diag *d, dia
 	return true;
 }
 
+/* The distance law of a light_source (grammar/README.md, "Lights"): circe's `intensity` is the
+ * physical inverse square; without it, POV-Ray's: none, or its fade. Parallel and cylinder lights
+ * never fall off as 1 / d^2. */
+static void set_distance_law(light *l, const scene_light *sl)
+{
+	bool fades = sl->fade_distance > 0 && sl->fade_power > 0;
+	bool beam = sl->kind == SCENE_LIGHT_PARALLEL || sl->kind == SCENE_LIGHT_CYLINDER;
+	l->falloff = fades ? LIGHT_FALLOFF_FADE
+		     : sl->has_intensity && !beam ? LIGHT_FALLOFF_INVERSE_SQUARE
+		     : LIGHT_FALLOFF_NONE;
+	l->fade_distance = (float)sl->fade_distance;
+	l->fade_power = (float)sl->fade_power;
+}
+
+/* The scene's light_source as circe's light. */
+static light scene_light_to_light(const scene_light *sl)
+{
+	vec3 c = v3_scale(sl->color, (float)sl->intensity);
+	vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
+	light l;
+	switch (sl->kind) {
+	case SCENE_LIGHT_POINT:
+		l = light_point(pos, c);
+		break;
+	case SCENE_LIGHT_SPHERE:
+		return light_sphere(pos, (float)sl->radius, c); /* an emitter: always physical */
+	case SCENE_LIGHT_SPOT:
+		l = light_spot(pos, at, c, (float)sl->cone_deg, (float)sl->falloff_deg);
+		break;
+	case SCENE_LIGHT_CYLINDER:
+		l = light_cylinder(pos, at, c, (float)sl->cyl_radius, (float)sl->cyl_falloff, 0.0f);
+		break;
+	default:
+		l = light_parallel(pos, at, c);
+		break;
+	}
+	set_distance_law(&l, sl);
+	l.tightness = (float)sl->tightness;
+	l.shadowless = sl->shadowless;
+	if (sl->area)
+		light_set_area(&l, d3v(sl->axis1), d3v(sl->axis2), sl->circular, sl->orient);
+	return l;
+}
+
 bool build_lights(world *w, const scene *sc, diag *d)
 {
 	light_set_init(&w->lights);
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
 		const scene_light *sl = scene_light_at(sc, i);
-		vec3 c = v3_scale(sl->color, (float)sl->intensity);
-		vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
-		light l;
-		switch (sl->kind) {
-		case SCENE_LIGHT_POINT:
-			l = light_point(pos, c);
-			break;
-		case SCENE_LIGHT_SPHERE:
-			l = light_sphere(pos, (float)sl->radius, c);
-			break;
-		case SCENE_LIGHT_SPOT:
-			l = light_spot(pos, at, c, (float)sl->cone_deg, (float)sl->falloff_deg);
-			break;
-		default:
-			l = light_parallel(pos, at, c);
-			break;
-		}
+		light l = scene_light_to_light(sl);
 		if (!light_set_add(&w->lights, &l)) {
 			diag_error(d, sl->loc, "out of memory");
 			return false;

@@ -3,6 +3,7 @@
  * materials. Each parse function carries its grammar rule as a comment (grammar/scene.ebnf). */
 #include "lang/parser.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -1988,11 +1989,164 @@ static bool light_colour(parser *p, vec3 *c)
 	return true;
 }
 
+/* POV-Ray's light words that mean something only in a light_source. They stay out of the keyword
+ * table, so anywhere else they remain "'jitter' is not supported by circe" (and `cylinder`, a
+ * POV-Ray shape, stays one); in a light_source they are matched by spelling. */
+typedef enum light_word {
+	LW_NONE,
+	LW_ADAPTIVE,
+	LW_AREA_LIGHT,
+	LW_CIRCULAR,
+	LW_CYLINDER,
+	LW_FADE_DISTANCE,
+	LW_FADE_POWER,
+	LW_JITTER,
+	LW_ORIENT,
+	LW_SHADOWLESS,
+	LW_TIGHTNESS
+} light_word;
+
+static light_word light_word_at(const lang_token *t)
+{
+	static const char *const names[] = {"", "adaptive", "area_light", "circular", "cylinder", "fade_distance",
+					    "fade_power", "jitter", "orient", "shadowless", "tightness"};
+	if (t->kind != LTK_UNSUPPORTED)
+		return LW_NONE;
+	for (size_t i = 1; i < sizeof names / sizeof names[0]; i++)
+		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
+			return (light_word)i;
+	return LW_NONE;
+}
+
+/* Where a light_source's items that need another were given, for the checks at its '}'. */
+typedef struct light_seen {
+	bool tightness, fade, area_mod;
+	diag_loc tightness_loc, fade_loc, area_loc, area_mod_loc;
+	const char *area_mod_name;
+} light_seen;
+
+/* area_light = "area_light" vector "," vector "," float "," float: POV-Ray's counts are integers
+ * >= 1 (parse.cpp); circe samples the area continuously and keeps them for the dump only. */
+static bool area_light(parser *p, scene_light *l, light_seen *seen, diag_loc at)
+{
+	double n1, n2;
+	diag_loc n1_loc, n2_loc;
+	TRY(lang_vec3(p, "after 'area_light'", &l->axis1));
+	TRY(lang_expect(p, LTK_COMMA, "after area_light's first axis"));
+	TRY(lang_vec3(p, "as area_light's second axis", &l->axis2));
+	TRY(lang_expect(p, LTK_COMMA, "after area_light's second axis"));
+	n1_loc = lang_peek(p)->loc;
+	TRY(lang_float(p, "as area_light's first count", &n1));
+	TRY(lang_expect(p, LTK_COMMA, "after area_light's first count"));
+	n2_loc = lang_peek(p)->loc;
+	TRY(lang_float(p, "as area_light's second count", &n2));
+	if (!(n1 >= 1 && n1 <= INT_MAX))
+		return lang_error(p, n1_loc, "area_light's counts must be >= 1 (POV-Ray truncates them to integers), found %g", n1);
+	if (!(n2 >= 1 && n2 <= INT_MAX))
+		return lang_error(p, n2_loc, "area_light's counts must be >= 1 (POV-Ray truncates them to integers), found %g", n2);
+	l->area = true;
+	l->area_n1 = (int)n1, l->area_n2 = (int)n2;
+	seen->area_loc = at;
+	return true;
+}
+
+/* One of POV-Ray's light words (light_word) at the lookahead, into *l; *matched says whether one
+ * was there. */
+static bool light_word_item(parser *p, scene_light *l, light_seen *seen, bool *matched)
+{
+	lang_token t = *lang_peek(p);
+	light_word w = light_word_at(&t);
+	*matched = w != LW_NONE;
+	if (!*matched)
+		return true;
+	lang_advance(p);
+	char ctx[48];
+	snprintf(ctx, sizeof ctx, "after '%.*s'", (int)t.len, t.text);
+	double x;
+	switch (w) {
+	case LW_CYLINDER:
+		if (l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER)
+			return lang_error(p, t.loc, "a light is one of spotlight, cylinder or parallel, not two");
+		/* POV-Ray's defaults for a cylinder (parse.cpp): radius 0.75, falloff 1, tightness 0. */
+		l->kind = SCENE_LIGHT_CYLINDER;
+		l->radius = 0, l->cyl_radius = 0.75, l->cyl_falloff = 1, l->tightness = 0;
+		return true;
+	case LW_TIGHTNESS:
+		TRY(lang_float(p, ctx, &x));
+		if (x < 0)
+			return lang_error(p, t.loc, "tightness must be >= 0, found %g", x);
+		l->tightness = x;
+		seen->tightness = true, seen->tightness_loc = t.loc;
+		return true;
+	case LW_FADE_DISTANCE:
+	case LW_FADE_POWER:
+		TRY(lang_float(p, ctx, &x));
+		if (w == LW_FADE_DISTANCE && x < 0)
+			return lang_error(p, t.loc, "fade_distance must be >= 0, found %g", x);
+		*(w == LW_FADE_DISTANCE ? &l->fade_distance : &l->fade_power) = x;
+		if (!seen->fade)
+			seen->fade_loc = t.loc;
+		seen->fade = true;
+		return true;
+	case LW_SHADOWLESS:
+		l->shadowless = true;
+		return true;
+	case LW_AREA_LIGHT:
+		return area_light(p, l, seen, t.loc);
+	case LW_ADAPTIVE: /* accepted: circe's area sampling is continuous, nothing to subdivide */
+		TRY(lang_float(p, ctx, &x));
+		if (x < 0)
+			return lang_error(p, t.loc, "adaptive must be >= 0, found %g", x);
+		break;
+	case LW_JITTER: l->jitter = true; break;
+	case LW_CIRCULAR: l->circular = true; break;
+	case LW_ORIENT: l->orient = true; break;
+	default: break;
+	}
+	if (!seen->area_mod)
+		seen->area_mod_loc = t.loc, seen->area_mod_name = w == LW_ADAPTIVE ? "adaptive"
+							      : w == LW_JITTER ? "jitter"
+							      : w == LW_CIRCULAR ? "circular" : "orient";
+	seen->area_mod = true;
+	return true;
+}
+
+/* The checks at a light_source's '}' of what its POV-Ray items ask of the others. */
+static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *seen)
+{
+	if (seen->tightness && l->kind != SCENE_LIGHT_SPOT && l->kind != SCENE_LIGHT_CYLINDER)
+		return lang_error(p, seen->tightness_loc, "'tightness' needs 'spotlight' or 'cylinder'");
+	if (l->kind == SCENE_LIGHT_CYLINDER && !(l->cyl_falloff > 0))
+		return lang_error(p, l->loc, "cylinder falloff must be > 0, found %g", l->cyl_falloff);
+	if (l->kind == SCENE_LIGHT_CYLINDER && l->cyl_falloff < l->cyl_radius)
+		return lang_error(p, l->loc, "cylinder falloff (%g) is smaller than its radius (%g)", l->cyl_falloff,
+				  l->cyl_radius);
+	if (seen->fade && l->has_intensity)
+		return lang_error(p, seen->fade_loc, "fade_distance and fade_power are POV-Ray's distance law and "
+						     "'intensity' circe's (1 / d^2): give one or the other");
+	if (seen->fade && l->kind == SCENE_LIGHT_SPHERE)
+		return lang_error(p, seen->fade_loc, "a sphere light is an emitter whose light falls off as 1 / d^2: "
+						     "fade_distance and fade_power do not apply");
+	if (seen->fade && !(l->fade_distance > 0 && l->fade_power > 0))
+		diag_warning(p->d, seen->fade_loc, "the light does not fade: POV-Ray fades only with both "
+						   "fade_distance and fade_power > 0 (fade_power's default is 0)");
+	if (l->area && l->kind != SCENE_LIGHT_POINT && l->kind != SCENE_LIGHT_SPOT)
+		return lang_error(p, seen->area_loc, "'area_light' on a %s light is not supported by circe",
+				  l->kind == SCENE_LIGHT_SPHERE ? "sphere" : l->kind == SCENE_LIGHT_PARALLEL ? "parallel"
+													 : "cylinder");
+	if (seen->area_mod && !l->area)
+		diag_warning(p->d, seen->area_mod_loc, "'%s' only affects area_light", seen->area_mod_name);
+	return true;
+}
+
 /* light_source = "light_source" "{" ( identifier | vector [ "," colour ] ) { colour
- *                | "intensity" float | "radius" float | "spotlight" | "parallel" | "point_at" vector
- *                | "falloff" float | transform_item } "}"
+ *                | "intensity" float | "radius" float | "spotlight" | "cylinder" | "parallel"
+ *                | "point_at" vector | "falloff" float | "tightness" float | "fade_distance" float
+ *                | "fade_power" float | "shadowless"
+ *                | "area_light" vector "," vector "," float "," float | "jitter" | "circular"
+ *                | "orient" | "adaptive" float | transform_item } "}"
  * Into *out, the keyword consumed (at kw). A float colour is grey (`<0, 9, 0>, 1`). A transform
- * moves the position and point_at given before it, as in POV-Ray. */
+ * moves the position and point_at given before it, and turns the area axes, as in POV-Ray. */
 static bool light_block(parser *p, scene_light *out, diag_loc kw)
 {
 	diag_loc open;
@@ -2001,12 +2155,13 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			 .point_at = d3(0, 0, 1), .cone_deg = 30, .falloff_deg = 45};
 	bool point_at = false, falloff = false;
 	diag_loc point_at_loc = kw, falloff_loc = kw;
+	light_seen seen = {0};
 	if (names(p, VAL_LIGHT)) {
 		const value *v;
 		TRY(v = declared(p, VAL_LIGHT, "a light_source"));
 		l = *v->light;
 		l.loc = kw;
-		point_at = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL;
+		point_at = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL || l.kind == SCENE_LIGHT_CYLINDER;
 	} else {
 		TRY(lang_vec3(p, "as the light position", &l.position));
 		if (lang_accept(p, LTK_COMMA)) { /* a colour led by no keyword: a float, a vector, a name */
@@ -2028,21 +2183,24 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 		if (matched) {
 			l.position = xform_point(&moved, l.position);
 			l.point_at = xform_point(&moved, l.point_at);
+			l.axis1 = xform_vector(&moved, l.axis1);
+			l.axis2 = xform_vector(&moved, l.axis2);
 			continue;
 		}
+		bool directed = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL || l.kind == SCENE_LIGHT_CYLINDER;
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			if (point_at && l.kind != SCENE_LIGHT_SPOT && l.kind != SCENE_LIGHT_PARALLEL)
-				return lang_error(p, point_at_loc, "'point_at' needs 'spotlight' or 'parallel'");
-			if (falloff && l.kind != SCENE_LIGHT_SPOT)
-				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight'");
+			if (point_at && !directed)
+				return lang_error(p, point_at_loc, "'point_at' needs 'spotlight', 'cylinder' or 'parallel'");
+			if (falloff && l.kind != SCENE_LIGHT_SPOT && l.kind != SCENE_LIGHT_CYLINDER)
+				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight' or 'cylinder'");
 			if (l.kind == SCENE_LIGHT_SPOT && l.falloff_deg < l.cone_deg)
 				return lang_error(p, kw, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
 						  l.falloff_deg, l.cone_deg);
-			if ((l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL) &&
-			    !(d3_length(d3_sub(l.point_at, l.position)) > 0))
+			if (directed && !(d3_length(d3_sub(l.point_at, l.position)) > 0))
 				return lang_error(p, kw, "point_at is the light position: the light has no direction");
+			TRY(light_pov_checks(p, &l, &seen));
 			*out = l;
 			return true;
 		case LTK_KW_INTENSITY:
@@ -2051,6 +2209,7 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			if (x < 0)
 				return lang_error(p, t.loc, "light intensity must be >= 0, found %g", x);
 			l.intensity = x;
+			l.has_intensity = true;
 			break;
 		case LTK_KW_RADIUS:
 			lang_advance(p);
@@ -2058,6 +2217,10 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			if (l.kind == SCENE_LIGHT_SPOT) {
 				TRY(in_range(p, t.loc, "spotlight radius (a cone angle)", x, 0, 90));
 				l.cone_deg = x;
+			} else if (l.kind == SCENE_LIGHT_CYLINDER) {
+				if (x < 0)
+					return lang_error(p, t.loc, "cylinder radius must be >= 0, found %g", x);
+				l.cyl_radius = x;
 			} else {
 				if (x < 0)
 					return lang_error(p, t.loc, "light radius must be >= 0, found %g", x);
@@ -2067,15 +2230,20 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			break;
 		case LTK_KW_FALLOFF:
 			lang_advance(p);
-			TRY(lang_float(p, "after 'falloff'", &x) && in_range(p, t.loc, "spotlight falloff", x, 0, 90));
-			l.falloff_deg = x;
+			if (l.kind == SCENE_LIGHT_CYLINDER) {
+				TRY(lang_float(p, "after 'falloff'", &x));
+				l.cyl_falloff = x;
+			} else {
+				TRY(lang_float(p, "after 'falloff'", &x) && in_range(p, t.loc, "spotlight falloff", x, 0, 90));
+				l.falloff_deg = x;
+			}
 			falloff = true, falloff_loc = t.loc;
 			break;
 		case LTK_KW_SPOTLIGHT:
 		case LTK_KW_PARALLEL:
 			lang_advance(p);
-			if (l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL)
-				return lang_error(p, t.loc, "a light is either a spotlight or parallel, not both");
+			if (directed)
+				return lang_error(p, t.loc, "a light is one of spotlight, cylinder or parallel, not two");
 			l.kind = t.kind == LTK_KW_SPOTLIGHT ? SCENE_LIGHT_SPOT : SCENE_LIGHT_PARALLEL;
 			l.radius = 0;
 			break;
@@ -2084,9 +2252,15 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			TRY(lang_vec3(p, "after 'point_at'", &l.point_at));
 			point_at = true, point_at_loc = t.loc;
 			break;
-		default:
+		default: {
+			bool matched;
+			TRY(light_word_item(p, &l, &seen, &matched));
+			if (matched)
+				continue;
 			return bad_item(p, open, "light_source",
-					"a colour, intensity, radius, spotlight, parallel, point_at or a transform");
+					"a colour, intensity, radius, spotlight, cylinder, parallel, point_at, falloff, "
+					"tightness, fade_distance, fade_power, shadowless, area_light or a transform");
+		}
 		}
 	}
 }

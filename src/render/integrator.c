@@ -94,7 +94,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	if (s->occluded(s->user, &shadow, 0.0f, tmax))
+	if (!ls_out.shadowless && s->occluded(s->user, &shadow, 0.0f, tmax))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY)

@@ -37,6 +37,32 @@ light light_parallel(vec3 from, vec3 point_at, vec3 irradiance)
 	    .kind = LIGHT_PARALLEL, .color = irradiance, .dir = v3_normalize(v3_sub(point_at, from))};
 }
 
+light light_cylinder(vec3 from, vec3 point_at, vec3 irradiance, float radius, float falloff, float tightness)
+{
+	light l = light_parallel(from, point_at, irradiance);
+	l.kind = LIGHT_CYLINDER;
+	l.pos = from;
+	l.cyl_radius = radius;
+	l.cyl_falloff = falloff;
+	l.tightness = tightness;
+	return l;
+}
+
+void light_set_area(light *l, vec3 axis1, vec3 axis2, bool ellipse, bool orient)
+{
+	l->area_shape = ellipse ? LIGHT_AREA_ELLIPSE : LIGHT_AREA_PARALLELOGRAM;
+	l->area_orient = orient;
+	l->axis1 = axis1;
+	l->axis2 = axis2;
+}
+
+float light_fade(float d, float fade_distance, float fade_power)
+{
+	if (!(fade_power > 0.0f) || !(fade_distance > 0.0f))
+		return 1.0f;
+	return 2.0f / (1.0f + powf(d / fade_distance, fade_power)); /* POV-Ray 3.7 point.cpp, Attenuate_Light */
+}
+
 light light_sphere(vec3 center, float radius, vec3 color)
 {
 	return (light){.kind = LIGHT_SPHERE,
@@ -187,31 +213,86 @@ static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *
 	return *sin2_max > 0.0f;
 }
 
-/* POV-Ray's spot factor: cubic_spline(cos falloff, cos radius, cos theta). */
+/* POV-Ray's cubic_spline (point.cpp): 0 below lo, 1 from hi on, a smoothstep between. */
+static float cubic_spline(float lo, float hi, float x)
+{
+	if (x <= lo)
+		return 0.0f;
+	if (x >= hi)
+		return 1.0f;
+	float t = (x - lo) / (hi - lo);
+	return t * t * (3.0f - 2.0f * t);
+}
+
+/* POV-Ray's tightness: x^tightness, exactly 1 for the default 0 (images without it unchanged). */
+static float tight(const light *l, float x)
+{
+	return l->tightness != 0.0f ? powf(x, l->tightness) : 1.0f;
+}
+
+/* POV-Ray's spot factor: cos^tightness cubic_spline(cos falloff, cos radius, cos theta). */
 static float spot_factor(const light *l, float cos_theta)
 {
-	if (cos_theta <= l->cos_fall)
+	if (!(cos_theta > 0.0f))
 		return 0.0f;
-	if (cos_theta >= l->cos_hot)
-		return 1.0f;
-	float t = (cos_theta - l->cos_fall) / (l->cos_hot - l->cos_fall);
-	return t * t * (3.0f - 2.0f * t);
+	return tight(l, cos_theta) * cubic_spline(l->cos_fall, l->cos_hot, cos_theta);
+}
+
+/* POV-Ray's cylinder factor at distance r from the axis (Attenuate_Light's CYLINDER_SOURCE). */
+static float cylinder_factor(const light *l, float r)
+{
+	if (!(r < l->cyl_falloff))
+		return 0.0f;
+	float x = 1.0f - r / l->cyl_falloff;
+	float k = tight(l, x);
+	if (l->cyl_radius > 0.0f && r > l->cyl_radius)
+		k *= cubic_spline(0.0f, 1.0f - l->cyl_radius / l->cyl_falloff, x);
+	return k;
+}
+
+/* A light's distance law at distance d (d2 = d^2), the inverse square kept as before: k / d2. */
+static float distance_factor(const light *l, float k, float d, float d2)
+{
+	switch (l->falloff) {
+	case LIGHT_FALLOFF_INVERSE_SQUARE: return k / d2;
+	case LIGHT_FALLOFF_FADE: return k * light_fade(d, l->fade_distance, l->fade_power);
+	default: return k;
+	}
+}
+
+/* The point a point or spot light shines from for this sample: its position, or a uniform point of
+ * its area (POV-Ray's area_light: pos + s axis1 + t axis2, s, t in [-1/2, 1/2]; circular: the
+ * inscribed ellipse by the concentric map; orient: axes turned square to the receiver p). */
+static vec3 emitting_point(const light *l, vec3 p, vec2 u)
+{
+	if (l->area_shape == LIGHT_AREA_NONE)
+		return l->pos;
+	vec3 a1 = l->axis1, a2 = l->axis2, to = v3_sub(l->pos, p);
+	if (l->area_orient && v3_length2(to) > 0.0f) {
+		float len = v3_length(a1);
+		v3_basis(v3_normalize(to), &a1, &a2);
+		a1 = v3_scale(a1, len);
+		a2 = v3_scale(a2, len);
+	}
+	vec2 s = l->area_shape == LIGHT_AREA_ELLIPSE ? render_concentric_disk(u) : v2(2.0f * u.x - 1.0f, 2.0f * u.y - 1.0f);
+	return v3_add(l->pos, v3_add(v3_scale(a1, 0.5f * s.x), v3_scale(a2, 0.5f * s.y)));
 }
 
 bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out)
 {
 	out->delta = light_is_delta(l);
+	out->shadowless = l->shadowless;
 	switch (l->kind) {
 	case LIGHT_POINT:
 	case LIGHT_SPOT: {
-		vec3 to = v3_sub(l->pos, p);
+		vec3 to = v3_sub(emitting_point(l, p, u), p);
 		float d2 = v3_length2(to);
 		if (!(d2 > 0.0f))
 			return false;
 		out->dist = sqrtf(d2);
 		out->wi = v3_scale(to, 1.0f / out->dist);
 		float k = l->kind == LIGHT_SPOT ? spot_factor(l, -v3_dot(out->wi, l->dir)) : 1.0f;
-		out->li = v3_scale(l->color, k / d2);
+		out->li = v3_scale(l->color, distance_factor(l, k, out->dist, d2));
 		out->pdf = 1.0f;
 		return k > 0.0f;
 	}
@@ -219,8 +300,23 @@ bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out
 		out->wi = v3_neg(l->dir);
 		out->dist = INFINITY;
 		out->li = l->color;
+		if (l->falloff == LIGHT_FALLOFF_FADE) /* POV-Ray: the distance to the light's plane */
+			out->li = v3_scale(l->color, light_fade(fmaxf(0.0f, v3_dot(v3_sub(p, l->pos), l->dir)),
+								l->fade_distance, l->fade_power));
 		out->pdf = 1.0f;
 		return true;
+	case LIGHT_CYLINDER: {
+		vec3 v = v3_sub(p, l->pos);
+		float ahead = v3_dot(v, l->dir);
+		float k = ahead > 0.0f ? cylinder_factor(l, v3_length(v3_sub(v, v3_scale(l->dir, ahead)))) : 0.0f;
+		out->wi = v3_neg(l->dir);
+		out->dist = ahead; /* the shadow ray ends at the light's plane, as POV-Ray's */
+		out->li = v3_scale(l->color, l->falloff == LIGHT_FALLOFF_FADE
+						 ? k * light_fade(ahead, l->fade_distance, l->fade_power)
+						 : k);
+		out->pdf = 1.0f;
+		return k > 0.0f;
+	}
 	case LIGHT_SPHERE: {
 		vec3 axis;
 		float dist, sin2_max;
@@ -358,13 +454,26 @@ bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float t
 float light_power(const light *l, float scene_radius)
 {
 	float lum = v3_luminance(l->color), r2 = scene_radius * scene_radius;
+	/* A light without the inverse square delivers at the scene's radius what an intensity of
+	 * r^2 times its colour (times its fade there) would: weigh it as that. */
+	float far = l->falloff == LIGHT_FALLOFF_INVERSE_SQUARE ? 1.0f
+		    : l->falloff == LIGHT_FALLOFF_NONE	      ? r2
+							      : r2 * light_fade(scene_radius, l->fade_distance, l->fade_power);
 	switch (l->kind) {
 	case LIGHT_POINT:
-		return 4.0f * RENDER_PI * lum;
-	case LIGHT_SPOT: /* the cone's solid angle, counting the falloff band as half (PBRT's choice) */
+		return 4.0f * RENDER_PI * lum * far;
+	case LIGHT_SPOT:
+		/* The cone's solid angle, counting the falloff band as half (PBRT's choice). A POV-Ray
+		 * spot (no inverse square) is weighed as its point light: it is aimed at what the
+		 * scene shows, and its cone's share would pick it too seldom for the light it gives
+		 * there (fireflies where it lands). */
+		if (l->falloff != LIGHT_FALLOFF_INVERSE_SQUARE)
+			return 4.0f * RENDER_PI * lum * far;
 		return 2.0f * RENDER_PI * lum * (1.0f - 0.5f * (l->cos_hot + l->cos_fall));
 	case LIGHT_PARALLEL:
 		return RENDER_PI * r2 * lum;
+	case LIGHT_CYLINDER: /* the beam's cross-section, up to its falloff radius */
+		return RENDER_PI * l->cyl_falloff * l->cyl_falloff * lum;
 	case LIGHT_SPHERE:
 		return RENDER_PI * 4.0f * RENDER_PI * l->radius * l->radius * lum;
 	case LIGHT_MESH:

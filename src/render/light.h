@@ -1,12 +1,21 @@
 /* light.h - circe's light sources and the set the integrator samples from.
- *   LIGHT_POINT     POV-Ray light_source { V color C }: intensity C (W/sr per unit colour),
- *                   irradiance C cos / d^2. Unlike POV-Ray's default (no fading), light falls off
- *                   with the inverse square, as it must in a physically based renderer; a light
- *                   at distance d needs d^2 times POV-Ray's colour for the same brightness.
- *                   Delta: only light sampling finds it.
- *   LIGHT_SPOT      a point light times POV-Ray's spot factor: 1 inside `radius`, 0 outside
- *                   `falloff` (half-angles in degrees about point_at), a smoothstep of cos between.
+ *   LIGHT_POINT     POV-Ray light_source { V color C }: irradiance C cos times its distance law
+ *                   (light_falloff): 1 / d^2 for circe's `intensity` (C is then an intensity,
+ *                   W/sr per unit colour), none (POV-Ray's default: C cos at any distance) or
+ *                   POV-Ray's fade_distance/fade_power. Delta: only light sampling finds it.
+ *                   With an area (light_set_area) it is POV-Ray's area_light made continuous: the
+ *                   point is drawn uniformly over a parallelogram or an ellipse about pos at each
+ *                   sample, each point a point light of the whole colour (POV-Ray's n1 x n2 array
+ *                   with the colour shared among its points, in the limit of many points), so the
+ *                   sample stays delta-like: li already holds the estimate, pdf 1, no MIS.
+ *   LIGHT_SPOT      a point light times POV-Ray's spot factor: cos^tightness, times 1 inside
+ *                   `radius`, 0 outside `falloff` (half-angles in degrees about point_at), a
+ *                   smoothstep of cos between (POV-Ray 3.7 Attenuate_Light).
  *   LIGHT_PARALLEL  POV-Ray `parallel`: irradiance C from the fixed direction location->point_at.
+ *   LIGHT_CYLINDER  POV-Ray `cylinder`: a parallel beam along location->point_at, lighting only
+ *                   points ahead of location within `falloff` of the axis: (1 - r/falloff)^tightness,
+ *                   times a smoothstep beyond `radius` (POV-Ray 3.7 Attenuate_Light). Its shadow
+ *                   rays end at the plane through location.
  *   LIGHT_SPHERE    POV-Ray `radius R` > 0: a sphere of radius R with uniform radiance
  *                   Le = C / (pi R^2), so from afar it equals the point light of the same colour.
  *                   Sampled by the cone of directions it subtends (uniform in solid angle). The
@@ -23,7 +32,8 @@
  * Radiance is looked up at the nearest pixel (matching the sampling density exactly).
  * Light selection: each light is chosen with probability proportional to its power estimate
  * (luminance of its flux; infinite and parallel lights count over a disk or sphere of the scene's
- * bounding radius, as PBRT does) — see light_power. Lights are read-only once the set is finished,
+ * bounding radius, as PBRT does; a light without the inverse square as what it gives at that
+ * radius, a POV-Ray spot as its point light) — see light_power. Lights are read-only once the set is finished,
  * so any number of threads may sample them. */
 #ifndef CIRCE_RENDER_LIGHT_H
 #define CIRCE_RENDER_LIGHT_H
@@ -40,11 +50,22 @@ typedef enum light_kind {
 	LIGHT_POINT,
 	LIGHT_SPOT,
 	LIGHT_PARALLEL,
+	LIGHT_CYLINDER,
 	LIGHT_SPHERE,
 	LIGHT_MESH,
 	LIGHT_BACKGROUND,
 	LIGHT_ENVMAP
 } light_kind;
+
+/* How a point, spot or area light's irradiance falls with the distance d to it. */
+typedef enum light_falloff {
+	LIGHT_FALLOFF_INVERSE_SQUARE, /* circe's `intensity`: 1 / d^2, physical */
+	LIGHT_FALLOFF_NONE,	      /* POV-Ray's light without fade: constant */
+	LIGHT_FALLOFF_FADE	      /* POV-Ray's fade: light_fade(d, fade_distance, fade_power) */
+} light_falloff;
+
+/* The shape a point or spot light's position is spread over (POV-Ray's area_light). */
+typedef enum light_area { LIGHT_AREA_NONE, LIGHT_AREA_PARALLELOGRAM, LIGHT_AREA_ELLIPSE } light_area;
 
 typedef struct light {
 	light_kind kind;
@@ -53,6 +74,14 @@ typedef struct light {
 	vec3 dir;		 /* spot axis, or the direction parallel light travels (unit) */
 	float radius;		 /* sphere */
 	float cos_hot, cos_fall; /* spot: cosines of radius and falloff */
+	float tightness;	 /* spot, cylinder: POV-Ray's exponent; 0 = none */
+	float cyl_radius, cyl_falloff; /* cylinder: full and zero beam radii, scene units */
+	light_falloff falloff;	 /* point, spot (the inverse square by default), parallel, cylinder */
+	float fade_distance, fade_power; /* LIGHT_FALLOFF_FADE */
+	bool shadowless;	 /* POV-Ray's `shadowless`: its samples skip the shadow ray */
+	light_area area_shape;	 /* point, spot */
+	bool area_orient;	 /* the area turned to face each receiver, both axes |axis1| long */
+	vec3 axis1, axis2;	 /* the area's full edge vectors (an ellipse's diameters) */
 	/* LIGHT_MESH: world-space triangles, three vertices each (owned). */
 	vec3 *tri;
 	size_t tri_count;
@@ -74,11 +103,20 @@ typedef struct light_sample {
 	vec3 li;
 	float pdf;
 	bool delta;
+	bool shadowless; /* no shadow ray: the light's `shadowless` */
 } light_sample;
 
 light light_point(vec3 pos, vec3 intensity);
 light light_spot(vec3 pos, vec3 point_at, vec3 intensity, float radius_deg, float falloff_deg);
 light light_parallel(vec3 from, vec3 point_at, vec3 irradiance);
+/* POV-Ray's cylinder light: beam radii in scene units, falloff >= radius > = 0. */
+light light_cylinder(vec3 from, vec3 point_at, vec3 irradiance, float radius, float falloff, float tightness);
+/* Spreads a point or spot light over the parallelogram pos + s axis1 + t axis2, s, t in
+ * [-1/2, 1/2] (or the ellipse inscribed in it), turned to face each receiver when orient. */
+void light_set_area(light *l, vec3 axis1, vec3 axis2, bool ellipse, bool orient);
+/* POV-Ray 3.7's fade (Attenuate_Light): 2 / (1 + (d / fade_distance)^fade_power), or 1 when
+ * fade_power <= 0 or fade_distance <= 0 (POV-Ray fades only when both are given). */
+float light_fade(float d, float fade_distance, float fade_power);
 /* Sphere light with POV-Ray's light colour C: radiance C / (pi radius^2). */
 light light_sphere(vec3 center, float radius, vec3 color);
 light light_background(vec3 radiance);
@@ -91,10 +129,11 @@ bool light_mesh_init(light *l, const vec3 *verts, size_t tri_count, vec3 radianc
 bool light_envmap_init(light *l, const float *rgb, int width, int height, float scale, const xform *rot);
 void light_free(light *l);
 
-/* True for point, spot and parallel lights: no surface to hit, no MIS. */
+/* True for point, spot (area ones too), parallel and cylinder lights: no surface to hit, no MIS. */
 static inline bool light_is_delta(const light *l)
 {
-	return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_PARALLEL;
+	return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_PARALLEL ||
+	       l->kind == LIGHT_CYLINDER;
 }
 static inline bool light_is_infinite(const light *l)
 {

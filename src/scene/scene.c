@@ -514,7 +514,7 @@ void scene_dump(const scene *s, FILE *o)
 		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
 		fputc('\n', o);
 	}
-	static const char *const lk[] = {"point", "sphere", "spot", "parallel"};
+	static const char *const lk[] = {"point", "sphere", "spot", "parallel", "cylinder"};
 	for (size_t i = 0; i < scene_n_lights(s); i++) {
 		const scene_light *l = scene_light_at(s, i);
 		fprintf(o, "light %s", lk[l->kind]);
@@ -522,12 +522,28 @@ void scene_dump(const scene *s, FILE *o)
 		dump_d3(o, "position", l->position);
 		dump_v3(o, "color", l->color);
 		fprintf(o, " intensity %g", l->intensity);
+		if (!l->has_intensity && (l->kind == SCENE_LIGHT_POINT || l->kind == SCENE_LIGHT_SPOT))
+			fprintf(o, " falloff none"); /* POV-Ray's rule: no inverse square without intensity */
 		if (l->kind == SCENE_LIGHT_SPHERE)
 			fprintf(o, " radius %g", l->radius);
-		if (l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL)
+		if (l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER)
 			dump_d3(o, "point_at", l->point_at);
 		if (l->kind == SCENE_LIGHT_SPOT)
 			fprintf(o, " cone %g falloff %g", l->cone_deg, l->falloff_deg);
+		if (l->kind == SCENE_LIGHT_CYLINDER)
+			fprintf(o, " beam %g falloff %g", l->cyl_radius, l->cyl_falloff);
+		if (l->tightness != 0)
+			fprintf(o, " tightness %g", l->tightness);
+		if (l->fade_distance != 0 || l->fade_power != 0)
+			fprintf(o, " fade_distance %g fade_power %g", l->fade_distance, l->fade_power);
+		if (l->shadowless)
+			fprintf(o, " shadowless");
+		if (l->area) {
+			dump_d3(o, "area", l->axis1);
+			dump_d3(o, "and", l->axis2);
+			fprintf(o, " %d %d%s%s%s", l->area_n1, l->area_n2, l->circular ? " circular" : "",
+				l->orient ? " orient" : "", l->jitter ? " jitter" : "");
+		}
 		fputc('\n', o);
 	}
 	/* Oldest first: the lists are built newest first. */

@@ -35,17 +35,38 @@ typedef struct scene_camera {
 	xform xf;
 } scene_camera;
 
-typedef enum scene_light_kind { SCENE_LIGHT_POINT, SCENE_LIGHT_SPHERE, SCENE_LIGHT_SPOT, SCENE_LIGHT_PARALLEL } scene_light_kind;
+typedef enum scene_light_kind {
+	SCENE_LIGHT_POINT,
+	SCENE_LIGHT_SPHERE,
+	SCENE_LIGHT_SPOT,
+	SCENE_LIGHT_PARALLEL,
+	SCENE_LIGHT_CYLINDER
+} scene_light_kind;
 
+/* A light_source. Its distance law (grammar/README.md, "Lights"): with `intensity`, circe's
+ * physical 1 / d^2; without, POV-Ray's: none, or POV-Ray's fade when fade_distance and
+ * fade_power are both > 0. A sphere light is always physical; parallel and cylinder lights never
+ * fall off as 1 / d^2. */
 typedef struct scene_light {
 	diag_loc loc;
 	scene_light_kind kind;
 	dvec3 position;
 	vec3 color;
 	double intensity; /* multiplies color; default 1 */
+	bool has_intensity; /* `intensity` given: the inverse square */
 	double radius; /* sphere lights: scene units */
-	dvec3 point_at; /* spot and parallel lights */
+	dvec3 point_at; /* spot, parallel and cylinder lights */
 	double cone_deg, falloff_deg; /* spot lights: POV-Ray's radius and falloff, degrees */
+	double cyl_radius, cyl_falloff; /* cylinder lights: POV-Ray's radius and falloff, scene units */
+	double tightness; /* spot and cylinder lights; 0 = none */
+	double fade_distance, fade_power; /* POV-Ray's fade; 0 = none */
+	bool shadowless;
+	/* POV-Ray's area_light: axes (full edges, from -1/2 to +1/2 about the position), the sample
+	 * counts (kept for the dump; circe samples the area continuously) and the modifiers. */
+	bool area;
+	dvec3 axis1, axis2;
+	int area_n1, area_n2;
+	bool circular, orient, jitter;
 } scene_light;
 
 typedef enum scene_shape_kind {

@@ -103,6 +103,13 @@ sed '/ignored: begin/,/ignored: end/d' "$good/ignored_settings.pov" >"$tmp/plain
 expect 0 "global_settings without the ignored items" -- "$CIRCE" check --dump "$tmp/plain.pov"
 sed 's/@[^ ]*//g' "$tmp/out" | cmp -s - "$tmp/ignored.ir" ||
 	{ echo "FAIL the ignored settings change the IR:"; sed 's/@[^ ]*//g' "$tmp/out" | diff - "$tmp/ignored.ir"; fail=1; }
+# A light's POV-Ray items that do nothing warn at their keyword, as POV-Ray does: fade_distance
+# without fade_power (its default 0 fades nothing), orient without area_light.
+printf 'light_source { <0, 5, 0> color rgb 1 fade_distance 5 }\nlight_source { 0 color rgb 1 orient }\n' >"$tmp/lightwarn.pov"
+expect 0 "light items that do nothing" -- "$CIRCE" check "$tmp/lightwarn.pov"
+grep -q "lightwarn.pov:1:38: warning: the light does not fade: POV-Ray fades only with both fade_distance and fade_power > 0" "$tmp/err" &&
+	grep -q "lightwarn.pov:2:30: warning: 'orient' only affects area_light" "$tmp/err" ||
+	{ echo "FAIL light warnings:"; cat "$tmp/err"; fail=1; }
 # #error stops with exit 3 and its message at the directive.
 printf 'sphere { 0, 1 }\n#error "stop"\n' >"$tmp/error.pov"
 expect 3 "#error" -- "$CIRCE" check "$tmp/error.pov"

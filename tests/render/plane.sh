@@ -1,6 +1,7 @@
 #!/bin/sh
 # plane.sh: a plane renders on its own (POV-Ray's first scene: a plane and a light) with the
-# shading a diffuse plane under a point light has in closed form, and what it shows does not
+# shading a diffuse plane under a point light has in closed form (a physical light with intensity,
+# and POV-Ray's without: no falloff, or its fade; shadowless through an occluder), and what it shows does not
 # depend on the other objects of the scene: a small object far behind the camera leaves its
 # pixels as they were (the plane reaches out to its horizon from the camera, not to the bounds of
 # the rest of the scene).
@@ -9,7 +10,7 @@ enter_workdir
 MKEXR="$top_builddir/tests/io/mkexr"
 cat >alone.pov <<'EOS'
 camera { location <0, 1, -2> look_at <0, 0, 0> }
-light_source { <0, 4, 0> color rgb 16 }
+light_source { <0, 4, 0> color rgb 1 intensity 16 }
 plane { y, 0 material { diffuse { color rgb 1 } } }
 EOS
 # The centre pixels see the plane about the origin, 4 below the light: radiance
@@ -17,6 +18,16 @@ EOS
 expect_status 0 "$CIRCE" render alone.pov -o alone.exr -W 32 -H 24 --spp 16 --quiet --region 15,11,17,13
 "$MKEXR" ref.exr 32 24 --const 0.31831 --alpha 1 --window 15,11,17,13 || exit 99
 expect_status 0 "$CIRCE" compare alone.exr ref.exr --fail 0.0032 --channels R,G,B
+# POV-Ray's light without intensity, ten times as far: no falloff, radiance albedo / pi * C = 1 / pi
+# again; and one faded at its fade_distance, where POV-Ray's 2 / (1 + 1^3) is 1.
+sed 's|light_source {.*|light_source { <0, 40, 0> color rgb 1 }|' alone.pov >pov.pov
+sed 's|light_source {.*|light_source { <0, 8, 0> color rgb 1 fade_distance 8 fade_power 3 }|' alone.pov >fade.pov
+# A shadowless light through a black sphere above the centre: the plane lit as without it.
+sed 's|light_source {.*|light_source { <0, 40, 0> color rgb 1 shadowless }\nsphere { <0, 3, 0>, 0.5 material { diffuse { color rgb 0 } } }|' alone.pov >shadowless.pov
+for f in pov fade shadowless; do
+	expect_status 0 "$CIRCE" render $f.pov -o $f.exr -W 32 -H 24 --spp 16 --quiet --region 15,11,17,13
+	expect_status 0 "$CIRCE" compare $f.exr ref.exr --fail 0.0032 --channels R,G,B
+done
 expect_status 0 "$CIRCE" check alone.pov
 grep -q "triangles after tessellation: 0 unique" out && fail "check counts no triangles for the plane: $(cat out)"
 # The whole frame, alone and with a small sphere 40 units behind the camera.

@@ -3,7 +3,9 @@
 # same image as at scale 1 with the same seed — ray offsets follow float precision, not a fixed
 # epsilon, and nothing weighs lengths against an absolute unit. Lights scale as physics says: a
 # point or spot light's intensity and a sphere light's colour by s^2 (irradiance I / d^2), while
-# radiance (background, emission) and a parallel light's irradiance stay. "The same" within float
+# radiance (background, emission) and a parallel light's irradiance stay; POV-Ray's lights
+# without intensity (no falloff, or a fade whose fade_distance scales, an area light's axes too)
+# keep their colour. "The same" within float
 # rounding: paths that diverge by rounding make a difference far below the noise, so the RMSE
 # against scale 1 must be under a quarter of the RMSE between two seeds, and no pixel may be off
 # by more than 0.05. (Before, at scale 1e-6: the light selection's scene radius had a floor of
@@ -18,9 +20,12 @@ for s in $scales; do
 	cat >s$s.pov <<EOS
 camera { location <0, 1.2, -4> * $s look_at <0, 0.5, 0> * $s angle 50 }
 background { color rgb <0.3, 0.35, 0.4> }
-light_source { <-3, 5, -4> * $s color rgb 30 * $s * $s }
+light_source { <-3, 5, -4> * $s color rgb 1 intensity 30 * $s * $s }
 light_source { <3, 4, -2> * $s color rgb 20 * $s * $s radius 0.3 * $s }
-light_source { <1, 5, -3> * $s color rgb 20 * $s * $s spotlight point_at <0, 0, 0> * $s radius 15 falloff 25 }
+light_source { <1, 5, -3> * $s color rgb 1 intensity 20 * $s * $s spotlight point_at <0, 0, 0> * $s radius 15 falloff 25 }
+light_source { <2, 6, -5> * $s color rgb 0.3 }
+light_source { <-2, 3, -1> * $s color rgb 0.5 fade_distance 3 * $s fade_power 2 }
+light_source { <0, 6, -2> * $s color rgb 0.4 area_light <2, 0, 0> * $s, <0, 0, 2> * $s, 4, 4 jitter }
 union {
   sphere { <0, 0.6, 0>, 0.6 material { diffuse { color rgb <0.8, 0.3, 0.2> } } }
   box { <0.7, 0, -0.3>, <1.3, 0.6, 0.3> material { diffuse { color rgb 0.7 } } }

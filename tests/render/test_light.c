@@ -1,6 +1,7 @@
 /* test_light: each light samples the density its pdf states (chi-square over directions or over
  * the light's own domain), the pdfs integrate to one, the radiance a sample reports matches what a
- * ray sees, and delta lights follow POV-Ray's point/spot/parallel laws. */
+ * ray sees, and delta lights follow POV-Ray's point/spot/parallel laws: its fade, tightness and
+ * cylinder; area lights sample their area uniformly and give the analytic irradiance. */
 #include "chi2.h"
 #include "render/light.h"
 #include "scenes.h"
@@ -285,6 +286,211 @@ static void test_delta_and_set(void)
 	light_set_free(&s);
 }
 
+/* POV-Ray's fade, 2 / (1 + (d / fade_distance)^fade_power), at values worked by hand; no fade
+ * unless both are > 0 (POV-Ray 3.7 Attenuate_Light). */
+static void test_fade(void)
+{
+	CHECK_NEAR(light_fade(0, 5, 2), 2.0, 1e-6);	  /* at the light: twice the colour */
+	CHECK_NEAR(light_fade(5, 5, 2), 1.0, 1e-6);	  /* at fade_distance: the colour */
+	CHECK_NEAR(light_fade(15, 5, 2), 0.2, 1e-6);	  /* 2 / (1 + 9) */
+	CHECK_NEAR(light_fade(10, 5, 1), 2.0 / 3.0, 1e-6); /* linear: 2 / (1 + 2) */
+	CHECK_NEAR(light_fade(10, 5, 3), 2.0 / 9.0, 1e-6); /* 2 / (1 + 8) */
+	CHECK(light_fade(10, 5, 0) == 1.0f && light_fade(10, 0, 2) == 1.0f && light_fade(10, 5, -1) == 1.0f,
+	      "no fade without both fade_distance and fade_power > 0");
+
+	/* A point light: constant without falloff, faded with fade, 1 / d^2 by default. */
+	light pt = light_point(v3(0, 10, 0), v3s(3));
+	light_sample ls;
+	pt.falloff = LIGHT_FALLOFF_NONE;
+	CHECK(light_sample_from(&pt, v3(0, -3, 0), v3s(0), v2(0, 0), &ls), "point, no falloff");
+	CHECK_NEAR(ls.li.x, 3.0, 1e-6);
+	pt.falloff = LIGHT_FALLOFF_FADE, pt.fade_distance = 6.5f, pt.fade_power = 2;
+	CHECK(light_sample_from(&pt, v3(0, -3, 0), v3s(0), v2(0, 0), &ls), "point, fade");
+	CHECK_NEAR(ls.li.x, 3.0 * 2.0 / (1.0 + 4.0), 1e-5); /* d = 13 = 2 fade_distance */
+	pt.falloff = LIGHT_FALLOFF_INVERSE_SQUARE;
+	CHECK(light_sample_from(&pt, v3(0, -3, 0), v3s(0), v2(0, 0), &ls), "point, 1/d^2");
+	CHECK_NEAR(ls.li.x, 3.0 / 169.0, 1e-7);
+}
+
+/* POV-Ray's spot with tightness and its cylinder light, against Attenuate_Light's formulas
+ * written out here. */
+static void test_spot_tightness_and_cylinder(void)
+{
+	light sp = light_spot(v3(0, 1, 0), v3(0, 0, 0), v3s(1), 20, 40);
+	sp.tightness = 10;
+	sp.falloff = LIGHT_FALLOFF_NONE;
+	light_sample ls;
+	for (float deg = 0; deg <= 45; deg += 7.5f) {
+		float r = deg * RENDER_PI / 180, c = cosf(r);
+		vec3 q = v3(3 * sinf(r), 1 - 3 * cosf(r), 0); /* at distance 3: no falloff */
+		bool ok = light_sample_from(&sp, q, v3s(0), v2(0, 0), &ls);
+		float c20 = cosf(20 * RENDER_PI / 180), c40 = cosf(40 * RENDER_PI / 180),
+		      t = (c - c40) / (c20 - c40);
+		double want = pow(c, 10) * (deg <= 20 ? 1.0 : deg >= 40 ? 0.0 : t * t * (3 - 2 * t));
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "spot, tightness 10, at %g deg: %g, want %g", deg,
+		      ok ? ls.li.x : 0.0, want);
+	}
+
+	/* Cylinder along -y from (0, 5, 0): radius 1, falloff 2, tightness 2. */
+	light cy = light_cylinder(v3(0, 5, 0), v3(0, 0, 0), v3s(2), 1, 2, 2);
+	for (float r = 0; r <= 2.2f; r += 0.25f) {
+		bool ok = light_sample_from(&cy, v3(r, 1, 0), v3s(0), v2(0, 0), &ls);
+		double x = 1 - r / 2.0, t = x / (1 - 1 / 2.0);
+		double want = r >= 2 ? 0 : 2 * x * x * (r > 1 ? t * t * (3 - 2 * t) : 1);
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-5, "cylinder at r %g: %g, want %g", r, ok ? ls.li.x : 0.0,
+		      want);
+		if (ok)
+			CHECK(fabsf(ls.wi.y - 1) < 1e-6f && fabsf(ls.dist - 4) < 1e-5f, "cylinder wi.y %g dist %g",
+			      ls.wi.y, ls.dist);
+	}
+	CHECK(!light_sample_from(&cy, v3(0, 6, 0), v3s(0), v2(0, 0), &ls), "cylinder: nothing behind the light");
+}
+
+/* Where an area light's sample lies in its own frame: (s, t) with y = pos + s a1 + t a2, through
+ * the dual basis of a1, a2 (independent of the sampler's construction). */
+static vec2 area_coords(vec3 y, vec3 pos, vec3 a1, vec3 a2)
+{
+	vec3 d = v3_sub(y, pos);
+	float g11 = v3_dot(a1, a1), g12 = v3_dot(a1, a2), g22 = v3_dot(a2, a2), det = g11 * g22 - g12 * g12;
+	float b1 = v3_dot(d, a1), b2 = v3_dot(d, a2);
+	return v2((g22 * b1 - g12 * b2) / det, (g11 * b2 - g12 * b1) / det);
+}
+
+/* The points an area light shines from are uniform over its parallelogram (cells of equal area in
+ * (s, t) in [-1/2, 1/2]^2) or its ellipse (cells of equal area in the unit disk: rings of equal
+ * r^2, sectors of equal angle), affine maps keeping area ratios; orient turns a disk to face p. */
+static void test_area_sampling(long n)
+{
+	enum { NB = 8, NBIN = NB * NB };
+	vec3 pos = v3(0.5f, 4, 1), a1 = v3(3, 0, 0.5f), a2 = v3(1, 0.2f, 2); /* skewed, tilted */
+	vec3 p = v3(0.2f, 0, -0.3f);
+	for (int ellipse = 0; ellipse <= 1; ellipse++) {
+		light l = light_point(pos, v3s(1));
+		light_set_area(&l, a1, a2, ellipse, false);
+		double obs[NBIN] = {0}, ex[NBIN];
+		rng g;
+		rng_seed(&g, 5, (uint64_t)ellipse);
+		for (long i = 0; i < n; i++) {
+			light_sample ls;
+			if (!light_sample_from(&l, p, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+				continue;
+			CHECK(i > 10 || (ls.delta && ls.pdf == 1.0f), "area sample: delta-like");
+			vec2 st = area_coords(v3_madd(p, ls.wi, ls.dist), pos, a1, a2);
+			int i0, i1;
+			if (ellipse) {
+				float r2 = 4 * (st.x * st.x + st.y * st.y), phi = atan2f(st.y, st.x) + RENDER_PI;
+				CHECK(r2 <= 1.0001f, "ellipse sample outside: r^2 %g", r2);
+				i0 = (int)(r2 * NB), i1 = (int)(phi / (2 * RENDER_PI) * NB);
+			} else {
+				CHECK(fabsf(st.x) <= 0.5001f && fabsf(st.y) <= 0.5001f, "parallelogram sample outside: %g %g",
+				      st.x, st.y);
+				i0 = (int)((st.x + 0.5f) * NB), i1 = (int)((st.y + 0.5f) * NB);
+			}
+			i0 = i0 < 0 ? 0 : i0 >= NB ? NB - 1 : i0;
+			i1 = i1 < 0 ? 0 : i1 >= NB ? NB - 1 : i1;
+			obs[i0 * NB + i1] += 1;
+		}
+		for (int i = 0; i < NBIN; i++)
+			ex[i] = (double)n / NBIN;
+		chi2_counts(ellipse ? "area light (ellipse, rings and sectors)" : "area light (parallelogram cells)", obs,
+			    ex, NBIN);
+		light_free(&l);
+	}
+
+	/* orient + circular: a disk of diameter |a1| square to p -> pos, uniform on it. */
+	light l = light_point(pos, v3s(1));
+	light_set_area(&l, a1, a2, true, true);
+	vec3 axis = v3_normalize(v3_sub(pos, p)), e1, e2;
+	v3_basis(axis, &e1, &e2);
+	float rad = 0.5f * v3_length(a1);
+	double obs[NBIN] = {0}, ex[NBIN];
+	rng g;
+	rng_seed(&g, 5, 7);
+	for (long i = 0; i < n; i++) {
+		light_sample ls;
+		if (!light_sample_from(&l, p, v3s(0), v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		vec3 d = v3_sub(v3_madd(p, ls.wi, ls.dist), pos);
+		CHECK(fabsf(v3_dot(d, axis)) < 1e-4f * rad, "oriented sample off its plane: %g", v3_dot(d, axis));
+		float x = v3_dot(d, e1) / rad, y = v3_dot(d, e2) / rad;
+		float r2 = x * x + y * y, phi = atan2f(y, x) + RENDER_PI;
+		CHECK(r2 <= 1.0001f, "oriented disk sample outside: r^2 %g", r2);
+		int i0 = (int)(r2 * NB), i1 = (int)(phi / (2 * RENDER_PI) * NB);
+		i0 = i0 >= NB ? NB - 1 : i0;
+		i1 = i1 < 0 ? 0 : i1 >= NB ? NB - 1 : i1;
+		obs[i0 * NB + i1] += 1;
+	}
+	for (int i = 0; i < NBIN; i++)
+		ex[i] = (double)n / NBIN;
+	chi2_counts("area light (oriented disk)", obs, ex, NBIN);
+	light_free(&l);
+}
+
+/* Irradiance at a point below a rectangle [x1, x2] x [y1, y2] at height h, parallel to the
+ * receiver, the light's colour C spread over its area A, by inclusion-exclusion over corner
+ * rectangles. With 1/d^2: E = C / A * solid angle, the corner's solid angle
+ * atan(x y / (h sqrt(x^2 + y^2 + h^2))). Without falloff: E = C / A * h * integral of 1 / r,
+ * antiderivative x ln(y + r) + y ln(x + r) - h atan(x y / (h r)) (r = sqrt(x^2 + y^2 + h^2)). */
+static double corner(double x, double y, double h, bool inverse_square)
+{
+	double r = sqrt(x * x + y * y + h * h);
+	if (inverse_square)
+		return atan(x * y / (h * r));
+	return h * (x * log(y + r) + y * log(x + r) - h * atan(x * y / (h * r)));
+}
+
+static double rect_irradiance(double x1, double x2, double y1, double y2, double h, bool inverse_square)
+{
+	double s = corner(x2, y2, h, inverse_square) - corner(x1, y2, h, inverse_square) -
+		   corner(x2, y1, h, inverse_square) + corner(x1, y1, h, inverse_square);
+	return s / ((x2 - x1) * (y2 - y1));
+}
+
+/* Monte Carlo irradiance of light l on a receiver at p with normal n (no occluders). */
+static void mc_irradiance(const light *l, vec3 p, vec3 n, long m, uint64_t seed, double *mean, double *se)
+{
+	rng g;
+	rng_seed(&g, 6, seed);
+	double sum = 0, sum2 = 0;
+	for (long i = 0; i < m; i++) {
+		light_sample ls;
+		if (!light_sample_from(l, p, n, v2(rng_float(&g), rng_float(&g)), &ls))
+			continue;
+		double e = ls.li.x * fmax(0.0, v3_dot(n, ls.wi)) / ls.pdf;
+		sum += e, sum2 += e * e;
+	}
+	*mean = sum / m;
+	*se = sqrt(fmax(0.0, sum2 / m - *mean * *mean) / m);
+}
+
+static void test_area_irradiance(long n)
+{
+	/* A 2 x 3 rectangle at height 1.5 over a point off its centre, facing down; the receiver up. */
+	vec3 pos = v3(0, 1.5f, 0), p = v3(0.4f, 0, -0.7f), up = v3(0, 1, 0);
+	for (int inv = 0; inv <= 1; inv++) {
+		light l = light_point(pos, v3s(2));
+		l.falloff = inv ? LIGHT_FALLOFF_INVERSE_SQUARE : LIGHT_FALLOFF_NONE;
+		light_set_area(&l, v3(2, 0, 0), v3(0, 0, 3), false, false);
+		double want = 2 * rect_irradiance(-1 - 0.4, 1 - 0.4, -1.5 + 0.7, 1.5 + 0.7, 1.5, inv), got, se;
+		mc_irradiance(&l, p, up, n, (uint64_t)inv, &got, &se);
+		CHECK(fabs(got - want) < 5 * se + 1e-4 * want, "rectangle, %s: irradiance %g +- %g, analytic %g",
+		      inv ? "1/d^2" : "no falloff", got, se, want);
+		light_free(&l);
+	}
+	/* A disk of radius R = 1 at height h = 2 on axis: with 1/d^2, 2 C / R^2 (1 - h / sqrt(h^2 + R^2));
+	 * without falloff, 2 C h / R^2 (sqrt(h^2 + R^2) - h). */
+	for (int inv = 0; inv <= 1; inv++) {
+		light l = light_point(v3(0, 2, 0), v3s(1));
+		l.falloff = inv ? LIGHT_FALLOFF_INVERSE_SQUARE : LIGHT_FALLOFF_NONE;
+		light_set_area(&l, v3(2, 0, 0), v3(0, 0, 2), true, false);
+		double want = inv ? 2 * (1 - 2 / sqrt(5.0)) : 2 * 2 * (sqrt(5.0) - 2), got, se;
+		mc_irradiance(&l, v3s(0), up, n, 2 + (uint64_t)inv, &got, &se);
+		CHECK(fabs(got - want) < 5 * se + 1e-4 * want, "disk, %s: irradiance %g +- %g, analytic %g",
+		      inv ? "1/d^2" : "no falloff", got, se, want);
+		light_free(&l);
+	}
+}
+
 int main(void)
 {
 	long n = test_samples(1000000);
@@ -293,5 +499,9 @@ int main(void)
 	test_envmap(n);
 	test_mesh(n);
 	test_delta_and_set();
+	test_fade();
+	test_spot_tightness_and_cylinder();
+	test_area_sampling(n);
+	test_area_irradiance(n);
 	return check_done("test_light");
 }
