@@ -507,7 +507,9 @@ static bool write_value(parser *p, lang_datafile *f, const value *v, diag_loc lo
 	}
 }
 
-/* write = "#write" "(" identifier "," expression { "," expression } ")" */
+/* write = "#write" "(" identifier [ "," ] expression { [ "," ] expression } ")"
+ * The commas are optional, as POV-Ray 3.7's Parse_Comma makes them (its portfolio's html_gen.inc
+ * writes `#write(HTMLFile Header1)`). */
 bool lang_write_directive(parser *p)
 {
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
@@ -515,7 +517,7 @@ bool lang_write_directive(parser *p)
 	lang_datafile *f = ok ? named_file(p, "#write", DATA_WRITE) : NULL;
 	ok = f != NULL;
 	while (ok && !lang_accept(p, LTK_RPAREN)) {
-		ok = lang_expect(p, LTK_COMMA, "between the values of '#write'");
+		lang_accept(p, LTK_COMMA);
 		value v;
 		diag_loc loc = lang_peek(p)->loc;
 		ok = ok && lang_expr(p, &v) && write_value(p, f, &v, loc);

@@ -415,6 +415,12 @@ bool lang_lex(lang_lexer *lx, diag *d, lang_token *t)
 			t->kind = LTK_EOF;
 			return false;
 		}
+		if (lx->p >= lx->end || !is_ident_start(*lx->p)) {
+			/* `look_at <0, 2, 0>#` (POV-Ray's language/image_size.pov): povray 3.7.0 drops a '#'
+			 * that no name follows, silently; circe drops it too, with a warning. */
+			diag_warning(d, t->loc, "'#' not followed by a directive name is ignored (as POV-Ray does)");
+			return lang_lex(lx, d, t);
+		}
 		return lex_word(lx, d, t, true);
 	}
 	t->text = p;

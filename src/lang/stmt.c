@@ -1967,14 +1967,15 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 	}
 }
 
-/* The scene's camera statement: one per scene. */
+/* The scene's camera statement. A later one replaces the camera, as in POV-Ray 3.7 (its
+ * Parse_Frame parses each into the one scene camera; screen.inc's Set_Camera_* macros rely on
+ * it), with a warning, since two cameras in one file are more often a slip. */
 static bool camera(parser *p)
 {
 	lang_token kw = *lang_advance(p);
 	if (p->sc->has_camera) {
-		lang_error(p, kw.loc, "a second camera (a scene has one)");
+		diag_warning(p->d, kw.loc, "a second camera replaces the first (POV-Ray uses the last one)");
 		diag_note(p->d, p->sc->camera.loc, "the first camera is here");
-		return false;
 	}
 	p->sc->has_camera = true;
 	return camera_block(p, &p->sc->camera, kw.loc);

@@ -76,7 +76,7 @@ cat >"$tmp/scene/write.pov" <<'EOF2'
 #write (F, 1.23456789, ",", <1, 2.5, 3>, ",", "\"str\"", ",\n", -1e10, ", ", <1, 2>, "\n")
 #fclose F
 #fopen F "out.txt" append
-#write (F, 7, "\n")
+#write (F 7 "\n") // POV-Ray's commas are optional (its portfolio's html_gen.inc: #write(HTMLFile Header1))
 #fclose F
 #fopen G "out.txt" read
 #read (G, A, B, C, D, E, H)
