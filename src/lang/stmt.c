@@ -1835,6 +1835,47 @@ static bool camera_transform(parser *p, scene_camera *c, bool *matched)
 	return true;
 }
 
+/* "angle" float [ "," float ] (the lookahead is 'angle'): the horizontal field of view, and a
+ * spherical camera's vertical one (POV-Ray: half the horizontal unless given). */
+static bool camera_angle(parser *p, scene_camera *c, diag_loc at)
+{
+	double x;
+	lang_advance(p);
+	TRY(lang_float(p, "after 'angle'", &x));
+	bool screen = c->type == SCENE_CAM_PERSPECTIVE || c->type == SCENE_CAM_ORTHOGRAPHIC;
+	if (!(x > 0 && (screen ? x < 180 : x <= 360)))
+		return lang_error(p, at, "camera angle must be in (0, %s) degrees, found %g", screen ? "180" : "360]", x);
+	c->angle_deg = x;
+	c->has_angle = true;
+	if (c->type != SCENE_CAM_SPHERICAL)
+		return true;
+	c->v_angle_deg = 0.5 * x; /* POV-Ray: the vertical half the horizontal */
+	if (lang_accept(p, LTK_COMMA)) {
+		diag_loc v_at = lang_peek(p)->loc;
+		TRY(lang_float(p, "after 'angle' h ','", &x));
+		if (!(x > 0 && x <= 180))
+			return lang_error(p, v_at, "spherical camera's vertical angle must be in (0, 180], found %g", x);
+		c->v_angle_deg = x;
+	}
+	return true;
+}
+
+/* POV-Ray's focal-blur sampling settings, read and not used: circe is progressive, every sample
+ * of a pixel a lens sample, until --spp. "blur_samples" float [ "," float ] | "confidence" float
+ * | "variance" float; t is the lookahead. */
+static bool camera_accepted(parser *p, const lang_token *t)
+{
+	double x;
+	lang_advance(p);
+	if (t->kind == LTK_KW_BLUR_SAMPLES) {
+		TRY(lang_float(p, "after 'blur_samples'", &x) && positive(p, t->loc, "blur_samples", x));
+		if (lang_accept(p, LTK_COMMA))
+			TRY(lang_float(p, "after 'blur_samples' min ','", &x));
+		return true;
+	}
+	return lang_float(p, t->kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x);
+}
+
 /* camera = "camera" "{" [ projection ] { "location" vector | "look_at" vector | "sky" vector
  *          | "direction" vector | "angle" float [ "," float ] | "right" vector | "up" vector
  *          | "aperture" float | "focal_point" vector | "blur_samples" float [ "," float ]
@@ -1913,28 +1954,9 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 			v = &c->focal_point;
 			c->has_focal_point = true;
 			break;
-		case LTK_KW_ANGLE: {
-			lang_advance(p);
-			TRY(lang_float(p, "after 'angle'", &x));
-			bool screen = c->type == SCENE_CAM_PERSPECTIVE || c->type == SCENE_CAM_ORTHOGRAPHIC;
-			if (!(x > 0 && (screen ? x < 180 : x <= 360)))
-				return lang_error(p, t.loc, "camera angle must be in (0, %s) degrees, found %g",
-						  screen ? "180" : "360]", x);
-			c->angle_deg = x;
-			c->has_angle = true;
-			if (c->type == SCENE_CAM_SPHERICAL) {
-				c->v_angle_deg = 0.5 * x; /* POV-Ray: the vertical half the horizontal */
-				if (lang_peek(p)->kind == LTK_COMMA) {
-					lang_advance(p);
-					diag_loc at = lang_peek(p)->loc;
-					TRY(lang_float(p, "after 'angle' h ','", &x));
-					if (!(x > 0 && x <= 180))
-						return lang_error(p, at, "spherical camera's vertical angle must be in (0, 180], found %g", x);
-					c->v_angle_deg = x;
-				}
-			}
+		case LTK_KW_ANGLE:
+			TRY(camera_angle(p, c, t.loc));
 			continue;
-		}
 		case LTK_KW_APERTURE:
 			lang_advance(p);
 			TRY(lang_float(p, "after 'aperture'", &x));
@@ -1943,19 +1965,9 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 			c->aperture = x;
 			continue;
 		case LTK_KW_BLUR_SAMPLES:
-			/* Accepted: circe is progressive, every sample a lens sample. */
-			lang_advance(p);
-			TRY(lang_float(p, "after 'blur_samples'", &x) && positive(p, t.loc, "blur_samples", x));
-			if (lang_peek(p)->kind == LTK_COMMA) {
-				lang_advance(p);
-				TRY(lang_float(p, "after 'blur_samples' min ','", &x));
-			}
-			continue;
 		case LTK_KW_CONFIDENCE:
 		case LTK_KW_VARIANCE:
-			/* Accepted: POV-Ray's adaptive stop for focal blur; circe samples until --spp. */
-			lang_advance(p);
-			TRY(lang_float(p, t.kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x));
+			TRY(camera_accepted(p, &t));
 			continue;
 		default:
 			return bad_item(p, open, "camera", "a camera setting (location, look_at, sky, angle, ..., a transform)");
@@ -2140,6 +2152,46 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 	return true;
 }
 
+/* What a light_source starts with: a declared light's name (copied, then modified; its
+ * point_at counts as given), or the position and an optional colour after a comma (a float, a
+ * vector or a name: `<0, 9, 0>, 1` is grey). */
+static bool light_head(parser *p, scene_light *l, diag_loc kw, bool *point_at)
+{
+	if (names(p, VAL_LIGHT)) {
+		const value *v;
+		TRY(v = declared(p, VAL_LIGHT, "a light_source"));
+		*l = *v->light;
+		l->loc = kw;
+		*point_at = l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER;
+		return true;
+	}
+	TRY(lang_vec3(p, "as the light position", &l->position));
+	if (lang_accept(p, LTK_COMMA)) { /* a colour led by no keyword: a float, a vector, a name */
+		lang_tok k = lang_peek(p)->kind;
+		if (k < LANG_FIRST_KEYWORD && k != LTK_RBRACE && k != LTK_UNSUPPORTED && k != LTK_EOF)
+			TRY(light_colour(p, &l->color));
+	}
+	return true;
+}
+
+/* The checks at a light_source's '}' of what its items ask of each other: point_at and falloff
+ * (given where their loc is not NULL) need a light with a direction, a spot's falloff cone holds
+ * its radius cone, and a directed light's point_at is not its position. */
+static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag_loc *point_at, const diag_loc *falloff)
+{
+	bool directed = l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER;
+	if (point_at && !directed)
+		return lang_error(p, *point_at, "'point_at' needs 'spotlight', 'cylinder' or 'parallel'");
+	if (falloff && l->kind != SCENE_LIGHT_SPOT && l->kind != SCENE_LIGHT_CYLINDER)
+		return lang_error(p, *falloff, "'falloff' needs 'spotlight' or 'cylinder'");
+	if (l->kind == SCENE_LIGHT_SPOT && l->falloff_deg < l->cone_deg)
+		return lang_error(p, kw, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
+				  l->falloff_deg, l->cone_deg);
+	if (directed && !(d3_length(d3_sub(l->point_at, l->position)) > 0))
+		return lang_error(p, kw, "point_at is the light position: the light has no direction");
+	return true;
+}
+
 /* light_source = "light_source" "{" ( identifier | vector [ "," colour ] ) { colour
  *                | "intensity" float | "radius" float | "spotlight" | "cylinder" | "parallel"
  *                | "point_at" vector | "falloff" float | "tightness" float | "fade_distance" float
@@ -2157,20 +2209,7 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 	bool point_at = false, falloff = false;
 	diag_loc point_at_loc = kw, falloff_loc = kw;
 	light_seen seen = {0};
-	if (names(p, VAL_LIGHT)) {
-		const value *v;
-		TRY(v = declared(p, VAL_LIGHT, "a light_source"));
-		l = *v->light;
-		l.loc = kw;
-		point_at = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL || l.kind == SCENE_LIGHT_CYLINDER;
-	} else {
-		TRY(lang_vec3(p, "as the light position", &l.position));
-		if (lang_accept(p, LTK_COMMA)) { /* a colour led by no keyword: a float, a vector, a name */
-			lang_tok k = lang_peek(p)->kind;
-			if (k < LANG_FIRST_KEYWORD && k != LTK_RBRACE && k != LTK_UNSUPPORTED && k != LTK_EOF)
-				TRY(light_colour(p, &l.color));
-		}
-	}
+	TRY(light_head(p, &l, kw, &point_at));
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
@@ -2192,16 +2231,8 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			if (point_at && !directed)
-				return lang_error(p, point_at_loc, "'point_at' needs 'spotlight', 'cylinder' or 'parallel'");
-			if (falloff && l.kind != SCENE_LIGHT_SPOT && l.kind != SCENE_LIGHT_CYLINDER)
-				return lang_error(p, falloff_loc, "'falloff' needs 'spotlight' or 'cylinder'");
-			if (l.kind == SCENE_LIGHT_SPOT && l.falloff_deg < l.cone_deg)
-				return lang_error(p, kw, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
-						  l.falloff_deg, l.cone_deg);
-			if (directed && !(d3_length(d3_sub(l.point_at, l.position)) > 0))
-				return lang_error(p, kw, "point_at is the light position: the light has no direction");
-			TRY(light_pov_checks(p, &l, &seen));
+			TRY(light_close(p, &l, kw, point_at ? &point_at_loc : NULL, falloff ? &falloff_loc : NULL) &&
+			    light_pov_checks(p, &l, &seen));
 			*out = l;
 			return true;
 		case LTK_KW_INTENSITY:

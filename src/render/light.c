@@ -278,6 +278,49 @@ static vec3 emitting_point(const light *l, vec3 p, vec2 u)
 	return v3_add(l->pos, v3_add(v3_scale(a1, 0.5f * s.x), v3_scale(a2, 0.5f * s.y)));
 }
 
+/* A sphere light: a direction uniform in the cone the sphere subtends from p, to its near side. */
+static bool sample_sphere(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+	vec3 axis;
+	float dist, sin2_max;
+	if (!sphere_cone(l, p, &axis, &dist, &sin2_max))
+		return false;
+	out->wi = v3_normalize(from_frame(axis, render_uniform_cone(u, sin2_max)));
+	/* Distance to the near side: b - sqrt(r^2 - |to - b wi|^2), b = to . wi; the squared
+	 * distance of the centre from the ray avoids the cancellation of d^2 - b^2. */
+	vec3 to = v3_scale(axis, dist);
+	float b = v3_dot(to, out->wi);
+	vec3 perp = v3_sub(to, v3_scale(out->wi, b));
+	float disc = l->radius * l->radius - v3_length2(perp);
+	out->dist = b - sqrtf(fmaxf(0.0f, disc));
+	out->li = l->color;
+	out->pdf = render_uniform_cone_pdf(sin2_max);
+	return out->dist > 0.0f;
+}
+
+/* A mesh light: a triangle chosen by area (its table), a point uniform on it. */
+static bool sample_mesh(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+	size_t tri;
+	float x = render_distrib1d_sample(&l->tri_select, u.x, NULL, &tri);
+	float ux =
+	    fminf(x * (float)l->tri_count - (float)tri, nextafterf(1.0f, 0.0f)); /* reuse u.x */
+	vec2 b = render_uniform_triangle(v2(fmaxf(ux, 0.0f), u.y));
+	const vec3 *v = l->tri + 3 * tri;
+	vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)),
+			v3_scale(v[2], 1.0f - b.x - b.y));
+	vec3 nl = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
+	vec3 to = v3_sub(y, p);
+	float d2 = v3_length2(to);
+	if (!(d2 > 0.0f))
+		return false;
+	out->dist = sqrtf(d2);
+	out->wi = v3_scale(to, 1.0f / out->dist);
+	out->li = l->color;
+	out->pdf = light_pdf(l, p, v3s(0.0f), out->wi, out->dist, nl);
+	return out->pdf > 0.0f;
+}
+
 bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out)
 {
 	out->delta = light_is_delta(l);
@@ -317,43 +360,8 @@ bool light_sample_from(const light *l, vec3 p, vec3 n, vec2 u, light_sample *out
 		out->pdf = 1.0f;
 		return k > 0.0f;
 	}
-	case LIGHT_SPHERE: {
-		vec3 axis;
-		float dist, sin2_max;
-		if (!sphere_cone(l, p, &axis, &dist, &sin2_max))
-			return false;
-		out->wi = v3_normalize(from_frame(axis, render_uniform_cone(u, sin2_max)));
-		/* Distance to the near side: b - sqrt(r^2 - |to - b wi|^2), b = to . wi; the squared
-		 * distance of the centre from the ray avoids the cancellation of d^2 - b^2. */
-		vec3 to = v3_scale(axis, dist);
-		float b = v3_dot(to, out->wi);
-		vec3 perp = v3_sub(to, v3_scale(out->wi, b));
-		float disc = l->radius * l->radius - v3_length2(perp);
-		out->dist = b - sqrtf(fmaxf(0.0f, disc));
-		out->li = l->color;
-		out->pdf = render_uniform_cone_pdf(sin2_max);
-		return out->dist > 0.0f;
-	}
-	case LIGHT_MESH: {
-		size_t tri;
-		float x = render_distrib1d_sample(&l->tri_select, u.x, NULL, &tri);
-		float ux =
-		    fminf(x * (float)l->tri_count - (float)tri, nextafterf(1.0f, 0.0f)); /* reuse u.x */
-		vec2 b = render_uniform_triangle(v2(fmaxf(ux, 0.0f), u.y));
-		const vec3 *v = l->tri + 3 * tri;
-		vec3 y = v3_add(v3_add(v3_scale(v[0], b.x), v3_scale(v[1], b.y)),
-				v3_scale(v[2], 1.0f - b.x - b.y));
-		vec3 nl = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
-		vec3 to = v3_sub(y, p);
-		float d2 = v3_length2(to);
-		if (!(d2 > 0.0f))
-			return false;
-		out->dist = sqrtf(d2);
-		out->wi = v3_scale(to, 1.0f / out->dist);
-		out->li = l->color;
-		out->pdf = light_pdf(l, p, v3s(0.0f), out->wi, out->dist, nl);
-		return out->pdf > 0.0f;
-	}
+	case LIGHT_SPHERE: return sample_sphere(l, p, u, out);
+	case LIGHT_MESH: return sample_mesh(l, p, u, out);
 	case LIGHT_BACKGROUND:
 		/* Constant radiance: what a receiver needs is its cosine, so with a normal the
 		 * directions follow it (half the uniform sphere's samples would fall below it). */

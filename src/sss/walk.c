@@ -98,6 +98,11 @@ static vec3 walk_step_in(vec3 p, vec3 n_in, float scale, int k)
 	return k <= 1 ? o : v3_madd(p, v3_sub(o, p), ldexpf(1.0f, k - 1 < 30 ? k - 1 : 30));
 }
 
+/* One of the few functions over 100 lines left whole (issue 16): the walk is one loop whose
+ * steps (the boundary hit, the free flight with its channel pdfs, the exit test, the reentry
+ * after a step that lands outside, the scattering) read and write the same eight variables of
+ * its state (origin, direction, beta, sigma_t, outward, stuck, steps, the result); split, each
+ * step would take them all by pointer and the loop would read worse, not better. */
 sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, float x_scale, vec3 w,
 			 rng *g, int max_steps)
 {
