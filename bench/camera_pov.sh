@@ -45,27 +45,27 @@ spheres='<0, 0, 0>, 1, 1
 <-5, 1, -6>, 1, 0.7
 <0, 0, -11>, 1.5, 0.9
 <0, 5, -5>, 1, 0.4'
+# write_scene BODY pov|circe: the spheres under camera { BODY }, each glowing its grey: in POV-Ray's
+# words (ambient 1, diffuse 0, under ambient_light 1) or in circe's (an emission).
+write_scene() {
+	[ "$2" = pov ] && echo "global_settings { ambient_light 1 assumed_gamma 1 }"
+	echo "camera { $1 }"
+	echo "background { color rgb 0 }"
+	echo "$spheres" | while IFS= read -r s; do
+		g=${s##*, }; c=${s%, *}
+		if [ "$2" = pov ]; then
+			echo "sphere { $c pigment { rgb $g } finish { ambient 1 diffuse 0 } }"
+		else
+			echo "sphere { $c material { emission rgb $g } }"
+		fi
+	done
+}
 sheet=""
 echo "camera                 r       IoU    centroid_offset_px"
 echo "$cams" | while IFS='|' read -r name body; do
 	pov="$out/$name.pov" cir="$out/$name.circe.pov"
-	{
-		echo "global_settings { ambient_light 1 assumed_gamma 1 }"
-		echo "camera { $body }"
-		echo "background { color rgb 0 }"
-		echo "$spheres" | while IFS= read -r s; do
-			g=${s##*, }; c=${s%, *}
-			echo "sphere { $c pigment { rgb $g } finish { ambient 1 diffuse 0 } }"
-		done
-	} >"$pov"
-	{
-		echo "camera { $body }"
-		echo "background { color rgb 0 }"
-		echo "$spheres" | while IFS= read -r s; do
-			g=${s##*, }; c=${s%, *}
-			echo "sphere { $c material { emission rgb $g } }"
-		done
-	} >"$cir"
+	write_scene "$body" pov >"$pov"
+	write_scene "$body" circe >"$cir"
 	povray +W$W +H$H -D +A0.1 +I"$pov" +O"$out/$name.pov.png" +L"$inc" >/dev/null 2>&1 ||
 		{ echo "$name: povray failed"; continue; }
 	"$circe" render "$cir" -W $W -H $H --spp 64 --seed 1 --quiet -o "$out/$name.exr" --png "$out/$name.circe.png" ||

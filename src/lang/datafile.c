@@ -209,15 +209,24 @@ static int open_count(parser *p)
 	return n;
 }
 
+/* The identifier that comes next (consumed, not macro-expanded) into *name: a data file's name
+ * after `what` ("'#fopen'", "'#read'"). */
+static bool file_name(parser *p, const char *what, lang_token *name)
+{
+	p->no_expand = true;
+	*name = *lang_peek(p);
+	p->no_expand = false;
+	if (name->kind != LTK_IDENT)
+		return lang_error_found(p, "expected the data file's name %s", what);
+	lang_advance(p);
+	return true;
+}
+
 /* fopen = "#fopen" identifier string ( "read" | "write" | "append" ) */
 bool lang_fopen(parser *p, diag_loc at)
 {
-	p->no_expand = true;
-	lang_token name = *lang_peek(p);
-	p->no_expand = false;
-	if (name.kind != LTK_IDENT)
-		return lang_error_found(p, "expected the data file's name after '#fopen'");
-	lang_advance(p);
+	lang_token name;
+	TRY(file_name(p, "after '#fopen'", &name));
 	int old = find_file(p, name.text, name.len, true);
 	if (old >= 0)
 		return lang_error(p, name.loc, "'%.*s' is already an open data file (opened at line %u): #fclose it first",
@@ -269,12 +278,8 @@ static bool close_file(parser *p, lang_datafile *f, diag_loc at)
 /* fclose = "#fclose" identifier   (of a file not open: a warning, as #undef of an unknown name) */
 bool lang_fclose(parser *p)
 {
-	p->no_expand = true;
-	lang_token name = *lang_peek(p);
-	p->no_expand = false;
-	if (name.kind != LTK_IDENT)
-		return lang_error_found(p, "expected the data file's name after '#fclose'");
-	lang_advance(p);
+	lang_token name;
+	TRY(file_name(p, "after '#fclose'", &name));
 	int i = find_file(p, name.text, name.len, true);
 	const symbol *s = lang_lookup(p, name.text, name.len);
 	if (i < 0 || !s || s->val.kind != VAL_FILE) {
@@ -303,14 +308,11 @@ void lang_datafiles_close(parser *p)
 /* The open data file named by the identifier that comes next (consumed); what: "#read". */
 static lang_datafile *named_file(parser *p, const char *what, data_mode want)
 {
-	p->no_expand = true;
-	lang_token name = *lang_peek(p);
-	p->no_expand = false;
-	if (name.kind != LTK_IDENT) {
-		lang_error_found(p, "expected the data file's name in '%s'", what);
+	lang_token name;
+	char in[32];
+	snprintf(in, sizeof in, "in '%s'", what);
+	if (!file_name(p, in, &name))
 		return NULL;
-	}
-	lang_advance(p);
 	const symbol *s = lang_lookup(p, name.text, name.len);
 	if (!s) {
 		int e = find_file(p, name.text, name.len, false);
@@ -367,20 +369,6 @@ static bool data_number(parser *p, lang_datafile *f, lang_token *t, double *x)
 	return true;
 }
 
-static bool data_string(parser *p, const lang_token *t, value *out)
-{
-	char *buf = arena_alloc(&p->sc->arena, t->len + 1, 1, 1);
-	if (!buf)
-		return lang_error(p, t->loc, "out of memory");
-	size_t k = 0;
-	for (uint32_t i = 0; i < t->len; i++)
-		buf[k++] = t->text[i] == '\\' ? lang_string_escape(t->text[++i]) : t->text[i];
-	buf[k] = '\0';
-	out->kind = VAL_STRING;
-	out->str = buf;
-	return true;
-}
-
 /* data_value = number | string | "<" number { "," number } ">"   (2 to LANG_MAX_VECTOR numbers) */
 static bool data_value(parser *p, lang_datafile *f, value *out)
 {
@@ -388,7 +376,7 @@ static bool data_value(parser *p, lang_datafile *f, value *out)
 	TRY(data_token(p, f, &t));
 	memset(out, 0, sizeof *out);
 	if (t.kind == LTK_STRING)
-		return data_string(p, &t, out);
+		return lang_decode_string(p, &t, out);
 	if (t.kind != LTK_LT) {
 		out->kind = VAL_FLOAT, out->n = 1;
 		return data_number(p, f, &t, &out->v[0]);

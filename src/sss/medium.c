@@ -12,6 +12,15 @@
 static const char *const method_names[SSS_METHODS] = {"default", "circle", "fullcircle", "disk", "volume"};
 static const char *const profile_names[SSS_PROFILE_KINDS] = {"gaussian", "sum_of_gaussians", "burley", "dipole"};
 
+/* The index of name in names[0, n), or -1. */
+static int name_index(const char *const *names, int n, const char *name)
+{
+	for (int i = 0; i < n; i++)
+		if (!strcmp(name, names[i]))
+			return i;
+	return -1;
+}
+
 const char *sss_method_name(sss_method m)
 {
 	return (unsigned)m < SSS_METHODS ? method_names[m] : "?";
@@ -19,10 +28,10 @@ const char *sss_method_name(sss_method m)
 
 bool sss_method_from_name(const char *name, sss_method *m)
 {
-	for (int i = 0; i < SSS_METHODS; i++)
-		if (!strcmp(name, method_names[i]))
-			return *m = (sss_method)i, true;
-	return false;
+	int i = name_index(method_names, SSS_METHODS, name);
+	if (i >= 0)
+		*m = (sss_method)i;
+	return i >= 0;
 }
 
 const char *sss_profile_name(sss_profile_kind k)
@@ -32,10 +41,10 @@ const char *sss_profile_name(sss_profile_kind k)
 
 bool sss_profile_from_name(const char *name, sss_profile_kind *k)
 {
-	for (int i = 0; i < SSS_PROFILE_KINDS; i++)
-		if (!strcmp(name, profile_names[i]))
-			return *k = (sss_profile_kind)i, true;
-	return false;
+	int i = name_index(profile_names, SSS_PROFILE_KINDS, name);
+	if (i >= 0)
+		*k = (sss_profile_kind)i;
+	return i >= 0;
 }
 
 /* JMLH01, Figure 5: sigma_s' and sigma_a in mm^-1 for R, G, B, with the eta their Rd column implies. */
