@@ -45,6 +45,8 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_LIGHT: return "a light_source";
 	case VAL_TRANSFORM: return "a transform";
 	case VAL_FILE: return "a data file";
+	case VAL_FUNCTION: return "a function";
+	case VAL_SPLINE: return "a spline";
 	}
 	return "a value";
 }
@@ -323,7 +325,7 @@ static bool is_word(const lang_token *t)
 }
 
 /* member = "." ( "x" | "y" | "z" | "t" | "u" | "v" | "red" | "green" | "blue" | "filter" | "transmit" | "gray" ) */
-static bool member(parser *p, value *v)
+bool lang_member(parser *p, value *v)
 {
 	lang_advance(p);
 	if (!is_word(lang_peek(p)))
@@ -1038,7 +1040,7 @@ static void arg_counts(const char *types, int *lo, int *hi)
 	}
 }
 
-static bool wrong_count(parser *p, const args *a, int lo, int hi)
+bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi, int found)
 {
 	char want[64];
 	if (hi < 0)
@@ -1047,7 +1049,7 @@ static bool wrong_count(parser *p, const args *a, int lo, int hi)
 		snprintf(want, sizeof want, "%d argument%s", lo, lo == 1 ? "" : "s");
 	else
 		snprintf(want, sizeof want, "%d to %d arguments", lo, hi);
-	return lang_error(p, a->name.loc, "'%s' takes %s, found %d", a->fname, want, a->n);
+	return lang_error(p, at, "'%s' takes %s, found %d", fname, want, found);
 }
 
 /* Checks argument i against its type letter t (promoting a vector argument). */
@@ -1090,7 +1092,7 @@ static bool check_args(parser *p, const builtin *b, args *a)
 	int lo, hi;
 	arg_counts(b->types, &lo, &hi);
 	if (a->n < lo || (hi >= 0 && a->n > hi))
-		return wrong_count(p, a, lo, hi);
+		return lang_wrong_count(p, a->name.loc, a->fname, lo, hi, a->n);
 	char last = 0;
 	const char *c = b->types;
 	for (int i = 0; i < a->n; i++) {
@@ -1124,6 +1126,8 @@ static bool identifier(parser *p, value *out)
 	const symbol *s = lang_lookup(p, name.text, name.len);
 	if (!s)
 		return lang_error(p, name.loc, "undeclared identifier '%.*s'", (int)name.len, name.text);
+	if ((s->val.kind == VAL_FUNCTION || s->val.kind == VAL_SPLINE) && lang_raw_next(p) == LTK_LPAREN)
+		return lang_func_call(p, &name, &s->val, out);
 	if (lang_raw_next(p) == LTK_LBRACKET) { /* raw: a value's end is not read past (lone_value) */
 		if (s->val.kind != VAL_ARRAY)
 			return lang_error(p, lang_peek(p)->loc, "'%.*s' is %s, not an array", (int)name.len, name.text,
@@ -1211,7 +1215,7 @@ static bool primary(parser *p, value *out)
 	if (!lang_primary(p, out))
 		return false;
 	while (lang_peek(p)->kind == LTK_DOT)
-		if (!member(p, out))
+		if (!lang_member(p, out))
 			return false;
 	return true;
 }

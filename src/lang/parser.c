@@ -588,8 +588,9 @@ static bool declare_value(parser *p, const decl_target *tg, deprecation dep)
 {
 	value v;
 	bool handled = false;
-	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
-		if (!lang_array_value(p, &v))
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_KW_ARRAY || k == LTK_KW_FUNCTION || k == LTK_KW_SPLINE) {
+		if (!(k == LTK_KW_ARRAY ? lang_array_value(p, &v) : lang_func_value(p, tg->arr ? NULL : &tg->name, &v)))
 			return false;
 		handled = true;
 	} else if (!lang_declare_block(p, &v, &handled)) {
