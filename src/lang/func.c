@@ -946,8 +946,9 @@ static bool call_function(parser *p, const lang_token *name, const char *fname, 
 		if (failed->kind == LANG_FN_INTERNAL)
 			return lang_error(p, name->loc, "'%s' (internal(%d)) is not supported by circe",
 					  internals[failed->internal].name, failed->internal);
-		return lang_error(p, name->loc, "'%s' functions are not supported by circe (calling '%s')",
-				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name);
+		return lang_error(p, name->loc, "'%s' is not supported by circe in a function (calling '%s', a function "
+						"of a %s)", failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name,
+				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern");
 	}
 	for (int i = 0; i < f->n_out; i++)
 		if (!isfinite(r[i]))
@@ -964,8 +965,11 @@ static bool call_spline(parser *p, const lang_token *name, const char *fname, co
 	lang_tok kw = LTK_EOF;
 	if (!call_args(p, fname, a, &n, &kw))
 		return false;
-	if (n < 1 || n > 2 || (n == 2 && kw == LTK_EOF))
+	if (n < 1 || n > 2)
 		return lang_wrong_count(p, name->loc, fname, 1, 2, n);
+	if (n == 2 && kw == LTK_EOF)
+		return lang_error(p, name->loc, "the second argument of '%s' must be a spline kind (linear_spline, "
+						"quadratic_spline, cubic_spline or natural_spline)", fname);
 	lang_spline_kind kind;
 	if (kw != LTK_EOF && spline_kind_of(kw, &kind) && kind != s->kind &&
 	    !(s = spline_copy(p, s->e, s->n, s->terms, kind)))

@@ -28,12 +28,12 @@ typedef enum lang_fn_kind {
 	LANG_FN_PIGMENT, /* function { pigment {...} }: (x, y, z) -> the pigment's colour */
 } lang_fn_kind;
 
-/* The pattern hook: a `function { pattern {...} }` or `{ pigment {...} }` keeps the block's first
- * token (`block_at`) and, once a pattern evaluator parses the block, its compiled pattern (`pattern`,
- * opaque to src/lang) and the function evaluating it at a point: out[0] the pattern's value in
- * [0, 1] (LANG_FN_PATTERN) or out[0..4] the colour's rgbft (LANG_FN_PIGMENT). Until then `eval` is
- * NULL and a call fails with "'pattern' functions are not supported by circe". The pattern parser
- * plugs in at func.c's pattern_block(), which today only matches the block's braces. */
+/* The pattern hook: `function { pattern {...} }` and `{ pigment {...} }` parse today (func.c's
+ * pattern_block() matches the block's braces and drops its contents). A pattern evaluator plugs in
+ * there: it parses the block, stores its compiled pattern in `pattern` (opaque to src/lang) and sets
+ * `eval`, which gives the value at a point: out[0] the pattern's float in [0, 1] (LANG_FN_PATTERN)
+ * or out[0..4] the colour's rgbft (LANG_FN_PIGMENT). While `eval` is NULL a call fails with
+ * "'pattern' is not supported by circe in a function". */
 typedef bool (*lang_pattern_eval)(const void *pattern, dvec3 p, double *out);
 
 typedef struct lang_fn_op lang_fn_op; /* one instruction (func.c) */

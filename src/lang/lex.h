@@ -29,7 +29,7 @@ enum {
 	KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CHR, "chr") KW(CIRCLE, "circle")             \
 	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour")                 \
 	KW(CONCAT, "concat") KW(CONFIDENCE, "confidence") KW(CORNERS, "corners") KW(COS, "cos")             \
-	KW(COSH, "cosh") KW(CUBIC_SPLINE, "cubic_spline") KW(CREASES, "creases") KW(DATETIME, "datetime") KW(DEFAULT, "default")             \
+	KW(COSH, "cosh") KW(CREASES, "creases") KW(CUBIC_SPLINE, "cubic_spline") KW(DATETIME, "datetime") KW(DEFAULT, "default")             \
 	KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") KW(DIFFUSE, "diffuse")   \
 	KW(DIMENSION_SIZE, "dimension_size") KW(DIMENSIONS, "dimensions") KW(DIPOLE, "dipole")              \
 	KW(DIRECTION, "direction") KW(DISK, "disk") KW(DIV, "div") KW(EDGE_AND_CORNER, "edge_and_corner")   \

@@ -1416,7 +1416,10 @@ static bool argument(parser *p, const lang_macro *m, int i, value *v, long *ref,
 			return true;
 		}
 	}
-	return lang_expr(p, v);
+	bool block = false; /* a block (transform { }, pigment { }, an object) is passed by value too */
+	if (!lang_declare_block(p, v, &block))
+		return false;
+	return block || lang_expr(p, v);
 }
 
 /* call = identifier "(" [ argument { "," argument } ] ")", where identifier names a macro: the
