@@ -1195,8 +1195,11 @@ bool lang_primary(parser *p, value *out)
 	case LTK_KW_CLOCK_ON: set_float(out, p->opt.animated); break;
 	case LTK_KW_NOW: set_float(out, ((double)time(NULL) - EPOCH_2000) / 86400.0); break;
 	case LTK_KW_DEFINED: return defined(p, out);
-	case LTK_KW_FUNCTION:
-	case LTK_KW_SPLINE: return lang_func_value(p, NULL, out); /* a macro's argument, a function's value */
+	case LTK_KW_FUNCTION: /* values of #declare and macro arguments only: here POV-Ray's function pattern */
+	case LTK_KW_SPLINE:
+		return lang_error(p, t->loc, "'%s' is not supported by circe here (a %s is the value of a #declare, "
+					     "a #local or a macro's argument)", t->kind == LTK_KW_SPLINE ? "spline" : "function",
+				  t->kind == LTK_KW_SPLINE ? "spline" : "function");
 	case LTK_IDENT: return identifier(p, out);
 	default: {
 		if (lang_colour_word(t->kind))

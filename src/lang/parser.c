@@ -1416,6 +1416,8 @@ static bool argument(parser *p, const lang_macro *m, int i, value *v, long *ref,
 			return true;
 		}
 	}
+	if (t->kind == LTK_KW_FUNCTION || t->kind == LTK_KW_SPLINE)
+		return lang_func_value(p, NULL, v);
 	bool block = false; /* a block (transform { }, pigment { }, an object) is passed by value too */
 	if (!lang_declare_block(p, v, &block))
 		return false;

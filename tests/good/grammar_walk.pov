@@ -112,3 +112,7 @@ sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { 
 #declare Sb = spline { Sa natural_spline 4, <1, 1> }
 #declare Ff = function { spline { Sb } }
 #declare Sv = Sa(1.5) + Sb(2, linear_spline) + Ff(0.5).y;
+// rule: macro_arg
+#macro Apply(Fn, Tr) Fn(1, 2, 3) + vlength(vtransform_walk(Tr)) #end
+#macro vtransform_walk(T) #local Fw = function { transform { T } } Fw(1, 0, 0) #end
+#declare Av = Apply(function { x + y*z }, transform { translate y });
