@@ -4,6 +4,7 @@
  * built-in functions that need no geometry. Operands of different sizes are promoted as POV-Ray's
  * Promote_Express does: a float is copied into every component, a shorter vector is padded with
  * zeros. The first error is reported and ends the parse. */
+#include "lang/func.h"
 #include "lang/parser.h"
 
 #include "base/rng.h"
@@ -596,75 +597,46 @@ static bool domain_error(parser *p, const args *a, const char *range)
 	return lang_error(p, a->at[0], "'%s' of %g: the argument must be %s", a->fname, arg_f(a, 0), range);
 }
 
-/* The functions of one float. */
+/* The functions of one float: the domain checked, then computed as a function body computes it. */
 static bool fn_float1(parser *p, const args *a, value *out)
 {
-	double x = arg_f(a, 0), r = 0;
+	double x = arg_f(a, 0);
 	switch (a->name.kind) {
-	case LTK_KW_SIN: r = sin(x); break;
-	case LTK_KW_COS: r = cos(x); break;
-	case LTK_KW_TAN: r = tan(x); break;
 	case LTK_KW_ASIN:
 	case LTK_KW_ACOS:
 		if (x < -1 || x > 1)
 			return lang_error(p, a->at[0], "'%s' of %g is outside [-1, 1]", a->fname, x);
-		r = a->name.kind == LTK_KW_ASIN ? asin(x) : acos(x);
 		break;
-	case LTK_KW_ATAN: r = atan(x); break;
-	case LTK_KW_SINH: r = sinh(x); break;
-	case LTK_KW_COSH: r = cosh(x); break;
-	case LTK_KW_TANH: r = tanh(x); break;
-	case LTK_KW_ASINH: r = asinh(x); break;
 	case LTK_KW_ACOSH:
 		if (!(x >= 1))
 			return domain_error(p, a, "1 or more");
-		r = acosh(x);
 		break;
 	case LTK_KW_ATANH:
 		if (!(x > -1 && x < 1))
 			return domain_error(p, a, "inside (-1, 1)");
-		r = atanh(x);
 		break;
 	case LTK_KW_SQRT:
 		if (x < 0)
 			return lang_error(p, a->at[0], "'sqrt' of a negative number (%g)", x);
-		r = sqrt(x);
 		break;
-	case LTK_KW_EXP: r = exp(x); break;
 	case LTK_KW_LOG: /* POV-Ray's log is base 10; ln is the natural one */
 	case LTK_KW_LN:
 		if (!(x > 0))
 			return domain_error(p, a, "positive");
-		r = a->name.kind == LTK_KW_LOG ? log10(x) : log(x);
 		break;
-	case LTK_KW_ABS: r = fabs(x); break;
-	case LTK_KW_FLOOR: r = floor(x); break;
-	case LTK_KW_CEIL: r = ceil(x); break;
-	case LTK_KW_INT: r = trunc(x); break; /* POV-Ray's int truncates toward zero */
-	case LTK_KW_RADIANS: r = x * PI / 180.0; break;
-	case LTK_KW_DEGREES: r = x * 180.0 / PI; break;
 	default: break;
 	}
-	set_float(out, r);
+	set_float(out, lang_fn_float1(a->name.kind, x));
 	return true;
 }
 
 /* The functions of two floats. */
 static bool fn_float2(parser *p, const args *a, value *out)
 {
-	double x = arg_f(a, 0), y = arg_f(a, 1), r = 0;
-	switch (a->name.kind) {
-	case LTK_KW_ATAN2: r = atan2(x, y); break;
-	case LTK_KW_POW: r = pow(x, y); break;
-	case LTK_KW_MOD:
-	case LTK_KW_DIV:
-		if (y == 0)
-			return lang_error(p, a->at[1], "'%s' by zero", a->fname);
-		r = a->name.kind == LTK_KW_MOD ? fmod(x, y) : trunc(x / y);
-		break;
-	default: break;
-	}
-	set_float(out, r);
+	double x = arg_f(a, 0), y = arg_f(a, 1);
+	if ((a->name.kind == LTK_KW_MOD || a->name.kind == LTK_KW_DIV) && y == 0)
+		return lang_error(p, a->at[1], "'%s' by zero", a->fname);
+	set_float(out, lang_fn_float2(a->name.kind, x, y));
 	return true;
 }
 

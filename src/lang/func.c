@@ -33,7 +33,7 @@ struct lang_fn_op {
 	const lang_function *fn; /* OP_CALL */
 };
 
-static double fn1(int which, double x)
+double lang_fn_float1(int which, double x)
 {
 	switch (which) {
 	case LTK_KW_SIN: return sin(x);
@@ -58,17 +58,19 @@ static double fn1(int which, double x)
 	case LTK_KW_INT: return trunc(x);
 	case LTK_KW_RADIANS: return x * PI / 180.0;
 	case LTK_KW_DEGREES: return x * 180.0 / PI;
-	default: return x * x; /* sqr */
+	case LANG_FN_SQR: return x * x;
+	default: return NAN;
 	}
 }
 
-static double fn2(int which, double x, double y)
+double lang_fn_float2(int which, double x, double y)
 {
 	switch (which) {
 	case LTK_KW_ATAN2: return atan2(x, y);
 	case LTK_KW_POW: return pow(x, y);
 	case LTK_KW_MOD: return fmod(x, y);
-	default: return trunc(x / y); /* div */
+	case LTK_KW_DIV: return trunc(x / y);
+	default: return NAN;
 	}
 }
 
@@ -84,8 +86,8 @@ static bool run_code(const lang_function *f, const double *args, double *out, co
 		case OP_PARAM: st[sp++] = args[o->which]; break;
 		case OP_NEG: st[sp - 1] = -st[sp - 1]; break;
 		case OP_NOT: st[sp - 1] = st[sp - 1] == 0.0; break;
-		case OP_FN1: st[sp - 1] = fn1(o->which, st[sp - 1]); break;
-		case OP_FN2: sp--, st[sp - 1] = fn2(o->which, st[sp - 1], st[sp]); break;
+		case OP_FN1: st[sp - 1] = lang_fn_float1(o->which, st[sp - 1]); break;
+		case OP_FN2: sp--, st[sp - 1] = lang_fn_float2(o->which, st[sp - 1], st[sp]); break;
 		case OP_COND: sp -= 2, st[sp - 1] = st[sp - 1] != 0.0 ? st[sp] : st[sp + 1]; break;
 		case OP_MIN:
 		case OP_MAX: {
@@ -500,7 +502,8 @@ static bool cbuiltin(compiler *c, int arity)
 	if (n < lo || (hi >= 0 && n > hi))
 		return lang_wrong_count(c->p, name.loc, fname, lo, hi, n);
 	lang_fn_op o = {.op = arity == 1 ? OP_FN1 : arity == 2 ? OP_FN2 : sel ? OP_SELECT
-			: name.kind == LTK_KW_MIN ? OP_MIN : OP_MAX, .which = name.kind, .n = n};
+			: name.kind == LTK_KW_MIN ? OP_MIN : OP_MAX, .which = name.kind == LTK_UNSUPPORTED ? LANG_FN_SQR
+			: (int)name.kind, .n = n};
 	return emit(c, o, 1, n);
 }
 

@@ -89,6 +89,13 @@ void lang_spline_insert(lang_spline_entry *e, size_t *n, double t, const double 
 /* natural_spline's second derivatives, zero at both ends (POV-Ray's Precompute_Cubic_Coeffs). */
 void lang_spline_natural_coeffs(lang_spline *s);
 
+/* The float built-ins of one and two arguments by their token (a lang_tok: sin ... degrees; atan2
+ * pow mod div), shared by expressions and function bodies: IEEE results, no domain check (the
+ * caller's). LANG_FN_SQR: POV-Ray's sqr, of functions only. NaN for another token. */
+enum { LANG_FN_SQR = -1 };
+double lang_fn_float1(int tok, double x);
+double lang_fn_float2(int tok, double x, double y);
+
 /* The internal functions of functions.inc: the name POV-Ray gives internal(n) and its parameter
  * count; NULL past the table. */
 const char *lang_fn_internal_name(int n, int *n_params);
