@@ -398,6 +398,7 @@ typedef struct compiler {
 	lang_function *f;
 	const lang_token *self; /* the name being declared: calling it is recursion */
 	bool defaults; /* function { } without a parameter list: x, y, z (u, v the same as x, y) */
+	int call_depth; /* the deepest function called so far */
 	vecbuf code; /* lang_fn_op */
 	int depth, max_depth; /* the stack's, as the code is emitted */
 	diag_loc open; /* the body's '{' */
@@ -529,6 +530,11 @@ static bool ccall(compiler *c, const lang_token *name, const lang_function *g)
 		return lang_error(c->p, name->loc, "'%s' gives a vector of %d components: choose one (.x, .y, ...)", fname,
 				  g->n_out);
 	}
+	if (g->call_depth >= LANG_FN_MAX_CALL_DEPTH)
+		return lang_error(c->p, name->loc, "functions calling functions nested too deeply calling '%s' (limit is %d)",
+				  fname, LANG_FN_MAX_CALL_DEPTH);
+	if (g->call_depth > c->call_depth)
+		c->call_depth = g->call_depth;
 	return emit(c, (lang_fn_op){.op = OP_CALL, .fn = g, .n = n, .comp = comp}, 1, n);
 }
 
@@ -669,6 +675,7 @@ static lang_function *new_function(parser *p, const lang_token *name, lang_fn_ki
 		return NULL;
 	f->kind = kind;
 	f->n_out = 1;
+	f->call_depth = 1;
 	f->name = name ? arena_strndup(&p->sc->arena, name->text, name->len) : "function";
 	return f;
 }
@@ -709,6 +716,7 @@ static bool code_body(parser *p, lang_function *f, const lang_token *self, bool 
 		memcpy(code, c.code.data, c.code.len * sizeof *code);
 		f->code = code;
 		f->n_code = (int)c.code.len;
+		f->call_depth = c.call_depth + 1;
 	}
 	vecbuf_free(&c.code);
 	return ok;
@@ -974,10 +982,18 @@ static bool call_spline(parser *p, const lang_token *name, const char *fname, co
 		return lang_error(p, name->loc, "the second argument of '%s' must be a spline kind (linear_spline, "
 						"quadratic_spline, cubic_spline or natural_spline)", fname);
 	lang_spline_kind kind;
-	if (kw != LTK_EOF && spline_kind_of(kw, &kind) && kind != s->kind &&
-	    !(s = spline_copy(p, s->e, s->n, s->terms, kind)))
-		return lang_error(p, name->loc, "out of memory");
-	lang_spline_eval(s, a[0], r);
+	if (kw != LTK_EOF && spline_kind_of(kw, &kind) && kind != s->kind) { /* a copy of the other kind */
+		lang_spline tmp = {.kind = kind, .terms = s->terms, .n = s->n, .e = malloc(s->n * sizeof *s->e)};
+		if (!tmp.e)
+			return lang_error(p, name->loc, "out of memory");
+		memcpy(tmp.e, s->e, s->n * sizeof *s->e);
+		if (kind == LANG_SPLINE_NATURAL)
+			lang_spline_natural_coeffs(&tmp);
+		lang_spline_eval(&tmp, a[0], r);
+		free(tmp.e);
+	} else {
+		lang_spline_eval(s, a[0], r);
+	}
 	set_result(out, r, s->terms, false);
 	return true;
 }

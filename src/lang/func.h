@@ -17,6 +17,7 @@ enum {
 	LANG_FN_MAX_PARAMS = 32, /* parameters of one function (POV-Ray's MAX_FUNCTION_PARAMETER_LIST) */
 	LANG_FN_MAX_STACK = 64, /* stack slots one function body needs at most */
 	LANG_FN_MAX_OUT = 5, /* components of a vector-valued function's result */
+	LANG_FN_MAX_CALL_DEPTH = 64, /* functions calling functions: each level takes C stack */
 };
 
 typedef enum lang_fn_kind {
@@ -45,6 +46,7 @@ typedef struct lang_function {
 	int n_params;
 	const char *params[LANG_FN_MAX_PARAMS]; /* LANG_FN_CODE: their names */
 	int n_out; /* components of the result: 1 for a float function */
+	int call_depth; /* 1, plus the deepest of the functions it calls */
 	/* LANG_FN_CODE */
 	const lang_fn_op *code;
 	int n_code;
