@@ -795,8 +795,10 @@ static bool spline_value(parser *p, double *v, int *terms)
 		return false;
 	if (x.kind != VAL_FLOAT && x.kind != VAL_VECTOR && x.kind != VAL_COLOR)
 		return lang_error(p, at, "expected a float or vector as a spline's value, found %s", lang_value_kind_name(&x));
-	memset(v, 0, LANG_SPLINE_TERMS * sizeof *v);
 	int n = x.kind == VAL_FLOAT ? 2 : x.n;
+	if (n > LANG_SPLINE_TERMS) /* POV-Ray's "Too many components in vector!" */
+		return lang_error(p, at, "a spline's value has at most %d components, found %d", LANG_SPLINE_TERMS, n);
+	memset(v, 0, LANG_SPLINE_TERMS * sizeof *v);
 	for (int k = 0; k < n; k++)
 		v[k] = x.kind == VAL_FLOAT ? x.v[0] : x.v[k];
 	if (n > *terms)
