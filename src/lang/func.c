@@ -553,6 +553,9 @@ static bool cidentifier(compiler *c)
 		lang_advance(c->p);
 		return ccall(c, &name, s->val.fn);
 	}
+	if (s->val.kind == VAL_SPLINE) /* POV-Ray's function parser refuses it too */
+		return lang_error(c->p, name.loc, "'%.*s' is a spline: a function calls it through a function { spline { %.*s } }",
+				  (int)name.len, name.text, (int)name.len, name.text);
 	value v;
 	if (!lang_primary(c->p, &v))
 		return false;
