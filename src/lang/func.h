@@ -14,7 +14,7 @@
 #include <stddef.h>
 
 enum {
-	LANG_FN_MAX_PARAMS = 32, /* parameters of one function (POV-Ray's MAX_FUNCTION_PARAMETER_LIST) */
+	LANG_FN_MAX_PARAMS = 56, /* parameters of one function (POV-Ray 3.7's MAX_PARAMETER_LIST, parse.h) */
 	LANG_FN_MAX_STACK = 64, /* stack slots one function body needs at most */
 	LANG_FN_MAX_OUT = 5, /* components of a vector-valued function's result */
 	LANG_FN_MAX_CALL_DEPTH = 64, /* functions calling functions: each level takes C stack */
