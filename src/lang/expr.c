@@ -4,6 +4,7 @@
  * built-in functions that need no geometry. Operands of different sizes are promoted as POV-Ray's
  * Promote_Express does: a float is copied into every component, a shorter vector is padded with
  * zeros. The first error is reported and ends the parse. */
+#include "lang/func.h"
 #include "lang/parser.h"
 
 #include "base/rng.h"
@@ -45,6 +46,8 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_LIGHT: return "a light_source";
 	case VAL_TRANSFORM: return "a transform";
 	case VAL_FILE: return "a data file";
+	case VAL_FUNCTION: return "a function";
+	case VAL_SPLINE: return "a spline";
 	}
 	return "a value";
 }
@@ -323,7 +326,7 @@ static bool is_word(const lang_token *t)
 }
 
 /* member = "." ( "x" | "y" | "z" | "t" | "u" | "v" | "red" | "green" | "blue" | "filter" | "transmit" | "gray" ) */
-static bool member(parser *p, value *v)
+bool lang_member(parser *p, value *v)
 {
 	lang_advance(p);
 	if (!is_word(lang_peek(p)))
@@ -594,75 +597,46 @@ static bool domain_error(parser *p, const args *a, const char *range)
 	return lang_error(p, a->at[0], "'%s' of %g: the argument must be %s", a->fname, arg_f(a, 0), range);
 }
 
-/* The functions of one float. */
+/* The functions of one float: the domain checked, then computed as a function body computes it. */
 static bool fn_float1(parser *p, const args *a, value *out)
 {
-	double x = arg_f(a, 0), r = 0;
+	double x = arg_f(a, 0);
 	switch (a->name.kind) {
-	case LTK_KW_SIN: r = sin(x); break;
-	case LTK_KW_COS: r = cos(x); break;
-	case LTK_KW_TAN: r = tan(x); break;
 	case LTK_KW_ASIN:
 	case LTK_KW_ACOS:
 		if (x < -1 || x > 1)
 			return lang_error(p, a->at[0], "'%s' of %g is outside [-1, 1]", a->fname, x);
-		r = a->name.kind == LTK_KW_ASIN ? asin(x) : acos(x);
 		break;
-	case LTK_KW_ATAN: r = atan(x); break;
-	case LTK_KW_SINH: r = sinh(x); break;
-	case LTK_KW_COSH: r = cosh(x); break;
-	case LTK_KW_TANH: r = tanh(x); break;
-	case LTK_KW_ASINH: r = asinh(x); break;
 	case LTK_KW_ACOSH:
 		if (!(x >= 1))
 			return domain_error(p, a, "1 or more");
-		r = acosh(x);
 		break;
 	case LTK_KW_ATANH:
 		if (!(x > -1 && x < 1))
 			return domain_error(p, a, "inside (-1, 1)");
-		r = atanh(x);
 		break;
 	case LTK_KW_SQRT:
 		if (x < 0)
 			return lang_error(p, a->at[0], "'sqrt' of a negative number (%g)", x);
-		r = sqrt(x);
 		break;
-	case LTK_KW_EXP: r = exp(x); break;
 	case LTK_KW_LOG: /* POV-Ray's log is base 10; ln is the natural one */
 	case LTK_KW_LN:
 		if (!(x > 0))
 			return domain_error(p, a, "positive");
-		r = a->name.kind == LTK_KW_LOG ? log10(x) : log(x);
 		break;
-	case LTK_KW_ABS: r = fabs(x); break;
-	case LTK_KW_FLOOR: r = floor(x); break;
-	case LTK_KW_CEIL: r = ceil(x); break;
-	case LTK_KW_INT: r = trunc(x); break; /* POV-Ray's int truncates toward zero */
-	case LTK_KW_RADIANS: r = x * PI / 180.0; break;
-	case LTK_KW_DEGREES: r = x * 180.0 / PI; break;
 	default: break;
 	}
-	set_float(out, r);
+	set_float(out, lang_fn_float1(a->name.kind, x));
 	return true;
 }
 
 /* The functions of two floats. */
 static bool fn_float2(parser *p, const args *a, value *out)
 {
-	double x = arg_f(a, 0), y = arg_f(a, 1), r = 0;
-	switch (a->name.kind) {
-	case LTK_KW_ATAN2: r = atan2(x, y); break;
-	case LTK_KW_POW: r = pow(x, y); break;
-	case LTK_KW_MOD:
-	case LTK_KW_DIV:
-		if (y == 0)
-			return lang_error(p, a->at[1], "'%s' by zero", a->fname);
-		r = a->name.kind == LTK_KW_MOD ? fmod(x, y) : trunc(x / y);
-		break;
-	default: break;
-	}
-	set_float(out, r);
+	double x = arg_f(a, 0), y = arg_f(a, 1);
+	if ((a->name.kind == LTK_KW_MOD || a->name.kind == LTK_KW_DIV) && y == 0)
+		return lang_error(p, a->at[1], "'%s' by zero", a->fname);
+	set_float(out, lang_fn_float2(a->name.kind, x, y));
 	return true;
 }
 
@@ -1038,7 +1012,7 @@ static void arg_counts(const char *types, int *lo, int *hi)
 	}
 }
 
-static bool wrong_count(parser *p, const args *a, int lo, int hi)
+bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi, int found)
 {
 	char want[64];
 	if (hi < 0)
@@ -1047,7 +1021,7 @@ static bool wrong_count(parser *p, const args *a, int lo, int hi)
 		snprintf(want, sizeof want, "%d argument%s", lo, lo == 1 ? "" : "s");
 	else
 		snprintf(want, sizeof want, "%d to %d arguments", lo, hi);
-	return lang_error(p, a->name.loc, "'%s' takes %s, found %d", a->fname, want, a->n);
+	return lang_error(p, at, "'%s' takes %s, found %d", fname, want, found);
 }
 
 /* Checks argument i against its type letter t (promoting a vector argument). */
@@ -1090,7 +1064,7 @@ static bool check_args(parser *p, const builtin *b, args *a)
 	int lo, hi;
 	arg_counts(b->types, &lo, &hi);
 	if (a->n < lo || (hi >= 0 && a->n > hi))
-		return wrong_count(p, a, lo, hi);
+		return lang_wrong_count(p, a->name.loc, a->fname, lo, hi, a->n);
 	char last = 0;
 	const char *c = b->types;
 	for (int i = 0; i < a->n; i++) {
@@ -1124,6 +1098,8 @@ static bool identifier(parser *p, value *out)
 	const symbol *s = lang_lookup(p, name.text, name.len);
 	if (!s)
 		return lang_error(p, name.loc, "undeclared identifier '%.*s'", (int)name.len, name.text);
+	if ((s->val.kind == VAL_FUNCTION || s->val.kind == VAL_SPLINE) && lang_raw_next(p) == LTK_LPAREN)
+		return lang_func_call(p, &name, &s->val, out);
 	if (lang_raw_next(p) == LTK_LBRACKET) { /* raw: a value's end is not read past (lone_value) */
 		if (s->val.kind != VAL_ARRAY)
 			return lang_error(p, lang_peek(p)->loc, "'%.*s' is %s, not an array", (int)name.len, name.text,
@@ -1191,6 +1167,11 @@ bool lang_primary(parser *p, value *out)
 	case LTK_KW_CLOCK_ON: set_float(out, p->opt.animated); break;
 	case LTK_KW_NOW: set_float(out, ((double)time(NULL) - EPOCH_2000) / 86400.0); break;
 	case LTK_KW_DEFINED: return defined(p, out);
+	case LTK_KW_FUNCTION: /* values of #declare and macro arguments only: here POV-Ray's function pattern */
+	case LTK_KW_SPLINE:
+		return lang_error(p, t->loc, "'%s' is not supported by circe here (a %s is the value of a #declare, "
+					     "a #local or a macro's argument)", t->kind == LTK_KW_SPLINE ? "spline" : "function",
+				  t->kind == LTK_KW_SPLINE ? "spline" : "function");
 	case LTK_IDENT: return identifier(p, out);
 	default: {
 		if (lang_colour_word(t->kind))
@@ -1211,7 +1192,7 @@ static bool primary(parser *p, value *out)
 	if (!lang_primary(p, out))
 		return false;
 	while (lang_peek(p)->kind == LTK_DOT)
-		if (!member(p, out))
+		if (!lang_member(p, out))
 			return false;
 	return true;
 }

@@ -588,8 +588,9 @@ static bool declare_value(parser *p, const decl_target *tg, deprecation dep)
 {
 	value v;
 	bool handled = false;
-	if (lang_peek(p)->kind == LTK_KW_ARRAY) {
-		if (!lang_array_value(p, &v))
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_KW_ARRAY || k == LTK_KW_FUNCTION || k == LTK_KW_SPLINE) {
+		if (!(k == LTK_KW_ARRAY ? lang_array_value(p, &v) : lang_func_value(p, tg->arr ? NULL : &tg->name, &v)))
 			return false;
 		handled = true;
 	} else if (!lang_declare_block(p, &v, &handled)) {
@@ -1415,7 +1416,12 @@ static bool argument(parser *p, const lang_macro *m, int i, value *v, long *ref,
 			return true;
 		}
 	}
-	return lang_expr(p, v);
+	if (t->kind == LTK_KW_FUNCTION || t->kind == LTK_KW_SPLINE)
+		return lang_func_value(p, NULL, v);
+	bool block = false; /* a block (transform { }, pigment { }, an object) is passed by value too */
+	if (!lang_declare_block(p, v, &block))
+		return false;
+	return block || lang_expr(p, v);
 }
 
 /* call = identifier "(" [ argument { "," argument } ] ")", where identifier names a macro: the

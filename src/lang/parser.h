@@ -18,7 +18,8 @@ typedef enum value_kind {
 	/* declared scene blocks (stmt.c): a pigment, finish or interior is a texture record of which
 	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
-	VAL_FILE /* a data file of #fopen (datafile.c) */
+	VAL_FILE, /* a data file of #fopen (datafile.c) */
+	VAL_FUNCTION, VAL_SPLINE /* func.c */
 } value_kind;
 
 /* A colour is POV-Ray's 5-vector: red, green, blue, filter, transmit (VAL_COLOR has n == 5). */
@@ -44,6 +45,8 @@ typedef struct value {
 	const scene_light *light; /* VAL_LIGHT */
 	const xform *xf; /* VAL_TRANSFORM */
 	int file; /* VAL_FILE: its index in the parser's datafiles */
+	const struct lang_function *fn; /* VAL_FUNCTION */
+	const struct lang_spline *spl; /* VAL_SPLINE */
 } value;
 
 /* An array: its dimensions and its elements in row-major order, each unset until assigned (kind
@@ -203,12 +206,23 @@ bool lang_string(parser *p, const char *what, const char **out);
 /* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);
 const symbol *lang_lookup(parser *p, const char *name, size_t len);
+/* A member (.x .red ...) of v, after the '.' lookahead. */
+bool lang_member(parser *p, value *v);
+/* "'FNAME' takes N arguments, found M" at at (lo..hi required; hi < 0: no limit). */
+bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi, int found);
 const char *lang_value_kind_name(const value *v);
 
 /* Declares name (#declare, or #local with local) as v; false after reporting. */
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
 /* Forgets the innermost declaration of the name (#undef). */
 void lang_forget(parser *p, const char *name, size_t len);
+
+/* ---- functions and splines (func.c) ---- */
+/* The value of `function ...` or `spline { ... }` (the lookahead); name: the identifier being
+ * declared (its use in the body is recursion, refused), or NULL. */
+bool lang_func_value(parser *p, const lang_token *name, value *out);
+/* A call NAME "(" args ")" of fv, a VAL_FUNCTION or VAL_SPLINE (the lookahead is '('). */
+bool lang_func_call(parser *p, const lang_token *name, const value *fv, value *out);
 
 /* ---- data files (datafile.c) ---- */
 bool lang_fopen(parser *p, diag_loc at); /* after '#fopen' */

@@ -100,3 +100,19 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 light_source { Lamp translate x }
 #default { texture { pigment { Paint } } finish { Gloss } }
 sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }
+// rule: function_value, fn_params, fn_body, fn_expression, value_call
+#declare Fa = function(a, b) { a < b ? a*b : sqr(a) + sin(b) }
+#declare Fb = function { x + Fa(y, z) }
+#declare Fc = function { internal(61) }
+#declare Fd = function { pattern { agate } }
+#declare Fe = function { transform { Turn } }
+#declare Fv = Fb(1, 2, 3) + Fc(1, 1, 1, 0.5) + Fe(1, 0, 0).x;
+// rule: spline, spline_kind
+#declare Sa = spline { cubic_spline 0, <0, 0> 1, <1, 2>, 2, <2, 1> 3, <3, 3> }
+#declare Sb = spline { Sa natural_spline 4, <1, 1> }
+#declare Ff = function { spline { Sb } }
+#declare Sv = Sa(1.5) + Sb(2, linear_spline) + Ff(0.5).y;
+// rule: macro_arg
+#macro Apply(Fn, Tr) Fn(1, 2, 3) + vlength(vtransform_walk(Tr)) #end
+#macro vtransform_walk(T) #local Fw = function { transform { T } } Fw(1, 0, 0) #end
+#declare Av = Apply(function { x + y*z }, transform { translate y });

@@ -14,3 +14,8 @@ trap 'rm -rf "$tmp"' EXIT
 cmp -s "$tmp/err" "$srcdir/tests/lang/pov_includes_scene.stderr" ||
 	{ echo "FAIL: output differs (expected, then got):"; diff "$srcdir/tests/lang/pov_includes_scene.stderr" "$tmp/err" | head -40; exit 1; }
 echo "pov_includes: $(grep -c ' color rgbft ' "$tmp/err") colours of colors.inc, the macros of strings.inc and arrays.inc"
+"$CIRCE" check -I "$inc" "$srcdir/tests/lang/pov_functions_scene.pov" >"$tmp/out" 2>"$tmp/err" ||
+	{ echo "FAIL: pov_functions_scene.pov does not parse"; cat "$tmp/err"; exit 1; }
+cmp -s "$tmp/err" "$srcdir/tests/lang/pov_functions_scene.stderr" ||
+	{ echo "FAIL: functions output differs (expected, then got):"; diff "$srcdir/tests/lang/pov_functions_scene.stderr" "$tmp/err" | head -40; exit 1; }
+echo "pov_includes: functions.inc, math.inc and transforms.inc functions as povray 3.7.0 computes them"

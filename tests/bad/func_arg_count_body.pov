@@ -1,0 +1,2 @@
+#declare F = function(a, b) { a*b }
+#declare G = function { F(x) + 1 }

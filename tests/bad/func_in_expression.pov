@@ -1,0 +1,1 @@
+#declare P = 2 + function { x };

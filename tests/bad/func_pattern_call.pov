@@ -1,0 +1,2 @@
+#declare P = function { pattern { agate } }
+#declare X = P(1, 2, 3);

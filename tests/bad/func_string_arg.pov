@@ -1,0 +1,2 @@
+#declare F = function(a) { a }
+#declare X = F("one");

@@ -1,0 +1,2 @@
+#declare Name = "a";
+#declare F = function { x + Name }

@@ -1,0 +1,1 @@
+#declare F = function { G(x, y, z) * 2 }

@@ -1,0 +1,3 @@
+#declare S = spline {
+  cubic_spline
+}
