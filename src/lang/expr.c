@@ -1460,6 +1460,15 @@ static bool float_of(parser *p, const char *what, bool full, double *out)
 
 bool lang_float(parser *p, const char *what, double *out) { return float_of(p, what, false, out); }
 
+bool lang_additive(parser *p, value *out)
+{
+	bool saved = p->no_gt;
+	p->no_gt = false;
+	bool ok = expr_additive(p, out);
+	p->no_gt = saved;
+	return ok;
+}
+
 bool lang_float_expr(parser *p, const char *what, double *out) { return float_of(p, what, true, out); }
 
 bool lang_int(parser *p, const char *what, long lo, long hi, long *out)

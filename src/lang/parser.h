@@ -207,6 +207,9 @@ bool lang_array_store(parser *p, diag_loc loc, lang_array *a, size_t i, const va
 /* A float as POV-Ray's Parse_Float reads it: an additive expression (a comparison, '&', '|' or '?'
  * only inside parentheses). */
 bool lang_float(parser *p, const char *what, double *out);
+/* A value as POV-Ray's Parse_Vector or Parse_UV_Vect reads one: an additive expression, so that a
+ * '<' after it begins the next item (mesh2's uv_vectors written without commas). */
+bool lang_additive(parser *p, value *out);
 /* A float from a whole expression, comparisons and all (a directive's parenthesised condition). */
 bool lang_float_expr(parser *p, const char *what, double *out);
 bool lang_int(parser *p, const char *what, long lo, long hi, long *out);

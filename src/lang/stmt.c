@@ -202,7 +202,7 @@ static bool transform_item(parser *p, xform *t, bool *matched)
 		lang_advance(p);
 		diag_loc loc = lang_peek(p)->loc;
 		value mv;
-		TRY(lang_expr(p, &mv));
+		TRY(lang_additive(p, &mv));
 		if (mv.kind != VAL_VECTOR || mv.n != 12)
 			return lang_error(p, loc, "'matrix' needs 12 numbers <m00, m01, ..., m32>, found %s",
 					  lang_value_kind_name(&mv));
@@ -1202,7 +1202,7 @@ static bool item_uv(parser *p, void *c, uint32_t i)
 	list_ctx *x = c;
 	diag_loc loc = lang_peek(p)->loc;
 	value v;
-	TRY(lang_expr(p, &v));
+	TRY(lang_additive(p, &v));
 	if (v.kind != VAL_VECTOR || v.n != 2)
 		return lang_error(p, loc, "expected a 2-vector <u, v> as item %u of '%s', found %s", i, x->what,
 				  lang_value_kind_name(&v));

@@ -38,7 +38,8 @@
 #debug concat(str(Was, 0, 1), " ", str(version, 0, 1), "\n")
 
 sphere { 0 1 }                                   // no comma after the centre
-mesh2 { vertex_vectors { 3 <0, 0, 0> <1, 0, 0> <0, 1, 0> } face_indices { 1 <0, 1, 2> } }
+mesh2 { vertex_vectors { 3 <0, 0, 0> <1, 0, 0> <0, 1, 0> } uv_vectors { 3 <0, 0> <1, 0>
+  <0, 1> } face_indices { 1 <0, 1, 2> } }
 #declare Skins = array[2] { texture { pigment { rgb 0.5 } }, texture { pigment { rgb <1, 0, 0> } } }
 #declare Balls = array[2] { sphere { x, 0.5 }, sphere { y, 0.5 } }
 sphere { z, 1 texture { Skins[1] } }
