@@ -680,7 +680,6 @@ static bool fn_float1(parser *p, const args *a, value *out)
 			return domain_error(p, a, "inside (-1, 1)");
 		r = atanh(x);
 		break;
-	case LTK_KW_SQR: r = x * x; break; /* POV-Ray's sqr(x) */
 	case LTK_KW_SQRT:
 		if (x < 0)
 			return lang_error(p, a->at[0], "'sqrt' of a negative number (%g)", x);
@@ -1025,7 +1024,7 @@ static const builtin builtins[] = {
 	{LTK_KW_ASIN, "f", fn_float1},	   {LTK_KW_ACOS, "f", fn_float1},	  {LTK_KW_ATAN, "f", fn_float1},
 	{LTK_KW_SINH, "f", fn_float1},	   {LTK_KW_COSH, "f", fn_float1},	  {LTK_KW_TANH, "f", fn_float1},
 	{LTK_KW_ASINH, "f", fn_float1},	   {LTK_KW_ACOSH, "f", fn_float1},	  {LTK_KW_ATANH, "f", fn_float1},
-	{LTK_KW_SQRT, "f", fn_float1},	   {LTK_KW_SQR, "f", fn_float1},	   {LTK_KW_EXP, "f", fn_float1},	  {LTK_KW_LOG, "f", fn_float1},
+	{LTK_KW_SQRT, "f", fn_float1},	   {LTK_KW_EXP, "f", fn_float1},	  {LTK_KW_LOG, "f", fn_float1},
 	{LTK_KW_LN, "f", fn_float1},	   {LTK_KW_ABS, "f", fn_float1},	  {LTK_KW_FLOOR, "f", fn_float1},
 	{LTK_KW_CEIL, "f", fn_float1},	   {LTK_KW_INT, "f", fn_float1},	  {LTK_KW_RADIANS, "f", fn_float1},
 	{LTK_KW_DEGREES, "f", fn_float1},   {LTK_KW_ATAN2, "ff", fn_float2},	  {LTK_KW_POW, "ff", fn_float2},

@@ -57,7 +57,7 @@ enum {
 	KW(SEED, "seed") KW(SELECT, "select") KW(SIGMA_A, "sigma_a") KW(SIGMA_S, "sigma_s") KW(SIN, "sin")  \
 	KW(SINH, "sinh") KW(SKIN, "skin") KW(SKY, "sky") KW(SKY_SPHERE, "sky_sphere")                       \
 	KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular") KW(SPHERE, "sphere")                \
-	KW(SPHERICAL, "spherical") KW(SPOTLIGHT, "spotlight") KW(SQR, "sqr") KW(SQRT, "sqrt") KW(SRGB, "srgb")             \
+	KW(SPHERICAL, "spherical") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") KW(SRGB, "srgb")             \
 	KW(SRGBF, "srgbf") KW(SRGBFT, "srgbft") KW(SRGBT, "srgbt") KW(STR, "str") KW(STRCMP, "strcmp")      \
 	KW(STRENGTH, "strength") KW(STRLEN, "strlen") KW(STRLWR, "strlwr") KW(STRUPR, "strupr")             \
 	KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUBSTR, "substr")                                 \

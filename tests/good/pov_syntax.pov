@@ -35,7 +35,7 @@
 #version 3.5;
 #declare Was = version;
 #version 3.7;
-#debug concat(str(Was, 0, 1), " ", str(version, 0, 1), " ", str(sqr(-3), 0, 0), "\n")
+#debug concat(str(Was, 0, 1), " ", str(version, 0, 1), "\n")
 
 sphere { 0 1 }                                   // no comma after the centre
 mesh2 { vertex_vectors { 3 <0, 0, 0> <1, 0, 0> <0, 1, 0> } uv_vectors { 3 <0, 0> <1, 0>
