@@ -429,6 +429,19 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	}
 	deprecation dep = p->pending_dep;
 	p->pending_dep = (deprecation){0};
+	/* As povray 3.7.0's Parse_Declare: #declare of a name visible as a local (of this macro call
+	 * or include file, or one enclosing it) assigns that local; only a name found nowhere or
+	 * as a global is the global's. */
+	for (size_t i = p->locals.len; !local && i-- > 0;) {
+		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
+			symbol *t = s->param ? target(p, s) : s;
+			t->val = *v;
+			if (dep.on)
+				t->dep = dep;
+			return true;
+		}
+	}
 	int depth = local ? p->n_files - 1 : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
 	for (size_t i = tab->len; i-- > 0;) {

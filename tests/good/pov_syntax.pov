@@ -3,8 +3,8 @@
 // conditional, POV-Ray's truth within 1e-10 and its '&' and '|' at one level, commas left out
 // (Parse_Comma), a float that ends before a '<' (Parse_Float reads no comparison), arrays of
 // arrays and of blocks, #read into array elements, object { } of an object or a macro's, a block
-// as a macro's argument, a declared sky_sphere, #version read and set, and the object modifiers
-// circe records (hollow) or accepts with a warning.
+// as a macro's argument, #declare of a name a #local hides, a declared sky_sphere, #version read
+// and set, and the object modifiers circe records (hollow) or accepts with a warning.
 #version 3.7;
 #debug concat(str(strcmp("abc", "abd"), 0, 0), " ", str(("abc" = "abc"), 0, 0), str(("a" < "b"), 0, 0),
   str(("b" <= "a"), 0, 0), str(("b" > "a"), 0, 0), str(("a" >= "a"), 0, 0), str(("a" != "a"), 0, 0), "\n")
@@ -32,6 +32,10 @@
 #declare Got = array[2] { 0, 0 }                 // povray 3.7.0 reads into elements already set
 #read (F, Got[0], Got[1], Vec)
 #debug concat(str(Got[0] + Got[1], 0, 0), " ", vstr(3, Vec, ",", 0, 0), "\n")
+#declare X = 1;                                  // #declare of a visible #local assigns the local
+#macro Scoped() #local X = 2; #declare X = 3; #debug concat(str(X, 0, 0), " ") #end
+Scoped()
+#debug concat(str(X, 0, 0), "\n")
 #version 3.5;
 #declare Was = version;
 #version 3.7;
