@@ -423,7 +423,7 @@ static bool end_of_data(parser *p, lang_datafile *f, diag_loc at)
 /* One name of #read given the file's next value. As povray 3.7.0 does: a value not followed by
  * ',' that ends the file closes it; a name met at the end of the file closes it and is not
  * declared (circe warns: the name keeps what it had). */
-static bool read_one(parser *p, lang_datafile *f, const lang_token *name, diag_loc at)
+static bool read_one(parser *p, lang_datafile *f, const lang_token *name, lang_array *arr, size_t index, diag_loc at)
 {
 	bool end, comma;
 	TRY(data_next(p, f, LTK_EOF, false, &end));
@@ -435,7 +435,8 @@ static bool read_one(parser *p, lang_datafile *f, const lang_token *name, diag_l
 		return end_of_data(p, f, at);
 	}
 	value v;
-	TRY(data_value(p, f, &v) && lang_define(p, name, false, &v));
+	TRY(data_value(p, f, &v));
+	TRY(arr ? lang_array_store(p, name->loc, arr, index, &v) : lang_define(p, name, false, &v));
 	TRY(data_next(p, f, LTK_COMMA, true, &comma));
 	if (comma)
 		return true;
@@ -443,8 +444,9 @@ static bool read_one(parser *p, lang_datafile *f, const lang_token *name, diag_l
 	return !end || end_of_data(p, f, at);
 }
 
-/* read = "#read" "(" identifier "," identifier { "," identifier } ")"
- * Each name is declared (as by #declare) with the file's next value. */
+/* read = "#read" "(" identifier "," target { "," target } ")"   target = identifier [ index ]
+ * Each name is declared (as by #declare) with the file's next value; an array's element is
+ * assigned (povray 3.7 reads into an element already set; circe into any). */
 bool lang_read_directive(parser *p, diag_loc at)
 {
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
@@ -466,8 +468,14 @@ bool lang_read_directive(parser *p, diag_loc at)
 		}
 		lang_advance(p);
 		n++;
+		lang_array *arr = NULL;
+		size_t index = 0;
+		if (lang_peek(p)->kind == LTK_LBRACKET && !lang_element_target(p, &name, &arr, &index)) {
+			ok = false;
+			break;
+		}
 		if (!f->ended) /* the names after the end are left as they are */
-			ok = read_one(p, f, &name, at);
+			ok = read_one(p, f, &name, arr, index, at);
 	}
 	if (ok && n == 0)
 		ok = lang_error(p, p->prev.loc, "'#read' needs a name to read into after the data file");

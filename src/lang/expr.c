@@ -18,9 +18,13 @@
 
 static const double PI = 3.14159265358979323846;
 
-static bool expr_or(parser *p, value *out);
+static bool expr_cond(parser *p, value *out);
 static bool expr_additive(parser *p, value *out);
 static bool primary(parser *p, value *out);
+
+/* POV-Ray's truth of a float (ftrue in express.cpp): |x| > EPSILON, 1e-10 (configbackend.h). */
+static const double TRUTH_EPSILON = 1e-10;
+static bool truth(double x) { return fabs(x) > TRUTH_EPSILON; }
 
 static bool no_memory(parser *p, diag_loc loc) { return lang_error(p, loc, "out of memory"); }
 
@@ -48,6 +52,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_FILE: return "a data file";
 	case VAL_FUNCTION: return "a function";
 	case VAL_SPLINE: return "a spline";
+	case VAL_SKY_SPHERE: return "a sky_sphere";
 	}
 	return "a value";
 }
@@ -118,7 +123,16 @@ static bool need_float(parser *p, diag_loc loc, const value *v, const char *what
 	return lang_error(p, loc, "%s needs a float, found %s", what, lang_value_kind_name(v));
 }
 
-/* vector = "<" expression { "," expression } ">"   (a '>' here closes the vector) */
+/* Whether a token can begin an operand (a number, a name, '(', '<', a sign, '!', a string):
+ * what may follow a vector component without its comma. */
+static bool starts_operand(lang_tok k)
+{
+	return k == LTK_NUMBER || k == LTK_IDENT || k == LTK_LPAREN || k == LTK_LT || k == LTK_MINUS ||
+	       k == LTK_PLUS || k == LTK_BANG || k == LTK_STRING || (k >= LANG_FIRST_KEYWORD && k < LANG_FIRST_DIRECTIVE);
+}
+
+/* vector = "<" expression { [ "," ] expression } ">"   (a '>' here closes the vector; the commas
+ * are optional, as POV-Ray's Parse_Comma makes them: woods.inc writes `< -1 0 0 >`) */
 static bool vector_literal(parser *p, value *out)
 {
 	diag_loc open = p->prev.loc;
@@ -128,7 +142,7 @@ static bool vector_literal(parser *p, value *out)
 	out->kind = VAL_VECTOR;
 	for (;;) {
 		value c;
-		if (!expr_or(p, &c))
+		if (!expr_cond(p, &c))
 			return false;
 		if (!need_float(p, p->prev.loc, &c, "a vector component"))
 			return false;
@@ -139,6 +153,8 @@ static bool vector_literal(parser *p, value *out)
 			continue;
 		if (lang_peek(p)->kind == LTK_GT)
 			break;
+		if (starts_operand(lang_peek(p)->kind))
+			continue;
 		p->no_gt = saved;
 		return lang_error_found(p, "expected ',' or '>' in the vector opened at line %u, column %u", open.line, open.col);
 	}
@@ -416,7 +432,8 @@ bool lang_array_store(parser *p, diag_loc loc, lang_array *a, size_t i, const va
 	return true;
 }
 
-bool lang_array_index(parser *p, const lang_array *a, const char *name, size_t *index)
+/* One element's index into a: "[" int "]" for each of its dimensions. */
+static bool index_of(parser *p, const lang_array *a, const char *name, size_t *index)
 {
 	size_t at = 0;
 	for (int d = 0; d < a->dims; d++) {
@@ -432,15 +449,47 @@ bool lang_array_index(parser *p, const lang_array *a, const char *name, size_t *
 					  name ? " of '" : "", name ? name : "", name ? "'" : "");
 		at = at * (size_t)a->size[d] + (size_t)k;
 	}
-	if (lang_raw_next(p) == LTK_LBRACKET) /* raw: #debug A[i] has no terminator to read up to */
-		return lang_error(p, lang_peek(p)->loc, "'%s' has %d dimension%s", name ? name : "the array", a->dims,
-				  a->dims == 1 ? "" : "s");
 	*index = at;
 	return true;
 }
 
-/* items = "{" ( expression | items ) { "," ( expression | items ) } [ "," ] "}": one level of braces
- * a dimension, each level exactly as long as its dimension. */
+/* An element whose value is an array is indexed on (A[i][j] of an array of arrays, as POV-Ray
+ * 3.7 allows): *a becomes the innermost array. */
+bool lang_array_index(parser *p, lang_array **a, const char *name, size_t *index)
+{
+	for (;;) {
+		if (!index_of(p, *a, name, index))
+			return false;
+		if (lang_raw_next(p) != LTK_LBRACKET) /* raw: #debug A[i] has no terminator to read up to */
+			return true;
+		const lang_array *in = *a;
+		if (!in->set[*index] || in->elems[*index].kind != VAL_ARRAY)
+			return lang_error(p, lang_peek(p)->loc, "'%s' has %d dimension%s%s", name ? name : "the array",
+					  in->dims, in->dims == 1 ? "" : "s",
+					  in->set[*index] ? " and this element is not an array" : "");
+		*a = in->elems[*index].arr;
+	}
+}
+
+/* item = block_value | array | additive: as POV-Ray's Parse_Initalizer reads an item (its
+ * Parse_RValue), a block (texture { }, an object, ...) or an expression without a comparison at its
+ * top, so that `<1, 2> <3, 4>` is two items. */
+static bool array_item(parser *p, value *v)
+{
+	bool handled;
+	if (!lang_declare_block(p, v, &handled))
+		return false;
+	if (handled)
+		return true;
+	bool saved = p->no_gt;
+	p->no_gt = false;
+	bool ok = expr_additive(p, v);
+	p->no_gt = saved;
+	return ok;
+}
+
+/* items = "{" ( item | items ) { [ "," ] ( item | items ) } [ "," ] "}": one level of braces a
+ * dimension, each level exactly as long as its dimension; the commas are optional (Parse_Comma). */
 static bool array_items(parser *p, lang_array *a, int d, size_t base)
 {
 	diag_loc open = lang_peek(p)->loc;
@@ -457,16 +506,22 @@ static bool array_items(parser *p, lang_array *a, int d, size_t base)
 		if (lang_peek(p)->kind == LTK_RBRACE)
 			return lang_error(p, lang_peek(p)->loc, "%ld item%s where the dimension has %ld", i, i == 1 ? "" : "s",
 					  a->size[d]);
-		if (i > 0 && !lang_expect(p, LTK_COMMA, "between the array's items"))
-			return false;
+		if (i > 0)
+			lang_accept(p, LTK_COMMA); /* optional, as POV-Ray's Parse_Comma makes it (lemon.inc) */
 		if (d + 1 < a->dims) {
 			if (!array_items(p, a, d + 1, base + (size_t)i * stride))
 				return false;
 			continue;
 		}
 		diag_loc at = lang_peek(p)->loc;
+		bool fresh = lang_peek(p)->kind == LTK_KW_ARRAY;
 		value v;
-		if (!lang_expr(p, &v) || !lang_array_store(p, at, a, base + (size_t)i, &v))
+		if (!array_item(p, &v))
+			return false;
+		/* an array named as an item is copied, as #declare copies it */
+		if (v.kind == VAL_ARRAY && !fresh && !lang_array_copy(p, at, &v))
+			return false;
+		if (!lang_array_store(p, at, a, base + (size_t)i, &v))
 			return false;
 		if (i + 1 == a->size[d])
 			lang_accept(p, LTK_COMMA); /* a trailing comma, as POV-Ray allows */
@@ -512,11 +567,12 @@ static bool element(parser *p, const lang_token *name, const value *arr, value *
 	snprintf(nm, sizeof nm, "%.*s", (int)name->len, name->text);
 	diag_loc at = lang_peek(p)->loc;
 	size_t i;
-	if (!lang_array_index(p, arr->arr, nm, &i))
+	lang_array *a = arr->arr;
+	if (!lang_array_index(p, &a, nm, &i))
 		return false;
-	if (!arr->arr->set[i])
+	if (!a->set[i])
 		return lang_error(p, at, "element of '%s' read before it was assigned", nm);
-	*out = arr->arr->elems[i];
+	*out = a->elems[i];
 	return true;
 }
 
@@ -540,9 +596,10 @@ static bool defined(parser *p, value *out)
 			size_t i;
 			char nm[LANG_MAX_IDENT + 1];
 			snprintf(nm, sizeof nm, "%.*s", (int)name.len, name.text);
-			if (!lang_array_index(p, s->val.arr, nm, &i))
+			lang_array *a = s->val.arr;
+			if (!lang_array_index(p, &a, nm, &i))
 				return false;
-			is = s->val.arr->set[i];
+			is = a->set[i];
 		} else {
 			while (lang_accept(p, LTK_LBRACKET)) { /* an element of no array: not defined */
 				double x;
@@ -982,7 +1039,7 @@ static bool read_args(parser *p, args *a)
 			if (a->n == LANG_MAX_VECTOR)
 				return lang_error(p, a->name.loc, "too many arguments to '%s' (limit is %d)", a->fname, LANG_MAX_VECTOR);
 			a->at[a->n] = lang_peek(p)->loc;
-			if (!expr_or(p, &a->v[a->n]))
+			if (!expr_cond(p, &a->v[a->n]))
 				return false;
 			a->n++;
 			if (!lang_accept(p, LTK_COMMA))
@@ -1138,7 +1195,7 @@ bool lang_primary(parser *p, value *out)
 		lang_advance(p);
 		bool saved = p->no_gt;
 		p->no_gt = false;
-		if (!expr_or(p, out) || !lang_expect(p, LTK_RPAREN, "to close '('"))
+		if (!expr_cond(p, out) || !lang_expect(p, LTK_RPAREN, "to close '('"))
 			return false;
 		p->no_gt = saved;
 		return true;
@@ -1172,6 +1229,7 @@ bool lang_primary(parser *p, value *out)
 		return lang_error(p, t->loc, "'%s' is not supported by circe here (a %s is the value of a #declare, "
 					     "a #local or a macro's argument)", t->kind == LTK_KW_SPLINE ? "spline" : "function",
 				  t->kind == LTK_KW_SPLINE ? "spline" : "function");
+	case LTK_KW_ARRAY: return lang_array_value(p, out); /* an element of an array of arrays */
 	case LTK_IDENT: return identifier(p, out);
 	default: {
 		if (lang_colour_word(t->kind))
@@ -1213,7 +1271,7 @@ static bool unary(parser *p, value *out)
 	if (op.kind == LTK_BANG) {
 		if (!need_float(p, op.loc, out, "'!'"))
 			return false;
-		set_float(out, out->v[0] == 0.0);
+		set_float(out, !truth(out->v[0]));
 	} else if (op.kind == LTK_MINUS) {
 		if (!is_numeric(out))
 			return lang_error(p, op.loc, "cannot negate %s", lang_value_kind_name(out));
@@ -1268,7 +1326,22 @@ static bool expr_additive(parser *p, value *out)
 	}
 }
 
+/* Two strings compared as POV-Ray 3.7 compares them (Parse_Rel_String_Term in express.cpp): by
+ * strcmp of their bytes, the result 1 or 0. */
+static bool string_comparison(parser *p, const lang_token *op, value *a, const value *b)
+{
+	if (a->kind != VAL_STRING || b->kind != VAL_STRING)
+		return lang_error(p, op->loc, "a comparison of a string needs a string on both sides, found %s",
+				  lang_value_kind_name(a->kind == VAL_STRING ? b : a));
+	int c = strcmp(a->str, b->str);
+	lang_tok k = op->kind;
+	set_float(a, k == LTK_LT ? c < 0 : k == LTK_LE ? c <= 0 : k == LTK_EQ ? c == 0 : k == LTK_NE ? c != 0
+		     : k == LTK_GE ? c >= 0 : c > 0);
+	return true;
+}
+
 /* comparison = additive { ( "<" | "<=" | "=" | "!=" | ">=" | ">" ) additive }
+ * Two strings compare by strcmp (POV-Ray 3.7); otherwise both sides are floats.
  * Inside a vector literal a '>' is not an operator: it closes the vector. */
 static bool comparison(parser *p, value *out)
 {
@@ -1284,42 +1357,57 @@ static bool comparison(parser *p, value *out)
 		value b;
 		if (!expr_additive(p, &b))
 			return false;
+		if (out->kind == VAL_STRING || b.kind == VAL_STRING) {
+			if (!string_comparison(p, &op, out, &b))
+				return false;
+			continue;
+		}
 		if (!need_float(p, op.loc, out, "a comparison") || !need_float(p, op.loc, &b, "a comparison"))
 			return false;
+		/* POV-Ray's Parse_Rel_Term: '=', '<=', '>=' and '!=' within EPSILON */
 		double x = out->v[0], y = b.v[0];
-		bool r = k == LTK_LT ? x < y : k == LTK_LE ? x <= y : k == LTK_EQ ? x == y : k == LTK_NE ? x != y
-			 : k == LTK_GE ? x >= y : x > y;
+		bool near = !truth(x - y);
+		bool r = k == LTK_LT ? x < y : k == LTK_LE ? x <= y || near : k == LTK_EQ ? near : k == LTK_NE ? !near
+			 : k == LTK_GE ? x >= y || near : x > y;
 		set_float(out, r);
 	}
 }
 
-/* and = comparison { "&" comparison } */
-static bool expr_and(parser *p, value *out)
+/* logical = comparison { ( "&" | "|" ) comparison }
+ * As POV-Ray 3.7's Parse_Logical: '&' and '|' at one level, from the left. */
+static bool expr_logical(parser *p, value *out)
 {
 	if (!comparison(p, out))
 		return false;
-	while (lang_peek(p)->kind == LTK_AMP) {
+	for (;;) {
+		lang_tok k = lang_peek(p)->kind;
+		if (k != LTK_AMP && k != LTK_BAR)
+			return true;
 		lang_token op = *lang_advance(p);
+		const char *name = k == LTK_AMP ? "'&'" : "'|'";
 		value b;
-		if (!comparison(p, &b) || !need_float(p, op.loc, out, "'&'") || !need_float(p, op.loc, &b, "'&'"))
+		if (!comparison(p, &b) || !need_float(p, op.loc, out, name) || !need_float(p, op.loc, &b, name))
 			return false;
-		set_float(out, out->v[0] != 0 && b.v[0] != 0);
+		bool x = truth(out->v[0]), y = truth(b.v[0]);
+		set_float(out, k == LTK_AMP ? x && y : x || y);
 	}
-	return true;
 }
 
-/* expression = and { "|" and } */
-static bool expr_or(parser *p, value *out)
+/* expression = logical [ "?" expression ":" expression ]
+ * POV-Ray's conditional (Parse_Express): the condition a float; both branches are read (and
+ * evaluated, as POV-Ray evaluates them), the chosen one is the value. */
+static bool expr_cond(parser *p, value *out)
 {
 	if (!lang_enter(p, lang_peek(p)->loc))
 		return false;
-	bool ok = expr_and(p, out);
-	while (ok && lang_peek(p)->kind == LTK_BAR) {
+	bool ok = expr_logical(p, out);
+	if (ok && lang_peek(p)->kind == LTK_QUESTION) {
 		lang_token op = *lang_advance(p);
-		value b;
-		ok = expr_and(p, &b) && need_float(p, op.loc, out, "'|'") && need_float(p, op.loc, &b, "'|'");
+		value a, b;
+		ok = need_float(p, op.loc, out, "the condition of '?'") && expr_cond(p, &a) &&
+		     lang_expect(p, LTK_COLON, "between the two values of '?'") && expr_cond(p, &b);
 		if (ok)
-			set_float(out, out->v[0] != 0 || b.v[0] != 0);
+			*out = truth(out->v[0]) ? a : b;
 	}
 	lang_leave(p);
 	return ok;
@@ -1327,19 +1415,42 @@ static bool expr_or(parser *p, value *out)
 
 /* ---- typed entry points ------------------------------------------------------------------ */
 
-bool lang_expr(parser *p, value *out) { return expr_or(p, out); }
+bool lang_expr(parser *p, value *out) { return expr_cond(p, out); }
 
-bool lang_float(parser *p, const char *what, double *out)
+bool lang_truth(double x) { return truth(x); }
+
+/* A float from an expression: full (a directive's condition, in its parentheses) or, as POV-Ray
+ * 3.7's Parse_Float reads one, additive: no comparison at its top, so that mesh2's
+ * `vertex_vectors { 14 <-1, -1, -1> ...` is a count and a vector (a comparison needs parentheses). */
+static bool float_of(parser *p, const char *what, bool full, double *out)
 {
 	diag_loc loc = lang_peek(p)->loc;
 	value v;
-	if (!lang_expr(p, &v))
+	bool saved = p->no_gt;
+	if (!full)
+		p->no_gt = false;
+	bool ok = full ? lang_expr(p, &v) : expr_additive(p, &v);
+	p->no_gt = saved;
+	if (!ok)
 		return false;
 	if (v.kind != VAL_FLOAT)
 		return lang_error(p, loc, "expected a float %s, found %s", what, lang_value_kind_name(&v));
 	*out = v.v[0];
 	return true;
 }
+
+bool lang_float(parser *p, const char *what, double *out) { return float_of(p, what, false, out); }
+
+bool lang_additive(parser *p, value *out)
+{
+	bool saved = p->no_gt;
+	p->no_gt = false;
+	bool ok = expr_additive(p, out);
+	p->no_gt = saved;
+	return ok;
+}
+
+bool lang_float_expr(parser *p, const char *what, double *out) { return float_of(p, what, true, out); }
 
 bool lang_int(parser *p, const char *what, long lo, long hi, long *out)
 {

@@ -429,6 +429,19 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	}
 	deprecation dep = p->pending_dep;
 	p->pending_dep = (deprecation){0};
+	/* As povray 3.7.0's Parse_Declare: #declare of a name visible as a local (of this macro call
+	 * or include file, or one enclosing it) assigns that local; only a name found nowhere or
+	 * as a global is the global's. */
+	for (size_t i = p->locals.len; !local && i-- > 0;) {
+		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
+			symbol *t = s->param ? target(p, s) : s;
+			t->val = *v;
+			if (dep.on)
+				t->dep = dep;
+			return true;
+		}
+	}
 	int depth = local ? p->n_files - 1 : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
 	for (size_t i = tab->len; i-- > 0;) {
@@ -544,7 +557,7 @@ static bool lone_value(parser *p)
 }
 
 /* `#declare A[i]...`: the array A names (declared) and the element's index. */
-static bool declare_element(parser *p, const lang_token *name, lang_array **arr, size_t *index)
+bool lang_element_target(parser *p, const lang_token *name, lang_array **arr, size_t *index)
 {
 	const symbol *s = lang_lookup(p, name->text, name->len);
 	if (!s)
@@ -556,7 +569,7 @@ static bool declare_element(parser *p, const lang_token *name, lang_array **arr,
 	char nm[LANG_MAX_IDENT + 1];
 	snprintf(nm, sizeof nm, "%.*s", (int)name->len, name->text);
 	*arr = s->val.arr;
-	return lang_array_index(p, *arr, nm, index);
+	return lang_array_index(p, arr, nm, index);
 }
 
 /* What a #declare assigns: a name (global, or local for #local) or an array's element. */
@@ -650,7 +663,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
 	decl_target tg = {.name = *lang_advance(p), .local = local};
-	if (lang_peek(p)->kind == LTK_LBRACKET && !declare_element(p, &tg.name, &tg.arr, &tg.index)) {
+	if (lang_peek(p)->kind == LTK_LBRACKET && !lang_element_target(p, &tg.name, &tg.arr, &tg.index)) {
 		p->directive_expr = false;
 		return false;
 	}
@@ -675,7 +688,7 @@ static bool paren_float(parser *p, const char *what, const char *role, double *v
 	snprintf(after, sizeof after, "after the %s", role);
 	char as[64];
 	snprintf(as, sizeof as, "as the %s", role);
-	bool ok = lang_expect(p, LTK_LPAREN, what) && lang_float(p, as, v) && lang_expect(p, LTK_RPAREN, after);
+	bool ok = lang_expect(p, LTK_LPAREN, what) && lang_float_expr(p, as, v) && lang_expect(p, LTK_RPAREN, after);
 	p->directive_expr = false;
 	return ok;
 }
@@ -684,7 +697,7 @@ static bool cond_expr(parser *p, const char *what, bool *truth)
 {
 	double v;
 	bool ok = paren_float(p, what, "condition", &v);
-	*truth = v != 0.0;
+	*truth = lang_truth(v); /* POV-Ray: fabs(Value) > EPSILON */
 	return ok;
 }
 
@@ -908,13 +921,14 @@ static bool do_ifdef(parser *p, diag_loc loc, bool want_defined)
 	bool is = s != NULL;
 	if (ok && lang_peek(p)->kind == LTK_LBRACKET) {
 		size_t i;
+		lang_array *a = s ? s->val.arr : NULL;
 		char nm[LANG_MAX_IDENT + 1];
 		snprintf(nm, sizeof nm, "%.*s", (int)name.len, name.text);
 		if (!s || s->val.kind != VAL_ARRAY)
 			ok = lang_error(p, name.loc, "'%s' of an element of '%s', which is %s, not an array", dname, nm,
 					s ? lang_value_kind_name(&s->val) : "not declared");
-		else if ((ok = lang_array_index(p, s->val.arr, nm, &i)))
-			is = s->val.arr->set[i];
+		else if ((ok = lang_array_index(p, &a, nm, &i)))
+			is = a->set[i];
 	}
 	ok = ok && lang_expect(p, LTK_RPAREN, "after the identifier");
 	p->directive_expr = false;
@@ -1633,6 +1647,8 @@ bool lang_accept(parser *p, lang_tok k)
 bool lang_expect(parser *p, lang_tok k, const char *context)
 {
 	if (lang_accept(p, k))
+		return true;
+	if (k == LTK_COMMA) /* POV-Ray's Parse_Comma: a comma between items may be left out */
 		return true;
 	return lang_error_found(p, "expected %s %s", lang_tok_name(k), context);
 }

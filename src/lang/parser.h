@@ -19,7 +19,8 @@ typedef enum value_kind {
 	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
 	VAL_FILE, /* a data file of #fopen (datafile.c) */
-	VAL_FUNCTION, VAL_SPLINE /* func.c */
+	VAL_FUNCTION, VAL_SPLINE, /* func.c */
+	VAL_SKY_SPHERE /* a declared sky_sphere (stmt.c: its items, applied where it is placed) */
 } value_kind;
 
 /* A colour is POV-Ray's 5-vector: red, green, blue, filter, transmit (VAL_COLOR has n == 5). */
@@ -47,6 +48,7 @@ typedef struct value {
 	int file; /* VAL_FILE: its index in the parser's datafiles */
 	const struct lang_function *fn; /* VAL_FUNCTION */
 	const struct lang_spline *spl; /* VAL_SPLINE */
+	const struct lang_sky *sky; /* VAL_SKY_SPHERE */
 } value;
 
 /* An array: its dimensions and its elements in row-major order, each unset until assigned (kind
@@ -153,13 +155,16 @@ typedef struct parser {
 	vecbuf globals, locals; /* symbol */
 	/* expressions (expr.c): */
 	vecbuf rand_streams; /* rng, one per seed() call: rand(S) draws from stream S */
+	unsigned warned_objflags; /* objmods.c: the object flags warned about (once a parse each) */
 } parser;
 
 /* ---- token stream (parser.c) ---- */
 lang_token *lang_peek(parser *p);
 lang_token *lang_advance(parser *p);
 bool lang_accept(parser *p, lang_tok k);
-/* Expects k; otherwise "expected K CONTEXT, found X". context: e.g. "after the sphere centre". */
+/* Expects k; otherwise "expected K CONTEXT, found X". context: e.g. "after the sphere centre".
+ * A comma is optional (true without reading anything), as POV-Ray 3.7's Parse_Comma makes every
+ * comma of its grammar but those between a built-in function's arguments. */
 bool lang_expect(parser *p, lang_tok k, const char *context);
 /* Expects '}' closing what opened at open; names the opening on failure. */
 bool lang_expect_close(parser *p, diag_loc open, const char *what);
@@ -181,6 +186,8 @@ void lang_skip_optional_semi(parser *p);
 
 /* ---- expressions (expr.c) ---- */
 bool lang_expr(parser *p, value *out);
+/* POV-Ray's truth of a float: |x| > 1e-10 (its EPSILON), for conditions and logic. */
+bool lang_truth(double x);
 /* One primary with its members and indices but no operator after it: the operand of #debug, which
  * has no terminator to read an operator up to. */
 bool lang_primary(parser *p, value *out);
@@ -190,13 +197,24 @@ bool lang_colour_word(lang_tok k);
 /* array = "array" [ "mixed" ] "[" int "]" { "[" int "]" } [ "{" items "}" ]; the lookahead is
  * "array". */
 bool lang_array_value(parser *p, value *out);
-/* "[" int "]" ... after an array's name: the element's index into a->elems, bounds checked. */
-bool lang_array_index(parser *p, const lang_array *a, const char *name, size_t *index);
+/* "[" int "]" ... after an array's name: the element's index into (*a)->elems, bounds checked; an
+ * element that is an array indexed on makes *a that array. */
+bool lang_array_index(parser *p, lang_array **a, const char *name, size_t *index);
+/* `Name [ index ]` as the target of #declare or #read: the array the name holds (declared) and
+ * the element's index. */
+bool lang_element_target(parser *p, const lang_token *name, lang_array **arr, size_t *index);
 /* A copy of an array (for #declare B = A: POV-Ray copies; a macro's argument is by reference). */
 bool lang_array_copy(parser *p, diag_loc loc, value *v);
 /* Stores v in element i of a (a non-mixed array holds one kind). */
 bool lang_array_store(parser *p, diag_loc loc, lang_array *a, size_t i, const value *v);
+/* A float as POV-Ray's Parse_Float reads it: an additive expression (a comparison, '&', '|' or '?'
+ * only inside parentheses). */
 bool lang_float(parser *p, const char *what, double *out);
+/* A value as POV-Ray's Parse_Vector or Parse_UV_Vect reads one: an additive expression, so that a
+ * '<' after it begins the next item (mesh2's uv_vectors written without commas). */
+bool lang_additive(parser *p, value *out);
+/* A float from a whole expression, comparisons and all (a directive's parenthesised condition). */
+bool lang_float_expr(parser *p, const char *what, double *out);
 bool lang_int(parser *p, const char *what, long lo, long hi, long *out);
 bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted */
 /* A colour's red, green and blue (a float is promoted); a filter or transmit other than 0 is
@@ -231,6 +249,19 @@ bool lang_read_directive(parser *p, diag_loc at);
 bool lang_write_directive(parser *p);
 void lang_datafiles_init(parser *p);
 void lang_datafiles_close(parser *p); /* the end of the parse: streams closed, the list freed */
+
+/* ---- object flags (objmods.c) ---- */
+/* The POV-Ray object flags one object item says: which (said) and their values (on), SCENE_OBJ_*. */
+typedef struct lang_objflags {
+	uint8_t said, on;
+} lang_objflags;
+/* object_flag = ( "hollow" | "no_image" | "no_reflection" | "no_radiosity" | "double_illuminate"
+ *               | "split_union" | "hierarchy" ) [ float ] | ( "photons" | "radiosity" ) "{" ... "}"
+ *             | colour
+ * at the lookahead; *matched false (nothing read) for any other token. */
+bool lang_object_flag(parser *p, lang_objflags *f, bool *matched);
+/* Gives an object the flags an item that made or holds it says, as POV-Ray's CSG does. */
+void lang_apply_object_flags(scene_object *o, const lang_objflags *f);
 
 /* ---- statements (stmt.c) ---- */
 /* statement = global_settings | camera | light_source | background | sky_sphere | object_item */

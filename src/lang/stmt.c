@@ -116,21 +116,43 @@ static const value *declared(parser *p, value_kind k, const char *what)
 		lang_error(p, t.loc, "undeclared identifier '%.*s'", (int)t.len, t.text);
 		return NULL;
 	}
-	if (s->val.kind != k) {
-		lang_error(p, t.loc, "'%.*s' is %s, not %s", (int)t.len, t.text, lang_value_kind_name(&s->val), what);
+	const value *v = &s->val;
+	if (v->kind == VAL_ARRAY && lang_raw_next(p) == LTK_LBRACKET) { /* texture { Textures[I] } */
+		diag_loc at = lang_peek(p)->loc;
+		lang_array *a;
+		size_t i;
+		if (!lang_element_target(p, &t, &a, &i))
+			return NULL;
+		if (!a->set[i]) {
+			lang_error(p, at, "element of '%.*s' read before it was assigned", (int)t.len, t.text);
+			return NULL;
+		}
+		v = &a->elems[i];
+	}
+	if (v->kind != k) {
+		lang_error(p, t.loc, "'%.*s' is %s, not %s", (int)t.len, t.text, lang_value_kind_name(v), what);
 		return NULL;
 	}
-	return &s->val;
+	return v;
 }
 
-/* True when the lookahead is a name declared as a value of kind k. */
+/* The kind of value a declared name gives: an array's, that of its elements (when they are of
+ * one kind), for a name that is indexed next. */
+static int named_kind(const symbol *s)
+{
+	if (s->val.kind == VAL_ARRAY && !s->val.arr->mixed && s->val.arr->kind >= 0)
+		return s->val.arr->kind;
+	return (int)s->val.kind;
+}
+
+/* True when the lookahead is a name declared as a value of kind k (or an array of them). */
 static bool names(parser *p, value_kind k)
 {
 	lang_token *t = lang_peek(p);
 	if (t->kind != LTK_IDENT)
 		return false;
 	const symbol *s = lang_lookup(p, t->text, t->len);
-	return s && s->val.kind == k;
+	return s && named_kind(s) == (int)k;
 }
 
 /* True when the lookahead is a name declared as a block (neither a number nor a string): where a
@@ -141,8 +163,8 @@ static bool names_block(parser *p)
 	if (t->kind != LTK_IDENT)
 		return false;
 	const symbol *s = lang_lookup(p, t->text, t->len);
-	return s && s->val.kind != VAL_FLOAT && s->val.kind != VAL_VECTOR && s->val.kind != VAL_COLOR &&
-	       s->val.kind != VAL_STRING;
+	int k = s ? named_kind(s) : -1;
+	return s && k != VAL_FLOAT && k != VAL_VECTOR && k != VAL_COLOR && k != VAL_STRING;
 }
 
 /* ---- transforms -------------------------------------------------------------------------- */
@@ -180,7 +202,7 @@ static bool transform_item(parser *p, xform *t, bool *matched)
 		lang_advance(p);
 		diag_loc loc = lang_peek(p)->loc;
 		value mv;
-		TRY(lang_expr(p, &mv));
+		TRY(lang_additive(p, &mv));
 		if (mv.kind != VAL_VECTOR || mv.n != 12)
 			return lang_error(p, loc, "'matrix' needs 12 numbers <m00, m01, ..., m32>, found %s",
 					  lang_value_kind_name(&mv));
@@ -804,6 +826,7 @@ typedef struct mods {
 	diag_loc mat_loc;
 	scene_material *tex; /* made by a bare pigment or finish on this item */
 	bool no_shadow;
+	lang_objflags flags; /* hollow, no_image, ... (objmods.c) */
 	bool has_interior;
 	float ior;
 	diag_loc interior_loc;
@@ -818,7 +841,8 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 	return true;
 }
 
-/* modifier = transform_item | material | texture | pigment | finish | interior | "no_shadow" */
+/* modifier = transform_item | material | texture | pigment | finish | interior | "no_shadow"
+ *          | object_flag */
 static bool modifier(parser *p, mods *m, bool *matched)
 {
 	lang_token t = *lang_peek(p);
@@ -857,9 +881,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		lang_advance(p);
 		m->no_shadow = true;
 		return true;
-	default:
-		*matched = false;
-		return true;
+	default: return lang_object_flag(p, &m->flags, matched);
 	}
 }
 
@@ -882,6 +904,7 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 		if (!o->material)
 			o->material = m->mat;
 		o->no_shadow |= m->no_shadow;
+		lang_apply_object_flags(o, &m->flags);
 	}
 	return true;
 }
@@ -1109,7 +1132,7 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 
 typedef bool (*item_fn)(parser *p, void *ctx, uint32_t i);
 
-/* list = "{" count { "," item } "}"   with exactly count items */
+/* list = "{" count { [ "," ] item } [ "," ] "}"   with exactly count items */
 static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, vecbuf *reserve, size_t per_item,
 			 uint32_t *count)
 {
@@ -1132,8 +1155,12 @@ static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, v
 	if (reserve && !vecbuf_reserve(reserve, want * per_item))
 		return lang_error(p, nloc, "out of memory");
 	uint32_t i = 0;
-	while (lang_peek(p)->kind == LTK_COMMA) {
-		diag_loc cl = lang_advance(p)->loc;
+	for (;;) { /* the commas are optional, as POV-Ray's Parse_Comma makes them */
+		diag_loc cl = lang_peek(p)->loc;
+		lang_accept(p, LTK_COMMA);
+		lang_tok k = lang_peek(p)->kind;
+		if (k == LTK_RBRACE || k == LTK_EOF)
+			break;
 		if (i == (uint32_t)n)
 			return lang_error(p, cl, "'%s' has more items than its count %ld", what, n);
 		TRY(item(p, ctx, i));
@@ -1175,7 +1202,7 @@ static bool item_uv(parser *p, void *c, uint32_t i)
 	list_ctx *x = c;
 	diag_loc loc = lang_peek(p)->loc;
 	value v;
-	TRY(lang_expr(p, &v));
+	TRY(lang_additive(p, &v));
 	if (v.kind != VAL_VECTOR || v.n != 2)
 		return lang_error(p, loc, "expected a 2-vector <u, v> as item %u of '%s', found %s", i, x->what,
 				  lang_value_kind_name(&v));
@@ -1534,22 +1561,25 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	}
 }
 
-/* instance = "object" "{" identifier { modifier } "}" */
+/* instance = "object" "{" ( identifier | object_item ) { modifier } "}"
+ * POV-Ray's object { } holds a declared object or an object itself (a macro's, often). */
 static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	lang_token *t = lang_peek(p);
-	if (t->kind != LTK_IDENT)
-		return lang_error_found(p, "expected the name of a declared object after 'object {'");
-	lang_token name = *lang_advance(p);
-	const symbol *s = lang_lookup(p, name.text, name.len);
-	if (!s)
-		return lang_error(p, name.loc, "undeclared identifier '%.*s'", (int)name.len, name.text);
-	if (s->val.kind != VAL_OBJECT)
-		return lang_error(p, name.loc, "'%.*s' is %s, not an object", (int)name.len, name.text,
-				  lang_value_kind_name(&s->val));
+	if (t->kind != LTK_IDENT) {
+		size_t start = out->len;
+		bool matched;
+		TRY(object_item(p, out, &matched));
+		if (!matched)
+			return lang_error_found(p, "expected a declared object or an object after 'object {'");
+		return object_tail(p, out, start, open, "object");
+	}
+	const value *v = declared(p, VAL_OBJECT, "an object");
+	if (!v)
+		return false;
 	size_t start = out->len;
-	for (size_t i = 0; i < s->val.obj->n; i++) {
-		scene_object o = s->val.obj->items[i];
+	for (size_t i = 0; i < v->obj->n; i++) {
+		scene_object o = v->obj->items[i];
 		o.instance = true;
 		o.loc = kw;
 		if (!vecbuf_push(out, &o))
@@ -1626,6 +1656,8 @@ static bool declare_record(parser *p, value *out, lang_tok k)
 	return light_block(p, r, kw.loc);
 }
 
+static bool declare_sky(parser *p, value *out);
+
 bool lang_declare_block(parser *p, value *out, bool *handled)
 {
 	lang_tok k = lang_peek(p)->kind;
@@ -1639,6 +1671,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return declare_part(p, out, k);
 	if (k == LTK_KW_CAMERA || k == LTK_KW_LIGHT_SOURCE || k == LTK_KW_TRANSFORM)
 		return declare_record(p, out, k);
+	if (k == LTK_KW_SKY_SPHERE)
+		return declare_sky(p, out);
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
@@ -2341,36 +2375,38 @@ static bool sky_pigment(parser *p, diag_loc kw, const scene_material *pg, double
 	return true;
 }
 
-/* sky_sphere = "sky_sphere" "{" ( "image" string | pigment ) { "intensity" float | "rotate" vector } "}"
- * (one image or one pigment of a colour) */
-static bool sky_sphere(parser *p)
+/* A sky_sphere's items as read, applied where it is placed (a #declare keeps them for later). */
+typedef struct lang_sky {
+	scene_sky_sphere s;
+	const scene_material *pg; /* its pigment, or NULL */
+} lang_sky;
+
+/* sky_block = "{" [ identifier ] { "image" string | pigment | "intensity" float | "rotate" vector } "}"
+ * after the keyword; a declared sky_sphere named first is the start (as POV-Ray copies it). */
+static bool sky_block(parser *p, lang_sky *r)
 {
-	lang_token kw = *lang_advance(p);
 	diag_loc open;
 	TRY(open_block(p, "sky_sphere", &open));
-	scene_sky_sphere *s = &p->sc->sky_sphere;
-	*s = (scene_sky_sphere){.loc = kw.loc, .intensity = 1};
-	scene_material *pg = NULL;
+	if (names(p, VAL_SKY_SPHERE)) {
+		const value *v;
+		TRY(v = declared(p, VAL_SKY_SPHERE, "a sky_sphere"));
+		*r = *v->sky;
+	}
+	scene_sky_sphere *s = &r->s;
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		switch (t.kind) {
-		case LTK_RBRACE:
-			lang_advance(p);
-			if (pg && s->image)
-				return lang_error(p, pg->loc, "sky_sphere has an 'image' and a pigment: give one");
-			if (pg)
-				return sky_pigment(p, kw.loc, pg, s->intensity);
-			if (!s->image)
-				return lang_error(p, kw.loc, "sky_sphere needs an 'image' or a pigment");
-			p->sc->has_sky_sphere = true;
-			return true;
-		case LTK_KW_PIGMENT:
-			if (pg)
+		case LTK_RBRACE: lang_advance(p); return true;
+		case LTK_KW_PIGMENT: {
+			if (r->pg)
 				return lang_error(p, t.loc, "a second pigment in sky_sphere (circe's sky has one colour)");
+			scene_material *pg;
 			TRY(pg = new_part(p, t.loc));
 			TRY(pigment(p, pg, SCENE_COLOR_RADIANCE));
+			r->pg = pg;
 			break;
+		}
 		case LTK_KW_IMAGE:
 			lang_advance(p);
 			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->image));
@@ -2386,10 +2422,40 @@ static bool sky_sphere(parser *p)
 			lang_advance(p);
 			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
 			break;
-		default:
-			return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
+		default: return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
 		}
 	}
+}
+
+/* sky_sphere = "sky_sphere" sky_block   (one image or one pigment of a colour) */
+static bool sky_sphere(parser *p)
+{
+	lang_token kw = *lang_advance(p);
+	lang_sky r = {.s = {.intensity = 1}};
+	TRY(sky_block(p, &r));
+	scene_sky_sphere *s = &p->sc->sky_sphere;
+	*s = r.s;
+	s->loc = kw.loc;
+	if (r.pg && s->image)
+		return lang_error(p, r.pg->loc, "sky_sphere has an 'image' and a pigment: give one");
+	if (r.pg)
+		return sky_pigment(p, kw.loc, r.pg, s->intensity);
+	if (!s->image)
+		return lang_error(p, kw.loc, "sky_sphere needs an 'image' or a pigment");
+	p->sc->has_sky_sphere = true;
+	return true;
+}
+
+/* A declared sky_sphere: its items, in the arena. */
+static bool declare_sky(parser *p, value *out)
+{
+	lang_token kw = *lang_advance(p);
+	lang_sky *r = arena_zalloc(&p->sc->arena, 1, sizeof *r);
+	if (!r)
+		return lang_error(p, kw.loc, "out of memory");
+	r->s.intensity = 1;
+	out->kind = VAL_SKY_SPHERE, out->sky = r;
+	return sky_block(p, r);
 }
 
 /* default = "#default" "{" { texture | pigment | finish } "}"
@@ -2453,6 +2519,11 @@ bool lang_statement(parser *p)
 	case LTK_KW_DEFAULT: /* POV-Ray 3.7 still reads the old `default {...}` as #default */
 		lang_advance(p);
 		return lang_default(p);
+	case LTK_KW_TEXTURE: /* `#declare T = texture {...} texture {...}` (stones2.inc) */
+		return lang_error(p, t->loc, "a layered texture (a texture after a texture) is not supported by circe");
+	case LTK_KW_TRIANGLE:
+	case LTK_KW_SMOOTH_TRIANGLE:
+		return lang_error(p, t->loc, "'%.*s' outside a mesh is not supported by circe", (int)t->len, t->text);
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
 		const char *kw = !s ? NULL : s->val.kind == VAL_OBJECT ? "object" : s->val.kind == VAL_LIGHT ? "light_source"

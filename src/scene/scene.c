@@ -313,6 +313,21 @@ void scene_stats_get(const scene *s, scene_stats *st)
 static void dump_v3(FILE *o, const char *name, vec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
 static void dump_d3(FILE *o, const char *name, dvec3 v) { fprintf(o, " %s <%g, %g, %g>", name, v.x, v.y, v.z); }
 /* The file's base name only: dumps must not depend on where the tree lives. */
+/* The POV-Ray object flags, only those said: " hollow", " hollow off", " no_image", ... */
+static void dump_pov_flags(FILE *o, uint8_t f)
+{
+	if (f & SCENE_OBJ_HOLLOW_SET)
+		fprintf(o, (f & SCENE_OBJ_HOLLOW) ? " hollow" : " hollow off");
+	if (f & SCENE_OBJ_NO_IMAGE)
+		fprintf(o, " no_image");
+	if (f & SCENE_OBJ_NO_REFLECTION)
+		fprintf(o, " no_reflection");
+	if (f & SCENE_OBJ_NO_RADIOSITY)
+		fprintf(o, " no_radiosity");
+	if (f & SCENE_OBJ_DOUBLE_ILLUMINATE)
+		fprintf(o, " double_illuminate");
+}
+
 static void dump_loc(FILE *o, diag_loc l)
 {
 	const char *name = l.src ? l.src->name : "?";
@@ -574,6 +589,7 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " no_shadow");
 		if (ob->instance)
 			fprintf(o, " instance");
+		dump_pov_flags(o, ob->pov_flags);
 		dump_loc(o, ob->loc);
 		fputc('\n', o);
 		dump_xform(o, &ob->transform);

@@ -168,7 +168,19 @@ typedef struct scene_object {
 	const scene_material *material; /* NULL: the default grey diffuse */
 	bool no_shadow;
 	bool instance; /* made by object { Name } */
+	uint8_t pov_flags; /* SCENE_OBJ_*: POV-Ray's object flags circe records but does not render yet */
 } scene_object;
+
+/* POV-Ray 3.7's object flags (Parse_Object_Mods): hollow matters only for media; the others hide
+ * an object from some rays or light its back, which the renderer does not do yet. */
+enum {
+	SCENE_OBJ_HOLLOW = 1, /* hollow [on] */
+	SCENE_OBJ_HOLLOW_SET = 2, /* hollow was said (on or off): a union's hollow leaves it */
+	SCENE_OBJ_NO_IMAGE = 4,
+	SCENE_OBJ_NO_REFLECTION = 8,
+	SCENE_OBJ_NO_RADIOSITY = 16,
+	SCENE_OBJ_DOUBLE_ILLUMINATE = 32,
+};
 
 typedef struct scene_global {
 	double mm_per_unit; /* default 10 */

@@ -1,1 +1,2 @@
-object { sphere { 0, 1 } }
+// object { } holds a declared object or an object, not a number.
+object { 1 }

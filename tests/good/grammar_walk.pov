@@ -4,8 +4,8 @@
 /* a block comment */
 // rule: directive, version, number
 #version 3.7;
-// rule: declare, identifier, expression, and, comparison, additive, term, unary, primary, float
-#declare A = -(1 + 2) * 3 / 3 + !0 - (1 < 2 & 2 <= 2 | 1 = 1 & 1 != 2 & 2 >= 1 & 2 > 1);
+// rule: declare, identifier, expression, logical, comparison, additive, term, unary, primary, float
+#declare A = -(1 + 2) * 3 / 3 + !0 - (1 < 2 & 2 <= 2 | 1 = 1 & 1 != 2 & 2 >= 1 & 2 > 1) + ("a" < "b" ? 1 : 0);
 // rule: vector_literal, vector, call, function, string, colour
 #declare V = <vlength(<3, 4, 0>), sin(0), clock>;
 #declare S = "tex.png";
@@ -37,6 +37,9 @@
 #macro Grow(R, optional S) #declare R = R + 1; #end
 #declare Size = 1;
 Grow(Size) Grow(Size, 2)
+// rule: macro_arg
+#macro Paint_Ball(P) sphere { 0, 1 pigment { P } } #end
+Paint_Ball(pigment { rgb 0.5 })
 // rule: fopen, read, fclose, data_file, data_value, write
 #fopen Data "data/points.txt" read
 #read (Data, Count, Radius)
@@ -54,10 +57,11 @@ light_source { <0, 5, 0> rgb 1 spotlight point_at 0 radius 10 falloff 20 }
 light_source { <0, 5, 0> rgb 1 parallel point_at 0 }
 // rule: background
 background { rgb 0.1 }
-// rule: sky_sphere
-sky_sphere { image "sky.exr" intensity 1 rotate y * 10 }
-// rule: object_item, sphere, modifier
-sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0> no_shadow }
+// rule: sky_sphere, sky_block
+#declare Sky = sky_sphere { image "sky.exr" }
+sky_sphere { Sky intensity 1 rotate y * 10 }
+// rule: object_item, sphere, modifier, object_flag
+sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0> no_shadow hollow }
 // rule: box, plane
 box { -1, 1 }
 plane { y, 0 }
@@ -87,8 +91,10 @@ sphere { 0, 1 material { marble { sigma_s 0 + 2 sigma_a 0.01 } } }
 // rule: texture, pigment, finish, interior
 sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.5 specular 0.2 roughness 0.1 } } interior { ior 1.3 } }
 sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } interior { ior 1.2 } } }
-// rule: postfix, member, colour_item, array, array_items, index, defined
+// rule: postfix, member, colour_item, array, array_items, array_item, index, defined
 #declare Ar = array[2] { C.red, defined(Ar[0]) }
+#declare Balls = array[1] { sphere { 0, 1 } }
+object { Balls[0] }
 #declare Ar[1] = (color rgbf <1, 1, 1, 0.5> transmit 0.25).filter;
 // rule: transform_item, transform, pigment_type, default
 #declare Turn = transform { rotate y * 90 translate x inverse }

@@ -49,7 +49,7 @@ expect 2 "no scene" -- "$CIRCE" check
 expect 2 "two scenes" -- "$CIRCE" check a.pov b.pov
 expect 2 "bad clock" -- "$CIRCE" check --clock abc "$good/basic.pov"
 expect 2 "unknown option" -- "$CIRCE" check --frobnicate "$good/basic.pov"
-expect 3 "scene error" -- "$CIRCE" check "$srcdir/tests/bad/sphere_missing_comma.pov"
+expect 3 "scene error" -- "$CIRCE" check "$srcdir/tests/bad/sphere_negative_radius.pov"
 expect 3 "include without -I" -- "$CIRCE" check "$good/include_path.pov"
 printf 'sphere { 0, clock }\n' >"$tmp/clock.pov"
 expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"

@@ -1,5 +1,5 @@
 // pov_includes: POV-Ray 3.7's colors.inc (every colour it declares, printed), strings.inc and
-// arrays.inc macros in use; tests/lang/pov_includes.sh compares the output with pov_includes_scene.stderr
+// arrays.inc macros in use, colors.inc's colour-space macros; tests/lang/pov_includes.sh compares the output with pov_includes_scene.stderr
 // which povray 3.7.0 printed alike.
 #include "colors.inc"
 #include "strings.inc"
@@ -148,4 +148,9 @@ Resize_Array(A, 8)
 #debug concat(str(dimension_size(A, 1), 0, 0), " ", str(defined(A[7]), 0, 0), "\n")
 #declare R = RRand(2, 3, RdmA);
 #debug concat(str((R >= 2 & R <= 3), 0, 0), "\n")
+// colors.inc's colour-space macros (their ?: and comparisons), strings.inc's triangle strings
+#debug concat(CRGBStr(CHSL2RGB(<120, 1, 0.5>), 0, 3), " ", CRGBStr(CHSV2RGB(<300, 0.5, 0.8>), 0, 3), "\n")
+#debug concat(CRGBStr(CRGB2HSL(<0.2, 0.4, 0.6>), 0, 3), " ", CRGBStr(CRGB2HSV(<0.9, 0.3, 0.1>), 0, 3), "\n")
+#debug concat(Triangle_Str(<0, 0, 0>, <1, 0, 0>, <0, 1, 0>), "\n")
+#debug concat(str(Prob(1.5, RdmB), 0, 0), str(Prob(-1, RdmB), 0, 0), "\n")
 sphere { 0, 1 }

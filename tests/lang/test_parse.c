@@ -18,7 +18,7 @@ static const memfile files[] = {
 	{"a.inc", "#local L = 2; #declare G = L * 3;\n"},
 	{"inc/lib.inc", "box { -G, G }\n"},
 	{"t.inc", "triangle { 0, x, y }"},
-	{"bad.pov", "sphere { 0, 1 }\nsphere { 0 1 }\n"},
+	{"bad.pov", "sphere { 0, 1 }\nsphere { 0, 1 ] }\n"},
 	/* ten loops of 3: exactly the per-loop (3) and total (30) limits when max_loop_iterations is 3 */
 	{"loops.pov", "#include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" "
 		      "#include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" #include \"l3.inc\" "
@@ -104,7 +104,7 @@ int main(void)
 	st = lang_parse_file("bad.pov", &opt, &d, &sc);
 	fflush(out);
 	CHECK(st == LANG_SCENE_ERROR && sc == NULL, "status %d", (int)st);
-	CHECK(strstr(buf, "bad.pov:2:12: error: expected ',' after the sphere centre, found '1'"), "got: %s", buf);
+	CHECK(strstr(buf, "bad.pov:2:15: error: expected a transform, a material, no_shadow or '}' to close 'sphere' (opened at line 2), found ']'"), "got: %s", buf);
 	st = lang_parse_file("missing.pov", &opt, &d, &sc);
 	CHECK(st == LANG_IO_ERROR && sc == NULL, "missing file: status %d", (int)st);
 

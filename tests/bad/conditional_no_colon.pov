@@ -1,0 +1,2 @@
+// The ?: conditional needs its ":".
+#declare A = (1 ? 2 3);
