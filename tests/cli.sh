@@ -34,7 +34,7 @@ bad "--seed needs an integer >= 0, not '-3'" a.pov --seed -3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '1,2,3'" a.pov --region 1,2,3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '5,0,5,10'" a.pov --region 5,0,5,10
 bad "--region lies outside the -W x -H image" a.pov -W 10 -H 10 --region 0,0,11,10
-bad "--aov takes a list of albedo, normal, depth, variance, not 'albedo,foo'" a.pov --aov albedo,foo
+bad "--aov takes a list of albedo, normal, depth, variance, error, samples, not 'albedo,foo'" a.pov --aov albedo,foo
 bad "--tile needs I/N with 0 <= I < N, not '3/3'" a.pov --tile 3/3
 bad "--region and --tile exclude each other" a.pov --tile 0/2 --region 0,0,1,1
 bad "--clock needs a number, not 'noon'" a.pov --clock noon
