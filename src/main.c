@@ -557,8 +557,6 @@ static int parse_render_cli(int argc, char **argv, render_cli *o)
 		return usage_error("--region lies outside the %s image", "-W x -H");
 	if (o->has_region && o->tile_n)
 		return usage_error("%s", "--region and --tile exclude each other");
-	if (o->min_spp && !(o->noise_threshold > 0))
-		return usage_error("%s", "--min-spp is adaptive sampling's: it needs --noise-threshold");
 	return EXIT_OK;
 }
 
@@ -683,6 +681,7 @@ typedef struct render_state {
 	film f;
 	bool has_film;
 	double parse_s, build_s;
+	double noise_threshold; /* --noise-threshold, else the scene's; 0: no adaptive sampling */
 } render_state;
 
 static void render_free(render_state *s)
@@ -741,6 +740,10 @@ static int render_scene_of(const render_cli *o, render_state *s)
 		return s->d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 	}
 	s->build_s = seconds_since(&s->start) - s->parse_s;
+	s->noise_threshold = o->noise_threshold > 0 ? o->noise_threshold : s->sc->global.noise_threshold;
+	if (o->min_spp && !(s->noise_threshold > 0))
+		fprintf(stderr, "circe: warning: --min-spp has no effect without a noise threshold (--noise-threshold, "
+				"or global_settings' noise_threshold)\n");
 	return EXIT_OK;
 }
 
@@ -762,7 +765,7 @@ static int render_film(const render_cli *o, render_state *s, char tile[32])
 		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
 		snprintf(tile, 32, "%d/%d", o->tile_i, o->tile_n);
 	}
-	int apron = o->noise_threshold > 0 ? ADAPTIVE_APRON : 0;
+	int apron = s->noise_threshold > 0 ? ADAPTIVE_APRON : 0;
 	if (!film_init_apron(&s->f, o->width, o->height, x0, y0, x1, y1, apron)) {
 		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o->width, o->height);
 		note_memory_limit();
@@ -774,15 +777,15 @@ static int render_film(const render_cli *o, render_state *s, char tile[32])
 
 /* The image's own estimate of its noise, beside the render's time, so the trade of samples (or
  * of a --noise-threshold) against time shows; with adaptive sampling, how the samples spread. */
-static void report_noise(const render_cli *o, const film *f, double seconds)
+static void report_noise(const render_state *s, double seconds)
 {
 	adaptive_summary a;
-	adaptive_summarise(f, &a);
+	adaptive_summarise(&s->f, &a);
 	fprintf(stderr, "circe: noise: estimated NMSE %.3g (relative RMS error %.3g %%), mean pixel error %.3g, in %.2f s\n",
 		a.nmse, 100.0 * sqrt(a.nmse), a.mean_error, seconds);
-	if (o->noise_threshold > 0)
+	if (s->noise_threshold > 0)
 		fprintf(stderr, "circe: adaptive: threshold %g: %.1f samples per pixel on average (%u to %u)\n",
-			o->noise_threshold, a.mean_spp, a.min_spp, a.max_spp);
+			s->noise_threshold, a.mean_spp, a.min_spp, a.max_spp);
 }
 
 /* The render's closing lines on stderr: samples, times, dropped samples, SSS searches, noise. */
@@ -804,7 +807,7 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 			(unsigned long long)stats->sss_searches, (unsigned long long)stats->sss_nohit,
 			(double)stats->sss_nohit / (double)stats->sss_searches, (unsigned long long)stats->sss_overflow);
 	if (!o->quiet)
-		report_noise(o, &s->f, stats->seconds);
+		report_noise(s, stats->seconds);
 }
 
 /* Renders the built world into the film, checkpointing to the output, and writes the outputs;
@@ -815,7 +818,7 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 	snprintf(hash, sizeof hash, "%016llx", (unsigned long long)s->sc->source_hash);
 	output_info info = {.scene_path = o->scene, .scene_hash = hash, .seed = o->seed,
 			    .sss_method = world_sss_method(s->w), .clock = o->clock, .tile = tile[0] ? tile : NULL,
-			    .aovs = o->aovs, .noise_threshold = o->noise_threshold};
+			    .aovs = o->aovs, .noise_threshold = s->noise_threshold};
 	checkpoint_ctx cp = {s->out, &info, &s->d, s->start};
 	int max_level = s->sc->global.max_trace_level;
 	render_job job = {
@@ -827,7 +830,7 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 		.threads = o->threads, .checkpoint_interval_s = o->checkpoint_s,
 		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
 		.progress = !o->quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted,
-		.adaptive = {.threshold = o->noise_threshold, .min_spp = (uint32_t)o->min_spp}};
+		.adaptive = {.threshold = s->noise_threshold, .min_spp = (uint32_t)o->min_spp}};
 	render_stats stats;
 	render_status rs = render_run(&job, &s->f, &stats);
 	if (rs == RENDER_ERROR) {

@@ -41,7 +41,6 @@ bad "--noise-threshold needs a relative error > 0 such as 0.05, not '0'" a.pov -
 bad "--noise-threshold needs a relative error > 0 such as 0.05, not 'low'" a.pov --noise-threshold low
 bad "--noise-threshold needs a relative error > 0 such as 0.05, not 'nan'" a.pov --noise-threshold nan
 bad "--min-spp needs a sample count from 1 to 2^30, not '0'" a.pov --noise-threshold 0.1 --min-spp 0
-bad "--min-spp is adaptive sampling's: it needs --noise-threshold" a.pov --min-spp 16
 bad "--region and --tile exclude each other" a.pov --tile 0/2 --region 0,0,1,1
 bad "--clock needs a number, not 'noon'" a.pov --clock noon
 bad "--frame needs a frame number >= 0, not '-1'" a.pov --frame -1

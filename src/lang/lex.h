@@ -46,7 +46,8 @@ enum {
 	KW(MATRIX, "matrix") KW(MAX, "max") KW(MAX_EDGE, "max_edge")                                        \
 	KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") KW(MESH2, "mesh2") KW(METHOD, "method")     \
 	KW(MIN, "min") KW(MIXED, "mixed") KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NO, "no")        \
-	KW(NO_SHADOW, "no_shadow") KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")        \
+	KW(NO_SHADOW, "no_shadow") KW(NOISE_THRESHOLD, "noise_threshold")                                  \
+	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map")                                  \
 	KW(NORMAL_VECTORS, "normal_vectors") KW(NOW, "now") KW(OBJECT, "object") KW(OFF, "off")             \
 	KW(ON, "on") KW(ONCE, "once") KW(ORTHOGRAPHIC, "orthographic") KW(PANORAMIC, "panoramic")           \
 	KW(PARALLEL, "parallel") KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment")         \

@@ -3,7 +3,8 @@
 # bit-identical EXRs (beauty, the error and samples AOVs) for 1 and 2 threads, for four --region
 # quarters merged and for --tile I/N merged; the pixels' counts spread between the minimum and
 # --spp; render reports the estimated noise beside its time, for adaptive and fixed renders; a
-# --checkpoint is written during an adaptive render; --time with a threshold ends.
+# --checkpoint is written during an adaptive render; --time with a threshold ends; the scene's
+# global_settings noise_threshold is the option's default.
 . "$top_srcdir/tests/lib.sh"
 scene="$top_srcdir/tests/farm/farm.pov"
 enter_workdir
@@ -40,6 +41,16 @@ done
 expect_status 0 "$CIRCE" merge -o merged.exr $tiles
 expect_status 0 "$CIRCE" compare merged.exr t1.exr --fail 0
 grep -q '^max_abs: 0 at' out || fail "5 tiles merged differ from the whole: $(cat out)"
+# The scene's global_settings noise_threshold is the same as the option; the option wins over it.
+printf 'global_settings { noise_threshold 0.03 }\n#include "farm.pov"\n' >sdl.pov
+sdl="-W 40 -H 30 --spp 56 --min-spp 8 --seed 5 --aov error,samples,variance -I $top_srcdir/tests/farm"
+# shellcheck disable=SC2086
+expect_status 0 "$CIRCE" render sdl.pov -o sdl.exr $sdl
+expect_status 0 "$CIRCE" compare sdl.exr t1.exr --fail 0
+grep -q '^max_abs: 0 at' out || fail "global_settings noise_threshold differs from --noise-threshold: $(cat out)"
+# shellcheck disable=SC2086
+expect_status 0 "$CIRCE" render sdl.pov -o sdl2.exr $sdl --noise-threshold 0.2
+grep -q '^circe: adaptive: threshold 0.2:' err || fail "--noise-threshold does not override the scene's: $(cat err)"
 # Tiles of another threshold are another render: merge refuses them.
 # shellcheck disable=SC2086
 expect_status 0 "$CIRCE" render "$scene" --tile 0/5 -o other0.exr $opts --noise-threshold 0.2
