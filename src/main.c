@@ -781,7 +781,8 @@ static void report_noise(const render_state *s, double seconds)
 {
 	adaptive_summary a;
 	adaptive_summarise(&s->f, &a);
-	fprintf(stderr, "circe: noise: estimated NMSE %.3g (relative RMS error %.3g %%), mean pixel error %.3g, in %.2f s\n",
+	fprintf(stderr,
+		"circe: noise: estimated NMSE %.3g (relative RMS error %.3g %%), mean pixel error %.3g, in %.2f s\n",
 		a.nmse, 100.0 * sqrt(a.nmse), a.mean_error, seconds);
 	if (s->noise_threshold > 0)
 		fprintf(stderr, "circe: adaptive: threshold %g: %.1f samples per pixel on average (%u to %u)\n",

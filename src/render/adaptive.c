@@ -74,7 +74,8 @@ size_t adaptive_check(film *f, const adaptive_params *a, uint32_t count)
 			film_pixel *p = film_at(f->acc, f, x, y);
 			if (!p->stopped)
 				/* The apron only lends its latches: it samples until its own. */
-				p->stopped = film_in_region(f, x, y) ? neighbourhood_latched(f, x, y) : p->latch != 0;
+				p->stopped =
+				    film_in_region(f, x, y) ? neighbourhood_latched(f, x, y) : p->latch != 0;
 			active += !p->stopped;
 		}
 	return active;

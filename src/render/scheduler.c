@@ -210,7 +210,8 @@ static void wait_pass(pool *p, double t0, double npix)
 		pthread_cond_timedwait(&p->done, &p->mu, &ts);
 		if (job->progress && p->active > 0) {
 			double el = now_s() - t0;
-			double done_px = (double)f->spp * npix + (double)atomic_load(&p->samples_done); /* roughly, when adaptive */
+			/* Counts stopped pixels as sampled: with adaptive sampling, an upper bound. */
+			double done_px = (double)f->spp * npix + (double)atomic_load(&p->samples_done);
 			double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
 			if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
 				frac = el / job->time_budget_s;

@@ -32,7 +32,8 @@ static void build_scenes(void)
 	cam_init(&camera, &cp, W, H);
 }
 
-static render_job job_for(const ts_scene *s, uint32_t spp, int threads, int tile, double threshold, uint32_t min)
+static render_job job_for(const ts_scene *s, uint32_t spp, int threads, int tile, double threshold,
+			  uint32_t min)
 {
 	return (render_job){.scene = &s->rs,
 			    .camera = &camera,
@@ -47,7 +48,8 @@ static render_job job_for(const ts_scene *s, uint32_t spp, int threads, int tile
 /* Renders into f (a whole image or a region, with the apron); returns the status. */
 static render_status render(render_job j, film *f, int x0, int y0, int x1, int y1)
 {
-	CHECK(film_init_apron(f, W, H, x0, y0, x1, y1, ADAPTIVE_APRON), "film_init %d %d %d %d", x0, y0, x1, y1);
+	CHECK(film_init_apron(f, W, H, x0, y0, x1, y1, ADAPTIVE_APRON), "film_init %d %d %d %d", x0, y0, x1,
+	      y1);
 	return render_run(&j, f, NULL);
 }
 
@@ -57,7 +59,8 @@ static int differing_pixels(const film *whole, const film *f)
 	int diff = 0;
 	for (int y = f->y0; y < f->y1; y++)
 		for (int x = f->x0; x < f->x1; x++)
-			diff += memcmp(film_at(whole->acc, whole, x, y), film_at(f->acc, f, x, y), sizeof(film_pixel)) != 0;
+			diff += memcmp(film_at(whole->acc, whole, x, y), film_at(f->acc, f, x, y),
+				       sizeof(film_pixel)) != 0;
 	return diff;
 }
 
@@ -87,20 +90,24 @@ static void check_determinism(void)
 	CHECK(render(jw, &whole, 0, 0, 0, 0) == RENDER_DONE, "whole render");
 	uint32_t lo = UINT32_MAX, hi = 0;
 	for (int i = 0; i < W * H; i++)
-		lo = whole.acc[i].n < lo ? whole.acc[i].n : lo, hi = whole.acc[i].n > hi ? whole.acc[i].n : hi;
-	CHECK(lo < hi && hi == 72, "samples from %u to %u: the test needs pixels that stopped and others that did not",
-	      lo, hi);
+		lo = whole.acc[i].n < lo ? whole.acc[i].n : lo,
+		hi = whole.acc[i].n > hi ? whole.acc[i].n : hi;
+	CHECK(lo < hi && hi == 72,
+	      "samples from %u to %u: the test needs pixels that stopped and others that did not", lo, hi);
 	printf("  threshold 0.03: samples per pixel %u to %u\n", lo, hi);
 	CHECK(render(job_for(&scene, 72, 2, 5, 0.03, 8), &f, 0, 0, 0, 0) == RENDER_DONE, "2 threads");
-	CHECK(differing_pixels(&whole, &f) == 0, "1 vs 2 threads, tile 5: %d pixels differ", differing_pixels(&whole, &f));
+	CHECK(differing_pixels(&whole, &f) == 0, "1 vs 2 threads, tile 5: %d pixels differ",
+	      differing_pixels(&whole, &f));
 	film_free(&f);
 	const int xs[3] = {0, 17, W}, ys[3] = {0, 11, H};
 	for (int qy = 0; qy < 2; qy++)
 		for (int qx = 0; qx < 2; qx++) {
 			render_job jr = job_for(&scene, 72, 2, 7, 0.03, 8);
-			CHECK(render(jr, &f, xs[qx], ys[qy], xs[qx + 1], ys[qy + 1]) == RENDER_DONE, "region");
+			CHECK(render(jr, &f, xs[qx], ys[qy], xs[qx + 1], ys[qy + 1]) == RENDER_DONE,
+			      "region");
 			int d = differing_pixels(&whole, &f);
-			CHECK(d == 0, "region %d,%d-%d,%d: %d pixels differ", xs[qx], ys[qy], xs[qx + 1], ys[qy + 1], d);
+			CHECK(d == 0, "region %d,%d-%d,%d: %d pixels differ", xs[qx], ys[qy], xs[qx + 1],
+			      ys[qy + 1], d);
 			film_free(&f);
 		}
 	/* A region's film without the apron is refused rather than rendered differently. */
@@ -108,10 +115,12 @@ static void check_determinism(void)
 	CHECK(render_run(&jw, &f, NULL) == RENDER_ERROR, "a region without its apron was rendered");
 	film_free(&f);
 	/* Continued: 30 samples (between checks), then on to 72. */
-	CHECK(render(job_for(&scene, 30, 2, 16, 0.03, 8), &f, 0, 0, 0, 0) == RENDER_DONE && f.spp == 30, "first part");
+	CHECK(render(job_for(&scene, 30, 2, 16, 0.03, 8), &f, 0, 0, 0, 0) == RENDER_DONE && f.spp == 30,
+	      "first part");
 	render_job more = job_for(&scene, 72, 2, 16, 0.03, 8);
 	CHECK(render_run(&more, &f, NULL) == RENDER_DONE && f.spp == 72, "continued to %u", f.spp);
-	CHECK(differing_pixels(&whole, &f) == 0, "continued render: %d pixels differ", differing_pixels(&whole, &f));
+	CHECK(differing_pixels(&whole, &f) == 0, "continued render: %d pixels differ",
+	      differing_pixels(&whole, &f));
 	film_free(&f);
 	/* A time budget ends on some count; a render of that count is the same. */
 	render_job jt = job_for(&scene, 0, 2, 8, 0.03, 8);
@@ -139,8 +148,8 @@ static void check_stops(void)
 	for (int i = 0; i < W * H; i++)
 		off += f.acc[i].n != 12 || !f.acc[i].stopped;
 	CHECK(off == 0, "%d pixels of a constant image did not stop at the minimum 12", off);
-	CHECK(st.samples == 12u * W * H, "flat render took %llu samples, expected %u", (unsigned long long)st.samples,
-	      12u * W * H);
+	CHECK(st.samples == 12u * W * H, "flat render took %llu samples, expected %u",
+	      (unsigned long long)st.samples, 12u * W * H);
 	film_free(&f);
 	/* The noisy scene at a threshold its lit pixels cannot meet in 96 samples. */
 	j = job_for(&scene, 96, 2, 16, 1e-3, 16);
@@ -170,7 +179,8 @@ static void check_estimate(void)
 		film f;
 		render_job j = job_for(&scene, 16, 2, 16, 0.0, 0);
 		j.seed = 100 + (uint64_t)s;
-		CHECK(film_init(&f, W, H, 0, 0, 0, 0) && render_run(&j, &f, NULL) == RENDER_DONE, "seed %d", s);
+		CHECK(film_init(&f, W, H, 0, 0, 0, 0) && render_run(&j, &f, NULL) == RENDER_DONE, "seed %d",
+		      s);
 		film_read(&f, FILM_BEAUTY, buf);
 		for (size_t i = 0; i < n; i++)
 			m[i] += buf[i], m2[i] += (double)buf[i] * buf[i];
@@ -199,7 +209,8 @@ static void check_estimate(void)
 	}
 	mean /= (double)n;
 	double nmse_meas = var_meas / (double)n / (mean * mean);
-	printf("  over %d seeds: variance of the mean estimated %.4g measured %.4g; NMSE %.4g vs %.4g; mean relative "
+	printf("  over %d seeds: variance of the mean estimated %.4g measured %.4g; NMSE %.4g vs %.4g; mean "
+	       "relative "
 	       "error %.4g vs %.4g\n",
 	       SEEDS, var_est, var_meas, nmse_est, nmse_meas, e_est / (W * H), e_meas / (W * H));
 	CHECK(var_est > var_meas / 1.3 && var_est < var_meas * 1.3, "variance %g vs %g", var_est, var_meas);
