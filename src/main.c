@@ -39,8 +39,10 @@ static const char usage_text[] =
 	"usage: circe render SCENE [-o out.exr] [--png out.png] [-W W -H H] [--spp N | --time S]\n"
 	"                    [--threads N] [--sss circle|fullcircle|disk|volume]\n"
 	"                    [--circle-weight exact|talk] [--seed N] [--region X0,Y0,X1,Y1]\n"
-	"                    [--aov albedo,normal,depth,variance] [--tile I/N] [--clock F]\n"
-	"                    [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR] [--quiet]\n"
+	"                    [--noise-threshold T [--min-spp N]]\n"
+	"                    [--aov albedo,normal,depth,variance,error,samples] [--tile I/N]\n"
+	"                    [--clock F] [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR]\n"
+	"                    [--quiet]\n"
 	"       circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE] [--dump]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
 	"                     [--channels R,G,B]\n"
@@ -388,7 +390,9 @@ typedef struct render_cli {
 	uint64_t seed;
 	bool has_region;
 	int region[4]; /* x0, y0, x1, y1 */
-	unsigned aovs; /* AOV_* bits */
+	unsigned aovs; /* OUTPUT_AOV_* bits */
+	double noise_threshold; /* 0: no adaptive sampling */
+	long min_spp;		/* 0: automatic */
 	int tile_i, tile_n;
 	double clock;
 	long frame; /* -1: none */
@@ -397,8 +401,6 @@ typedef struct render_cli {
 	include_list includes;
 	bool quiet;
 } render_cli;
-
-enum { AOV_ALBEDO = 1, AOV_NORMAL = 2, AOV_DEPTH = 4, AOV_VARIANCE = 8 };
 
 static bool parse_long(const char *arg, long lo, long hi, long *out)
 {
@@ -432,15 +434,16 @@ static bool parse_size(const char *arg, size_t *out)
 
 static bool parse_aovs(const char *arg, unsigned *out)
 {
-	static const char *names[] = {"albedo", "normal", "depth", "variance"};
+	/* In the order of the OUTPUT_AOV_* bits. */
+	static const char *names[OUTPUT_AOV_COUNT] = {"albedo", "normal", "depth", "variance", "error", "samples"};
 	*out = 0;
 	const char *p = arg;
 	while (*p) {
 		size_t n = strcspn(p, ",");
 		int k = 0;
-		while (k < 4 && !(strlen(names[k]) == n && !strncmp(p, names[k], n)))
+		while (k < OUTPUT_AOV_COUNT && !(strlen(names[k]) == n && !strncmp(p, names[k], n)))
 			k++;
-		if (k == 4)
+		if (k == OUTPUT_AOV_COUNT)
 			return false;
 		*out |= 1u << k;
 		p += n;
@@ -515,8 +518,12 @@ static const cli_opt render_options[] = {
 	 "--seed needs an integer >= 0, not '%s'"},
 	{"region", 0, "X0,Y0,X1,Y1", "render only this rectangle of the image", opt_region, 0, 0, 0,
 	 "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'"},
-	{"aov", 0, "LIST", "extra layers: albedo, normal, depth, variance", opt_aov, R(aovs), 0, 0,
-	 "--aov takes a list of albedo, normal, depth, variance, not '%s'"},
+	{"noise-threshold", 0, "T", "adaptive sampling: a pixel stops below this relative error (--spp: the most)",
+	 opt_positive, R(noise_threshold), 0, 0, "--noise-threshold needs a relative error > 0 such as 0.05, not '%s'"},
+	{"min-spp", 0, "N", "adaptive sampling's first check (default: 16 / T^0.3, as Cycles)", opt_long, R(min_spp), 1,
+	 1L << 30, "--min-spp needs a sample count from 1 to 2^30, not '%s'"},
+	{"aov", 0, "LIST", "extra layers: albedo, normal, depth, variance, error, samples", opt_aov, R(aovs), 0, 0,
+	 "--aov takes a list of albedo, normal, depth, variance, error, samples, not '%s'"},
 	{"tile", 0, "I/N", "render tile I of N (circe merge assembles them)", opt_tile, 0, 0, 0,
 	 "--tile needs I/N with 0 <= I < N, not '%s'"},
 	{"clock", 0, "F", "the scene's clock (default 0)", opt_double, R(clock), 0, 0, "--clock needs a number, not '%s'"},
@@ -674,6 +681,7 @@ typedef struct render_state {
 	film f;
 	bool has_film;
 	double parse_s, build_s;
+	double noise_threshold; /* --noise-threshold, else the scene's; 0: no adaptive sampling */
 } render_state;
 
 static void render_free(render_state *s)
@@ -732,6 +740,10 @@ static int render_scene_of(const render_cli *o, render_state *s)
 		return s->d.errors ? EXIT_SCENE : EXIT_RUNTIME;
 	}
 	s->build_s = seconds_since(&s->start) - s->parse_s;
+	s->noise_threshold = o->noise_threshold > 0 ? o->noise_threshold : s->sc->global.noise_threshold;
+	if (o->min_spp && !(s->noise_threshold > 0))
+		fprintf(stderr, "circe: warning: --min-spp has no effect without a noise threshold (--noise-threshold, "
+				"or global_settings' noise_threshold)\n");
 	return EXIT_OK;
 }
 
@@ -753,7 +765,8 @@ static int render_film(const render_cli *o, render_state *s, char tile[32])
 		x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
 		snprintf(tile, 32, "%d/%d", o->tile_i, o->tile_n);
 	}
-	if (!film_init(&s->f, o->width, o->height, x0, y0, x1, y1)) {
+	int apron = s->noise_threshold > 0 ? ADAPTIVE_APRON : 0;
+	if (!film_init_apron(&s->f, o->width, o->height, x0, y0, x1, y1, apron)) {
 		fprintf(stderr, "circe: error: out of memory for a %dx%d film\n", o->width, o->height);
 		note_memory_limit();
 		return EXIT_RUNTIME;
@@ -762,7 +775,21 @@ static int render_film(const render_cli *o, render_state *s, char tile[32])
 	return EXIT_OK;
 }
 
-/* The render's closing lines on stderr: samples, times, dropped samples, SSS searches. */
+/* The image's own estimate of its noise, beside the render's time, so the trade of samples (or
+ * of a --noise-threshold) against time shows; with adaptive sampling, how the samples spread. */
+static void report_noise(const render_state *s, double seconds)
+{
+	adaptive_summary a;
+	adaptive_summarise(&s->f, &a);
+	fprintf(stderr,
+		"circe: noise: estimated NMSE %.3g (relative RMS error %.3g %%), mean pixel error %.3g, in %.2f s\n",
+		a.nmse, 100.0 * sqrt(a.nmse), a.mean_error, seconds);
+	if (s->noise_threshold > 0)
+		fprintf(stderr, "circe: adaptive: threshold %g: %.1f samples per pixel on average (%u to %u)\n",
+			s->noise_threshold, a.mean_spp, a.min_spp, a.max_spp);
+}
+
+/* The render's closing lines on stderr: samples, times, dropped samples, SSS searches, noise. */
 static void report_render(const render_cli *o, const render_state *s, const render_stats *stats)
 {
 	world_stats ws;
@@ -780,6 +807,8 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 				"kept\n",
 			(unsigned long long)stats->sss_searches, (unsigned long long)stats->sss_nohit,
 			(double)stats->sss_nohit / (double)stats->sss_searches, (unsigned long long)stats->sss_overflow);
+	if (!o->quiet)
+		report_noise(s, stats->seconds);
 }
 
 /* Renders the built world into the film, checkpointing to the output, and writes the outputs;
@@ -790,7 +819,7 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 	snprintf(hash, sizeof hash, "%016llx", (unsigned long long)s->sc->source_hash);
 	output_info info = {.scene_path = o->scene, .scene_hash = hash, .seed = o->seed,
 			    .sss_method = world_sss_method(s->w), .clock = o->clock, .tile = tile[0] ? tile : NULL,
-			    .aovs = o->aovs};
+			    .aovs = o->aovs, .noise_threshold = s->noise_threshold};
 	checkpoint_ctx cp = {s->out, &info, &s->d, s->start};
 	int max_level = s->sc->global.max_trace_level;
 	render_job job = {
@@ -801,7 +830,8 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 		.seed = o->seed, .spp = o->time_s > 0 ? 0 : (uint32_t)(o->spp ? o->spp : 64), .time_budget_s = o->time_s,
 		.threads = o->threads, .checkpoint_interval_s = o->checkpoint_s,
 		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
-		.progress = !o->quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted};
+		.progress = !o->quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted,
+		.adaptive = {.threshold = s->noise_threshold, .min_spp = (uint32_t)o->min_spp}};
 	render_stats stats;
 	render_status rs = render_run(&job, &s->f, &stats);
 	if (rs == RENDER_ERROR) {

@@ -34,8 +34,13 @@ bad "--seed needs an integer >= 0, not '-3'" a.pov --seed -3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '1,2,3'" a.pov --region 1,2,3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '5,0,5,10'" a.pov --region 5,0,5,10
 bad "--region lies outside the -W x -H image" a.pov -W 10 -H 10 --region 0,0,11,10
-bad "--aov takes a list of albedo, normal, depth, variance, not 'albedo,foo'" a.pov --aov albedo,foo
+bad "--aov takes a list of albedo, normal, depth, variance, error, samples, not 'albedo,foo'" a.pov --aov albedo,foo
 bad "--tile needs I/N with 0 <= I < N, not '3/3'" a.pov --tile 3/3
+bad "--noise-threshold needs a relative error > 0 such as 0.05, not '-0.1'" a.pov --noise-threshold -0.1
+bad "--noise-threshold needs a relative error > 0 such as 0.05, not '0'" a.pov --noise-threshold 0
+bad "--noise-threshold needs a relative error > 0 such as 0.05, not 'low'" a.pov --noise-threshold low
+bad "--noise-threshold needs a relative error > 0 such as 0.05, not 'nan'" a.pov --noise-threshold nan
+bad "--min-spp needs a sample count from 1 to 2^30, not '0'" a.pov --noise-threshold 0.1 --min-spp 0
 bad "--region and --tile exclude each other" a.pov --tile 0/2 --region 0,0,1,1
 bad "--clock needs a number, not 'noon'" a.pov --clock noon
 bad "--frame needs a frame number >= 0, not '-1'" a.pov --frame -1

@@ -1786,7 +1786,7 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 }
 
 /* global_settings = "global_settings" "{" { "mm_per_unit" float | "max_trace_level" integer
- *                   | "assumed_gamma" float | ignored_setting } "}"
+ *                   | "assumed_gamma" float | "noise_threshold" float | ignored_setting } "}"
  * ignored_setting = ( "radiosity" | "photons" ) "{" balanced-tokens "}"
  *                 | ( "ambient_light" | "irid_wavelength" ) color
  *                 | ( "adc_bailout" | "noise_generator" | "number_of_waves" | "max_intersections" ) float
@@ -1820,10 +1820,16 @@ static bool global_settings(parser *p)
 			TRY(lang_float(p, "after 'assumed_gamma'", &x) && positive(p, t.loc, "assumed_gamma", x));
 			g->assumed_gamma = x;
 			break;
+		case LTK_KW_NOISE_THRESHOLD: /* circe's: adaptive sampling, as render --noise-threshold */
+			lang_advance(p);
+			TRY(lang_float(p, "after 'noise_threshold'", &x) && positive(p, t.loc, "noise_threshold", x));
+			g->noise_threshold = x;
+			break;
 		default: {
 			const struct ignored_setting *s = ignored_setting(&t);
 			if (!s)
-				return bad_item(p, open, "global_settings", "mm_per_unit, max_trace_level or assumed_gamma");
+				return bad_item(p, open, "global_settings",
+						"mm_per_unit, max_trace_level, assumed_gamma or noise_threshold");
 			TRY(ignored_item(p, s));
 			break;
 		}

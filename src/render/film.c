@@ -4,9 +4,15 @@
 #include "base/mem.h"
 
 #include <assert.h>
+#include <math.h>
 #include <string.h>
 
 bool film_init(film *f, int width, int height, int x0, int y0, int x1, int y1)
+{
+	return film_init_apron(f, width, height, x0, y0, x1, y1, 0);
+}
+
+bool film_init_apron(film *f, int width, int height, int x0, int y0, int x1, int y1, int apron)
 {
 	memset(f, 0, sizeof *f);
 	if (x0 == 0 && y0 == 0 && x1 == 0 && y1 == 0) {
@@ -14,9 +20,13 @@ bool film_init(film *f, int width, int height, int x0, int y0, int x1, int y1)
 		y1 = height;
 	}
 	if (width <= 0 || height <= 0 || x0 < 0 || y0 < 0 || x1 > width || y1 > height || x0 >= x1 ||
-	    y0 >= y1)
+	    y0 >= y1 || apron < 0)
 		return false;
-	size_t n = (size_t)(x1 - x0) * (size_t)(y1 - y0);
+	f->ax0 = x0 - apron > 0 ? x0 - apron : 0;
+	f->ay0 = y0 - apron > 0 ? y0 - apron : 0;
+	f->ax1 = x1 + apron < width ? x1 + apron : width;
+	f->ay1 = y1 + apron < height ? y1 + apron : height;
+	size_t n = (size_t)(f->ax1 - f->ax0) * (size_t)(f->ay1 - f->ay0);
 	f->acc = mem_calloc(n, sizeof *f->acc);
 	f->work = mem_calloc(n, sizeof *f->work);
 	if (!f->acc || !f->work) {
@@ -41,7 +51,7 @@ void film_free(film *f)
 
 int film_channel_components(film_channel ch)
 {
-	return ch == FILM_DEPTH ? 1 : 3;
+	return ch == FILM_DEPTH || ch == FILM_ERROR || ch == FILM_SAMPLES ? 1 : 3;
 }
 
 bool film_pixel_add(film_pixel *p, const render_sample *s)
@@ -60,7 +70,27 @@ bool film_pixel_add(film_pixel *p, const render_sample *s)
 		p->normal[k] += nrm[k];
 	}
 	p->depth += s->depth;
+	p->n++;
 	return true;
+}
+
+double film_pixel_variance(const film_pixel *p, int k)
+{
+	if (p->n < 2)
+		return 0.0;
+	double ns = p->n, mean = p->sum[k] * (1.0 / ns); /* as the mean is read: the same rounding */
+	return fmax(0.0, (p->sum_sq[k] - ns * mean * mean) / (ns - 1.0)) / ns;
+}
+
+double film_pixel_error(const film_pixel *p)
+{
+	if (p->n < 2)
+		return INFINITY;
+	double var = (film_pixel_variance(p, 0) + film_pixel_variance(p, 1) + film_pixel_variance(p, 2)) / 3.0;
+	if (!(var > 0.0))
+		return 0.0;
+	double lum = (p->sum[0] + p->sum[1] + p->sum[2]) / (3.0 * p->n);
+	return sqrt(var) / (lum >= 1.0 ? lum : sqrt(lum));
 }
 
 void film_commit(film *f, uint32_t spp)
@@ -72,37 +102,40 @@ void film_commit(film *f, uint32_t spp)
 	f->spp = spp;
 }
 
+/* One value of a pixel's channel ch, component k. */
+static float channel_value(const film_pixel *p, film_channel ch, int k)
+{
+	double inv = p->n ? 1.0 / p->n : 0.0;
+	switch (ch) {
+	case FILM_BEAUTY:
+		return (float)(p->sum[k] * inv);
+	case FILM_ALBEDO:
+		return (float)(p->albedo[k] * inv);
+	case FILM_NORMAL:
+		return (float)(p->normal[k] * inv);
+	case FILM_VARIANCE:
+		return (float)film_pixel_variance(p, k);
+	case FILM_DEPTH:
+		return (float)(p->depth * inv);
+	case FILM_ERROR: {
+		/* Below 2 samples nothing is known: written as a large finite value, no Inf in a file. */
+		double e = film_pixel_error(p);
+		return isfinite(e) && e < 1e30 ? (float)e : 1e30f;
+	}
+	case FILM_SAMPLES:
+		return (float)p->n;
+	}
+	return 0.0f;
+}
+
 void film_read(const film *f, film_channel ch, float *out)
 {
-	size_t n = (size_t)film_region_width(f) * (size_t)film_region_height(f);
-	double inv = f->spp ? 1.0 / f->spp : 0.0, ns = f->spp;
-	for (size_t i = 0; i < n; i++) {
-		const film_pixel *p = &f->acc[i];
-		for (int k = 0; k < 3; k++) {
-			switch (ch) {
-			case FILM_BEAUTY:
-				out[3 * i + k] = (float)(p->sum[k] * inv);
-				break;
-			case FILM_ALBEDO:
-				out[3 * i + k] = (float)(p->albedo[k] * inv);
-				break;
-			case FILM_NORMAL:
-				out[3 * i + k] = (float)(p->normal[k] * inv);
-				break;
-			case FILM_VARIANCE: {
-				double var = 0.0;
-				if (f->spp > 1) {
-					double mean = p->sum[k] * inv;
-					var = fmax(0.0, (p->sum_sq[k] - ns * mean * mean) / (ns - 1.0)) / ns;
-				}
-				out[3 * i + k] = (float)var;
-				break;
-			}
-			case FILM_DEPTH:
-				if (k == 0)
-					out[i] = (float)(p->depth * inv);
-				break;
-			}
+	int comps = film_channel_components(ch), rw = film_region_width(f);
+	for (int y = f->y0; y < f->y1; y++)
+		for (int x = f->x0; x < f->x1; x++) {
+			const film_pixel *p = film_at(f->acc, f, x, y);
+			size_t i = (size_t)(y - f->y0) * (size_t)rw + (size_t)(x - f->x0);
+			for (int k = 0; k < comps; k++)
+				out[(size_t)comps * i + (size_t)k] = channel_value(p, ch, k);
 		}
-	}
 }

@@ -19,13 +19,15 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 {
 	int w = film_region_width(f), h = film_region_height(f);
 	size_t n = (size_t)w * (size_t)h;
-	static const film_channel chans[4] = {FILM_ALBEDO, FILM_NORMAL, FILM_DEPTH, FILM_VARIANCE};
-	static const char *const names[4][3] = {
+	enum { NAOV = OUTPUT_AOV_COUNT };
+	static const film_channel chans[NAOV] = {FILM_ALBEDO,	FILM_NORMAL, FILM_DEPTH,
+						 FILM_VARIANCE, FILM_ERROR,  FILM_SAMPLES};
+	static const char *const names[NAOV][3] = {
 		{"albedo.R", "albedo.G", "albedo.B"}, {"N.X", "N.Y", "N.Z"}, {"Z", NULL, NULL},
-		{"variance.R", "variance.G", "variance.B"}};
+		{"variance.R", "variance.G", "variance.B"}, {"error", NULL, NULL}, {"samples", NULL, NULL}};
 	float *beauty = mem_alloc(n, 4 * sizeof(float));
-	float *aov[4] = {NULL, NULL, NULL, NULL};
-	exrfile_channel ch[4 + 4 * 3];
+	float *aov[NAOV] = {NULL};
+	exrfile_channel ch[4 + NAOV * 3];
 	int nch = 0;
 	bool ok = beauty != NULL;
 	if (ok) {
@@ -39,7 +41,7 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 		for (int c = 0; c < 4; c++)
 			ch[nch++] = (exrfile_channel){rgba[c], beauty + c, 4, (size_t)w * 4};
 	}
-	for (int k = 0; ok && k < 4; k++) {
+	for (int k = 0; ok && k < NAOV; k++) {
 		if (!(info->aovs & (1u << k)))
 			continue;
 		int comps = film_channel_components(chans[k]);
@@ -55,7 +57,7 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 	} else {
 		char seed[32];
 		snprintf(seed, sizeof seed, "%" PRIu64, info->seed);
-		exrfile_attr at[12];
+		exrfile_attr at[13];
 		int na = 0;
 		at[na++] = (exrfile_attr){.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe " PACKAGE_VERSION};
 		at[na++] = (exrfile_attr){.name = "circe.scene", .kind = EXRFILE_ATTR_STRING, .s = info->scene_path};
@@ -71,11 +73,14 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 		at[na++] = (exrfile_attr){.name = "circe.interrupted", .kind = EXRFILE_ATTR_INT, .i = info->interrupted};
 		if (info->tile)
 			at[na++] = (exrfile_attr){.name = "circe.tile", .kind = EXRFILE_ATTR_STRING, .s = info->tile};
+		if (info->noise_threshold > 0.0)
+			at[na++] = (exrfile_attr){.name = "circe.noise_threshold", .kind = EXRFILE_ATTR_DOUBLE,
+						  .d = info->noise_threshold};
 		exrfile_write_desc desc = {{0, 0, f->width, f->height}, {f->x0, f->y0, f->x1, f->y1}, nch, ch, na, at};
 		ok = exrfile_write(path, &desc, d);
 	}
 	mem_free(beauty);
-	for (int k = 0; k < 4; k++)
+	for (int k = 0; k < NAOV; k++)
 		mem_free(aov[k]);
 	return ok;
 }

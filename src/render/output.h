@@ -11,7 +11,15 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-enum { OUTPUT_AOV_ALBEDO = 1, OUTPUT_AOV_NORMAL = 2, OUTPUT_AOV_DEPTH = 4, OUTPUT_AOV_VARIANCE = 8 };
+enum {
+	OUTPUT_AOV_ALBEDO = 1,
+	OUTPUT_AOV_NORMAL = 2,
+	OUTPUT_AOV_DEPTH = 4,
+	OUTPUT_AOV_VARIANCE = 8,
+	OUTPUT_AOV_ERROR = 16,
+	OUTPUT_AOV_SAMPLES = 32,
+	OUTPUT_AOV_COUNT = 6
+};
 
 typedef struct output_info {
 	const char *scene_path;
@@ -22,13 +30,16 @@ typedef struct output_info {
 	double render_seconds;
 	const char *tile; /* "I/N" or NULL */
 	unsigned aovs;    /* OUTPUT_AOV_* */
+	double noise_threshold; /* adaptive sampling's; 0: off */
 	bool interrupted;
 } output_info;
 
-/* Writes f as an EXR (atomically). Channels: R G B A, then albedo.R/G/B, N.X/Y/Z, Z and
- * variance.R/G/B as asked. Attributes: software, circe.scene, circe.scene_hash, circe.seed,
- * circe.spp (samples completed in every pixel), circe.sss, circe.clock, circe.render_time_s,
- * circe.dropped_samples, circe.interrupted and circe.tile when set. */
+/* Writes f as an EXR (atomically). Channels: R G B A, then albedo.R/G/B, N.X/Y/Z, Z,
+ * variance.R/G/B, error (film_pixel_error) and samples (each pixel's count) as asked. Attributes:
+ * software, circe.scene, circe.scene_hash, circe.seed, circe.spp (samples completed in every pixel
+ * adaptive sampling did not stop), circe.sss, circe.clock, circe.render_time_s,
+ * circe.dropped_samples, circe.interrupted, circe.tile when set and circe.noise_threshold when
+ * adaptive. */
 bool output_write_exr(const char *path, const film *f, const output_info *info, diag *d);
 /* Writes the beauty of f as an 8-bit sRGB PNG (atomically), exposure in stops. */
 bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d);

@@ -4,6 +4,7 @@
 #include "render/scheduler.h"
 
 #include "base/mem.h"
+#include "render/adaptive.h"
 
 #include <assert.h>
 #include <pthread.h>
@@ -52,49 +53,59 @@ static bool interrupted(const render_job *job)
 	return job->interrupt && atomic_load(job->interrupt) != 0;
 }
 
-/* Renders one tile's pixels for samples [s0, s1) into film->work; false when interrupted. */
+/* Renders samples [s0, s1) of one pixel (x, y) from px into px. */
+static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[4])
+{
+	const render_job *job = p->job;
+	for (uint32_t s = p->s0; s < p->s1; s++) {
+		rng g = rng_for_sample(job->seed, (uint32_t)x, (uint32_t)y, s);
+		vec2 pu = v2(rng_float(&g), rng_float(&g));
+		vec2 lu = v2(rng_float(&g), rng_float(&g));
+		render_ray ray;
+		render_sample smp = {0}; /* no ray (outside a fisheye's circle): black */
+		if (cam_sample(job->camera, x, y, pu, lu, &ray))
+			smp = render_path(job->scene, &job->settings, ray, &g);
+		counts[1] += smp.sss_searches;
+		counts[2] += smp.sss_nohit;
+		counts[3] += smp.sss_overflow;
+		if (!film_pixel_add(px, &smp)) {
+			render_sample zero = {0};
+			film_pixel_add(px, &zero);
+			counts[0]++;
+		}
+	}
+}
+
+/* Renders one tile's pixels for samples [s0, s1) into film->work (the pixels adaptive sampling
+ * stopped are copied as they are); false when interrupted. */
 static bool render_tile(pool *p, int tile)
 {
 	assert(tile >= 0 && tile < p->tile_count);
-	const render_job *job = p->job;
 	film *f = p->film;
 	int tx = tile % p->tiles_x, ty = tile / p->tiles_x;
-	int xa = f->x0 + tx * p->tile, ya = f->y0 + ty * p->tile;
-	int xb = xa + p->tile < f->x1 ? xa + p->tile : f->x1,
-	    yb = ya + p->tile < f->y1 ? ya + p->tile : f->y1;
-	int rw = film_region_width(f);
-	uint64_t dropped = 0, searches = 0, nohit = 0, overflow = 0;
+	int xa = f->ax0 + tx * p->tile, ya = f->ay0 + ty * p->tile;
+	int xb = xa + p->tile < f->ax1 ? xa + p->tile : f->ax1,
+	    yb = ya + p->tile < f->ay1 ? ya + p->tile : f->ay1;
+	uint64_t counts[4] = {0, 0, 0, 0}; /* dropped, SSS searches, no-hits, overflows */
 	for (int y = ya; y < yb; y++) {
-		if (interrupted(job))
+		if (interrupted(p->job))
 			return false;
+		uint64_t taken = 0;
 		for (int x = xa; x < xb; x++) {
-			size_t i = (size_t)(y - f->y0) * (size_t)rw + (size_t)(x - f->x0);
-			film_pixel px = f->acc[i];
-			for (uint32_t s = p->s0; s < p->s1; s++) {
-				rng g = rng_for_sample(job->seed, (uint32_t)x, (uint32_t)y, s);
-				vec2 pu = v2(rng_float(&g), rng_float(&g));
-				vec2 lu = v2(rng_float(&g), rng_float(&g));
-				render_ray ray;
-				render_sample smp = {0}; /* no ray (outside a fisheye's circle): black */
-				if (cam_sample(job->camera, x, y, pu, lu, &ray))
-					smp = render_path(job->scene, &job->settings, ray, &g);
-				searches += smp.sss_searches;
-				nohit += smp.sss_nohit;
-				overflow += smp.sss_overflow;
-				if (!film_pixel_add(&px, &smp)) {
-					render_sample zero = {0};
-					film_pixel_add(&px, &zero);
-					dropped++;
-				}
+			film_pixel px = *film_at(f->acc, f, x, y);
+			if (!px.stopped) {
+				assert(px.n == p->s0);
+				render_pixel(p, x, y, &px, counts);
+				taken += p->s1 - p->s0;
 			}
-			f->work[i] = px;
+			*film_at(f->work, f, x, y) = px;
 		}
-		atomic_fetch_add(&p->samples_done, (uint64_t)(xb - xa) * (p->s1 - p->s0));
+		atomic_fetch_add(&p->samples_done, taken);
 	}
-	atomic_fetch_add(&p->dropped, dropped);
-	atomic_fetch_add(&p->sss_searches, searches);
-	atomic_fetch_add(&p->sss_nohit, nohit);
-	atomic_fetch_add(&p->sss_overflow, overflow);
+	atomic_fetch_add(&p->dropped, counts[0]);
+	atomic_fetch_add(&p->sss_searches, counts[1]);
+	atomic_fetch_add(&p->sss_nohit, counts[2]);
+	atomic_fetch_add(&p->sss_overflow, counts[3]);
 	return true;
 }
 
@@ -133,8 +144,9 @@ static void report_progress(const render_job *job, double fraction, double rate,
 	job->progress(job->progress_user, &p);
 }
 
-/* Samples per pixel of the next pass: double the last, capped by the target, by RENDER_PASS_MAX_S
- * and by the time budget left at the measured rate (pixel samples per second). */
+/* Samples per pixel of the next pass: double the last, capped by the target, by RENDER_PASS_MAX_S,
+ * by the time budget left at the measured rate (pixel samples per second) and, with adaptive
+ * sampling, by the next check (a pass ends on each, whatever the timing). */
 static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t last, double rate_px,
 			       double left_s)
 {
@@ -148,6 +160,10 @@ static uint32_t next_pass_size(const render_job *job, uint32_t done, uint32_t la
 			want = fit < 1.0 ? 1u : (uint64_t)fit;
 	}
 	uint64_t cap = job->spp ? job->spp : RENDER_MAX_SPP;
+	if (job->adaptive.threshold > 0.0) {
+		uint32_t check = adaptive_next_check(&job->adaptive, done);
+		cap = check < cap ? check : cap;
+	}
 	if (done + want > cap)
 		want = cap - done;
 	return (uint32_t)want;
@@ -180,7 +196,7 @@ static void pool_stop(pool *p, pthread_t *tid, int started)
 }
 
 /* Waits (holding p->mu) for the workers to finish the pass, reporting progress every
- * RENDER_PROGRESS_PERIOD_S. npix: the region's pixel count; t0: when the render started. */
+ * RENDER_PROGRESS_PERIOD_S. npix: the sampled rectangle's pixel count; t0: when the render started. */
 static void wait_pass(pool *p, double t0, double npix)
 {
 	const render_job *job = p->job;
@@ -194,6 +210,7 @@ static void wait_pass(pool *p, double t0, double npix)
 		pthread_cond_timedwait(&p->done, &p->mu, &ts);
 		if (job->progress && p->active > 0) {
 			double el = now_s() - t0;
+			/* Counts stopped pixels as sampled: with adaptive sampling, an upper bound. */
 			double done_px = (double)f->spp * npix + (double)atomic_load(&p->samples_done);
 			double frac = job->spp ? done_px / ((double)job->spp * npix) : 0.0;
 			if (job->time_budget_s > 0.0 && el / job->time_budget_s > frac)
@@ -227,15 +244,21 @@ static bool run_pass(pool *p, int workers, uint32_t n, double t0, double npix)
 	return atomic_load(&p->tiles_done) == p->tile_count;
 }
 
-/* Commits the completed pass to the film and adds its counts to the render's. */
-static void commit_pass(pool *p, render_stats *total)
+/* Commits the completed pass to the film and adds its counts to the render's; runs adaptive
+ * sampling's check when the pass ended on one. Returns how many pixels still take samples. */
+static size_t commit_pass(pool *p, render_stats *total, size_t active)
 {
+	const adaptive_params *ad = &p->job->adaptive;
 	film_commit(p->film, p->s1);
+	total->samples += atomic_load(&p->samples_done);
 	p->film->dropped += atomic_load(&p->dropped);
 	total->sss_searches += atomic_load(&p->sss_searches);
 	total->sss_nohit += atomic_load(&p->sss_nohit);
 	total->sss_overflow += atomic_load(&p->sss_overflow);
 	total->passes++;
+	if (ad->threshold > 0.0 && adaptive_is_check(ad, p->film->spp))
+		active = adaptive_check(p->film, ad, p->film->spp);
+	return active;
 }
 
 /* Whether the render has reached its target: the samples, the time budget or RENDER_MAX_SPP. */
@@ -249,13 +272,14 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 {
 	if (!job->scene || !job->camera || (job->spp == 0 && !(job->time_budget_s > 0.0)) ||
 	    job->camera->width != f->width || job->camera->height != f->height ||
-	    job->settings.max_trace_level < 1)
+	    job->settings.max_trace_level < 1 || job->adaptive.threshold < 0.0 ||
+	    (job->adaptive.threshold > 0.0 && !adaptive_film_ok(f)))
 		return RENDER_ERROR;
 	double t0 = now_s();
 	int threads = job->threads > 0 ? job->threads : render_default_threads();
 	pool p = {.job = job, .film = f, .tile = job->tile_size > 0 ? job->tile_size : RENDER_DEFAULT_TILE};
-	p.tiles_x = (film_region_width(f) + p.tile - 1) / p.tile;
-	p.tiles_y = (film_region_height(f) + p.tile - 1) / p.tile;
+	p.tiles_x = (film_sampled_width(f) + p.tile - 1) / p.tile;
+	p.tiles_y = (f->ay1 - f->ay0 + p.tile - 1) / p.tile;
 	p.tile_count = p.tiles_x * p.tiles_y;
 	pthread_t *tid = mem_alloc((size_t)threads, sizeof *tid);
 	if (!tid)
@@ -263,14 +287,20 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	int started = pool_start(&p, tid, threads);
 
 	render_status status = started > 0 ? RENDER_DONE : RENDER_ERROR;
-	double npix = (double)film_region_width(f) * film_region_height(f);
+	double npix = (double)film_sampled_width(f) * (f->ay1 - f->ay0);
 	double rate_px = 0.0, last_checkpoint = t0;
 	uint32_t last = 0;
 	render_stats total = {0};
+	size_t active = 1; /* pixels still sampled; a continued film's stopped ones are skipped */
 	while (status == RENDER_DONE) {
 		double elapsed = now_s() - t0;
 		if (target_reached(job, f, elapsed))
 			break;
+		if (active == 0) { /* adaptive sampling stopped every pixel: they are final */
+			if (job->spp)
+				f->spp = job->spp;
+			break;
+		}
 		if (interrupted(job)) {
 			status = RENDER_INTERRUPTED;
 			break;
@@ -281,7 +311,7 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 			status = RENDER_INTERRUPTED;
 			break;
 		}
-		commit_pass(&p, &total);
+		active = commit_pass(&p, &total, active);
 		last = n;
 		double pass_s = now_s() - pass_start;
 		if (pass_s > 0.0)
@@ -298,13 +328,13 @@ render_status render_run(const render_job *job, film *f, render_stats *stats)
 	double seconds = now_s() - t0;
 	if (job->progress)
 		report_progress(job, job->spp ? (double)f->spp / job->spp : 1.0,
-				seconds > 0 ? f->spp * npix / seconds : 0.0, seconds, true);
+				seconds > 0 ? (double)total.samples / seconds : 0.0, seconds, true);
 	if (stats) {
 		*stats = total;
 		stats->spp = f->spp;
 		stats->dropped = f->dropped;
 		stats->seconds = seconds;
-		stats->samples_per_s = seconds > 0.0 ? (double)f->spp * npix / seconds : 0.0;
+		stats->samples_per_s = seconds > 0.0 ? (double)total.samples / seconds : 0.0;
 		stats->threads = started;
 	}
 	return status;

@@ -7,6 +7,11 @@
  * summed one by one in sample order from rng_for_sample(seed, x, y, s), the image is
  * bit-identical for any thread count, tile size, region and pass schedule.
  *
+ * Adaptive sampling (job.adaptive, adaptive.h): passes also end on each of its checks, which run
+ * between passes on the committed film; a pixel it stops keeps its samples and takes no more, and
+ * when it has stopped every pixel the render ends (the film's spp set to the target, the pixels
+ * final). Its decisions depend on sample counts and the pixels' own samples only, so the image is
+ * bit-identical for any thread count, tiling, region and pass schedule here too.
  * Stopping: after the pass that reaches `spp`, or after the first pass that ends at or past
  * `time_budget_s` (the budget is a target: the last pass is sized to end near it), or on interrupt.
  * Interrupt: when *interrupt becomes non-zero the workers start nothing new (they leave even the
@@ -24,6 +29,7 @@
 #ifndef CIRCE_RENDER_SCHEDULER_H
 #define CIRCE_RENDER_SCHEDULER_H
 
+#include "render/adaptive.h"
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/integrator.h"
@@ -58,12 +64,14 @@ typedef struct render_job {
 	void (*progress)(void *user, const render_progress *p); /* may be NULL */
 	void *progress_user;
 	_Atomic int *interrupt; /* may be NULL */
+	adaptive_params adaptive; /* threshold 0: off; else the film needs an apron (adaptive.h) */
 } render_job;
 
 typedef enum render_status { RENDER_DONE, RENDER_INTERRUPTED, RENDER_ERROR } render_status;
 
 typedef struct render_stats {
 	uint32_t spp;	      /* samples per pixel completed (= film->spp) */
+	uint64_t samples;     /* pixel samples taken by the committed passes, the apron's included */
 	uint64_t dropped;     /* non-finite samples dropped (= film->dropped); should be 0 */
 	uint64_t sss_searches; /* SSS entry searches (circles, probes, walks) of the committed passes */
 	uint64_t sss_nohit;    /* of them, those that found no entry (their paths end: the no-hit rate) */

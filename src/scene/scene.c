@@ -504,6 +504,8 @@ void scene_dump(const scene *s, FILE *o)
 {
 	fprintf(o, "global mm_per_unit %g max_trace_level %d assumed_gamma %g\n", s->global.mm_per_unit,
 		s->global.max_trace_level, s->global.assumed_gamma);
+	if (s->global.noise_threshold > 0) /* only when set: older dumps stay as they were */
+		fprintf(o, "global noise_threshold %g\n", s->global.noise_threshold);
 	if (s->has_camera) {
 		const scene_camera *c = &s->camera;
 		fprintf(o, "camera");

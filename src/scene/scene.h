@@ -186,6 +186,7 @@ typedef struct scene_global {
 	double mm_per_unit; /* default 10 */
 	int max_trace_level; /* default 5 */
 	double assumed_gamma; /* default 1 */
+	double noise_threshold; /* adaptive sampling's (render --noise-threshold); 0: off, the default */
 } scene_global;
 
 typedef struct scene_sky_sphere {

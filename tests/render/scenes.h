@@ -134,6 +134,24 @@ static inline void ts_init(ts_scene *s)
 			       .lights = &s->lights};
 }
 
+/* The scheduler's and adaptive sampling's test scene: a floor (a POV-Ray finish) and two spheres
+ * (a coated one, a diffuse one) under a small sphere light and a constant background. */
+static inline void ts_floor_and_spheres(ts_scene *s)
+{
+	ts_init(s);
+	s->pl[s->npl++] = (ts_plane){v3(0, 1, 0), 0.0f, 0};
+	s->sph[s->nsph++] = (ts_sphere){v3(-0.6f, 0.5f, 1.0f), 0.5f, 1};
+	s->sph[s->nsph++] = (ts_sphere){v3(0.7f, 0.4f, 0.6f), 0.4f, 2};
+	s->mat[0] = bsdf_pov_finish(v3(0.7f, 0.7f, 0.7f), 0.7f, 0.3f, 0.05f);
+	s->mat[1] = bsdf_coat(v3(0.9f, 0.5f, 0.4f), 1.4f, 0.35f);
+	s->mat[2] = bsdf_diffuse(v3(0.2f, 0.5f, 0.8f));
+	light sl = light_sphere(v3(0.5f, 2.0f, 0.0f), 0.3f, v3(4, 4, 4));
+	light bg = light_background(v3(0.2f, 0.25f, 0.3f));
+	light_set_add(&s->lights, &sl);
+	light_set_add(&s->lights, &bg);
+	light_set_finish(&s->lights, 5.0f);
+}
+
 /* Adds the 12 triangles of the axis-aligned box [lo, hi], normals outwards. */
 static inline void ts_add_box(ts_scene *s, vec3 lo, vec3 hi, int material, int light)
 {

@@ -22,18 +22,7 @@ static cam camera;
 
 static void build_scene(void)
 {
-	ts_init(&scene);
-	scene.pl[scene.npl++] = (ts_plane){v3(0, 1, 0), 0.0f, 0};
-	scene.sph[scene.nsph++] = (ts_sphere){v3(-0.6f, 0.5f, 1.0f), 0.5f, 1};
-	scene.sph[scene.nsph++] = (ts_sphere){v3(0.7f, 0.4f, 0.6f), 0.4f, 2};
-	scene.mat[0] = bsdf_pov_finish(v3(0.7f, 0.7f, 0.7f), 0.7f, 0.3f, 0.05f);
-	scene.mat[1] = bsdf_coat(v3(0.9f, 0.5f, 0.4f), 1.4f, 0.35f);
-	scene.mat[2] = bsdf_diffuse(v3(0.2f, 0.5f, 0.8f));
-	light sl = light_sphere(v3(0.5f, 2.0f, 0.0f), 0.3f, v3(4, 4, 4));
-	light bg = light_background(v3(0.2f, 0.25f, 0.3f));
-	light_set_add(&scene.lights, &sl);
-	light_set_add(&scene.lights, &bg);
-	light_set_finish(&scene.lights, 5.0f);
+	ts_floor_and_spheres(&scene);
 	cam_params cp = cam_params_default();
 	cp.location = d3(0, 1, -2.5);
 	cp.look_at = d3(0, 0.4, 0.8);

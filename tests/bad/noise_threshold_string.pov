@@ -1,0 +1,2 @@
+// noise_threshold takes a number.
+global_settings { noise_threshold "low" }
