@@ -100,3 +100,7 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 light_source { Lamp translate x }
 #default { texture { pigment { Paint } } finish { Gloss } }
 sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }
+// rule: finish_item, reflection_item
+sphere { 0, 1 finish { ambient 0.1 diffuse albedo 0.6 phong 0.5 phong_size 20 metallic reflection { 0.1, 0.5 falloff 2 } } }
+// rule: fog, fog_item
+fog { fog_type 2 distance 30 color rgb 0.5 fog_offset 1 fog_alt 2 }
