@@ -51,11 +51,14 @@ static void warn_once(parser *p, unsigned bit, diag_loc loc, const char *msg)
 }
 
 /* True when an optional float follows (metallic [F], fresnel [F]): a number, a sign, a
- * parenthesis or a name declared as a float; not the next item's keyword nor '}'. */
+ * parenthesis, a boolean word (fresnel on) or a name declared as a float; not the next item's
+ * keyword nor '}'. */
 static bool float_follows(parser *p)
 {
 	const lang_token *t = lang_peek(p);
-	if (t->kind == LTK_NUMBER || t->kind == LTK_LPAREN || t->kind == LTK_MINUS || t->kind == LTK_PLUS)
+	if (t->kind == LTK_NUMBER || t->kind == LTK_LPAREN || t->kind == LTK_MINUS || t->kind == LTK_PLUS ||
+	    t->kind == LTK_KW_ON || t->kind == LTK_KW_OFF || t->kind == LTK_KW_TRUE || t->kind == LTK_KW_FALSE ||
+	    t->kind == LTK_KW_YES || t->kind == LTK_KW_NO)
 		return true;
 	if (t->kind != LTK_IDENT)
 		return false;
