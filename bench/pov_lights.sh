@@ -2,12 +2,11 @@
 # pov_lights.sh [CIRCE] [OUTDIR]: tests/scenes/pov_lights.pov (POV-Ray's lights without circe's
 # intensity) rendered by circe and by POV-Ray 3.7 at 160x120, side by side. Prints each image's
 # mean linear value (POV-Ray's sRGB PNG and circe's sRGB preview both linearised by ImageMagick),
-# their ratio, the ratio times pi (POV-Ray's `diffuse` has no 1 / pi: its diffuse surface under
-# irradiance E shows pigment * diffuse * E, circe's albedo / pi * E, until issue 18's finish
-# mapping), and the normalised cross-correlation of the two luminance images. The scene sets
-# ambient_light 0: POV-Ray's ambient has no counterpart in circe yet. Writes OUTDIR/side.png
-# (circe times pi on the left, POV-Ray on the right). Skips (exit 77) without povray or
-# ImageMagick.
+# their ratio (1 by design: circe scales a POV-Ray light by pi, src/build/build_light.c, so that
+# its Lambert albedo / pi shows POV-Ray's pigment * diffuse * C), and the normalised
+# cross-correlation of the two luminance images. The scene sets ambient_light 0 (POV-Ray's
+# implicit ambient 0.1 is what circe's global illumination replaces). Writes OUTDIR/side.png
+# (circe on the left, POV-Ray on the right). Skips (exit 77) without povray or ImageMagick.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 circe=${1:-$here/../build/circe}
@@ -24,7 +23,6 @@ mean() { convert "$1" -colorspace RGB -format '%[fx:mean]' info:; }
 c=$(mean "$out/circe.png") p=$(mean "$out/povray.png")
 for f in circe povray; do convert "$out/$f.png" -colorspace RGB -colorspace Gray "$out/$f.gray.png"; done
 ncc=$(compare -metric NCC "$out/circe.gray.png" "$out/povray.gray.png" null: 2>&1)
-convert "$out/circe.png" -colorspace RGB -evaluate multiply 3.14159265 -colorspace sRGB "$out/circe_pi.png"
-convert "$out/circe_pi.png" "$out/povray.png" +append "$out/side.png"
-awk -v c="$c" -v p="$p" -v r="$ncc" 'BEGIN { printf "mean linear: circe %.4f  povray %.4f  ratio %.4f  ratio*pi %.4f  ncc %.4f\n", c, p, c / p, 3.14159265 * c / p, r }'
+convert "$out/circe.png" "$out/povray.png" +append "$out/side.png"
+awk -v c="$c" -v p="$p" -v r="$ncc" 'BEGIN { printf "mean linear: circe %.4f  povray %.4f  ratio %.4f  ncc %.4f\n", c, p, c / p, r }'
 echo "side by side: $out/side.png"

@@ -44,10 +44,17 @@ static void set_distance_law(light *l, const scene_light *sl)
 	l->fade_power = (float)sl->fade_power;
 }
 
+/* POV-Ray's brightness: its diffuse has no 1 / pi (a surface of pigment P under a light of colour
+ * C at normal incidence shows P * diffuse * C), circe's Lambert is albedo / pi; so a POV-Ray light
+ * (no circe `intensity`) delivers pi * C to make the two images alike. A light with `intensity`
+ * keeps its physical meaning. (A sphere light is circe's own emitter: never scaled.) */
+#define BUILD_POV_LIGHT_SCALE 3.14159265358979323846f
+
 /* The scene's light_source as circe's light. */
 static light scene_light_to_light(const scene_light *sl)
 {
-	vec3 c = v3_scale(sl->color, (float)sl->intensity);
+	float k = sl->has_intensity || sl->kind == SCENE_LIGHT_SPHERE ? 1.0f : BUILD_POV_LIGHT_SCALE;
+	vec3 c = v3_scale(sl->color, (float)sl->intensity * k);
 	vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
 	light l;
 	switch (sl->kind) {
@@ -74,8 +81,28 @@ static light scene_light_to_light(const scene_light *sl)
 	return l;
 }
 
+/* The scene's fogs as the integrator's (fog.h). */
+static void build_fogs(world *w, const scene *sc, diag *d)
+{
+	w->n_fogs = 0;
+	for (const scene_fog *f = sc->fogs; f; f = f->next) {
+		if (w->n_fogs == RENDER_MAX_FOGS) {
+			diag_warning(d, f->loc, "more than %d fogs: this one and those before it are not rendered",
+				     RENDER_MAX_FOGS);
+			break;
+		}
+		w->fogs[w->n_fogs++] = (render_fog){.ground = f->type == SCENE_FOG_GROUND,
+						    .distance = (float)f->distance,
+						    .color = f->color,
+						    .offset = (float)f->offset,
+						    .alt = (float)f->alt,
+						    .up = d3v(f->up)};
+	}
+}
+
 bool build_lights(world *w, const scene *sc, diag *d)
 {
+	build_fogs(w, sc, d);
 	light_set_init(&w->lights);
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
 		const scene_light *sl = scene_light_at(sc, i);

@@ -3,6 +3,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
+#include "render/bsdf_pov.h"
 
 #include <string.h>
 
@@ -78,6 +79,36 @@ static void warn_reflectance_image(const image *img, diag_loc loc, const char *p
 			     clamped, path);
 }
 
+/* The Fresnel reflection's ior when the texture has no interior: POV-Ray refuses the scene
+ * ("fresnel reflection used with no interior"); circe warns and takes glass's. */
+#define BUILD_FRESNEL_DEFAULT_IOR 1.5f
+
+/* A texture's POV-Ray finish as BSDF_POV's spec (the mapping: bsdf_pov.h). POV-Ray's implicit
+ * ambient 0.1 glows not: circe's global illumination is what it stood for; an explicit one does. */
+static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_finish_spec *out, diag *d)
+{
+	const scene_finish *f = &sm->finish;
+	*out = (bsdf_pov_finish_spec){.diffuse = sm->diffuse,
+				      .specular = sm->specular,
+				      .roughness = sm->roughness,
+				      .phong = f->phong,
+				      .phong_size = f->phong_size,
+				      .metallic = f->metallic,
+				      .refl_min = f->refl_min,
+				      .refl_max = f->refl_max,
+				      .refl_falloff = f->refl_falloff,
+				      .refl_metallic = f->refl_metallic,
+				      .glow = f->emission};
+	if (f->has_ambient)
+		out->glow = v3_add(out->glow, v3_mul(f->ambient, sc->global.ambient_light));
+	if (f->refl_fresnel) {
+		out->refl_ior = sm->ior > 0.0f ? sm->ior : BUILD_FRESNEL_DEFAULT_IOR;
+		if (!(sm->ior > 0.0f))
+			diag_warning(d, sm->loc, "a fresnel reflection without an interior ior: circe takes ior %g",
+				     (double)BUILD_FRESNEL_DEFAULT_IOR);
+	}
+}
+
 /* BSDF parameters and textures of a scene material. */
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt,
 			   const scene_material *sm, diag *d)
@@ -88,7 +119,9 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		w->bsdfs[k] = bsdf_diffuse(sm->color);
 		break;
 	case MAT_TEXTURE:
-		w->bsdfs[k] = bsdf_pov_finish(sm->color, sm->diffuse, sm->specular, sm->roughness);
+		w->bsdfs[k] = bsdf_pov(&(bsdf_pov_finish_spec){0}, v3s(0.0f)); /* filled below */
+		pov_finish_spec(sc, sm, &w->bsdfs[k].pov, d);
+		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 		break;
 	case MAT_EMISSION:
 		w->bsdfs[k] = bsdf_diffuse(v3s(0.0f));

@@ -148,6 +148,7 @@ typedef struct parser {
 	/* statements' state (stmt.c) */
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
+	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
 	vecbuf datafiles; /* lang_datafile (datafile.c): every data file opened, open or not */
 	lang_token held; /* with has_held: the token after a #declare without ';', read again next */
@@ -271,5 +272,19 @@ bool lang_statement(parser *p);
 bool lang_declare_block(parser *p, value *out, bool *handled);
 /* default = "#default" "{" { texture | pigment | finish } "}"   (after the directive's word) */
 bool lang_default(parser *p);
+
+/* ---- finish items and fog (finish.c) ---- */
+/* What a finish block remembers until it closes: the albedo forms of its highlights, which
+ * POV-Ray applies with the exponents the block ends with. */
+typedef struct lang_finish_state {
+	bool phong_albedo, specular_albedo;
+} lang_finish_state;
+/* One item of a finish block into m (its diffuse, specular, roughness, ior and m->finish);
+ * *matched false when the lookahead is no finish item. */
+bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool *matched);
+/* At the finish block's '}': POV-Ray's albedo adjustments and fresnel's default minimum. */
+void lang_finish_end(scene_material *m, const lang_finish_state *st);
+/* fog = "fog" "{" ... "}" (the lookahead spells fog): appended to the scene's fogs. */
+bool lang_fog(parser *p);
 
 #endif

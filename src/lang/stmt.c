@@ -327,6 +327,7 @@ static scene_material *new_part(parser *p, diag_loc loc)
 	m->kind = MAT_TEXTURE;
 	m->diffuse = 0.6f; /* POV-Ray's finish defaults, as new_material */
 	m->roughness = 0.05f;
+	scene_finish_defaults(&m->finish);
 	return m;
 }
 
@@ -339,6 +340,7 @@ static void copy_pigment(scene_material *to, const scene_material *from)
 static void copy_finish(scene_material *to, const scene_material *from)
 {
 	to->diffuse = from->diffuse, to->specular = from->specular, to->roughness = from->roughness;
+	to->finish = from->finish;
 }
 
 /* A new texture record: POV-Ray's default texture, or the one of the last #default (POV-Ray 3.7
@@ -413,7 +415,7 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 	}
 }
 
-/* finish = "finish" "{" [ identifier ] { "diffuse" float | "specular" float | "roughness" float } "}" */
+/* finish = "finish" "{" [ identifier ] { finish_item } "}"   (finish_item: finish.c) */
 static bool finish(parser *p, scene_material *m)
 {
 	diag_loc open;
@@ -424,35 +426,16 @@ static bool finish(parser *p, scene_material *m)
 		TRY(v = declared(p, VAL_FINISH, "a finish"));
 		copy_finish(m, v->mat);
 	}
+	lang_finish_state st = {0};
 	for (;;) {
-		lang_token *t = lang_peek(p);
-		diag_loc loc = t->loc;
-		double x;
-		switch (t->kind) {
-		case LTK_RBRACE:
-			lang_advance(p);
+		if (lang_accept(p, LTK_RBRACE)) {
+			lang_finish_end(m, &st);
 			return true;
-		case LTK_KW_DIFFUSE:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'diffuse'", &x) && in_range(p, loc, "finish diffuse", x, 0, 1));
-			m->diffuse = (float)x;
-			break;
-		case LTK_KW_SPECULAR:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'specular'", &x) && in_range(p, loc, "finish specular", x, 0, 1));
-			m->specular = (float)x;
-			break;
-		case LTK_KW_ROUGHNESS:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'roughness'", &x) && in_range(p, loc, "finish roughness", x, 0, 1));
-			m->roughness = (float)x;
-			break;
-		case LTK_KW_EMISSION:
-			return lang_error(p, loc, "'emission' in a finish is not supported by circe (a glowing object is "
-						  "material { emission C })");
-		default:
-			return bad_item(p, open, "finish", "diffuse, specular or roughness");
 		}
+		bool matched;
+		TRY(lang_finish_item(p, m, &st, &matched));
+		if (!matched)
+			return bad_item(p, open, "finish", "a finish item (diffuse, ambient, phong, reflection, ...)");
 	}
 }
 
@@ -1712,7 +1695,6 @@ static const struct ignored_setting {
 } ignored_settings[] = {
 	{"radiosity", IGNORED_BLOCK, "circe always computes global illumination"},
 	{"photons", IGNORED_BLOCK, "circe always computes global illumination, caustics included"},
-	{"ambient_light", IGNORED_COLOR, "circe has no ambient term: it always computes global illumination"},
 	{"noise_generator", IGNORED_FLOAT, "circe has no noise patterns"},
 	{"number_of_waves", IGNORED_FLOAT, "circe has no wave patterns"},
 	{"charset", IGNORED_CHARSET, "circe reads strings as bytes"},
@@ -1786,9 +1768,10 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 }
 
 /* global_settings = "global_settings" "{" { "mm_per_unit" float | "max_trace_level" integer
- *                   | "assumed_gamma" float | "noise_threshold" float | ignored_setting } "}"
+ *                   | "assumed_gamma" float | "noise_threshold" float | "ambient_light" color
+ *                   | ignored_setting } "}"
  * ignored_setting = ( "radiosity" | "photons" ) "{" balanced-tokens "}"
- *                 | ( "ambient_light" | "irid_wavelength" ) color
+ *                 | "irid_wavelength" color
  *                 | ( "adc_bailout" | "noise_generator" | "number_of_waves" | "max_intersections" ) float
  *                 | "charset" ( "ascii" | "utf8" | "sys" ) | "hf_gray_16" [ float ] */
 static bool global_settings(parser *p)
@@ -1826,6 +1809,12 @@ static bool global_settings(parser *p)
 			g->noise_threshold = x;
 			break;
 		default: {
+			if (t.kind == LTK_UNSUPPORTED && t.len == 13 && !memcmp(t.text, "ambient_light", 13)) {
+				lang_advance(p); /* scales every explicit finish ambient (finish.c) */
+				TRY(physical_color(p, "after 'ambient_light'", "ambient_light", SCENE_COLOR_RADIANCE,
+						   &g->ambient_light));
+				break;
+			}
 			const struct ignored_setting *s = ignored_setting(&t);
 			if (!s)
 				return bad_item(p, open, "global_settings",
@@ -2516,6 +2505,8 @@ static void give_default(parser *p, size_t start)
 bool lang_statement(parser *p)
 {
 	lang_token *t = lang_peek(p);
+	if (t->kind == LTK_UNSUPPORTED && t->len == 3 && !memcmp(t->text, "fog", 3))
+		return lang_fog(p);
 	switch (t->kind) {
 	case LTK_KW_GLOBAL_SETTINGS: return global_settings(p);
 	case LTK_KW_CAMERA: return camera(p);

@@ -3,6 +3,8 @@
  * mixture, so eval/pdf/sample agree for MIS. */
 #include "render/bsdf.h"
 
+#include "render/bsdf_pov.h"
+
 #include "render/sampling.h"
 #include "sss/profile.h"
 
@@ -114,6 +116,8 @@ vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	if (wo.z <= 0.0f || wi.z <= 0.0f)
 		return v3s(0.0f);
+	if (b->kind == BSDF_POV)
+		return bsdf_pov_eval(b, wo, wi);
 	vec3 h;
 	switch (b->kind) {
 	case BSDF_DIFFUSE:
@@ -130,6 +134,8 @@ vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi)
 	}
 	case BSDF_SSS_ENTRY:
 		return v3_scale(b->diffuse, (1.0f - bsdf_fresnel_dielectric(wi.z, b->ior)) * RENDER_INV_PI);
+	case BSDF_POV: /* bsdf_pov_eval, above */
+		break;
 	}
 	return v3s(0.0f);
 }
@@ -138,6 +144,8 @@ float bsdf_pdf(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	if (wo.z <= 0.0f || wi.z <= 0.0f)
 		return 0.0f;
+	if (b->kind == BSDF_POV)
+		return bsdf_pov_pdf(b, wo, wi);
 	float ps = spec_prob(b, wo);
 	float pd = render_cosine_hemisphere_pdf(wi.z);
 	return ps > 0.0f ? ps * ggx_pdf(wo, wi, b->alpha) + (1.0f - ps) * pd : pd;
@@ -147,7 +155,10 @@ bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, 
 {
 	if (wo.z <= 0.0f)
 		return false;
-	if (u_lobe < spec_prob(b, wo)) {
+	if (b->kind == BSDF_POV) {
+		if (!bsdf_pov_sample(b, wo, u_lobe, u, wi))
+			return false;
+	} else if (u_lobe < spec_prob(b, wo)) {
 		vec3 h = bsdf_ggx_sample_vndf(wo, b->alpha, u);
 		*wi = v3_sub(v3_scale(h, 2.0f * v3_dot(wo, h)), wo);
 	} else {
@@ -163,5 +174,19 @@ bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, 
 vec3 bsdf_albedo(const bsdf_params *b)
 {
 	vec3 a = b->kind == BSDF_PLASTIC ? v3_add(b->diffuse, b->specular) : b->diffuse;
+	if (b->kind == BSDF_POV) /* the diffuse reflectance; the highlights are no albedo */
+		a = v3_scale(b->pigment, b->pov.diffuse * b->pov_scale);
 	return v3_min(a, v3s(1.0f));
+}
+
+/* GGX reflection without Fresnel and its visible-normal density, for the lobes of bsdf_pov.c. */
+float bsdf_ggx_reflection(vec3 wo, vec3 wi, float alpha)
+{
+	vec3 h;
+	return ggx_reflect(wo, wi, alpha, &h);
+}
+
+float bsdf_ggx_pdf(vec3 wo, vec3 wi, float alpha)
+{
+	return ggx_pdf(wo, wi, alpha);
 }

@@ -11,6 +11,8 @@
  *   BSDF_SSS_ENTRY The light entering a subsurface material at its entry point x_i (DESIGN.md's f_t
  *                 at x_i): diffuse * (1 - F(cos_i)) / pi, sampled by the cosine lobe; the integrator
  *                 sets diffuse to 1/c, c the normalisation that makes the lobe integrate to 1.
+ *   BSDF_POV      POV-Ray's finish { diffuse specular phong metallic reflection } as lobes that
+ *                 add (bsdf_pov.h, where they live).
  * GGX uses Smith's height-correlated masking-shadowing (Heitz 2014, eq. 99) and is sampled by its
  * visible normals (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"). */
 #ifndef CIRCE_RENDER_BSDF_H
@@ -20,7 +22,20 @@
 
 #include <stdbool.h>
 
-typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT, BSDF_SSS_ENTRY } bsdf_kind;
+typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT, BSDF_SSS_ENTRY, BSDF_POV } bsdf_kind;
+
+/* BSDF_POV's finish in POV-Ray's own terms (as scene/finish.h holds it), and what glows. */
+typedef struct bsdf_pov_finish_spec {
+	float diffuse;		   /* Kd */
+	float specular, roughness; /* Ks, POV-Ray's roughness (the Blinn exponent is 1 / roughness) */
+	float phong, phong_size;   /* Kp, the Phong exponent */
+	float metallic;		   /* highlights tinted by the pigment */
+	vec3 refl_min, refl_max;
+	float refl_falloff;
+	float refl_ior; /* > 0: Fresnel reflection of this relative ior; 0: the falloff form */
+	float refl_metallic;
+	vec3 glow; /* ambient * ambient_light + emission: emitted radiance per unit pigment */
+} bsdf_pov_finish_spec;
 
 /* A material's reflection parameters at one shading point (textures already applied). */
 typedef struct bsdf_params {
@@ -29,6 +44,10 @@ typedef struct bsdf_params {
 	vec3 specular; /* BSDF_PLASTIC: Ks (as a colour) */
 	float alpha;   /* GGX roughness alpha, clamped to [BSDF_MIN_ALPHA, 1] */
 	float ior;     /* BSDF_COAT: index of refraction of the coat (outside is 1) */
+	vec3 emit;     /* radiance emitted toward every direction (BSDF_POV's ambient and emission) */
+	bsdf_pov_finish_spec pov; /* BSDF_POV: the finish */
+	vec3 pigment;		  /* BSDF_POV: the pigment at the shading point */
+	float pov_scale;	  /* BSDF_POV: <= 1, keeps the lobes' sum at most 1 */
 } bsdf_params;
 
 /* Below this GGX's peak is too sharp for float; such surfaces are treated as this rough. */
@@ -56,5 +75,9 @@ float bsdf_fresnel_dielectric(float cos_i, float eta);
 /* GGX pieces, exposed for tests: the normal distribution D(h) and the visible-normal sample. */
 float bsdf_ggx_d(vec3 h, float alpha);
 vec3 bsdf_ggx_sample_vndf(vec3 wo, float alpha, vec2 u);
+/* GGX reflection without Fresnel, D G2 / (4 cos_o cos_i), and the density of wi under
+ * bsdf_ggx_sample_vndf (both directions above the surface). */
+float bsdf_ggx_reflection(vec3 wo, vec3 wi, float alpha);
+float bsdf_ggx_pdf(vec3 wo, vec3 wi, float alpha);
 
 #endif

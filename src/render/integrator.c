@@ -302,6 +302,7 @@ typedef struct path {
 	float prev_pdf;	     /* of the BSDF sample that left prev_p */
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
+	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
 } path;
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
@@ -444,16 +445,29 @@ static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, 
 	return true;
 }
 
+/* The fogs between the ray's origin and t: what lies beyond is dimmed, the fog's colour added. */
+static inline void through_fog(const render_scene *s, const render_ray *ray, float t, path *pa)
+{
+	vec3 att, add;
+	render_fog_segment(s->fogs, s->fog_count, ray->o, ray->d, t, &att, &add);
+	pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, add));
+	pa->beta = v3_mul(pa->beta, att);
+}
+
 render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
 {
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
-	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f)};
+	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
+		   .fog_view = true};
 	for (int bounce = 0;; bounce++) {
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
-		if (!trace(s, &ray, &hit, &sphere_light)) {
+		bool hit_any = trace(s, &ray, &hit, &sphere_light);
+		if (s->fog_count && pa.fog_view)
+			through_fog(s, &ray, hit_any ? hit.t : INFINITY, &pa);
+		if (!hit_any) {
 			add_escaped(s, set, bounce, ray.d, &pa);
 			break;
 		}
@@ -468,6 +482,8 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		vec3 wo = v3_neg(ray.d);
 		vertex v;
 		make_vertex(s, &hit, wo, &v);
+		/* A POV-Ray finish's ambient and emission: seen by every ray, never sampled as a light. */
+		pa.radiance = v3_add(pa.radiance, v3_mul(pa.beta, v.b.emit));
 		if (bounce == 0)
 			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
@@ -479,6 +495,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		}
 		if (!continue_path(&v, bounce, g, &pa, &ray))
 			break;
+		pa.fog_view = pa.fog_view && pa.prev_pdf >= RENDER_FOG_MIRROR_PDF;
 	}
 	out.radiance = pa.radiance;
 	return out;

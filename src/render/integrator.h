@@ -28,6 +28,7 @@
 #include "base/vec.h"
 #include "render/bsdf.h"
 #include "render/camera.h"
+#include "render/fog.h"
 #include "render/light.h"
 #include "sss/circle.h"
 #include "sss/medium.h"
@@ -101,11 +102,22 @@ typedef struct render_scene {
 	 * and the volume's walk. Needed when a material uses disk or volume. Thread-safe. */
 	bool (*sss_closest)(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
 			    render_hit *hit);
+	/* POV-Ray's fogs (fog.h), applied along camera rays and the mirror-like continuations of
+	 * them (a BSDF sample of density >= RENDER_FOG_MIRROR_PDF: POV-Ray's reflection and
+	 * refraction rays). Not along diffuse or glossy path rays: a fog is no light of the scene
+	 * (escaping, they would see its colour as a sky lighting everything, which POV-Ray without
+	 * diffuse interreflection never shows), nor shadow rays (as POV-Ray's lights without
+	 * media_attenuation). */
+	const render_fog *fogs;
+	size_t fog_count;
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;
 
 #define RENDER_RR_DEPTH		       3
+/* A BSDF sample at least this dense (per steradian) continues a mirror's view: its lobe is
+ * narrower than 1 / 100 sr (GGX alpha < ~0.06), as POV-Ray's reflection rays. */
+#define RENDER_FOG_MIRROR_PDF 100.0f
 #define RENDER_DEFAULT_MAX_TRACE_LEVEL 5 /* POV-Ray's default */
 
 typedef struct render_settings {

@@ -2,6 +2,8 @@
  * circle, sss_closest and shade, and the hit record they fill. */
 #include "render/world.h"
 
+#include "render/bsdf_pov.h"
+
 #include "accel/offset.h"
 #include "render/shading.h"
 
@@ -172,6 +174,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		params->diffuse = v3(c[0], c[1], c[2]);
 		/* A float (EXR) texture may hold any number: a reflectance is in [0, 1] (check warns). */
 		scene_color_clamp(&params->diffuse, SCENE_COLOR_REFLECTANCE);
+		if (params->kind == BSDF_POV) /* the texel is the finish's pigment */
+			bsdf_pov_set_pigment(params, params->diffuse);
 	}
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
@@ -194,5 +198,5 @@ void world_bind(world *w)
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,
-			       .sss_closest = world_sss_closest};
+			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs};
 }

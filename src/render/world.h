@@ -72,6 +72,8 @@ struct world {
 	size_t n_images;
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
 	light_set lights;
+	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */
+	size_t n_fogs;
 	cam camera;
 	vec3 lo, hi;            /* world bounds of the objects */
 	float radius;           /* of the bounding sphere, for the lights */

@@ -32,6 +32,24 @@ const char *scene_color_range_name(scene_color_use use)
 	return use == SCENE_COLOR_REFLECTANCE ? "[0, 1]" : "[0, inf)";
 }
 
+void scene_finish_defaults(scene_finish *f)
+{
+	*f = (scene_finish){.brilliance = 1.0f, .phong_size = 40.0f, .refl_falloff = 1.0f};
+}
+
+static bool v3_eq(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+bool scene_finish_is_default(const scene_finish *f)
+{
+	scene_finish d;
+	scene_finish_defaults(&d);
+	return f->has_ambient == d.has_ambient && v3_eq(f->emission, d.emission) && f->brilliance == d.brilliance &&
+	       f->phong == d.phong && f->phong_size == d.phong_size && f->metallic == d.metallic &&
+	       v3_eq(f->refl_min, d.refl_min) && v3_eq(f->refl_max, d.refl_max) && f->refl_falloff == d.refl_falloff &&
+	       f->refl_fresnel == d.refl_fresnel && f->refl_metallic == d.refl_metallic &&
+	       f->conserve_energy == d.conserve_energy;
+}
+
 void scene_sss_defaults(scene_material *m)
 {
 	scene_sss *s = &m->sss;

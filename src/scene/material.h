@@ -7,6 +7,7 @@
 
 #include "base/diag.h"
 #include "base/vec.h"
+#include "scene/finish.h"
 #include "sss/medium.h"
 
 #include <stdbool.h>
@@ -44,6 +45,7 @@ typedef struct scene_material {
 	vec3 color; /* diffuse / texture albedo */
 	const char *image; /* albedo texture path (resolved against the naming file's folder), or NULL */
 	float diffuse, specular, roughness; /* texture finish; diffuse material: 1, 0, 1 */
+	scene_finish finish; /* the rest of a texture's POV-Ray finish (scene/finish.h) */
 	float ior; /* texture interior { ior }; 0 when none */
 	vec3 emission; /* any kind may emit */
 	scene_sss sss; /* MAT_SKIN, MAT_WAX, MAT_MARBLE */

@@ -17,6 +17,7 @@ scene *scene_new(void)
 	s->global.mm_per_unit = 10.0;
 	s->global.max_trace_level = 5;
 	s->global.assumed_gamma = 1.0;
+	s->global.ambient_light = v3s(1.0f);
 	return s;
 }
 
@@ -94,6 +95,7 @@ scene_material *scene_new_material(scene *s, diag_loc loc)
 	m->color = v3s(0.8f);
 	m->diffuse = 1.0f;
 	m->roughness = 1.0f;
+	scene_finish_defaults(&m->finish);
 	m->next = s->materials;
 	s->materials = m;
 	return m;
@@ -335,6 +337,24 @@ static void dump_loc(FILE *o, diag_loc l)
 	fprintf(o, " @%s:%u:%u", slash ? slash + 1 : name, l.line, l.col);
 }
 
+/* The POV-Ray finish items that differ from POV-Ray's defaults, on one line (none: no line). */
+static void dump_finish(FILE *o, const scene_finish *f)
+{
+	if (scene_finish_is_default(f))
+		return;
+	fprintf(o, " ");
+	if (f->has_ambient)
+		dump_v3(o, "ambient", f->ambient);
+	if (f->emission.x != 0 || f->emission.y != 0 || f->emission.z != 0)
+		dump_v3(o, "emission", f->emission);
+	fprintf(o, " brilliance %g phong %g phong_size %g metallic %g", f->brilliance, f->phong, f->phong_size,
+		f->metallic);
+	dump_v3(o, "reflection_min", f->refl_min);
+	dump_v3(o, "reflection_max", f->refl_max);
+	fprintf(o, " falloff %g fresnel %d reflection_metallic %g conserve_energy %d\n", f->refl_falloff,
+		f->refl_fresnel, f->refl_metallic, f->conserve_energy);
+}
+
 static void dump_material(FILE *o, const scene_material *m)
 {
 	fprintf(o, "material %u %s", m->id, scene_material_kind_name(m->kind));
@@ -351,6 +371,8 @@ static void dump_material(FILE *o, const scene_material *m)
 		if (m->ior > 0)
 			fprintf(o, " ior %g", m->ior);
 		fputc('\n', o);
+		if (m->kind == MAT_TEXTURE)
+			dump_finish(o, &m->finish);
 	}
 	if (m->emission.x != 0 || m->emission.y != 0 || m->emission.z != 0) {
 		fprintf(o, " ");
@@ -506,6 +528,23 @@ void scene_dump(const scene *s, FILE *o)
 		s->global.max_trace_level, s->global.assumed_gamma);
 	if (s->global.noise_threshold > 0) /* only when set: older dumps stay as they were */
 		fprintf(o, "global noise_threshold %g\n", s->global.noise_threshold);
+	vec3 al = s->global.ambient_light;
+	if (al.x != 1 || al.y != 1 || al.z != 1) {
+		fprintf(o, "global");
+		dump_v3(o, "ambient_light", al);
+		fputc('\n', o);
+	}
+	for (const scene_fog *f = s->fogs; f; f = f->next) {
+		fprintf(o, "fog type %d", (int)f->type);
+		dump_loc(o, f->loc);
+		fprintf(o, " distance %g", f->distance);
+		dump_v3(o, "color", f->color);
+		if (f->type == SCENE_FOG_GROUND) {
+			fprintf(o, " offset %g alt %g", f->offset, f->alt);
+			dump_d3(o, "up", f->up);
+		}
+		fputc('\n', o);
+	}
 	if (s->has_camera) {
 		const scene_camera *c = &s->camera;
 		fprintf(o, "camera");

@@ -187,6 +187,7 @@ typedef struct scene_global {
 	int max_trace_level; /* default 5 */
 	double assumed_gamma; /* default 1 */
 	double noise_threshold; /* adaptive sampling's (render --noise-threshold); 0: off, the default */
+	vec3 ambient_light; /* default 1: scales every explicit finish ambient (scene/finish.h) */
 } scene_global;
 
 typedef struct scene_sky_sphere {
@@ -217,6 +218,7 @@ typedef struct scene {
 	diag_loc background_loc;
 	bool has_sky_sphere;
 	scene_sky_sphere sky_sphere;
+	scene_fog *fogs; /* every fog, newest first (they combine in any order) */
 	vecbuf objects; /* scene_object */
 	scene_geom *geoms; /* every geometry record, newest first */
 	uint32_t n_geoms;

@@ -122,3 +122,7 @@ sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { 
 #macro Apply(Fn, Tr) Fn(1, 2, 3) + vlength(vtransform_walk(Tr)) #end
 #macro vtransform_walk(T) #local Fw = function { transform { T } } Fw(1, 0, 0) #end
 #declare Av = Apply(function { x + y*z }, transform { translate y });
+// rule: finish_item, reflection_item
+sphere { 0, 1 finish { ambient 0.1 diffuse albedo 0.6 phong 0.5 phong_size 20 metallic reflection { 0.1, 0.5 falloff 2 } } }
+// rule: fog, fog_item
+fog { fog_type 2 distance 30 color rgb 0.5 fog_offset 1 fog_alt 2 }

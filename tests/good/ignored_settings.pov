@@ -13,7 +13,7 @@ global_settings {
     #if (Gamma > 0) max_sample 2 #end
   }
   photons { spacing 0.02 autostop 0 jitter 0.4 media 100, 2 expand_thresholds 0.2, 40 save_file "x.ph" }
-  ambient_light rgb <1, 0.5, 0.2>
+  // ambient_light is read now (tests/good/pov_finish.pov)
   noise_generator 2
   number_of_waves 10
   charset utf8

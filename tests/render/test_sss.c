@@ -99,10 +99,10 @@ static double rms_diff(const image_stats *a, const image_stats *b)
 }
 
 /* A slab far wider and deeper than the profile under a parallel light at 63.4 degrees from the
- * normal: irradiance cos = 10 / sqrt(125). */
+ * normal: irradiance cos = 10 / sqrt(125) (circe's intensity 1: not POV-Ray's pi brightness). */
 #define SLAB_LIGHT                                                                                 \
 	"camera { location <0, 4, -4> look_at <0, 0, 0> angle 40 }\n"                                 \
-	"light_source { <0, 10, -5> color rgb 1 parallel point_at <0, 0, 0> }\n"
+	"light_source { <0, 10, -5> color rgb 1 intensity 1 parallel point_at <0, 0, 0> }\n"
 
 static void test_slab_zero_variance(void)
 {

@@ -1,7 +1,7 @@
 // pov_lights.pov: POV-Ray's lights without circe's intensity (no falloff), as POV-Ray renders them:
 // two point lights about 13 units away, one faded, a circular oriented area light, a spotlight with
 // tightness, a cylinder light and a shadowless light over a plane and five red spheres. The same
-// file renders in POV-Ray 3.7 (ambient_light 0: circe has no ambient term; circe ignores it).
+// file renders in POV-Ray 3.7 (ambient_light 0: POV-Ray adds no ambient; circe reads it, no finish here is explicit).
 // render: -W 64 -H 48 --spp 16 --seed 1
 // compare: --fail 0.05 --fail-percent 1
 #version 3.7;

@@ -1,1 +1,0 @@
-sphere { 0, 1 texture { finish { phong 0.5 } } }
