@@ -78,6 +78,28 @@ static void warn_reflectance_image(const image *img, diag_loc loc, const char *p
 			     clamped, path);
 }
 
+/* POV-Ray's filter and transmit on a texture (doc/language.md "Transparency and interiors"): the
+ * surface lets pigment * filter + transmit through, a smooth dielectric where the object has an
+ * interior, straight through where it has none; its diffuse is scaled by POV-Ray's opacity
+ * 1 - filter - transmit (core/render/trace.cpp: att = Opacity(), highlights unscaled). */
+static void build_clear(bsdf_params *b, const scene_material *sm)
+{
+	float f = sm->filter, t = sm->transmit;
+	if (!(f + t > 0.0f))
+		return;
+	bsdf_clear *c = &b->clear;
+	c->tint = v3_min(v3_add(v3_scale(sm->color, f), v3s(t)), v3s(1.0f));
+	c->reflect = fminf(1.0f, f + t);
+	b->diffuse = v3_scale(b->diffuse, fmaxf(0.0f, 1.0f - f - t));
+	if (!(sm->ior > 0.0f)) {
+		c->kind = BSDF_CLEAR_THIN;
+		return;
+	}
+	c->kind = BSDF_CLEAR_DIELECTRIC;
+	c->ior = sm->ior;
+	c->fade = (bsdf_fade){.distance = sm->fade_distance, .power = sm->fade_power, .color = sm->fade_color};
+}
+
 /* BSDF parameters and textures of a scene material. */
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt,
 			   const scene_material *sm, diag *d)
@@ -89,6 +111,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		break;
 	case MAT_TEXTURE:
 		w->bsdfs[k] = bsdf_pov_finish(sm->color, sm->diffuse, sm->specular, sm->roughness);
+		build_clear(&w->bsdfs[k], sm);
 		break;
 	case MAT_EMISSION:
 		w->bsdfs[k] = bsdf_diffuse(v3s(0.0f));

@@ -22,6 +22,28 @@
 
 typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT, BSDF_SSS_ENTRY } bsdf_kind;
 
+/* The transparent part of a surface (POV-Ray's filter and transmit, doc/language.md "Transparency
+ * and interiors"), beside the lobes of bsdf_kind, which then hold only the opaque part:
+ *   BSDF_CLEAR_THIN       straight through (no interior): wi = -wo, weight tint.
+ *   BSDF_CLEAR_DIELECTRIC a smooth boundary of index ior (an interior): Fresnel reflection
+ *                         weighted by `reflect`, refraction (1 - F) tint; both delta lobes. */
+typedef enum bsdf_clear_kind { BSDF_CLEAR_NONE, BSDF_CLEAR_THIN, BSDF_CLEAR_DIELECTRIC } bsdf_clear_kind;
+
+/* POV-Ray's interior fade: the light a path keeps after a distance d inside (bsdf_fade_apply). */
+typedef struct bsdf_fade {
+	float distance; /* fade_distance, scene units; 0: no fade */
+	float power;	/* fade_power; >= 1000: exponential (Beer-Lambert) */
+	vec3 color;	/* fade_color, the colour kept at infinite depth, in [0, 1] */
+} bsdf_fade;
+
+typedef struct bsdf_clear {
+	bsdf_clear_kind kind;
+	vec3 tint;     /* the fraction one crossing transmits: pigment * filter + transmit, in [0, 1] */
+	float reflect; /* DIELECTRIC: weight of the Fresnel reflection, min(1, filter + transmit) */
+	float ior;     /* DIELECTRIC: of the inside (outside is 1) */
+	bsdf_fade fade;
+} bsdf_clear;
+
 /* A material's reflection parameters at one shading point (textures already applied). */
 typedef struct bsdf_params {
 	bsdf_kind kind;
@@ -29,6 +51,7 @@ typedef struct bsdf_params {
 	vec3 specular; /* BSDF_PLASTIC: Ks (as a colour) */
 	float alpha;   /* GGX roughness alpha, clamped to [BSDF_MIN_ALPHA, 1] */
 	float ior;     /* BSDF_COAT: index of refraction of the coat (outside is 1) */
+	bsdf_clear clear; /* zero: opaque */
 } bsdf_params;
 
 /* Below this GGX's peak is too sharp for float; such surfaces are treated as this rough. */
@@ -56,5 +79,29 @@ float bsdf_fresnel_dielectric(float cos_i, float eta);
 /* GGX pieces, exposed for tests: the normal distribution D(h) and the visible-normal sample. */
 float bsdf_ggx_d(vec3 h, float alpha);
 vec3 bsdf_ggx_sample_vndf(vec3 wo, float alpha, vec2 u);
+
+/* ---- the transparent part (bsdf_clear) ----------------------------------------------------- */
+
+/* The smooth dielectric's delta lobes at wo (local, wo.z > 0), eta = n_behind / n_front (ior when
+ * entering, 1 / ior when leaving): with probability *prob the reflection wi = (-wo.x, -wo.y, wo.z),
+ * else the refraction by Snell's law (wi.z < 0). u chooses; the choice is proportional to the
+ * lobes' weights, so *weight (f cos / pdf) is reflect*F/prob or (1-F) tint/(1-prob). Under total
+ * internal reflection F = 1: only the reflection. False only when nothing is carried. */
+bool bsdf_dielectric_sample(vec3 wo, float eta, float reflect, vec3 tint, float u, vec3 *wi, vec3 *weight,
+			    bool *refracted);
+/* The total weight of the delta lobes of b at wo (for choosing them against the opaque lobes):
+ * THIN: luminance(tint); DIELECTRIC: reflect F + (1 - F) luminance(tint); NONE: 0. */
+float bsdf_clear_weight(const bsdf_params *b, vec3 wo, bool entering);
+/* A sample of b's delta lobes (see bsdf_dielectric_sample); THIN: wi = -wo, weight tint. */
+bool bsdf_clear_sample(const bsdf_params *b, vec3 wo, bool entering, float u, vec3 *wi, vec3 *weight,
+		       bool *refracted);
+/* The fraction a straight shadow ray keeps crossing b's surface at cosine cos (either side):
+ * tint, times 1 - F(|cos|, ior) for a dielectric (the Fresnel loss of the refracted path it
+ * stands for, seen from outside so no total internal reflection darkens it). */
+vec3 bsdf_clear_shadow(const bsdf_params *b, float cos);
+/* POV-Ray's fade after d units inside (its source, core/render/trace.cpp, ComputeLightedTexture):
+ * power >= 1000: exp(-(1 - color) d / distance) per channel; else
+ * color + (1 - color) / (1 + (d / distance)^power). 1 when distance or power is 0. */
+vec3 bsdf_fade_apply(const bsdf_fade *f, float d);
 
 #endif
