@@ -183,12 +183,12 @@ bool bsdf_dielectric_sample(vec3 wo, float eta, float reflect, vec3 tint, float 
 		*refracted = false;
 		return true;
 	}
-	/* Snell: sin_t = sin_o / eta; wt = -wo / eta + n (cos_o / eta - cos_t), n = +z. */
-	float sin2_t = fmaxf(0.0f, 1.0f - cos_o * cos_o) / (eta * eta);
-	if (!(sin2_t < 1.0f))
+	/* Snell: sin_t = sin_o / eta, wi = -wo / eta + n (cos_o / eta - cos_t), n = +z; in double,
+	 * where 1 - sin_t^2 is a cancellation at grazing angles. */
+	double cos2_t = 1.0 - (1.0 - (double)cos_o * cos_o) / ((double)eta * eta);
+	if (!(cos2_t > 0.0))
 		return false; /* only when f rounded below 1: no transmission exists */
-	float cos_t = sqrtf(1.0f - sin2_t);
-	*wi = v3_normalize(v3(-wo.x / eta, -wo.y / eta, -cos_t));
+	*wi = v3_normalize(v3(-wo.x / eta, -wo.y / eta, -(float)sqrt(cos2_t)));
 	*weight = v3_scale(tint, (1.0f - f) / (1.0f - pr));
 	*refracted = true;
 	return true;

@@ -11,6 +11,9 @@
 
 #include <assert.h>
 
+/* A path passes at most this many thin transparent surfaces without counting them as bounces. */
+#define RENDER_MAX_PASSES 64
+
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
 
@@ -559,7 +562,8 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
 		   .medium = -1};
-	for (int bounce = 0;; bounce++) {
+	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
+	for (int bounce = 0, passes = 0;; bounce++) {
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		if (!trace(s, &ray, &hit, &sphere_light)) {
@@ -569,17 +573,18 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (pa.medium >= 0)
 			pa.beta = v3_mul(pa.beta, bsdf_fade_apply(&s->materials[pa.medium].clear.fade, hit.t));
 		add_emitted(s, set, bounce, ray.d, &hit, &pa);
-		if (bounce == 0) {
+		if (bounce == 0 && passes == 0) {
 			out.depth = hit.t;
 			out.normal = v3_dot(hit.ns, ray.d) > 0.0f ? v3_neg(hit.ns) : hit.ns;
 		}
+		bool at_cap = bounce >= set->max_trace_level; /* then only thin surfaces are passed */
 		if (sphere_light >= 0 || hit.material < 0 || (size_t)hit.material >= s->material_count ||
-		    bounce >= set->max_trace_level)
+		    (at_cap && s->materials[hit.material].clear.kind != BSDF_CLEAR_THIN))
 			break;
 		vec3 wo = v3_neg(ray.d);
 		vertex v;
 		make_vertex(s, &hit, wo, &v);
-		if (bounce == 0)
+		if (bounce == 0 && passes == 0)
 			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
 		bool entering = v3_dot(hit.ng, wo) >= 0.0f; /* normals point out of objects */
@@ -588,12 +593,17 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (sm) {
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-		} else if (v.lobe_prob > 0.0f) {
+		} else if (v.lobe_prob > 0.0f && !at_cap) {
 			add_direct(s, set, &v.b, &v, g, &pa);
 		}
-		if (p_delta > 0.0f && rng_float(g) < p_delta) {
+		bool delta = p_delta > 0.0f && rng_float(g) < p_delta;
+		if (at_cap && !delta)
+			break;
+		if (delta) {
 			if (!continue_clear(set, &hit, &v, entering, p_delta, bounce, g, &pa, &ray))
 				break;
+			if (v.b.clear.kind == BSDF_CLEAR_THIN && ++passes < RENDER_MAX_PASSES)
+				bounce--;
 		} else if (!continue_path(&v, bounce, g, &pa, &ray)) {
 			break;
 		}
