@@ -338,7 +338,7 @@ static void dump_material(FILE *o, const scene_material *m)
 		if (m->ior > 0)
 			fprintf(o, " ior %g", m->ior);
 		if (m->fade_distance > 0 || m->fade_power > 0) {
-			fprintf(o, " fade_distance %g fade_power %g ", m->fade_distance, m->fade_power);
+			fprintf(o, " fade_distance %g fade_power %g", m->fade_distance, m->fade_power);
 			dump_v3(o, "fade_color", m->fade_color);
 		}
 		fputc('\n', o);
