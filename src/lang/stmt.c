@@ -468,16 +468,23 @@ static void copy_interior(scene_material *to, const scene_material *from)
 typedef enum interior_word { IW_NONE, IW_CAUSTICS, IW_DISPERSION, IW_DISPERSION_SAMPLES, IW_FADE_COLOR,
 			     IW_FADE_COLOUR, IW_FADE_DISTANCE, IW_FADE_POWER, IW_MEDIA, IW_REFRACTION } interior_word;
 
+/* The index in names[1..n) of the POV-Ray word t (lexed as LTK_UNSUPPORTED), or 0: the words of
+ * a block that are no keywords of circe's. */
+static size_t pov_word_at(const lang_token *t, const char *const *names, size_t n)
+{
+	if (t->kind != LTK_UNSUPPORTED)
+		return 0;
+	for (size_t i = 1; i < n; i++)
+		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
+			return i;
+	return 0;
+}
+
 static interior_word interior_word_at(const lang_token *t)
 {
 	static const char *const names[] = {"", "caustics", "dispersion", "dispersion_samples", "fade_color",
 					    "fade_colour", "fade_distance", "fade_power", "media", "refraction"};
-	if (t->kind != LTK_UNSUPPORTED)
-		return IW_NONE;
-	for (size_t i = 1; i < sizeof names / sizeof names[0]; i++)
-		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
-			return (interior_word)i;
-	return IW_NONE;
+	return (interior_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
 }
 
 /* One interior item after its word w (at loc): POV-Ray's parse_materials.cpp Parse_Interior. */
@@ -2120,12 +2127,7 @@ static light_word light_word_at(const lang_token *t)
 {
 	static const char *const names[] = {"", "adaptive", "area_light", "circular", "cylinder", "fade_distance",
 					    "fade_power", "jitter", "orient", "shadowless", "tightness"};
-	if (t->kind != LTK_UNSUPPORTED)
-		return LW_NONE;
-	for (size_t i = 1; i < sizeof names / sizeof names[0]; i++)
-		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
-			return (light_word)i;
-	return LW_NONE;
+	return (light_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
 }
 
 /* Where a light_source's items that need another were given, for the checks at its '}'. */

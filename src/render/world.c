@@ -205,11 +205,16 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	}
 }
 
-/* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables. */
+/* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables.
+ * Shadow rays walk through surfaces only when some material is transparent: elsewhere an
+ * occluded shadow ray costs no closest-hit query. */
 void world_bind(world *w)
 {
+	bool clear = false;
+	for (size_t i = 0; i < w->n_materials; i++)
+		clear |= w->bsdfs[i].clear.kind != BSDF_CLEAR_NONE;
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
-			       .shadow_closest = world_shadow_closest,
+			       .shadow_closest = clear ? world_shadow_closest : NULL,
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,
