@@ -109,6 +109,32 @@ static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_
 	}
 }
 
+/* POV-Ray's filter and transmit on a texture (doc/language.md "Transparency and interiors"): the
+ * surface lets pigment * filter + transmit through, a smooth dielectric where the object has an
+ * interior, straight through where it has none; its diffuse is scaled by POV-Ray's opacity
+ * 1 - filter - transmit (core/render/trace.cpp: att = Opacity(), highlights unscaled). */
+static void build_clear(bsdf_params *b, const scene_material *sm)
+{
+	float f = sm->filter, t = sm->transmit;
+	if (!(f + t > 0.0f))
+		return;
+	bsdf_clear *c = &b->clear;
+	c->tint = v3_min(v3_add(v3_scale(sm->color, f), v3s(t)), v3s(1.0f));
+	/* A finish's own reflection (glass.inc's reflection { 0.1, 1 fresnel }) is the surface's
+	 * mirror: the dielectric does not reflect a second time on top of it. */
+	const bsdf_pov_finish_spec *fs = &b->pov;
+	bool finish_reflects = v3_max_comp(fs->refl_min) > 0.0f || v3_max_comp(fs->refl_max) > 0.0f;
+	c->reflect = finish_reflects ? 0.0f : fminf(1.0f, f + t);
+	b->pov.diffuse *= fmaxf(0.0f, 1.0f - f - t); /* bsdf_pov_set_pigment derives the lobe from it */
+	if (!(sm->ior > 0.0f)) {
+		c->kind = BSDF_CLEAR_THIN;
+		return;
+	}
+	c->kind = BSDF_CLEAR_DIELECTRIC;
+	c->ior = sm->ior;
+	c->fade = (bsdf_fade){.distance = sm->fade_distance, .power = sm->fade_power, .color = sm->fade_color};
+}
+
 /* BSDF parameters and textures of a scene material. */
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt,
 			   const scene_material *sm, diag *d)
@@ -121,6 +147,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 	case MAT_TEXTURE:
 		w->bsdfs[k] = bsdf_pov(&(bsdf_pov_finish_spec){0}, v3s(0.0f)); /* filled below */
 		pov_finish_spec(sc, sm, &w->bsdfs[k].pov, d);
+		build_clear(&w->bsdfs[k], sm);
 		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 		break;
 	case MAT_EMISSION:

@@ -1489,6 +1489,18 @@ bool lang_vec3(parser *p, const char *what, dvec3 *out)
 bool lang_color(parser *p, const char *what, vec3 *out)
 {
 	diag_loc loc = lang_peek(p)->loc;
+	double ft[2];
+	if (!lang_color_ft(p, what, out, ft))
+		return false;
+	if (ft[0] != 0 || ft[1] != 0)
+		diag_warning(p->d, loc, "filter %g and transmit %g of this colour are ignored: only a pigment's colour "
+					"is transparent in circe", ft[0], ft[1]);
+	return true;
+}
+
+bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2])
+{
+	diag_loc loc = lang_peek(p)->loc;
 	value c;
 	bool saved = p->no_gt, ok;
 	p->no_gt = false;
@@ -1506,9 +1518,7 @@ bool lang_color(parser *p, const char *what, vec3 *out)
 	p->no_gt = saved;
 	if (!ok)
 		return false;
-	if (c.v[3] != 0 || c.v[4] != 0)
-		diag_warning(p->d, loc, "filter %g and transmit %g of this colour are ignored: circe's materials have neither "
-					"yet", c.v[3], c.v[4]);
+	ft[0] = c.v[3], ft[1] = c.v[4];
 	*out = v3((float)c.v[0], (float)c.v[1], (float)c.v[2]);
 	return true;
 }

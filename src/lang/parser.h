@@ -221,6 +221,8 @@ bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted 
 /* A colour's red, green and blue (a float is promoted); a filter or transmit other than 0 is
  * warned about and dropped (circe's materials have none yet). */
 bool lang_color(parser *p, const char *what, vec3 *out);
+/* lang_color keeping the filter and transmit (ft[0], ft[1]) as written. */
+bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2]);
 bool lang_string(parser *p, const char *what, const char **out);
 /* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);

@@ -335,6 +335,29 @@ static void copy_pigment(scene_material *to, const scene_material *from)
 {
 	to->color = from->color;
 	to->image = from->image;
+	to->filter = from->filter, to->transmit = from->transmit;
+}
+
+/* A pigment's colour with its filter and transmit (POV-Ray's rgbf/rgbt), each clamped into
+ * [0, 1] with a warning: the fractions of light a surface lets through (tinted, untinted). */
+static bool pigment_color(parser *p, const char *what, scene_color_use use, scene_material *m)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	double ft[2];
+	TRY(lang_color_ft(p, "as the pigment colour", &m->color, ft) &&
+	    scene_color_finalise(p->sc, p->d, loc, what, use, &m->color));
+	if (use != SCENE_COLOR_REFLECTANCE) {
+		if (ft[0] != 0 || ft[1] != 0)
+			diag_warning(p->d, loc, "filter %g and transmit %g of a sky colour are ignored", ft[0], ft[1]);
+		return true;
+	}
+	for (int i = 0; i < 2; i++)
+		if (!(ft[i] >= 0 && ft[i] <= 1)) {
+			diag_warning(p->d, loc, "%s %g is outside [0, 1]: clamped", i ? "transmit" : "filter", ft[i]);
+			ft[i] = ft[i] > 1 ? 1 : 0;
+		}
+	m->filter = (float)ft[0], m->transmit = (float)ft[1];
+	return true;
 }
 
 static void copy_finish(scene_material *to, const scene_material *from)
@@ -402,7 +425,7 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(lang_expect_close(p, io, "image_map"));
 	} else if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
-		TRY(physical_color(p, "as the pigment colour", what, use, &m->color));
+		TRY(pigment_color(p, what, use, m));
 		m->image = NULL;
 	}
 	for (;;) {
@@ -439,8 +462,75 @@ static bool finish(parser *p, scene_material *m)
 	}
 }
 
-/* interior = "interior" "{" [ identifier ] [ "ior" float ] "}" */
-static bool interior(parser *p, float *ior)
+static void copy_interior(scene_material *to, const scene_material *from)
+{
+	to->ior = from->ior;
+	to->fade_distance = from->fade_distance, to->fade_power = from->fade_power;
+	to->fade_color = from->fade_color;
+}
+
+/* The interior's words that are no keywords of circe's (they lex as LTK_UNSUPPORTED). */
+typedef enum interior_word { IW_NONE, IW_CAUSTICS, IW_DISPERSION, IW_DISPERSION_SAMPLES, IW_FADE_COLOR,
+			     IW_FADE_COLOUR, IW_FADE_DISTANCE, IW_FADE_POWER, IW_MEDIA, IW_REFRACTION } interior_word;
+
+/* The index in names[1..n) of the POV-Ray word t (lexed as LTK_UNSUPPORTED), or 0: the words of
+ * a block that are no keywords of circe's. */
+static size_t pov_word_at(const lang_token *t, const char *const *names, size_t n)
+{
+	if (t->kind != LTK_UNSUPPORTED)
+		return 0;
+	for (size_t i = 1; i < n; i++)
+		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
+			return i;
+	return 0;
+}
+
+static interior_word interior_word_at(const lang_token *t)
+{
+	static const char *const names[] = {"", "caustics", "dispersion", "dispersion_samples", "fade_color",
+					    "fade_colour", "fade_distance", "fade_power", "media", "refraction"};
+	return (interior_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
+}
+
+/* One interior item after its word w (at loc): POV-Ray's parse_materials.cpp Parse_Interior. */
+static bool interior_item(parser *p, scene_material *m, interior_word w, diag_loc loc)
+{
+	double x;
+	switch (w) {
+	case IW_FADE_COLOR:
+	case IW_FADE_COLOUR:
+		return physical_color(p, "after 'fade_color'", "fade_color", SCENE_COLOR_REFLECTANCE, &m->fade_color);
+	case IW_FADE_DISTANCE:
+	case IW_FADE_POWER:
+		TRY(lang_float(p, w == IW_FADE_POWER ? "after 'fade_power'" : "after 'fade_distance'", &x));
+		if (!(x >= 0))
+			return lang_error(p, loc, "%s must be >= 0, found %g", w == IW_FADE_POWER ? "fade_power" : "fade_distance",
+					  x);
+		*(w == IW_FADE_POWER ? &m->fade_power : &m->fade_distance) = (float)x;
+		return true;
+	case IW_DISPERSION:
+	case IW_DISPERSION_SAMPLES:
+	case IW_CAUSTICS:
+	case IW_REFRACTION:
+		TRY(lang_float(p, "after it", &x));
+		diag_warning(p->d, loc, "'%s' is accepted and ignored by circe (%s)",
+			     w == IW_DISPERSION ? "dispersion" : w == IW_CAUSTICS ? "caustics"
+						: w == IW_REFRACTION ? "refraction" : "dispersion_samples",
+			     w == IW_CAUSTICS ? "a path tracer finds caustics by its paths"
+			     : w == IW_REFRACTION ? "POV-Ray 3's refraction is on wherever ior is given"
+						 : "the ior is one for every wavelength");
+		return true;
+	default: /* IW_MEDIA */
+		return lang_error(p, loc, "'media' is not supported by circe");
+	}
+}
+
+/* interior = "interior" "{" [ identifier ] { interior_item } "}"
+ * interior_item = "ior" float | "fade_distance" float | "fade_power" float
+ *               | ( "fade_color" | "fade_colour" ) colour
+ *               | ( "dispersion" | "dispersion_samples" | "caustics" | "refraction" ) float   (ignored)
+ * An interior gives the object an inside: ior 1 unless it says. */
+static bool interior(parser *p, scene_material *m)
 {
 	diag_loc open;
 	lang_advance(p);
@@ -448,14 +538,28 @@ static bool interior(parser *p, float *ior)
 	if (lang_peek(p)->kind == LTK_IDENT) {
 		const value *v;
 		TRY(v = declared(p, VAL_INTERIOR, "an interior"));
-		*ior = v->mat->ior;
+		copy_interior(m, v->mat);
 	}
-	if (lang_peek(p)->kind == LTK_KW_IOR) {
-		diag_loc loc = lang_advance(p)->loc;
-		double x;
-		TRY(lang_float(p, "after 'ior'", &x) && positive(p, loc, "ior", x));
-		*ior = (float)x;
+	if (!(m->ior > 0))
+		m->ior = 1.0f;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (t.kind == LTK_KW_IOR) {
+			lang_advance(p);
+			double x;
+			TRY(lang_float(p, "after 'ior'", &x) && positive(p, t.loc, "ior", x));
+			m->ior = (float)x;
+			continue;
+		}
+		interior_word w = interior_word_at(&t);
+		if (w == IW_NONE)
+			break;
+		lang_advance(p);
+		TRY(interior_item(p, m, w, t.loc));
 	}
+	if ((m->fade_distance > 0) != (m->fade_power > 0))
+		diag_warning(p->d, open, "an interior fades with both fade_distance and fade_power > 0; with one of them "
+					 "0 (their default) circe does not fade");
 	return lang_expect_close(p, open, "interior");
 }
 
@@ -769,15 +873,15 @@ static bool material(parser *p, const scene_material **out)
 		case LTK_KW_TEXTURE: {
 			const scene_material *tex;
 			TRY(texture(p, &tex, NULL));
-			vec3 em = m->emission;
-			uint32_t id = m->id;
-			scene_material *next = m->next;
+			scene_material keep = *m; /* an interior given before the texture stays */
 			*m = *tex;
-			m->id = id, m->next = next, m->loc = kw, m->name = NULL, m->emission = em;
+			m->id = keep.id, m->next = keep.next, m->loc = kw, m->name = NULL, m->emission = keep.emission;
+			if (keep.ior > 0)
+				copy_interior(m, &keep);
 			break;
 		}
 		case LTK_KW_INTERIOR:
-			TRY(interior(p, &m->ior));
+			TRY(interior(p, m));
 			break;
 		case LTK_KW_EMISSION:
 			lang_advance(p);
@@ -810,8 +914,7 @@ typedef struct mods {
 	scene_material *tex; /* made by a bare pigment or finish on this item */
 	bool no_shadow;
 	lang_objflags flags; /* hollow, no_image, ... (objmods.c) */
-	bool has_interior;
-	float ior;
+	scene_material *interior; /* a part record (new_part), or NULL */
 	diag_loc interior_loc;
 } mods;
 
@@ -857,9 +960,10 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		}
 		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex, SCENE_COLOR_REFLECTANCE) : finish(p, m->tex);
 	case LTK_KW_INTERIOR:
-		m->has_interior = true;
+		if (!m->interior)
+			TRY(m->interior = new_part(p, t.loc));
 		m->interior_loc = t.loc;
-		return interior(p, &m->ior);
+		return interior(p, m->interior);
 	case LTK_KW_NO_SHADOW:
 		lang_advance(p);
 		m->no_shadow = true;
@@ -871,7 +975,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 /* Applies an item's modifiers to the objects it made (out[start..]). */
 static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 {
-	if (m->has_interior) {
+	if (m->interior) {
 		if (!m->mat || m->mat->kind != MAT_TEXTURE)
 			return lang_error(p, m->interior_loc, "'interior' sets the ior of a texture; this object has none");
 		scene_material *mm = (scene_material *)m->mat; /* made or copied here, hence writable */
@@ -879,7 +983,7 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 			TRY(mm = copy_material(p, m->mat, m->mat_loc));
 			m->mat = mm;
 		}
-		mm->ior = m->ior;
+		copy_interior(mm, m->interior);
 	}
 	for (size_t i = start; i < out->len; i++) {
 		scene_object *o = &VECBUF_AT(out, scene_object, i);
@@ -1610,7 +1714,7 @@ static bool declare_part(parser *p, value *out, lang_tok k)
 	switch (k) {
 	case LTK_KW_PIGMENT: out->kind = VAL_PIGMENT; return pigment(p, m, SCENE_COLOR_REFLECTANCE);
 	case LTK_KW_FINISH: out->kind = VAL_FINISH; return finish(p, m);
-	default: out->kind = VAL_INTERIOR; return interior(p, &m->ior);
+	default: out->kind = VAL_INTERIOR; return interior(p, m);
 	}
 }
 
@@ -2052,12 +2156,7 @@ static light_word light_word_at(const lang_token *t)
 {
 	static const char *const names[] = {"", "adaptive", "area_light", "circular", "cylinder", "fade_distance",
 					    "fade_power", "jitter", "orient", "shadowless", "tightness"};
-	if (t->kind != LTK_UNSUPPORTED)
-		return LW_NONE;
-	for (size_t i = 1; i < sizeof names / sizeof names[0]; i++)
-		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
-			return (light_word)i;
-	return LW_NONE;
+	return (light_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
 }
 
 /* Where a light_source's items that need another were given, for the checks at its '}'. */

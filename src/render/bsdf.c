@@ -190,3 +190,87 @@ float bsdf_ggx_pdf(vec3 wo, vec3 wi, float alpha)
 {
 	return ggx_pdf(wo, wi, alpha);
 }
+
+/* ---- the transparent part ------------------------------------------------------------------ */
+
+bool bsdf_dielectric_sample(vec3 wo, float eta, float reflect, vec3 tint, float u, vec3 *wi, vec3 *weight,
+			    bool *refracted)
+{
+	float cos_o = fminf(fmaxf(wo.z, 0.0f), 1.0f);
+	float f = bsdf_fresnel_dielectric(cos_o, eta); /* 1 under total internal reflection */
+	float wr = reflect * f, wt = (1.0f - f) * v3_luminance(tint);
+	if (!(wr + wt > 0.0f))
+		return false;
+	float pr = wr / (wr + wt);
+	if (u < pr) {
+		*wi = v3(-wo.x, -wo.y, wo.z);
+		*weight = v3s(wr / pr);
+		*refracted = false;
+		return true;
+	}
+	/* Snell: sin_t = sin_o / eta, wi = -wo / eta + n (cos_o / eta - cos_t), n = +z; in double,
+	 * where 1 - sin_t^2 is a cancellation at grazing angles. */
+	double cos2_t = 1.0 - (1.0 - (double)cos_o * cos_o) / ((double)eta * eta);
+	if (!(cos2_t > 0.0))
+		return false; /* only when f rounded below 1: no transmission exists */
+	*wi = v3_normalize(v3(-wo.x / eta, -wo.y / eta, -(float)sqrt(cos2_t)));
+	*weight = v3_scale(tint, (1.0f - f) / (1.0f - pr));
+	*refracted = true;
+	return true;
+}
+
+float bsdf_clear_weight(const bsdf_params *b, vec3 wo, bool entering)
+{
+	const bsdf_clear *c = &b->clear;
+	switch (c->kind) {
+	case BSDF_CLEAR_THIN:
+		return v3_luminance(c->tint);
+	case BSDF_CLEAR_DIELECTRIC: {
+		float f = bsdf_fresnel_dielectric(wo.z, entering ? c->ior : 1.0f / c->ior);
+		return c->reflect * f + (1.0f - f) * v3_luminance(c->tint);
+	}
+	case BSDF_CLEAR_NONE:
+		break;
+	}
+	return 0.0f;
+}
+
+bool bsdf_clear_sample(const bsdf_params *b, vec3 wo, bool entering, float u, vec3 *wi, vec3 *weight,
+		       bool *refracted)
+{
+	const bsdf_clear *c = &b->clear;
+	if (c->kind == BSDF_CLEAR_THIN) {
+		*wi = v3_neg(wo);
+		*weight = c->tint;
+		*refracted = true;
+		return v3_max_comp(c->tint) > 0.0f;
+	}
+	if (c->kind != BSDF_CLEAR_DIELECTRIC)
+		return false;
+	return bsdf_dielectric_sample(wo, entering ? c->ior : 1.0f / c->ior, c->reflect, c->tint, u, wi, weight,
+				      refracted);
+}
+
+vec3 bsdf_clear_shadow(const bsdf_params *b, float cos)
+{
+	const bsdf_clear *c = &b->clear;
+	if (c->kind == BSDF_CLEAR_NONE)
+		return v3s(0.0f);
+	if (c->kind == BSDF_CLEAR_THIN)
+		return c->tint;
+	return v3_scale(c->tint, 1.0f - bsdf_fresnel_dielectric(fabsf(cos), c->ior));
+}
+
+static float fade_channel(const bsdf_fade *f, float kept, float d)
+{
+	if (f->power >= 1000.0f)
+		return expf(-(1.0f - kept) * d / f->distance);
+	return kept + (1.0f - kept) / (1.0f + powf(d / f->distance, f->power));
+}
+
+vec3 bsdf_fade_apply(const bsdf_fade *f, float d)
+{
+	if (!(f->distance > 0.0f) || !(f->power > 0.0f) || !(d > 0.0f))
+		return v3s(1.0f);
+	return v3(fade_channel(f, f->color.x, d), fade_channel(f, f->color.y, d), fade_channel(f, f->color.z, d));
+}

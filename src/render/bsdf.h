@@ -37,6 +37,28 @@ typedef struct bsdf_pov_finish_spec {
 	vec3 glow; /* ambient * ambient_light + emission: emitted radiance per unit pigment */
 } bsdf_pov_finish_spec;
 
+/* The transparent part of a surface (POV-Ray's filter and transmit, doc/language.md "Transparency
+ * and interiors"), beside the lobes of bsdf_kind, which then hold only the opaque part:
+ *   BSDF_CLEAR_THIN       straight through (no interior): wi = -wo, weight tint.
+ *   BSDF_CLEAR_DIELECTRIC a smooth boundary of index ior (an interior): Fresnel reflection
+ *                         weighted by `reflect`, refraction (1 - F) tint; both delta lobes. */
+typedef enum bsdf_clear_kind { BSDF_CLEAR_NONE, BSDF_CLEAR_THIN, BSDF_CLEAR_DIELECTRIC } bsdf_clear_kind;
+
+/* POV-Ray's interior fade: the light a path keeps after a distance d inside (bsdf_fade_apply). */
+typedef struct bsdf_fade {
+	float distance; /* fade_distance, scene units; 0: no fade */
+	float power;	/* fade_power; >= 1000: exponential (Beer-Lambert) */
+	vec3 color;	/* fade_color, the colour kept at infinite depth, in [0, 1] */
+} bsdf_fade;
+
+typedef struct bsdf_clear {
+	bsdf_clear_kind kind;
+	vec3 tint;     /* the fraction one crossing transmits: pigment * filter + transmit, in [0, 1] */
+	float reflect; /* DIELECTRIC: weight of the Fresnel reflection, min(1, filter + transmit) */
+	float ior;     /* DIELECTRIC: of the inside (outside is 1) */
+	bsdf_fade fade;
+} bsdf_clear;
+
 /* A material's reflection parameters at one shading point (textures already applied). */
 typedef struct bsdf_params {
 	bsdf_kind kind;
@@ -48,6 +70,7 @@ typedef struct bsdf_params {
 	bsdf_pov_finish_spec pov; /* BSDF_POV: the finish */
 	vec3 pigment;		  /* BSDF_POV: the pigment at the shading point */
 	float pov_scale;	  /* BSDF_POV: <= 1, keeps the lobes' sum at most 1 */
+	bsdf_clear clear; /* zero: opaque */
 } bsdf_params;
 
 /* Below this GGX's peak is too sharp for float; such surfaces are treated as this rough. */
@@ -79,5 +102,29 @@ vec3 bsdf_ggx_sample_vndf(vec3 wo, float alpha, vec2 u);
  * bsdf_ggx_sample_vndf (both directions above the surface). */
 float bsdf_ggx_reflection(vec3 wo, vec3 wi, float alpha);
 float bsdf_ggx_pdf(vec3 wo, vec3 wi, float alpha);
+
+/* ---- the transparent part (bsdf_clear) ----------------------------------------------------- */
+
+/* The smooth dielectric's delta lobes at wo (local, wo.z > 0), eta = n_behind / n_front (ior when
+ * entering, 1 / ior when leaving): with probability *prob the reflection wi = (-wo.x, -wo.y, wo.z),
+ * else the refraction by Snell's law (wi.z < 0). u chooses; the choice is proportional to the
+ * lobes' weights, so *weight (f cos / pdf) is reflect*F/prob or (1-F) tint/(1-prob). Under total
+ * internal reflection F = 1: only the reflection. False only when nothing is carried. */
+bool bsdf_dielectric_sample(vec3 wo, float eta, float reflect, vec3 tint, float u, vec3 *wi, vec3 *weight,
+			    bool *refracted);
+/* The total weight of the delta lobes of b at wo (for choosing them against the opaque lobes):
+ * THIN: luminance(tint); DIELECTRIC: reflect F + (1 - F) luminance(tint); NONE: 0. */
+float bsdf_clear_weight(const bsdf_params *b, vec3 wo, bool entering);
+/* A sample of b's delta lobes (see bsdf_dielectric_sample); THIN: wi = -wo, weight tint. */
+bool bsdf_clear_sample(const bsdf_params *b, vec3 wo, bool entering, float u, vec3 *wi, vec3 *weight,
+		       bool *refracted);
+/* The fraction a straight shadow ray keeps crossing b's surface at cosine cos (either side):
+ * tint, times 1 - F(|cos|, ior) for a dielectric (the Fresnel loss of the refracted path it
+ * stands for, seen from outside so no total internal reflection darkens it). */
+vec3 bsdf_clear_shadow(const bsdf_params *b, float cos);
+/* POV-Ray's fade after d units inside (its source, core/render/trace.cpp, ComputeLightedTexture):
+ * power >= 1000: exp(-(1 - color) d / distance) per channel; else
+ * color + (1 - color) / (1 + (d / distance)^power). 1 when distance or power is 0. */
+vec3 bsdf_fade_apply(const bsdf_fade *f, float d);
 
 #endif

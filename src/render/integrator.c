@@ -11,6 +11,9 @@
 
 #include <assert.h>
 
+/* A path passes at most this many thin transparent surfaces without counting them as bounces. */
+#define RENDER_MAX_PASSES 64
+
 /* Shadow rays stop this fraction short of the light so they do not hit the emitter itself. */
 #define RENDER_SHADOW_EPS 1e-3f
 
@@ -73,9 +76,54 @@ static float emitter_weight(const render_settings *set, int bounce, bool prev_de
 	return render_power_heuristic(bsdf_pdf, light_pdf);
 }
 
-/* Next-event estimation from hit point p: one light picked by power, one sample of it. */
+/* A shadow ray crosses at most this many transparent surfaces; beyond, it counts as blocked. */
+#define RENDER_SHADOW_MAX_CROSSINGS 16
+
+/* Whether a shadow ray passes the transparent surface of material b (settings decide for glass). */
+static bool shadow_passes(const render_settings *set, const bsdf_params *b)
+{
+	return b->clear.kind == BSDF_CLEAR_THIN || (b->clear.kind == BSDF_CLEAR_DIELECTRIC && !set->opaque_glass_shadows);
+}
+
+/* What reaches p from the light at tmax along the shadow ray: 1 when nothing is in between, 0
+ * behind an opaque surface, the product of bsdf_clear_shadow at each transparent surface crossed
+ * (and the fade of a dielectric's interior between its entry and its exit) otherwise. */
+static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax)
+{
+	if (!s->occluded(s->user, &ray, 0.0f, tmax))
+		return v3s(1.0f);
+	vec3 tr = v3s(1.0f);
+	int inside = -1;
+	float t_in = 0.0f, t_done = 0.0f;
+	for (int k = 0; s->shadow_closest && k < RENDER_SHADOW_MAX_CROSSINGS; k++) {
+		render_hit h = {0};
+		if (!s->shadow_closest(s->user, &ray, 0.0f, tmax - t_done, &h))
+			return tr;
+		if (h.material < 0 || (size_t)h.material >= s->material_count)
+			return v3s(0.0f);
+		const bsdf_params *b = &s->materials[h.material];
+		if (!shadow_passes(set, b) || (s->sss && s->sss[h.material]))
+			return v3s(0.0f);
+		float c = v3_dot(ray.d, h.ng);
+		tr = v3_mul(tr, bsdf_clear_shadow(b, c));
+		t_done += h.t;
+		if (b->clear.kind == BSDF_CLEAR_DIELECTRIC && c < 0.0f) {
+			inside = h.material, t_in = t_done;
+		} else if (b->clear.kind == BSDF_CLEAR_DIELECTRIC && inside == h.material) {
+			tr = v3_mul(tr, bsdf_fade_apply(&b->clear.fade, t_done - t_in));
+			inside = -1;
+		}
+		if (!(v3_max_comp(tr) > 0.0f))
+			return v3s(0.0f);
+		ray.o = offset_origin(h.p, h.scale, c > 0.0f ? h.ng : v3_neg(h.ng));
+	}
+	return v3s(0.0f);
+}
+
+/* Next-event estimation from hit point p: one light picked by power, one sample of it. lobe_prob:
+ * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, rng *g)
+			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, rng *g)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -94,13 +142,14 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	if (!ls_out.shadowless && s->occluded(s->user, &shadow, 0.0f, tmax))
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax);
+	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY)
 		      ? 1.0f
-		      : render_power_heuristic(light_pdf, bsdf_pdf(b, wo_local, wi_local));
-	return v3_scale(v3_mul(fval, ls_out.li), w * fabsf(wi_local.z) / light_pdf);
+		      : render_power_heuristic(light_pdf, lobe_prob * bsdf_pdf(b, wo_local, wi_local));
+	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
 }
 
 /* ---- subsurface scattering ----------------------------------------------------------------- */
@@ -303,11 +352,17 @@ typedef struct path {
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
 	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
+	bool passed;	     /* thin transparent surfaces were passed since prev_p (same direction) */
+	bool stood_for;	     /* refracted through glass since the last non-delta vertex, whose
+			      * shadow rays passed that glass: emitters found now were counted there */
+	bool scattered;	     /* a non-delta vertex was met */
+	int medium;	     /* the material whose interior the path is in, -1: none */
 } path;
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
 typedef struct vertex {
 	bsdf_params b;
+	float lobe_prob; /* the probability of sampling b's lobes (1 - that of its delta lobes) */
 	frame f;
 	vec3 ng_out;   /* geometric normal on the side of wo */
 	vec3 p;	       /* rays leave from p, offset by p_scale (offset_origin) */
@@ -322,7 +377,7 @@ static inline void add_escaped(const render_scene *s, const render_settings *set
 	for (size_t k = 0; ls && k < ls->infinite_count; k++) {
 		const light *l = &ls->lights[ls->infinite[k]];
 		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
-		float w = emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
+		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 		pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
 	}
 }
@@ -335,8 +390,9 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 	if (hit->light < 0 || !ls || (size_t)hit->light >= ls->count)
 		return;
 	const light *l = &ls->lights[hit->light];
-	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, hit->t, hit->ng);
-	float w = emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
+	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
+	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
+	float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 	pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, l->color), w));
 }
 
@@ -358,6 +414,7 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	v->wo_local = to_local(&v->f, wo);
 	v->p = hit->p;
 	v->p_scale = hit->scale;
+	v->lobe_prob = 1.0f;
 }
 
 /* Next-event estimation at v through the BSDF b (v's own, or a part of it). */
@@ -366,7 +423,7 @@ static inline void add_direct(const render_scene *s, const render_settings *set,
 {
 	if (set->mode != RENDER_BSDF_ONLY)
 		pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p,
-									       v->p_scale, v->wo_local, g)));
+									       v->p_scale, v->wo_local, v->lobe_prob, g)));
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
@@ -418,6 +475,18 @@ static inline bool sss_scatter(const render_scene *s, const render_settings *set
 	return true;
 }
 
+/* Russian roulette past RENDER_RR_DEPTH; false when the path ends. */
+static inline bool roulette(int bounce, rng *g, path *pa)
+{
+	if (bounce + 1 >= RENDER_RR_DEPTH) {
+		float q = fminf(1.0f, v3_max_comp(pa->beta));
+		if (!(rng_float(g) < q))
+			return false;
+		pa->beta = v3_scale(pa->beta, 1.0f / q);
+	}
+	return true;
+}
+
 /* The BSDF sample that continues the path from v, and Russian roulette; false when the path ends.
  * *ray becomes the next ray. */
 static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, render_ray *ray)
@@ -431,16 +500,15 @@ static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, 
 	vec3 wi = to_world(&v->f, wi_local);
 	if (v3_dot(wi, v->ng_out) <= 0.0f)
 		return false;
+	pdf *= v->lobe_prob;
 	pa->beta = v3_mul(pa->beta, v3_scale(fval, fabsf(wi_local.z) / pdf));
 	pa->prev_pdf = pdf;
 	pa->prev_delta = false;
+	pa->passed = pa->stood_for = false;
+	pa->scattered = true;
 	pa->prev_p = v->p, pa->prev_n = v->ng_out;
-	if (bounce + 1 >= RENDER_RR_DEPTH) {
-		float q = fminf(1.0f, v3_max_comp(pa->beta));
-		if (!(rng_float(g) < q))
-			return false;
-		pa->beta = v3_scale(pa->beta, 1.0f / q);
-	}
+	if (!roulette(bounce, g, pa))
+		return false;
 	*ray = (render_ray){offset_origin(v->p, v->p_scale, v->ng_out), v3_normalize(wi)};
 	return true;
 }
@@ -454,14 +522,58 @@ static inline void through_fog(const render_scene *s, const render_ray *ray, flo
 	pa->beta = v3_mul(pa->beta, att);
 }
 
+/* The probability of the delta lobes of v's transparent part against its opaque lobes, by their
+ * weights (0 at an opaque surface, 1 where the opaque part reflects nothing). */
+static inline float delta_prob(const vertex *v, bool entering)
+{
+	if (v->b.clear.kind == BSDF_CLEAR_NONE)
+		return 0.0f;
+	float wd = bsdf_clear_weight(&v->b, v->wo_local, entering), wo = v3_luminance(bsdf_albedo(&v->b));
+	return wo > 0.0f ? wd / (wd + wo) : 1.0f;
+}
+
+/* The path goes on from v by a delta lobe of its transparent part (chosen with probability
+ * p_delta): reflected, refracted into or out of the interior, or straight through a thin surface,
+ * which is no scattering event (the emitter MIS stays with the vertex before it). False when the
+ * path ends; *ray becomes the next ray. */
+static inline bool continue_clear(const render_settings *set, const render_hit *hit, const vertex *v, bool entering,
+				  float p_delta, int bounce, rng *g, path *pa, render_ray *ray)
+{
+	vec3 wi_local, w;
+	bool refracted;
+	if (!bsdf_clear_sample(&v->b, v->wo_local, entering, rng_float(g), &wi_local, &w, &refracted))
+		return false;
+	bool thin = v->b.clear.kind == BSDF_CLEAR_THIN;
+	vec3 wi = thin ? ray->d : v3_normalize(to_world(&v->f, wi_local));
+	vec3 side = refracted ? v3_neg(v->ng_out) : v->ng_out;
+	if (v3_dot(wi, side) <= 0.0f)
+		return false; /* the shading normal sent it to the wrong side of the surface */
+	pa->beta = v3_mul(pa->beta, v3_scale(w, 1.0f / p_delta));
+	if (thin) {
+		pa->passed = true;
+	} else {
+		pa->prev_delta = true;
+		pa->passed = false;
+		if (refracted) {
+			pa->medium = entering ? hit->material : -1;
+			pa->stood_for |= pa->scattered && !set->opaque_glass_shadows;
+		}
+	}
+	if (!roulette(bounce, g, pa))
+		return false;
+	*ray = (render_ray){offset_origin(v->p, v->p_scale, side), wi};
+	return true;
+}
+
 render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
 {
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
-		   .fog_view = true};
-	for (int bounce = 0;; bounce++) {
+		   .fog_view = true, .medium = -1};
+	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
+	for (int bounce = 0, passes = 0;; bounce++) {
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
@@ -471,31 +583,47 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			add_escaped(s, set, bounce, ray.d, &pa);
 			break;
 		}
+		if (pa.medium >= 0)
+			pa.beta = v3_mul(pa.beta, bsdf_fade_apply(&s->materials[pa.medium].clear.fade, hit.t));
 		add_emitted(s, set, bounce, ray.d, &hit, &pa);
-		if (bounce == 0) {
+		if (bounce == 0 && passes == 0) {
 			out.depth = hit.t;
 			out.normal = v3_dot(hit.ns, ray.d) > 0.0f ? v3_neg(hit.ns) : hit.ns;
 		}
+		bool at_cap = bounce >= set->max_trace_level; /* then only thin surfaces are passed */
 		if (sphere_light >= 0 || hit.material < 0 || (size_t)hit.material >= s->material_count ||
-		    bounce >= set->max_trace_level)
+		    (at_cap && s->materials[hit.material].clear.kind != BSDF_CLEAR_THIN))
 			break;
 		vec3 wo = v3_neg(ray.d);
 		vertex v;
 		make_vertex(s, &hit, wo, &v);
 		/* A POV-Ray finish's ambient and emission: seen by every ray, never sampled as a light. */
 		pa.radiance = v3_add(pa.radiance, v3_mul(pa.beta, v.b.emit));
-		if (bounce == 0)
+		if (bounce == 0 && passes == 0)
 			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
+		bool entering = v3_dot(hit.ng, wo) >= 0.0f; /* normals point out of objects */
+		float p_delta = sm ? 0.0f : delta_prob(&v, entering);
+		v.lobe_prob = 1.0f - p_delta;
 		if (sm) {
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-		} else {
+		} else if (v.lobe_prob > 0.0f && !at_cap) {
 			add_direct(s, set, &v.b, &v, g, &pa);
 		}
-		if (!continue_path(&v, bounce, g, &pa, &ray))
+		bool delta = p_delta > 0.0f && rng_float(g) < p_delta;
+		if (at_cap && !delta)
 			break;
-		pa.fog_view = pa.fog_view && pa.prev_pdf >= RENDER_FOG_MIRROR_PDF;
+		if (delta) { /* a delta continuation keeps the camera ray's fog, as a mirror's does */
+			if (!continue_clear(set, &hit, &v, entering, p_delta, bounce, g, &pa, &ray))
+				break;
+			if (v.b.clear.kind == BSDF_CLEAR_THIN && ++passes < RENDER_MAX_PASSES)
+				bounce--;
+		} else if (!continue_path(&v, bounce, g, &pa, &ray)) {
+			break;
+		} else {
+			pa.fog_view = pa.fog_view && pa.prev_pdf >= RENDER_FOG_MIRROR_PDF;
+		}
 	}
 	out.radiance = pa.radiance;
 	return out;

@@ -77,6 +77,10 @@ typedef struct render_scene {
 	bool (*intersect)(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit);
 	/* Any hit with t in (tmin, tmax): the shadow test. Surfaces marked no_shadow should be skipped. */
 	bool (*occluded)(void *user, const render_ray *ray, float tmin, float tmax);
+	/* Optional (NULL: every surface a shadow ray meets is opaque): the nearest hit with t in
+	 * (tmin, tmax) on the surfaces occluded sees, filled like intersect's; shadow rays walk
+	 * through transparent ones with it (doc/language.md "Transparency and interiors"). */
+	bool (*shadow_closest)(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit);
 	/* Optional (NULL: materials are used as they are): applies textures and normal maps at the
 	 * hit, starting from *params = materials[hit->material] and *ns = hit->ns. Thread-safe. */
 	void (*shade)(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns);
@@ -124,6 +128,11 @@ typedef struct render_settings {
 	int max_trace_level; /* >= 1 */
 	render_mode mode;
 	sss_circle_weight circle_weight; /* exact (default, 0) or the talk's, for comparison */
+	/* false (default): shadow rays pass through dielectrics tinted (POV-Ray's shadows; paths
+	 * refracted after a diffuse bounce then see no emitter, the shadow ray stood for them);
+	 * true: dielectrics block shadow rays and only paths find the light through them (caustics,
+	 * unbiased, noisy). Thin transparent surfaces pass shadow rays in both (exact). */
+	bool opaque_glass_shadows;
 } render_settings;
 
 /* One camera sample: radiance and the AOVs of the first surface hit (zero where the ray escapes). */

@@ -160,6 +160,24 @@ static bool world_occluded(void *user, const render_ray *ray, float tmin, float 
 	return w->shadow && tlas_occluded(w->shadow, &r);
 }
 
+/* No shadow ray steps over more no_shadow surfaces than this (then it finds nothing). */
+#define RENDER_SHADOW_SKIPS 64
+
+/* render_scene.shadow_closest: the nearest hit of world_intersect on an instance that casts
+ * shadows (no_shadow ones are stepped over, along the same ray). */
+static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, float tmax, render_hit *hit)
+{
+	const world *w = user;
+	for (int k = 0; k < RENDER_SHADOW_SKIPS; k++) {
+		if (!world_intersect(user, ray, tmin, tmax, hit))
+			return false;
+		if (hit->object >= w->n_insts || !w->insts[hit->object].no_shadow)
+			return true;
+		tmin = nextafterf(hit->t, INFINITY);
+	}
+	return false;
+}
+
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
  * (through the mesh's tangents, which the build made for it) at the hit. */
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
@@ -191,10 +209,16 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	}
 }
 
-/* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables. */
+/* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables.
+ * Shadow rays walk through surfaces only when some material is transparent: elsewhere an
+ * occluded shadow ray costs no closest-hit query. */
 void world_bind(world *w)
 {
+	bool clear = false;
+	for (size_t i = 0; i < w->n_materials; i++)
+		clear |= w->bsdfs[i].clear.kind != BSDF_CLEAR_NONE;
 	w->rs = (render_scene){.user = w, .intersect = world_intersect, .occluded = world_occluded,
+			       .shadow_closest = clear ? world_shadow_closest : NULL,
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,

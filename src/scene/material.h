@@ -46,7 +46,12 @@ typedef struct scene_material {
 	const char *image; /* albedo texture path (resolved against the naming file's folder), or NULL */
 	float diffuse, specular, roughness; /* texture finish; diffuse material: 1, 0, 1 */
 	scene_finish finish; /* the rest of a texture's POV-Ray finish (scene/finish.h) */
-	float ior; /* texture interior { ior }; 0 when none */
+	float ior; /* texture interior { ior }; 0 when none, 1 for an interior without ior */
+	/* POV-Ray's transparency (doc/language.md "Transparency and interiors"): the pigment
+	 * colour's filter and transmit, each in [0, 1], and the interior's fade. */
+	float filter, transmit;
+	float fade_distance, fade_power; /* 0: no fade */
+	vec3 fade_color;		 /* in [0, 1] */
 	vec3 emission; /* any kind may emit */
 	scene_sss sss; /* MAT_SKIN, MAT_WAX, MAT_MARBLE */
 	struct scene_material *next;

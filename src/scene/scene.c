@@ -368,8 +368,14 @@ static void dump_material(FILE *o, const scene_material *m)
 		if (m->image)
 			fprintf(o, " image \"%s\"", m->image);
 		fprintf(o, " diffuse %g specular %g roughness %g", m->diffuse, m->specular, m->roughness);
+		if (m->filter > 0 || m->transmit > 0)
+			fprintf(o, " filter %g transmit %g", m->filter, m->transmit);
 		if (m->ior > 0)
 			fprintf(o, " ior %g", m->ior);
+		if (m->fade_distance > 0 || m->fade_power > 0) {
+			fprintf(o, " fade_distance %g fade_power %g", m->fade_distance, m->fade_power);
+			dump_v3(o, "fade_color", m->fade_color);
+		}
 		fputc('\n', o);
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);

@@ -101,6 +101,9 @@ object { Balls[0] }
 #declare Paint = pigment { rgb <1, 0, 0> }
 #declare Gloss = finish { specular 0.5 }
 #declare Glass = interior { ior 1.5 }
+// rule: interior_item
+#declare Fading = interior { Glass fade_distance 2 fade_power 1001 fade_colour rgb <1, 0.5, 0.2> fade_color rgb 0.5 }
+sphere { 0, 1 pigment { rgbft <1, 1, 1, 0.3, 0.4> } interior { Fading ior 1.33 } }
 #declare Eye = camera { location -z }
 #declare Lamp = light_source { y, 1 }
 light_source { Lamp translate x }

@@ -3,6 +3,7 @@
 #ifndef CIRCE_TESTS_RENDER_SCENES_H
 #define CIRCE_TESTS_RENDER_SCENES_H
 
+#include "render/camera.h"
 #include "render/integrator.h"
 
 #include <string.h>
@@ -120,6 +121,17 @@ static inline bool ts_occluded(void *user, const render_ray *r, float tmin, floa
 {
 	render_hit h;
 	return ts_intersect(user, r, tmin, tmax, &h);
+}
+
+/* A camera at loc looking at `at` with horizontal FOV angle, for a w x h image; false when
+ * cam_init refuses it. */
+static inline bool ts_camera(vec3 loc, vec3 at, float angle, int w, int h, cam *c)
+{
+	cam_params cp = cam_params_default();
+	cp.location = v3_to_d3(loc);
+	cp.look_at = v3_to_d3(at);
+	cp.angle_deg = angle;
+	return cam_init(c, &cp, w, h);
 }
 
 static inline void ts_init(ts_scene *s)

@@ -64,12 +64,8 @@ static void expect_image(const char *what, const image *im, double want, double 
 /* A camera at loc looking at `at` with horizontal FOV angle, for a w x h image. */
 static cam make_cam(vec3 loc, vec3 at, float angle, int w, int h)
 {
-	cam_params cp = cam_params_default();
-	cp.location = v3_to_d3(loc);
-	cp.look_at = v3_to_d3(at);
-	cp.angle_deg = angle;
 	cam c;
-	CHECK(cam_init(&c, &cp, w, h), "camera");
+	CHECK(ts_camera(loc, at, angle, w, h, &c), "camera");
 	return c;
 }
 

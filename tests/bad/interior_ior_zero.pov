@@ -1,0 +1,1 @@
+sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 0 } }
