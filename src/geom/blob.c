@@ -280,20 +280,25 @@ static double blob_step(const shape_desc *s, double tol, double *rc_out)
 	return fmin(sqrt(8 * tol * rc), rc / 3);
 }
 
-bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
+/* The largest distance of the triangles' centres from the iso-surface, to first order
+ * (|F - threshold| / |grad F|): what the mesh reached, reported as its tolerance. */
+static double measured_tol(const shape_desc *s, const shape_builder *b)
 {
-	dvec3 lo, hi;
-	shape_bounds(s, &lo, &hi);
-	double rc, h = blob_step(s, acc->tol, &rc);
-	dvec3 ext = d3_sub(hi, lo);
-	/* Coarsen until the grid fits, and say what accuracy that leaves. */
-	for (;;) {
-		double n = (ext.x / h + 3) * (ext.y / h + 3) * (ext.z / h + 3);
-		if (n <= BLOB_MAX_GRID_POINTS)
-			break;
-		h *= 1.05;
+	double w = 0;
+	for (uint32_t t = 0; t < b->nt; t++) {
+		const uint32_t *i = &b->idx[3 * t];
+		dvec3 c = d3_scale(v3_to_d3(v3_add(v3_add(b->pos[i[0]], b->pos[i[1]]), b->pos[i[2]])), 1.0 / 3), g;
+		double f = field_grad(s, c, &g) - s->threshold, gl = d3_length(g);
+		if (gl > 0)
+			w = fmax(w, fabs(f) / gl);
 	}
-	*tol_out = fmax(acc->tol, h * h / (8 * rc));
+	return w;
+}
+
+/* One polygonisation at grid step h into b; false (reported) past the limits. */
+static bool blob_at(const shape_desc *s, dvec3 lo, dvec3 hi, double h, shape_builder *b, diag *d, diag_loc loc)
+{
+	dvec3 ext = d3_sub(hi, lo);
 	grid G = {.lo = d3_sub(lo, d3(h, h, h)), .h = h};
 	G.nx = (uint32_t)ceil(ext.x / h) + 3, G.ny = (uint32_t)ceil(ext.y / h) + 3, G.nz = (uint32_t)ceil(ext.z / h) + 3;
 	size_t np = (size_t)G.nx * G.ny * G.nz;
@@ -305,8 +310,7 @@ bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, doubl
 	for (size_t i = 0; i < np; i++)
 		G.f[i] = (float)-s->threshold;
 	splat(s, &G);
-	/* The triangles to come, counted before any is made: six tetrahedra a crossed cube, two
-	 * triangles at most each. */
+	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
 	size_t crossed = 0;
 	for (uint32_t k = 0; k + 1 < G.nz; k++)
 		for (uint32_t j = 0; j + 1 < G.ny; j++)
@@ -318,20 +322,55 @@ bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, doubl
 				}
 				crossed += in && outp;
 			}
-	if (crossed * 6 > SHAPE_MAX_TRIANGLES) { /* about six triangles a crossed cube, measured */
+	if (crossed * 6 > SHAPE_MAX_TRIANGLES) {
 		mem_free(G.f);
 		diag_error(d, loc, "the blob would make about %zu triangles (the limit of one shape is %u)", crossed * 6,
 			   SHAPE_MAX_TRIANGLES);
 		return false;
 	}
-	shape_builder b;
-	sb_init(&b);
-	mt t = {.s = s, .G = &G, .b = &b};
+	sb_init(b);
+	mt t = {.s = s, .G = &G, .b = b};
 	march(&t);
 	mem_free(G.f), mem_free(t.map.key), mem_free(t.map.val);
 	if (t.failed)
-		b.failed = true;
-	if (!b.failed)
-		project(s, &b, h);
+		b->failed = true;
+	if (!b->failed)
+		project(s, b, h);
+	return true;
+}
+
+/* The grid step the grid's size allows: h grown until the grid has at most BLOB_MAX_GRID_POINTS. */
+static double fit_step(dvec3 ext, double h)
+{
+	while ((ext.x / h + 3) * (ext.y / h + 3) * (ext.z / h + 3) > BLOB_MAX_GRID_POINTS)
+		h *= 1.05;
+	return h;
+}
+
+bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
+{
+	dvec3 lo, hi;
+	shape_bounds(s, &lo, &hi);
+	double rc, h0 = blob_step(s, acc->tol, &rc);
+	dvec3 ext = d3_sub(hi, lo);
+	double h = fit_step(ext, h0);
+	shape_builder b;
+	if (!blob_at(s, lo, hi, h, &b, d, loc))
+		return false;
+	double got = b.failed ? 0 : measured_tol(s, &b);
+	/* Where sharp creases (negative components) leave it coarser than asked, once finer, as far as
+	 * the grid allows: the error falls as h^2. */
+	double h2 = fit_step(ext, h * fmax(sqrt(acc->tol / fmax(got, 1e-300)), 0.5));
+	if (!b.failed && got > acc->tol && h2 < h * 0.95) {
+		shape_builder fine;
+		if (blob_at(s, lo, hi, h2, &fine, d, loc) && !fine.failed) {
+			sb_free(&b);
+			b = fine;
+			got = measured_tol(s, &b);
+		} else {
+			sb_free(&fine);
+		}
+	}
+	*tol_out = fmax(acc->tol, got);
 	return sb_finish(&b, out, false, "blob", d, loc);
 }

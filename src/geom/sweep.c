@@ -146,6 +146,24 @@ static uint32_t flatten(const seg2 *g, double tol, double *xy, double *txy)
 
 /* ---- lathe and sor: a profile <r, y> turned about y ---- */
 
+/* Segments around a circle of radius r: at least `given`, and enough that a chord stands at most
+ * tol inside it (r (1 - cos(pi / S)) <= tol), at most 4096. */
+static uint32_t around_segments(uint32_t given, double r, double tol)
+{
+	double need = r > tol ? ceil(M_PI / acos(1 - tol / r)) : 3;
+	double S = fmax(given, need);
+	return S > 4096 ? 4096 : S < 3 ? 3 : (uint32_t)S;
+}
+
+/* The largest |x| of a profile's points (a bound of its radius within the tolerance). */
+static double max_radius(const double *pts, uint32_t n, int stride)
+{
+	double r = 0;
+	for (uint32_t i = 0; i < n; i++)
+		r = fmax(r, fabs(pts[(size_t)stride * i]));
+	return r;
+}
+
 /* A profile sample: position, tangent, and v (POV-Ray's UV). */
 typedef struct prof {
 	double r, y, dr, dy, v;
@@ -215,10 +233,12 @@ bool shape_lathe(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag
 		return false;
 	}
 	uint32_t ns = lathe_segs(s, sg);
+	/* half the tolerance along the profile, half around it */
+	double tol = 0.5 * acc->tol;
 	size_t np = 0;
 	for (uint32_t i = 0; i < ns; i++)
-		np += shape_cubic_steps(sg[i].A, sg[i].B, acc->tol) + 1;
-	size_t S = acc->segments, tris = 2 * np * S;
+		np += shape_cubic_steps(sg[i].A, sg[i].B, tol) + 1;
+	size_t S = around_segments(acc->segments, 1.2 * max_radius(s->pts, s->n_pts, 2), tol), tris = 2 * np * S;
 	if (tris > SHAPE_MAX_TRIANGLES) {
 		mem_free(sg);
 		diag_error(d, loc, "the lathe would make %zu triangles (the limit of one shape is %u)", tris,
@@ -234,7 +254,7 @@ bool shape_lathe(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag
 	uint32_t k = 0;
 	double area = 0; /* the profile's orientation: closed, by its area; open, by its rise */
 	for (uint32_t i = 0; i < ns; i++) {
-		uint32_t m = shape_cubic_steps(sg[i].A, sg[i].B, acc->tol);
+		uint32_t m = shape_cubic_steps(sg[i].A, sg[i].B, tol);
 		for (uint32_t j = 0; j <= m; j++) {
 			double p[2], dp[2], t = (double)j / m;
 			seg_at(&sg[i], t, p, dp);
@@ -322,10 +342,12 @@ bool shape_sor(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *
 	size_t np = 0;
 	for (uint32_t i = 0; i < ns; i++) {
 		sor_coef(s->pts, i, cf[i]);
-		steps[i] = sor_steps(cf[i], s->pts[2 * i + 3], s->pts[2 * i + 5], acc->tol);
+		steps[i] = sor_steps(cf[i], s->pts[2 * i + 3], s->pts[2 * i + 5], 0.5 * acc->tol);
 		np += steps[i] + 1;
 	}
-	size_t S = acc->segments, tris = 2 * np * S + 2 * S;
+	/* half the tolerance along the profile, half around it */
+	size_t S = around_segments(acc->segments, 1.2 * max_radius(s->pts, s->n_pts, 2), 0.5 * acc->tol);
+	size_t tris = 2 * np * S + 2 * S;
 	prof *pr = tris <= SHAPE_MAX_TRIANGLES ? mem_alloc(np, sizeof *pr) : NULL;
 	if (!pr) {
 		mem_free(cf), mem_free(steps);
@@ -694,10 +716,10 @@ bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *ou
 	for (uint32_t i = 0; i < s->n_pts; i++)
 		rmax = fmax(rmax, s->pts[4 * i + 3]);
 	uint32_t S = (uint32_t)ceil(acc->segments * fmin(1.0, rmax / fmax(R, 1e-300)));
-	S = S < 16 ? 16 : S;
+	S = around_segments(S < 16 ? 16 : S, rmax, 0.5 * acc->tol);
 	size_t rings = 0;
 	for (uint32_t i = 0; i < np; i++)
-		rings += sweep_steps(s, i, acc->tol) + 1 + (s->spline == SHAPE_LINEAR ? S : 0);
+		rings += sweep_steps(s, i, 0.5 * acc->tol) + 1 + (s->spline == SHAPE_LINEAR ? S : 0);
 	rings += S; /* the caps' rings: at most S / 2 each */
 	size_t tris = 2 * rings * S;
 	if (tris > SHAPE_MAX_TRIANGLES) {
@@ -709,8 +731,8 @@ bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *ou
 	sb_init(&b);
 	if (s->spline == SHAPE_LINEAR) /* each piece its own capsule: their union is POV-Ray's sweep */
 		for (uint32_t i = 0; i < np; i++)
-			sweep_tube(&b, s, i, i + 1, acc->tol, S);
+			sweep_tube(&b, s, i, i + 1, 0.5 * acc->tol, S);
 	else
-		sweep_tube(&b, s, 0, np, acc->tol, S);
+		sweep_tube(&b, s, 0, np, 0.5 * acc->tol, S);
 	return sb_finish(&b, out, false, "sphere_sweep", d, loc);
 }

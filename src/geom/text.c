@@ -111,9 +111,10 @@ static int gp_cubic(const FT_Vector *c1, const FT_Vector *c2, const FT_Vector *t
 static void gp_clean(glyph_path *g)
 {
 	uint32_t w = 0, wc = 0;
-	for (uint32_t k = 0, a = 0; k < g->nc; a += g->counts[k], k++) {
+	for (uint32_t k = 0, a = 0, n; k < g->nc; a += n, k++) {
 		uint32_t start = w;
-		for (uint32_t i = 0; i < g->counts[k]; i++) {
+		n = g->counts[k]; /* read before counts[wc] (wc <= k) is written */
+		for (uint32_t i = 0; i < n; i++) {
 			const double *p = &g->xy[2 * (a + i)];
 			if (w > start && p[0] == g->xy[2 * (w - 1)] && p[1] == g->xy[2 * (w - 1) + 1])
 				continue;
