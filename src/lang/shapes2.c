@@ -417,7 +417,6 @@ static bool text(parser *p, shape_desc *s)
 	diag_loc fl = lang_peek(p)->loc;
 	const char *name;
 	TRY(lang_string(p, "after 'ttf'", &name));
-	TRY(font_path(p, name, fl, &s->font));
 	comma(p);
 	diag_loc sl = lang_peek(p)->loc;
 	TRY(lang_string(p, "as the text's string", &s->text));
@@ -427,7 +426,8 @@ static bool text(parser *p, shape_desc *s)
 	TRY(lang_float(p, "as the text's depth", &s->depth));
 	comma(p);
 	TRY(lang_vec3(p, "as the text's offset", &s->offset));
-	return true;
+	/* found as POV-Ray opens it: after its string and numbers are read */
+	return font_path(p, name, fl, &s->font);
 }
 
 scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
