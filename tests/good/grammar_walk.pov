@@ -100,3 +100,13 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 light_source { Lamp translate x }
 #default { texture { pigment { Paint } } finish { Gloss } }
 sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }
+// rule: pov_shape, lathe, spline_type, uv_list, sor, prism, sphere_sweep, sweep_sphere
+#declare Vase = lathe { quadratic_spline 4, <0, 0>, <1, 0>, <1, 1>, <0.5, 2> sturm }
+object { Vase translate x }
+sor { 4, <0, 0>, <1, 0>, <0.5, 1>, <0.7, 2> open }
+prism { conic_sweep bezier_spline 0.5, 1, 4, <1, 0>, <1, 1>, <0, 1>, <1, 0> }
+sphere_sweep { b_spline 4, <0, 0, 0>, 0.5, <1, 1, 0> 0.5, <2, 0, 0>, 0.5, <3, 1, 0>, 0.5 tolerance 1e-4 }
+// rule: blob, blob_item, text
+blob { threshold 0.6 component 1, 1, <0, 0, 0> sphere { <1, 0, 0>, 1, strength 1 scale 2 }
+	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 } }
+text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
