@@ -38,9 +38,15 @@ cat >"$work/text.pov" <<POV
 $cam
 text { ttf "timrom.ttf" "circe" 0.3, 0 translate <-1.2, 0.5, 0> }
 POV
+cat >"$work/bicubic_patch.pov" <<POV
+$cam
+bicubic_patch { type 1 <-2, 0, -2>, <-1, 1, -2>, <1, -1, -2>, <2, 0, -2>, <-2, 1, -1>, <-1, 3, -1>,
+	<1, 2, -1>, <2, 0, -1>, <-2, 0, 1>, <-1, -1, 1>, <1, 2, 1>, <2, 1, 1>, <-2, 0, 2>, <-1, 1, 2>,
+	<1, 0, 2>, <2, 0, 2> }
+POV
 echo "| shape | triangles | tolerance (units) | check time (s, best of 3) |"
 echo "|---|---:|---:|---:|"
-for s in lathe sor prism sphere_sweep blob text; do
+for s in lathe sor prism sphere_sweep blob text bicubic_patch; do
 	best=""
 	for run in 1 2 3; do
 		t0=$(date +%s.%N)

@@ -164,6 +164,13 @@ void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 			}
 		}
 		break;
+	case SHAPE2_BICUBIC: /* a Bezier patch lies in the hull of its control points */
+		for (uint32_t i = 0; i < 16; i++) {
+			const double *q = &s->pts[3 * i];
+			*lo = d3(fmin(lo->x, q[0]), fmin(lo->y, q[1]), fmin(lo->z, q[2]));
+			*hi = d3(fmax(hi->x, q[0]), fmax(hi->y, q[1]), fmax(hi->z, q[2]));
+		}
+		break;
 	case SHAPE2_TEXT: {
 		size_t n = s->text ? strlen(s->text) : 0;
 		double w = (double)n * (1.0 + fabs(s->offset.x));
@@ -187,6 +194,7 @@ bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	case SHAPE2_SPHERE_SWEEP: return shape_sphere_sweep(s, acc, out, d, loc);
 	case SHAPE2_BLOB: return shape_blob(s, acc, out, tol_out, d, loc);
 	case SHAPE2_TEXT: return shape_text(s, acc, out, d, loc);
+	case SHAPE2_BICUBIC: return shape_bicubic(s, acc, out, d, loc);
 	}
 	return false;
 }

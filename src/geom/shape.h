@@ -20,7 +20,9 @@
 /* The most triangles one shape may make (a sphere's finest level makes 65,024). */
 #define SHAPE_MAX_TRIANGLES 4000000u
 
-typedef enum shape_kind { SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT } shape_kind;
+typedef enum shape_kind {
+	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC
+} shape_kind;
 
 /* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
  * cubic (Catmull-Rom), b_spline). */
@@ -53,6 +55,12 @@ typedef struct shape_desc {
 	const char *text;
 	double depth;
 	dvec3 offset;
+	/* bicubic_patch: pts holds 16 control points (3 doubles each, row i along u, column j along
+	 * v, as POV-Ray reads them); st the corners' texture coordinates (uv_vectors); POV-Ray's
+	 * type, flatness, u_steps and v_steps are kept for the dump (the mesh follows the accuracy) */
+	double st[8];
+	int patch_type, u_steps, v_steps;
+	double flatness;
 } shape_desc;
 
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
@@ -119,5 +127,6 @@ bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag
 bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 
 #endif

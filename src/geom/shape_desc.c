@@ -4,7 +4,7 @@
 
 const char *shape_kind_name(shape_kind k)
 {
-	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text"};
+	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
 	return names[k];
 }
 
@@ -40,6 +40,13 @@ void shape_dump(FILE *o, const shape_desc *s)
 				fprintf(o, "  sphere %g %g %g", c->a.x, c->a.y, c->a.z);
 			fprintf(o, " radius %g strength %g%s\n", c->radius, c->strength, c->has_xf ? " transformed" : "");
 		}
+		break;
+	case SHAPE2_BICUBIC:
+		fprintf(o, " type %d flatness %g u_steps %d v_steps %d uv_vectors %g %g %g %g %g %g %g %g\n", s->patch_type,
+			s->flatness, s->u_steps, s->v_steps, s->st[0], s->st[1], s->st[2], s->st[3], s->st[4], s->st[5],
+			s->st[6], s->st[7]);
+		for (uint32_t i = 0; i < 16; i++)
+			fprintf(o, "  p %g %g %g\n", s->pts[3 * i], s->pts[3 * i + 1], s->pts[3 * i + 2]);
 		break;
 	case SHAPE2_TEXT:
 		fprintf(o, " ttf \"%s\" \"%s\" depth %g offset %g %g %g\n", s->font, s->text, s->depth, s->offset.x,

@@ -736,3 +736,81 @@ bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *ou
 		sweep_tube(&b, s, 0, np, 0.5 * acc->tol, S);
 	return sb_finish(&b, out, false, "sphere_sweep", d, loc);
 }
+
+/* ---- bicubic_patch: a Bezier patch of 4 x 4 control points ---- */
+
+/* The patch's point and tangents at (u, v) (POV-Ray's bezier_value: row i of the control points
+ * along u, column j along v, Bernstein weights). */
+static void patch_at(const double *cp, double u, double v, dvec3 *P, dvec3 *Pu, dvec3 *Pv)
+{
+	double bu[4] = {(1 - u) * (1 - u) * (1 - u), 3 * u * (1 - u) * (1 - u), 3 * u * u * (1 - u), u * u * u};
+	double bv[4] = {(1 - v) * (1 - v) * (1 - v), 3 * v * (1 - v) * (1 - v), 3 * v * v * (1 - v), v * v * v};
+	double du[4] = {-3 * (1 - u) * (1 - u), 3 * (1 - u) * (1 - 3 * u), 3 * u * (2 - 3 * u), 3 * u * u};
+	double dv[4] = {-3 * (1 - v) * (1 - v), 3 * (1 - v) * (1 - 3 * v), 3 * v * (2 - 3 * v), 3 * v * v};
+	*P = *Pu = *Pv = d3(0, 0, 0);
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++) {
+			dvec3 c = d3(cp[3 * (4 * i + j)], cp[3 * (4 * i + j) + 1], cp[3 * (4 * i + j) + 2]);
+			*P = d3_add(*P, d3_scale(c, bu[i] * bv[j]));
+			*Pu = d3_add(*Pu, d3_scale(c, du[i] * bv[j]));
+			*Pv = d3_add(*Pv, d3_scale(c, bu[i] * dv[j]));
+		}
+}
+
+/* The largest second difference of the control net along one direction, times n (n - 1) = 6:
+ * a bound of the patch's second derivative that way (Bezier's derivative is a Bezier of the
+ * differences). */
+static double patch_curvature(const double *cp, bool along_u)
+{
+	double m = 0;
+	for (int a = 0; a < 4; a++)
+		for (int k = 0; k < 2; k++) {
+			double q[3];
+			for (int c = 0; c < 3; c++) {
+				int i0 = along_u ? 4 * k + a : 4 * a + k, st = along_u ? 4 : 1;
+				q[c] = cp[3 * (i0 + 2 * st) + c] - 2 * cp[3 * (i0 + st) + c] + cp[3 * i0 + c];
+			}
+			m = fmax(m, 6 * sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
+		}
+	return m;
+}
+
+bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc)
+{
+	/* a chord over a step h stands M h^2 / 8 off: a third of the tolerance each way, a third for
+	 * the twist between them */
+	double tu = patch_curvature(s->pts, true), tv = patch_curvature(s->pts, false), t3 = acc->tol / 3;
+	double nu = fmax(1, ceil(sqrt(tu / (8 * t3)))), nv = fmax(1, ceil(sqrt(tv / (8 * t3))));
+	nu = fmin(nu, 4096), nv = fmin(nv, 4096);
+	size_t tris = 2 * (size_t)nu * (size_t)nv;
+	if (tris > SHAPE_MAX_TRIANGLES) {
+		diag_error(d, loc, "the bicubic_patch would make %zu triangles (the limit of one shape is %u)", tris,
+			   SHAPE_MAX_TRIANGLES);
+		return false;
+	}
+	uint32_t U = (uint32_t)nu, V = (uint32_t)nv;
+	shape_builder b;
+	sb_init(&b);
+	const double *st = s->st;
+	for (uint32_t i = 0; i <= U; i++)
+		for (uint32_t j = 0; j <= V; j++) {
+			double u = (double)i / U, v = (double)j / V;
+			dvec3 P, Pu, Pv;
+			patch_at(s->pts, u, v, &P, &Pu, &Pv);
+			/* POV-Ray's Compute_Texture_UV of (v, u) over the corners st[0..3] */
+			double a0 = st[0] + v * (st[2] - st[0]), a1 = st[1] + v * (st[3] - st[1]);
+			double b0 = st[6] + v * (st[4] - st[6]), b1 = st[7] + v * (st[5] - st[7]);
+			dvec3 n = d3_cross(Pu, Pv);
+			sb_vertex(&b, P, d3_length(n) > 0 ? n : d3(1, 0, 0), a0 + u * (b0 - a0), a1 + u * (b1 - a1));
+		}
+	for (uint32_t i = 0; i < U; i++)
+		for (uint32_t j = 0; j < V; j++) {
+			dvec3 P, Pu, Pv;
+			patch_at(s->pts, (i + 0.5) / U, (j + 0.5) / V, &P, &Pu, &Pv);
+			dvec3 want = d3_cross(Pu, Pv);
+			uint32_t a = i * (V + 1) + j, c = a + V + 1;
+			sb_tri(&b, a, c, c + 1, want);
+			sb_tri(&b, a, c + 1, a + 1, want);
+		}
+	return sb_finish(&b, out, true, "bicubic_patch", d, loc);
+}

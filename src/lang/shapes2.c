@@ -39,11 +39,21 @@ static bool accept_word(parser *p, const char *w)
 
 int lang_pov_shape_kind(const lang_token *t)
 {
-	static const char *const words[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text"};
-	for (int k = 0; k < 6; k++)
+	static const char *const words[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
+	for (int k = 0; k < 7; k++)
 		if (word_is(t, words[k]))
 			return k;
 	return -1;
+}
+
+/* A number that a point may follow without a comma (`u_steps 4 <0, 0, 0>`): read as an additive
+ * expression, where '<' begins the next vector rather than a comparison, as in POV-Ray. */
+static bool num(parser *p, const char *what, double *out)
+{
+	dvec3 v;
+	TRY(lang_vec3(p, what, &v));
+	*out = v.x;
+	return true;
 }
 
 /* POV-Ray's Parse_Comma: an optional ','. */
@@ -54,7 +64,7 @@ static bool count(parser *p, const char *what, long lo, uint32_t *out)
 	long n;
 	diag_loc at = lang_peek(p)->loc;
 	double x;
-	TRY(lang_float(p, what, &x));
+	TRY(num(p, what, &x));
 	if (!(x >= lo) || !(x <= LANG_MAX_SHAPE_POINTS))
 		return lang_error(p, at, "%s must be %ld to %d, found %g", what, lo, LANG_MAX_SHAPE_POINTS, x);
 	n = (long)x; /* POV-Ray truncates: (int)Parse_Float() */
@@ -434,6 +444,69 @@ static bool text(parser *p, shape_desc *s)
 	return font_path(p, name, fl, &s->font);
 }
 
+/* bicubic_patch = "bicubic_patch" "{" ( bicubic_item* | float float float ) ','? vector ( ','? vector )*15
+ *                  ','? ...   (bicubic_item: type, flatness, u_steps, v_steps, accuracy, uv_vectors) */
+static bool bicubic_patch(parser *p, shape_desc *s)
+{
+	static const double st0[8] = {0, 0, 1, 0, 1, 1, 0, 1}; /* POV-Ray's default corners */
+	memcpy(s->st, st0, sizeof st0);
+	s->flatness = 0.1; /* POV-Ray's constructor */
+	double x;
+	if (lang_peek(p)->kind == LTK_NUMBER) { /* the old form: type [flatness] u_steps v_steps */
+		TRY(num(p, "as the patch type", &x));
+		s->patch_type = (int)x;
+		if (s->patch_type == 2 || s->patch_type == 3)
+			TRY(num(p, "as the flatness", &s->flatness));
+		TRY(num(p, "as u_steps", &x));
+		s->u_steps = (int)x;
+		TRY(num(p, "as v_steps", &x));
+		s->v_steps = (int)x;
+	} else
+		for (;;) {
+			diag_loc at = lang_peek(p)->loc;
+			if (accept_word(p, "type")) {
+				TRY(num(p, "after 'type'", &x));
+				s->patch_type = (int)x;
+				if (s->patch_type < 0)
+					return lang_error(p, at, "undefined bicubic patch type %d", s->patch_type);
+			} else if (accept_word(p, "flatness")) {
+				TRY(num(p, "after 'flatness'", &s->flatness));
+			} else if (accept_word(p, "u_steps")) {
+				TRY(num(p, "after 'u_steps'", &x));
+				s->u_steps = (int)x;
+			} else if (accept_word(p, "v_steps")) {
+				TRY(num(p, "after 'v_steps'", &x));
+				s->v_steps = (int)x;
+			} else if (accept_word(p, "accuracy")) {
+				TRY(num(p, "after 'accuracy'", &x));
+			} else if (accept_word(p, "uv_vectors")) { /* ends the settings, as in POV-Ray */
+				for (int k = 0; k < 4; k++) {
+					dvec3 v;
+					TRY(lang_vec3(p, "as a corner's <u, v>", &v));
+					s->st[2 * k] = v.x, s->st[2 * k + 1] = v.y;
+					if (k < 3)
+						comma(p);
+				}
+				break;
+			} else
+				break;
+		}
+	if (s->patch_type > 1)
+		s->patch_type = 1; /* POV-Ray: "Patch type no longer supported. Using type 1." */
+	comma(p);
+	s->n_pts = 16;
+	s->pts = arena_alloc(&p->sc->arena, 48, sizeof *s->pts, sizeof(double));
+	if (!s->pts)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	for (int i = 0; i < 16; i++) {
+		dvec3 v;
+		TRY(lang_vec3(p, "as a control point of the patch", &v));
+		s->pts[3 * i] = v.x, s->pts[3 * i + 1] = v.y, s->pts[3 * i + 2] = v.z;
+		comma(p);
+	}
+	return true;
+}
+
 scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
 {
 	shape_desc *s = new_desc(p, (shape_kind)kind);
@@ -446,6 +519,7 @@ scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn 
 	case SHAPE2_PRISM: ok = prism(p, s, kw); break;
 	case SHAPE2_SPHERE_SWEEP: ok = sphere_sweep(p, s); break;
 	case SHAPE2_BLOB: ok = blob(p, s, kw, xf_item); break;
+	case SHAPE2_BICUBIC: ok = bicubic_patch(p, s); break;
 	default: ok = text(p, s); break;
 	}
 	if (!ok)

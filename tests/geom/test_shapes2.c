@@ -378,6 +378,44 @@ static void test_text(void)
 	mesh_free(&m);
 }
 
+/* bicubic_patch: each triangle's centre within tol of the patch at the centre's parameters
+ * (an upper bound of its distance to the surface); the Bernstein sum evaluated here. */
+static dvec3 bezier(const double *cp, double u, double v)
+{
+	double bu[4] = {(1 - u) * (1 - u) * (1 - u), 3 * u * (1 - u) * (1 - u), 3 * u * u * (1 - u), u * u * u};
+	double bv[4] = {(1 - v) * (1 - v) * (1 - v), 3 * v * (1 - v) * (1 - v), 3 * v * v * (1 - v), v * v * v};
+	dvec3 p = d3(0, 0, 0);
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++)
+			p = d3_add(p, d3_scale(d3(cp[12 * i + 3 * j], cp[12 * i + 3 * j + 1], cp[12 * i + 3 * j + 2]), bu[i] * bv[j]));
+	return p;
+}
+
+static void test_bicubic(void)
+{
+	double cp[48] = {-2, 0, -2, -1, 1, -2, 1, -1, -2, 2, 0, -2, -2, 1, -1, -1, 3, -1, 1, 2, -1, 2, 0, -1,
+			 -2, 0, 1,  -1, -1, 1, 1, 2, 1,   2, 1, 1,  -2, 0, 2,  -1, 1, 2, 1, 0, 2,  2, 0, 2};
+	shape_desc s = {.kind = SHAPE2_BICUBIC, .pts = cp, .n_pts = 16, .st = {0, 0, 1, 0, 1, 1, 0, 1}};
+	shape_accuracy acc = {2e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "bicubic_patch");
+	double w = 0;
+	for (uint32_t t = 0; t < m.num_triangles; t++) {
+		const uint32_t *i = &m.indices[3 * t];
+		vec2 uv = v2(0, 0);
+		vec3 c = v3s(0);
+		for (int k = 0; k < 3; k++)
+			uv = v2(uv.x + m.uvs[i[k]].x / 3, uv.y + m.uvs[i[k]].y / 3), c = v3_add(c, v3_scale(m.positions[i[k]], 1.0f / 3));
+		/* the default corners map (v, u) to (s, t) = (v, u) */
+		w = fmax(w, d3_length(d3_sub(v3_to_d3(c), bezier(cp, uv.y, uv.x))));
+	}
+	CHECK(w <= acc.tol, "patch within %g: %g", acc.tol, w);
+	CHECK(flipped_normals(&m) == 0, "patch normals agree with its faces");
+	CHECK(open_edges(&m) > 0, "a patch is open: its rim");
+	mesh_free(&m);
+}
+
 static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
@@ -402,6 +440,7 @@ int main(void)
 	test_sphere_sweep();
 	test_blob();
 	test_text();
+	test_bicubic();
 	test_limit();
 	return check_done("test_shapes2");
 }

@@ -110,3 +110,7 @@ sphere_sweep { b_spline 4, <0, 0, 0>, 0.5, <1, 1, 0> 0.5, <2, 0, 0>, 0.5, <3, 1,
 blob { threshold 0.6 component 1, 1, <0, 0, 0> sphere { <1, 0, 0>, 1, strength 1 scale 2 }
 	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 } }
 text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
+// rule: bicubic_patch, bicubic_item
+bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>
+	<0, 0, 0>, <1, 0, 0>, <2, 0, 0>, <3, 0, 0>, <0, 1, 0>, <1, 1, 1>, <2, 1, 1>, <3, 1, 0>
+	<0, 2, 0>, <1, 2, 1>, <2, 2, 1>, <3, 2, 0>, <0, 3, 0>, <1, 3, 0>, <2, 3, 0>, <3, 3, 0> }
