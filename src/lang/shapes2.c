@@ -9,6 +9,7 @@
 #include "geom/shape.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -121,21 +122,32 @@ static void spline_words(parser *p, shape_desc *s, bool sweeps)
 	}
 }
 
+/* The point count of a lathe or prism (`what`), checked against the least its spline needs
+ * (least[spline]; Bezier: four a segment), with POV-Ray's messages. */
+static bool spline_count(parser *p, shape_desc *s, const char *what, const long least[4])
+{
+	static const char *const names[] = {"linear", "quadratic", "cubic", "Bezier"};
+	char ctx[40];
+	snprintf(ctx, sizeof ctx, "the %s's point count", what);
+	diag_loc at = lang_peek(p)->loc;
+	TRY(count(p, ctx, 0, &s->n_pts));
+	if (s->spline == SHAPE_BEZIER && (s->n_pts % 4 != 0 || s->n_pts == 0))
+		return lang_error(p, at, "a %s with Bezier splines must have four points per segment, found %u", what,
+				  s->n_pts);
+	if (s->n_pts < least[s->spline])
+		return lang_error(p, at, "a %s with %s splines must have at least %ld points, found %u", what,
+				  names[s->spline], least[s->spline], s->n_pts);
+	return true;
+}
+
 /* lathe = "lathe" "{" [ spline_type ] int [ "," ] uv { [ "," ] uv } ... (POV-Ray's counts:
  * linear 2, quadratic 3, cubic 4, Bezier four a segment). */
 static bool lathe(parser *p, shape_desc *s)
 {
 	spline_words(p, s, false);
 	static const long least[] = {2, 3, 4, 4};
-	static const char *const names[] = {"linear", "quadratic", "cubic", "Bezier"};
 	diag_loc at = lang_peek(p)->loc;
-	TRY(count(p, "the lathe's point count", 0, &s->n_pts));
-	if (s->spline == SHAPE_BEZIER && (s->n_pts % 4 != 0 || s->n_pts == 0))
-		return lang_error(p, at, "a lathe with Bezier splines must have four points per segment, found %u",
-				  s->n_pts);
-	if (s->n_pts < least[s->spline])
-		return lang_error(p, at, "a lathe with %s splines must have at least %ld points, found %u",
-				  names[s->spline], least[s->spline], s->n_pts);
+	TRY(spline_count(p, s, "lathe", least));
 	comma(p);
 	TRY(uv_points(p, s->n_pts, &s->pts));
 	/* POV-Ray refuses a negative radius, but at the spline's control points. */
@@ -219,15 +231,7 @@ static bool prism(parser *p, shape_desc *s, diag_loc kw)
 		s->h1 = s->h2, s->h2 = t;
 	}
 	static const long least[] = {3, 5, 6, 4};
-	static const char *const names[] = {"linear", "quadratic", "cubic", "Bezier"};
-	diag_loc at = lang_peek(p)->loc;
-	TRY(count(p, "the prism's point count", 0, &s->n_pts));
-	if (s->spline == SHAPE_BEZIER && (s->n_pts % 4 != 0 || s->n_pts == 0))
-		return lang_error(p, at, "a prism with Bezier splines must have four points per segment, found %u",
-				  s->n_pts);
-	if (s->n_pts < least[s->spline])
-		return lang_error(p, at, "a prism with %s splines must have at least %ld points, found %u",
-				  names[s->spline], least[s->spline], s->n_pts);
+	TRY(spline_count(p, s, "prism", least));
 	if (s->h1 == s->h2)
 		return lang_error(p, kw, "the prism is flat: its two heights are both %g", s->h1);
 	comma(p);
@@ -500,6 +504,8 @@ static bool bicubic_patch(parser *p, shape_desc *s)
 		return lang_error(p, lang_peek(p)->loc, "out of memory");
 	for (int i = 0; i < 16; i++) {
 		dvec3 v;
+		if (lang_peek(p)->kind == LTK_RBRACE)
+			return lang_error(p, lang_peek(p)->loc, "a bicubic_patch needs 16 control points, found %d", i);
 		TRY(lang_vec3(p, "as a control point of the patch", &v));
 		s->pts[3 * i] = v.x, s->pts[3 * i + 1] = v.y, s->pts[3 * i + 2] = v.z;
 		comma(p);

@@ -55,6 +55,46 @@ static size_t open_edges(const mesh *m)
 	return bad;
 }
 
+/* The connected pieces of the mesh, its vertices welded by position (union-find). */
+static int find(int *par, int x)
+{
+	while (par[x] != x)
+		x = par[x] = par[par[x]];
+	return x;
+}
+
+static const mesh *sort_mesh; /* qsort's comparison reads positions through it */
+static int pcmp(const void *x, const void *y)
+{
+	return vcmp(sort_mesh->positions[*(const uint32_t *)x], sort_mesh->positions[*(const uint32_t *)y]);
+}
+
+static int pieces(const mesh *m)
+{
+	uint32_t n = m->num_vertices, *ord = malloc(n * sizeof *ord);
+	int *par = malloc(n * sizeof *par), *weld = malloc(n * sizeof *weld);
+	for (uint32_t i = 0; i < n; i++)
+		ord[i] = i, par[i] = (int)i;
+	sort_mesh = m;
+	qsort(ord, n, sizeof *ord, pcmp);
+	for (uint32_t i = 0; i < n; i++)
+		weld[ord[i]] = i > 0 && vcmp(m->positions[ord[i]], m->positions[ord[i - 1]]) == 0 ? weld[ord[i - 1]] : (int)ord[i];
+	for (uint32_t t = 0; t < m->num_triangles; t++)
+		for (int k = 1; k < 3; k++) {
+			int a = find(par, weld[m->indices[3 * t]]), b = find(par, weld[m->indices[3 * t + k]]);
+			par[a] = b;
+		}
+	int count = 0;
+	char *seen = calloc(n, 1);
+	for (uint32_t t = 0; t < m->num_triangles; t++) {
+		int r = find(par, weld[m->indices[3 * t]]);
+		count += !seen[r];
+		seen[r] = 1;
+	}
+	free(ord), free(par), free(weld), free(seen);
+	return count;
+}
+
 static double volume(const mesh *m)
 {
 	double v = 0;
@@ -347,6 +387,7 @@ static void test_blob(void)
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "candle");
 	CHECK(tol <= 2 * acc.tol, "the candle reached %g (asked %g)", tol, acc.tol);
 	CHECK(open_edges(&m) == 0, "closed candle: %zu open edges", open_edges(&m));
+	CHECK(pieces(&m) == 1, "the candle is one surface: %d pieces", pieces(&m));
 	CHECK(volume(&m) > 0, "candle outward");
 	CHECK(flipped_normals(&m) == 0, "candle normals: %zu flipped", flipped_normals(&m));
 	blob_ctx c = {&s};
