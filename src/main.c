@@ -269,6 +269,11 @@ static void print_check_summary(const char *path, const scene *sc, const world_s
 	       st.subdiv_faces + ws->cage_file_faces);
 	printf("  triangles after tessellation: %zu unique, %zu with instances (%zu subdivision surfaces)\n",
 	       ws->triangles, ws->instanced_triangles, ws->subdiv_surfaces);
+	for (size_t i = 0; i < ws->n_shapes; i++) { /* POV-Ray's shapes: what each became */
+		const world_shape_stat *sh = &ws->shapes[i];
+		printf("  %s at %s:%u: %zu triangles, level %u (within %.3g units of the surface)\n", sh->kind,
+		       sh->loc.src ? sh->loc.src->name : "?", sh->loc.line, sh->triangles, sh->level, sh->tol);
+	}
 	if (st.sss_nonuniform)
 		printf("  SSS objects under a non-uniform scale: %zu (circles become ellipses there: their "
 		       "triangles are flattened into world space at build)\n", st.sss_nonuniform);

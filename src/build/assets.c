@@ -12,7 +12,7 @@
 static const char *kind_name(scene_asset_kind k)
 {
 	static const char *names[] = {[SCENE_ASSET_IMAGE] = "image file", [SCENE_ASSET_MESH] = "mesh file",
-				      [SCENE_ASSET_CAGE] = "cage file"};
+				      [SCENE_ASSET_CAGE] = "cage file", [SCENE_ASSET_FONT] = "font file"};
 	return names[k];
 }
 

@@ -72,6 +72,8 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 /* Frees what w holds and zeroes it. */
 static void world_release(world *w)
 {
+	mem_free((void *)w->stats.shapes);
+	w->stats.shapes = NULL;
 	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
 		mesh_free(&w->geoms[i].m);
 		bvh_free(w->geoms[i].b);

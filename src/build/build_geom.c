@@ -152,6 +152,8 @@ bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_opti
 	case SHAPE_SUBDIV:
 		w->stats.subdiv_surfaces++;
 		return build_subdiv(w, sc, g, opt, m, d);
+	case SHAPE_POV:
+		return build_pov_shape(w, sc, g, opt, d);
 	}
 	diag_error(d, g->loc, "out of memory while tessellating");
 	return false;

@@ -4,6 +4,7 @@
 #define CIRCE_BUILD_BUILD_IMPL_H
 
 #include "build/build.h"
+#include "geom/prim.h"
 #include "geom/subdiv.h"
 #include "render/world.h"
 
@@ -20,7 +21,13 @@ bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d);
 /* build_geom.c */
 bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d);
 
+/* build_shape.c */
+bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d);
+
 /* build_inst.c */
+uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
+		      double cos_axis);
+double axis_scale(const xform *t);
 bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_top(world *w, diag *d);

@@ -84,7 +84,7 @@ static bool flatten_instance(world *w, world_inst *in, size_t slot, bool tangent
 
 /* The largest length an axis of the object takes under t: a sphere's radius in the world (exact
  * under a similarity; under a non-uniform scale, that of the longest axis). */
-static double axis_scale(const xform *t)
+double axis_scale(const xform *t)
 {
 	double s = 0.0;
 	for (int c = 0; c < 3; c++)
@@ -103,8 +103,8 @@ static double axis_scale(const xform *t)
  * silhouette of a sphere of radius r seen from distance dist has angular radius asin(r / dist),
  * so radius_px = focal_px r / sqrt(dist^2 - r^2) on the axis (cos_axis 1); a surface error e r
  * moves it by e radius_px. */
-static uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
-			     double cos_axis)
+uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
+		      double cos_axis)
 {
 	double c = fmax(fmin(cos_axis, 1.0), WORLD_SPHERE_MIN_COS);
 	double radius_px = dist > r ? focal_px * r / sqrt((dist - r) * (dist + r)) / (c * c) : INFINITY;

@@ -2,6 +2,7 @@
  * lights, environment, objects (primitives, meshes, subdivision cages, instances, unions) and
  * materials. Each parse function carries its grammar rule as a comment (grammar/scene.ebnf). */
 #include "lang/parser.h"
+#include "lang/shapes2.h"
 
 #include <limits.h>
 #include <math.h>
@@ -1005,6 +1006,11 @@ static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, con
 			return apply_mods(p, out, start, &m);
 		bool matched;
 		TRY(modifier(p, &m, &matched));
+		if (!matched && lang_peek(p)->kind == LTK_UNSUPPORTED && lang_peek(p)->len == 5 &&
+		    !memcmp(lang_peek(p)->text, "sturm", 5)) { /* POV-Ray's root solver: nothing to a mesh */
+			lang_advance(p);
+			continue;
+		}
 		if (!matched)
 			return bad_item(p, open, what, "a transform, a material, no_shadow");
 	}
@@ -1675,11 +1681,24 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return object_tail(p, out, start, open, "object");
 }
 
-/* object_item = sphere | box | plane | mesh | mesh2 | subdivision_surface | instance | union */
+/* pov_shape = lathe | sor | prism | sphere_sweep | blob | text: the body in shapes2.c */
+static bool pov_shape(parser *p, vecbuf *out, const lang_token *word, diag_loc open)
+{
+	scene_geom *g;
+	TRY(g = lang_pov_shape(p, lang_pov_shape_kind(word), word->loc, transform_item));
+	size_t start = out->len;
+	TRY(place(p, out, g, word->loc));
+	char nm[32];
+	snprintf(nm, sizeof nm, "%.*s", (int)word->len, word->text);
+	return object_tail(p, out, start, open, nm);
+}
+
+/* object_item = sphere | box | plane | mesh | mesh2 | subdivision_surface | instance | union
+ *             | pov_shape */
 static bool object_item(parser *p, vecbuf *out, bool *matched)
 {
 	lang_token t = *lang_peek(p);
-	bool (*fn)(parser *, vecbuf *, diag_loc, diag_loc);
+	bool (*fn)(parser *, vecbuf *, diag_loc, diag_loc) = NULL;
 	switch (t.kind) {
 	case LTK_KW_SPHERE: fn = sphere; break;
 	case LTK_KW_BOX: fn = box; break;
@@ -1690,6 +1709,8 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	case LTK_KW_OBJECT: fn = instance; break;
 	case LTK_KW_UNION: fn = union_block; break;
 	default:
+		if (lang_pov_shape_kind(&t) >= 0)
+			break;
 		*matched = false;
 		return true;
 	}
@@ -1699,7 +1720,7 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	TRY(lang_enter(p, t.loc));
 	char nm[32];
 	snprintf(nm, sizeof nm, "%.*s", (int)t.len, t.text);
-	bool ok = open_block(p, nm, &open) && fn(p, out, t.loc, open);
+	bool ok = open_block(p, nm, &open) && (fn ? fn(p, out, t.loc, open) : pov_shape(p, out, &t, open));
 	lang_leave(p);
 	return ok;
 }

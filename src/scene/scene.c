@@ -1,6 +1,8 @@
 /* scene.c - IR lifetime, validation, statistics and the text dump used by golden tests. */
 #include "scene/scene.h"
 
+#include "geom/shape.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -420,7 +422,8 @@ static void dump_material(FILE *o, const scene_material *m)
 
 static void dump_geom(FILE *o, const scene_geom *g)
 {
-	static const char *const kinds[] = {"sphere", "box", "plane", "mesh", "mesh_file", "subdivision_surface"};
+	static const char *const kinds[] = {"sphere", "box", "plane", "mesh", "mesh_file", "subdivision_surface",
+					    "pov_shape"};
 	fprintf(o, "geom %u %s", g->id, kinds[g->kind]);
 	dump_loc(o, g->loc);
 	switch (g->kind) {
@@ -439,6 +442,9 @@ static void dump_geom(FILE *o, const scene_geom *g)
 		break;
 	case SHAPE_MESH_FILE:
 		fprintf(o, " file \"%s\"\n", g->u.file.path);
+		break;
+	case SHAPE_POV:
+		shape_dump(o, g->u.pov);
 		break;
 	case SHAPE_MESH: {
 		const scene_mesh *m = &g->u.mesh;

@@ -75,7 +75,8 @@ typedef enum scene_shape_kind {
 	SHAPE_PLANE,
 	SHAPE_MESH, /* triangles from mesh{triangle...}, mesh2, or a generated list */
 	SHAPE_MESH_FILE, /* mesh { file "x.obj" }: loaded by the importer */
-	SHAPE_SUBDIV /* subdivision_surface */
+	SHAPE_SUBDIV, /* subdivision_surface */
+	SHAPE_POV /* lathe, sor, prism, sphere_sweep, blob, text: geom/shape.h's description */
 } scene_shape_kind;
 
 /* A triangle mesh. Faces index positions; normal_idx/uv_idx (when non-NULL) index normals/uvs
@@ -155,6 +156,7 @@ typedef struct scene_geom {
 			const char *path; /* resolved against the folder of the file that names it */
 		} file;
 		scene_subdiv subdiv;
+		const struct shape_desc *pov; /* SHAPE_POV: in the scene's arena */
 	} u;
 	struct scene_geom *next; /* the scene's list of all geometry */
 } scene_geom;
@@ -199,7 +201,7 @@ typedef struct scene_sky_sphere {
 
 /* A file the scene names, as resolved (see scene_geom's file path), and the place of its string:
  * the build opens every one first, so that `check` and `render` report a missing one alike. */
-typedef enum scene_asset_kind { SCENE_ASSET_IMAGE, SCENE_ASSET_MESH, SCENE_ASSET_CAGE } scene_asset_kind;
+typedef enum scene_asset_kind { SCENE_ASSET_IMAGE, SCENE_ASSET_MESH, SCENE_ASSET_CAGE, SCENE_ASSET_FONT } scene_asset_kind;
 
 typedef struct scene_asset {
 	scene_asset_kind kind;

@@ -129,3 +129,17 @@ sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { 
 sphere { 0, 1 finish { ambient 0.1 diffuse albedo 0.6 phong 0.5 phong_size 20 metallic reflection { 0.1, 0.5 falloff 2 } } }
 // rule: fog, fog_item
 fog { fog_type 2 distance 30 color rgb 0.5 fog_offset 1 fog_alt 2 }
+// rule: pov_shape, lathe, spline_type, uv_list, sor, prism, sphere_sweep, sweep_sphere
+#declare Vase = lathe { quadratic_spline 4, <0, 0>, <1, 0>, <1, 1>, <0.5, 2> sturm }
+object { Vase translate x }
+sor { 4, <0, 0>, <1, 0>, <0.5, 1>, <0.7, 2> open }
+prism { conic_sweep bezier_spline 0.5, 1, 4, <1, 0>, <1, 1>, <0, 1>, <1, 0> }
+sphere_sweep { b_spline 4, <0, 0, 0>, 0.5, <1, 1, 0> 0.5, <2, 0, 0>, 0.5, <3, 1, 0>, 0.5 tolerance 1e-4 }
+// rule: blob, blob_item, text
+blob { threshold 0.6 component 1, 1, <0, 0, 0> sphere { <1, 0, 0>, 1, strength 1 scale 2 }
+	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 } }
+text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
+// rule: bicubic_patch, bicubic_item
+bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>
+	<0, 0, 0>, <1, 0, 0>, <2, 0, 0>, <3, 0, 0>, <0, 1, 0>, <1, 1, 1>, <2, 1, 1>, <3, 1, 0>
+	<0, 2, 0>, <1, 2, 1>, <2, 2, 1>, <3, 2, 0>, <0, 3, 0>, <1, 3, 0>, <2, 3, 0>, <3, 3, 0> }

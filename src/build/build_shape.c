@@ -1,0 +1,72 @@
+/* build_shape.c - POV-Ray's lathe, sor, prism, sphere_sweep, blob and text (geom/shape.h)
+ * tessellated at the accuracy their size on screen asks for: the sphere's rule (build_inst.c's
+ * sphere_level) applied to the shape's bounding sphere, for every object that places it, the
+ * finest level winning: prim_sphere_level_segments(level) segments around a surface of revolution
+ * or a sweep, as around that sphere; and its error bound, WORLD_SPHERE_MAX_ERROR_PX on screen, as
+ * the tolerance of every curve (profiles, outlines, glyphs, the blob's grid). */
+#include "build/build_impl.h"
+
+#include "base/mem.h"
+#include "geom/shape.h"
+
+#include <math.h>
+
+/* The level of g over the objects that place it (level 0 when none does: a declared shape), and
+ * the tolerance: WORLD_SPHERE_MAX_ERROR_PX on screen where the object is nearest, kept between
+ * the finest and the coarsest sphere level's relative errors of the bounding radius. */
+static uint32_t shape_level(const scene *sc, const scene_geom *g, const subd_camera *view, dvec3 centre, double radius,
+			    double *tol)
+{
+	double rel_err[PRIM_SPHERE_LEVELS];
+	for (uint32_t k = 0; k < PRIM_SPHERE_LEVELS; k++)
+		rel_err[k] = prim_sphere_rel_error(prim_sphere_level_segments(k));
+	uint32_t level = 0;
+	*tol = rel_err[0] * radius;
+	for (size_t i = 0; i < scene_n_objects(sc); i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		if (o->geom != g)
+			continue;
+		dvec3 to = d3_sub(xform_point(&o->transform, centre), v3_to_d3(view->position));
+		double dist = d3_length(to), scale = axis_scale(&o->transform), r = radius * scale;
+		double cos_axis = dist > 0 ? d3_dot(to, d3_normalize(v3_to_d3(view->look))) / dist : 1.0;
+		uint32_t k = sphere_level(rel_err, view_focal_px(view), dist, r, cos_axis);
+		level = k > level ? k : level;
+		/* pixels per unit of the shape's own space at its nearest (sphere_level's radius_px / r) */
+		double c = fmax(fmin(cos_axis, 1.0), 0.5);
+		double ppu = dist > r ? view_focal_px(view) / sqrt((dist - r) * (dist + r)) / (c * c) * scale : INFINITY;
+		double t = fmax(WORLD_SPHERE_MAX_ERROR_PX / ppu, rel_err[PRIM_SPHERE_LEVELS - 1] * radius);
+		*tol = fmin(*tol, t);
+	}
+	return level;
+}
+
+/* Appends the record of one tessellated shape to the world's statistics. */
+static bool note_shape(world *w, const world_shape_stat *st, diag *d)
+{
+	world_shape_stat *a = mem_realloc((void *)w->stats.shapes, w->stats.n_shapes + 1, sizeof *a);
+	if (!a) {
+		diag_error(d, st->loc, "out of memory");
+		return false;
+	}
+	a[w->stats.n_shapes++] = *st;
+	w->stats.shapes = a;
+	return true;
+}
+
+bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d)
+{
+	const shape_desc *s = g->u.pov;
+	dvec3 lo, hi;
+	shape_bounds(s, &lo, &hi);
+	dvec3 centre = d3_scale(d3_add(lo, hi), 0.5);
+	double radius = fmax(0.5 * d3_length(d3_sub(hi, lo)), 1e-9);
+	subd_camera view = scene_view(sc, opt);
+	double tol;
+	uint32_t level = shape_level(sc, g, &view, centre, radius, &tol);
+	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level)};
+	mesh *m = &w->geoms[g->id].m;
+	if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
+		return false;
+	world_shape_stat st = {shape_kind_name(s->kind), g->loc, level, tol, m->num_triangles};
+	return note_shape(w, &st, d);
+}

@@ -1,0 +1,132 @@
+/* shape.h - POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob and text made triangle meshes
+ * (mesh.h), in the shape's own space, closed where the shape is closed, with outward geometric
+ * and shading normals and POV-Ray's UVs where it defines them (lathe, sor). Each takes a
+ * shape_desc (plain arrays: the IR points at one) and an accuracy: the largest distance, in the
+ * shape's units, its triangles may lie from the true surface, and the segment count around a
+ * surface of revolution (build chooses both from the shape's size on screen, as a sphere's level).
+ * Every tessellator counts its triangles first and refuses more than SHAPE_MAX_TRIANGLES with a
+ * message before allocating the mesh. Errors are reported at the diag_loc given. */
+#ifndef CIRCE_GEOM_SHAPE_H
+#define CIRCE_GEOM_SHAPE_H
+
+#include "base/diag.h"
+#include "base/vec.h"
+#include "geom/mesh.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+/* The most triangles one shape may make (a sphere's finest level makes 65,024). */
+#define SHAPE_MAX_TRIANGLES 4000000u
+
+typedef enum shape_kind {
+	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC
+} shape_kind;
+
+/* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
+ * cubic (Catmull-Rom), b_spline). */
+typedef enum shape_spline { SHAPE_LINEAR, SHAPE_QUADRATIC, SHAPE_CUBIC, SHAPE_BEZIER, SHAPE_BSPLINE } shape_spline;
+
+/* A blob component: a sphere (centre a) or a cylinder (axis a to b) of `radius` and `strength`,
+ * with its own transform when has_xf (POV-Ray's component modifiers: the field is read at the
+ * point taken back through xf). */
+typedef struct shape_blob_comp {
+	bool cylinder;
+	dvec3 a, b;
+	double radius, strength;
+	bool has_xf;
+	xform xf;
+} shape_blob_comp;
+
+typedef struct shape_desc {
+	shape_kind kind;
+	shape_spline spline;
+	double *pts; /* lathe, sor, prism: n_pts points <u, v>, 2 doubles each; sphere_sweep: 4 each (centre, radius) */
+	uint32_t n_pts;
+	bool open; /* sor, prism: no caps */
+	bool conic; /* prism: conic_sweep */
+	double h1, h2; /* prism: heights, h1 <= h2 */
+	double tolerance; /* sphere_sweep: POV-Ray's depth tolerance (kept, not used by a mesh) */
+	shape_blob_comp *comps; /* blob */
+	uint32_t n_comps;
+	double threshold;
+	const char *font; /* text: the resolved font path, the UTF-8 string, depth and offset */
+	const char *text;
+	double depth;
+	dvec3 offset;
+	/* bicubic_patch: pts holds 16 control points (3 doubles each, row i along u, column j along
+	 * v, as POV-Ray reads them); st the corners' texture coordinates (uv_vectors); POV-Ray's
+	 * type, flatness, u_steps and v_steps are kept for the dump (the mesh follows the accuracy) */
+	double st[8];
+	int patch_type, u_steps, v_steps;
+	double flatness;
+} shape_desc;
+
+/* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
+ * a surface of revolution and a sphere_sweep's rings (>= 3). */
+typedef struct shape_accuracy {
+	double tol;
+	uint32_t segments;
+} shape_accuracy;
+
+const char *shape_kind_name(shape_kind k);
+/* A bound of the shape in its own space, from its description alone (text: estimated from the
+ * string's length, 1 em a character); the build sizes its accuracy from it. */
+void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi);
+/* Tessellates s into out (positions, normals, UVs where defined). False after reporting to d. The
+ * tolerance actually reached is written to *tol_out (a blob's grid may be coarsened to fit). */
+bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d,
+		      diag_loc loc);
+/* The IR dump of s (one line, then one per point or component). */
+void shape_dump(FILE *o, const shape_desc *s);
+
+/* The value of POV-Ray's blob field at p: the sum over components of s (1 - d^2/r^2)^2 for d < r,
+ * d the distance to the centre (sphere) or the axis segment (cylinder, hemispheres at its ends). */
+double shape_blob_field(const shape_desc *s, dvec3 p);
+
+/* ---- what the tessellators share (shape.c) ---- */
+
+/* A growing mesh: positions, normals and UVs per vertex, three indices per triangle. */
+typedef struct shape_builder {
+	vec3 *pos, *nrm;
+	vec2 *uv;
+	uint32_t nv, cap_v;
+	uint32_t *idx;
+	uint32_t nt, cap_t;
+	bool failed; /* memory ran out or a limit was passed */
+} shape_builder;
+
+void sb_init(shape_builder *b);
+void sb_free(shape_builder *b);
+uint32_t sb_vertex(shape_builder *b, dvec3 p, dvec3 n, double u, double v);
+/* A triangle a b c, its winding turned so its geometric normal faces `want` (if they disagree). */
+void sb_tri(shape_builder *b, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want);
+/* The builder's contents as a mesh; false (reported) when it failed or passed the limit. */
+bool sb_finish(shape_builder *b, mesh *out, bool uvs, const char *what, diag *d, diag_loc loc);
+
+/* A plane region bounded by closed polygons, filled by the even-odd rule (POV-Ray's inside test
+ * for prism and text): triangles as index triples into the concatenated vertices of the
+ * contours, oriented counter-clockwise in (x, y). contours[k] has counts[k] points (x, y pairs).
+ * Returns the triangle count, or -1 when memory runs out or it cannot be done. */
+long poly2d_triangulate(const double *xy, const uint32_t *counts, uint32_t n_contours, uint32_t **tris);
+/* Whether two edges of the contours cross (other than at shared endpoints); *ea, *eb their indices. */
+bool poly2d_self_intersects(const double *xy, const uint32_t *counts, uint32_t n_contours, uint32_t *ea, uint32_t *eb);
+/* Orients each contour of the even-odd region: counter-clockwise where it bounds the region from
+ * outside (even nesting depth), clockwise around a hole. Reverses in place; reversed[k] (when not
+ * NULL) says whether contour k was. */
+void poly2d_orient(double *xy, const uint32_t *counts, uint32_t n_contours, bool *reversed);
+
+/* Flattens a cubic A t^3 + B t^2 + C t + D (2-D, t in [0, 1]) into steps whose chords lie within
+ * tol of it: the bound max|P''| h^2 / 8 of a chord over a step h. */
+uint32_t shape_cubic_steps(const double A[2], const double B[2], double tol);
+
+bool shape_lathe(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_sor(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+
+#endif

@@ -1,0 +1,540 @@
+/* shapes2.c - the bodies of POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob and text
+ * (parser.cpp's Parse_Lathe, Parse_Sor, Parse_Prism, Parse_Sphere_Sweep, Parse_Blob,
+ * Parse_TrueType): the same syntax, defaults, limits and messages where POV-Ray gives one. The
+ * words of these shapes are matched by spelling, so they work whether the lexer's keyword table
+ * holds them or they lex as POV-Ray words (LTK_UNSUPPORTED). stmt.c places the geometry and reads
+ * the object's modifiers. */
+#include "lang/shapes2.h"
+
+#include "geom/shape.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#define TRY(x) \
+	do { \
+		if (!(x)) \
+			return false; \
+	} while (0)
+
+/* The most points or components one shape may list (POV-Ray has no limit; this keeps a typo's
+ * count from asking for gigabytes before the points are read). */
+#define LANG_MAX_SHAPE_POINTS 1000000
+
+static bool word_is(const lang_token *t, const char *w)
+{
+	size_t n = strlen(w);
+	return (t->kind == LTK_UNSUPPORTED || t->kind >= LANG_FIRST_KEYWORD || t->kind == LTK_IDENT) &&
+	       t->kind != LTK_EOF && t->len == n && memcmp(t->text, w, n) == 0;
+}
+
+static bool accept_word(parser *p, const char *w)
+{
+	if (!word_is(lang_peek(p), w))
+		return false;
+	lang_advance(p);
+	return true;
+}
+
+int lang_pov_shape_kind(const lang_token *t)
+{
+	static const char *const words[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
+	for (int k = 0; k < 7; k++)
+		if (word_is(t, words[k]))
+			return k;
+	return -1;
+}
+
+/* A number that a point may follow without a comma (`u_steps 4 <0, 0, 0>`): read as an additive
+ * expression, where '<' begins the next vector rather than a comparison, as in POV-Ray. */
+static bool num(parser *p, const char *what, double *out)
+{
+	dvec3 v;
+	TRY(lang_vec3(p, what, &v));
+	*out = v.x;
+	return true;
+}
+
+/* POV-Ray's Parse_Comma: an optional ','. */
+static void comma(parser *p) { lang_accept(p, LTK_COMMA); }
+
+static bool count(parser *p, const char *what, long lo, uint32_t *out)
+{
+	long n;
+	diag_loc at = lang_peek(p)->loc;
+	double x;
+	TRY(num(p, what, &x));
+	if (!(x >= lo) || !(x <= LANG_MAX_SHAPE_POINTS))
+		return lang_error(p, at, "%s must be %ld to %d, found %g", what, lo, LANG_MAX_SHAPE_POINTS, x);
+	n = (long)x; /* POV-Ray truncates: (int)Parse_Float() */
+	*out = (uint32_t)n;
+	return true;
+}
+
+/* n points <u, v> (POV-Ray's Parse_UV_Vect: a float is promoted), each followed by an optional ','. */
+static bool uv_points(parser *p, uint32_t n, double **out)
+{
+	double *pts = arena_alloc(&p->sc->arena, 2 * (size_t)n, sizeof *pts, sizeof(double));
+	if (!pts)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	for (uint32_t i = 0; i < n; i++) {
+		dvec3 v;
+		TRY(lang_vec3(p, "as a point <u, v>", &v));
+		pts[2 * i] = v.x, pts[2 * i + 1] = v.y;
+		comma(p);
+	}
+	*out = pts;
+	return true;
+}
+
+static shape_desc *new_desc(parser *p, shape_kind k)
+{
+	shape_desc *s = arena_zalloc(&p->sc->arena, 1, sizeof *s);
+	if (!s) {
+		lang_error(p, lang_peek(p)->loc, "out of memory");
+		return NULL;
+	}
+	s->kind = k;
+	return s;
+}
+
+/* [ linear_spline | quadratic_spline | cubic_spline | bezier_spline ] (and, for a prism,
+ * linear_sweep | conic_sweep), in any order, the last of each kind winning as in POV-Ray. */
+static void spline_words(parser *p, shape_desc *s, bool sweeps)
+{
+	for (;;) {
+		if (accept_word(p, "linear_spline"))
+			s->spline = SHAPE_LINEAR;
+		else if (accept_word(p, "quadratic_spline"))
+			s->spline = SHAPE_QUADRATIC;
+		else if (accept_word(p, "cubic_spline"))
+			s->spline = SHAPE_CUBIC;
+		else if (accept_word(p, "bezier_spline"))
+			s->spline = SHAPE_BEZIER;
+		else if (sweeps && accept_word(p, "linear_sweep"))
+			s->conic = false;
+		else if (sweeps && accept_word(p, "conic_sweep"))
+			s->conic = true;
+		else
+			return;
+	}
+}
+
+/* The point count of a lathe or prism (`what`), checked against the least its spline needs
+ * (least[spline]; Bezier: four a segment), with POV-Ray's messages. */
+static bool spline_count(parser *p, shape_desc *s, const char *what, const long least[4])
+{
+	static const char *const names[] = {"linear", "quadratic", "cubic", "Bezier"};
+	char ctx[40];
+	snprintf(ctx, sizeof ctx, "the %s's point count", what);
+	diag_loc at = lang_peek(p)->loc;
+	TRY(count(p, ctx, 0, &s->n_pts));
+	if (s->spline == SHAPE_BEZIER && (s->n_pts % 4 != 0 || s->n_pts == 0))
+		return lang_error(p, at, "a %s with Bezier splines must have four points per segment, found %u", what,
+				  s->n_pts);
+	if (s->n_pts < least[s->spline])
+		return lang_error(p, at, "a %s with %s splines must have at least %ld points, found %u", what,
+				  names[s->spline], least[s->spline], s->n_pts);
+	return true;
+}
+
+/* lathe = "lathe" "{" [ spline_type ] int [ "," ] uv { [ "," ] uv } ... (POV-Ray's counts:
+ * linear 2, quadratic 3, cubic 4, Bezier four a segment). */
+static bool lathe(parser *p, shape_desc *s)
+{
+	spline_words(p, s, false);
+	static const long least[] = {2, 3, 4, 4};
+	diag_loc at = lang_peek(p)->loc;
+	TRY(spline_count(p, s, "lathe", least));
+	comma(p);
+	TRY(uv_points(p, s->n_pts, &s->pts));
+	/* POV-Ray refuses a negative radius, but at the spline's control points. */
+	for (uint32_t i = 0; i < s->n_pts; i++) {
+		bool ctrl = (s->spline == SHAPE_QUADRATIC && i == 0) ||
+			    (s->spline == SHAPE_CUBIC && (i == 0 || i == s->n_pts - 1)) ||
+			    (s->spline == SHAPE_BEZIER && i % 4 != 0 && i % 4 != 3);
+		if (!ctrl && s->pts[2 * i] < 0)
+			return lang_error(p, at, "lathe point %u has a radius (x) < 0: %g", i, s->pts[2 * i]);
+	}
+	return true;
+}
+
+/* sor = "sor" "{" int [ "," ] uv { [ "," ] uv } [ "open" ] ... : at least four points, radii >= 0,
+ * heights rising from the second point to the one before the last (POV-Ray's checks). */
+static bool sor(parser *p, shape_desc *s)
+{
+	diag_loc at = lang_peek(p)->loc;
+	TRY(count(p, "the sor's point count", 0, &s->n_pts));
+	if (s->n_pts < 4)
+		return lang_error(p, at, "a surface of revolution must have at least four points, found %u", s->n_pts);
+	comma(p);
+	TRY(uv_points(p, s->n_pts, &s->pts));
+	for (uint32_t i = 0; i < s->n_pts; i++) {
+		const double *q = &s->pts[2 * i];
+		if (q[0] < 0 || (i > 1 && i < s->n_pts - 1 && q[1] <= q[-1]))
+			return lang_error(p, at, "sor point %u is incorrect: radii must be >= 0 and heights rise from "
+						 "the second point to the one before the last",
+					  i);
+	}
+	for (uint32_t i = 0; i + 3 < s->n_pts; i++) /* Compute_Sor's check of the slopes' chords */
+		if (fabs(s->pts[2 * i + 5] - s->pts[2 * i + 1]) < 1e-10 || fabs(s->pts[2 * i + 7] - s->pts[2 * i + 3]) < 1e-10)
+			return lang_error(p, at, "sor point %u is incorrect: two points two apart at the same height", i);
+	s->open = accept_word(p, "open");
+	return true;
+}
+
+/* Whether the prism's outline closes as POV-Ray's Parse_Prism checks it (linear: a point equal
+ * to the sub-polygon's first; quadratic and cubic: to its second; Bezier: each run of segments
+ * ending where it began). */
+static bool prism_closed(const shape_desc *s)
+{
+	const double *P = s->pts, eps = 1e-10;
+	uint32_t n = s->n_pts;
+	if (s->spline == SHAPE_BEZIER) {
+		uint32_t start = 0;
+		for (uint32_t i = 4; i < n; i += 4)
+			if (fabs(P[2 * i] - P[2 * i - 2]) > eps || fabs(P[2 * i + 1] - P[2 * i - 1]) > eps) {
+				if (fabs(P[2 * i - 2] - P[2 * start]) > eps || fabs(P[2 * i - 1] - P[2 * start + 1]) > eps)
+					return false;
+				start = i;
+			}
+		return fabs(P[2 * n - 2] - P[2 * start]) <= eps && fabs(P[2 * n - 1] - P[2 * start + 1]) <= eps;
+	}
+	uint32_t i = s->spline == SHAPE_LINEAR ? 1 : 2, step = s->spline == SHAPE_LINEAR ? 1 : s->spline == SHAPE_QUADRATIC ? 2 : 3;
+	const double *first = &P[2 * (i - 1)];
+	bool closed = false;
+	for (; i < n; i++) {
+		closed = false;
+		if (fabs(first[0] - P[2 * i]) < eps && fabs(first[1] - P[2 * i + 1]) < eps) {
+			i += step;
+			if (i < n)
+				first = &P[2 * i];
+			closed = true;
+		}
+	}
+	return closed;
+}
+
+/* prism = "prism" "{" { spline_type | sweep_type } float [ "," ] float [ "," ] int [ "," ]
+ *         uv { [ "," ] uv } [ "open" ] ... */
+static bool prism(parser *p, shape_desc *s, diag_loc kw)
+{
+	spline_words(p, s, true);
+	TRY(lang_float(p, "as the prism's first height", &s->h1));
+	comma(p);
+	TRY(lang_float(p, "as the prism's second height", &s->h2));
+	comma(p);
+	if (s->h1 > s->h2) {
+		double t = s->h1;
+		s->h1 = s->h2, s->h2 = t;
+	}
+	static const long least[] = {3, 5, 6, 4};
+	TRY(spline_count(p, s, "prism", least));
+	if (s->h1 == s->h2)
+		return lang_error(p, kw, "the prism is flat: its two heights are both %g", s->h1);
+	comma(p);
+	TRY(uv_points(p, s->n_pts, &s->pts));
+	s->open = accept_word(p, "open");
+	if (!prism_closed(s)) {
+		if (s->spline != SHAPE_LINEAR) /* POV-Ray: "Prism not closed. Ignoring it." */
+			return lang_error(p, kw, "the prism's outline is not closed (POV-Ray ignores such a prism)");
+		/* POV-Ray closes a linear one with the sub-polygon's first point */
+		double *q = arena_alloc(&p->sc->arena, 2 * ((size_t)s->n_pts + 1), sizeof *q, sizeof(double));
+		if (!q)
+			return lang_error(p, kw, "out of memory");
+		memcpy(q, s->pts, 2 * (size_t)s->n_pts * sizeof *q);
+		uint32_t first = 0;
+		for (uint32_t i = 1; i < s->n_pts; i++)
+			if (fabs(q[2 * i] - q[2 * first]) < 1e-10 && fabs(q[2 * i + 1] - q[2 * first + 1]) < 1e-10)
+				first = i + 1 < s->n_pts ? i + 1 : first, i++;
+		q[2 * s->n_pts] = q[2 * first], q[2 * s->n_pts + 1] = q[2 * first + 1];
+		s->pts = q, s->n_pts++;
+		diag_warning(p->d, kw, "linear prism not closed: closing it (as POV-Ray)");
+	}
+	return true;
+}
+
+/* sphere_sweep = "sphere_sweep" "{" ( "linear_spline" | "cubic_spline" | "b_spline" ) [ "," ] int
+ *                [ "," ] vector [ "," ] float { [ "," ] vector [ "," ] float } [ "tolerance" float ] ... */
+static bool sphere_sweep(parser *p, shape_desc *s)
+{
+	if (accept_word(p, "linear_spline"))
+		s->spline = SHAPE_LINEAR;
+	else if (accept_word(p, "cubic_spline"))
+		s->spline = SHAPE_CUBIC;
+	else if (accept_word(p, "b_spline"))
+		s->spline = SHAPE_BSPLINE;
+	else
+		return lang_error_found(p, "expected linear_spline, cubic_spline or b_spline in 'sphere_sweep'");
+	comma(p);
+	diag_loc at = lang_peek(p)->loc;
+	TRY(count(p, "the sphere_sweep's sphere count", 0, &s->n_pts));
+	if (s->n_pts < 2 || (s->spline != SHAPE_LINEAR && s->n_pts < 4))
+		return lang_error(p, at, "too few modeling spheres for the interpolation type: %u (linear needs 2, "
+					 "cubic_spline and b_spline 4)",
+				  s->n_pts);
+	comma(p);
+	s->pts = arena_alloc(&p->sc->arena, 4 * (size_t)s->n_pts, sizeof *s->pts, sizeof(double));
+	if (!s->pts)
+		return lang_error(p, at, "out of memory");
+	for (uint32_t i = 0; i < s->n_pts; i++) {
+		dvec3 c;
+		double r;
+		TRY(lang_vec3(p, "as a sphere's centre", &c));
+		comma(p);
+		diag_loc rl = lang_peek(p)->loc;
+		TRY(lang_float(p, "as a sphere's radius", &r));
+		if (!(r > 0))
+			return lang_error(p, rl, "a sphere_sweep's radius must be > 0, found %g", r);
+		comma(p);
+		double *q = &s->pts[4 * i];
+		q[0] = c.x, q[1] = c.y, q[2] = c.z, q[3] = r;
+	}
+	s->tolerance = 1e-6; /* POV-Ray's default depth tolerance */
+	if (accept_word(p, "tolerance"))
+		TRY(lang_float(p, "after 'tolerance'", &s->tolerance));
+	return true;
+}
+
+/* A blob component's modifiers: transforms (its field read back through them); a texture of its
+ * own is not supported (circe's objects have one material). */
+static bool component_mods(parser *p, shape_blob_comp *c, diag_loc open, lang_xform_item_fn xf_item)
+{
+	xform t = xform_identity();
+	bool any = false;
+	for (;;) {
+		lang_token *k = lang_peek(p);
+		if (k->kind == LTK_RBRACE)
+			break;
+		if (k->kind == LTK_KW_TEXTURE || k->kind == LTK_KW_PIGMENT || k->kind == LTK_KW_FINISH ||
+		    word_is(k, "normal"))
+			return lang_error(p, k->loc, "a texture of one blob component is not supported by circe: give the "
+						     "blob one texture");
+		bool matched;
+		TRY(xf_item(p, &t, &matched));
+		if (!matched)
+			return lang_error_found(p, "expected a transform or '}' to close the blob component (opened at line %u)",
+						open.line);
+		any = true;
+	}
+	lang_advance(p);
+	c->has_xf = any, c->xf = t;
+	return true;
+}
+
+/* blob = "blob" "{" { "threshold" float | "component" float, float, vector
+ *        | "sphere" "{" vector, float, [ "strength" ] float { transform } "}"
+ *        | "cylinder" "{" vector, vector, float, [ "strength" ] float { transform } "}" } ... */
+static bool blob(parser *p, shape_desc *s, diag_loc kw, lang_xform_item_fn xf_item)
+{
+	vecbuf comps;
+	vecbuf_init(&comps, sizeof(shape_blob_comp));
+	s->threshold = 1.0;
+	bool ok = true;
+	for (; ok;) {
+		lang_token t = *lang_peek(p);
+		shape_blob_comp c = {0};
+		if (accept_word(p, "threshold")) {
+			ok = lang_float(p, "after 'threshold'", &s->threshold);
+			continue;
+		}
+		if (accept_word(p, "component")) { /* the old syntax: strength, radius, centre */
+			ok = lang_float(p, "as the component's strength", &c.strength) && (comma(p), true) &&
+			     lang_float(p, "as the component's radius", &c.radius) && (comma(p), true) &&
+			     lang_vec3(p, "as the component's centre", &c.a);
+		} else if (t.kind == LTK_KW_SPHERE || word_is(&t, "cylinder")) {
+			c.cylinder = t.kind != LTK_KW_SPHERE;
+			lang_advance(p);
+			diag_loc open = lang_peek(p)->loc;
+			ok = lang_expect(p, LTK_LBRACE, c.cylinder ? "after 'cylinder'" : "after 'sphere'") &&
+			     lang_vec3(p, c.cylinder ? "as the cylinder's base" : "as the sphere's centre", &c.a);
+			comma(p);
+			if (ok && c.cylinder) {
+				ok = lang_vec3(p, "as the cylinder's apex", &c.b);
+				comma(p);
+				if (ok && d3_length(d3_sub(c.b, c.a)) < 1e-10)
+					ok = lang_error(p, t.loc, "degenerate cylindrical component in blob: its ends coincide");
+			}
+			ok = ok && lang_float(p, "as the component's radius", &c.radius);
+			comma(p);
+			if (ok)
+				lang_accept(p, LTK_KW_STRENGTH);
+			ok = ok && lang_float(p, "as the component's strength", &c.strength) &&
+			     component_mods(p, &c, open, xf_item);
+		} else
+			break;
+		if (ok && !(c.radius > 0))
+			ok = lang_error(p, t.loc, "a blob component's radius must be > 0, found %g", c.radius);
+		if (ok && !vecbuf_push(&comps, &c))
+			ok = lang_error(p, t.loc, "out of memory");
+	}
+	bool positive = false;
+	for (size_t i = 0; i < comps.len; i++)
+		positive |= VECBUF_AT(&comps, shape_blob_comp, i).strength > 0;
+	if (ok && !comps.len)
+		ok = lang_error(p, kw, "a blob needs at least one component");
+	else if (ok && !positive)
+		ok = lang_error(p, kw, "the blob has no component of positive strength: its surface is empty");
+	else if (ok && !(s->threshold > 0))
+		ok = lang_error(p, kw, "a blob's threshold must be > 0 (circe polygonises a bounded surface), found %g",
+				s->threshold);
+	if (ok) {
+		s->n_comps = (uint32_t)comps.len;
+		s->comps = arena_alloc(&p->sc->arena, comps.len, sizeof *s->comps, sizeof(double));
+		if (!s->comps)
+			ok = lang_error(p, kw, "out of memory");
+		else
+			memcpy(s->comps, comps.data, comps.len * sizeof *s->comps);
+	}
+	vecbuf_free(&comps);
+	return ok;
+}
+
+/* The font as an include file is found: beside the file that names it, then in each -I folder;
+ * in each, the name as written, then with POV-Ray's font extensions (.ttf, .TTF) appended. */
+static bool font_path(parser *p, const char *name, diag_loc at, const char **out)
+{
+	static const char *const ext[] = {"", ".ttf", ".TTF"};
+	const char *from = at.src ? at.src->name : "";
+	const char *slash = strrchr(from, '/');
+	size_t nl = strlen(name);
+	for (size_t i = 0; i <= p->opt.n_include_dirs; i++) {
+		const char *dir = i == 0 ? from : p->opt.include_dirs[i - 1];
+		size_t dl = name[0] == '/' ? 0 : i == 0 ? (slash ? (size_t)(slash - from) : 0) : strlen(dir);
+		for (int e = 0; e < 3; e++) {
+			char *path = arena_alloc(&p->sc->arena, dl + nl + 6, 1, 1);
+			if (!path)
+				return lang_error(p, at, "out of memory");
+			memcpy(path, dir, dl);
+			size_t k = dl;
+			if (dl && dir[dl - 1] != '/')
+				path[k++] = '/';
+			memcpy(path + k, name, nl);
+			strcpy(path + k + nl, ext[e]);
+			if (access(path, R_OK) == 0) {
+				*out = path;
+				return scene_add_asset(p->sc, SCENE_ASSET_FONT, path, at) || lang_error(p, at, "out of memory");
+			}
+		}
+		if (name[0] == '/')
+			break;
+	}
+	return lang_error(p, at, "cannot find font file '%s' (searched the including file's folder%s)", name,
+			  p->opt.n_include_dirs ? " and the -I folders" : "");
+}
+
+/* text = "text" "{" "ttf" string [ "," ] string [ "," ] float [ "," ] vector ... */
+static bool text(parser *p, shape_desc *s)
+{
+	if (word_is(lang_peek(p), "internal"))
+		return lang_error(p, lang_peek(p)->loc, "'internal' fonts are not supported by circe: give a ttf file");
+	if (!accept_word(p, "ttf"))
+		return lang_error_found(p, "expected 'ttf' in 'text'");
+	diag_loc fl = lang_peek(p)->loc;
+	const char *name;
+	TRY(lang_string(p, "after 'ttf'", &name));
+	comma(p);
+	diag_loc sl = lang_peek(p)->loc;
+	TRY(lang_string(p, "as the text's string", &s->text));
+	if (!s->text[0])
+		return lang_error(p, sl, "the text's string is empty: it makes no shape");
+	comma(p);
+	TRY(lang_float(p, "as the text's depth", &s->depth));
+	comma(p);
+	TRY(lang_vec3(p, "as the text's offset", &s->offset));
+	/* found as POV-Ray opens it: after its string and numbers are read */
+	return font_path(p, name, fl, &s->font);
+}
+
+/* bicubic_patch = "bicubic_patch" "{" ( bicubic_item* | float float float ) ','? vector ( ','? vector )*15
+ *                  ','? ...   (bicubic_item: type, flatness, u_steps, v_steps, accuracy, uv_vectors) */
+static bool bicubic_patch(parser *p, shape_desc *s)
+{
+	static const double st0[8] = {0, 0, 1, 0, 1, 1, 0, 1}; /* POV-Ray's default corners */
+	memcpy(s->st, st0, sizeof st0);
+	s->flatness = 0.1; /* POV-Ray's constructor */
+	double x;
+	if (lang_peek(p)->kind == LTK_NUMBER) { /* the old form: type [flatness] u_steps v_steps */
+		TRY(num(p, "as the patch type", &x));
+		s->patch_type = (int)x;
+		if (s->patch_type == 2 || s->patch_type == 3)
+			TRY(num(p, "as the flatness", &s->flatness));
+		TRY(num(p, "as u_steps", &x));
+		s->u_steps = (int)x;
+		TRY(num(p, "as v_steps", &x));
+		s->v_steps = (int)x;
+	} else
+		for (;;) {
+			diag_loc at = lang_peek(p)->loc;
+			if (accept_word(p, "type")) {
+				TRY(num(p, "after 'type'", &x));
+				s->patch_type = (int)x;
+				if (s->patch_type < 0)
+					return lang_error(p, at, "undefined bicubic patch type %d", s->patch_type);
+			} else if (accept_word(p, "flatness")) {
+				TRY(num(p, "after 'flatness'", &s->flatness));
+			} else if (accept_word(p, "u_steps")) {
+				TRY(num(p, "after 'u_steps'", &x));
+				s->u_steps = (int)x;
+			} else if (accept_word(p, "v_steps")) {
+				TRY(num(p, "after 'v_steps'", &x));
+				s->v_steps = (int)x;
+			} else if (accept_word(p, "accuracy")) {
+				TRY(num(p, "after 'accuracy'", &x));
+			} else if (accept_word(p, "uv_vectors")) { /* ends the settings, as in POV-Ray */
+				for (int k = 0; k < 4; k++) {
+					dvec3 v;
+					TRY(lang_vec3(p, "as a corner's <u, v>", &v));
+					s->st[2 * k] = v.x, s->st[2 * k + 1] = v.y;
+					if (k < 3)
+						comma(p);
+				}
+				break;
+			} else
+				break;
+		}
+	if (s->patch_type > 1)
+		s->patch_type = 1; /* POV-Ray: "Patch type no longer supported. Using type 1." */
+	comma(p);
+	s->n_pts = 16;
+	s->pts = arena_alloc(&p->sc->arena, 48, sizeof *s->pts, sizeof(double));
+	if (!s->pts)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	for (int i = 0; i < 16; i++) {
+		dvec3 v;
+		if (lang_peek(p)->kind == LTK_RBRACE)
+			return lang_error(p, lang_peek(p)->loc, "a bicubic_patch needs 16 control points, found %d", i);
+		TRY(lang_vec3(p, "as a control point of the patch", &v));
+		s->pts[3 * i] = v.x, s->pts[3 * i + 1] = v.y, s->pts[3 * i + 2] = v.z;
+		comma(p);
+	}
+	return true;
+}
+
+scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
+{
+	shape_desc *s = new_desc(p, (shape_kind)kind);
+	if (!s)
+		return NULL;
+	bool ok;
+	switch ((shape_kind)kind) {
+	case SHAPE2_LATHE: ok = lathe(p, s); break;
+	case SHAPE2_SOR: ok = sor(p, s); break;
+	case SHAPE2_PRISM: ok = prism(p, s, kw); break;
+	case SHAPE2_SPHERE_SWEEP: ok = sphere_sweep(p, s); break;
+	case SHAPE2_BLOB: ok = blob(p, s, kw, xf_item); break;
+	case SHAPE2_BICUBIC: ok = bicubic_patch(p, s); break;
+	default: ok = text(p, s); break;
+	}
+	if (!ok)
+		return NULL;
+	scene_geom *g = scene_new_geom(p->sc, SHAPE_POV, kw);
+	if (!g) {
+		lang_error(p, kw, "out of memory");
+		return NULL;
+	}
+	g->u.pov = s;
+	return g;
+}

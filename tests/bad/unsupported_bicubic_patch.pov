@@ -1,1 +1,0 @@
-bicubic_patch { type 1 }

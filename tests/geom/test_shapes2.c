@@ -1,0 +1,487 @@
+/* test_shapes2: POV-Ray's lathe, sor, prism, sphere_sweep, blob and text as meshes (geom/shape.h)
+ * lie within their stated distance of the analytic surface (sampled at vertices and triangle
+ * centres), are closed where the shape is (every edge, by position, used by exactly two triangles
+ * in opposite directions), face outward (positive enclosed volume, near the analytic one where it
+ * is known; shading normals agree with the faces), and refuse past their triangle limit. */
+#include "check.h"
+
+#include "base/mem.h"
+#include "geom/shape.h"
+
+#include <string.h>
+
+static diag d;
+
+/* ---- closedness and orientation ---- */
+
+typedef struct edge {
+	vec3 a, b;
+} edge;
+
+static int vcmp(vec3 a, vec3 b)
+{
+	if (a.x != b.x)
+		return a.x < b.x ? -1 : 1;
+	if (a.y != b.y)
+		return a.y < b.y ? -1 : 1;
+	if (a.z != b.z)
+		return a.z < b.z ? -1 : 1;
+	return 0;
+}
+
+static int ecmp(const void *x, const void *y)
+{
+	const edge *a = x, *b = y;
+	int c = vcmp(a->a, b->a);
+	return c ? c : vcmp(a->b, b->b);
+}
+
+/* Edges by position (-0 as +0): each directed edge a->b must meet its reverse b->a exactly once. */
+static size_t open_edges(const mesh *m)
+{
+	size_t n = 3 * (size_t)m->num_triangles, bad = 0;
+	edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
+	for (uint32_t t = 0; t < m->num_triangles; t++)
+		for (int k = 0; k < 3; k++) {
+			vec3 a = m->positions[m->indices[3 * t + k]], b = m->positions[m->indices[3 * t + (k + 1) % 3]];
+			a = v3_add(a, v3s(0)), b = v3_add(b, v3s(0));
+			e[3 * t + k] = (edge){a, b}, r[3 * t + k] = (edge){b, a};
+		}
+	qsort(e, n, sizeof *e, ecmp), qsort(r, n, sizeof *r, ecmp);
+	for (size_t i = 0; i < n; i++)
+		if (ecmp(&e[i], &r[i]) != 0 || (i + 1 < n && ecmp(&e[i], &e[i + 1]) == 0))
+			bad++;
+	free(e), free(r);
+	return bad;
+}
+
+/* The connected pieces of the mesh, its vertices welded by position (union-find). */
+static int find(int *par, int x)
+{
+	while (par[x] != x)
+		x = par[x] = par[par[x]];
+	return x;
+}
+
+static const mesh *sort_mesh; /* qsort's comparison reads positions through it */
+static int pcmp(const void *x, const void *y)
+{
+	return vcmp(sort_mesh->positions[*(const uint32_t *)x], sort_mesh->positions[*(const uint32_t *)y]);
+}
+
+static int pieces(const mesh *m)
+{
+	uint32_t n = m->num_vertices, *ord = malloc(n * sizeof *ord);
+	int *par = malloc(n * sizeof *par), *weld = malloc(n * sizeof *weld);
+	for (uint32_t i = 0; i < n; i++)
+		ord[i] = i, par[i] = (int)i;
+	sort_mesh = m;
+	qsort(ord, n, sizeof *ord, pcmp);
+	for (uint32_t i = 0; i < n; i++)
+		weld[ord[i]] = i > 0 && vcmp(m->positions[ord[i]], m->positions[ord[i - 1]]) == 0 ? weld[ord[i - 1]] : (int)ord[i];
+	for (uint32_t t = 0; t < m->num_triangles; t++)
+		for (int k = 1; k < 3; k++) {
+			int a = find(par, weld[m->indices[3 * t]]), b = find(par, weld[m->indices[3 * t + k]]);
+			par[a] = b;
+		}
+	int count = 0;
+	char *seen = calloc(n, 1);
+	for (uint32_t t = 0; t < m->num_triangles; t++) {
+		int r = find(par, weld[m->indices[3 * t]]);
+		count += !seen[r];
+		seen[r] = 1;
+	}
+	free(ord), free(par), free(weld), free(seen);
+	return count;
+}
+
+static double volume(const mesh *m)
+{
+	double v = 0;
+	for (uint32_t t = 0; t < m->num_triangles; t++) {
+		dvec3 a = v3_to_d3(m->positions[m->indices[3 * t]]), b = v3_to_d3(m->positions[m->indices[3 * t + 1]]);
+		dvec3 c = v3_to_d3(m->positions[m->indices[3 * t + 2]]);
+		v += d3_dot(a, d3_cross(b, c)) / 6;
+	}
+	return v;
+}
+
+/* Triangles whose shading normals all point against their face (a flipped normal). */
+static size_t flipped_normals(const mesh *m)
+{
+	size_t bad = 0;
+	for (uint32_t t = 0; t < m->num_triangles; t++) {
+		const uint32_t *i = &m->indices[3 * t];
+		vec3 g = v3_cross(v3_sub(m->positions[i[1]], m->positions[i[0]]), v3_sub(m->positions[i[2]], m->positions[i[0]]));
+		if (v3_length(g) == 0)
+			continue;
+		int against = 0;
+		for (int k = 0; k < 3; k++)
+			against += v3_dot(g, m->normals[i[k]]) < 0;
+		bad += against == 3;
+	}
+	return bad;
+}
+
+/* ---- distances to the analytic surfaces ---- */
+
+typedef double (*dist_fn)(const void *ctx, dvec3 p);
+
+/* The largest distance fn gives over the vertices and triangle centres. */
+static double worst(const mesh *m, dist_fn fn, const void *ctx)
+{
+	double w = 0;
+	for (uint32_t v = 0; v < m->num_vertices; v++)
+		w = fmax(w, fn(ctx, v3_to_d3(m->positions[v])));
+	for (uint32_t t = 0; t < m->num_triangles; t++) {
+		const uint32_t *i = &m->indices[3 * t];
+		vec3 c = v3_scale(v3_add(v3_add(m->positions[i[0]], m->positions[i[1]]), m->positions[i[2]]), 1.0f / 3);
+		double x = fn(ctx, v3_to_d3(c));
+		if (getenv("WORST") && x > w)
+			fprintf(stderr, "worst %g at %g %g %g\n", x, c.x, c.y, c.z);
+		w = fmax(w, x);
+	}
+	return w;
+}
+
+/* A profile <r, y> sampled densely: the distance of (sqrt(x^2 + z^2), y) to its polyline. */
+typedef struct profile {
+	double *xy;
+	size_t n;
+} profile;
+
+static double seg_dist(double px, double py, const double *a, const double *b)
+{
+	double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+	double t = l2 > 0 ? ((px - a[0]) * dx + (py - a[1]) * dy) / l2 : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	return hypot(px - a[0] - t * dx, py - a[1] - t * dy);
+}
+
+static double profile_dist(const void *ctx, dvec3 p)
+{
+	const profile *pr = ctx;
+	double r = hypot(p.x, p.z), best = INFINITY;
+	for (size_t i = 0; i + 1 < pr->n; i++)
+		best = fmin(best, seg_dist(r, p.y, &pr->xy[2 * i], &pr->xy[2 * i + 2]));
+	return best;
+}
+
+static shape_desc lathe_desc(shape_spline sp, double *pts, uint32_t n)
+{
+	return (shape_desc){.kind = SHAPE2_LATHE, .spline = sp, .pts = pts, .n_pts = n};
+}
+
+/* The lathe's Catmull-Rom profile evaluated densely (the formula of POV-Ray's Compute_Lathe). */
+static profile cr_profile(const double *P, uint32_t n)
+{
+	profile pr = {malloc(2 * 401 * (n - 3) * sizeof(double)), 0};
+	for (uint32_t i = 0; i + 3 < n; i++)
+		for (int j = 0; j <= 400; j++) {
+			double t = j / 400.0, t2 = t * t, t3 = t2 * t;
+			double w[4] = {0.5 * (-t3 + 2 * t2 - t), 0.5 * (3 * t3 - 5 * t2 + 2), 0.5 * (-3 * t3 + 4 * t2 + t),
+				       0.5 * (t3 - t2)};
+			double x = 0, y = 0;
+			for (int k = 0; k < 4; k++)
+				x += w[k] * P[2 * (i + k)], y += w[k] * P[2 * (i + k) + 1];
+			pr.xy[2 * pr.n] = x, pr.xy[2 * pr.n + 1] = y, pr.n++;
+		}
+	return pr;
+}
+
+static void test_lathe(void)
+{
+	/* a closed linear profile: a square ring section, a torus of square section (exact volume) */
+	double sq[] = {1, 0, 2, 0, 2, 1, 1, 1, 1, 0};
+	shape_desc s = lathe_desc(SHAPE_LINEAR, sq, 5);
+	shape_accuracy acc = {1e-3, 256};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "linear lathe");
+	CHECK(open_edges(&m) == 0, "closed linear lathe: %zu open edges", open_edges(&m));
+	/* the ring's volume with its circles as 256-gons: (S / 2) sin(2 pi / S) (R2^2 - R1^2) h */
+	CHECK_NEAR(volume(&m), 128 * sin(2 * M_PI / 256) * 3, 1e-5);
+	CHECK(flipped_normals(&m) == 0, "lathe normals: %zu flipped", flipped_normals(&m));
+	mesh_free(&m);
+
+	/* a cubic profile from the axis to the axis: closed by its poles, within tol of the curve */
+	double cp[] = {0, -0.5, 0, 0, 1, 0.5, 1.2, 1.5, 0.5, 2.5, 0, 3, 0, 3.5};
+	s = lathe_desc(SHAPE_CUBIC, cp, 7);
+	acc = (shape_accuracy){2e-3, 128};
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "cubic lathe");
+	CHECK(open_edges(&m) == 0, "closed cubic lathe: %zu open edges", open_edges(&m));
+	CHECK(volume(&m) > 0, "outward: volume %g", volume(&m));
+	CHECK(flipped_normals(&m) == 0, "cubic lathe normals: %zu flipped", flipped_normals(&m));
+	profile pr = cr_profile(cp, 7);
+	double w = worst(&m, profile_dist, &pr);
+	CHECK(w <= acc.tol, "cubic lathe within %g of its profile: %g", acc.tol, w);
+	free(pr.xy);
+	mesh_free(&m);
+}
+
+/* sor: r^2 a cubic in y through the points, with POV-Ray's slopes (checked against the curve
+ * evaluated from the same formula by dense sampling of the mesh's radius at each height). */
+static void test_sor(void)
+{
+	double P[] = {0, 0, 1, 0, 1.2, 1, 0.6, 2, 0.8, 3, 0, 3.5};
+	shape_desc s = {.kind = SHAPE2_SOR, .pts = P, .n_pts = 6};
+	shape_accuracy acc = {1e-3, 128};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sor");
+	CHECK(open_edges(&m) == 0, "closed sor: %zu open edges", open_edges(&m));
+	CHECK(volume(&m) > 0, "sor outward: volume %g", volume(&m));
+	CHECK(flipped_normals(&m) == 0, "sor normals: %zu flipped", flipped_normals(&m));
+	/* the mesh's radii at its vertices on the profile's points (u = 0) are the points' radii */
+	int hits = 0;
+	for (uint32_t v = 0; v < m.num_vertices; v++) {
+		vec3 p = m.positions[v];
+		for (int k = 1; k <= 4; k++)
+			if (p.z == 0 && p.x > 0 && fabsf(p.y - (float)P[2 * k + 1]) < 1e-6f) {
+				CHECK_NEAR(p.x, P[2 * k], 1e-5);
+				hits++;
+			}
+	}
+	CHECK(hits >= 4, "the sor passes through its points (%d found)", hits);
+	mesh_free(&m);
+	s.open = true;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "open sor");
+	CHECK(open_edges(&m) > 0, "an open sor has its rims");
+	mesh_free(&m);
+}
+
+typedef struct poly_ctx {
+	const double *xy; /* closed polylines, their first point repeated */
+	uint32_t n;
+	double h1, h2;
+} poly_ctx;
+
+/* Distance to the walls or caps of a linear prism over the polylines xy. */
+static double prism_dist(const void *ctx, dvec3 p)
+{
+	const poly_ctx *c = ctx;
+	double wall = INFINITY;
+	for (uint32_t i = 0; i + 1 < c->n; i++)
+		wall = fmin(wall, seg_dist(p.x, p.z, &c->xy[2 * i], &c->xy[2 * i + 2]));
+	double cap = fmin(fabs(p.y - c->h1), fabs(p.y - c->h2));
+	return fmin(wall, cap);
+}
+
+static void test_prism(void)
+{
+	/* a square with a square hole (two sub-polygons, each closed by repeating its first point) */
+	double P[] = {-2, -2, 2, -2, 2, 2, -2, 2, -2, -2, -1, -1, 1, -1, 1, 1, -1, 1, -1, -1};
+	shape_desc s = {.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = P, .n_pts = 10, .h1 = 0, .h2 = 1};
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "prism");
+	CHECK(open_edges(&m) == 0, "closed prism: %zu open edges", open_edges(&m));
+	CHECK_NEAR(volume(&m), 16 - 4, 1e-4);
+	CHECK(flipped_normals(&m) == 0, "prism normals: %zu flipped", flipped_normals(&m));
+	poly_ctx c = {P, 10, 0, 1};
+	CHECK(worst(&m, prism_dist, &c) <= 1e-5, "on its walls and caps");
+	mesh_free(&m);
+	/* conic: the outline at y = 1 scaled by y; from 0.5 to 1 a frustum of volume (1 - 1/8) / 3 * 16 */
+	double Q[] = {-2, -2, 2, -2, 2, 2, -2, 2, -2, -2};
+	s = (shape_desc){.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = Q, .n_pts = 5, .h1 = 0.5, .h2 = 1, .conic = true};
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "conic prism");
+	CHECK(open_edges(&m) == 0, "closed conic prism");
+	CHECK_NEAR(volume(&m), 16.0 * (1 - 0.125) / 3, 1e-4);
+	mesh_free(&m);
+	/* a bow tie crosses itself */
+	double X[] = {0, 0, 1, 1, 1, 0, 0, 1, 0, 0};
+	s = (shape_desc){.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = X, .n_pts = 5, .h1 = 0, .h2 = 1};
+	diag quiet;
+	FILE *null = fopen("/dev/null", "w");
+	diag_init(&quiet, null);
+	CHECK(!shape_tessellate(&s, &acc, &m, &tol, &quiet, diag_noloc()), "a crossing outline is refused");
+	fclose(null);
+}
+
+typedef struct sweep_ctx {
+	const shape_desc *s;
+} sweep_ctx;
+
+/* Distance to the union of the swept spheres (linear: the segments' spheres, densely). */
+static double sweep_dist(const void *ctx, dvec3 p)
+{
+	const shape_desc *s = ((const sweep_ctx *)ctx)->s;
+	double best = INFINITY;
+	for (uint32_t i = 0; i + 1 < s->n_pts; i++)
+		for (int j = 0; j <= 200; j++) {
+			double t = j / 200.0, q[4];
+			for (int c = 0; c < 4; c++)
+				q[c] = s->pts[4 * i + c] * (1 - t) + s->pts[4 * (i + 1) + c] * t;
+			best = fmin(best, d3_length(d3_sub(p, d3(q[0], q[1], q[2]))) - q[3]);
+		}
+	return fabs(best);
+}
+
+static void test_sphere_sweep(void)
+{
+	double S[] = {0, 0, 0, 0.5, 2, 0, 0, 0.3};
+	shape_desc s = {.kind = SHAPE2_SPHERE_SWEEP, .spline = SHAPE_LINEAR, .pts = S, .n_pts = 2};
+	shape_accuracy acc = {1e-3, 128};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sphere_sweep");
+	CHECK(open_edges(&m) == 0, "closed sphere_sweep: %zu open edges", open_edges(&m));
+	CHECK(volume(&m) > 0, "sweep outward");
+	CHECK(flipped_normals(&m) == 0, "sweep normals");
+	sweep_ctx c = {&s};
+	double w = worst(&m, sweep_dist, &c);
+	CHECK(w <= acc.tol, "sweep within %g of the swept spheres: %g", acc.tol, w);
+	mesh_free(&m);
+	double B[] = {0, 0, 0, 0.3, 1, 1, 0, 0.3, 2, 0, 0, 0.4, 3, 1, 0, 0.3, 4, 0, 0, 0.3};
+	s = (shape_desc){.kind = SHAPE2_SPHERE_SWEEP, .spline = SHAPE_BSPLINE, .pts = B, .n_pts = 5};
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "b_spline sweep");
+	CHECK(open_edges(&m) == 0, "closed b_spline sweep: %zu open edges", open_edges(&m));
+	CHECK(volume(&m) > 0, "b_spline sweep outward");
+	mesh_free(&m);
+}
+
+typedef struct blob_ctx {
+	const shape_desc *s;
+} blob_ctx;
+
+/* Distance to the iso-surface, to first order: |F - T| / |grad F| (gradient by differences). */
+static double blob_dist(const void *ctx, dvec3 p)
+{
+	const shape_desc *s = ((const blob_ctx *)ctx)->s;
+	double f = shape_blob_field(s, p) - s->threshold, e = 1e-5;
+	dvec3 g = d3((shape_blob_field(s, d3_add(p, d3(e, 0, 0))) - shape_blob_field(s, d3_sub(p, d3(e, 0, 0)))) / (2 * e),
+		     (shape_blob_field(s, d3_add(p, d3(0, e, 0))) - shape_blob_field(s, d3_sub(p, d3(0, e, 0)))) / (2 * e),
+		     (shape_blob_field(s, d3_add(p, d3(0, 0, e))) - shape_blob_field(s, d3_sub(p, d3(0, 0, e)))) / (2 * e));
+	return fabs(f) / d3_length(g);
+}
+
+static void test_blob(void)
+{
+	/* POV-Ray's field: one sphere of strength 1, radius 1, threshold 0.5 is a sphere of radius
+	 * sqrt(1 - sqrt(0.5)) */
+	shape_blob_comp one = {.a = d3(0, 0, 0), .radius = 1, .strength = 1};
+	shape_desc s = {.kind = SHAPE2_BLOB, .comps = &one, .n_comps = 1, .threshold = 0.5};
+	CHECK_NEAR(shape_blob_field(&s, d3(sqrt(1 - sqrt(0.5)), 0, 0)), 0.5, 1e-12);
+	CHECK_NEAR(shape_blob_field(&s, d3(0, 0.5, 0)), 0.5625, 1e-12);
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "blob");
+	CHECK(open_edges(&m) == 0, "closed blob: %zu open edges", open_edges(&m));
+	double r = sqrt(1 - sqrt(0.5));
+	CHECK_NEAR(volume(&m), 4 * M_PI * r * r * r / 3, 0.01 * 4 * M_PI * r * r * r / 3);
+	CHECK(flipped_normals(&m) == 0, "blob normals");
+	mesh_free(&m);
+	/* the candle of POV-Ray's subsurface demo: one closed surface within tol of its iso-surface */
+	shape_blob_comp candle[] = {
+		{.cylinder = true, .a = d3(0, 0, 0), .b = d3(0, 2, 0), .radius = 1, .strength = 1},
+		{.a = d3(0, 2.5, 0), .radius = 0.8, .strength = -2},
+		{.a = d3(0, -0.52, 0), .radius = 0.8, .strength = -2},
+		{.a = d3(0, 2, -0.5), .radius = 0.1, .strength = -0.2},
+		{.cylinder = true, .a = d3(0, 1.88, -0.52), .b = d3(0, 1.5, -0.52), .radius = 0.05, .strength = 0.2},
+		{.a = d3(0, 1.5, -0.55), .radius = 0.07, .strength = 0.2},
+	};
+	s = (shape_desc){.kind = SHAPE2_BLOB, .comps = candle, .n_comps = 6, .threshold = 0.5};
+	acc.tol = 1e-2;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "candle");
+	CHECK(tol <= 2 * acc.tol, "the candle reached %g (asked %g)", tol, acc.tol);
+	CHECK(open_edges(&m) == 0, "closed candle: %zu open edges", open_edges(&m));
+	CHECK(pieces(&m) == 1, "the candle is one surface: %d pieces", pieces(&m));
+	CHECK(volume(&m) > 0, "candle outward");
+	CHECK(flipped_normals(&m) == 0, "candle normals: %zu flipped", flipped_normals(&m));
+	blob_ctx c = {&s};
+	double w = worst(&m, blob_dist, &c);
+	CHECK(w <= 1.01 * tol, "candle within its stated %g of its iso-surface: %g", tol, w);
+	mesh_free(&m);
+}
+
+static void test_text(void)
+{
+	const char *font = "/usr/share/povray-3.7/include/timrom.ttf";
+	if (access(font, R_OK) != 0) {
+		fprintf(stderr, "test_shapes2: %s missing (fonts-povray): text not tested\n", font);
+		return;
+	}
+	shape_desc s = {.kind = SHAPE2_TEXT, .font = font, .text = "Bob 8%", .depth = 0.25};
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "text");
+	CHECK(m.num_triangles > 100, "text has triangles: %u", m.num_triangles);
+	CHECK(open_edges(&m) == 0, "closed text: %zu open edges", open_edges(&m));
+	CHECK(volume(&m) > 0, "text outward: %g", volume(&m));
+	vec3 lo, hi;
+	mesh_bounds(&m, &lo, &hi);
+	CHECK(fabsf(lo.x) < 1e-6f, "the first glyph's left edge at 0: %g", lo.x);
+	CHECK(lo.z == 0 && fabsf(hi.z - 0.25f) < 1e-6f, "z from 0 to the depth: %g %g", lo.z, hi.z);
+	CHECK(hi.y > 0.6f && hi.y < 1.0f, "cap height of an em: %g", hi.y);
+	mesh_free(&m);
+}
+
+/* bicubic_patch: each triangle's centre within tol of the patch at the centre's parameters
+ * (an upper bound of its distance to the surface); the Bernstein sum evaluated here. */
+static dvec3 bezier(const double *cp, double u, double v)
+{
+	double bu[4] = {(1 - u) * (1 - u) * (1 - u), 3 * u * (1 - u) * (1 - u), 3 * u * u * (1 - u), u * u * u};
+	double bv[4] = {(1 - v) * (1 - v) * (1 - v), 3 * v * (1 - v) * (1 - v), 3 * v * v * (1 - v), v * v * v};
+	dvec3 p = d3(0, 0, 0);
+	for (int i = 0; i < 4; i++)
+		for (int j = 0; j < 4; j++)
+			p = d3_add(p, d3_scale(d3(cp[12 * i + 3 * j], cp[12 * i + 3 * j + 1], cp[12 * i + 3 * j + 2]), bu[i] * bv[j]));
+	return p;
+}
+
+static void test_bicubic(void)
+{
+	double cp[48] = {-2, 0, -2, -1, 1, -2, 1, -1, -2, 2, 0, -2, -2, 1, -1, -1, 3, -1, 1, 2, -1, 2, 0, -1,
+			 -2, 0, 1,  -1, -1, 1, 1, 2, 1,   2, 1, 1,  -2, 0, 2,  -1, 1, 2, 1, 0, 2,  2, 0, 2};
+	shape_desc s = {.kind = SHAPE2_BICUBIC, .pts = cp, .n_pts = 16, .st = {0, 0, 1, 0, 1, 1, 0, 1}};
+	shape_accuracy acc = {2e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "bicubic_patch");
+	double w = 0;
+	for (uint32_t t = 0; t < m.num_triangles; t++) {
+		const uint32_t *i = &m.indices[3 * t];
+		vec2 uv = v2(0, 0);
+		vec3 c = v3s(0);
+		for (int k = 0; k < 3; k++)
+			uv = v2(uv.x + m.uvs[i[k]].x / 3, uv.y + m.uvs[i[k]].y / 3), c = v3_add(c, v3_scale(m.positions[i[k]], 1.0f / 3));
+		/* the default corners map (v, u) to (s, t) = (v, u) */
+		w = fmax(w, d3_length(d3_sub(v3_to_d3(c), bezier(cp, uv.y, uv.x))));
+	}
+	CHECK(w <= acc.tol, "patch within %g: %g", acc.tol, w);
+	CHECK(flipped_normals(&m) == 0, "patch normals agree with its faces");
+	CHECK(open_edges(&m) > 0, "a patch is open: its rim");
+	mesh_free(&m);
+}
+
+static void test_limit(void)
+{
+	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
+	shape_desc s = lathe_desc(SHAPE_CUBIC, cp, 4);
+	shape_accuracy acc = {1e-9, 1u << 22};
+	mesh m = {0};
+	double tol;
+	diag quiet;
+	FILE *null = fopen("/dev/null", "w");
+	diag_init(&quiet, null);
+	CHECK(!shape_tessellate(&s, &acc, &m, &tol, &quiet, diag_noloc()), "past the triangle limit: refused");
+	CHECK(quiet.errors == 1, "one error");
+	fclose(null);
+}
+
+int main(void)
+{
+	diag_init(&d, stderr);
+	test_lathe();
+	test_sor();
+	test_prism();
+	test_sphere_sweep();
+	test_blob();
+	test_text();
+	test_bicubic();
+	test_limit();
+	return check_done("test_shapes2");
+}
