@@ -32,6 +32,16 @@ typedef struct world_options {
 	sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
 } world_options;
 
+/* One tessellated shape of POV-Ray's (cylinder, torus, ...; src/geom/shapes.h) for `circe check`:
+ * its keyword, place, triangles and the distance from its surface the mesh keeps to (0: exact, a
+ * polygon or height field), in its own units. */
+typedef struct world_shape_stat {
+	const char *name;
+	diag_loc loc;
+	uint32_t triangles;
+	double max_error;
+} world_shape_stat;
+
 typedef struct world_stats {
 	size_t triangles;       /* of the unique meshes */
 	size_t instanced_triangles; /* counting each instance */
@@ -41,6 +51,8 @@ typedef struct world_stats {
 	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
 	size_t instances;       /* one per scene object */
 	size_t instance_bytes;  /* the world's records of them (not the top-level BVHs) */
+	const world_shape_stat *shapes; /* in the scene's order of geometry; owned by the world */
+	size_t n_shapes;
 } world_stats;
 
 /* A scene made ready to render, read-only once built: any number of render threads share it.
