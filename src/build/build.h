@@ -32,7 +32,7 @@ typedef struct world_options {
 	sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
 } world_options;
 
-/* One tessellated shape of POV-Ray's (cylinder, torus, ...; src/geom/shapes.h) for `circe check`:
+/* One tessellated shape of POV-Ray's (cylinder, torus, ...; src/geom/povshape.h) for `circe check`:
  * its keyword, place, triangles and the distance from its surface the mesh keeps to (0: exact, a
  * polygon or height field), in its own units. */
 typedef struct world_shape_stat {

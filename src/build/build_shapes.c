@@ -1,5 +1,5 @@
 /* build_shapes.c - POV-Ray's shapes (cylinder, cone, torus, disc, polygon, superellipsoid,
- * height_field, quadric; src/geom/shapes.h) tessellated for the objects that use them. A shape
+ * height_field, quadric; src/geom/povshape.h) tessellated for the objects that use them. A shape
  * declared and never placed costs nothing (shapes.inc declares dozens), and the accuracy follows
  * the sphere's rule on screen (build_inst.c's view_px_per_unit): its surface within
  * WORLD_SPHERE_MAX_ERROR_PX and its edges along curves within WORLD_SPHERE_MAX_EDGE_PX, for the
@@ -7,7 +7,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
-#include "geom/shapes.h"
+#include "geom/povshape.h"
 #include "io/image.h"
 
 #include <float.h>
@@ -161,13 +161,15 @@ static bool tessellate(const scene_geom *g, const shape_accuracy *a, mesh *m, do
 							       : "an unbounded quadric is not supported by circe (it would be "
 								 "polygonised inside a clipped_by or bounded_by, which circe "
 								 "does not have yet)");
-		diag_note(d, g->loc, "the quadric was written here");
+		if (use.line != g->loc.line || use.col != g->loc.col || use.src != g->loc.src)
+			diag_note(d, g->loc, "the quadric was written here");
 		return false;
 	}
 	case SHAPE_POLY:
 		diag_error(d, use, "a %s surface is not supported by circe (it would be polygonised inside a "
 				   "clipped_by or bounded_by, which circe does not have yet)", g->u.poly.keyword);
-		diag_note(d, g->loc, "the %s was written here", g->u.poly.keyword);
+		if (use.line != g->loc.line || use.col != g->loc.col || use.src != g->loc.src)
+			diag_note(d, g->loc, "the %s was written here", g->u.poly.keyword);
 		return false;
 	default:
 		return true;

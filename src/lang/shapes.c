@@ -15,7 +15,7 @@
 
 /* POV-Ray's polynomial order limit (MAX_ORDER, source/backend/math/polysolv.h). */
 #define POLY_MAX_ORDER 35
-/* A polygon's points (SHAPE_POLYGON_MAX_POINTS of src/geom/shapes.h: its triangulation pairs edges). */
+/* A polygon's points (SHAPE_POLYGON_MAX_POINTS of src/geom/povshape.h: its triangulation pairs edges). */
 #define POLYGON_MAX_POINTS 10000
 /* POV-Ray's EPSILON (configbackend.h): a polygon point this close to its subpolygon's first closes it. */
 #define POV_EPSILON 1.0e-10
@@ -259,7 +259,10 @@ static bool poly_coeffs(parser *p, const char *what, double *c, uint32_t n)
 	for (uint32_t i = 0; ok && i < n; i++) {
 		if (i)
 			lang_accept(p, LTK_COMMA);
-		ok = lang_float(p, "as a coefficient", &c[i]);
+		if (lang_peek(p)->kind == LTK_GT)
+			ok = lang_error(p, lang_peek(p)->loc, "the %s needs %u coefficients, found %u", what, n, i);
+		else
+			ok = lang_float(p, "as a coefficient", &c[i]);
 	}
 	p->no_gt = saved;
 	TRY(ok);

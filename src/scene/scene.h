@@ -76,7 +76,7 @@ typedef enum scene_shape_kind {
 	SHAPE_MESH, /* triangles from mesh{triangle...}, mesh2, or a generated list */
 	SHAPE_MESH_FILE, /* mesh { file "x.obj" }: loaded by the importer */
 	SHAPE_SUBDIV, /* subdivision_surface */
-	/* POV-Ray's shapes tessellated at the build (src/geom/shapes.h; scene_shapes.c names them) */
+	/* POV-Ray's shapes tessellated at the build (src/geom/povshape.h; scene_shapes.c names them) */
 	SHAPE_CONE, /* cone and cylinder */
 	SHAPE_TORUS,
 	SHAPE_DISC,

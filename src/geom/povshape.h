@@ -1,12 +1,12 @@
-/* shapes.h - POV-Ray's finite shapes as triangle meshes: cone and cylinder, torus, disc, polygon,
+/* povshape.h - POV-Ray's finite shapes as triangle meshes: cone and cylinder, torus, disc, polygon,
  * superellipsoid, height field and the ellipsoid a quadric may be. Each fills a mesh (mesh.h) in the
  * shape's own space with outward unit normals (geometric normals agree: counter-clockwise seen
  * from outside) and UVs, closed where the shape is closed (cone, cylinder and torus unless open,
  * superellipsoid, ellipsoid), and reports the distance bound it met. The accuracy comes from the
  * caller (the build derives it from the screen, as a sphere's level); every shape refuses, before
  * allocating, a mesh of more than a->max_triangles triangles, with a message at loc. */
-#ifndef CIRCE_GEOM_SHAPES_H
-#define CIRCE_GEOM_SHAPES_H
+#ifndef CIRCE_GEOM_POVSHAPE_H
+#define CIRCE_GEOM_POVSHAPE_H
 
 #include "geom/mesh.h"
 #include "geom/prim.h"

@@ -1,7 +1,7 @@
-/* shapes.c - tessellation of cone, torus, disc, polygon, superellipsoid, height field and the
- * quadric ellipsoid (shapes.h). Parametric shapes lay out a (columns + 1) x (rows + 1) vertex grid,
+/* povshape.c - tessellation of cone, torus, disc, polygon, superellipsoid, height field and the
+ * quadric ellipsoid (povshape.h). Parametric shapes lay out a (columns + 1) x (rows + 1) vertex grid,
  * the seam duplicated for UVs; closedness is that of positions. */
-#include "geom/shapes.h"
+#include "geom/povshape.h"
 
 #include "base/mem.h"
 
@@ -241,20 +241,14 @@ double shape_superellipsoid_norm(double e, double n, dvec3 p)
 }
 
 /* The normal direction at (lon u, lat v): the gradient, C_v^(2-n) C_u^(2-e), C_v^(2-n) S_u^(2-e),
- * S_v^(2-n) in signed powers; where a power of 0 is infinite, the limit direction. */
-static dvec3 super_normal(double e, double n, double cu, double su, double cv, double sv)
+ * S_v^(2-n) in signed powers. Where a power of 0 is infinite (an exponent over 2 makes a cusp
+ * there), the direction from the centre: a cusp's outward bisector. */
+static dvec3 super_normal(double e, double n, double cu, double su, double cv, double sv, dvec3 p)
 {
-	double c[3] = {spow(cv, 2.0 - n) * spow(cu, 2.0 - e), spow(cv, 2.0 - n) * spow(su, 2.0 - e), spow(sv, 2.0 - n)};
-	bool inf = false;
-	for (int k = 0; k < 3; k++)
-		inf |= !isfinite(c[k]);
-	if (inf)
-		for (int k = 0; k < 3; k++)
-			c[k] = isfinite(c[k]) ? 0.0 : (isnan(c[k]) ? 0.0 : copysign(1.0, c[k]));
-	dvec3 r = d3(c[0], c[1], c[2]);
+	dvec3 r = d3(spow(cv, 2.0 - n) * spow(cu, 2.0 - e), spow(cv, 2.0 - n) * spow(su, 2.0 - e), spow(sv, 2.0 - n));
 	double l = d3_length(r);
 	if (!(l > 0.0) || !isfinite(l))
-		r = d3(cv * cu, cv * su, sv), l = d3_length(r);
+		r = p, l = d3_length(p);
 	return d3_scale(r, 1.0 / l);
 }
 
@@ -281,8 +275,9 @@ static void super_grid(double e, double n, uint32_t cols, uint32_t rows, mesh *m
 			double cu, su; /* longitude -pi + 2 pi i / cols */
 			quarter_cs(i % cols, cols / 4, &cu, &su);
 			cu = -cu, su = -su;
-			dvec3 p = d3(spow(cv, n) * spow(cu, e), spow(cv, n) * spow(su, e), spow(sv, n));
-			put(m, k * (cols + 1) + i, p, super_normal(e, n, cu, su, cv, sv), (double)i / cols, (double)k / rows);
+			/* + 0.0 makes -0 +0: the pole's vertices are then one point, bit for bit. */
+			dvec3 p = d3(spow(cv, n) * spow(cu, e) + 0.0, spow(cv, n) * spow(su, e) + 0.0, spow(sv, n) + 0.0);
+			put(m, k * (cols + 1) + i, p, super_normal(e, n, cu, su, cv, sv, p), (double)i / cols, (double)k / rows);
 		}
 	}
 }
