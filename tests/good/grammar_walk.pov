@@ -100,3 +100,14 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 light_source { Lamp translate x }
 #default { texture { pigment { Paint } } finish { Gloss } }
 sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { Paint rotate x } finish { Gloss } } interior { Glass } }
+// rule: shape, cylinder, cone, torus, disc, polygon, superellipsoid, height_field, quadric, poly
+cylinder { <0, 0, 0>, <0, 1, 0>, 0.5 open translate x }
+cone { 0, 1 y 0.2 }
+torus { 1, 0.25 sturm }
+disc { 0, y, 2, 0.5 }
+polygon { 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }
+superellipsoid { <0.5, 1> }
+height_field { png "hf.png" smooth water_level 0.1 }
+quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+#declare Cubic = cubic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1> }
+#declare Poly = poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }
