@@ -309,7 +309,10 @@ bool shape_superellipsoid(double e, double n, const shape_accuracy *a, mesh *out
 		diag_error(d, loc, "a superellipsoid needs exponents > 0");
 		return false;
 	}
-	for (uint32_t cols = SHAPE_MIN_SEGMENTS;; cols *= 2) {
+	/* From the segments a sphere of radius 1 (its equator) needs, a multiple of 4 (the axes on the
+	 * grid), doubled while the measured error is over the bound. */
+	uint32_t start = (shape_circle_segments(1.0, a) + 3) / 4 * 4;
+	for (uint32_t cols = start;; cols *= 2) {
 		uint32_t rows = cols / 2;
 		size_t nt = 2 * (size_t)cols * (rows - 1), nv = ((size_t)cols + 1) * (rows + 1);
 		if (!within_limit(nt, a, "superellipsoid", d, loc) || !alloc_mesh(out, nv, nt, true, d, loc))

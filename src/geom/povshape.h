@@ -58,7 +58,8 @@ bool shape_disc(dvec3 centre, dvec3 normal, double radius, double hole, const sh
 bool shape_polygon(const dvec3 *points, uint32_t n, const shape_accuracy *a, mesh *out, diag *d, diag_loc loc);
 
 /* POV-Ray's superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in [-1, 1]^3,
- * from Barr's signed-power parametrisation (longitude u about z, latitude v), refined by doubling
+ * from Barr's signed-power parametrisation (longitude u about z, latitude v), from the segments a
+ * circle of radius 1 needs (shape_circle_segments: the edge bound too), refined by doubling
  * until the largest radial distance of the triangles' sample points (centroid, edge midpoints) from
  * the surface is within max_error, or SHAPE_MAX_SEGMENTS is reached; *err is that measured
  * distance. UV: u = (lon + pi) / 2 pi, v = (lat + pi / 2) / pi. */
