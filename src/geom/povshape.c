@@ -452,6 +452,29 @@ static bool polygon_plane(const dvec3 *p, uint32_t n, dvec3 *normal, diag *d, di
 	return true;
 }
 
+/* The ys between which the edges neither cross nor end, sorted, each once: every end point and
+ * every crossing (pair by pair). False when memory runs out. */
+static bool polygon_ys(const edge2 *e, size_t ne, vecbuf *ys)
+{
+	for (size_t i = 0; i < ne; i++) {
+		if (!vecbuf_push(ys, &e[i].y0) || !vecbuf_push(ys, &e[i].y1))
+			return false;
+		for (size_t j = i + 1; j < ne; j++) {
+			double y = crossing_y(&e[i], &e[j]);
+			if (!isnan(y) && !vecbuf_push(ys, &y))
+				return false;
+		}
+	}
+	double *v = ys->data;
+	qsort(v, ys->len, sizeof *v, cmp_double);
+	size_t u = 0;
+	for (size_t i = 0; i < ys->len; i++)
+		if (!u || v[i] != v[u - 1])
+			v[u++] = v[i];
+	ys->len = u;
+	return true;
+}
+
 bool shape_polygon(const dvec3 *p, uint32_t n, const shape_accuracy *a, mesh *out, diag *d, diag_loc loc)
 {
 	memset(out, 0, sizeof *out);
@@ -464,28 +487,16 @@ bool shape_polygon(const dvec3 *p, uint32_t n, const shape_accuracy *a, mesh *ou
 		return true; /* ignored: an empty mesh */
 	frame(nrm, &e1, &e2);
 	edge2 *e = mem_alloc(n, sizeof *e);
-	size_t max_ys = 2 * (size_t)n + (size_t)n * (n - 1) / 2;
-	double *ys = mem_alloc(max_ys, sizeof *ys);
 	slab_x *xs = mem_alloc(n, sizeof *xs);
 	double *tris = NULL;
-	bool ok = e && ys && xs;
-	size_t ne = ok ? polygon_edges(p, n, p[0], e1, e2, e) : 0, nys = 0;
-	for (size_t i = 0; ok && i < ne; i++) {
-		ys[nys++] = e[i].y0, ys[nys++] = e[i].y1;
-		for (size_t j = i + 1; j < ne; j++) {
-			double y = crossing_y(&e[i], &e[j]);
-			if (!isnan(y))
-				ys[nys++] = y;
-		}
-	}
-	if (ok) {
-		qsort(ys, nys, sizeof *ys, cmp_double);
-		size_t u = 0;
-		for (size_t i = 0; i < nys; i++)
-			if (!u || ys[i] != ys[u - 1])
-				ys[u++] = ys[i];
-		nys = u;
-	}
+	vecbuf yb;
+	vecbuf_init(&yb, sizeof(double));
+	bool ok = e && xs;
+	size_t ne = ok ? polygon_edges(p, n, p[0], e1, e2, e) : 0;
+	bool oom = !ok || !polygon_ys(e, ne, &yb);
+	ok = ok && !oom;
+	const double *ys = yb.data;
+	size_t nys = yb.len;
 	size_t nt = ok ? fill_slabs(e, ne, ys, nys, xs, NULL) : 0;
 	ok = ok && within_limit(nt, a, "polygon", d, loc);
 	if (ok && nt) {
@@ -499,9 +510,10 @@ bool shape_polygon(const dvec3 *p, uint32_t n, const shape_accuracy *a, mesh *ou
 			}
 		}
 	}
-	if (!(e && ys && xs) || (nt && !tris))
+	if (oom || (nt && !tris))
 		diag_error(d, loc, "out of memory while tessellating");
-	mem_free(e), mem_free(ys), mem_free(xs), mem_free(tris);
+	mem_free(e), mem_free(xs), mem_free(tris);
+	vecbuf_free(&yb);
 	return ok;
 }
 

@@ -77,7 +77,11 @@ bool shape_height_field(const float *heights, uint32_t w, uint32_t h, bool smoot
 			const shape_accuracy *a, mesh *out, diag *d, diag_loc loc);
 
 /* The kinds of surface a quadric is, for shape_quadric. */
-typedef enum shape_quadric_kind { SHAPE_QUADRIC_ELLIPSOID, SHAPE_QUADRIC_EMPTY, SHAPE_QUADRIC_UNBOUNDED } shape_quadric_kind;
+typedef enum shape_quadric_kind {
+	SHAPE_QUADRIC_ELLIPSOID,
+	SHAPE_QUADRIC_EMPTY,
+	SHAPE_QUADRIC_UNBOUNDED
+} shape_quadric_kind;
 /* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0 (q[0..9] = A..J): a definite
  * quadratic part with a solution is an ellipsoid, tessellated as the unit sphere mapped onto it
  * (its error: the sphere's relative error times the longest semi-axis); anything else is empty or

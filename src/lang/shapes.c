@@ -32,6 +32,17 @@ static bool float_at(parser *p, const char *what, double *x, diag_loc *loc)
 	return lang_float(p, what, x);
 }
 
+/* The common end of a cone and a cylinder: distinct end points (POV-Ray's Compute_Cone_Data
+ * throws "Degenerate cone/cylinder" within EPSILON), then [ "open" ] and the modifiers. */
+static bool cone_tail(parser *p, vecbuf *out, scene_geom *g, diag_loc kw, diag_loc open, const char *what)
+{
+	scene_cone *c = &g->u.cone;
+	if (d3_length(d3_sub(c->cap, c->base)) < POV_EPSILON)
+		return lang_error(p, kw, "degenerate %s: its base and cap points are the same", what);
+	c->open = lang_accept(p, LTK_KW_OPEN);
+	return lang_place_object(p, out, g, kw, open, what);
+}
+
 /* cylinder = "cylinder" "{" vector [","] vector [","] float [ "open" ] { modifier } "}" */
 static bool cylinder(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
@@ -48,10 +59,7 @@ static bool cylinder(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	c->cap_radius = c->base_radius;
 	if (!(c->base_radius > 0))
 		return lang_error(p, rl, "cylinder radius must be > 0, found %g", c->base_radius);
-	if (d3_length(d3_sub(c->cap, c->base)) < POV_EPSILON)
-		return lang_error(p, kw, "degenerate cylinder: its base and cap points are the same");
-	c->open = lang_accept(p, LTK_KW_OPEN);
-	return lang_place_object(p, out, g, kw, open, "cylinder");
+	return cone_tail(p, out, g, kw, open, "cylinder");
 }
 
 /* cone = "cone" "{" vector [","] float [","] vector [","] float [ "open" ] { modifier } "}" */
@@ -72,10 +80,7 @@ static bool cone(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	TRY(nonneg(p, cl, "cone cap radius", c->cap_radius));
 	if (c->base_radius == 0 && c->cap_radius == 0)
 		return lang_error(p, cl, "degenerate cone: both radii are 0");
-	if (d3_length(d3_sub(c->cap, c->base)) < POV_EPSILON)
-		return lang_error(p, kw, "degenerate cone: its base and cap points are the same");
-	c->open = lang_accept(p, LTK_KW_OPEN);
-	return lang_place_object(p, out, g, kw, open, "cone");
+	return cone_tail(p, out, g, kw, open, "cone");
 }
 
 /* torus = "torus" "{" float [","] float { modifier | "sturm" } "}"   (major, minor radius) */
@@ -294,8 +299,16 @@ static bool poly_common(parser *p, vecbuf *out, diag_loc kw, diag_loc open, int 
 	return lang_place_object(p, out, g, kw, open, what);
 }
 
-static bool poly(parser *p, vecbuf *out, diag_loc kw, diag_loc open) { return poly_common(p, out, kw, open, 0, "poly"); }
-static bool cubic(parser *p, vecbuf *out, diag_loc kw, diag_loc open) { return poly_common(p, out, kw, open, 3, "cubic"); }
+static bool poly(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return poly_common(p, out, kw, open, 0, "poly");
+}
+
+static bool cubic(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return poly_common(p, out, kw, open, 3, "cubic");
+}
+
 static bool quartic(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	return poly_common(p, out, kw, open, 4, "quartic");
