@@ -247,6 +247,27 @@ static void note_memory_limit(void)
 			(double)mem_limit() / 1048576.0, (double)live / 1048576.0, (double)asked / 1048576.0);
 }
 
+/* The shapes check lists one by one before a count of the rest. */
+enum { CHECK_MAX_SHAPES_LISTED = 40 };
+
+/* Each tessellated POV-Ray shape: its place, triangles and the accuracy the screen asked of it. */
+static void print_check_shapes(const world_stats *ws)
+{
+	for (size_t i = 0; i < ws->n_shapes && i < CHECK_MAX_SHAPES_LISTED; i++) {
+		const world_shape_stat *s = &ws->shapes[i];
+		printf("  %s at %s:%u:%u: %zu triangles, ", s->name, s->loc.src ? s->loc.src->name : "?", s->loc.line,
+		       s->loc.col, s->triangles);
+		if (s->level >= 0)
+			printf("level %d, ", s->level);
+		if (s->max_error > 0.0)
+			printf("within %.3g units of the surface\n", s->max_error);
+		else
+			printf("exact\n");
+	}
+	if (ws->n_shapes > CHECK_MAX_SHAPES_LISTED)
+		printf("  ... and %zu more shapes\n", ws->n_shapes - CHECK_MAX_SHAPES_LISTED);
+}
+
 /* Prints what `circe check` knows about a parsed scene. */
 static void print_check_summary(const char *path, const scene *sc, const world_stats *ws, bool fits)
 {
@@ -269,11 +290,7 @@ static void print_check_summary(const char *path, const scene *sc, const world_s
 	       st.subdiv_faces + ws->cage_file_faces);
 	printf("  triangles after tessellation: %zu unique, %zu with instances (%zu subdivision surfaces)\n",
 	       ws->triangles, ws->instanced_triangles, ws->subdiv_surfaces);
-	for (size_t i = 0; i < ws->n_shapes; i++) { /* POV-Ray's shapes: what each became */
-		const world_shape_stat *sh = &ws->shapes[i];
-		printf("  %s at %s:%u: %zu triangles, level %u (within %.3g units of the surface)\n", sh->kind,
-		       sh->loc.src ? sh->loc.src->name : "?", sh->loc.line, sh->triangles, sh->level, sh->tol);
-	}
+	print_check_shapes(ws);
 	if (st.sss_nonuniform)
 		printf("  SSS objects under a non-uniform scale: %zu (circles become ellipses there: their "
 		       "triangles are flattened into world space at build)\n", st.sss_nonuniform);

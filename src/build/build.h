@@ -32,6 +32,18 @@ typedef struct world_options {
 	sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
 } world_options;
 
+/* One tessellated shape of POV-Ray's (cylinder, torus, lathe, blob, ...) for `circe check`: its
+ * keyword, place, triangles, the distance from its surface the mesh keeps to (0: exact, a polygon
+ * or height field), in its own units, and the sphere level its size on screen asked for (-1 where
+ * the accuracy was chosen otherwise). */
+typedef struct world_shape_stat {
+	const char *name;
+	diag_loc loc;
+	size_t triangles;
+	double max_error;
+	int level;
+} world_shape_stat;
+
 typedef struct world_stats {
 	size_t triangles;       /* of the unique meshes */
 	size_t instanced_triangles; /* counting each instance */
@@ -41,18 +53,10 @@ typedef struct world_stats {
 	size_t flattened;       /* SSS instances under a non-uniform transform, copied into world space */
 	size_t instances;       /* one per scene object */
 	size_t instance_bytes;  /* the world's records of them (not the top-level BVHs) */
-	const struct world_shape_stat *shapes; /* POV-Ray's shapes (geom/shape.h), in the scene's order */
+	const world_shape_stat *shapes; /* in the scene's order of geometry; owned by the world */
 	size_t n_shapes;
 } world_stats;
 
-/* One POV-Ray shape as the build tessellated it, for `circe check`. */
-typedef struct world_shape_stat {
-	const char *kind; /* "lathe", "blob", ... */
-	diag_loc loc;
-	unsigned level; /* the sphere level its size on screen asked for */
-	double tol; /* the largest distance of its triangles from the surface, in its own units */
-	size_t triangles;
-} world_shape_stat;
 
 /* A scene made ready to render, read-only once built: any number of render threads share it.
  * Opaque but to the build and render/world.c (render/world.h lays it out). */

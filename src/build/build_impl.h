@@ -23,14 +23,23 @@ bool build_geom(world *w, const scene *sc, const scene_geom *g, const world_opti
 
 /* build_shape.c */
 bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d);
+/* Appends one tessellated shape's record to w->stats.shapes (for `circe check`). */
+bool note_shape(world *w, const world_shape_stat *st, diag *d);
 
 /* build_inst.c */
-uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double focal_px, double dist, double r,
-		      double cos_axis);
+/* The sphere level (world.h) for a silhouette radius_px pixels on screen. */
+uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double radius_px);
+/* Pixels per scene unit on screen at an object whose world-space bounding sphere is (centre, r),
+ * off the view's axis as a sphere's level counts it; INFINITY with the camera inside. */
+double view_px_per_unit(const subd_camera *view, dvec3 centre, double r);
 double axis_scale(const xform *t);
 bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_top(world *w, diag *d);
+
+/* build_shapes.c: POV-Ray's shapes each object uses, tessellated once per geometry record at the
+ * accuracy its most demanding object asks for on screen. */
+bool build_shapes(world *w, const scene *sc, const subd_camera *view, diag *d);
 
 /* build_material.c */
 const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d);

@@ -26,14 +26,11 @@ static uint32_t shape_level(const scene *sc, const scene_geom *g, const subd_cam
 		const scene_object *o = scene_object_at(sc, i);
 		if (o->geom != g)
 			continue;
-		dvec3 to = d3_sub(xform_point(&o->transform, centre), v3_to_d3(view->position));
-		double dist = d3_length(to), scale = axis_scale(&o->transform), r = radius * scale;
-		double cos_axis = dist > 0 ? d3_dot(to, d3_normalize(v3_to_d3(view->look))) / dist : 1.0;
-		uint32_t k = sphere_level(rel_err, view_focal_px(view), dist, r, cos_axis);
+		double scale = axis_scale(&o->transform), r = radius * scale;
+		/* pixels per unit of the shape's own space at its nearest (build_inst.c's rule) */
+		double ppu = view_px_per_unit(view, xform_point(&o->transform, centre), r) * scale;
+		uint32_t k = sphere_level(rel_err, radius * ppu);
 		level = k > level ? k : level;
-		/* pixels per unit of the shape's own space at its nearest (sphere_level's radius_px / r) */
-		double c = fmax(fmin(cos_axis, 1.0), 0.5);
-		double ppu = dist > r ? view_focal_px(view) / sqrt((dist - r) * (dist + r)) / (c * c) * scale : INFINITY;
 		double t = fmax(WORLD_SPHERE_MAX_ERROR_PX / ppu, rel_err[PRIM_SPHERE_LEVELS - 1] * radius);
 		*tol = fmin(*tol, t);
 	}
@@ -41,7 +38,7 @@ static uint32_t shape_level(const scene *sc, const scene_geom *g, const subd_cam
 }
 
 /* Appends the record of one tessellated shape to the world's statistics. */
-static bool note_shape(world *w, const world_shape_stat *st, diag *d)
+bool note_shape(world *w, const world_shape_stat *st, diag *d)
 {
 	world_shape_stat *a = mem_realloc((void *)w->stats.shapes, w->stats.n_shapes + 1, sizeof *a);
 	if (!a) {
@@ -67,6 +64,6 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 	mesh *m = &w->geoms[g->id].m;
 	if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
 		return false;
-	world_shape_stat st = {shape_kind_name(s->kind), g->loc, level, tol, m->num_triangles};
+	world_shape_stat st = {shape_kind_name(s->kind), g->loc, m->num_triangles, tol, (int)level};
 	return note_shape(w, &st, d);
 }

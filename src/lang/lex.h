@@ -28,20 +28,21 @@ enum {
 	KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley") KW(CAMERA, "camera") \
 	KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CHR, "chr") KW(CIRCLE, "circle") \
 	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") \
-	KW(CONCAT, "concat") KW(CONFIDENCE, "confidence") KW(CORNERS, "corners") KW(COS, "cos") \
-	KW(COSH, "cosh") KW(CREASES, "creases") KW(CUBIC_SPLINE, "cubic_spline") KW(DATETIME, "datetime") \
+	KW(CONCAT, "concat") KW(CONE, "cone") KW(CONFIDENCE, "confidence") KW(CORNERS, "corners") \
+	KW(COS, "cos") KW(COSH, "cosh") KW(CREASES, "creases") KW(CUBIC, "cubic") \
+	KW(CUBIC_SPLINE, "cubic_spline") KW(CYLINDER, "cylinder") KW(DATETIME, "datetime") \
 	KW(DEFAULT, "default") KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") \
 	KW(DIFFUSE, "diffuse") KW(DIMENSION_SIZE, "dimension_size") KW(DIMENSIONS, "dimensions") \
-	KW(DIPOLE, "dipole") KW(DIRECTION, "direction") KW(DISK, "disk") KW(DIV, "div") \
+	KW(DIPOLE, "dipole") KW(DIRECTION, "direction") KW(DISC, "disc") KW(DISK, "disk") KW(DIV, "div") \
 	KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only") KW(EMISSION, "emission") \
 	KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices") KW(FACES, "faces") \
 	KW(FALLOFF, "falloff") KW(FALSE, "false") KW(FILE, "file") KW(FILE_EXISTS, "file_exists") \
 	KW(FILTER, "filter") KW(FINISH, "finish") KW(FISHEYE, "fisheye") KW(FLOOR, "floor") \
 	KW(FOCAL_POINT, "focal_point") KW(FULLCIRCLE, "fullcircle") KW(FUNCTION, "function") \
 	KW(GAUSSIAN, "gaussian") KW(GLOBAL_SETTINGS, "global_settings") KW(GRAY, "gray") \
-	KW(GREEN, "green") KW(GROUP, "group") KW(IMAGE, "image") KW(IMAGE_MAP, "image_map") KW(INT, "int") \
-	KW(INTENSITY, "intensity") KW(INTERIOR, "interior") KW(INTERNAL, "internal") \
-	KW(INVERSE, "inverse") KW(IOR, "ior") KW(JPEG, "jpeg") KW(LEVEL, "level") \
+	KW(GREEN, "green") KW(GROUP, "group") KW(HEIGHT_FIELD, "height_field") KW(IMAGE, "image") \
+	KW(IMAGE_MAP, "image_map") KW(INT, "int") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") \
+	KW(INTERNAL, "internal") KW(INVERSE, "inverse") KW(IOR, "ior") KW(JPEG, "jpeg") KW(LEVEL, "level") \
 	KW(LIGHT_SOURCE, "light_source") KW(LINEAR_SPLINE, "linear_spline") KW(LN, "ln") \
 	KW(LOCATION, "location") KW(LOG, "log") KW(LOOK_AT, "look_at") KW(LOOP, "loop") \
 	KW(MARBLE, "marble") KW(MATERIAL, "material") KW(MATRIX, "matrix") KW(MAX, "max") \
@@ -51,28 +52,30 @@ enum {
 	KW(NO_SHADOW, "no_shadow") KW(NOISE_THRESHOLD, "noise_threshold") \
 	KW(NORMAL_INDICES, "normal_indices") KW(NORMAL_MAP, "normal_map") \
 	KW(NORMAL_VECTORS, "normal_vectors") KW(NOW, "now") KW(OBJECT, "object") KW(OFF, "off") \
-	KW(ON, "on") KW(ONCE, "once") KW(ORTHOGRAPHIC, "orthographic") KW(PANORAMIC, "panoramic") \
-	KW(PARALLEL, "parallel") KW(PERSPECTIVE, "perspective") KW(PI, "pi") KW(PIGMENT, "pigment") \
-	KW(PLANE, "plane") KW(PNG, "png") KW(POINT_AT, "point_at") KW(POW, "pow") KW(PRESET, "preset") \
-	KW(PROFILE, "profile") KW(QUADRATIC_SPLINE, "quadratic_spline") KW(RADIANS, "radians") \
-	KW(RADIUS, "radius") KW(RAND, "rand") KW(RED, "red") KW(RGB, "rgb") KW(RGBF, "rgbf") \
-	KW(RGBFT, "rgbft") KW(RGBT, "rgbt") KW(RIGHT, "right") KW(ROTATE, "rotate") \
+	KW(ON, "on") KW(ONCE, "once") KW(OPEN, "open") KW(ORTHOGRAPHIC, "orthographic") \
+	KW(PANORAMIC, "panoramic") KW(PARALLEL, "parallel") KW(PERSPECTIVE, "perspective") KW(PI, "pi") \
+	KW(PIGMENT, "pigment") KW(PLANE, "plane") KW(PNG, "png") KW(POINT_AT, "point_at") KW(POLY, "poly") \
+	KW(POLYGON, "polygon") KW(POW, "pow") KW(PRESET, "preset") KW(PROFILE, "profile") \
+	KW(QUADRATIC_SPLINE, "quadratic_spline") KW(QUADRIC, "quadric") KW(QUARTIC, "quartic") \
+	KW(RADIANS, "radians") KW(RADIUS, "radius") KW(RAND, "rand") KW(RED, "red") KW(RGB, "rgb") \
+	KW(RGBF, "rgbf") KW(RGBFT, "rgbft") KW(RGBT, "rgbt") KW(RIGHT, "right") KW(ROTATE, "rotate") \
 	KW(ROUGHNESS, "roughness") KW(SCALE, "scale") KW(SCHEME, "scheme") KW(SEED, "seed") \
 	KW(SELECT, "select") KW(SIGMA_A, "sigma_a") KW(SIGMA_S, "sigma_s") KW(SIN, "sin") KW(SINH, "sinh") \
-	KW(SKIN, "skin") KW(SKY, "sky") KW(SKY_SPHERE, "sky_sphere") \
+	KW(SKIN, "skin") KW(SKY, "sky") KW(SKY_SPHERE, "sky_sphere") KW(SMOOTH, "smooth") \
 	KW(SMOOTH_TRIANGLE, "smooth_triangle") KW(SPECULAR, "specular") KW(SPHERE, "sphere") \
 	KW(SPHERICAL, "spherical") KW(SPLINE, "spline") KW(SPOTLIGHT, "spotlight") KW(SQRT, "sqrt") \
 	KW(SRGB, "srgb") KW(SRGBF, "srgbf") KW(SRGBFT, "srgbft") KW(SRGBT, "srgbt") KW(STR, "str") \
 	KW(STRCMP, "strcmp") KW(STRENGTH, "strength") KW(STRLEN, "strlen") KW(STRLWR, "strlwr") \
-	KW(STRUPR, "strupr") KW(SUBDIVISION_SURFACE, "subdivision_surface") KW(SUBSTR, "substr") \
-	KW(SUM_OF_GAUSSIANS, "sum_of_gaussians") KW(T, "t") KW(TAN, "tan") KW(TANH, "tanh") \
-	KW(TEXTURE, "texture") KW(TRANSFORM, "transform") KW(TRANSLATE, "translate") \
-	KW(TRANSMIT, "transmit") KW(TRIANGLE, "triangle") KW(TRUE, "true") KW(U, "u") \
-	KW(ULTRA_WIDE_ANGLE, "ultra_wide_angle") KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") \
-	KW(UV_INDICES, "uv_indices") KW(UV_VECTORS, "uv_vectors") KW(V, "v") KW(VAL, "val") \
-	KW(VARIANCE, "variance") KW(VAXIS_ROTATE, "vaxis_rotate") KW(VCROSS, "vcross") KW(VDOT, "vdot") \
-	KW(VERSION, "version") KW(VERTEX_VECTORS, "vertex_vectors") KW(VLENGTH, "vlength") \
-	KW(VNORMALIZE, "vnormalize") KW(VOLUME, "volume") KW(VROTATE, "vrotate") KW(VSTR, "vstr") \
+	KW(STRUPR, "strupr") KW(STURM, "sturm") KW(SUBDIVISION_SURFACE, "subdivision_surface") \
+	KW(SUBSTR, "substr") KW(SUM_OF_GAUSSIANS, "sum_of_gaussians") KW(SUPERELLIPSOID, "superellipsoid") \
+	KW(T, "t") KW(TAN, "tan") KW(TANH, "tanh") KW(TEXTURE, "texture") KW(TORUS, "torus") \
+	KW(TRANSFORM, "transform") KW(TRANSLATE, "translate") KW(TRANSMIT, "transmit") \
+	KW(TRIANGLE, "triangle") KW(TRUE, "true") KW(U, "u") KW(ULTRA_WIDE_ANGLE, "ultra_wide_angle") \
+	KW(UNION, "union") KW(UP, "up") KW(UV_FACES, "uv_faces") KW(UV_INDICES, "uv_indices") \
+	KW(UV_VECTORS, "uv_vectors") KW(V, "v") KW(VAL, "val") KW(VARIANCE, "variance") \
+	KW(VAXIS_ROTATE, "vaxis_rotate") KW(VCROSS, "vcross") KW(VDOT, "vdot") KW(VERSION, "version") \
+	KW(VERTEX_VECTORS, "vertex_vectors") KW(VLENGTH, "vlength") KW(VNORMALIZE, "vnormalize") \
+	KW(VOLUME, "volume") KW(VROTATE, "vrotate") KW(VSTR, "vstr") KW(WATER_LEVEL, "water_level") \
 	KW(WAX, "wax") KW(X, "x") KW(Y, "y") KW(YES, "yes") KW(Z, "z")
 
 /* X(enum suffix, spelling without '#'). */

@@ -272,6 +272,17 @@ bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* For shapes.c: a new geometry record (NULL after reporting), and an object of g placed in out with
+ * its modifiers up to the closing '}' of the item `what` opened at open. */
+scene_geom *lang_new_geom(parser *p, scene_shape_kind kind, diag_loc loc);
+/* A string naming a file, resolved against the folder of the text and recorded as an asset. */
+bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out);
+bool lang_place_object(parser *p, vecbuf *out, const scene_geom *g, diag_loc kw, diag_loc open, const char *what);
+
+/* shapes.c: the parser of a POV-Ray shape keyword (cylinder, cone, torus, ...), or NULL; called
+ * after the keyword and its '{', it reads up to the item's closing '}'. */
+typedef bool (*lang_shape_fn)(parser *p, vecbuf *out, diag_loc kw, diag_loc open);
+lang_shape_fn lang_shape_parser(lang_tok k);
 /* default = "#default" "{" { texture | pigment | finish } "}"   (after the directive's word) */
 bool lang_default(parser *p);
 

@@ -969,6 +969,9 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		lang_advance(p);
 		m->no_shadow = true;
 		return true;
+	case LTK_KW_STURM: /* POV-Ray's root solver for some shapes: a tessellated shape needs none */
+		lang_advance(p);
+		return true;
 	default: return lang_object_flag(p, &m->flags, matched);
 	}
 }
@@ -1006,11 +1009,6 @@ static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, con
 			return apply_mods(p, out, start, &m);
 		bool matched;
 		TRY(modifier(p, &m, &matched));
-		if (!matched && lang_peek(p)->kind == LTK_UNSUPPORTED && lang_peek(p)->len == 5 &&
-		    !memcmp(lang_peek(p)->text, "sturm", 5)) { /* POV-Ray's root solver: nothing to a mesh */
-			lang_advance(p);
-			continue;
-		}
 		if (!matched)
 			return bad_item(p, open, what, "a transform, a material, no_shadow");
 	}
@@ -1030,6 +1028,19 @@ static bool place(parser *p, vecbuf *out, const scene_geom *g, diag_loc loc)
 	if (!vecbuf_push(out, &o))
 		return lang_error(p, loc, "out of memory");
 	return true;
+}
+
+scene_geom *lang_new_geom(parser *p, scene_shape_kind kind, diag_loc loc) { return new_geom(p, kind, loc); }
+
+bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out)
+{
+	return asset_path(p, what, kind, out);
+}
+
+bool lang_place_object(parser *p, vecbuf *out, const scene_geom *g, diag_loc kw, diag_loc open, const char *what)
+{
+	size_t start = out->len;
+	return place(p, out, g, kw) && object_tail(p, out, start, open, what);
 }
 
 /* ---- primitives -------------------------------------------------------------------------- */
@@ -1709,7 +1720,9 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	case LTK_KW_OBJECT: fn = instance; break;
 	case LTK_KW_UNION: fn = union_block; break;
 	default:
-		if (lang_pov_shape_kind(&t) >= 0)
+		if ((fn = lang_shape_parser(t.kind))) /* cylinder, torus, ... (shapes.c) */
+			break;
+		if (lang_pov_shape_kind(&t) >= 0) /* lathe, blob, text, ... (shapes2.c) */
 			break;
 		*matched = false;
 		return true;
@@ -1951,8 +1964,8 @@ static bool global_settings(parser *p)
 	}
 }
 
-/* The camera's projection keyword, or -1. "cylinder" is not a circe keyword (the shape is not
- * supported): it is read by its spelling here, followed by its number 1 to 4. */
+/* The camera's projection keyword, or -1; "cylinder" (also the shape's keyword) is followed by its
+ * number 1 to 4. */
 static int camera_type(parser *p, const lang_token *t, bool *ok)
 {
 	*ok = true;
@@ -1965,7 +1978,7 @@ static int camera_type(parser *p, const lang_token *t, bool *ok)
 	case LTK_KW_SPHERICAL: return SCENE_CAM_SPHERICAL;
 	default: break;
 	}
-	if (t->kind != LTK_UNSUPPORTED || t->len != 8 || memcmp(t->text, "cylinder", 8) != 0)
+	if (t->kind != LTK_KW_CYLINDER)
 		return -1;
 	lang_advance(p);
 	int64_t n;
@@ -2157,8 +2170,8 @@ static bool light_colour(parser *p, vec3 *c)
 }
 
 /* POV-Ray's light words that mean something only in a light_source. They stay out of the keyword
- * table, so anywhere else they remain "'jitter' is not supported by circe" (and `cylinder`, a
- * POV-Ray shape, stays one); in a light_source they are matched by spelling. */
+ * table, so anywhere else they remain "'jitter' is not supported by circe"; in a light_source they
+ * are matched by spelling (and `cylinder`, a shape's keyword, by its token). */
 typedef enum light_word {
 	LW_NONE,
 	LW_ADAPTIVE,
@@ -2177,6 +2190,8 @@ static light_word light_word_at(const lang_token *t)
 {
 	static const char *const names[] = {"", "adaptive", "area_light", "circular", "cylinder", "fade_distance",
 					    "fade_power", "jitter", "orient", "shadowless", "tightness"};
+	if (t->kind == LTK_KW_CYLINDER) /* a keyword since cylinder is a shape */
+		return LW_CYLINDER;
 	return (light_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
 }
 

@@ -422,9 +422,7 @@ static void dump_material(FILE *o, const scene_material *m)
 
 static void dump_geom(FILE *o, const scene_geom *g)
 {
-	static const char *const kinds[] = {"sphere", "box", "plane", "mesh", "mesh_file", "subdivision_surface",
-					    "pov_shape"};
-	fprintf(o, "geom %u %s", g->id, kinds[g->kind]);
+	fprintf(o, "geom %u %s", g->id, scene_shape_name(g));
 	dump_loc(o, g->loc);
 	switch (g->kind) {
 	case SHAPE_SPHERE:
@@ -501,6 +499,9 @@ static void dump_geom(FILE *o, const scene_geom *g)
 			fprintf(o, "  corner %u %g\n", c->corners[i].vertex, c->corners[i].sharpness);
 		break;
 	}
+	default:
+		scene_dump_shape(o, g);
+		break;
 	}
 }
 

@@ -76,8 +76,54 @@ typedef enum scene_shape_kind {
 	SHAPE_MESH, /* triangles from mesh{triangle...}, mesh2, or a generated list */
 	SHAPE_MESH_FILE, /* mesh { file "x.obj" }: loaded by the importer */
 	SHAPE_SUBDIV, /* subdivision_surface */
-	SHAPE_POV /* lathe, sor, prism, sphere_sweep, blob, text: geom/shape.h's description */
+	SHAPE_POV, /* lathe, sor, prism, sphere_sweep, blob, text, bicubic_patch: geom/shape.h's description */
+	/* POV-Ray's shapes tessellated at the build (src/geom/povshape.h; scene_shapes.c names them) */
+	SHAPE_CONE, /* cone and cylinder */
+	SHAPE_TORUS,
+	SHAPE_DISC,
+	SHAPE_POLYGON,
+	SHAPE_SUPERELLIPSOID,
+	SHAPE_HEIGHT_FIELD,
+	SHAPE_QUADRIC,
+	SHAPE_POLY /* poly, cubic, quartic */
 } scene_shape_kind;
+
+/* POV-Ray's cone { <base>, rb, <cap>, rc [open] } and cylinder { <base>, <cap>, r [open] }. */
+typedef struct scene_cone {
+	dvec3 base, cap;
+	double base_radius, cap_radius;
+	bool open, cylinder; /* cylinder: written as one, for names and the dump */
+} scene_cone;
+
+/* polygon { N, <p>... }: the points as written (2-D ones promoted to z = 0), subpolygons closed
+ * by repeating their first point as POV-Ray's Parse_Polygon finds them; owned by the arena. */
+typedef struct scene_polygon {
+	dvec3 *points;
+	uint32_t n;
+} scene_polygon;
+
+/* height_field { png|exr "file" [smooth] [water_level w] }. */
+typedef struct scene_height_field {
+	const char *path; /* resolved like scene_geom's file path */
+	diag_loc path_loc;
+	bool smooth;
+	double water_level; /* in the field's own height, 0 .. 1 */
+} scene_height_field;
+
+/* quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y +
+ * I z + J = 0 (POV-Ray's Quadric). poly { order, <c...> } (cubic: order 3, quartic: 4) keeps its
+ * (order+1)(order+2)(order+3)/6 coefficients in POV-Ray's order; owned by the arena. */
+typedef struct scene_quadric {
+	dvec3 square, mixed, linear;
+	double constant;
+} scene_quadric;
+
+typedef struct scene_poly {
+	int order;
+	const char *keyword; /* "poly", "cubic" or "quartic", for messages */
+	double *coeffs;
+	uint32_t n;
+} scene_poly;
 
 /* A triangle mesh. Faces index positions; normal_idx/uv_idx (when non-NULL) index normals/uvs
  * with the same layout (three per face). Arrays are heap-owned by the scene. */
@@ -157,6 +203,21 @@ typedef struct scene_geom {
 		} file;
 		scene_subdiv subdiv;
 		const struct shape_desc *pov; /* SHAPE_POV: in the scene's arena */
+		scene_cone cone;
+		struct {
+			double major, minor;
+		} torus;
+		struct {
+			dvec3 center, normal;
+			double radius, hole; /* hole 0: none */
+		} disc;
+		scene_polygon polygon;
+		struct {
+			double e, n; /* POV-Ray's <e, n>: east-west and north-south exponents */
+		} superellipsoid;
+		scene_height_field height_field;
+		scene_quadric quadric;
+		scene_poly poly;
 	} u;
 	struct scene_geom *next; /* the scene's list of all geometry */
 } scene_geom;
@@ -271,6 +332,11 @@ typedef struct scene_stats {
 	size_t memory_bytes; /* estimated IR memory */
 } scene_stats;
 void scene_stats_get(const scene *s, scene_stats *st);
+
+/* The keyword of a shape kind ("sphere", "cylinder", ...; a cone written as a cylinder says so). */
+const char *scene_shape_name(const scene_geom *g);
+/* The dump of a shape of scene_shapes.c's kinds (SHAPE_CONE and after): its fields, a newline. */
+void scene_dump_shape(FILE *o, const scene_geom *g);
 
 /* Writes a stable text dump of the IR (for golden tests and debugging). */
 void scene_dump(const scene *s, FILE *out);

@@ -143,3 +143,14 @@ text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
 bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>
 	<0, 0, 0>, <1, 0, 0>, <2, 0, 0>, <3, 0, 0>, <0, 1, 0>, <1, 1, 1>, <2, 1, 1>, <3, 1, 0>
 	<0, 2, 0>, <1, 2, 1>, <2, 2, 1>, <3, 2, 0>, <0, 3, 0>, <1, 3, 0>, <2, 3, 0>, <3, 3, 0> }
+// rule: shape, cylinder, cone, torus, disc, polygon, superellipsoid, height_field, quadric, poly
+cylinder { <0, 0, 0>, <0, 1, 0>, 0.5 open translate x }
+cone { 0, 1 y 0.2 }
+torus { 1, 0.25 sturm }
+disc { 0, y, 2, 0.5 }
+polygon { 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }
+superellipsoid { <0.5, 1> }
+height_field { png "hf.png" smooth water_level 0.1 }
+quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+#declare Cubic = cubic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1> }
+#declare Poly = poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }

@@ -1,4 +1,4 @@
 union {
   sphere { 0, 1 }
-  cone { 0, 1, y, 0 }
+  cone { 0, 0, y, 0 }
 }

@@ -1,0 +1,1 @@
+height_field { png "no_such_height.png" smooth }

@@ -1,0 +1,1 @@
+height_field { tga "plasma.tga" }

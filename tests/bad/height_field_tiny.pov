@@ -1,0 +1,1 @@
+height_field { png "tiny_hf.png" }

@@ -1,0 +1,1 @@
+superellipsoid { 1 }

@@ -1,0 +1,1 @@
+torus { 1, 0 sturm }
