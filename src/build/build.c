@@ -87,6 +87,7 @@ static void world_release(world *w)
 	mem_free(w->sss), mem_free(w->sss_of);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
+	pattern_prog_free(&w->patterns);
 	memset(w, 0, sizeof *w);
 }
 

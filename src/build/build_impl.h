@@ -6,6 +6,7 @@
 #include "build/build.h"
 #include "geom/subdiv.h"
 #include "render/world.h"
+#include "scene/pigment.h"
 
 /* The grey of an object without a material: mid-grey diffuse. */
 #define WORLD_DEFAULT_GREY 0.5f
@@ -28,6 +29,11 @@ bool build_top(world *w, diag *d);
 /* build_material.c */
 const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d);
 size_t clamp_texels(const image *img, scene_color_use use, float *rgb);
+/* Warns once at loc when an albedo image holds texels outside [0, 1] (the lookups clamp them). */
+void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d);
+/* build_pattern.c: pg compiled into w->patterns; *node receives its root. False after reporting. */
+bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d);
+void pattern_prog_free(pattern_prog *pg);
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
 		    diag *d);
 

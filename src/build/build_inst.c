@@ -163,6 +163,7 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		in->object = (uint32_t)i;
 		in->g = g;
 		in->xf = o->transform;
+		in->pattern_xf = o->transform;
 		if (o->geom->kind == SHAPE_SPHERE && !(g = sphere_instance(w, o->geom, &view, rel_err, in, d, o->loc)))
 			return false;
 		in->identity = is_identity(&in->xf);

@@ -1394,7 +1394,7 @@ bool lang_vec3(parser *p, const char *what, dvec3 *out)
 	return true;
 }
 
-bool lang_color(parser *p, const char *what, vec3 *out)
+bool lang_color5(parser *p, const char *what, double out[LANG_COLOR_TERMS])
 {
 	diag_loc loc = lang_peek(p)->loc;
 	value c;
@@ -1414,10 +1414,21 @@ bool lang_color(parser *p, const char *what, vec3 *out)
 	p->no_gt = saved;
 	if (!ok)
 		return false;
-	if (c.v[3] != 0 || c.v[4] != 0)
+	for (int i = 0; i < LANG_COLOR_TERMS; i++)
+		out[i] = c.v[i];
+	return true;
+}
+
+bool lang_color(parser *p, const char *what, vec3 *out)
+{
+	diag_loc loc = lang_peek(p)->loc;
+	double c[LANG_COLOR_TERMS];
+	if (!lang_color5(p, what, c))
+		return false;
+	if (c[3] != 0 || c[4] != 0)
 		diag_warning(p->d, loc, "filter %g and transmit %g of this colour are ignored: circe's materials have neither "
-					"yet", c.v[3], c.v[4]);
-	*out = v3((float)c.v[0], (float)c.v[1], (float)c.v[2]);
+					"yet", c[3], c[4]);
+	*out = v3((float)c[0], (float)c[1], (float)c[2]);
 	return true;
 }
 

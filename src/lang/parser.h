@@ -199,6 +199,8 @@ bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted 
 /* A colour's red, green and blue (a float is promoted); a filter or transmit other than 0 is
  * warned about and dropped (circe's materials have none yet). */
 bool lang_color(parser *p, const char *what, vec3 *out);
+/* A colour's five terms (red, green, blue, filter, transmit) as written: nothing dropped. */
+bool lang_color5(parser *p, const char *what, double out[LANG_COLOR_TERMS]);
 bool lang_string(parser *p, const char *what, const char **out);
 /* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);

@@ -2,6 +2,7 @@
  * lights, environment, objects (primitives, meshes, subdivision cages, instances, unions) and
  * materials. Each parse function carries its grammar rule as a comment (grammar/scene.ebnf). */
 #include "lang/parser.h"
+#include "lang/pigment.h"
 
 #include <limits.h>
 #include <math.h>
@@ -145,6 +146,11 @@ static bool names_block(parser *p)
 	       s->val.kind != VAL_STRING;
 }
 
+bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out)
+{
+	return asset_path(p, what, kind, out);
+}
+
 /* ---- transforms -------------------------------------------------------------------------- */
 
 static bool transform_block(parser *p, xform *out);
@@ -198,6 +204,8 @@ static bool transform_item(parser *p, xform *t, bool *matched)
 	*t = xform_then(*t, x);
 	return true;
 }
+
+bool lang_transform_item(parser *p, xform *t, bool *matched) { return transform_item(p, t, matched); }
 
 /* The inverse of an affine transform: xform keeps it beside the matrix. */
 static xform xform_inverse(xform t)
@@ -264,14 +272,19 @@ static bool pattern_transform(parser *p, const scene_material *m, diag_loc at, c
 			  what);
 }
 
-/* transform_item in a pigment, texture or material: read, recorded in *at when first, dropped. */
-static bool pattern_transform_item(parser *p, diag_loc *at, bool *matched)
+/* transform_item in a pigment, texture or material: read, recorded in *at when first; it moves
+ * m's POV-Ray pigment (a copy: the tree may be shared), and nothing else has a pattern to move. */
+static bool pattern_transform_item(parser *p, scene_material *m, diag_loc *at, bool *matched)
 {
 	diag_loc loc = lang_peek(p)->loc;
-	xform ignored = xform_identity();
-	TRY(transform_item(p, &ignored, matched));
+	xform moved = xform_identity();
+	TRY(transform_item(p, &moved, matched));
 	if (*matched && at->line == 0)
 		*at = loc;
+	if (*matched && m->pigment)
+		TRY(m->pigment = lang_pigment_moved(p, m->pigment, &moved, loc));
+	if (*matched && m->sss.pigment)
+		TRY(m->sss.pigment = lang_pigment_moved(p, m->sss.pigment, &moved, loc));
 	return true;
 }
 
@@ -312,6 +325,7 @@ static void copy_pigment(scene_material *to, const scene_material *from)
 {
 	to->color = from->color;
 	to->image = from->image;
+	to->pigment = from->pigment;
 }
 
 static void copy_finish(scene_material *to, const scene_material *from)
@@ -352,12 +366,12 @@ static bool starts_transform(parser *p)
 	       k == LTK_KW_TRANSFORM;
 }
 
-/* pigment = "pigment" "{" [ identifier ] [ pigment_type ] { transform_item } "}"   (empty: unchanged)
- * pigment_type = colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}"
+/* pigment = "pigment" "{" [ identifier ] [ colour | pigment_body ] { transform_item } "}"   (empty: unchanged)
+ * pigment_body: a pattern, image_map and their modifiers (lang/pigment.c)
  * use: what the colour becomes (an albedo; a sky's radiance). */
 static bool pigment(parser *p, scene_material *m, scene_color_use use)
 {
-	diag_loc open, io, moved = {0};
+	diag_loc open, moved = {0};
 	lang_advance(p);
 	TRY(open_block(p, "pigment", &open));
 	bool named = names_block(p);
@@ -366,26 +380,27 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
 		copy_pigment(m, v->mat);
 	}
-	if (lang_peek(p)->kind == LTK_KW_MARBLE) /* a circe keyword (the SSS block), a POV-Ray pattern */
-		return lang_error(p, lang_peek(p)->loc, "'marble' (a pattern) is not supported by circe");
-	if (lang_accept(p, LTK_KW_IMAGE_MAP)) {
-		TRY(open_block(p, "image_map", &io));
-		lang_tok k = lang_peek(p)->kind;
-		if (k != LTK_KW_PNG && k != LTK_KW_JPEG && k != LTK_KW_EXR)
-			return lang_error_found(p, "expected the image type (png, jpeg or exr) in 'image_map'");
-		lang_advance(p);
-		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
-		TRY(lang_expect_close(p, io, "image_map"));
-	} else if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
+	if (lang_pigment_starts(p, m->pigment != NULL)) {
+		TRY(lang_pigment_rest(p, m->pigment, open, &m->pigment));
+		m->image = NULL;
+		if (m->pigment->kind == SCENE_PAT_PLAIN) { /* a declared pattern replaced by a colour */
+			m->color = v3(m->pigment->color[0], m->pigment->color[1], m->pigment->color[2]);
+			TRY(scene_color_finalise(p->sc, p->d, open, "pigment colour", use, &m->color));
+			m->pigment = NULL;
+		}
+		return true;
+	}
+	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(physical_color(p, "as the pigment colour", what, use, &m->color));
 		m->image = NULL;
+		m->pigment = NULL;
 	}
 	for (;;) {
 		if (lang_accept(p, LTK_RBRACE))
 			return pattern_transform(p, m, moved, "pigment");
 		bool matched;
-		TRY(pattern_transform_item(p, &moved, &matched));
+		TRY(pattern_transform_item(p, m, &moved, &matched));
 		if (!matched)
 			return lang_expect_close(p, open, "pigment");
 	}
@@ -492,7 +507,7 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 		else if (k == LTK_RBRACE)
 			break;
 		else {
-			TRY(pattern_transform_item(p, &moved, &matched));
+			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
 				return bad_item(p, open, "texture", "pigment, finish or a transform");
 		}
@@ -731,7 +746,7 @@ static bool material(parser *p, const scene_material **out)
 		if (t.kind == LTK_RBRACE)
 			break;
 		bool matched;
-		TRY(pattern_transform_item(p, &moved, &matched));
+		TRY(pattern_transform_item(p, m, &moved, &matched));
 		if (matched)
 			continue;
 		bool is_kind = t.kind == LTK_KW_DIFFUSE || t.kind == LTK_KW_SKIN || t.kind == LTK_KW_WAX ||
@@ -2328,7 +2343,10 @@ static bool background(parser *p)
  * background. An image pigment is refused: circe's sky image is `image`, mapped lat-long. */
 static bool sky_pigment(parser *p, diag_loc kw, const scene_material *pg, double intensity)
 {
-	if (pg->image)
+	if (pg->pigment && pg->pigment->kind != SCENE_PAT_IMAGE)
+		return lang_error(p, pg->pigment->loc, "a '%s' pigment in sky_sphere is not supported by circe: give a colour",
+				  scene_pattern_name(pg->pigment->kind));
+	if (pg->image || pg->pigment)
 		return lang_error(p, pg->loc, "an image_map pigment in sky_sphere is not supported by circe: give the "
 					      "lat-long image as sky_sphere { image \"file\" }");
 	vec3 c = v3_scale(pg->color, (float)intensity);

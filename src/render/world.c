@@ -158,6 +158,20 @@ static bool world_occluded(void *user, const render_ray *ray, float tmin, float 
 	return w->shadow && tlas_occluded(w->shadow, &r);
 }
 
+/* A POV-Ray pigment at the hit, in its object's space (the scene's placement undone, whatever
+ * the instance's mesh transform) or at <u, v, 0> with uv_mapping: the diffuse colour, clamped to
+ * a reflectance. Its filter and transmit are not used yet. */
+static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params)
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	float c[5];
+	pattern_eval(&w->patterns, wm->pattern, p, c);
+	vec3 rgb = v3(c[0], c[1], c[2]);
+	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
+	params->diffuse = v3_scale(rgb, wm->pattern_kd); /* a finish's diffuse scales its pigment */
+}
+
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
  * (through the mesh's tangents, which the build made for it) at the hit. */
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
@@ -166,6 +180,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	if (hit->material < 0 || hit->object >= w->n_insts)
 		return;
 	const world_material *wm = &w->materials[hit->material];
+	if (wm->has_pattern)
+		shade_pattern(w, wm, hit, params);
 	if (wm->albedo) {
 		float c[4];
 		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);

@@ -1,6 +1,8 @@
 /* scene.c - IR lifetime, validation, statistics and the text dump used by golden tests. */
 #include "scene/scene.h"
 
+#include "scene/pigment.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -335,6 +337,12 @@ static void dump_material(FILE *o, const scene_material *m)
 		fprintf(o, " diffuse %g specular %g roughness %g", m->diffuse, m->specular, m->roughness);
 		if (m->ior > 0)
 			fprintf(o, " ior %g", m->ior);
+		fputc('\n', o);
+	}
+	const struct scene_pigment *pg = m->kind >= MAT_SKIN && m->sss.pigment ? m->sss.pigment : m->pigment;
+	if (pg) {
+		fprintf(o, "  ");
+		scene_pigment_dump(o, pg);
 		fputc('\n', o);
 	}
 	if (m->emission.x != 0 || m->emission.y != 0 || m->emission.z != 0) {

@@ -1,0 +1,27 @@
+/* pigment.h - the pigment bodies of POV-Ray beyond one colour (lang/pigment.c): patterns with
+ * their colour maps, pigment maps and block lists, image_map, turbulence, waves, warps and
+ * transforms, read into a scene_pigment tree (scene/pigment.h). stmt.c's `pigment` hands over
+ * to it when the body is one of these. Internal to src/lang. */
+#ifndef CIRCE_LANG_PIGMENT_H
+#define CIRCE_LANG_PIGMENT_H
+
+#include "lang/parser.h"
+#include "scene/pigment.h"
+
+/* True when the lookahead begins a body lang_pigment_rest reads: a pattern's word, image_map,
+ * uv_mapping, or, over a declared pigment (has_base), one of a pattern's modifiers. */
+bool lang_pigment_starts(parser *p, bool has_base);
+/* The rest of a pigment's body up to its '}' (consumed), over base (a declared pigment's tree,
+ * or NULL); *out receives the new tree (in the scene's arena). open: the pigment's '{'. */
+bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out);
+/* A copy of pg with xf after its warps: a transform written after the pigment (in a texture, a
+ * material, a declared pigment reused) moves its pattern, as POV-Ray's do. NULL: out of memory,
+ * reported at loc. */
+const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, const xform *xf, diag_loc loc);
+
+/* stmt.c's helpers pigment.c reads with: a file name resolved and recorded as an asset, and one
+ * transform item composed after *t (*matched false when the lookahead is none). */
+bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out);
+bool lang_transform_item(parser *p, xform *t, bool *matched);
+
+#endif
