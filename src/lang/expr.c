@@ -45,6 +45,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_LIGHT: return "a light_source";
 	case VAL_TRANSFORM: return "a transform";
 	case VAL_FILE: return "a data file";
+	case VAL_COLOR_MAP: return "a color_map";
 	}
 	return "a value";
 }
@@ -115,7 +116,7 @@ static bool need_float(parser *p, diag_loc loc, const value *v, const char *what
 	return lang_error(p, loc, "%s needs a float, found %s", what, lang_value_kind_name(v));
 }
 
-/* vector = "<" expression { "," expression } ">"   (a '>' here closes the vector) */
+/* vector = "<" expression { [ "," ] expression } ">"   (a '>' here closes the vector) */
 static bool vector_literal(parser *p, value *out)
 {
 	diag_loc open = p->prev.loc;
@@ -134,8 +135,11 @@ static bool vector_literal(parser *p, value *out)
 		out->v[out->n++] = c.v[0];
 		if (lang_accept(p, LTK_COMMA))
 			continue;
-		if (lang_peek(p)->kind == LTK_GT)
+		lang_tok k = lang_peek(p)->kind;
+		if (k == LTK_GT)
 			break;
+		if (k == LTK_NUMBER || k == LTK_IDENT || k == LTK_LPAREN)
+			continue; /* POV-Ray's commas are optional here (woods.inc writes < -1 0 0 >) */
 		p->no_gt = saved;
 		return lang_error_found(p, "expected ',' or '>' in the vector opened at line %u, column %u", open.line, open.col);
 	}

@@ -209,7 +209,10 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 	double v, v2;
 	bool two;
 	TRY(lang_float(p, "as the map entry's value", &v));
-	if ((two = lang_accept(p, LTK_COMMA)))
+	/* [v colour], [v, colour], or the old form [v1 v2 colour1 colour2] (commas optional) */
+	lang_accept(p, LTK_COMMA);
+	two = !pigments && !starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT && lang_peek(p)->kind != LTK_LT;
+	if (two)
 		TRY(lang_float(p, "as the map entry's second value", &v2));
 	if (*n + (two ? 2 : 1) > SCENE_PIGMENT_MAX_ENTRIES)
 		return lang_error(p, open, "too many entries in '%s' (limit is %d)", what, SCENE_PIGMENT_MAX_ENTRIES);
@@ -219,10 +222,13 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 		TRY(entry_item(p, b, true, LTK_RBRACKET, a));
 		return true; /* the body read its ']' */
 	}
+	if (two)
+		lang_accept(p, LTK_COMMA);
 	TRY(entry_item(p, b, false, LTK_RBRACKET, a));
-	if (two) { /* POV-Ray's old form [v1, v2 colour1 colour2] */
+	if (two) { /* POV-Ray's old form: colour1 at v1, colour2 at v2 */
 		scene_map_entry *c = &e[(*n)++];
 		*c = (scene_map_entry){.value = v2};
+		lang_accept(p, LTK_COMMA);
 		TRY(entry_item(p, b, false, LTK_RBRACKET, c));
 	}
 	return lang_expect(p, LTK_RBRACKET, "to close the map entry");
@@ -234,8 +240,18 @@ static bool map_block(parser *p, pig_build *b, bool pigments)
 	const char *what = pigments ? "pigment_map" : "color_map";
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
 	TRY(lang_expect(p, LTK_LBRACE, pigments ? "after 'pigment_map'" : "after 'color_map'"));
-	if (lang_peek(p)->kind == LTK_IDENT)
-		return lang_error(p, lang_peek(p)->loc, "a declared %s is not supported by circe: write its entries", what);
+	const symbol *s = peek_declared(p, VAL_COLOR_MAP);
+	if (s) { /* color_map { Name } */
+		const scene_pigment *held = s->val.mat->pigment;
+		lang_advance(p);
+		if (held->pigment_map != pigments)
+			return lang_error(p, p->prev.loc, "'%.*s' is a %s, not a %s", (int)p->prev.len, p->prev.text,
+					  held->pigment_map ? "pigment_map" : "color_map", what);
+		TRY(lang_expect_close(p, open, what));
+		b->pg.entries = held->entries, b->pg.n_entries = held->n_entries;
+		b->pg.pigment_map = pigments, b->pg.block_list = false;
+		return true;
+	}
 	scene_map_entry *e = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *e);
 	if (!e)
 		return lang_error(p, kw, "out of memory");
@@ -267,7 +283,8 @@ static bool block_list(parser *p, pig_build *b)
 		e[n].value = n;
 		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
 		n++;
-	} while (lang_accept(p, LTK_COMMA));
+		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
+	} while (starts_colour(p) || lang_peek(p)->kind == LTK_KW_PIGMENT);
 	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
 	return true;
 }
@@ -448,8 +465,9 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		b->pg.arms = (int)arms;
 		return true;
 	}
-	if (k == SCENE_PAT_CRACKLE && (peek_word(p, "form") || peek_word(p, "metric") || peek_word(p, "offset") ||
-				       peek_word(p, "solid")))
+	if (k == SCENE_PAT_CRACKLE && accept_word(p, "solid"))
+		b->pg.solid = true;
+	if (k == SCENE_PAT_CRACKLE && (peek_word(p, "form") || peek_word(p, "metric") || peek_word(p, "offset")))
 		return lang_error(p, lang_peek(p)->loc, "'%.*s' of crackle is not supported by circe (its default form is)",
 				  (int)lang_peek(p)->len, lang_peek(p)->text);
 	return scene_pattern_blocks(k) ? block_list(p, b) : true;
@@ -620,4 +638,29 @@ static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc 
 bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out)
 {
 	return body(p, base, LTK_RBRACE, open, 0, out);
+}
+
+bool lang_pigment_map_starts(parser *p)
+{
+	return peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map");
+}
+
+bool lang_pigment_map_value(parser *p, value *out)
+{
+	diag_loc at = lang_peek(p)->loc;
+	pig_build *b = new_build(p, at);
+	scene_material *m = b ? arena_zalloc(&p->sc->arena, 1, sizeof *m) : NULL;
+	bool ok = m != NULL;
+	if (b && !m)
+		lang_error(p, at, "out of memory");
+	if (ok) {
+		b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, at);
+		ok = map_block(p, b, peek_word(p, "pigment_map")) && (m->pigment = finish_build(p, b, at)) != NULL;
+	}
+	mem_free(b);
+	if (!ok)
+		return false;
+	m->loc = at;
+	out->kind = VAL_COLOR_MAP, out->mat = m;
+	return true;
 }

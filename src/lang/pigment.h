@@ -19,6 +19,11 @@ bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, cons
  * reported at loc. */
 const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, const xform *xf, diag_loc loc);
 
+/* True when the lookahead is color_map, colour_map or pigment_map (a #declare's value). */
+bool lang_pigment_map_starts(parser *p);
+/* The map at the lookahead as a VAL_COLOR_MAP value (for #declare). */
+bool lang_pigment_map_value(parser *p, value *out);
+
 /* stmt.c's helpers pigment.c reads with: a file name resolved and recorded as an asset, and one
  * transform item composed after *t (*matched false when the lookahead is none). */
 bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out);

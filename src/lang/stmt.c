@@ -1654,6 +1654,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return declare_part(p, out, k);
 	if (k == LTK_KW_CAMERA || k == LTK_KW_LIGHT_SOURCE || k == LTK_KW_TRANSFORM)
 		return declare_record(p, out, k);
+	if (lang_pigment_map_starts(p))
+		return lang_pigment_map_value(p, out);
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;

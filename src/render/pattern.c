@@ -16,6 +16,8 @@
 /* Perlin's improved noise spans about [-1, 1] but rarely leaves [-0.7, 0.7]; this gain spreads it
  * over POV-Ray's [0, 1] (measured: bench/ not needed, test_pattern checks the range and mean). */
 #define NOISE_GAIN 1.0
+/* warp.cpp's COORDINATE_LIMIT: warped points are clamped there. */
+#define POV_COORDINATE_LIMIT 1.0e17
 /* POV-Ray's default number of waves of ripples and waves (global_settings number_of_waves). */
 #define POV_NUMBER_OF_WAVES 10
 
@@ -156,10 +158,11 @@ static int cell_of(double v) { return (int)floor(fmax(-2.0e9, fmin(2.0e9, v))); 
 
 /* CracklePattern with POV-Ray's defaults (form <-1, 1, 0>, metric 2): the distance to the second
  * nearest feature point less the nearest, one point per unit cube, the 27 cubes around p. */
-static double crackle(dvec3 p)
+static double crackle(dvec3 p, bool solid)
 {
 	int cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
 	double d1 = 1e30, d2 = 1e30;
+	uint32_t nearest = 0;
 	for (int i = -1; i <= 1; i++)
 		for (int j = -1; j <= 1; j++)
 			for (int k = -1; k <= 1; k++) {
@@ -168,11 +171,12 @@ static double crackle(dvec3 p)
 					     cz + k + hash_unit(h * 0x85ebca6bu + 2u));
 				double d = d3_length(d3_sub(p, f));
 				if (d < d1)
-					d2 = d1, d1 = d;
+					d2 = d1, d1 = d, nearest = h;
 				else if (d < d2)
 					d2 = d;
 			}
-	return clamp01(d2 - d1);
+	/* solid: the nearest point's cell value (CracklePattern's crackleIsSolid) */
+	return solid ? hash_unit(nearest * 0xc2b2ae35u + 3u) : clamp01(d2 - d1);
 }
 
 /* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
@@ -341,7 +345,7 @@ static double raw_shapes(const pattern_node *n, dvec3 p)
 	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + POV_EPSILON), cell_of(p.y + POV_EPSILON),
 							      cell_of(p.z + POV_EPSILON))),
 					1.0);
-	case PATTERN_CRACKLE: return crackle(p);
+	case PATTERN_CRACKLE: return crackle(p, n->solid);
 	case PATTERN_SPIRAL1:
 	case PATTERN_SPIRAL2: {
 		double rad = sqrt(p.x * p.x + p.y * p.y);
@@ -421,15 +425,27 @@ dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 	return p;
 }
 
+/* Warp_EPoint's last step: each coordinate within POV-Ray's COORDINATE_LIMIT (warp.cpp), and a
+ * NaN made 0, so no pattern meets an infinity or a NaN. */
+static double limit_coord(double v)
+{
+	if (!(v == v))
+		return 0.0;
+	return v > POV_COORDINATE_LIMIT ? POV_COORDINATE_LIMIT : v < -POV_COORDINATE_LIMIT ? -POV_COORDINATE_LIMIT : v;
+}
+
+static dvec3 limit_point(dvec3 p) { return d3(limit_coord(p.x), limit_coord(p.y), limit_coord(p.z)); }
+
 static dvec3 warped(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 {
+	p = limit_point(p);
 	for (uint32_t i = 0; i < n->n_warps; i++)
 		p = pattern_warp_point(&pg->warps[n->warp0 + i], p);
 	/* Classic turbulence acts in the pattern's own space, after its transforms (POV-Ray keeps
 	 * it first in the warp list, which is applied last to first). */
 	if (!n->turb_in_pattern && (n->turb.amount.x != 0.0 || n->turb.amount.y != 0.0 || n->turb.amount.z != 0.0))
 		p = d3_add(p, d3_mul(pattern_dturbulence(p, &n->turb), n->turb.amount));
-	return p;
+	return limit_point(p);
 }
 
 double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)

@@ -83,6 +83,7 @@ typedef struct pattern_node {
 	double mortar;	   /* brick */
 	double control0, control1; /* quilted */
 	int arms;	   /* spiral1, spiral2 */
+	bool solid;	   /* crackle solid: the nearest cell's own value */
 	double agate_turb; /* agate */
 	pattern_wave wave;
 	double frequency, phase, exponent;

@@ -86,6 +86,7 @@ typedef struct scene_pigment {
 	dvec3 vector;	 /* gradient; brick_size */
 	double mortar, control0, control1, agate_turb;
 	int arms;
+	bool solid; /* crackle solid */
 	scene_wave wave;
 	double frequency, phase, exponent;
 	scene_turb turb; /* the pigment's own `turbulence` (classic) */
