@@ -817,6 +817,7 @@ typedef struct mods {
 	xform t;
 	const scene_material *mat;
 	diag_loc mat_loc;
+	xform t_at_mat; /* t when the material was given: the transforms before it do not move its pattern */
 	scene_material *tex; /* made by a bare pigment or finish on this item */
 	bool no_shadow;
 	bool has_interior;
@@ -830,6 +831,7 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 		return lang_error(p, loc, "a second material on the same object (the first is at line %u)", m->mat_loc.line);
 	m->mat = mat;
 	m->mat_loc = loc;
+	m->t_at_mat = m->t;
 	return true;
 }
 
@@ -893,6 +895,10 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 	}
 	for (size_t i = start; i < out->len; i++) {
 		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		if (!o->material && m->mat) { /* POV-Ray: a texture moves with the transforms after it */
+			o->texture_from_object = xform_then(o->transform, m->t_at_mat);
+			o->texture_placed = true;
+		}
 		o->transform = xform_then(o->transform, m->t);
 		if (!o->material)
 			o->material = m->mat;

@@ -236,9 +236,9 @@ static double frac_trunc(double v)
 }
 
 /* BrickPattern::Evaluate: 0 in the mortar, 1 in a brick; rows alternate by half a brick. */
-static double brick(dvec3 p, dvec3 size, double mortar)
+static double brick(dvec3 p, dvec3 size, double mortar, double eps)
 {
-	double fudge = POV_EPSILON + mortar;
+	double fudge = eps + mortar;
 	double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
 	if (frac_trunc(y / size.y) <= mortar / size.y)
 		return 0.0;
@@ -326,7 +326,7 @@ static double wood(const pattern_node *n, dvec3 p)
 	return sqrt(x * x + y * y);
 }
 
-static double raw_shapes(const pattern_node *n, dvec3 p)
+static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 {
 	switch (n->kind) {
 	case PATTERN_GRADIENT: {
@@ -342,8 +342,7 @@ static double raw_shapes(const pattern_node *n, dvec3 p)
 	}
 	case PATTERN_MARBLE: return p.x + own_turb(n, p);
 	case PATTERN_WOOD: return wood(n, p);
-	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + POV_EPSILON), cell_of(p.y + POV_EPSILON),
-							      cell_of(p.z + POV_EPSILON))),
+	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
 					1.0);
 	case PATTERN_CRACKLE: return crackle(p, n->solid);
 	case PATTERN_SPIRAL1:
@@ -367,15 +366,17 @@ static double raw_shapes(const pattern_node *n, dvec3 p)
 	}
 }
 
-double pattern_raw(const pattern_node *n, dvec3 p)
+/* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
+ * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
+static double raw_eps(const pattern_node *n, dvec3 p, double eps)
 {
 	switch (n->kind) {
 	case PATTERN_CHECKER: /* CheckerPattern::Evaluate */
-		return (long long)(floor(p.x + POV_EPSILON) + floor(p.y + POV_EPSILON) + floor(p.z + POV_EPSILON)) & 1
+		return (long long)(floor(p.x + eps) + floor(p.y + eps) + floor(p.z + eps)) & 1
 			       ? 1.0
 			       : 0.0;
 	case PATTERN_HEXAGON: return hexagon(p);
-	case PATTERN_BRICK: return brick(p, n->vector, n->mortar);
+	case PATTERN_BRICK: return brick(p, n->vector, n->mortar, eps);
 	case PATTERN_BOZO:
 	case PATTERN_SPOTTED:
 	case PATTERN_BUMPS:
@@ -383,9 +384,11 @@ double pattern_raw(const pattern_node *n, dvec3 p)
 	case PATTERN_WRINKLES:
 	case PATTERN_GRANITE:
 	case PATTERN_AGATE: return raw_noisy(n, p);
-	default: return raw_shapes(n, p);
+	default: return raw_shapes(n, p, eps);
 	}
 }
+
+double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(n, p, POV_EPSILON); }
 
 static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
 
@@ -436,11 +439,24 @@ static double limit_coord(double v)
 
 static dvec3 limit_point(dvec3 p) { return d3(limit_coord(p.x), limit_coord(p.y), limit_coord(p.z)); }
 
-static dvec3 warped(const pattern_prog *pg, const pattern_node *n, dvec3 p)
+double pattern_inv_gain(const xform *t)
+{
+	double g = 0.0;
+	for (int r = 0; r < 3; r++)
+		g = fmax(g, fabs(t->inv[r][0]) + fabs(t->inv[r][1]) + fabs(t->inv[r][2]));
+	return g;
+}
+
+/* p through n's warps; *eps (a length) follows it through the transforms. */
+static dvec3 warped(const pattern_prog *pg, const pattern_node *n, dvec3 p, double *eps)
 {
 	p = limit_point(p);
-	for (uint32_t i = 0; i < n->n_warps; i++)
-		p = pattern_warp_point(&pg->warps[n->warp0 + i], p);
+	for (uint32_t i = 0; i < n->n_warps; i++) {
+		const pattern_warp *w = &pg->warps[n->warp0 + i];
+		p = pattern_warp_point(w, p);
+		if (w->kind == WARP_TRANSFORM)
+			*eps *= pattern_inv_gain(&w->xf);
+	}
 	/* Classic turbulence acts in the pattern's own space, after its transforms (POV-Ray keeps
 	 * it first in the warp list, which is applied last to first). */
 	if (!n->turb_in_pattern && (n->turb.amount.x != 0.0 || n->turb.amount.y != 0.0 || n->turb.amount.z != 0.0))
@@ -450,7 +466,9 @@ static dvec3 warped(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 
 double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 {
-	double raw = pattern_raw(n, warped(pg, n, p));
+	double eps = POV_EPSILON;
+	dvec3 q = warped(pg, n, p, &eps);
+	double raw = raw_eps(n, q, eps);
 	if (is_block(n->kind) || n->kind == PATTERN_PLAIN || n->kind == PATTERN_IMAGE)
 		return raw;
 	return pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
@@ -463,20 +481,21 @@ static void finite5(float c[5])
 			c[i] = 0.0f;
 }
 
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, float out[5]);
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
 
 /* An entry's colour at p: its own, or its pigment's. */
-static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, int depth, float out[5])
+static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, double eps, int depth, float out[5])
 {
 	if (e->node >= 0 && depth < PATTERN_MAX_DEPTH) {
-		eval_depth(pg, (uint32_t)e->node, p, depth + 1, out);
+		eval_depth(pg, (uint32_t)e->node, p, eps, depth + 1, out);
 		return;
 	}
 	for (int i = 0; i < 5; i++)
 		out[i] = e->node >= 0 ? 0.0f : e->color[i];
 }
 
-void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])
+static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, double eps, int depth,
+		       float out[5])
 {
 	const pattern_entry *e = pg->entries + n->entry0;
 	uint32_t k = n->n_entries;
@@ -486,11 +505,11 @@ void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v,
 		return;
 	}
 	if (k == 1 || v <= e[0].value) {
-		entry_color(pg, &e[0], p, depth, out);
+		entry_color(pg, &e[0], p, eps, depth, out);
 		return;
 	}
 	if (v >= e[k - 1].value) {
-		entry_color(pg, &e[k - 1], p, depth, out);
+		entry_color(pg, &e[k - 1], p, eps, depth, out);
 		return;
 	}
 	uint32_t j = 1;
@@ -499,8 +518,8 @@ void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v,
 	double span = e[j].value - e[j - 1].value;
 	double t = span > 0.0 ? (v - e[j - 1].value) / span : 1.0;
 	float a[5], b[5];
-	entry_color(pg, &e[j - 1], p, depth, a);
-	entry_color(pg, &e[j], p, depth, b);
+	entry_color(pg, &e[j - 1], p, eps, depth, a);
+	entry_color(pg, &e[j], p, eps, depth, b);
 	for (int i = 0; i < 5; i++)
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
@@ -544,7 +563,12 @@ static void image_color(const pattern_node *n, dvec3 p, float out[5])
 	out[3] = n->filter_all, out[4] = n->transmit_all;
 }
 
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, float out[5])
+void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])
+{
+	map_lookup(pg, n, v, p, POV_EPSILON, depth, out);
+}
+
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (n->kind == PATTERN_PLAIN) {
@@ -552,23 +576,26 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth
 			out[i] = n->color[i];
 		return;
 	}
-	dvec3 q = warped(pg, n, p);
+	dvec3 q = warped(pg, n, p, &eps);
 	if (n->kind == PATTERN_IMAGE) {
 		image_color(n, q, out);
 	} else if (is_block(n->kind)) {
-		uint32_t i = (uint32_t)pattern_raw(n, q);
+		uint32_t i = (uint32_t)raw_eps(n, q, eps);
 		if (i < n->n_entries)
-			entry_color(pg, &pg->entries[n->entry0 + i], q, depth, out);
+			entry_color(pg, &pg->entries[n->entry0 + i], q, eps, depth, out);
 		else
 			out[0] = out[1] = out[2] = out[3] = out[4] = 0.0f;
 	} else {
-		double v = pattern_wave_apply(n->wave, pattern_raw(n, q), n->frequency, n->phase, n->exponent);
-		pattern_map_lookup(pg, n, v, q, depth, out);
+		double v = pattern_wave_apply(n->wave, raw_eps(n, q, eps), n->frequency, n->phase, n->exponent);
+		map_lookup(pg, n, v, q, eps, depth, out);
 	}
 	finite5(out);
 }
 
-void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, float out[5]) { eval_depth(pg, node, p, 0, out); }
+void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5])
+{
+	eval_depth(pg, node, p, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+}
 
 pattern_node pattern_node_default(pattern_kind kind)
 {

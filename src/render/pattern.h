@@ -103,8 +103,12 @@ typedef struct pattern_prog {
 } pattern_prog;
 
 /* The pigment of node `node` at point p (the pigment's space before its own warps): red, green,
- * blue, filter, transmit, each finite. */
-void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, float out[5]);
+ * blue, filter, transmit, each finite. tol: how far p may be from the true point (a float hit's
+ * rounding; 0 for an exact point): a point that close to a cell's boundary (checker, brick,
+ * cells) takes the side POV-Ray's EPSILON gives it, so a face lying on a boundary is one colour. */
+void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5]);
+/* The largest row sum of |t's inverse|: how much t's inverse can lengthen a vector (max norm). */
+double pattern_inv_gain(const xform *t);
 /* The pattern's value at p after its warps, its wave applied (continuous kinds, in [0, 1]) or
  * the block index (checker, hexagon, brick). */
 double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p);

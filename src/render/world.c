@@ -5,7 +5,12 @@
 #include "accel/offset.h"
 #include "render/shading.h"
 
+#include <float.h>
 #include <stdlib.h>
+
+/* How many float ulps of its triangle's scale a hit position may be off (the interpolation of
+ * three rounded vertices and a transform): the tolerance of a pattern's cell boundaries. */
+#define PATTERN_HIT_ULPS 16.0
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
@@ -165,8 +170,12 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 {
 	const world_inst *in = &w->insts[hit->object];
 	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	/* The hit is a float position: rounding of a few ulps of the triangle's scale, through the
+	 * object's inverse placement. uv coordinates are floats of their own size (at most ~1). */
+	double tol = wm->pattern_uv ? PATTERN_HIT_ULPS * FLT_EPSILON
+				    : PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
 	float c[5];
-	pattern_eval(&w->patterns, wm->pattern, p, c);
+	pattern_eval(&w->patterns, wm->pattern, p, tol, c);
 	vec3 rgb = v3(c[0], c[1], c[2]);
 	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
 	params->diffuse = v3_scale(rgb, wm->pattern_kd); /* a finish's diffuse scales its pigment */

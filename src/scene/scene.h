@@ -166,6 +166,11 @@ typedef struct scene_object {
 	const scene_geom *geom;
 	xform transform;
 	const scene_material *material; /* NULL: the default grey diffuse */
+	/* With texture_placed: object space to its texture's space, the transforms written before
+	 * the texture (which POV-Ray does not apply to it); else the identity (a texture given
+	 * before every transform moves with the object). */
+	xform texture_from_object;
+	bool texture_placed;
 	bool no_shadow;
 	bool instance; /* made by object { Name } */
 } scene_object;

@@ -122,13 +122,13 @@ static void check_colour_map(void)
 	n.vector = d3(1, 0, 0), n.n_entries = 4;
 	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 4};
 	float c[5];
-	pattern_eval(&pg, 0, d3(0.25, 0, 0), c);
+	pattern_eval(&pg, 0, d3(0.25, 0, 0), 0, c);
 	check5("between black and red", c, 0.5f, 0, 0);
-	pattern_eval(&pg, 0, d3(0.75, 0, 0), c);
+	pattern_eval(&pg, 0, d3(0.75, 0, 0), 0, c);
 	check5("between blue and white", c, 0.5f, 0.5f, 1);
-	pattern_eval(&pg, 0, d3(0.49, 0, 0), c);
+	pattern_eval(&pg, 0, d3(0.49, 0, 0), 0, c);
 	check5("just below the step", c, 0.98f, 0, 0);
-	pattern_eval(&pg, 0, d3(0.51, 0, 0), c);
+	pattern_eval(&pg, 0, d3(0.51, 0, 0), 0, c);
 	check5("just above the step", c, 0.02f, 0.02f, 1);
 	pattern_map_lookup(&pg, &n, -1.0, d3(0, 0, 0), 0, c);
 	check5("below the first entry", c, 0, 0, 0);
@@ -136,7 +136,7 @@ static void check_colour_map(void)
 	check5("above the last entry", c, 1, 1, 1);
 	/* The filter and transmit channels interpolate too. */
 	e[0].color[4] = 1.0f;
-	pattern_eval(&pg, 0, d3(0.25, 0, 0), c);
+	pattern_eval(&pg, 0, d3(0.25, 0, 0), 0, c);
 	CHECK_NEAR(c[4], 0.5, 1e-6);
 }
 
@@ -149,14 +149,14 @@ static void check_nested(void)
 	pattern_entry e[4] = {col(0, 1, 0, 0), {.value = 1, .node = 1}, col(0, 0, 0, 0), col(1, 0, 1, 0)};
 	pattern_prog pg = {.nodes = nodes, .n_nodes = 2, .entries = e, .n_entries = 4};
 	float c[5];
-	pattern_eval(&pg, 0, d3(0.5, 0.5, 0.5), c);
+	pattern_eval(&pg, 0, d3(0.5, 0.5, 0.5), 0, c);
 	check5("checker's first entry", c, 1, 0, 0);
-	pattern_eval(&pg, 0, d3(1.5, 0.5, 0.5), c);
+	pattern_eval(&pg, 0, d3(1.5, 0.5, 0.5), 0, c);
 	check5("checker's second: the gradient's value 1.5 -> 0.5", c, 0, 0.5f, 0);
 	/* The same as a pigment_map of a gradient over x: entry 1 at 1 is the gradient pigment. */
 	nodes[0] = pattern_node_default(PATTERN_GRADIENT);
 	nodes[0].vector = d3(0, 1, 0), nodes[0].entry0 = 0, nodes[0].n_entries = 2;
-	pattern_eval(&pg, 0, d3(0.25, 0.5, 0), c); /* half red, half the gradient's 0.25 green */
+	pattern_eval(&pg, 0, d3(0.25, 0.5, 0), 0, c); /* half red, half the gradient's 0.25 green */
 	check5("pigment_map", c, 0.5f, 0.125f, 0);
 }
 
@@ -249,27 +249,27 @@ static void check_image(void)
 	n.img = &img;
 	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
 	float c[5];
-	pattern_eval(&pg, 0, d3(0.25, 0.75, 5), c); /* planar: x right, y up, z ignored */
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 5), 0, c); /* planar: x right, y up, z ignored */
 	check5("planar top left", c, 1, 0, 0);
-	pattern_eval(&pg, 0, d3(0.75, 0.25, -5), c);
+	pattern_eval(&pg, 0, d3(0.75, 0.25, -5), 0, c);
 	check5("planar bottom right", c, 1, 1, 1);
-	pattern_eval(&pg, 0, d3(1.25, -0.75, 0), c);
+	pattern_eval(&pg, 0, d3(1.25, -0.75, 0), 0, c);
 	check5("planar repeats", c, 0, 0, 1);
 	n.once = true;
-	pattern_eval(&pg, 0, d3(1.25, 0.25, 0), c);
+	pattern_eval(&pg, 0, d3(1.25, 0.25, 0), 0, c);
 	CHECK(c[4] == 1.0f && c[0] == 0.0f, "outside a once image: clear (%g, transmit %g)", c[0], c[4]);
 	n.once = false, n.map_type = 1; /* spherical: u from +x towards +z, v the latitude */
-	pattern_eval(&pg, 0, d3(0, 1, 0.1), c);
+	pattern_eval(&pg, 0, d3(0, 1, 0.1), 0, c);
 	CHECK(c[2] == 0.0f, "spherical north pole: top row");
-	pattern_eval(&pg, 0, d3(0.1, -1, 0.3), c);
+	pattern_eval(&pg, 0, d3(0.1, -1, 0.3), 0, c);
 	CHECK(c[2] == 1.0f, "spherical south pole: bottom row");
-	pattern_eval(&pg, 0, d3(0, 0.5, -1), c); /* theta = 3 pi / 2: u = 0.75, upper half */
+	pattern_eval(&pg, 0, d3(0, 0.5, -1), 0, c); /* theta = 3 pi / 2: u = 0.75, upper half */
 	check5("spherical -z, above the equator", c, 0, 1, 0);
 	n.map_type = 2; /* cylindrical: v = y */
-	pattern_eval(&pg, 0, d3(0, 0.25, 1), c); /* theta = pi / 2: u = 0.25, lower row */
+	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c); /* theta = pi / 2: u = 0.25, lower row */
 	check5("cylindrical +z, low", c, 0, 0, 1);
 	n.filter_all = 0.5f, n.transmit_all = 0.25f;
-	pattern_eval(&pg, 0, d3(0, 0.25, 1), c);
+	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c);
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "filter all, transmit all: %g %g", c[3], c[4]);
 }
 
