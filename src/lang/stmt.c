@@ -675,6 +675,19 @@ static bool sss_normal_map(parser *p, scene_sss *s)
  *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
  *           | "normal_map" string [ "strength" float ] | "anisotropy" float
  *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" ) | "group" string */
+/* "pigment" "{" pattern ... "}": a POV-Ray pigment as the albedo, evaluated where light leaves and
+ * where it enters (circle tracing's colour blurring), each entry weighted by pigment / albedo. */
+static bool sss_pigment(parser *p, scene_material *m, const lang_token *t)
+{
+	scene_material *part = new_part(p, t->loc);
+	TRY(part);
+	TRY(pigment(p, part, SCENE_COLOR_REFLECTANCE));
+	if (!part->pigment)
+		return lang_error(p, t->loc, "a pigment of one colour in an SSS block: give it as 'color' (the albedo)");
+	m->sss.pigment = part->pigment;
+	return true;
+}
+
 static bool sss_param(parser *p, scene_material *m, diag_loc open, const char *what)
 {
 	lang_token t = *lang_peek(p);
@@ -701,6 +714,8 @@ static bool sss_param(parser *p, scene_material *m, diag_loc open, const char *w
 	case LTK_KW_GROUP:
 		lang_advance(p);
 		return lang_string(p, "after 'group'", &m->sss.group);
+	case LTK_KW_PIGMENT:
+		return sss_pigment(p, m, &t);
 	default:
 		return bad_item(p, open, what, "an SSS parameter (preset, sigma_s, sigma_a, color, radius, ior, ...)");
 	}
