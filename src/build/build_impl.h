@@ -34,6 +34,11 @@ void warn_reflectance_image(const image *img, diag_loc loc, const char *path, di
 /* build_pattern.c: pg compiled into w->patterns; *node receives its root. False after reporting. */
 bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d);
 void pattern_prog_free(pattern_prog *pg);
+/* The size of the lat-long image a patterned sky_sphere is baked into: 0.35 degrees a texel. */
+#define WORLD_SKY_WIDTH 1024
+#define WORLD_SKY_HEIGHT 512
+/* build_pattern.c: sky's pigment layers baked into w->env_rgb (WORLD_SKY_WIDTH x HEIGHT, RGB). */
+bool build_sky_pigments(world *w, const scene_sky_sphere *sky, diag *d);
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
 		    diag *d);
 

@@ -664,3 +664,5 @@ bool lang_pigment_map_value(parser *p, value *out)
 	out->kind = VAL_COLOR_MAP, out->mat = m;
 	return true;
 }
+
+const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m) { return declared_tree(p, m, m->loc); }

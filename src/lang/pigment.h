@@ -19,6 +19,10 @@ bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, cons
  * reported at loc. */
 const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, const xform *xf, diag_loc loc);
 
+/* The tree of a pigment's record (a declared pigment, a sky's layer): its pattern, or a plain
+ * node of its colour. NULL: out of memory, reported. */
+const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m);
+
 /* True when the lookahead is color_map, colour_map or pigment_map (a #declare's value). */
 bool lang_pigment_map_starts(parser *p);
 /* The map at the lookahead as a VAL_COLOR_MAP value (for #declare). */

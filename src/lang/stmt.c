@@ -2362,55 +2362,81 @@ static bool background(parser *p)
 }
 
 /* sky_sphere { pigment { C } }: a sky of one colour is circe's background (a constant
- * environment light), which it replaces, before or after, as POV-Ray's sky_sphere hides the
- * background. An image pigment is refused: circe's sky image is `image`, mapped lat-long. */
-static bool sky_pigment(parser *p, diag_loc kw, const scene_material *pg, double intensity)
+ * environment light); a patterned sky (a pattern, several layers) is baked by the build into a
+ * lat-long image (build_pattern.c). An image_map pigment is refused: circe's sky image is
+ * `image`, mapped lat-long. */
+static bool sky_pigments(parser *p, diag_loc kw, scene_material *const *pg, int n, const xform *moved, bool was_moved)
 {
-	if (pg->pigment && pg->pigment->kind != SCENE_PAT_IMAGE)
-		return lang_error(p, pg->pigment->loc, "a '%s' pigment in sky_sphere is not supported by circe: give a colour",
-				  scene_pattern_name(pg->pigment->kind));
-	if (pg->image || pg->pigment)
-		return lang_error(p, pg->loc, "an image_map pigment in sky_sphere is not supported by circe: give the "
-					      "lat-long image as sky_sphere { image \"file\" }");
-	vec3 c = v3_scale(pg->color, (float)intensity);
-	if (!v3_is_finite(c))
-		return lang_error(p, kw, "sky_sphere intensity %g makes its colour overflow a float", intensity);
-	p->sc->background = c;
-	p->sc->has_background = true;
-	p->sc->background_loc = kw;
-	p->sky_colour = true;
+	scene_sky_sphere *s = &p->sc->sky_sphere;
+	bool patterned = n > 1 || pg[0]->pigment;
+	for (int i = 0; i < n; i++)
+		if (pg[i]->pigment && pg[i]->pigment->kind == SCENE_PAT_IMAGE)
+			return lang_error(p, pg[i]->loc, "an image_map pigment in sky_sphere is not supported by circe: give "
+							 "the lat-long image as sky_sphere { image \"file\" }");
+	if (!patterned) {
+		vec3 c = v3_scale(pg[0]->color, (float)s->intensity);
+		if (!v3_is_finite(c))
+			return lang_error(p, kw, "sky_sphere intensity %g makes its colour overflow a float", s->intensity);
+		p->sc->background = c;
+		p->sc->has_background = true;
+		p->sc->background_loc = kw;
+		p->sky_colour = true;
+		return true;
+	}
+	for (int i = 0; i < n; i++) {
+		const scene_pigment *t = lang_pigment_tree(p, pg[i]);
+		TRY(t);
+		if (was_moved)
+			TRY(t = lang_pigment_moved(p, t, moved, kw));
+		s->pigments[i] = t;
+	}
+	s->n_pigments = n;
+	p->sc->has_sky_sphere = true;
 	return true;
 }
 
-/* sky_sphere = "sky_sphere" "{" ( "image" string | pigment ) { "intensity" float | "rotate" vector } "}"
- * (one image or one pigment of a colour) */
+/* The end of a sky_sphere: one image, or its pigments. */
+static bool sky_close(parser *p, diag_loc kw, scene_material *const *pg, int n, const xform *moved, diag_loc moved_at)
+{
+	scene_sky_sphere *s = &p->sc->sky_sphere;
+	if (n && s->image)
+		return lang_error(p, pg[0]->loc, "sky_sphere has an 'image' and a pigment: give one");
+	if (moved_at.line && !n)
+		return lang_error(p, moved_at, "a sky_sphere image turns by 'rotate' only: circe maps it lat-long");
+	if (n)
+		return sky_pigments(p, kw, pg, n, moved, moved_at.line != 0);
+	if (!s->image)
+		return lang_error(p, kw, "sky_sphere needs an 'image' or a pigment");
+	p->sc->has_sky_sphere = true;
+	return true;
+}
+
+/* sky_sphere = "sky_sphere" "{" ( "image" string | pigment | "intensity" float | "rotate" vector
+ *              | transform_item )* "}"
+ * (one image, or pigments: one colour is the background; patterns and layers, bottom first, a
+ * baked sky; translate, scale and the like move the pigments, rotate turns the whole sky) */
 static bool sky_sphere(parser *p)
 {
 	lang_token kw = *lang_advance(p);
-	diag_loc open;
+	diag_loc open, moved_at = {0};
 	TRY(open_block(p, "sky_sphere", &open));
 	scene_sky_sphere *s = &p->sc->sky_sphere;
 	*s = (scene_sky_sphere){.loc = kw.loc, .intensity = 1};
-	scene_material *pg = NULL;
+	scene_material *pg[SCENE_SKY_MAX_PIGMENTS];
+	int n = 0;
+	xform moved = xform_identity();
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
-			if (pg && s->image)
-				return lang_error(p, pg->loc, "sky_sphere has an 'image' and a pigment: give one");
-			if (pg)
-				return sky_pigment(p, kw.loc, pg, s->intensity);
-			if (!s->image)
-				return lang_error(p, kw.loc, "sky_sphere needs an 'image' or a pigment");
-			p->sc->has_sky_sphere = true;
-			return true;
+			return sky_close(p, kw.loc, pg, n, &moved, moved_at);
 		case LTK_KW_PIGMENT:
-			if (pg)
-				return lang_error(p, t.loc, "a second pigment in sky_sphere (circe's sky has one colour)");
-			TRY(pg = new_part(p, t.loc));
-			TRY(pigment(p, pg, SCENE_COLOR_RADIANCE));
+			if (n == SCENE_SKY_MAX_PIGMENTS)
+				return lang_error(p, t.loc, "too many pigments in sky_sphere (limit is %d)", SCENE_SKY_MAX_PIGMENTS);
+			TRY(pg[n] = new_part(p, t.loc));
+			TRY(pigment(p, pg[n++], SCENE_COLOR_RADIANCE));
 			break;
 		case LTK_KW_IMAGE:
 			lang_advance(p);
@@ -2427,8 +2453,14 @@ static bool sky_sphere(parser *p)
 			lang_advance(p);
 			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
 			break;
-		default:
-			return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
+		default: {
+			bool matched;
+			TRY(transform_item(p, &moved, &matched));
+			if (!matched)
+				return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
+			if (!moved_at.line)
+				moved_at = t.loc;
+		}
 		}
 	}
 }

@@ -517,7 +517,16 @@ void scene_dump(const scene *s, FILE *o)
 		dump_v3(o, "color", s->background);
 		fputc('\n', o);
 	}
-	if (s->has_sky_sphere) {
+	if (s->has_sky_sphere && s->sky_sphere.n_pigments) {
+		fprintf(o, "sky_sphere pigments %d intensity %g", s->sky_sphere.n_pigments, s->sky_sphere.intensity);
+		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
+		fputc('\n', o);
+		for (int i = 0; i < s->sky_sphere.n_pigments; i++) {
+			fprintf(o, "  ");
+			scene_pigment_dump(o, s->sky_sphere.pigments[i]);
+			fputc('\n', o);
+		}
+	} else if (s->has_sky_sphere) {
 		fprintf(o, "sky_sphere image \"%s\" intensity %g", s->sky_sphere.image, s->sky_sphere.intensity);
 		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
 		fputc('\n', o);

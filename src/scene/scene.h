@@ -181,11 +181,18 @@ typedef struct scene_global {
 	double assumed_gamma; /* default 1 */
 } scene_global;
 
+/* Pigment layers of a sky_sphere (POV-Ray's are unlimited; circe's sky is baked from these). */
+enum { SCENE_SKY_MAX_PIGMENTS = 8 };
+
 typedef struct scene_sky_sphere {
 	diag_loc loc;
 	const char *image;
 	double intensity;
 	dvec3 rotate_deg;
+	/* Or POV-Ray pigments, bottom first, evaluated at the unit direction (the build bakes them
+	 * into a lat-long image): each layer's filter and transmit show the ones below. */
+	const struct scene_pigment *pigments[SCENE_SKY_MAX_PIGMENTS];
+	int n_pigments;
 } scene_sky_sphere;
 
 /* A file the scene names, as resolved (see scene_geom's file path), and the place of its string:
