@@ -116,6 +116,12 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		wm->pattern_uv = pig->uv_mapping;
 		wm->pattern_kd = sm->kind == MAT_TEXTURE ? sm->diffuse : 1.0f;
 	}
+	if (sm->normal) {
+		if (!build_pattern(w, sm->normal, &wm->normal, d))
+			return false;
+		wm->has_normal = true;
+		wm->normal_uv = sm->normal->uv_mapping;
+	}
 	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
 	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
 		return false;

@@ -46,6 +46,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_TRANSFORM: return "a transform";
 	case VAL_FILE: return "a data file";
 	case VAL_COLOR_MAP: return "a color_map";
+	case VAL_NORMAL: return "a normal";
 	}
 	return "a value";
 }

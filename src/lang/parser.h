@@ -19,6 +19,7 @@ typedef enum value_kind {
 	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
 	VAL_COLOR_MAP, /* a color_map or pigment_map (lang/pigment.c): `mat`'s pigment holds its entries */
+	VAL_NORMAL,    /* a normal { } (lang/pigment.c): `mat`'s normal */
 	VAL_FILE /* a data file of #fopen (datafile.c) */
 } value_kind;
 

@@ -22,10 +22,11 @@ typedef struct pig_build {
 	scene_pigment pg;
 	scene_warp warps[MAX_WARPS];
 	uint32_t n_warps;
-	int depth; /* pigments around this one */
+	int depth;   /* pigments around this one */
+	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
 } pig_build;
 
-static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth,
+static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
 		 const scene_pigment **out);
 
 /* The lookahead is the word w: a POV-Ray word circe does not reserve, or one of its keywords. */
@@ -192,10 +193,10 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 		lang_advance(p);
 		open = lang_peek(p)->loc;
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment'"));
-		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, &e->pigment);
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &e->pigment);
 	}
 	if (pigment_body)
-		return body(p, NULL, close, at, b->depth + 1, &e->pigment);
+		return body(p, NULL, close, at, b->depth + 1, false, &e->pigment);
 	double c[5];
 	TRY(lang_color5(p, "in the map", c));
 	set5(e->color, c);
@@ -549,6 +550,12 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 		return turb_params(p, &b->pg.turb);
 	if (accept_word(p, "brick_size"))
 		return lang_vec3(p, "after 'brick_size'", &b->pg.vector);
+	if (b->normal && accept_word(p, "bump_size"))
+		return lang_float(p, "after 'bump_size'", &b->pg.bump_amount);
+	if (b->normal && accept_word(p, "accuracy"))
+		return lang_float(p, "after 'accuracy'", &b->pg.accuracy);
+	if (b->normal && (peek_word(p, "slope_map") || peek_word(p, "normal_map")))
+		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
 	if (accept_word(p, "uv_mapping")) {
 		b->pg.uv_mapping = true;
 		return true;
@@ -569,11 +576,39 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 
 /* The first item of a body: a pattern and its arguments, image_map, a colour, a declared
  * pigment (in maps and lists, where stmt.c's pigment did not read it), or nothing. */
+/* A normal's amount after its pattern: [ "," ] float, when one follows. */
+static bool normal_amount(parser *p, pig_build *b)
+{
+	lang_accept(p, LTK_COMMA);
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || peek_declared(p, VAL_FLOAT))
+		return lang_float(p, "as the normal's amount", &b->pg.bump_amount);
+	return true;
+}
+
 static bool head(parser *p, pig_build *b)
 {
 	scene_pattern_kind k = peek_pattern(p);
-	if (k != SCENE_PAT_COUNT)
-		return pattern_head(p, b, k);
+	if (k != SCENE_PAT_COUNT) {
+		double amount = b->pg.bump_amount, accuracy = b->pg.accuracy;
+		TRY(pattern_head(p, b, k));
+		b->pg.is_normal = b->normal;
+		if (b->normal) /* a new pattern keeps the amount and accuracy of a declared normal */
+			b->pg.bump_amount = amount, b->pg.accuracy = accuracy;
+		return b->normal ? normal_amount(p, b) : true;
+	}
+	if (b->normal) {
+		const symbol *sn = peek_declared(p, VAL_NORMAL);
+		if (sn) {
+			lang_advance(p);
+			begin_from(b, sn->val.mat->normal);
+			return true;
+		}
+		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP || peek_word(p, "bump_map"))
+			return lang_error(p, lang_peek(p)->loc, "'%.*s' in a normal is not supported by circe",
+					  (int)lang_peek(p)->len, lang_peek(p)->text);
+		return true;
+	}
 	if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)
 		return image_map(p, b);
 	const symbol *s = peek_declared(p, VAL_PIGMENT);
@@ -599,6 +634,8 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 	TRY(head(p, b));
 	for (;;) {
 		if (lang_accept(p, close)) {
+			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN)
+				return lang_error(p, open, "a normal needs a pattern (bumps, dents, ripples, ...)");
 			if (b->pg.kind == SCENE_PAT_PLAIN && (b->n_warps || b->pg.entries))
 				b->n_warps = 0; /* a colour has no pattern to move or map */
 			return (*out = finish_build(p, b, open)) != NULL;
@@ -614,7 +651,7 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 	}
 }
 
-static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth,
+static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
 		 const scene_pigment **out)
 {
 	if (depth >= SCENE_PIGMENT_MAX_DEPTH)
@@ -628,6 +665,9 @@ static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc 
 		else
 			b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
 		b->depth = depth;
+		b->normal = normal;
+		if (normal && !base)
+			b->pg.is_normal = true;
 		ok = body_in(p, b, close, open, out);
 	}
 	mem_free(b);
@@ -637,7 +677,7 @@ static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc 
 
 bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out)
 {
-	return body(p, base, LTK_RBRACE, open, 0, out);
+	return body(p, base, LTK_RBRACE, open, 0, false, out);
 }
 
 bool lang_pigment_map_starts(parser *p)
@@ -666,3 +706,25 @@ bool lang_pigment_map_value(parser *p, value *out)
 }
 
 const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m) { return declared_tree(p, m, m->loc); }
+
+bool lang_normal_starts(parser *p) { return peek_word(p, "normal"); }
+
+bool lang_normal(parser *p, scene_material *m)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+	return body(p, m->normal, LTK_RBRACE, open, 0, true, &m->normal);
+}
+
+bool lang_normal_value(parser *p, value *out)
+{
+	diag_loc at = lang_peek(p)->loc;
+	scene_material *m = arena_zalloc(&p->sc->arena, 1, sizeof *m);
+	if (!m)
+		return lang_error(p, at, "out of memory");
+	m->loc = at;
+	TRY(lang_normal(p, m));
+	out->kind = VAL_NORMAL, out->mat = m;
+	return true;
+}

@@ -28,6 +28,14 @@ bool lang_pigment_map_starts(parser *p);
 /* The map at the lookahead as a VAL_COLOR_MAP value (for #declare). */
 bool lang_pigment_map_value(parser *p, value *out);
 
+/* True when the lookahead is `normal` (a POV-Ray word circe reads here). */
+bool lang_normal_starts(parser *p);
+/* normal = "normal" "{" [ identifier ] [ pattern [ [","] float ] ] { pattern_modifier
+ *          | "bump_size" float | "accuracy" float } "}": m's normal (a copy over a declared one). */
+bool lang_normal(parser *p, scene_material *m);
+/* A normal { } as a VAL_NORMAL value (for #declare). */
+bool lang_normal_value(parser *p, value *out);
+
 /* stmt.c's helpers pigment.c reads with: a file name resolved and recorded as an asset, and one
  * transform item composed after *t (*matched false when the lookahead is none). */
 bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out);

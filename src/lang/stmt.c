@@ -285,6 +285,8 @@ static bool pattern_transform_item(parser *p, scene_material *m, diag_loc *at, b
 		TRY(m->pigment = lang_pigment_moved(p, m->pigment, &moved, loc));
 	if (*matched && m->sss.pigment)
 		TRY(m->sss.pigment = lang_pigment_moved(p, m->sss.pigment, &moved, loc));
+	if (*matched && m->normal)
+		TRY(m->normal = lang_pigment_moved(p, m->normal, &moved, loc));
 	return true;
 }
 
@@ -504,12 +506,14 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 			TRY(pigment(p, m, SCENE_COLOR_REFLECTANCE));
 		else if (k == LTK_KW_FINISH)
 			TRY(finish(p, m));
+		else if (lang_normal_starts(p))
+			TRY(lang_normal(p, m));
 		else if (k == LTK_RBRACE)
 			break;
 		else {
 			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
-				return bad_item(p, open, "texture", "pigment, finish or a transform");
+				return bad_item(p, open, "texture", "pigment, normal, finish or a transform");
 		}
 	}
 	lang_advance(p);
@@ -858,6 +862,13 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	if (*matched)
 		return true;
 	*matched = true;
+	if (lang_normal_starts(p)) { /* normal { } on the object: its texture's, as a bare pigment */
+		if (!m->tex) {
+			TRY(m->tex = new_texture(p, t.loc));
+			TRY(set_material(p, m, m->tex, t.loc));
+		}
+		return lang_normal(p, m->tex);
+	}
 	switch (t.kind) {
 	case LTK_KW_INVERSE:
 		return lang_error(p, t.loc, "'inverse' of an object (CSG) is not supported by circe");
@@ -1677,6 +1688,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return declare_record(p, out, k);
 	if (lang_pigment_map_starts(p))
 		return lang_pigment_map_value(p, out);
+	if (lang_normal_starts(p))
+		return lang_normal_value(p, out);
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;

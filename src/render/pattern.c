@@ -83,13 +83,14 @@ static double clamp01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
 double pattern_noise(dvec3 p) { return clamp01(0.5 + 0.5 * NOISE_GAIN * perlin(p)); }
 
 /* Three noises at points far apart (so the components are independent), as POV-Ray's DNoise
- * draws three components from its lattice. */
+ * draws three components from its lattice, each distributed as noise - 0.5 (POV-Ray's DNoise
+ * components are its noise's sum before the 0.5 is added: portablenoise.cpp). */
 dvec3 pattern_dnoise(dvec3 p)
 {
-	double x = NOISE_GAIN * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
-	double y = NOISE_GAIN * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
-	double z = NOISE_GAIN * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
-	return d3(fmax(-1.0, fmin(1.0, x)), fmax(-1.0, fmin(1.0, y)), fmax(-1.0, fmin(1.0, z)));
+	double x = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
+	double y = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
+	double z = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
+	return d3(fmax(-0.5, fmin(0.5, x)), fmax(-0.5, fmin(0.5, y)), fmax(-0.5, fmin(0.5, z)));
 }
 
 /* noise.cpp's Turbulence (its original-generator branch: circe's noise already spans [0, 1]):
@@ -602,6 +603,7 @@ void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, fl
 pattern_node pattern_node_default(pattern_kind kind)
 {
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
+			  .bump_amount = 0.5, .accuracy = 0.02,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2
@@ -648,4 +650,97 @@ int pattern_default_map(pattern_kind kind, pattern_entry out[6])
 					 .color = {(float)t[i][1], (float)t[i][2], (float)t[i][3], 0.0f, 0.0f},
 					 .node = -1};
 	return n;
+}
+
+/* ---- normals ------------------------------------------------------------------------------ */
+
+/* The sum over POV-Ray's wave sources of normal.cpp's ripples (waves: with each source's
+ * frequency): each pushes the normal along p - source by the wave's sine. */
+static dvec3 wave_normal(const pattern_node *n, dvec3 p, bool waves)
+{
+	uint32_t next = (uint32_t)-560851967;
+	dvec3 d = d3(0, 0, 0);
+	for (int i = 0; i < POV_NUMBER_OF_WAVES; i++) {
+		next = next * 1812433253u + 12345u;
+		double f = (double)((int32_t)next >> 16 & 0x7FFF) * 0.000030518509476 + 0.01;
+		dvec3 q = d3_sub(p, wave_source(i));
+		double len = d3_length(q);
+		if (len == 0.0)
+			len = 1.0;
+		double s = waves ? cycloidal(len * n->frequency * f + n->phase) * n->bump_amount / f
+				 : cycloidal(len * n->frequency + n->phase) * n->bump_amount;
+		d = d3_add(d, d3_scale(q, s / (len * POV_NUMBER_OF_WAVES)));
+	}
+	return d;
+}
+
+/* normal.cpp's wrinkles: ten octaves of |vector noise| / 2^i. */
+static dvec3 wrinkles_normal(dvec3 p)
+{
+	dvec3 r = d3(0, 0, 0);
+	double scale = 1.0;
+	for (int i = 0; i < 10; i++, scale *= 2.0) {
+		dvec3 v = pattern_dnoise(d3_scale(p, scale));
+		r = d3_add(r, d3(fabs(v.x) / scale, fabs(v.y) / scale, fabs(v.z) / scale));
+	}
+	return r;
+}
+
+/* Perturb_Normal's slope of any pattern: its value at the four corners of a tetrahedron of size
+ * accuracy around p, times -5 amount (POV-Ray's "fudge factor") scaled to the step. */
+static dvec3 slope_normal(const pattern_node *n, dvec3 q, double eps)
+{
+	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
+					     {-0.471404521, -0.333333333, 0.816496581},
+					     {-0.471404521, -0.333333333, -0.816496581},
+					     {0.0, 1.0, 0.0}};
+	double delta = n->accuracy > 0 ? n->accuracy : 0.02;
+	double amount = n->bump_amount * -5.0 * 0.02 / delta;
+	dvec3 d = d3(0, 0, 0);
+	for (int i = 0; i < 4; i++) {
+		dvec3 v = d3(pyramid[i][0], pyramid[i][1], pyramid[i][2]);
+		dvec3 at = d3_add(q, d3_scale(v, delta));
+		double value = raw_eps(n, at, eps);
+		if (!is_block(n->kind))
+			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
+		d = d3_add(d, d3_scale(v, value * amount));
+	}
+	return d;
+}
+
+dvec3 pattern_normal_through(const xform *t, dvec3 n, bool into)
+{
+	const double(*m)[4] = into ? t->m : t->inv; /* M^T n into, M^-T n out */
+	return d3(m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+		  m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z);
+}
+
+void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+{
+	const pattern_node *n = &pg->nodes[node];
+	dvec3 v = *nrm;
+	for (uint32_t i = 0; i < n->n_warps; i++)
+		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
+			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, true);
+	double eps = POV_EPSILON;
+	dvec3 q = warped(pg, n, p, &eps);
+	switch (n->kind) {
+	case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
+	case PATTERN_DENTS: {
+		double k = pattern_noise(q);
+		v = d3_add(v, d3_scale(pattern_dnoise(q), k * k * k * n->bump_amount));
+		break;
+	}
+	case PATTERN_WRINKLES: v = d3_add(v, d3_scale(wrinkles_normal(q), n->bump_amount)); break;
+	case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
+	case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
+	case PATTERN_PLAIN:
+	case PATTERN_IMAGE: break;
+	default: v = d3_add(v, slope_normal(n, q, eps)); break;
+	}
+	for (uint32_t i = n->n_warps; i-- > 0;)
+		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
+			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, false);
+	if (isfinite(v.x) && isfinite(v.y) && isfinite(v.z))
+		*nrm = v;
 }

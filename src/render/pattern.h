@@ -89,6 +89,7 @@ typedef struct pattern_node {
 	double frequency, phase, exponent;
 	bool turb_in_pattern; /* marble, wood, spiral, agate: the pattern uses turb itself */
 	pattern_turb turb;     /* its classic turbulence (amount 0: none) */
+	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;
@@ -107,6 +108,14 @@ typedef struct pattern_prog {
  * rounding; 0 for an exact point): a point that close to a cell's boundary (checker, brick,
  * cells) takes the side POV-Ray's EPSILON gives it, so a face lying on a boundary is one colour. */
 void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5]);
+/* A normal pattern (POV-Ray's Perturb_Normal) at p: *n, a normal in p's space, moved by the
+ * pattern's perturbation (bumps, dents, wrinkles, ripples and waves their own way; any other
+ * pattern by its slope, sampled at four points `accuracy` apart), through the pattern's
+ * transforms and back. Not normalised. */
+void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *n);
+/* A normal seen through a transform t whose inverse takes points into a pattern's space: into it
+ * (t's transpose), or back out (its inverse transpose). Not normalised. */
+dvec3 pattern_normal_through(const xform *t, dvec3 n, bool into);
 /* The largest row sum of |t's inverse|: how much t's inverse can lengthen a vector (max norm). */
 double pattern_inv_gain(const xform *t);
 /* The pattern's value at p after its warps, its wave applied (continuous kinds, in [0, 1]) or
@@ -122,7 +131,7 @@ void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v,
 
 /* Noise, in [0, 1] and 0.5 on average, like POV-Ray's Noise(). */
 double pattern_noise(dvec3 p);
-/* Vector noise, each component in [-1, 1] and 0 on average (POV-Ray's DNoise). */
+/* Vector noise, each component in [-0.5, 0.5] and 0 on average (POV-Ray's DNoise). */
 dvec3 pattern_dnoise(dvec3 p);
 /* POV-Ray's Turbulence (a sum of octaves of noise) and DTurbulence (of vector noise). */
 double pattern_turbulence(dvec3 p, const pattern_turb *t);

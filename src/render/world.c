@@ -181,6 +181,19 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 	params->diffuse = v3_scale(rgb, wm->pattern_kd); /* a finish's diffuse scales its pigment */
 }
 
+/* A POV-Ray normal { } at the hit: the shading normal taken into the object's space (the
+ * transpose of its placement), perturbed there by the pattern, and brought back. */
+static void shade_normal(const world *w, const world_material *wm, const render_hit *hit, vec3 *ns)
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = wm->normal_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	dvec3 n = pattern_normal_through(&in->pattern_xf, v3_to_d3(*ns), true);
+	pattern_perturb(&w->patterns, wm->normal, p, &n);
+	vec3 out = v3_normalize(d3v(pattern_normal_through(&in->pattern_xf, n, false)));
+	if (v3_is_finite(out) && v3_length2(out) > 0.5f)
+		*ns = out;
+}
+
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
  * (through the mesh's tangents, which the build made for it) at the hit. */
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
@@ -198,6 +211,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		/* A float (EXR) texture may hold any number: a reflectance is in [0, 1] (check warns). */
 		scene_color_clamp(&params->diffuse, SCENE_COLOR_REFLECTANCE);
 	}
+	if (wm->has_normal)
+		shade_normal(w, wm, hit, ns);
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
 	if (wm->normal_map && m->tangents) {

@@ -58,6 +58,9 @@ typedef struct world_material {
 	bool pattern_uv;  /* evaluated at <u, v, 0> (uv_mapping) rather than the object-space point */
 	float pattern_kd; /* the BSDF's diffuse over the pigment (a texture's finish diffuse; else 1) */
 	uint32_t pattern;
+	bool has_normal;  /* a POV-Ray normal { }: node `normal` of world.patterns perturbs the normal */
+	bool normal_uv;
+	uint32_t normal;
 } world_material;
 
 

@@ -45,6 +45,7 @@ typedef struct scene_material {
 	vec3 color; /* diffuse / texture albedo */
 	const char *image; /* albedo texture path (resolved against the naming file's folder), or NULL */
 	const struct scene_pigment *pigment; /* a POV-Ray pigment (scene/pigment.h) beyond one colour, or NULL */
+	const struct scene_pigment *normal;  /* a POV-Ray normal { } (a pattern perturbing the normal), or NULL */
 	float diffuse, specular, roughness; /* texture finish; diffuse material: 1, 0, 1 */
 	float ior; /* texture interior { ior }; 0 when none */
 	vec3 emission; /* any kind may emit */

@@ -32,7 +32,7 @@ int scene_pattern_blocks(scene_pattern_kind k)
 scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 {
 	scene_pigment p = {.loc = loc, .kind = k, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0),
-			   .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
+			   .bump_amount = 0.5, .accuracy = 0.02, .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
 			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	if (k == SCENE_PAT_MARBLE || k == SCENE_PAT_WOOD || k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2)
 		p.wave = SCENE_WAVE_TRIANGLE;
@@ -73,4 +73,6 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 		fprintf(o, " warps %u", pg->n_warps);
 	if (pg->uv_mapping)
 		fprintf(o, " uv_mapping");
+	if (pg->is_normal)
+		fprintf(o, " normal %g", pg->bump_amount);
 }

@@ -95,6 +95,8 @@ typedef struct scene_pigment {
 	const scene_map_entry *entries; /* NULL: the pattern's default map */
 	uint32_t n_entries;
 	bool pigment_map; /* entries are pigments */
+	bool is_normal;	  /* a normal { }: the pattern perturbs the shading normal */
+	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */
 } scene_pigment;
 

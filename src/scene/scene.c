@@ -345,6 +345,11 @@ static void dump_material(FILE *o, const scene_material *m)
 		scene_pigment_dump(o, pg);
 		fputc('\n', o);
 	}
+	if (m->normal) {
+		fprintf(o, "  ");
+		scene_pigment_dump(o, m->normal);
+		fputc('\n', o);
+	}
 	if (m->emission.x != 0 || m->emission.y != 0 || m->emission.z != 0) {
 		fprintf(o, " ");
 		dump_v3(o, "emission", m->emission);
