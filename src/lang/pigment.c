@@ -449,15 +449,17 @@ static bool image_map(parser *p, pig_build *b)
 /* ---- pattern heads and modifiers --------------------------------------------------------- */
 
 /* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
- * list. A new pattern keeps the warps read so far (POV-Ray's do). */
+ * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
+ * object, which holds them), over a declared pigment or normal. */
 static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 {
 	diag_loc kw = lang_advance(p)->loc;
 	if (k == SCENE_PAT_FUNCTION)
 		return lang_error(p, kw, "'function' as a pattern is not supported by circe yet");
 	scene_pigment d = scene_pigment_defaults(k, kw);
-	d.turb = b->pg.turb, d.uv_mapping = b->pg.uv_mapping;
+	d.uv_mapping = b->pg.uv_mapping;
 	b->pg = d;
+	b->n_warps = 0;
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
 	if (k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2) {
