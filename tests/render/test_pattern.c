@@ -285,8 +285,47 @@ static void check_defaults(void)
 	CHECK(pattern_node_default(PATTERN_QUILTED).frequency == 0, "quilted's frequency 0");
 }
 
+/* Perturb_Normal: bumps adds amount * DNoise; any other pattern its slope on the tetrahedron,
+ * which for gradient x (value x) is -5 * 0.02 * amount * (4/3) e_x whatever the accuracy (the
+ * four unit vectors of a regular tetrahedron have sum 0 and sum v v^T = 4/3 I); a scale 2 of the
+ * pattern halves the slope and the transpose brings it back. */
+static void check_normals(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_BUMPS);
+	n.bump_amount = 0.8;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+	dvec3 p = d3(0.3, 1.7, -2.2), v = d3(0, 0, 1);
+	pattern_perturb(&pg, 0, p, &v);
+	dvec3 want = d3_add(d3(0, 0, 1), d3_scale(pattern_dnoise(p), 0.8));
+	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "bumps: <%g, %g, %g>", v.x, v.y, v.z);
+	n = pattern_node_default(PATTERN_GRADIENT);
+	n.vector = d3(1, 0, 0), n.bump_amount = 0.3, n.frequency = 0; /* the raw value x, no wrap */
+	for (double acc = 0.01; acc < 0.1; acc *= 3) {
+		n.accuracy = acc;
+		v = d3(0, 1, 0);
+		pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
+		CHECK(fabs(v.x + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9 && fabs(v.z) < 1e-9,
+		      "gradient x's slope at accuracy %g: <%g, %g, %g>", acc, v.x, v.y, v.z);
+	}
+	pattern_warp sc = {.kind = WARP_TRANSFORM};
+	CHECK(xform_scale(d3(2, 2, 2), &sc.xf), "scale");
+	pg.warps = &sc, pg.n_warps = 1, n.warp0 = 0, n.n_warps = 1;
+	v = d3(0, 1, 0);
+	pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
+	/* into: n' = 2 n; slope as before; out: / 2 -> <-0.04 / 2, 1, 0> */
+	CHECK(fabs(v.x + 0.5 * 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9, "scaled slope: <%g, %g, %g>", v.x,
+	      v.y, v.z);
+	/* ripples at a point: finite, and the normal moves along p - source sums */
+	n = pattern_node_default(PATTERN_RIPPLES);
+	pg.n_warps = 0, n.n_warps = 0;
+	v = d3(0, 1, 0);
+	pattern_perturb(&pg, 0, d3(NAN, 1e300, 0), &v);
+	CHECK(isfinite(v.x) && isfinite(v.y) && isfinite(v.z), "ripples at an odd point stay finite");
+}
+
 int main(void)
 {
+	check_normals();
 	check_table();
 	check_waves();
 	check_colour_map();
