@@ -47,6 +47,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_FILE: return "a data file";
 	case VAL_COLOR_MAP: return "a color_map";
 	case VAL_NORMAL: return "a normal";
+	case VAL_SKY: return "a sky_sphere";
 	}
 	return "a value";
 }

@@ -20,6 +20,7 @@ typedef enum value_kind {
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
 	VAL_COLOR_MAP, /* a color_map or pigment_map (lang/pigment.c): `mat`'s pigment holds its entries */
 	VAL_NORMAL,    /* a normal { } (lang/pigment.c): `mat`'s normal */
+	VAL_SKY,       /* a sky_sphere { } as read (stmt.c's lang_sky) */
 	VAL_FILE /* a data file of #fopen (datafile.c) */
 } value_kind;
 
@@ -45,6 +46,7 @@ typedef struct value {
 	const scene_camera *cam; /* VAL_CAMERA */
 	const scene_light *light; /* VAL_LIGHT */
 	const xform *xf; /* VAL_TRANSFORM */
+	const struct lang_sky *sky; /* VAL_SKY */
 	int file; /* VAL_FILE: its index in the parser's datafiles */
 } value;
 

@@ -1673,6 +1673,8 @@ static bool declare_record(parser *p, value *out, lang_tok k)
 	return light_block(p, r, kw.loc);
 }
 
+static bool declare_sky(parser *p, value *out);
+
 bool lang_declare_block(parser *p, value *out, bool *handled)
 {
 	lang_tok k = lang_peek(p)->kind;
@@ -1690,6 +1692,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return lang_pigment_map_value(p, out);
 	if (lang_normal_starts(p))
 		return lang_normal_value(p, out);
+	if (k == LTK_KW_SKY_SPHERE)
+		return declare_sky(p, out);
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
@@ -2408,74 +2412,108 @@ static bool sky_pigments(parser *p, diag_loc kw, scene_material *const *pg, int 
 	return true;
 }
 
+/* A sky_sphere as read (a statement's, or a #declare'd one that a later sky_sphere starts from). */
+struct lang_sky {
+	scene_sky_sphere s;
+	scene_material *pg[SCENE_SKY_MAX_PIGMENTS];
+	int n;
+	xform moved;
+	diag_loc moved_at;
+};
+
 /* The end of a sky_sphere: one image, or its pigments. */
-static bool sky_close(parser *p, diag_loc kw, scene_material *const *pg, int n, const xform *moved, diag_loc moved_at)
+static bool sky_close(parser *p, diag_loc kw, const struct lang_sky *k)
 {
 	scene_sky_sphere *s = &p->sc->sky_sphere;
-	if (n && s->image)
-		return lang_error(p, pg[0]->loc, "sky_sphere has an 'image' and a pigment: give one");
-	if (moved_at.line && !n)
-		return lang_error(p, moved_at, "a sky_sphere image turns by 'rotate' only: circe maps it lat-long");
-	if (n)
-		return sky_pigments(p, kw, pg, n, moved, moved_at.line != 0);
+	*s = k->s;
+	if (k->n && s->image)
+		return lang_error(p, k->pg[0]->loc, "sky_sphere has an 'image' and a pigment: give one");
+	if (k->moved_at.line && !k->n)
+		return lang_error(p, k->moved_at, "a sky_sphere image turns by 'rotate' only: circe maps it lat-long");
+	if (k->n)
+		return sky_pigments(p, kw, k->pg, k->n, &k->moved, k->moved_at.line != 0);
 	if (!s->image)
 		return lang_error(p, kw, "sky_sphere needs an 'image' or a pigment");
 	p->sc->has_sky_sphere = true;
 	return true;
 }
 
-/* sky_sphere = "sky_sphere" "{" ( "image" string | pigment | "intensity" float | "rotate" vector
- *              | transform_item )* "}"
+/* One item of a sky_sphere into k; false after reporting. */
+static bool sky_item(parser *p, diag_loc open, struct lang_sky *k)
+{
+	lang_token t = *lang_peek(p);
+	double x;
+	switch (t.kind) {
+	case LTK_KW_PIGMENT:
+		if (k->n == SCENE_SKY_MAX_PIGMENTS)
+			return lang_error(p, t.loc, "too many pigments in sky_sphere (limit is %d)", SCENE_SKY_MAX_PIGMENTS);
+		TRY(k->pg[k->n] = new_part(p, t.loc));
+		return pigment(p, k->pg[k->n++], SCENE_COLOR_RADIANCE);
+	case LTK_KW_IMAGE:
+		lang_advance(p);
+		return asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &k->s.image);
+	case LTK_KW_INTENSITY:
+		lang_advance(p);
+		TRY(lang_float(p, "after 'intensity'", &x));
+		if (x < 0)
+			return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
+		k->s.intensity = x;
+		return true;
+	case LTK_KW_ROTATE:
+		lang_advance(p);
+		return lang_vec3(p, "after 'rotate'", &k->s.rotate_deg);
+	default: {
+		bool matched;
+		TRY(transform_item(p, &k->moved, &matched));
+		if (!matched)
+			return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
+		if (!k->moved_at.line)
+			k->moved_at = t.loc;
+		return true;
+	}
+	}
+}
+
+/* sky_sphere = "sky_sphere" "{" [ identifier ] ( "image" string | pigment | "intensity" float
+ *              | "rotate" vector | transform_item )* "}"
  * (one image, or pigments: one colour is the background; patterns and layers, bottom first, a
- * baked sky; translate, scale and the like move the pigments, rotate turns the whole sky) */
+ * baked sky; translate, scale and the like move the pigments, rotate turns the whole sky; a
+ * declared sky_sphere's items come first) */
+static bool sky_block(parser *p, diag_loc *kw, struct lang_sky *k)
+{
+	*kw = lang_advance(p)->loc;
+	diag_loc open;
+	TRY(open_block(p, "sky_sphere", &open));
+	*k = (struct lang_sky){.s = {.loc = *kw, .intensity = 1}, .moved = xform_identity()};
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_SKY, "a sky_sphere"));
+		*k = *v->sky;
+		k->s.loc = *kw;
+	}
+	while (!lang_accept(p, LTK_RBRACE))
+		TRY(sky_item(p, open, k));
+	return true;
+}
+
 static bool sky_sphere(parser *p)
 {
-	lang_token kw = *lang_advance(p);
-	diag_loc open, moved_at = {0};
-	TRY(open_block(p, "sky_sphere", &open));
-	scene_sky_sphere *s = &p->sc->sky_sphere;
-	*s = (scene_sky_sphere){.loc = kw.loc, .intensity = 1};
-	scene_material *pg[SCENE_SKY_MAX_PIGMENTS];
-	int n = 0;
-	xform moved = xform_identity();
-	for (;;) {
-		lang_token t = *lang_peek(p);
-		double x;
-		switch (t.kind) {
-		case LTK_RBRACE:
-			lang_advance(p);
-			return sky_close(p, kw.loc, pg, n, &moved, moved_at);
-		case LTK_KW_PIGMENT:
-			if (n == SCENE_SKY_MAX_PIGMENTS)
-				return lang_error(p, t.loc, "too many pigments in sky_sphere (limit is %d)", SCENE_SKY_MAX_PIGMENTS);
-			TRY(pg[n] = new_part(p, t.loc));
-			TRY(pigment(p, pg[n++], SCENE_COLOR_RADIANCE));
-			break;
-		case LTK_KW_IMAGE:
-			lang_advance(p);
-			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->image));
-			break;
-		case LTK_KW_INTENSITY:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'intensity'", &x));
-			if (x < 0)
-				return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
-			s->intensity = x;
-			break;
-		case LTK_KW_ROTATE:
-			lang_advance(p);
-			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
-			break;
-		default: {
-			bool matched;
-			TRY(transform_item(p, &moved, &matched));
-			if (!matched)
-				return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
-			if (!moved_at.line)
-				moved_at = t.loc;
-		}
-		}
-	}
+	struct lang_sky k;
+	diag_loc kw;
+	TRY(sky_block(p, &kw, &k));
+	return sky_close(p, kw, &k);
+}
+
+/* #declare S = sky_sphere { ... }: the items, kept for a sky_sphere { S } to start from. */
+static bool declare_sky(parser *p, value *out)
+{
+	struct lang_sky *k = arena_zalloc(&p->sc->arena, 1, sizeof *k);
+	if (!k)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	diag_loc kw;
+	TRY(sky_block(p, &kw, k));
+	out->kind = VAL_SKY, out->sky = k;
+	return true;
 }
 
 /* default = "#default" "{" { texture | pigment | finish } "}"
