@@ -193,13 +193,19 @@ static dvec3 wave_source(int i)
 	return d3(r * cos(phi), r * sin(phi), z);
 }
 
+/* The next wave's frequency from Initialize_Waves' generator (state *next, seeded -560851967). */
+static double wave_frequency(uint32_t *next)
+{
+	*next = *next * 1812433253u + 12345u;
+	return (double)((int32_t)*next >> 16 & 0x7FFF) * 0.000030518509476 + 0.01;
+}
+
 static double wave_sum(dvec3 p, const pattern_node *n, bool waves)
 {
 	uint32_t next = (uint32_t)-560851967;
 	double scalar = 0.0;
 	for (int i = 0; i < POV_NUMBER_OF_WAVES; i++) {
-		next = next * 1812433253u + 12345u;
-		double f = (double)((int32_t)next >> 16 & 0x7FFF) * 0.000030518509476 + 0.01;
+		double f = wave_frequency(&next);
 		double len = d3_length(d3_sub(p, wave_source(i)));
 		if (len == 0.0)
 			len = 1.0;
@@ -661,8 +667,7 @@ static dvec3 wave_normal(const pattern_node *n, dvec3 p, bool waves)
 	uint32_t next = (uint32_t)-560851967;
 	dvec3 d = d3(0, 0, 0);
 	for (int i = 0; i < POV_NUMBER_OF_WAVES; i++) {
-		next = next * 1812433253u + 12345u;
-		double f = (double)((int32_t)next >> 16 & 0x7FFF) * 0.000030518509476 + 0.01;
+		double f = wave_frequency(&next);
 		dvec3 q = d3_sub(p, wave_source(i));
 		double len = d3_length(q);
 		if (len == 0.0)
