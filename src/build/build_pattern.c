@@ -102,9 +102,11 @@ static bool compile(world *w, const scene_pigment *pg, int depth, uint32_t *out,
 	for (uint32_t i = 0; i < pg->n_warps; i++)
 		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
 	if (pg->kind == SCENE_PAT_IMAGE) {
-		if (!(n.img = world_image(w, pg->loc, pg->image, IMAGE_SRGB, d)))
+		/* a bump_map's grey is a height, not a colour: read as stored */
+		if (!(n.img = world_image(w, pg->loc, pg->image, pg->is_normal ? IMAGE_RAW : IMAGE_SRGB, d)))
 			return false;
-		warn_reflectance_image(n.img, pg->loc, pg->image, d);
+		if (!pg->is_normal)
+			warn_reflectance_image(n.img, pg->loc, pg->image, d);
 	}
 	pp->nodes[k] = n;
 	*out = k;

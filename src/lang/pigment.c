@@ -403,7 +403,9 @@ static bool image_map(parser *p, pig_build *b)
 {
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
 	TRY(lang_expect(p, LTK_LBRACE, "after 'image_map'"));
+	double amount = b->pg.bump_amount; /* a bump_map keeps its normal's amount */
 	b->pg = scene_pigment_defaults(SCENE_PAT_IMAGE, kw);
+	b->pg.bump_amount = amount, b->pg.is_normal = b->normal;
 	lang_tok k = lang_peek(p)->kind;
 	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
 		lang_advance(p);
@@ -435,6 +437,11 @@ static bool image_map(parser *p, pig_build *b)
 						  filter ? "filter" : "transmit", filter ? "filter" : "transmit");
 			TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
 			*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+		} else if (b->normal && accept_word(p, "bump_size")) {
+			TRY(lang_float(p, "after 'bump_size'", &b->pg.bump_amount));
+		} else if (b->normal && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||
+					 accept_word(p, "use_index"))) {
+			/* circe's images have no palette: the grey of the colour either way */
 		} else if (accept_word(p, "gamma")) {
 			diag_loc at = p->prev.loc;
 			TRY(lang_float(p, "after 'gamma'", &x));
@@ -606,9 +613,13 @@ static bool head(parser *p, pig_build *b)
 			begin_from(b, sn->val.mat->normal);
 			return true;
 		}
-		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP || peek_word(p, "bump_map"))
-			return lang_error(p, lang_peek(p)->loc, "'%.*s' in a normal is not supported by circe",
-					  (int)lang_peek(p)->len, lang_peek(p)->text);
+		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)
+			return lang_error(p, lang_peek(p)->loc, "'image_map' in a normal is not supported by circe: give a "
+								"bump_map");
+		if (peek_word(p, "bump_map")) { /* an image's grey as heights (imageutil.cpp's bump_map) */
+			TRY(image_map(p, b));
+			return normal_amount(p, b);
+		}
 		return true;
 	}
 	if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)

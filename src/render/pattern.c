@@ -720,6 +720,39 @@ dvec3 pattern_normal_through(const xform *t, dvec3 n, bool into)
 		  m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z);
 }
 
+/* POV-Ray's greyscale (0.297 r + 0.589 g + 0.114 b) of texel (x, y) (row 0 the top), wrapped. */
+static double texel_grey(const image *img, int x, int y)
+{
+	x = ((x % img->width) + img->width) % img->width, y = ((y % img->height) + img->height) % img->height;
+	const float *c = img->rgba + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+	return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
+
+/* imageutil.cpp's bump_map: the image's grey at the mapped texel and at its two lower
+ * neighbours (left and right) make a small triangle of heights times amount; its normal,
+ * expressed in a frame of the surface normal and the world's y axis, is the new normal. */
+static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
+{
+	double u = q.x, v = q.y;
+	if (!n->img || (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0)))
+		return nrm;
+	int w = n->img->width, h = n->img->height;
+	int x = (int)floor((u - floor(u)) * w), y = (int)floor((1.0 - (v - floor(v))) * h);
+	double a = n->bump_amount;
+	dvec3 p1 = d3(0, a * texel_grey(n->img, x, y), 0), p2 = d3(-1, a * texel_grey(n->img, x - 1, y + 1), 1);
+	dvec3 p3 = d3(1, a * texel_grey(n->img, x + 1, y + 1), 1);
+	dvec3 bump = d3_normalize(d3_cross(d3_sub(p3, p2), d3_sub(p1, p2)));
+	dvec3 yp = nrm, xp = d3_cross(nrm, d3(0, 1, 0));
+	double len = d3_length(xp);
+	if (len < 1e-10) {
+		yp = d3(0, nrm.y >= 0 ? 1 : -1, 0), xp = d3(1, 0, 0);
+		len = 1.0;
+	}
+	xp = d3_scale(xp, 1.0 / len);
+	dvec3 zp = d3_normalize(d3_cross(xp, yp));
+	return d3_sub(d3_add(d3_scale(xp, bump.x), d3_scale(yp, bump.y)), d3_scale(zp, bump.z));
+}
+
 void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
 {
 	const pattern_node *n = &pg->nodes[node];
@@ -739,8 +772,8 @@ void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
 	case PATTERN_WRINKLES: v = d3_add(v, d3_scale(wrinkles_normal(q), n->bump_amount)); break;
 	case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
 	case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
-	case PATTERN_PLAIN:
-	case PATTERN_IMAGE: break;
+	case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
+	case PATTERN_PLAIN: break;
 	default: v = d3_add(v, slope_normal(n, q, eps)); break;
 	}
 	for (uint32_t i = n->n_warps; i-- > 0;)

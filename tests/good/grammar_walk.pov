@@ -100,9 +100,10 @@ sphere { 0, 1 pigment { gradient y pigment_map { [0 checker rgb 0, rgb 1] [1 Pai
 sphere { 0, 1 pigment { wood color_map { Cm } brick_size 2 mortar 0.1 agate_turb 1 control0 0 control1 1 quick_color rgb 1 uv_mapping } }
 sphere { 0, 1 material { marble { pigment { granite scale < 2 1 1 > } } } }
 #declare Sky0 = sky_sphere { pigment { gradient y } pigment { bozo color_map { [0 rgbt 1] [1 rgb 1] } } scale 2 };
-// rule: normal, normal_modifier
+// rule: normal, normal_modifier, bump_map
 #declare Nb = normal { bumps 0.4 scale 0.2 };
 sphere { 0, 1 texture { pigment { rgb 1 } normal { Nb accuracy 0.01 } } normal { ripples, 0.3 bump_size 0.6 frequency 4 } }
+sphere { 0, 1 normal { bump_map { png "t.png" map_type 2 bump_size 2 use_color } 1.5 } }
 // rule: image_map, image_item
 sphere { 0, 1 pigment { image_map { png "t.png" map_type 1 once interpolate 2 filter all 0.5 transmit all 0.1 } } }
 // rule: transform_item, transform, default

@@ -315,6 +315,24 @@ static void check_normals(void)
 	/* into: n' = 2 n; slope as before; out: / 2 -> <-0.04 / 2, 1, 0> */
 	CHECK(fabs(v.x + 0.5 * 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9, "scaled slope: <%g, %g, %g>", v.x,
 	      v.y, v.z);
+	/* bump_map: a flat image leaves the normal; a ramp rising to +x tilts it towards -x (the
+	 * triangle of heights faces away from the rise), in the frame of the normal and world y */
+	float flat[4 * 4 * 4], ramp[4 * 4 * 4];
+	for (int i = 0; i < 16; i++)
+		for (int c = 0; c < 4; c++)
+			flat[i * 4 + c] = 0.5f, ramp[i * 4 + c] = c == 3 ? 1.0f : (float)(i % 4) / 3.0f;
+	image fi = {.width = 4, .height = 4, .rgba = flat}, ri = {.width = 4, .height = 4, .rgba = ramp};
+	n = pattern_node_default(PATTERN_IMAGE);
+	n.img = &fi, n.bump_amount = 1.0, n.n_warps = 0;
+	pg.n_warps = 0;
+	v = d3(0, 0, -1);
+	pattern_perturb(&pg, 0, d3(0.4, 0.6, 0), &v);
+	CHECK(d3_length(d3_sub(d3_normalize(v), d3(0, 0, -1))) < 1e-9, "flat bump_map: <%g, %g, %g>", v.x, v.y, v.z);
+	n.img = &ri;
+	v = d3(0, 0, -1);
+	pattern_perturb(&pg, 0, d3(0.4, 0.6, 0), &v);
+	CHECK(fabs(d3_length(v) - 1) < 1e-9 && fabs(v.x) > 0.05 && fabs(v.y) < 1e-9, "ramp bump_map tilts in x: <%g, %g, %g>",
+	      v.x, v.y, v.z);
 	/* ripples at a point: finite, and the normal moves along p - source sums */
 	n = pattern_node_default(PATTERN_RIPPLES);
 	pg.n_warps = 0, n.n_warps = 0;
