@@ -160,6 +160,23 @@ static void check_nested(void)
 	check5("pigment_map", c, 0.5f, 0.125f, 0);
 }
 
+/* A point within tol of a checker's boundary takes POV-Ray's side, floor(x + EPSILON): a float
+ * hit on the face x = 1 of a box, 1e-9 short of it, is in the cell at 1 like the face itself. */
+static void check_tolerance(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_CHECKER);
+	n.n_entries = 2;
+	pattern_entry e[2] = {col(0, 1, 0, 0), col(1, 0, 0, 1)};
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 2};
+	float c[5];
+	pattern_eval(&pg, 0, d3(1.0, 0.5, 0.5), 0, c);
+	check5("on the face", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1.0 - 1e-9, 0.5, 0.5), 1e-7, c);
+	check5("just short of the face, within tol", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1.0 - 1e-9, 0.5, 0.5), 0, c);
+	check5("just short of the face, exact", c, 1, 0, 0);
+}
+
 static void check_warps(void)
 {
 	pattern_warp rep = {.kind = WARP_REPEAT, .axis = 0, .width = 1, .flip = d3(1, 1, 1)};
@@ -344,6 +361,7 @@ static void check_normals(void)
 int main(void)
 {
 	check_normals();
+	check_tolerance();
 	check_table();
 	check_waves();
 	check_colour_map();
