@@ -108,6 +108,12 @@ static bool compile(world *w, const scene_pigment *pg, int depth, uint32_t *out,
 		if (!pg->is_normal)
 			warn_reflectance_image(n.img, pg->loc, pg->image, d);
 	}
+	if (pg->kind == SCENE_PAT_PIGMENT_PATTERN && pg->child) {
+		uint32_t child;
+		if (!compile(w, pg->child, depth + 1, &child, d))
+			return false;
+		n.child = (int32_t)child;
+	}
 	pp->nodes[k] = n;
 	*out = k;
 	if (pg->kind == SCENE_PAT_PLAIN || pg->kind == SCENE_PAT_IMAGE)

@@ -1,6 +1,7 @@
-/* pigment.c - POV-Ray's pigment bodies beyond one colour, read into a scene_pigment tree:
- * patterns and their arguments, color_map / colour_map / pigment_map, the block patterns' lists
- * of colours or pigments, image_map, turbulence, waves, warps and transforms. The pattern words
+/* pigment.c - POV-Ray's pigment and normal bodies beyond one colour, read into a scene_pigment
+ * tree: patterns and their arguments, color_map / colour_map / pigment_map, the block patterns'
+ * lists of colours or pigments, image_map and bump_map, turbulence, waves, warps and transforms,
+ * a normal's amount. The pattern words
  * are POV-Ray reserved words that are not circe keywords (they lex as LTK_UNSUPPORTED), so they
  * are matched here by their spelling: the keyword table stays as it is. */
 #include "lang/pigment.h"
@@ -469,6 +470,11 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 	b->n_warps = 0;
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */
+		diag_loc open = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &b->pg.child);
+	}
 	if (k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2) {
 		long arms;
 		TRY(lang_int(p, "as the spiral's number of arms", -1000000, 1000000, &arms));

@@ -377,7 +377,9 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 
 /* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
  * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
-static double raw_eps(const pattern_node *n, dvec3 p, double eps)
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
+
+static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps)
 {
 	switch (n->kind) {
 	case PATTERN_CHECKER: /* CheckerPattern::Evaluate */
@@ -393,11 +395,18 @@ static double raw_eps(const pattern_node *n, dvec3 p, double eps)
 	case PATTERN_WRINKLES:
 	case PATTERN_GRANITE:
 	case PATTERN_AGATE: return raw_noisy(n, p);
+	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
+		float c[5];
+		if (!pg || n->child < 0)
+			return 0.0;
+		eval_depth(pg, (uint32_t)n->child, p, eps, 0, c);
+		return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+	}
 	default: return raw_shapes(n, p, eps);
 	}
 }
 
-double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(n, p, POV_EPSILON); }
+double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, POV_EPSILON); }
 
 static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
 
@@ -477,7 +486,7 @@ double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 {
 	double eps = POV_EPSILON;
 	dvec3 q = warped(pg, n, p, &eps);
-	double raw = raw_eps(n, q, eps);
+	double raw = raw_eps(pg, n, q, eps);
 	if (is_block(n->kind) || n->kind == PATTERN_PLAIN || n->kind == PATTERN_IMAGE)
 		return raw;
 	return pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
@@ -490,7 +499,6 @@ static void finite5(float c[5])
 			c[i] = 0.0f;
 }
 
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
 
 /* An entry's colour at p: its own, or its pigment's. */
 static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, double eps, int depth, float out[5])
@@ -589,13 +597,13 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 	if (n->kind == PATTERN_IMAGE) {
 		image_color(n, q, out);
 	} else if (is_block(n->kind)) {
-		uint32_t i = (uint32_t)raw_eps(n, q, eps);
+		uint32_t i = (uint32_t)raw_eps(pg, n, q, eps);
 		if (i < n->n_entries)
 			entry_color(pg, &pg->entries[n->entry0 + i], q, eps, depth, out);
 		else
 			out[0] = out[1] = out[2] = out[3] = out[4] = 0.0f;
 	} else {
-		double v = pattern_wave_apply(n->wave, raw_eps(n, q, eps), n->frequency, n->phase, n->exponent);
+		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
 		map_lookup(pg, n, v, q, eps, depth, out);
 	}
 	finite5(out);
@@ -609,7 +617,7 @@ void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, fl
 pattern_node pattern_node_default(pattern_kind kind)
 {
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
-			  .bump_amount = 0.5, .accuracy = 0.02,
+			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2
@@ -693,7 +701,7 @@ static dvec3 wrinkles_normal(dvec3 p)
 
 /* Perturb_Normal's slope of any pattern: its value at the four corners of a tetrahedron of size
  * accuracy around p, times -5 amount (POV-Ray's "fudge factor") scaled to the step. */
-static dvec3 slope_normal(const pattern_node *n, dvec3 q, double eps)
+static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps)
 {
 	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
 					     {-0.471404521, -0.333333333, 0.816496581},
@@ -705,7 +713,7 @@ static dvec3 slope_normal(const pattern_node *n, dvec3 q, double eps)
 	for (int i = 0; i < 4; i++) {
 		dvec3 v = d3(pyramid[i][0], pyramid[i][1], pyramid[i][2]);
 		dvec3 at = d3_add(q, d3_scale(v, delta));
-		double value = raw_eps(n, at, eps);
+		double value = raw_eps(pg, n, at, eps);
 		if (!is_block(n->kind))
 			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
 		d = d3_add(d, d3_scale(v, value * amount));
@@ -774,7 +782,7 @@ void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
 	case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
 	case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
 	case PATTERN_PLAIN: break;
-	default: v = d3_add(v, slope_normal(n, q, eps)); break;
+	default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
 	}
 	for (uint32_t i = n->n_warps; i-- > 0;)
 		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)

@@ -1,5 +1,6 @@
-/* pattern.h - POV-Ray's pigments as a flat program evaluated at a shading point: nodes (a plain
- * colour, an image_map, or a pattern with its wave, colour map or pigment map), their warps
+/* pattern.h - POV-Ray's pigments and normals as a flat program evaluated at a shading point:
+ * nodes (a plain colour, an image_map or bump_map, or a pattern with its wave, colour map or
+ * pigment map, or a normal's amount), their warps
  * (transforms, turbulence, repeat, black_hole) in the order they are applied to a point, and
  * the map entries. src/build compiles the IR's pigment trees (scene/pigment.h) into one program
  * per world; render/world.c evaluates a material's root node at each hit and at circle
@@ -30,6 +31,7 @@ typedef enum pattern_kind {
 	PATTERN_WRINKLES, PATTERN_RIPPLES, PATTERN_WAVES, PATTERN_CRACKLE, PATTERN_CELLS, PATTERN_SPIRAL1,
 	PATTERN_SPIRAL2, PATTERN_QUILTED, PATTERN_PLANAR, PATTERN_BOXED, PATTERN_CYLINDRICAL,
 	PATTERN_SPHERICAL,
+	PATTERN_PIGMENT_PATTERN, /* the grey of a pigment (its node: pattern_node.child) */
 	PATTERN_FUNCTION, /* a user function's hook: evaluates to 0 until functions exist */
 	PATTERN_KIND_COUNT
 } pattern_kind;
@@ -90,6 +92,7 @@ typedef struct pattern_node {
 	bool turb_in_pattern; /* marble, wood, spiral, agate: the pattern uses turb itself */
 	pattern_turb turb;     /* its classic turbulence (amount 0: none) */
 	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
+	int32_t child;	   /* PATTERN_PIGMENT_PATTERN: its pigment's node (-1: none, value 0) */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;
@@ -121,7 +124,8 @@ double pattern_inv_gain(const xform *t);
 /* The pattern's value at p after its warps, its wave applied (continuous kinds, in [0, 1]) or
  * the block index (checker, hexagon, brick). */
 double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p);
-/* The raw pattern before the wave (POV-Ray's EvaluateRaw), at a point already warped. */
+/* The raw pattern before the wave (POV-Ray's EvaluateRaw), at a point already warped; a
+ * pigment_pattern (which needs its program) is 0 here. */
 double pattern_raw(const pattern_node *n, dvec3 p);
 /* POV-Ray's wave function of a raw value v. */
 double pattern_wave_apply(pattern_wave w, double v, double frequency, double phase, double exponent);

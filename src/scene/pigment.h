@@ -1,5 +1,5 @@
-/* pigment.h - a POV-Ray pigment in the scene IR: a small tree. A node is a plain colour, an
- * image_map, or a pattern with its parameters, its colour map (or pigment map, whose entries
+/* pigment.h - a POV-Ray pigment (or normal) in the scene IR: a small tree. A node is a plain
+ * colour, an image_map (a normal's bump_map), or a pattern with its parameters, its colour map (or pigment map, whose entries
  * are pigments, or the two or three entries of a block pattern), its wave, its turbulence and
  * its warps and transforms in the order written. Colours keep POV-Ray's five channels (red,
  * green, blue, filter, transmit). The tree lives in the scene's arena and is shared, never
@@ -24,7 +24,7 @@
 	X(DENTS, "dents") X(WRINKLES, "wrinkles") X(RIPPLES, "ripples") X(WAVES, "waves")           \
 	X(CRACKLE, "crackle") X(CELLS, "cells") X(SPIRAL1, "spiral1") X(SPIRAL2, "spiral2")         \
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
-	X(SPHERICAL, "spherical") X(FUNCTION, "function")
+	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -92,6 +92,7 @@ typedef struct scene_pigment {
 	scene_turb turb; /* the pigment's own `turbulence` (classic) */
 	const scene_warp *warps; /* in the order written */
 	uint32_t n_warps;
+	const struct scene_pigment *child; /* PIGMENT_PATTERN: the pigment whose grey is the value */
 	const scene_map_entry *entries; /* NULL: the pattern's default map */
 	uint32_t n_entries;
 	bool pigment_map; /* entries are pigments */

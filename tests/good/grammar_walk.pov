@@ -99,6 +99,7 @@ sphere { 0, 1 pigment { marble frequency 2 phase 0.1 colour_map { [0 rgb 0] [0.5
 sphere { 0, 1 pigment { gradient y pigment_map { [0 checker rgb 0, rgb 1] [1 Paint0] } warp { repeat x offset y flip x } warp { black_hole 0, 1 strength 2 falloff 1 inverse repeat 1 } warp { turbulence 0.2 octaves 2 } } }
 sphere { 0, 1 pigment { wood color_map { Cm } brick_size 2 mortar 0.1 agate_turb 1 control0 0 control1 1 quick_color rgb 1 uv_mapping } }
 sphere { 0, 1 material { marble { pigment { granite scale < 2 1 1 > } } } }
+sphere { 0, 1 pigment { pigment_pattern { checker rgb 0, rgb 1 } color_map { [0 rgb <1, 0, 0>] [1 rgb 1] } } normal { pigment_pattern { bozo } 0.3 } }
 #declare Sky0 = sky_sphere { pigment { gradient y } pigment { bozo color_map { [0 rgbt 1] [1 rgb 1] } } scale 2 };
 // rule: normal, normal_modifier, bump_map
 #declare Nb = normal { bumps 0.4 scale 0.2 };

@@ -177,6 +177,20 @@ static void check_tolerance(void)
 	check5("just short of the face, exact", c, 1, 0, 0);
 }
 
+/* pigment_pattern: the grey of its pigment (a plain colour here) selects in its colour map. */
+static void check_pigment_pattern(void)
+{
+	pattern_node nodes[2] = {pattern_node_default(PATTERN_PIGMENT_PATTERN), pattern_node_default(PATTERN_PLAIN)};
+	nodes[0].child = 1, nodes[0].n_entries = 2;
+	nodes[1].color[0] = 1, nodes[1].color[1] = 0.5f, nodes[1].color[2] = 0;
+	pattern_entry e[2] = {col(0, 0, 0, 0), col(1, 1, 1, 1)};
+	pattern_prog pg = {.nodes = nodes, .n_nodes = 2, .entries = e, .n_entries = 2};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.3, 0.2, 0.1), 0, c);
+	float g = 0.297f + 0.589f * 0.5f;
+	check5("grey of <1, 0.5, 0>", c, g, g, g);
+}
+
 static void check_warps(void)
 {
 	pattern_warp rep = {.kind = WARP_REPEAT, .axis = 0, .width = 1, .flip = d3(1, 1, 1)};
@@ -362,6 +376,7 @@ int main(void)
 {
 	check_normals();
 	check_tolerance();
+	check_pigment_pattern();
 	check_table();
 	check_waves();
 	check_colour_map();
