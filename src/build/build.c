@@ -90,6 +90,7 @@ static void world_release(world *w)
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
 	mem_free((void *)w->stats.shapes);
+	pattern_prog_free(&w->patterns);
 	memset(w, 0, sizeof *w);
 }
 

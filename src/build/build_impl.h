@@ -7,6 +7,7 @@
 #include "geom/prim.h"
 #include "geom/subdiv.h"
 #include "render/world.h"
+#include "scene/pigment.h"
 
 /* The grey of an object without a material: mid-grey diffuse. */
 #define WORLD_DEFAULT_GREY 0.5f
@@ -44,6 +45,16 @@ bool build_shapes(world *w, const scene *sc, const subd_camera *view, diag *d);
 /* build_material.c */
 const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d);
 size_t clamp_texels(const image *img, scene_color_use use, float *rgb);
+/* Warns once at loc when an albedo image holds texels outside [0, 1] (the lookups clamp them). */
+void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d);
+/* build_pattern.c: pg compiled into w->patterns; *node receives its root. False after reporting. */
+bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d);
+void pattern_prog_free(pattern_prog *pg);
+/* The size of the lat-long image a patterned sky_sphere is baked into: 0.35 degrees a texel. */
+#define WORLD_SKY_WIDTH 1024
+#define WORLD_SKY_HEIGHT 512
+/* build_pattern.c: sky's pigment layers baked into w->env_rgb (WORLD_SKY_WIDTH x HEIGHT, RGB). */
+bool build_sky_pigments(world *w, const scene_sky_sphere *sky, diag *d);
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm,
 		    diag *d);
 

@@ -123,6 +123,18 @@ uint32_t sphere_level(const double rel_err[PRIM_SPHERE_LEVELS], double radius_px
 	return k;
 }
 
+/* The world placement of o's texture space (texture -> world): the object's transform after the
+ * inverse of its texture_from_object. */
+static xform pattern_space(const scene_object *o)
+{
+	if (!o->texture_placed)
+		return o->transform;
+	xform inv;
+	memcpy(inv.m, o->texture_from_object.inv, sizeof inv.m);
+	memcpy(inv.inv, o->texture_from_object.m, sizeof inv.inv);
+	return xform_then(inv, o->transform);
+}
+
 /* Makes the sphere object `in` an instance of the unit sphere at the level its size on screen
  * asks for: its transform gains the sphere's centre and radius. The unit spheres are made once
  * each, when first used. Returns that unit sphere, NULL after reporting an error. */
@@ -170,6 +182,7 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		in->object = (uint32_t)i;
 		in->g = g;
 		in->xf = o->transform;
+		in->pattern_xf = pattern_space(o);
 		if (o->geom->kind == SHAPE_SPHERE && !(g = sphere_instance(w, o->geom, &view, rel_err, in, d, o->loc)))
 			return false;
 		in->identity = is_identity(&in->xf);

@@ -119,7 +119,18 @@ bool build_lights(world *w, const scene *sc, diag *d)
 			return false;
 		}
 	}
-	if (sc->has_sky_sphere) {
+	if (sc->has_sky_sphere && sc->sky_sphere.n_pigments) {
+		const scene_sky_sphere *sky = &sc->sky_sphere;
+		xform rot = xform_rotate(sky->rotate_deg);
+		light l;
+		if (!build_sky_pigments(w, sky, d))
+			return false;
+		if (!light_envmap_init(&l, w->env_rgb, WORLD_SKY_WIDTH, WORLD_SKY_HEIGHT, (float)sky->intensity, &rot) ||
+		    !light_set_add(&w->lights, &l)) {
+			diag_error(d, sky->loc, "out of memory");
+			return false;
+		}
+	} else if (sc->has_sky_sphere) {
 		const scene_sky_sphere *sky = &sc->sky_sphere;
 		const image *img = world_image(w, sky->loc, sky->image, IMAGE_SRGB, d);
 		if (!img)

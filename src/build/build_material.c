@@ -4,6 +4,7 @@
 
 #include "base/mem.h"
 #include "render/bsdf_pov.h"
+#include "scene/pigment.h"
 
 #include <string.h>
 
@@ -70,7 +71,7 @@ size_t clamp_texels(const image *img, scene_color_use use, float *rgb)
 
 /* An albedo texture's texels outside [0, 1]: the shade hook clamps each lookup, and this says so
  * once, at the material. */
-static void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
+void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d)
 {
 	size_t clamped = clamp_texels(img, SCENE_COLOR_REFLECTANCE, NULL);
 	if (clamped)
@@ -167,6 +168,20 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		break;
 	}
 	bool sss = sm->kind == MAT_SKIN || sm->kind == MAT_WAX || sm->kind == MAT_MARBLE;
+	const scene_pigment *pig = sss && sm->sss.pigment ? sm->sss.pigment : sm->pigment;
+	if (pig) {
+		if (!build_pattern(w, pig, &wm->pattern, d))
+			return false;
+		wm->has_pattern = true;
+		wm->pattern_uv = pig->uv_mapping;
+		wm->pattern_kd = sm->kind == MAT_TEXTURE ? sm->diffuse : 1.0f;
+	}
+	if (sm->normal) {
+		if (!build_pattern(w, sm->normal, &wm->normal, d))
+			return false;
+		wm->has_normal = true;
+		wm->normal_uv = sm->normal->uv_mapping;
+	}
 	const char *albedo = sss ? sm->sss.albedo_image : sm->image;
 	if (albedo && !(wm->albedo = world_image(w, sm->loc, albedo, IMAGE_SRGB, d)))
 		return false;

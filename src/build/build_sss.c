@@ -64,7 +64,7 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
 	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
-	r->textured = ss->albedo_image != NULL;
+	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL;
 	w->sss_of[k] = r;
 	w->has_sss = true;
 	return true;

@@ -52,7 +52,9 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_FILE: return "a data file";
 	case VAL_FUNCTION: return "a function";
 	case VAL_SPLINE: return "a spline";
-	case VAL_SKY_SPHERE: return "a sky_sphere";
+	case VAL_COLOR_MAP: return "a color_map";
+	case VAL_NORMAL: return "a normal";
+	case VAL_SKY: return "a sky_sphere";
 	}
 	return "a value";
 }
@@ -151,7 +153,8 @@ static bool vector_literal(parser *p, value *out)
 		out->v[out->n++] = c.v[0];
 		if (lang_accept(p, LTK_COMMA))
 			continue;
-		if (lang_peek(p)->kind == LTK_GT)
+		lang_tok k = lang_peek(p)->kind;
+		if (k == LTK_GT)
 			break;
 		if (starts_operand(lang_peek(p)->kind))
 			continue;
@@ -1498,7 +1501,7 @@ bool lang_color(parser *p, const char *what, vec3 *out)
 	return true;
 }
 
-bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2])
+bool lang_color5(parser *p, const char *what, double out[LANG_COLOR_TERMS])
 {
 	diag_loc loc = lang_peek(p)->loc;
 	value c;
@@ -1518,8 +1521,18 @@ bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2])
 	p->no_gt = saved;
 	if (!ok)
 		return false;
-	ft[0] = c.v[3], ft[1] = c.v[4];
-	*out = v3((float)c.v[0], (float)c.v[1], (float)c.v[2]);
+	for (int i = 0; i < LANG_COLOR_TERMS; i++)
+		out[i] = c.v[i];
+	return true;
+}
+
+bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2])
+{
+	double c[LANG_COLOR_TERMS];
+	if (!lang_color5(p, what, c))
+		return false;
+	ft[0] = c[3], ft[1] = c[4];
+	*out = v3((float)c[0], (float)c[1], (float)c[2]);
 	return true;
 }
 

@@ -18,9 +18,11 @@ typedef enum value_kind {
 	/* declared scene blocks (stmt.c): a pigment, finish or interior is a texture record of which
 	 * only its part is read (in `mat`); a camera, light or transform is its IR record */
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
+	VAL_COLOR_MAP, /* a color_map or pigment_map (lang/pigment.c): `mat`'s pigment holds its entries */
+	VAL_NORMAL,    /* a normal { } (lang/pigment.c): `mat`'s normal */
+	VAL_SKY,       /* a sky_sphere { } as read (stmt.c's lang_sky) */
 	VAL_FILE, /* a data file of #fopen (datafile.c) */
-	VAL_FUNCTION, VAL_SPLINE, /* func.c */
-	VAL_SKY_SPHERE /* a declared sky_sphere (stmt.c: its items, applied where it is placed) */
+	VAL_FUNCTION, VAL_SPLINE /* func.c */
 } value_kind;
 
 /* A colour is POV-Ray's 5-vector: red, green, blue, filter, transmit (VAL_COLOR has n == 5). */
@@ -45,10 +47,10 @@ typedef struct value {
 	const scene_camera *cam; /* VAL_CAMERA */
 	const scene_light *light; /* VAL_LIGHT */
 	const xform *xf; /* VAL_TRANSFORM */
+	const struct lang_sky *sky; /* VAL_SKY */
 	int file; /* VAL_FILE: its index in the parser's datafiles */
 	const struct lang_function *fn; /* VAL_FUNCTION */
 	const struct lang_spline *spl; /* VAL_SPLINE */
-	const struct lang_sky *sky; /* VAL_SKY_SPHERE */
 } value;
 
 /* An array: its dimensions and its elements in row-major order, each unset until assigned (kind
@@ -223,6 +225,8 @@ bool lang_vec3(parser *p, const char *what, dvec3 *out); /* a float is promoted 
 bool lang_color(parser *p, const char *what, vec3 *out);
 /* lang_color keeping the filter and transmit (ft[0], ft[1]) as written. */
 bool lang_color_ft(parser *p, const char *what, vec3 *out, double ft[2]);
+/* A colour's five terms (red, green, blue, filter, transmit) as written: nothing dropped. */
+bool lang_color5(parser *p, const char *what, double out[LANG_COLOR_TERMS]);
 bool lang_string(parser *p, const char *what, const char **out);
 /* A vector literal of 1..LANG_MAX_VECTOR integer components (face index lists). */
 bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_loc *loc);

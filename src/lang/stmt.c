@@ -3,6 +3,7 @@
  * materials. Each parse function carries its grammar rule as a comment (grammar/scene.ebnf). */
 #include "lang/parser.h"
 #include "lang/shapes2.h"
+#include "lang/pigment.h"
 
 #include <limits.h>
 #include <math.h>
@@ -168,6 +169,11 @@ static bool names_block(parser *p)
 	return s && k != VAL_FLOAT && k != VAL_VECTOR && k != VAL_COLOR && k != VAL_STRING;
 }
 
+bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out)
+{
+	return asset_path(p, what, kind, out);
+}
+
 /* ---- transforms -------------------------------------------------------------------------- */
 
 static bool transform_block(parser *p, xform *out);
@@ -221,6 +227,8 @@ static bool transform_item(parser *p, xform *t, bool *matched)
 	*t = xform_then(*t, x);
 	return true;
 }
+
+bool lang_transform_item(parser *p, xform *t, bool *matched) { return transform_item(p, t, matched); }
 
 /* The inverse of an affine transform: xform keeps it beside the matrix. */
 static xform xform_inverse(xform t)
@@ -287,14 +295,21 @@ static bool pattern_transform(parser *p, const scene_material *m, diag_loc at, c
 			  what);
 }
 
-/* transform_item in a pigment, texture or material: read, recorded in *at when first, dropped. */
-static bool pattern_transform_item(parser *p, diag_loc *at, bool *matched)
+/* transform_item in a pigment, texture or material: read, recorded in *at when first; it moves
+ * m's POV-Ray pigment (a copy: the tree may be shared), and nothing else has a pattern to move. */
+static bool pattern_transform_item(parser *p, scene_material *m, diag_loc *at, bool *matched)
 {
 	diag_loc loc = lang_peek(p)->loc;
-	xform ignored = xform_identity();
-	TRY(transform_item(p, &ignored, matched));
+	xform moved = xform_identity();
+	TRY(transform_item(p, &moved, matched));
 	if (*matched && at->line == 0)
 		*at = loc;
+	if (*matched && m->pigment)
+		TRY(m->pigment = lang_pigment_moved(p, m->pigment, &moved, loc));
+	if (*matched && m->sss.pigment)
+		TRY(m->sss.pigment = lang_pigment_moved(p, m->sss.pigment, &moved, loc));
+	if (*matched && m->normal)
+		TRY(m->normal = lang_pigment_moved(p, m->normal, &moved, loc));
 	return true;
 }
 
@@ -337,6 +352,7 @@ static void copy_pigment(scene_material *to, const scene_material *from)
 	to->color = from->color;
 	to->image = from->image;
 	to->filter = from->filter, to->transmit = from->transmit;
+	to->pigment = from->pigment;
 }
 
 /* A pigment's colour with its filter and transmit (POV-Ray's rgbf/rgbt), each clamped into
@@ -400,12 +416,12 @@ static bool starts_transform(parser *p)
 	       k == LTK_KW_TRANSFORM;
 }
 
-/* pigment = "pigment" "{" [ identifier ] [ pigment_type ] { transform_item } "}"   (empty: unchanged)
- * pigment_type = colour | "image_map" "{" ( "png" | "jpeg" | "exr" ) string "}"
+/* pigment = "pigment" "{" [ identifier ] [ colour | pigment_body ] { transform_item } "}"   (empty: unchanged)
+ * pigment_body: a pattern, image_map and their modifiers (lang/pigment.c)
  * use: what the colour becomes (an albedo; a sky's radiance). */
 static bool pigment(parser *p, scene_material *m, scene_color_use use)
 {
-	diag_loc open, io, moved = {0};
+	diag_loc open, moved = {0};
 	lang_advance(p);
 	TRY(open_block(p, "pigment", &open));
 	bool named = names_block(p);
@@ -414,26 +430,27 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
 		copy_pigment(m, v->mat);
 	}
-	if (lang_peek(p)->kind == LTK_KW_MARBLE) /* a circe keyword (the SSS block), a POV-Ray pattern */
-		return lang_error(p, lang_peek(p)->loc, "'marble' (a pattern) is not supported by circe");
-	if (lang_accept(p, LTK_KW_IMAGE_MAP)) {
-		TRY(open_block(p, "image_map", &io));
-		lang_tok k = lang_peek(p)->kind;
-		if (k != LTK_KW_PNG && k != LTK_KW_JPEG && k != LTK_KW_EXR)
-			return lang_error_found(p, "expected the image type (png, jpeg or exr) in 'image_map'");
-		lang_advance(p);
-		TRY(asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &m->image));
-		TRY(lang_expect_close(p, io, "image_map"));
-	} else if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
+	if (lang_pigment_starts(p, m->pigment != NULL)) {
+		TRY(lang_pigment_rest(p, m->pigment, open, &m->pigment));
+		m->image = NULL;
+		if (m->pigment->kind == SCENE_PAT_PLAIN) { /* a declared pattern replaced by a colour */
+			m->color = v3(m->pigment->color[0], m->pigment->color[1], m->pigment->color[2]);
+			TRY(scene_color_finalise(p->sc, p->d, open, "pigment colour", use, &m->color));
+			m->pigment = NULL;
+		}
+		return true;
+	}
+	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(pigment_color(p, what, use, m));
 		m->image = NULL;
+		m->pigment = NULL;
 	}
 	for (;;) {
 		if (lang_accept(p, LTK_RBRACE))
 			return pattern_transform(p, m, moved, "pigment");
 		bool matched;
-		TRY(pattern_transform_item(p, &moved, &matched));
+		TRY(pattern_transform_item(p, m, &moved, &matched));
 		if (!matched)
 			return lang_expect_close(p, open, "pigment");
 	}
@@ -599,12 +616,14 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 			TRY(pigment(p, m, SCENE_COLOR_REFLECTANCE));
 		else if (k == LTK_KW_FINISH)
 			TRY(finish(p, m));
+		else if (lang_normal_starts(p))
+			TRY(lang_normal(p, m));
 		else if (k == LTK_RBRACE)
 			break;
 		else {
-			TRY(pattern_transform_item(p, &moved, &matched));
+			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
-				return bad_item(p, open, "texture", "pigment, finish or a transform");
+				return bad_item(p, open, "texture", "pigment, normal, finish or a transform");
 		}
 	}
 	lang_advance(p);
@@ -770,6 +789,19 @@ static bool sss_normal_map(parser *p, scene_sss *s)
  *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
  *           | "normal_map" string [ "strength" float ] | "anisotropy" float
  *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" ) | "group" string */
+/* "pigment" "{" pattern ... "}": a POV-Ray pigment as the albedo, evaluated where light leaves and
+ * where it enters (circle tracing's colour blurring), each entry weighted by pigment / albedo. */
+static bool sss_pigment(parser *p, scene_material *m, const lang_token *t)
+{
+	scene_material *part = new_part(p, t->loc);
+	TRY(part);
+	TRY(pigment(p, part, SCENE_COLOR_REFLECTANCE));
+	if (!part->pigment)
+		return lang_error(p, t->loc, "a pigment of one colour in an SSS block: give it as 'color' (the albedo)");
+	m->sss.pigment = part->pigment;
+	return true;
+}
+
 static bool sss_param(parser *p, scene_material *m, diag_loc open, const char *what)
 {
 	lang_token t = *lang_peek(p);
@@ -796,6 +828,8 @@ static bool sss_param(parser *p, scene_material *m, diag_loc open, const char *w
 	case LTK_KW_GROUP:
 		lang_advance(p);
 		return lang_string(p, "after 'group'", &m->sss.group);
+	case LTK_KW_PIGMENT:
+		return sss_pigment(p, m, &t);
 	default:
 		return bad_item(p, open, what, "an SSS parameter (preset, sigma_s, sigma_a, color, radius, ior, ...)");
 	}
@@ -841,7 +875,7 @@ static bool material(parser *p, const scene_material **out)
 		if (t.kind == LTK_RBRACE)
 			break;
 		bool matched;
-		TRY(pattern_transform_item(p, &moved, &matched));
+		TRY(pattern_transform_item(p, m, &moved, &matched));
 		if (matched)
 			continue;
 		bool is_kind = t.kind == LTK_KW_DIFFUSE || t.kind == LTK_KW_SKIN || t.kind == LTK_KW_WAX ||
@@ -912,6 +946,7 @@ typedef struct mods {
 	xform t;
 	const scene_material *mat;
 	diag_loc mat_loc;
+	xform t_at_mat; /* t when the material was given: the transforms before it do not move its pattern */
 	scene_material *tex; /* made by a bare pigment or finish on this item */
 	bool no_shadow;
 	lang_objflags flags; /* hollow, no_image, ... (objmods.c) */
@@ -925,6 +960,7 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 		return lang_error(p, loc, "a second material on the same object (the first is at line %u)", m->mat_loc.line);
 	m->mat = mat;
 	m->mat_loc = loc;
+	m->t_at_mat = m->t;
 	return true;
 }
 
@@ -937,6 +973,13 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	if (*matched)
 		return true;
 	*matched = true;
+	if (lang_normal_starts(p)) { /* normal { } on the object: its texture's, as a bare pigment */
+		if (!m->tex) {
+			TRY(m->tex = new_texture(p, t.loc));
+			TRY(set_material(p, m, m->tex, t.loc));
+		}
+		return lang_normal(p, m->tex);
+	}
 	switch (t.kind) {
 	case LTK_KW_INVERSE:
 		return lang_error(p, t.loc, "'inverse' of an object (CSG) is not supported by circe");
@@ -991,6 +1034,10 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 	}
 	for (size_t i = start; i < out->len; i++) {
 		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		if (!o->material && m->mat) { /* POV-Ray: a texture moves with the transforms after it */
+			o->texture_from_object = xform_then(o->transform, m->t_at_mat);
+			o->texture_placed = true;
+		}
 		o->transform = xform_then(o->transform, m->t);
 		if (!o->material)
 			o->material = m->mat;
@@ -1031,11 +1078,6 @@ static bool place(parser *p, vecbuf *out, const scene_geom *g, diag_loc loc)
 }
 
 scene_geom *lang_new_geom(parser *p, scene_shape_kind kind, diag_loc loc) { return new_geom(p, kind, loc); }
-
-bool lang_asset_path(parser *p, const char *what, scene_asset_kind kind, const char **out)
-{
-	return asset_path(p, what, kind, out);
-}
 
 bool lang_place_object(parser *p, vecbuf *out, const scene_geom *g, diag_loc kw, diag_loc open, const char *what)
 {
@@ -1792,6 +1834,10 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return declare_part(p, out, k);
 	if (k == LTK_KW_CAMERA || k == LTK_KW_LIGHT_SOURCE || k == LTK_KW_TRANSFORM)
 		return declare_record(p, out, k);
+	if (lang_pigment_map_starts(p))
+		return lang_pigment_map_value(p, out);
+	if (lang_normal_starts(p))
+		return lang_normal_value(p, out);
 	if (k == LTK_KW_SKY_SPHERE)
 		return declare_sky(p, out);
 	vecbuf tmp;
@@ -2488,104 +2534,141 @@ static bool background(parser *p)
 }
 
 /* sky_sphere { pigment { C } }: a sky of one colour is circe's background (a constant
- * environment light), which it replaces, before or after, as POV-Ray's sky_sphere hides the
- * background. An image pigment is refused: circe's sky image is `image`, mapped lat-long. */
-static bool sky_pigment(parser *p, diag_loc kw, const scene_material *pg, double intensity)
+ * environment light); a patterned sky (a pattern, several layers) is baked by the build into a
+ * lat-long image (build_pattern.c). An image_map pigment is refused: circe's sky image is
+ * `image`, mapped lat-long. */
+static bool sky_pigments(parser *p, diag_loc kw, scene_material *const *pg, int n, const xform *moved, bool was_moved)
 {
-	if (pg->image)
-		return lang_error(p, pg->loc, "an image_map pigment in sky_sphere is not supported by circe: give the "
-					      "lat-long image as sky_sphere { image \"file\" }");
-	vec3 c = v3_scale(pg->color, (float)intensity);
-	if (!v3_is_finite(c))
-		return lang_error(p, kw, "sky_sphere intensity %g makes its colour overflow a float", intensity);
-	p->sc->background = c;
-	p->sc->has_background = true;
-	p->sc->background_loc = kw;
-	p->sky_colour = true;
-	return true;
-}
-
-/* A sky_sphere's items as read, applied where it is placed (a #declare keeps them for later). */
-typedef struct lang_sky {
-	scene_sky_sphere s;
-	const scene_material *pg; /* its pigment, or NULL */
-} lang_sky;
-
-/* sky_block = "{" [ identifier ] { "image" string | pigment | "intensity" float | "rotate" vector } "}"
- * after the keyword; a declared sky_sphere named first is the start (as POV-Ray copies it). */
-static bool sky_block(parser *p, lang_sky *r)
-{
-	diag_loc open;
-	TRY(open_block(p, "sky_sphere", &open));
-	if (names(p, VAL_SKY_SPHERE)) {
-		const value *v;
-		TRY(v = declared(p, VAL_SKY_SPHERE, "a sky_sphere"));
-		*r = *v->sky;
-	}
-	scene_sky_sphere *s = &r->s;
-	for (;;) {
-		lang_token t = *lang_peek(p);
-		double x;
-		switch (t.kind) {
-		case LTK_RBRACE: lang_advance(p); return true;
-		case LTK_KW_PIGMENT: {
-			if (r->pg)
-				return lang_error(p, t.loc, "a second pigment in sky_sphere (circe's sky has one colour)");
-			scene_material *pg;
-			TRY(pg = new_part(p, t.loc));
-			TRY(pigment(p, pg, SCENE_COLOR_RADIANCE));
-			r->pg = pg;
-			break;
-		}
-		case LTK_KW_IMAGE:
-			lang_advance(p);
-			TRY(asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &s->image));
-			break;
-		case LTK_KW_INTENSITY:
-			lang_advance(p);
-			TRY(lang_float(p, "after 'intensity'", &x));
-			if (x < 0)
-				return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
-			s->intensity = x;
-			break;
-		case LTK_KW_ROTATE:
-			lang_advance(p);
-			TRY(lang_vec3(p, "after 'rotate'", &s->rotate_deg));
-			break;
-		default: return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
-		}
-	}
-}
-
-/* sky_sphere = "sky_sphere" sky_block   (one image or one pigment of a colour) */
-static bool sky_sphere(parser *p)
-{
-	lang_token kw = *lang_advance(p);
-	lang_sky r = {.s = {.intensity = 1}};
-	TRY(sky_block(p, &r));
 	scene_sky_sphere *s = &p->sc->sky_sphere;
-	*s = r.s;
-	s->loc = kw.loc;
-	if (r.pg && s->image)
-		return lang_error(p, r.pg->loc, "sky_sphere has an 'image' and a pigment: give one");
-	if (r.pg)
-		return sky_pigment(p, kw.loc, r.pg, s->intensity);
-	if (!s->image)
-		return lang_error(p, kw.loc, "sky_sphere needs an 'image' or a pigment");
+	bool patterned = n > 1 || pg[0]->pigment;
+	for (int i = 0; i < n; i++)
+		if (pg[i]->pigment && pg[i]->pigment->kind == SCENE_PAT_IMAGE)
+			return lang_error(p, pg[i]->loc, "an image_map pigment in sky_sphere is not supported by circe: give "
+							 "the lat-long image as sky_sphere { image \"file\" }");
+	if (!patterned) {
+		vec3 c = v3_scale(pg[0]->color, (float)s->intensity);
+		if (!v3_is_finite(c))
+			return lang_error(p, kw, "sky_sphere intensity %g makes its colour overflow a float", s->intensity);
+		p->sc->background = c;
+		p->sc->has_background = true;
+		p->sc->background_loc = kw;
+		p->sky_colour = true;
+		return true;
+	}
+	for (int i = 0; i < n; i++) {
+		const scene_pigment *t = lang_pigment_tree(p, pg[i]);
+		TRY(t);
+		if (was_moved)
+			TRY(t = lang_pigment_moved(p, t, moved, kw));
+		s->pigments[i] = t;
+	}
+	s->n_pigments = n;
 	p->sc->has_sky_sphere = true;
 	return true;
 }
 
-/* A declared sky_sphere: its items, in the arena. */
+/* A sky_sphere as read (a statement's, or a #declare'd one that a later sky_sphere starts from). */
+struct lang_sky {
+	scene_sky_sphere s;
+	scene_material *pg[SCENE_SKY_MAX_PIGMENTS];
+	int n;
+	xform moved;
+	diag_loc moved_at;
+};
+
+/* The end of a sky_sphere: one image, or its pigments. */
+static bool sky_close(parser *p, diag_loc kw, const struct lang_sky *k)
+{
+	scene_sky_sphere *s = &p->sc->sky_sphere;
+	*s = k->s;
+	if (k->n && s->image)
+		return lang_error(p, k->pg[0]->loc, "sky_sphere has an 'image' and a pigment: give one");
+	if (k->moved_at.line && !k->n)
+		return lang_error(p, k->moved_at, "a sky_sphere image turns by 'rotate' only: circe maps it lat-long");
+	if (k->n)
+		return sky_pigments(p, kw, k->pg, k->n, &k->moved, k->moved_at.line != 0);
+	if (!s->image)
+		return lang_error(p, kw, "sky_sphere needs an 'image' or a pigment");
+	p->sc->has_sky_sphere = true;
+	return true;
+}
+
+/* One item of a sky_sphere into k; false after reporting. */
+static bool sky_item(parser *p, diag_loc open, struct lang_sky *k)
+{
+	lang_token t = *lang_peek(p);
+	double x;
+	switch (t.kind) {
+	case LTK_KW_PIGMENT:
+		if (k->n == SCENE_SKY_MAX_PIGMENTS)
+			return lang_error(p, t.loc, "too many pigments in sky_sphere (limit is %d)", SCENE_SKY_MAX_PIGMENTS);
+		TRY(k->pg[k->n] = new_part(p, t.loc));
+		return pigment(p, k->pg[k->n++], SCENE_COLOR_RADIANCE);
+	case LTK_KW_IMAGE:
+		lang_advance(p);
+		return asset_path(p, "after 'image'", SCENE_ASSET_IMAGE, &k->s.image);
+	case LTK_KW_INTENSITY:
+		lang_advance(p);
+		TRY(lang_float(p, "after 'intensity'", &x));
+		if (x < 0)
+			return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
+		k->s.intensity = x;
+		return true;
+	case LTK_KW_ROTATE:
+		lang_advance(p);
+		return lang_vec3(p, "after 'rotate'", &k->s.rotate_deg);
+	default: {
+		bool matched;
+		TRY(transform_item(p, &k->moved, &matched));
+		if (!matched)
+			return bad_item(p, open, "sky_sphere", "image, pigment, intensity or rotate");
+		if (!k->moved_at.line)
+			k->moved_at = t.loc;
+		return true;
+	}
+	}
+}
+
+/* sky_sphere = "sky_sphere" "{" [ identifier ] ( "image" string | pigment | "intensity" float
+ *              | "rotate" vector | transform_item )* "}"
+ * (one image, or pigments: one colour is the background; patterns and layers, bottom first, a
+ * baked sky; translate, scale and the like move the pigments, rotate turns the whole sky; a
+ * declared sky_sphere's items come first) */
+static bool sky_block(parser *p, diag_loc *kw, struct lang_sky *k)
+{
+	*kw = lang_advance(p)->loc;
+	diag_loc open;
+	TRY(open_block(p, "sky_sphere", &open));
+	*k = (struct lang_sky){.s = {.loc = *kw, .intensity = 1}, .moved = xform_identity()};
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_SKY, "a sky_sphere"));
+		*k = *v->sky;
+		k->s.loc = *kw;
+	}
+	while (!lang_accept(p, LTK_RBRACE))
+		TRY(sky_item(p, open, k));
+	return true;
+}
+
+static bool sky_sphere(parser *p)
+{
+	struct lang_sky k;
+	diag_loc kw;
+	TRY(sky_block(p, &kw, &k));
+	return sky_close(p, kw, &k);
+}
+
+/* #declare S = sky_sphere { ... }: the items, kept for a sky_sphere { S } to start from. */
 static bool declare_sky(parser *p, value *out)
 {
-	lang_token kw = *lang_advance(p);
-	lang_sky *r = arena_zalloc(&p->sc->arena, 1, sizeof *r);
-	if (!r)
-		return lang_error(p, kw.loc, "out of memory");
-	r->s.intensity = 1;
-	out->kind = VAL_SKY_SPHERE, out->sky = r;
-	return sky_block(p, r);
+	struct lang_sky *k = arena_zalloc(&p->sc->arena, 1, sizeof *k);
+	if (!k)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	diag_loc kw;
+	TRY(sky_block(p, &kw, k));
+	out->kind = VAL_SKY, out->sky = k;
+	return true;
 }
 
 /* default = "#default" "{" { texture | pigment | finish } "}"

@@ -7,7 +7,12 @@
 #include "accel/offset.h"
 #include "render/shading.h"
 
+#include <float.h>
 #include <stdlib.h>
+
+/* How many float ulps of its triangle's scale a hit position may be off (the interpolation of
+ * three rounded vertices and a transform): the tolerance of a pattern's cell boundaries. */
+#define PATTERN_HIT_ULPS 16.0
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
@@ -178,6 +183,40 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
 	return false;
 }
 
+/* A POV-Ray pigment at the hit, in its object's space (the scene's placement undone, whatever
+ * the instance's mesh transform) or at <u, v, 0> with uv_mapping: the diffuse colour, clamped to
+ * a reflectance. Its filter and transmit are not used yet. */
+static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params)
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	/* The hit is a float position: rounding of a few ulps of the triangle's scale, through the
+	 * object's inverse placement. uv coordinates are floats of their own size (at most ~1). */
+	double tol = wm->pattern_uv ? PATTERN_HIT_ULPS * FLT_EPSILON
+				    : PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
+	float c[5];
+	pattern_eval(&w->patterns, wm->pattern, p, tol, c);
+	vec3 rgb = v3(c[0], c[1], c[2]);
+	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
+	if (params->kind == BSDF_POV) /* the finish's lobes follow the pigment (its diffuse included) */
+		bsdf_pov_set_pigment(params, rgb);
+	else
+		params->diffuse = v3_scale(rgb, wm->pattern_kd); /* a finish's diffuse scales its pigment */
+}
+
+/* A POV-Ray normal { } at the hit: the shading normal taken into the object's space (the
+ * transpose of its placement), perturbed there by the pattern, and brought back. */
+static void shade_normal(const world *w, const world_material *wm, const render_hit *hit, vec3 *ns)
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = wm->normal_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	dvec3 n = pattern_normal_through(&in->pattern_xf, v3_to_d3(*ns), true);
+	pattern_perturb(&w->patterns, wm->normal, p, &n);
+	vec3 out = v3_normalize(d3v(pattern_normal_through(&in->pattern_xf, n, false)));
+	if (v3_is_finite(out) && v3_length2(out) > 0.5f)
+		*ns = out;
+}
+
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
  * (through the mesh's tangents, which the build made for it) at the hit. */
 static void world_shade(void *user, const render_hit *hit, bsdf_params *params, vec3 *ns)
@@ -186,6 +225,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	if (hit->material < 0 || hit->object >= w->n_insts)
 		return;
 	const world_material *wm = &w->materials[hit->material];
+	if (wm->has_pattern)
+		shade_pattern(w, wm, hit, params);
 	if (wm->albedo) {
 		float c[4];
 		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);
@@ -195,6 +236,8 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		if (params->kind == BSDF_POV) /* the texel is the finish's pigment */
 			bsdf_pov_set_pigment(params, params->diffuse);
 	}
+	if (wm->has_normal)
+		shade_normal(w, wm, hit, ns);
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
 	if (wm->normal_map && m->tangents) {

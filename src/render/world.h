@@ -18,6 +18,7 @@
 #include "render/camera.h"
 #include "render/integrator.h"
 #include "render/light.h"
+#include "render/pattern.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -43,6 +44,8 @@ typedef struct world_inst {
 	bool no_shadow;
 	int material;   /* index into world.materials */
 	int light;      /* index of its mesh light in world.lights, or -1 */
+	xform pattern_xf; /* object to world as the scene placed it: a pigment's pattern lives in its
+			   * object's space (xf may hold a sphere's centre and radius, or be flattened) */
 	vec3 lo, hi;    /* world-space bounds */
 } world_inst;
 
@@ -51,6 +54,13 @@ typedef struct world_material {
 	const image *albedo; /* NULL: the constant colour of the BSDF */
 	const image *normal_map;
 	float normal_strength;
+	bool has_pattern; /* a POV-Ray pigment: node `pattern` of world.patterns gives the albedo */
+	bool pattern_uv;  /* evaluated at <u, v, 0> (uv_mapping) rather than the object-space point */
+	float pattern_kd; /* the BSDF's diffuse over the pigment (a texture's finish diffuse; else 1) */
+	uint32_t pattern;
+	bool has_normal;  /* a POV-Ray normal { }: node `normal` of world.patterns perturbs the normal */
+	bool normal_uv;
+	uint32_t normal;
 } world_material;
 
 
@@ -70,6 +80,7 @@ struct world {
 	image **images;         /* every texture loaded, once per path (stable addresses) */
 	char **image_paths;
 	size_t n_images;
+	pattern_prog patterns;  /* every material's pigment, compiled (build_pattern.c) */
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
 	light_set lights;
 	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */

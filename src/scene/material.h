@@ -29,6 +29,7 @@ typedef struct scene_sss {
 	sss_medium_spec medium; /* preset, form, the parameters written (or the block's defaults) */
 	diag_loc physical_loc, artist_loc; /* where each form was first given */
 	const char *albedo_image; /* NULL: albedo is constant */
+	const struct scene_pigment *pigment; /* a POV-Ray pigment as the albedo (scene/pigment.h), or NULL */
 	float ior, roughness, anisotropy;
 	const char *normal_map;
 	float normal_strength;
@@ -44,6 +45,8 @@ typedef struct scene_material {
 	const char *name; /* the #declare name, or NULL */
 	vec3 color; /* diffuse / texture albedo */
 	const char *image; /* albedo texture path (resolved against the naming file's folder), or NULL */
+	const struct scene_pigment *pigment; /* a POV-Ray pigment (scene/pigment.h) beyond one colour, or NULL */
+	const struct scene_pigment *normal;  /* a POV-Ray normal { } (a pattern perturbing the normal), or NULL */
 	float diffuse, specular, roughness; /* texture finish; diffuse material: 1, 0, 1 */
 	scene_finish finish; /* the rest of a texture's POV-Ray finish (scene/finish.h) */
 	float ior; /* texture interior { ior }; 0 when none, 1 for an interior without ior */

@@ -2,6 +2,7 @@
 #include "scene/scene.h"
 
 #include "geom/shape.h"
+#include "scene/pigment.h"
 
 #include <math.h>
 #include <string.h>
@@ -382,6 +383,17 @@ static void dump_material(FILE *o, const scene_material *m)
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);
 	}
+	const struct scene_pigment *pg = m->kind >= MAT_SKIN && m->sss.pigment ? m->sss.pigment : m->pigment;
+	if (pg) {
+		fprintf(o, "  ");
+		scene_pigment_dump(o, pg);
+		fputc('\n', o);
+	}
+	if (m->normal) {
+		fprintf(o, "  ");
+		scene_pigment_dump(o, m->normal);
+		fputc('\n', o);
+	}
 	if (m->emission.x != 0 || m->emission.y != 0 || m->emission.z != 0) {
 		fprintf(o, " ");
 		dump_v3(o, "emission", m->emission);
@@ -578,7 +590,16 @@ void scene_dump(const scene *s, FILE *o)
 		dump_v3(o, "color", s->background);
 		fputc('\n', o);
 	}
-	if (s->has_sky_sphere) {
+	if (s->has_sky_sphere && s->sky_sphere.n_pigments) {
+		fprintf(o, "sky_sphere pigments %d intensity %g", s->sky_sphere.n_pigments, s->sky_sphere.intensity);
+		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
+		fputc('\n', o);
+		for (int i = 0; i < s->sky_sphere.n_pigments; i++) {
+			fprintf(o, "  ");
+			scene_pigment_dump(o, s->sky_sphere.pigments[i]);
+			fputc('\n', o);
+		}
+	} else if (s->has_sky_sphere) {
 		fprintf(o, "sky_sphere image \"%s\" intensity %g", s->sky_sphere.image, s->sky_sphere.intensity);
 		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
 		fputc('\n', o);

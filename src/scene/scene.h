@@ -229,6 +229,11 @@ typedef struct scene_object {
 	const scene_geom *geom;
 	xform transform;
 	const scene_material *material; /* NULL: the default grey diffuse */
+	/* With texture_placed: object space to its texture's space, the transforms written before
+	 * the texture (which POV-Ray does not apply to it); else the identity (a texture given
+	 * before every transform moves with the object). */
+	xform texture_from_object;
+	bool texture_placed;
 	bool no_shadow;
 	bool instance; /* made by object { Name } */
 	uint8_t pov_flags; /* SCENE_OBJ_*: POV-Ray's object flags circe records but does not render yet */
@@ -253,11 +258,18 @@ typedef struct scene_global {
 	vec3 ambient_light; /* default 1: scales every explicit finish ambient (scene/finish.h) */
 } scene_global;
 
+/* Pigment layers of a sky_sphere (POV-Ray's are unlimited; circe's sky is baked from these). */
+enum { SCENE_SKY_MAX_PIGMENTS = 8 };
+
 typedef struct scene_sky_sphere {
 	diag_loc loc;
 	const char *image;
 	double intensity;
 	dvec3 rotate_deg;
+	/* Or POV-Ray pigments, bottom first, evaluated at the unit direction (the build bakes them
+	 * into a lat-long image): each layer's filter and transmit show the ones below. */
+	const struct scene_pigment *pigments[SCENE_SKY_MAX_PIGMENTS];
+	int n_pigments;
 } scene_sky_sphere;
 
 /* A file the scene names, as resolved (see scene_geom's file path), and the place of its string:

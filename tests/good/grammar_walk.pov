@@ -57,7 +57,7 @@ light_source { <0, 5, 0> rgb 1 spotlight point_at 0 radius 10 falloff 20 }
 light_source { <0, 5, 0> rgb 1 parallel point_at 0 }
 // rule: background
 background { rgb 0.1 }
-// rule: sky_sphere, sky_block
+// rule: sky_sphere
 #declare Sky = sky_sphere { image "sky.exr" }
 sky_sphere { Sky intensity 1 rotate y * 10 }
 // rule: object_item, sphere, modifier, object_flag
@@ -88,6 +88,7 @@ sphere { 0, 1 material { skin { preset "skin2" sigma_a <0.1, 0.2, 0.3> ior 1.3 r
 sphere { 0, 1 material { wax { color rgb 0.5 radius <1, 2, 3> profile gaussian method fullcircle } } }
 sphere { 0, 1 material { marble { image "m.png" radius 2 profile burley method disk } } }
 sphere { 0, 1 material { marble { sigma_s 0 + 2 sigma_a 0.01 } } }
+#declare Paint0 = pigment { rgb <0, 0, 1> }
 // rule: texture, pigment, finish, interior
 sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.5 specular 0.2 roughness 0.1 } } interior { ior 1.3 } }
 sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } interior { ior 1.2 } } }
@@ -96,7 +97,23 @@ sphere { 0, 1 material { texture { pigment { image_map { png "t.png" } } } inter
 #declare Balls = array[1] { sphere { 0, 1 } }
 object { Balls[0] }
 #declare Ar[1] = (color rgbf <1, 1, 1, 0.5> transmit 0.25).filter;
-// rule: transform_item, transform, pigment_type, default
+// rule: pigment_body, pattern, block_pattern, block_item, pattern_modifier, turb_param, wave, colour_map, colour_entry
+sphere { 0, 1 pigment { checker rgb 1, pigment { bozo turbulence 0.5 octaves 3 omega 0.6 lambda 2.5 poly_wave 2 } } }
+sphere { 0, 1 pigment { marble frequency 2 phase 0.1 colour_map { [0 rgb 0] [0.5, 0.7 rgb 1 rgb 0.5] [1 rgb <1, 0, 0>] } scale 2 } }
+// rule: pigment_map, pigment_entry, warp, repeat_item, black_hole_item
+#declare Cm = color_map { [0 rgb 0] [1 rgb 1] };
+sphere { 0, 1 pigment { gradient y pigment_map { [0 checker rgb 0, rgb 1] [1 Paint0] } warp { repeat x offset y flip x } warp { black_hole 0, 1 strength 2 falloff 1 inverse repeat 1 } warp { turbulence 0.2 octaves 2 } } }
+sphere { 0, 1 pigment { wood color_map { Cm } brick_size 2 mortar 0.1 agate_turb 1 control0 0 control1 1 quick_color rgb 1 uv_mapping } }
+sphere { 0, 1 material { marble { pigment { granite scale < 2 1 1 > } } } }
+sphere { 0, 1 pigment { pigment_pattern { checker rgb 0, rgb 1 } color_map { [0 rgb <1, 0, 0>] [1 rgb 1] } } normal { pigment_pattern { bozo } 0.3 } }
+#declare Sky0 = sky_sphere { pigment { gradient y } pigment { bozo color_map { [0 rgbt 1] [1 rgb 1] } } scale 2 };
+// rule: normal, normal_modifier, bump_map
+#declare Nb = normal { bumps 0.4 scale 0.2 };
+sphere { 0, 1 texture { pigment { rgb 1 } normal { Nb accuracy 0.01 } } normal { ripples, 0.3 bump_size 0.6 frequency 4 } }
+sphere { 0, 1 normal { bump_map { png "t.png" map_type 2 bump_size 2 use_color } 1.5 } }
+// rule: image_map, image_item
+sphere { 0, 1 pigment { image_map { png "t.png" map_type 1 once interpolate 2 filter all 0.5 transmit all 0.1 } } }
+// rule: transform_item, transform, default
 #declare Turn = transform { rotate y * 90 translate x inverse }
 #declare Paint = pigment { rgb <1, 0, 0> }
 #declare Gloss = finish { specular 0.5 }

@@ -52,7 +52,7 @@ expect_status 0 "$CIRCE" render tex.pov -o tex.exr -W 48 -H 36 --spp 32 --seed 4
 grep -q ' 0 non-finite samples dropped' err || fail "samples dropped as non-finite: $(cat err)"
 for w in \
 	"tex.pov:3:1: warning: 3 texels of the environment are outside [0, inf), the range of a radiance (negative, NaN or infinite): clamped, a non-finite one to 0" \
-	"tex.pov:4:28: warning: 4 texels of 'tex.exr' are outside [0, 1], the range of a reflectance: clamped, a non-finite one to 0" \
+	"tex.pov:4:48: warning: 4 texels of 'tex.exr' are outside [0, 1], the range of a reflectance: clamped, a non-finite one to 0" \
 	"tex.pov:5:27: warning: 4 texels of 'tex.exr' are outside [0, 1], the range of a reflectance: clamped, a non-finite one to 0"; do
 	grep -qxF "$w" err || fail "missing warning '$w' in: $(cat err)"
 done

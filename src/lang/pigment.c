@@ -1,0 +1,749 @@
+/* pigment.c - POV-Ray's pigment and normal bodies beyond one colour, read into a scene_pigment
+ * tree: patterns and their arguments, color_map / colour_map / pigment_map, the block patterns'
+ * lists of colours or pigments, image_map and bump_map, turbulence, waves, warps and transforms,
+ * a normal's amount. The pattern words
+ * are POV-Ray reserved words that are not circe keywords (they lex as LTK_UNSUPPORTED), so they
+ * are matched here by their spelling: the keyword table stays as it is. */
+#include "lang/pigment.h"
+
+#include <string.h>
+
+#define TRY(x)                                                                                      \
+	do {                                                                                        \
+		if (!(x))                                                                           \
+			return false;                                                               \
+	} while (0)
+
+enum {
+	MAX_WARPS = 64 /* warps and transforms of one pigment (consecutive transforms are one) */
+};
+
+/* A pigment being read: the node and the warps and entries it will own. */
+typedef struct pig_build {
+	scene_pigment pg;
+	scene_warp warps[MAX_WARPS];
+	uint32_t n_warps;
+	int depth;   /* pigments around this one */
+	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
+} pig_build;
+
+static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
+		 const scene_pigment **out);
+
+/* The lookahead is the word w: a POV-Ray word circe does not reserve, or one of its keywords. */
+static bool is_word(const lang_token *t, const char *w)
+{
+	bool wordlike = t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
+	return wordlike && strlen(w) == t->len && !memcmp(t->text, w, t->len);
+}
+
+static bool peek_word(parser *p, const char *w) { return is_word(lang_peek(p), w); }
+
+static bool accept_word(parser *p, const char *w)
+{
+	if (!peek_word(p, w))
+		return false;
+	lang_advance(p);
+	return true;
+}
+
+static scene_pattern_kind peek_pattern(parser *p)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_UNSUPPORTED && !(t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
+		return SCENE_PAT_COUNT;
+	return scene_pattern_find(t->text, t->len);
+}
+
+/* The declared symbol the lookahead names when it is of kind k, else NULL. */
+static const symbol *peek_declared(parser *p, value_kind k)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind != LTK_IDENT)
+		return NULL;
+	const symbol *s = lang_lookup(p, t->text, t->len);
+	return s && s->val.kind == k ? s : NULL;
+}
+
+static bool starts_colour(parser *p) { return lang_colour_word(lang_peek(p)->kind) || peek_declared(p, VAL_COLOR); }
+
+static const char *const modifier_words[] = {
+	"color_map",   "colour_map",	"pigment_map",	 "turbulence", "octaves",      "omega",	       "lambda",
+	"frequency",   "phase",		"ramp_wave",	 "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave",
+	"poly_wave",   "warp",		"brick_size",	 "mortar",     "agate_turb",   "control0",     "control1",
+	"quick_color", "quick_colour",	"noise_generator", "uv_mapping"};
+
+static bool starts_modifier(parser *p)
+{
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_KW_TRANSLATE || k == LTK_KW_ROTATE || k == LTK_KW_SCALE || k == LTK_KW_MATRIX ||
+	    k == LTK_KW_TRANSFORM)
+		return true;
+	for (size_t i = 0; i < sizeof modifier_words / sizeof *modifier_words; i++)
+		if (peek_word(p, modifier_words[i]))
+			return true;
+	return false;
+}
+
+bool lang_pigment_starts(parser *p, bool has_base)
+{
+	if (peek_pattern(p) != SCENE_PAT_COUNT || lang_peek(p)->kind == LTK_KW_IMAGE_MAP || peek_word(p, "uv_mapping"))
+		return true;
+	return has_base && starts_modifier(p);
+}
+
+static void set5(float out[5], const double c[5])
+{
+	for (int i = 0; i < 5; i++)
+		out[i] = (float)c[i];
+}
+
+/* A plain colour node (a declared pigment of one colour, an entry's colour). */
+static const scene_pigment *plain(parser *p, const float c[5], diag_loc loc)
+{
+	scene_pigment *pg = arena_zalloc(&p->sc->arena, 1, sizeof *pg);
+	if (!pg) {
+		lang_error(p, loc, "out of memory");
+		return NULL;
+	}
+	*pg = scene_pigment_defaults(SCENE_PAT_PLAIN, loc);
+	memcpy(pg->color, c, sizeof pg->color);
+	return pg;
+}
+
+/* The tree of a declared pigment (its part record's pigment, or a plain node of its colour). */
+static const scene_pigment *declared_tree(parser *p, const scene_material *m, diag_loc loc)
+{
+	if (m->pigment)
+		return m->pigment;
+	float c[5] = {m->color.x, m->color.y, m->color.z, 0.0f, 0.0f};
+	return plain(p, c, loc);
+}
+
+/* The node b holds, with its warps, copied into the arena. */
+static const scene_pigment *finish_build(parser *p, pig_build *b, diag_loc loc)
+{
+	scene_pigment *pg = arena_zalloc(&p->sc->arena, 1, sizeof *pg);
+	scene_warp *w = b->n_warps ? arena_zalloc(&p->sc->arena, b->n_warps, sizeof *w) : NULL;
+	if (!pg || (b->n_warps && !w)) {
+		lang_error(p, loc, "out of memory");
+		return NULL;
+	}
+	if (b->n_warps)
+		memcpy(w, b->warps, b->n_warps * sizeof *w);
+	*pg = b->pg;
+	pg->warps = w, pg->n_warps = b->n_warps;
+	return pg;
+}
+
+static bool push_warp(parser *p, pig_build *b, const scene_warp *w)
+{
+	if (b->n_warps == MAX_WARPS)
+		return lang_error(p, w->loc, "too many warps and transforms in one pigment (limit is %d)", MAX_WARPS);
+	b->warps[b->n_warps++] = *w;
+	return true;
+}
+
+/* A transform after the warps: composed into the last warp when that is a transform too. */
+static bool push_transform(parser *p, pig_build *b, const xform *xf, diag_loc loc)
+{
+	if (b->n_warps && b->warps[b->n_warps - 1].kind == SCENE_WARP_TRANSFORM) {
+		scene_warp *last = &b->warps[b->n_warps - 1];
+		last->xf = xform_then(last->xf, *xf);
+		return true;
+	}
+	scene_warp w = {.kind = SCENE_WARP_TRANSFORM, .loc = loc, .xf = *xf};
+	return push_warp(p, b, &w);
+}
+
+static void begin_from(pig_build *b, const scene_pigment *base)
+{
+	b->pg = *base;
+	b->n_warps = base->n_warps < MAX_WARPS ? base->n_warps : MAX_WARPS;
+	memcpy(b->warps, base->warps, b->n_warps * sizeof *b->warps);
+}
+
+/* A pig_build on the heap (its warps make it too big to nest on the stack). */
+static pig_build *new_build(parser *p, diag_loc loc)
+{
+	pig_build *b = mem_calloc(1, sizeof *b);
+	if (!b)
+		lang_error(p, loc, "out of memory");
+	return b;
+}
+
+const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, const xform *xf, diag_loc loc)
+{
+	pig_build *b = new_build(p, loc);
+	if (!b)
+		return NULL;
+	begin_from(b, pg);
+	const scene_pigment *out = push_transform(p, b, xf, loc) ? finish_build(p, b, loc) : NULL;
+	mem_free(b);
+	return out;
+}
+
+/* ---- maps and lists ------------------------------------------------------------------------ */
+
+/* An entry's colour, or pigment: "pigment" "{" body "}" or (in a pigment_map) a body up to ']'. */
+static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok close, scene_map_entry *e)
+{
+	diag_loc at = lang_peek(p)->loc;
+	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
+		diag_loc open;
+		lang_advance(p);
+		open = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment'"));
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &e->pigment);
+	}
+	if (pigment_body)
+		return body(p, NULL, close, at, b->depth + 1, false, &e->pigment);
+	double c[5];
+	TRY(lang_color5(p, "in the map", c));
+	set5(e->color, c);
+	return true;
+}
+
+/* map_entry = "[" float [ "," float ] ( colour [ colour ] | pigment_body ) "]" */
+static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e, uint32_t *n, const char *what)
+{
+	diag_loc open = lang_advance(p)->loc; /* '[' */
+	double v, v2;
+	bool two;
+	TRY(lang_float(p, "as the map entry's value", &v));
+	/* [v colour], [v, colour], or the old form [v1 v2 colour1 colour2] (commas optional) */
+	lang_accept(p, LTK_COMMA);
+	two = !pigments && !starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT && lang_peek(p)->kind != LTK_LT;
+	if (two)
+		TRY(lang_float(p, "as the map entry's second value", &v2));
+	if (*n + (two ? 2 : 1) > SCENE_PIGMENT_MAX_ENTRIES)
+		return lang_error(p, open, "too many entries in '%s' (limit is %d)", what, SCENE_PIGMENT_MAX_ENTRIES);
+	scene_map_entry *a = &e[(*n)++];
+	*a = (scene_map_entry){.value = v};
+	if (pigments) {
+		TRY(entry_item(p, b, true, LTK_RBRACKET, a));
+		return true; /* the body read its ']' */
+	}
+	if (two)
+		lang_accept(p, LTK_COMMA);
+	TRY(entry_item(p, b, false, LTK_RBRACKET, a));
+	if (two) { /* POV-Ray's old form: colour1 at v1, colour2 at v2 */
+		scene_map_entry *c = &e[(*n)++];
+		*c = (scene_map_entry){.value = v2};
+		lang_accept(p, LTK_COMMA);
+		TRY(entry_item(p, b, false, LTK_RBRACKET, c));
+	}
+	return lang_expect(p, LTK_RBRACKET, "to close the map entry");
+}
+
+/* color_map = ( "color_map" | "colour_map" | "pigment_map" ) "{" map_entry { map_entry } "}" */
+static bool map_block(parser *p, pig_build *b, bool pigments)
+{
+	const char *what = pigments ? "pigment_map" : "color_map";
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, pigments ? "after 'pigment_map'" : "after 'color_map'"));
+	const symbol *s = peek_declared(p, VAL_COLOR_MAP);
+	if (s) { /* color_map { Name } */
+		const scene_pigment *held = s->val.mat->pigment;
+		lang_advance(p);
+		if (held->pigment_map != pigments)
+			return lang_error(p, p->prev.loc, "'%.*s' is a %s, not a %s", (int)p->prev.len, p->prev.text,
+					  held->pigment_map ? "pigment_map" : "color_map", what);
+		TRY(lang_expect_close(p, open, what));
+		b->pg.entries = held->entries, b->pg.n_entries = held->n_entries;
+		b->pg.pigment_map = pigments, b->pg.block_list = false;
+		return true;
+	}
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *e);
+	if (!e)
+		return lang_error(p, kw, "out of memory");
+	uint32_t n = 0;
+	while (lang_peek(p)->kind == LTK_LBRACKET)
+		TRY(map_entry(p, b, pigments, e, &n, what));
+	if (!n)
+		return lang_error_found(p, "expected '[' (a %s needs at least one entry)", what);
+	TRY(lang_expect_close(p, open, what));
+	b->pg.entries = e, b->pg.n_entries = n, b->pg.pigment_map = pigments, b->pg.block_list = false;
+	return true;
+}
+
+/* block_list = [ entry [ "," entry [ "," entry ] ] ]   (checker, brick: 2; hexagon: 3) */
+static bool block_list(parser *p, pig_build *b)
+{
+	int most = scene_pattern_blocks(b->pg.kind);
+	if (!starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT)
+		return true;
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, (size_t)most, sizeof *e);
+	if (!e)
+		return lang_error(p, lang_peek(p)->loc, "out of memory");
+	/* The entries not written keep the pattern's defaults (Parse_Blend_List; the build fills them). */
+	int n = 0;
+	do {
+		if (n == most)
+			return lang_error(p, lang_peek(p)->loc, "'%s' takes at most %d colours or pigments",
+					  scene_pattern_name(b->pg.kind), most);
+		e[n].value = n;
+		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
+		n++;
+		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
+	} while (starts_colour(p) || lang_peek(p)->kind == LTK_KW_PIGMENT);
+	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
+	return true;
+}
+
+/* ---- warps ------------------------------------------------------------------------------- */
+
+/* turbulence's parameters after its amount: { "octaves" int | "omega" float | "lambda" float } */
+static bool turb_params(parser *p, scene_turb *t)
+{
+	for (;;) {
+		double x;
+		long n;
+		if (accept_word(p, "octaves")) {
+			TRY(lang_int(p, "after 'octaves'", 1, 10, &n));
+			t->octaves = (int)n; /* POV-Ray's limit: 10 */
+		} else if (accept_word(p, "omega")) {
+			TRY(lang_float(p, "after 'omega'", &x));
+			t->omega = x;
+		} else if (accept_word(p, "lambda")) {
+			TRY(lang_float(p, "after 'lambda'", &x));
+			t->lambda = x;
+		} else {
+			return true;
+		}
+	}
+}
+
+/* "repeat" vector { "offset" vector | "flip" vector }: the vector names one axis and the width. */
+static bool warp_repeat(parser *p, scene_warp *w)
+{
+	dvec3 v;
+	diag_loc at = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "after 'repeat'", &v));
+	int nonzero = (v.x != 0) + (v.y != 0) + (v.z != 0);
+	if (nonzero != 1)
+		return lang_error(p, at, "'repeat' needs a vector along one axis (x, y or z times the width), found <%g, %g, %g>",
+				  v.x, v.y, v.z);
+	w->axis = v.x != 0 ? 0 : v.y != 0 ? 1 : 2;
+	w->width = fabs(v.x + v.y + v.z);
+	w->flip = d3(1, 1, 1);
+	for (;;) {
+		dvec3 f;
+		if (accept_word(p, "offset")) {
+			TRY(lang_vec3(p, "after 'offset'", &w->offset));
+		} else if (accept_word(p, "flip")) {
+			TRY(lang_vec3(p, "after 'flip'", &f));
+			w->flip = d3(f.x != 0 ? -1 : 1, f.y != 0 ? -1 : 1, f.z != 0 ? -1 : 1);
+		} else {
+			return true;
+		}
+	}
+}
+
+/* "black_hole" vector "," float { "strength" float | "falloff" float | "inverse" | "repeat" vector } */
+static bool warp_black_hole(parser *p, scene_warp *w)
+{
+	diag_loc at = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "as the black hole's centre", &w->center));
+	TRY(lang_expect(p, LTK_COMMA, "after the black hole's centre"));
+	TRY(lang_float(p, "as the black hole's radius", &w->radius));
+	if (!(w->radius > 0))
+		return lang_error(p, at, "the black hole's radius must be > 0, found %g", w->radius);
+	w->strength = 1.0, w->falloff = 2.0; /* BlackHoleWarp's defaults */
+	for (;;) {
+		if (accept_word(p, "strength")) {
+			TRY(lang_float(p, "after 'strength'", &w->strength));
+		} else if (lang_accept(p, LTK_KW_FALLOFF)) {
+			TRY(lang_float(p, "after 'falloff'", &w->falloff));
+		} else if (lang_accept(p, LTK_KW_INVERSE)) {
+			w->inverse = true;
+		} else if (accept_word(p, "repeat")) {
+			TRY(lang_vec3(p, "after 'repeat'", &w->repeat));
+		} else if (peek_word(p, "turbulence")) {
+			return lang_error(p, lang_peek(p)->loc, "'turbulence' of a black hole is not supported by circe");
+		} else {
+			return true;
+		}
+	}
+}
+
+/* warp = "warp" "{" ( "turbulence" ( float | vector ) turb_params | "repeat" ... | "black_hole" ... ) "}" */
+static bool warp_block(parser *p, pig_build *b)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'warp'"));
+	scene_warp w = {.loc = kw};
+	if (accept_word(p, "turbulence")) {
+		w.kind = SCENE_WARP_TURBULENCE;
+		w.turb = (scene_turb){.octaves = 6, .omega = 0.5, .lambda = 2.0};
+		TRY(lang_vec3(p, "after 'turbulence'", &w.turb.amount));
+		TRY(turb_params(p, &w.turb));
+	} else if (accept_word(p, "repeat")) {
+		w.kind = SCENE_WARP_REPEAT;
+		TRY(warp_repeat(p, &w));
+	} else if (accept_word(p, "black_hole")) {
+		w.kind = SCENE_WARP_BLACK_HOLE;
+		TRY(warp_black_hole(p, &w));
+	} else {
+		lang_token *t = lang_peek(p);
+		if (t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
+			return lang_error(p, t->loc, "'warp { %.*s }' is not supported by circe (turbulence, repeat and "
+						     "black_hole are)",
+					  (int)t->len, t->text);
+		return lang_error_found(p, "expected turbulence, repeat or black_hole in 'warp'");
+	}
+	TRY(lang_expect_close(p, open, "warp"));
+	return push_warp(p, b, &w);
+}
+
+/* ---- image_map --------------------------------------------------------------------------- */
+
+/* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" ] string { "map_type" int | "once"
+ *             | "interpolate" int | ( "filter" | "transmit" ) "all" float } "}" */
+static bool image_map(parser *p, pig_build *b)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'image_map'"));
+	double amount = b->pg.bump_amount; /* a bump_map keeps its normal's amount */
+	b->pg = scene_pigment_defaults(SCENE_PAT_IMAGE, kw);
+	b->pg.bump_amount = amount, b->pg.is_normal = b->normal;
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
+		lang_advance(p);
+	else if (lang_peek(p)->kind != LTK_STRING)
+		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in 'image_map'");
+	TRY(lang_asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &b->pg.image));
+	for (;;) {
+		long n;
+		double x;
+		if (lang_accept(p, LTK_RBRACE))
+			return true;
+		if (accept_word(p, "map_type")) {
+			TRY(lang_int(p, "after 'map_type'", 0, 7, &n));
+			if (n > 2)
+				return lang_error(p, p->prev.loc, "'map_type %ld' is not supported by circe (0 planar, 1 spherical, "
+								  "2 cylindrical are)",
+						  n);
+			b->pg.map_type = (int)n;
+		} else if (lang_accept(p, LTK_KW_ONCE)) {
+			b->pg.once = true;
+		} else if (accept_word(p, "interpolate")) {
+			TRY(lang_int(p, "after 'interpolate'", 0, 4, &n));
+			b->pg.interpolate = n != 0; /* 2 bilinear, 4 normalised distance: both bilinear here */
+		} else if (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT) {
+			bool filter = lang_advance(p)->kind == LTK_KW_FILTER;
+			if (!accept_word(p, "all"))
+				return lang_error(p, lang_peek(p)->loc, "a palette index after '%s' is not supported by circe: "
+									"give '%s all' and a float",
+						  filter ? "filter" : "transmit", filter ? "filter" : "transmit");
+			TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
+			*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+		} else if (b->normal && accept_word(p, "bump_size")) {
+			TRY(lang_float(p, "after 'bump_size'", &b->pg.bump_amount));
+		} else if (b->normal && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||
+					 accept_word(p, "use_index"))) {
+			/* circe's images have no palette: the grey of the colour either way */
+		} else if (accept_word(p, "gamma")) {
+			diag_loc at = p->prev.loc;
+			TRY(lang_float(p, "after 'gamma'", &x));
+			diag_warning(p->d, at, "'gamma' of an image_map is ignored: circe decodes PNG and JPEG from sRGB "
+					       "and reads EXR as linear");
+		} else {
+			return lang_expect_close(p, open, "image_map");
+		}
+	}
+}
+
+/* ---- pattern heads and modifiers --------------------------------------------------------- */
+
+/* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
+ * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
+ * object, which holds them), over a declared pigment or normal. */
+static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
+{
+	diag_loc kw = lang_advance(p)->loc;
+	if (k == SCENE_PAT_FUNCTION)
+		return lang_error(p, kw, "'function' as a pattern is not supported by circe yet");
+	scene_pigment d = scene_pigment_defaults(k, kw);
+	d.uv_mapping = b->pg.uv_mapping;
+	b->pg = d;
+	b->n_warps = 0;
+	if (k == SCENE_PAT_GRADIENT)
+		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */
+		diag_loc open = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &b->pg.child);
+	}
+	if (k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2) {
+		long arms;
+		TRY(lang_int(p, "as the spiral's number of arms", -1000000, 1000000, &arms));
+		b->pg.arms = (int)arms;
+		return true;
+	}
+	if (k == SCENE_PAT_CRACKLE && accept_word(p, "solid"))
+		b->pg.solid = true;
+	if (k == SCENE_PAT_CRACKLE && (peek_word(p, "form") || peek_word(p, "metric") || peek_word(p, "offset")))
+		return lang_error(p, lang_peek(p)->loc, "'%.*s' of crackle is not supported by circe (its default form is)",
+				  (int)lang_peek(p)->len, lang_peek(p)->text);
+	return scene_pattern_blocks(k) ? block_list(p, b) : true;
+}
+
+/* The wave words: ramp_wave triangle_wave sine_wave scallop_wave cubic_wave poly_wave [ float ]. */
+static bool wave_word(parser *p, pig_build *b, bool *matched)
+{
+	static const char *const waves[] = {"ramp_wave", "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave",
+					    "poly_wave"};
+	*matched = false;
+	for (int i = 0; i < 6; i++)
+		if (accept_word(p, waves[i])) {
+			*matched = true;
+			b->pg.wave = (scene_wave)i;
+			lang_tok k = lang_peek(p)->kind;
+			if (i == SCENE_WAVE_POLY && (k == LTK_NUMBER || k == LTK_LPAREN || peek_declared(p, VAL_FLOAT)))
+				TRY(lang_float(p, "after 'poly_wave'", &b->pg.exponent));
+			return true;
+		}
+	return true;
+}
+
+/* A float after the word w into *out. */
+static bool word_float(parser *p, const char *w, double *out, bool *matched)
+{
+	if (!(*matched = accept_word(p, w)))
+		return true;
+	char ctx[48];
+	snprintf(ctx, sizeof ctx, "after '%s'", w);
+	return lang_float(p, ctx, out);
+}
+
+/* The numeric modifiers: frequency phase mortar agate_turb control0 control1. */
+static bool number_modifier(parser *p, pig_build *b, bool *matched)
+{
+	scene_pigment *g = &b->pg;
+	TRY(word_float(p, "frequency", &g->frequency, matched));
+	if (!*matched)
+		TRY(word_float(p, "phase", &g->phase, matched));
+	if (!*matched)
+		TRY(word_float(p, "mortar", &g->mortar, matched));
+	if (!*matched)
+		TRY(word_float(p, "agate_turb", &g->agate_turb, matched));
+	if (!*matched)
+		TRY(word_float(p, "control0", &g->control0, matched));
+	if (!*matched)
+		TRY(word_float(p, "control1", &g->control1, matched));
+	return true;
+}
+
+/* pattern_modifier = color_map | pigment_map | "turbulence" ( float | vector ) | "octaves" int
+ *   | "omega" float | "lambda" float | wave | "frequency" float | "phase" float | warp
+ *   | "brick_size" vector | "mortar" float | "agate_turb" float | "control0" float
+ *   | "control1" float | "quick_color" colour | "noise_generator" int | "uv_mapping" | transform_item
+ * *matched false when the lookahead is none. */
+static bool modifier(parser *p, pig_build *b, bool *matched)
+{
+	diag_loc at = lang_peek(p)->loc;
+	xform xf = xform_identity();
+	TRY(lang_transform_item(p, &xf, matched));
+	if (*matched)
+		return push_transform(p, b, &xf, at);
+	TRY(wave_word(p, b, matched));
+	if (!*matched)
+		TRY(number_modifier(p, b, matched));
+	if (*matched)
+		return true;
+	*matched = true;
+	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map"))
+		return map_block(p, b, peek_word(p, "pigment_map"));
+	if (peek_word(p, "warp"))
+		return warp_block(p, b);
+	if (accept_word(p, "turbulence")) {
+		TRY(lang_vec3(p, "after 'turbulence'", &b->pg.turb.amount));
+		return true;
+	}
+	if (peek_word(p, "octaves") || peek_word(p, "omega") || peek_word(p, "lambda"))
+		return turb_params(p, &b->pg.turb);
+	if (accept_word(p, "brick_size"))
+		return lang_vec3(p, "after 'brick_size'", &b->pg.vector);
+	if (b->normal && accept_word(p, "bump_size"))
+		return lang_float(p, "after 'bump_size'", &b->pg.bump_amount);
+	if (b->normal && accept_word(p, "accuracy"))
+		return lang_float(p, "after 'accuracy'", &b->pg.accuracy);
+	if (b->normal && (peek_word(p, "slope_map") || peek_word(p, "normal_map")))
+		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
+	if (accept_word(p, "uv_mapping")) {
+		b->pg.uv_mapping = true;
+		return true;
+	}
+	if (accept_word(p, "quick_color") || accept_word(p, "quick_colour")) {
+		double c[5];
+		return lang_color5(p, "after 'quick_color'", c); /* a preview colour: circe has no preview */
+	}
+	if (accept_word(p, "noise_generator")) {
+		long n;
+		TRY(lang_int(p, "after 'noise_generator'", 1, 3, &n));
+		diag_warning(p->d, at, "'noise_generator' is ignored: circe has one noise (Perlin's improved noise)");
+		return true;
+	}
+	*matched = false;
+	return true;
+}
+
+/* The first item of a body: a pattern and its arguments, image_map, a colour, a declared
+ * pigment (in maps and lists, where stmt.c's pigment did not read it), or nothing. */
+/* A normal's amount after its pattern: [ "," ] float, when one follows. */
+static bool normal_amount(parser *p, pig_build *b)
+{
+	lang_accept(p, LTK_COMMA);
+	lang_tok k = lang_peek(p)->kind;
+	if (k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || peek_declared(p, VAL_FLOAT))
+		return lang_float(p, "as the normal's amount", &b->pg.bump_amount);
+	return true;
+}
+
+static bool head(parser *p, pig_build *b)
+{
+	scene_pattern_kind k = peek_pattern(p);
+	if (k != SCENE_PAT_COUNT) {
+		double amount = b->pg.bump_amount, accuracy = b->pg.accuracy;
+		TRY(pattern_head(p, b, k));
+		b->pg.is_normal = b->normal;
+		if (b->normal) /* a new pattern keeps the amount and accuracy of a declared normal */
+			b->pg.bump_amount = amount, b->pg.accuracy = accuracy;
+		return b->normal ? normal_amount(p, b) : true;
+	}
+	if (b->normal) {
+		const symbol *sn = peek_declared(p, VAL_NORMAL);
+		if (sn) {
+			lang_advance(p);
+			begin_from(b, sn->val.mat->normal);
+			return true;
+		}
+		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)
+			return lang_error(p, lang_peek(p)->loc, "'image_map' in a normal is not supported by circe: give a "
+								"bump_map");
+		if (peek_word(p, "bump_map")) { /* an image's grey as heights (imageutil.cpp's bump_map) */
+			TRY(image_map(p, b));
+			return normal_amount(p, b);
+		}
+		return true;
+	}
+	if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)
+		return image_map(p, b);
+	const symbol *s = peek_declared(p, VAL_PIGMENT);
+	if (s) {
+		diag_loc at = lang_advance(p)->loc;
+		const scene_pigment *t = declared_tree(p, s->val.mat, at);
+		TRY(t);
+		begin_from(b, t);
+		return true;
+	}
+	if (starts_colour(p)) {
+		double c[5];
+		TRY(lang_color5(p, "as the pigment colour", c));
+		b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, b->pg.loc);
+		set5(b->pg.color, c);
+	}
+	return true;
+}
+
+/* body = [ head ] { pattern_modifier } close */
+static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, const scene_pigment **out)
+{
+	TRY(head(p, b));
+	for (;;) {
+		if (lang_accept(p, close)) {
+			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN)
+				return lang_error(p, open, "a normal needs a pattern (bumps, dents, ripples, ...)");
+			if (b->pg.kind == SCENE_PAT_PLAIN && (b->n_warps || b->pg.entries))
+				b->n_warps = 0; /* a colour has no pattern to move or map */
+			return (*out = finish_build(p, b, open)) != NULL;
+		}
+		bool matched;
+		TRY(modifier(p, b, &matched));
+		if (!matched) {
+			if (close == LTK_RBRACKET)
+				return lang_error_found(p, "expected a pattern modifier or ']' to close the map entry");
+			return lang_error_found(p, "expected a pattern modifier or '}' to close 'pigment' (opened at line %u)",
+						open.line);
+		}
+	}
+}
+
+static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
+		 const scene_pigment **out)
+{
+	if (depth >= SCENE_PIGMENT_MAX_DEPTH)
+		return lang_error(p, open, "pigments nested too deep (limit is %d)", SCENE_PIGMENT_MAX_DEPTH);
+	TRY(lang_enter(p, open));
+	pig_build *b = new_build(p, open);
+	bool ok = b != NULL;
+	if (ok) {
+		if (base)
+			begin_from(b, base);
+		else
+			b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
+		b->depth = depth;
+		b->normal = normal;
+		if (normal && !base)
+			b->pg.is_normal = true;
+		ok = body_in(p, b, close, open, out);
+	}
+	mem_free(b);
+	lang_leave(p);
+	return ok;
+}
+
+bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out)
+{
+	return body(p, base, LTK_RBRACE, open, 0, false, out);
+}
+
+bool lang_pigment_map_starts(parser *p)
+{
+	return peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map");
+}
+
+bool lang_pigment_map_value(parser *p, value *out)
+{
+	diag_loc at = lang_peek(p)->loc;
+	pig_build *b = new_build(p, at);
+	scene_material *m = b ? arena_zalloc(&p->sc->arena, 1, sizeof *m) : NULL;
+	bool ok = m != NULL;
+	if (b && !m)
+		lang_error(p, at, "out of memory");
+	if (ok) {
+		b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, at);
+		ok = map_block(p, b, peek_word(p, "pigment_map")) && (m->pigment = finish_build(p, b, at)) != NULL;
+	}
+	mem_free(b);
+	if (!ok)
+		return false;
+	m->loc = at;
+	out->kind = VAL_COLOR_MAP, out->mat = m;
+	return true;
+}
+
+const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m) { return declared_tree(p, m, m->loc); }
+
+bool lang_normal_starts(parser *p) { return peek_word(p, "normal"); }
+
+bool lang_normal(parser *p, scene_material *m)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+	return body(p, m->normal, LTK_RBRACE, open, 0, true, &m->normal);
+}
+
+bool lang_normal_value(parser *p, value *out)
+{
+	diag_loc at = lang_peek(p)->loc;
+	scene_material *m = arena_zalloc(&p->sc->arena, 1, sizeof *m);
+	if (!m)
+		return lang_error(p, at, "out of memory");
+	m->loc = at;
+	TRY(lang_normal(p, m));
+	out->kind = VAL_NORMAL, out->mat = m;
+	return true;
+}

@@ -1,0 +1,43 @@
+/* pigment.h - the pigment bodies of POV-Ray beyond one colour (lang/pigment.c): patterns with
+ * their colour maps, pigment maps and block lists, image_map, turbulence, waves, warps and
+ * transforms, read into a scene_pigment tree (scene/pigment.h). stmt.c's `pigment` hands over
+ * to it when the body is one of these. Internal to src/lang. */
+#ifndef CIRCE_LANG_PIGMENT_H
+#define CIRCE_LANG_PIGMENT_H
+
+#include "lang/parser.h"
+#include "scene/pigment.h"
+
+/* True when the lookahead begins a body lang_pigment_rest reads: a pattern's word, image_map,
+ * uv_mapping, or, over a declared pigment (has_base), one of a pattern's modifiers. */
+bool lang_pigment_starts(parser *p, bool has_base);
+/* The rest of a pigment's body up to its '}' (consumed), over base (a declared pigment's tree,
+ * or NULL); *out receives the new tree (in the scene's arena). open: the pigment's '{'. */
+bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out);
+/* A copy of pg with xf after its warps: a transform written after the pigment (in a texture, a
+ * material, a declared pigment reused) moves its pattern, as POV-Ray's do. NULL: out of memory,
+ * reported at loc. */
+const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, const xform *xf, diag_loc loc);
+
+/* The tree of a pigment's record (a declared pigment, a sky's layer): its pattern, or a plain
+ * node of its colour. NULL: out of memory, reported. */
+const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m);
+
+/* True when the lookahead is color_map, colour_map or pigment_map (a #declare's value). */
+bool lang_pigment_map_starts(parser *p);
+/* The map at the lookahead as a VAL_COLOR_MAP value (for #declare). */
+bool lang_pigment_map_value(parser *p, value *out);
+
+/* True when the lookahead is `normal` (a POV-Ray word circe reads here). */
+bool lang_normal_starts(parser *p);
+/* normal = "normal" "{" [ identifier ] [ pattern [ [","] float ] ] { pattern_modifier
+ *          | "bump_size" float | "accuracy" float } "}": m's normal (a copy over a declared one). */
+bool lang_normal(parser *p, scene_material *m);
+/* A normal { } as a VAL_NORMAL value (for #declare). */
+bool lang_normal_value(parser *p, value *out);
+
+/* stmt.c's helpers pigment.c reads with: lang_asset_path (parser.h), and one transform item
+ * composed after *t (*matched false when the lookahead is none). */
+bool lang_transform_item(parser *p, xform *t, bool *matched);
+
+#endif

@@ -1,0 +1,792 @@
+/* pattern.c - POV-Ray 3.7's patterns, waves, warps and colour maps, and the noise under them.
+ * Each pattern cites the function of POV-Ray's source (source/core/material/pattern.cpp,
+ * github.com/POV-Ray/povray) whose definition it implements; the code is written from those
+ * definitions, not copied. */
+#include "render/pattern.h"
+
+#include <math.h>
+
+#define TWO_PI 6.283185307179586
+/* POV-Ray's EPSILON (source/core/configcore.h): the block patterns' floor() nudge, so a point
+ * exactly on an integer plane falls on the same side as POV-Ray puts it. */
+#define POV_EPSILON 1.0e-10
+/* Coordinates beyond this are clamped before the noise's lattice arithmetic (POV-Ray clamps
+ * warped points at 1e17, warp.cpp's COORDINATE_LIMIT; the lattice index must fit an int). */
+#define NOISE_COORD_LIMIT 1.0e9
+/* 0.5 + 0.5 NOISE_GAIN perlin is POV-Ray's range with this gain: measured on 160,000 points of
+ * a plane, POV-Ray 3.7's bozo (noise_generator 2, a 16-bit linear render) has mean 0.508, standard
+ * deviation 0.134, range [0.065, 0.948]; circe's 0.501, 0.122 to 0.142 (the plane on a lattice
+ * plane or off it), [0.055, 0.945]. test_pattern checks the range and the mean. */
+#define NOISE_GAIN 1.0
+/* warp.cpp's COORDINATE_LIMIT: warped points are clamped there. */
+#define POV_COORDINATE_LIMIT 1.0e17
+/* POV-Ray's default number of waves of ripples and waves (global_settings number_of_waves). */
+#define POV_NUMBER_OF_WAVES 10
+
+/* Perlin's permutation, "Improving Noise" (SIGGRAPH 2002) and its reference implementation
+ * (mrl.cs.nyu.edu/~perlin/noise/): a published table. */
+static const unsigned char perm[256] = {
+	151, 160, 137, 91,  90,	 15,  131, 13,	201, 95,  96,  53,  194, 233, 7,   225, 140, 36,  103, 30,	69,  142,
+	8,   99,  37,  240, 21,	 10,  23,  190, 6,   148, 247, 120, 234, 75,  0,   26,	197, 62,  94,  252, 219, 203,
+	117, 35,  11,  32,  57,	 177, 33,  88,	237, 149, 56,  87,  174, 20,  125, 136, 171, 168, 68,  175, 74,	 165,
+	71,  134, 139, 48,  27,	 166, 77,  146, 158, 231, 83,  111, 229, 122, 60,  211, 133, 230, 220, 105, 92,	 41,
+	55,  46,  245, 40,  244, 102, 143, 54,	65,  25,  63,  161, 1,	 216, 80,  73,	209, 76,  132, 187, 208, 89,
+	18,  169, 200, 196, 135, 130, 116, 188, 159, 86,  164, 100, 109, 198, 173, 186, 3,   64,	52,  217, 226, 250,
+	124, 123, 5,   202, 38,	 147, 118, 126, 255, 82,  85,  212, 207, 206, 59,  227, 47,  16,	58,  17,  182, 189,
+	28,  42,  223, 183, 170, 213, 119, 248, 152, 2,	 44,  154, 163, 70,  221, 153, 101, 155, 167, 43,  172, 9,
+	129, 22,  39,  253, 19,	 98,  108, 110, 79,  113, 224, 232, 178, 185, 112, 104, 218, 246, 97,  228, 251, 34,
+	242, 193, 238, 210, 144, 12,  191, 179, 162, 241, 81,  51,  145, 235, 249, 14,	239, 107, 49,  192, 214, 31,
+	181, 199, 106, 157, 184, 84,  204, 176, 115, 121, 50,  45,  127, 4,   150, 254, 138, 236, 205, 93,	222, 114,
+	67,  29,  24,  72,  243, 141, 128, 195, 78,  66,  215, 61,  156, 180};
+
+int pattern_perm(int i) { return perm[i & 255]; }
+
+static double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+static double lerp(double t, double a, double b) { return a + t * (b - a); }
+
+/* The gradient of hash h dotted with (x, y, z): Perlin 2002's twelve edge directions. */
+static double grad(int h, double x, double y, double z)
+{
+	h &= 15;
+	double u = h < 8 ? x : y, v = h < 4 ? y : (h == 12 || h == 14) ? x : z;
+	return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
+}
+
+static double clamp_coord(double x)
+{
+	if (!(x == x))
+		return 0.0;
+	return x > NOISE_COORD_LIMIT ? NOISE_COORD_LIMIT : x < -NOISE_COORD_LIMIT ? -NOISE_COORD_LIMIT : x;
+}
+
+/* Perlin's improved noise at p, in about [-1, 1]. */
+static double perlin(dvec3 p)
+{
+	double x = clamp_coord(p.x), y = clamp_coord(p.y), z = clamp_coord(p.z);
+	double fx = floor(x), fy = floor(y), fz = floor(z);
+	int X = (int)((long long)fx & 255), Y = (int)((long long)fy & 255), Z = (int)((long long)fz & 255);
+	x -= fx, y -= fy, z -= fz;
+	double u = fade(x), v = fade(y), w = fade(z);
+	int A = perm[X] + Y, AA = perm[A & 255] + Z, AB = perm[(A + 1) & 255] + Z;
+	int B = perm[(X + 1) & 255] + Y, BA = perm[B & 255] + Z, BB = perm[(B + 1) & 255] + Z;
+#define P(i) perm[(i) & 255]
+	return lerp(w,
+		    lerp(v, lerp(u, grad(P(AA), x, y, z), grad(P(BA), x - 1, y, z)),
+			 lerp(u, grad(P(AB), x, y - 1, z), grad(P(BB), x - 1, y - 1, z))),
+		    lerp(v, lerp(u, grad(P(AA + 1), x, y, z - 1), grad(P(BA + 1), x - 1, y, z - 1)),
+			 lerp(u, grad(P(AB + 1), x, y - 1, z - 1), grad(P(BB + 1), x - 1, y - 1, z - 1))));
+#undef P
+}
+
+static double clamp01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
+
+double pattern_noise(dvec3 p) { return clamp01(0.5 + 0.5 * NOISE_GAIN * perlin(p)); }
+
+/* Three noises at points far apart (so the components are independent), as POV-Ray's DNoise
+ * draws three components from its lattice, each distributed as noise - 0.5 (POV-Ray's DNoise
+ * components are its noise's sum before the 0.5 is added: portablenoise.cpp). */
+dvec3 pattern_dnoise(dvec3 p)
+{
+	double x = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
+	double y = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
+	double z = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
+	return d3(fmax(-0.5, fmin(0.5, x)), fmax(-0.5, fmin(0.5, y)), fmax(-0.5, fmin(0.5, z)));
+}
+
+/* noise.cpp's Turbulence (its original-generator branch: circe's noise already spans [0, 1]):
+ * noise(p) + sum over octaves 2..n of omega^(i-1) noise(lambda^(i-1) p). */
+double pattern_turbulence(dvec3 p, const pattern_turb *t)
+{
+	double value = pattern_noise(p), l = t->lambda, o = t->omega;
+	for (int i = 2; i <= t->octaves; i++) {
+		value += o * pattern_noise(d3_scale(p, l));
+		l *= t->lambda, o *= t->omega;
+	}
+	return value;
+}
+
+/* noise.cpp's DTurbulence: the same sum of vector noise. */
+dvec3 pattern_dturbulence(dvec3 p, const pattern_turb *t)
+{
+	dvec3 r = pattern_dnoise(p);
+	double l = t->lambda, o = t->omega;
+	for (int i = 2; i <= t->octaves; i++) {
+		r = d3_add(r, d3_scale(pattern_dnoise(d3_scale(p, l)), o));
+		l *= t->lambda, o *= t->omega;
+	}
+	return r;
+}
+
+/* texture.cpp's cycloidal: sin(2 pi v). */
+static double cycloidal(double v) { return sin(v * TWO_PI); }
+
+/* texture.cpp's Triangle_Wave: 0 at integers, 1 at halves. */
+static double triangle_wave(double v)
+{
+	double off = v - floor(v);
+	return off >= 0.5 ? 2.0 * (1.0 - off) : 2.0 * off;
+}
+
+/* ContinuousPattern::Evaluate: frequency and phase (mod a hair over 1, as POV-Ray does: a ramp
+ * reaches 1 at the top), then the wave's shape. */
+double pattern_wave_apply(pattern_wave w, double v, double frequency, double phase, double exponent)
+{
+	if (frequency != 0.0)
+		v = fmod(v * frequency + phase, 1.00001);
+	if (v < 0.0)
+		v -= floor(v);
+	switch (w) {
+	case WAVE_RAMP: return v;
+	case WAVE_SINE: return (1.0 + cycloidal(v)) * 0.5;
+	case WAVE_TRIANGLE: return triangle_wave(v);
+	case WAVE_SCALLOP: return fabs(cycloidal(v * 0.5));
+	case WAVE_CUBIC: return v * v * (3.0 - 2.0 * v);
+	case WAVE_POLY: return pow(v, exponent);
+	}
+	return v;
+}
+
+/* A 32-bit hash of a lattice cell (the "lowbias32" mixer of C. Wellons, 2018), standing in for
+ * POV-Ray's Hash3d and its random table: cells and crackle take their randomness from it. */
+static uint32_t hash_cell(int x, int y, int z)
+{
+	uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u ^ (uint32_t)z * 0xcb1ab31fu;
+	h ^= h >> 16, h *= 0x7feb352du, h ^= h >> 15, h *= 0x846ca68bu, h ^= h >> 16;
+	return h;
+}
+
+static double hash_unit(uint32_t h) { return (double)(h >> 8) * (1.0 / 16777216.0); }
+
+static int cell_of(double v) { return (int)floor(fmax(-2.0e9, fmin(2.0e9, v))); }
+
+/* CracklePattern with POV-Ray's defaults (form <-1, 1, 0>, metric 2): the distance to the second
+ * nearest feature point less the nearest, one point per unit cube, the 27 cubes around p. */
+static double crackle(dvec3 p, bool solid)
+{
+	int cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
+	double d1 = 1e30, d2 = 1e30;
+	uint32_t nearest = 0;
+	for (int i = -1; i <= 1; i++)
+		for (int j = -1; j <= 1; j++)
+			for (int k = -1; k <= 1; k++) {
+				uint32_t h = hash_cell(cx + i, cy + j, cz + k);
+				dvec3 f = d3(cx + i + hash_unit(h), cy + j + hash_unit(h * 0x9e3779b9u + 1u),
+					     cz + k + hash_unit(h * 0x85ebca6bu + 2u));
+				double d = d3_length(d3_sub(p, f));
+				if (d < d1)
+					d2 = d1, d1 = d, nearest = h;
+				else if (d < d2)
+					d2 = d;
+			}
+	/* solid: the nearest point's cell value (CracklePattern's crackleIsSolid) */
+	return solid ? hash_unit(nearest * 0xc2b2ae35u + 3u) : clamp01(d2 - d1);
+}
+
+/* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
+ * <i, 0, 0>; circe draws it from the cell hash) and its frequency from POV-Ray's own generator
+ * (noise.cpp's Initialize_Waves, its seed and constants). */
+static dvec3 wave_source(int i)
+{
+	uint32_t h = hash_cell(i, 7, 11);
+	double z = 2.0 * hash_unit(h) - 1.0, phi = TWO_PI * hash_unit(h * 0x9e3779b9u + 1u);
+	double r = sqrt(fmax(0.0, 1.0 - z * z));
+	return d3(r * cos(phi), r * sin(phi), z);
+}
+
+/* The next wave's frequency from Initialize_Waves' generator (state *next, seeded -560851967). */
+static double wave_frequency(uint32_t *next)
+{
+	*next = *next * 1812433253u + 12345u;
+	return (double)((int32_t)*next >> 16 & 0x7FFF) * 0.000030518509476 + 0.01;
+}
+
+static double wave_sum(dvec3 p, const pattern_node *n, bool waves)
+{
+	uint32_t next = (uint32_t)-560851967;
+	double scalar = 0.0;
+	for (int i = 0; i < POV_NUMBER_OF_WAVES; i++) {
+		double f = wave_frequency(&next);
+		double len = d3_length(d3_sub(p, wave_source(i)));
+		if (len == 0.0)
+			len = 1.0;
+		if (waves)
+			scalar += cycloidal(len * n->frequency * f + n->phase) / f;
+		else
+			scalar += cycloidal(len * n->frequency + n->phase);
+	}
+	scalar /= POV_NUMBER_OF_WAVES;
+	return waves ? 0.2 * (2.5 + scalar) : 0.5 * (1.0 + scalar);
+}
+
+/* The angle about the z axis of Spiral1Pattern/Spiral2Pattern, in [0, 2 pi). */
+static double spiral_phi(double x, double y, double rad)
+{
+	if (rad == 0.0)
+		return 0.0;
+	double s = fmax(-1.0, fmin(1.0, y / rad));
+	return x < 0.0 ? 1.5 * M_PI - asin(s) : 0.5 * M_PI + asin(s);
+}
+
+/* CLIP_DENSITY of pattern.cpp: 1 - r inside the unit range, 1 below it, 0 above. */
+static double clip_density(double r) { return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r; }
+
+/* QuiltedPattern's quilt_cubic (INV_SQRT_3_4 = 1/sqrt(3/4)). */
+static double quilt_cubic(double t, double p1, double p2)
+{
+	double it = 1.0 - t;
+	return (t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2) * 1.1547005383792517;
+}
+
+/* POV-Ray's fractional part as (int) truncation does it, then folded into [0, 1). */
+static double frac_trunc(double v)
+{
+	double f = v - trunc(v);
+	return f < 0.0 ? f + 1.0 : f;
+}
+
+/* BrickPattern::Evaluate: 0 in the mortar, 1 in a brick; rows alternate by half a brick. */
+static double brick(dvec3 p, dvec3 size, double mortar, double eps)
+{
+	double fudge = eps + mortar;
+	double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
+	if (frac_trunc(y / size.y) <= mortar / size.y)
+		return 0.0;
+	double row = frac_trunc(y / size.y * 0.5);
+	double mw = mortar / size.x, md = mortar / size.z;
+	if (row <= 0.5 ? frac_trunc(x / size.x) <= mw : frac_trunc(x / size.x + 0.5) <= mw)
+		return 0.0;
+	if (row > 0.5 ? frac_trunc(z / size.z) <= md : frac_trunc(z / size.z + 0.5) <= md)
+		return 0.0;
+	return 1.0;
+}
+
+/* HexagonPattern::Evaluate: the x-z plane tiled by hexagons of side 1 in three colours; the
+ * lattice is cut in cells of 0.5 by sqrt(3)/2, and the two slanted ones split on a diagonal. */
+static double hexagon(dvec3 p)
+{
+	static const int straight[2][6] = {{0, 1, 1, 2, 2, 0}, {2, 2, 0, 0, 1, 1}};
+	static const int below[6] = {0, 2, 1, 0, 2, 1}, above[6] = {2, 1, 0, 2, 1, 0};
+	double x = fabs(p.x), z = p.z < 0.0 ? 5.196152424 - fabs(p.z) : p.z;
+	double xs = x / 0.5, zs = z / 0.866025404;
+	xs -= floor(xs / 6.0) * 6.0;
+	zs -= floor(zs / 6.0) * 6.0;
+	int xm = (int)floor(xs) % 6, zm = (int)floor(zs) % 6;
+	if (xm < 0 || zm < 0 || xm > 5 || zm > 5)
+		return 0.0;
+	if (xm == 0 || xm == 5)
+		return straight[0][zm];
+	if (xm == 2 || xm == 3)
+		return straight[1][zm];
+	double xl = xs - xm, zl = zs - zm;
+	if ((xm + zm) % 2 == 1)
+		xl = 1.0 - xl;
+	if (xl == 0.0)
+		xl = 0.0001;
+	return zl / xl < 1.0 ? below[zm] : above[zm];
+}
+
+/* Raw values of the noise-family patterns (NoisePattern, DentsPattern, WrinklesPattern,
+ * GranitePattern, AgatePattern's turbulence). */
+static double raw_noisy(const pattern_node *n, dvec3 p)
+{
+	switch (n->kind) {
+	case PATTERN_DENTS: {
+		double v = pattern_noise(p);
+		return v * v * v;
+	}
+	case PATTERN_WRINKLES: { /* nine octaves, lambda 2, omega 0.5, halved */
+		double v = pattern_noise(p), l = 2.0, o = 0.5;
+		for (int i = 1; i < 10; i++, l *= 2.0, o *= 0.5)
+			v += o * pattern_noise(d3_scale(p, l));
+		return v / 2.0;
+	}
+	case PATTERN_GRANITE: { /* six octaves of |0.5 - noise| at 4 p */
+		double v = 0.0, freq = 1.0;
+		for (int i = 0; i < 6; i++, freq *= 2.0)
+			v += fabs(0.5 - pattern_noise(d3_scale(p, 4.0 * freq))) / freq;
+		return v;
+	}
+	case PATTERN_AGATE: {
+		double turb = n->agate_turb * pattern_turbulence(p, &n->turb);
+		double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+		return v < 0.0 ? 0.0 : pow(fmin(1.0, v), 0.77);
+	}
+	default: /* bozo, spotted, bumps */
+		return pattern_noise(p);
+	}
+}
+
+/* The classic turbulence a pattern handles itself (marble, spiral): Turbulence[X] times the
+ * scalar turbulence, 0 without one. */
+static double own_turb(const pattern_node *n, dvec3 p)
+{
+	return n->turb.amount.x != 0.0 ? n->turb.amount.x * pattern_turbulence(p, &n->turb) : 0.0;
+}
+
+/* WoodPattern: the distance from the z axis, its x and y wobbled by the vector turbulence. */
+static double wood(const pattern_node *n, dvec3 p)
+{
+	double x = p.x, y = p.y;
+	if (n->turb.amount.x != 0.0 || n->turb.amount.y != 0.0) {
+		dvec3 t = pattern_dturbulence(p, &n->turb);
+		x += cycloidal((p.x + t.x) * n->turb.amount.x);
+		y += cycloidal((p.y + t.y) * n->turb.amount.y);
+	}
+	return sqrt(x * x + y * y);
+}
+
+static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
+{
+	switch (n->kind) {
+	case PATTERN_GRADIENT: {
+		double r = d3_dot(p, n->vector);
+		return r > 1.0 ? fmod(r, 1.0) : r;
+	}
+	case PATTERN_RADIAL:
+		return fabs(p.x) < 0.001 && fabs(p.z) < 0.001 ? 0.25 : 0.25 + (atan2(p.x, p.z) + M_PI) / TWO_PI;
+	case PATTERN_ONION: return fmod(d3_length(p), 1.0);
+	case PATTERN_LEOPARD: {
+		double s = (sin(p.x) + sin(p.y) + sin(p.z)) / 3.0;
+		return s * s;
+	}
+	case PATTERN_MARBLE: return p.x + own_turb(n, p);
+	case PATTERN_WOOD: return wood(n, p);
+	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
+					1.0);
+	case PATTERN_CRACKLE: return crackle(p, n->solid);
+	case PATTERN_SPIRAL1:
+	case PATTERN_SPIRAL2: {
+		double rad = sqrt(p.x * p.x + p.y * p.y);
+		double v = p.z + rad + n->arms * spiral_phi(p.x, p.y, rad) / TWO_PI + own_turb(n, p);
+		return n->kind == PATTERN_SPIRAL1 ? v : triangle_wave(rad) + triangle_wave(v);
+	}
+	case PATTERN_QUILTED: {
+		dvec3 v = d3(p.x - floor(p.x) - 0.5, p.y - floor(p.y) - 0.5, p.z - floor(p.z) - 0.5);
+		v = d3_scale(v, quilt_cubic(d3_length(v), n->control0, n->control1));
+		return (fabs(v.x) + fabs(v.y) + fabs(v.z)) / 3.0;
+	}
+	case PATTERN_PLANAR: return clip_density(fabs(p.y));
+	case PATTERN_BOXED: return clip_density(fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
+	case PATTERN_CYLINDRICAL: return clip_density(sqrt(p.x * p.x + p.z * p.z));
+	case PATTERN_SPHERICAL: return clip_density(d3_length(p));
+	case PATTERN_RIPPLES: return wave_sum(p, n, false);
+	case PATTERN_WAVES: return wave_sum(p, n, true);
+	default: return 0.0;
+	}
+}
+
+/* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
+ * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
+
+static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps)
+{
+	switch (n->kind) {
+	case PATTERN_CHECKER: /* CheckerPattern::Evaluate */
+		return (long long)(floor(p.x + eps) + floor(p.y + eps) + floor(p.z + eps)) & 1
+			       ? 1.0
+			       : 0.0;
+	case PATTERN_HEXAGON: return hexagon(p);
+	case PATTERN_BRICK: return brick(p, n->vector, n->mortar, eps);
+	case PATTERN_BOZO:
+	case PATTERN_SPOTTED:
+	case PATTERN_BUMPS:
+	case PATTERN_DENTS:
+	case PATTERN_WRINKLES:
+	case PATTERN_GRANITE:
+	case PATTERN_AGATE: return raw_noisy(n, p);
+	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
+		float c[5];
+		if (!pg || n->child < 0)
+			return 0.0;
+		eval_depth(pg, (uint32_t)n->child, p, eps, 0, c);
+		return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+	}
+	default: return raw_shapes(n, p, eps);
+	}
+}
+
+double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, POV_EPSILON); }
+
+static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
+
+dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
+{
+	switch (w->kind) {
+	case WARP_TRANSFORM: return xform_inv_point(&w->xf, p);
+	case WARP_TURBULENCE: return d3_add(p, d3_mul(pattern_dturbulence(p, &w->turb), w->turb.amount));
+	case WARP_REPEAT: { /* RepeatWarp::WarpPoint */
+		double *c = w->axis == 0 ? &p.x : w->axis == 1 ? &p.y : &p.z;
+		double blk = floor(*c / w->width);
+		*c -= blk * w->width;
+		if ((long long)blk & 1) {
+			p = d3_mul(p, w->flip);
+			double f = w->axis == 0 ? w->flip.x : w->axis == 1 ? w->flip.y : w->flip.z;
+			if (f < 0.0)
+				*c += w->width;
+		}
+		return d3_add(p, d3_scale(w->offset, blk));
+	}
+	case WARP_BLACK_HOLE: { /* BlackHoleWarp::WarpPoint, type 0 */
+		dvec3 c = w->center;
+		if (w->repeat.x > 0.0)
+			c.x += w->repeat.x * floor(p.x / w->repeat.x);
+		if (w->repeat.y > 0.0)
+			c.y += w->repeat.y * floor(p.y / w->repeat.y);
+		if (w->repeat.z > 0.0)
+			c.z += w->repeat.z * floor(p.z / w->repeat.z);
+		dvec3 d = d3_sub(p, c);
+		double len = d3_length(d);
+		if (len >= w->radius)
+			return p;
+		double s = fmin(1.0, pow((w->radius - len) / w->radius, w->falloff) * w->strength);
+		return d3_add(p, d3_scale(d, w->inverse ? -s : s));
+	}
+	}
+	return p;
+}
+
+/* Warp_EPoint's last step: each coordinate within POV-Ray's COORDINATE_LIMIT (warp.cpp), and a
+ * NaN made 0, so no pattern meets an infinity or a NaN. */
+static double limit_coord(double v)
+{
+	if (!(v == v))
+		return 0.0;
+	return v > POV_COORDINATE_LIMIT ? POV_COORDINATE_LIMIT : v < -POV_COORDINATE_LIMIT ? -POV_COORDINATE_LIMIT : v;
+}
+
+static dvec3 limit_point(dvec3 p) { return d3(limit_coord(p.x), limit_coord(p.y), limit_coord(p.z)); }
+
+double pattern_inv_gain(const xform *t)
+{
+	double g = 0.0;
+	for (int r = 0; r < 3; r++)
+		g = fmax(g, fabs(t->inv[r][0]) + fabs(t->inv[r][1]) + fabs(t->inv[r][2]));
+	return g;
+}
+
+/* p through n's warps; *eps (a length) follows it through the transforms. */
+static dvec3 warped(const pattern_prog *pg, const pattern_node *n, dvec3 p, double *eps)
+{
+	p = limit_point(p);
+	for (uint32_t i = 0; i < n->n_warps; i++) {
+		const pattern_warp *w = &pg->warps[n->warp0 + i];
+		p = pattern_warp_point(w, p);
+		if (w->kind == WARP_TRANSFORM)
+			*eps *= pattern_inv_gain(&w->xf);
+	}
+	/* Classic turbulence acts in the pattern's own space, after its transforms (POV-Ray keeps
+	 * it first in the warp list, which is applied last to first). */
+	if (!n->turb_in_pattern && (n->turb.amount.x != 0.0 || n->turb.amount.y != 0.0 || n->turb.amount.z != 0.0))
+		p = d3_add(p, d3_mul(pattern_dturbulence(p, &n->turb), n->turb.amount));
+	return limit_point(p);
+}
+
+double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)
+{
+	double eps = POV_EPSILON;
+	dvec3 q = warped(pg, n, p, &eps);
+	double raw = raw_eps(pg, n, q, eps);
+	if (is_block(n->kind) || n->kind == PATTERN_PLAIN || n->kind == PATTERN_IMAGE)
+		return raw;
+	return pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
+}
+
+static void finite5(float c[5])
+{
+	for (int i = 0; i < 5; i++)
+		if (!isfinite(c[i]))
+			c[i] = 0.0f;
+}
+
+
+/* An entry's colour at p: its own, or its pigment's. */
+static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, double eps, int depth, float out[5])
+{
+	if (e->node >= 0 && depth < PATTERN_MAX_DEPTH) {
+		eval_depth(pg, (uint32_t)e->node, p, eps, depth + 1, out);
+		return;
+	}
+	for (int i = 0; i < 5; i++)
+		out[i] = e->node >= 0 ? 0.0f : e->color[i];
+}
+
+static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, double eps, int depth,
+		       float out[5])
+{
+	const pattern_entry *e = pg->entries + n->entry0;
+	uint32_t k = n->n_entries;
+	if (k == 0) {
+		for (int i = 0; i < 5; i++)
+			out[i] = 0.0f;
+		return;
+	}
+	if (k == 1 || v <= e[0].value) {
+		entry_color(pg, &e[0], p, eps, depth, out);
+		return;
+	}
+	if (v >= e[k - 1].value) {
+		entry_color(pg, &e[k - 1], p, eps, depth, out);
+		return;
+	}
+	uint32_t j = 1;
+	while (j < k - 1 && e[j].value <= v) /* the first entry above v: e[j-1].value <= v < e[j].value */
+		j++;
+	double span = e[j].value - e[j - 1].value;
+	double t = span > 0.0 ? (v - e[j - 1].value) / span : 1.0;
+	float a[5], b[5];
+	entry_color(pg, &e[j - 1], p, eps, depth, a);
+	entry_color(pg, &e[j], p, eps, depth, b);
+	for (int i = 0; i < 5; i++)
+		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
+}
+
+/* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
+ * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
+ * (u the angle about y, v = y); repeated unless once, outside which it is clear. */
+static void image_color(const pattern_node *n, dvec3 p, float out[5])
+{
+	double u = p.x, v = p.y;
+	bool inside = true;
+	if (n->map_type == 1 || n->map_type == 2) {
+		double len = d3_length(p);
+		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
+		double r = sqrt(x * x + z * z), theta = 0.0;
+		if (r > 0.0) {
+			theta = acos(fmax(-1.0, fmin(1.0, x / r)));
+			if (z < 0.0)
+				theta = TWO_PI - theta;
+		}
+		u = theta / TWO_PI;
+		v = n->map_type == 1 ? 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI : p.y;
+		inside = len > 0.0 && (n->map_type == 1 || r > 0.0);
+	}
+	if (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0))
+		inside = false;
+	if (!inside || !n->img) {
+		out[0] = out[1] = out[2] = out[3] = 0.0f, out[4] = 1.0f;
+		return;
+	}
+	float c[4];
+	if (n->interpolate) {
+		image_bilinear(n->img, (float)(u - floor(u)), (float)(v - floor(v)), c);
+	} else { /* the nearest texel */
+		int w = n->img->width, h = n->img->height;
+		int ix = (int)fmin(w - 1, floor((u - floor(u)) * w)), iy = (int)fmin(h - 1, floor((1.0 - (v - floor(v))) * h));
+		for (int i = 0; i < 4; i++)
+			c[i] = n->img->rgba[((size_t)iy * w + ix) * 4 + i];
+	}
+	out[0] = c[0], out[1] = c[1], out[2] = c[2];
+	out[3] = n->filter_all, out[4] = n->transmit_all;
+}
+
+void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])
+{
+	map_lookup(pg, n, v, p, POV_EPSILON, depth, out);
+}
+
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
+{
+	const pattern_node *n = &pg->nodes[node];
+	if (n->kind == PATTERN_PLAIN) {
+		for (int i = 0; i < 5; i++)
+			out[i] = n->color[i];
+		return;
+	}
+	dvec3 q = warped(pg, n, p, &eps);
+	if (n->kind == PATTERN_IMAGE) {
+		image_color(n, q, out);
+	} else if (is_block(n->kind)) {
+		uint32_t i = (uint32_t)raw_eps(pg, n, q, eps);
+		if (i < n->n_entries)
+			entry_color(pg, &pg->entries[n->entry0 + i], q, eps, depth, out);
+		else
+			out[0] = out[1] = out[2] = out[3] = out[4] = 0.0f;
+	} else {
+		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
+		map_lookup(pg, n, v, q, eps, depth, out);
+	}
+	finite5(out);
+}
+
+void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5])
+{
+	eval_depth(pg, node, p, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+}
+
+pattern_node pattern_node_default(pattern_kind kind)
+{
+	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
+			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
+			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
+			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
+	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2
+			 ? WAVE_TRIANGLE
+			 : WAVE_RAMP;
+	n.turb_in_pattern = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 ||
+			    kind == PATTERN_SPIRAL2;
+	if (kind == PATTERN_QUILTED)
+		n.frequency = 0.0; /* QuiltedPattern's constructor */
+	if (kind == PATTERN_BRICK)
+		n.vector = d3(8.0, 3.0, 4.5), n.mortar = 0.5 - 2.0 * POV_EPSILON;
+	return n;
+}
+
+/* pattern.cpp's gaDefaultBlendMapEntries_*: the colours a pattern shows without a map. */
+int pattern_default_map(pattern_kind kind, pattern_entry out[6])
+{
+	static const double agate[6][4] = {{0.0, 1, 1, 1},	  {0.5, 0.95, 0.75, 0.5}, {0.5, 0.9, 0.7, 0.5},
+					   {0.6, 0.9, 0.7, 0.4},  {0.6, 1.0, 0.7, 0.4},	  {1.0, 0.6, 0.3, 0.0}};
+	static const double bozo[6][4] = {{0.4, 1, 1, 1}, {0.4, 0, 1, 0}, {0.6, 0, 1, 0},
+					  {0.6, 0, 0, 1}, {0.8, 0, 0, 1}, {0.8, 1, 0, 0}};
+	static const double brick[2][4] = {{0.0, 0.5, 0.5, 0.5}, {1.0, 0.6, 0.15, 0.15}};
+	static const double checker[2][4] = {{0.0, 0, 0, 1}, {1.0, 0, 1, 0}};
+	static const double hexagon[3][4] = {{0.0, 0, 0, 1}, {1.0, 0, 1, 0}, {2.0, 1, 0, 0}};
+	static const double marble[3][4] = {{0.0, 0.9, 0.8, 0.8}, {0.9, 0.9, 0.08, 0.08}, {0.9, 0, 0, 0}};
+	static const double radial[4][4] = {{0.0, 0, 1, 1}, {0.333, 1, 1, 0}, {0.666, 1, 0, 1}, {1.0, 0, 1, 1}};
+	static const double wood[2][4] = {{0.6, 0.666, 0.312, 0.2}, {0.6, 0.4, 0.1333, 0.066}};
+	static const double gray[2][4] = {{0.0, 0, 0, 0}, {1.0, 1, 1, 1}};
+	const double(*t)[4] = gray;
+	int n = 2;
+	switch (kind) {
+	case PATTERN_AGATE: t = agate, n = 6; break;
+	case PATTERN_BOZO: t = bozo, n = 6; break;
+	case PATTERN_BRICK: t = brick, n = 2; break;
+	case PATTERN_CHECKER: t = checker, n = 2; break;
+	case PATTERN_HEXAGON: t = hexagon, n = 3; break;
+	case PATTERN_MARBLE: t = marble, n = 3; break;
+	case PATTERN_RADIAL: t = radial, n = 4; break;
+	case PATTERN_WOOD: t = wood, n = 2; break;
+	default: break;
+	}
+	for (int i = 0; i < n; i++)
+		out[i] = (pattern_entry){.value = t[i][0],
+					 .color = {(float)t[i][1], (float)t[i][2], (float)t[i][3], 0.0f, 0.0f},
+					 .node = -1};
+	return n;
+}
+
+/* ---- normals ------------------------------------------------------------------------------ */
+
+/* The sum over POV-Ray's wave sources of normal.cpp's ripples (waves: with each source's
+ * frequency): each pushes the normal along p - source by the wave's sine. */
+static dvec3 wave_normal(const pattern_node *n, dvec3 p, bool waves)
+{
+	uint32_t next = (uint32_t)-560851967;
+	dvec3 d = d3(0, 0, 0);
+	for (int i = 0; i < POV_NUMBER_OF_WAVES; i++) {
+		double f = wave_frequency(&next);
+		dvec3 q = d3_sub(p, wave_source(i));
+		double len = d3_length(q);
+		if (len == 0.0)
+			len = 1.0;
+		double s = waves ? cycloidal(len * n->frequency * f + n->phase) * n->bump_amount / f
+				 : cycloidal(len * n->frequency + n->phase) * n->bump_amount;
+		d = d3_add(d, d3_scale(q, s / (len * POV_NUMBER_OF_WAVES)));
+	}
+	return d;
+}
+
+/* normal.cpp's wrinkles: ten octaves of |vector noise| / 2^i. */
+static dvec3 wrinkles_normal(dvec3 p)
+{
+	dvec3 r = d3(0, 0, 0);
+	double scale = 1.0;
+	for (int i = 0; i < 10; i++, scale *= 2.0) {
+		dvec3 v = pattern_dnoise(d3_scale(p, scale));
+		r = d3_add(r, d3(fabs(v.x) / scale, fabs(v.y) / scale, fabs(v.z) / scale));
+	}
+	return r;
+}
+
+/* Perturb_Normal's slope of any pattern: its value at the four corners of a tetrahedron of size
+ * accuracy around p, times -5 amount (POV-Ray's "fudge factor") scaled to the step. */
+static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps)
+{
+	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
+					     {-0.471404521, -0.333333333, 0.816496581},
+					     {-0.471404521, -0.333333333, -0.816496581},
+					     {0.0, 1.0, 0.0}};
+	double delta = n->accuracy > 0 ? n->accuracy : 0.02;
+	double amount = n->bump_amount * -5.0 * 0.02 / delta;
+	dvec3 d = d3(0, 0, 0);
+	for (int i = 0; i < 4; i++) {
+		dvec3 v = d3(pyramid[i][0], pyramid[i][1], pyramid[i][2]);
+		dvec3 at = d3_add(q, d3_scale(v, delta));
+		double value = raw_eps(pg, n, at, eps);
+		if (!is_block(n->kind))
+			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
+		d = d3_add(d, d3_scale(v, value * amount));
+	}
+	return d;
+}
+
+dvec3 pattern_normal_through(const xform *t, dvec3 n, bool into)
+{
+	const double(*m)[4] = into ? t->m : t->inv; /* M^T n into, M^-T n out */
+	return d3(m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+		  m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z);
+}
+
+/* POV-Ray's greyscale (0.297 r + 0.589 g + 0.114 b) of texel (x, y) (row 0 the top), wrapped. */
+static double texel_grey(const image *img, int x, int y)
+{
+	x = ((x % img->width) + img->width) % img->width, y = ((y % img->height) + img->height) % img->height;
+	const float *c = img->rgba + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+	return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
+
+/* imageutil.cpp's bump_map: the image's grey at the mapped texel and at its two lower
+ * neighbours (left and right) make a small triangle of heights times amount; its normal,
+ * expressed in a frame of the surface normal and the world's y axis, is the new normal. */
+static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
+{
+	double u = q.x, v = q.y;
+	if (!n->img || (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0)))
+		return nrm;
+	int w = n->img->width, h = n->img->height;
+	int x = (int)floor((u - floor(u)) * w), y = (int)floor((1.0 - (v - floor(v))) * h);
+	double a = n->bump_amount;
+	dvec3 p1 = d3(0, a * texel_grey(n->img, x, y), 0), p2 = d3(-1, a * texel_grey(n->img, x - 1, y + 1), 1);
+	dvec3 p3 = d3(1, a * texel_grey(n->img, x + 1, y + 1), 1);
+	dvec3 bump = d3_normalize(d3_cross(d3_sub(p3, p2), d3_sub(p1, p2)));
+	dvec3 yp = nrm, xp = d3_cross(nrm, d3(0, 1, 0));
+	double len = d3_length(xp);
+	if (len < 1e-10) {
+		yp = d3(0, nrm.y >= 0 ? 1 : -1, 0), xp = d3(1, 0, 0);
+		len = 1.0;
+	}
+	xp = d3_scale(xp, 1.0 / len);
+	dvec3 zp = d3_normalize(d3_cross(xp, yp));
+	return d3_sub(d3_add(d3_scale(xp, bump.x), d3_scale(yp, bump.y)), d3_scale(zp, bump.z));
+}
+
+void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+{
+	const pattern_node *n = &pg->nodes[node];
+	dvec3 v = *nrm;
+	for (uint32_t i = 0; i < n->n_warps; i++)
+		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
+			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, true);
+	double eps = POV_EPSILON;
+	dvec3 q = warped(pg, n, p, &eps);
+	switch (n->kind) {
+	case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
+	case PATTERN_DENTS: {
+		double k = pattern_noise(q);
+		v = d3_add(v, d3_scale(pattern_dnoise(q), k * k * k * n->bump_amount));
+		break;
+	}
+	case PATTERN_WRINKLES: v = d3_add(v, d3_scale(wrinkles_normal(q), n->bump_amount)); break;
+	case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
+	case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
+	case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
+	case PATTERN_PLAIN: break;
+	default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
+	}
+	for (uint32_t i = n->n_warps; i-- > 0;)
+		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
+			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, false);
+	if (isfinite(v.x) && isfinite(v.y) && isfinite(v.z))
+		*nrm = v;
+}

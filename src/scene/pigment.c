@@ -1,0 +1,78 @@
+/* pigment.c - the pigment tree's names, POV-Ray's defaults for a node, and its dump. */
+#include "scene/pigment.h"
+
+#include <string.h>
+
+static const char *const names[] = {
+#define SCENE_PAT_NAME(e, s) s,
+	SCENE_PATTERNS(SCENE_PAT_NAME)
+#undef SCENE_PAT_NAME
+};
+
+const char *scene_pattern_name(scene_pattern_kind k) { return k < SCENE_PAT_COUNT ? names[k] : "?"; }
+
+scene_pattern_kind scene_pattern_find(const char *s, size_t n)
+{
+	for (int k = SCENE_PAT_CHECKER; k < SCENE_PAT_COUNT; k++)
+		if (strlen(names[k]) == n && !memcmp(names[k], s, n))
+			return (scene_pattern_kind)k;
+	return SCENE_PAT_COUNT;
+}
+
+int scene_pattern_blocks(scene_pattern_kind k)
+{
+	return k == SCENE_PAT_CHECKER || k == SCENE_PAT_BRICK ? 2 : k == SCENE_PAT_HEXAGON ? 3 : 0;
+}
+
+/* POV-Ray 3.7's constructors (source/core/material/pattern.cpp): ContinuousPattern's ramp wave
+ * of frequency 1; MarblePattern, WoodPattern, SpiralPattern's triangle wave; QuiltedPattern's
+ * frequency 0 and controls 1; BrickPattern's size <8, 3, 4.5> and mortar 0.5; spiral's one arm;
+ * agate_turb 1; GenericTurbulenceWarp's octaves 6, omega 0.5, lambda 2; gradient's <0, 1, 0>
+ * only when none is written (the parser requires one, as POV-Ray does). */
+scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
+{
+	scene_pigment p = {.loc = loc, .kind = k, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0),
+			   .bump_amount = 0.5, .accuracy = 0.02, .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
+			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
+	if (k == SCENE_PAT_MARBLE || k == SCENE_PAT_WOOD || k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2)
+		p.wave = SCENE_WAVE_TRIANGLE;
+	if (k == SCENE_PAT_QUILTED)
+		p.frequency = 0.0;
+	if (k == SCENE_PAT_BRICK)
+		p.vector = d3(8.0, 3.0, 4.5);
+	if (k == SCENE_PAT_IMAGE)
+		p.interpolate = false;
+	return p;
+}
+
+static const char *const wave_names[] = {"ramp_wave", "triangle_wave", "sine_wave", "scallop_wave", "cubic_wave",
+					 "poly_wave"};
+
+void scene_pigment_dump(FILE *o, const scene_pigment *pg)
+{
+	if (pg->kind == SCENE_PAT_PLAIN) {
+		fprintf(o, "pigment rgbft <%g, %g, %g, %g, %g>", pg->color[0], pg->color[1], pg->color[2], pg->color[3],
+			pg->color[4]);
+		return;
+	}
+	if (pg->kind == SCENE_PAT_IMAGE) {
+		fprintf(o, "pigment image_map \"%s\" map_type %d%s%s", pg->image ? pg->image : "", pg->map_type,
+			pg->once ? " once" : "", pg->interpolate ? " interpolate" : "");
+	} else {
+		fprintf(o, "pigment %s %s", scene_pattern_name(pg->kind), wave_names[pg->wave]);
+		if (pg->frequency != 1.0 || pg->phase != 0.0)
+			fprintf(o, " frequency %g phase %g", pg->frequency, pg->phase);
+		if (pg->entries)
+			fprintf(o, " %s %u", pg->pigment_map ? "pigment_map" : pg->block_list ? "list" : "color_map",
+				pg->n_entries);
+	}
+	if (pg->turb.amount.x != 0.0 || pg->turb.amount.y != 0.0 || pg->turb.amount.z != 0.0)
+		fprintf(o, " turbulence <%g, %g, %g> octaves %d omega %g lambda %g", pg->turb.amount.x, pg->turb.amount.y,
+			pg->turb.amount.z, pg->turb.octaves, pg->turb.omega, pg->turb.lambda);
+	if (pg->n_warps)
+		fprintf(o, " warps %u", pg->n_warps);
+	if (pg->uv_mapping)
+		fprintf(o, " uv_mapping");
+	if (pg->is_normal)
+		fprintf(o, " normal %g", pg->bump_amount);
+}

@@ -1,0 +1,389 @@
+/* test_pattern: POV-Ray's patterns against values worked out by hand from POV-Ray 3.7's
+ * definitions (source/core/material/pattern.cpp: each table row is the formula evaluated at that
+ * point), the wave functions, the colour map's interpolation, block lists, pigment maps, warps,
+ * image_map's planar/spherical/cylindrical mappings, and the noise's and turbulence's range. */
+#include "check.h"
+#include "render/pattern.h"
+
+#include <string.h>
+
+typedef struct row {
+	pattern_kind kind;
+	dvec3 p;
+	double want;
+} row;
+
+static double raw(pattern_kind k, dvec3 p)
+{
+	pattern_node n = pattern_node_default(k);
+	if (k == PATTERN_GRADIENT)
+		n.vector = d3(1, 0, 0);
+	return pattern_raw(&n, p);
+}
+
+static void check_table(void)
+{
+	const double half_pi = M_PI / 2.0;
+	static const double quilt = 0.25 * (0.015625 + 0.421875 + 0.140625) * 1.1547005383792517 / 3.0;
+	const row rows[] = {
+		/* CheckerPattern: (floor x + floor y + floor z) & 1 */
+		{PATTERN_CHECKER, {0.5, 0.5, 0.5}, 0},
+		{PATTERN_CHECKER, {1.5, 0.5, 0.5}, 1},
+		{PATTERN_CHECKER, {-0.5, 0.5, 0.5}, 1},
+		{PATTERN_CHECKER, {-0.5, -0.5, 0.5}, 0},
+		{PATTERN_CHECKER, {2.0, 0.0, 0.0}, 0}, /* on a plane: floor(2 + eps) */
+		/* GradientPattern: p . g, and fmod 1 above 1 */
+		{PATTERN_GRADIENT, {0.3, 9, 9}, 0.3},
+		{PATTERN_GRADIENT, {1.3, 0, 0}, 0.3},
+		{PATTERN_GRADIENT, {-0.25, 0, 0}, -0.25},
+		/* RadialPattern: 0.25 + (atan2(x, z) + pi) / 2 pi; 0.25 on the axis */
+		{PATTERN_RADIAL, {1, 0, 0}, 1.0},
+		{PATTERN_RADIAL, {0, 5, 1}, 0.75},
+		{PATTERN_RADIAL, {-1, 0, 0}, 0.5},
+		{PATTERN_RADIAL, {0, 3, 0}, 0.25},
+		/* OnionPattern: fmod(|p|, 1) */
+		{PATTERN_ONION, {0.3, 0.4, 0}, 0.5},
+		{PATTERN_ONION, {1.2, 1.6, 0}, 0.0},
+		/* LeopardPattern: ((sin x + sin y + sin z) / 3)^2 */
+		{PATTERN_LEOPARD, {half_pi, half_pi, half_pi}, 1.0},
+		{PATTERN_LEOPARD, {half_pi, 0, 0}, 1.0 / 9.0},
+		/* MarblePattern without turbulence: x */
+		{PATTERN_MARBLE, {0.7, 3, 3}, 0.7},
+		/* WoodPattern without turbulence: the distance from the z axis */
+		{PATTERN_WOOD, {0.3, 0.4, 7}, 0.5},
+		/* CLIP_DENSITY patterns: 1 - r in [0, 1] */
+		{PATTERN_PLANAR, {5, 0.25, 5}, 0.75},
+		{PATTERN_PLANAR, {0, -2, 0}, 0.0},
+		{PATTERN_BOXED, {0.5, -0.7, 0.2}, 0.3},
+		{PATTERN_CYLINDRICAL, {0.6, 5, 0.8}, 0.0},
+		{PATTERN_CYLINDRICAL, {0.3, 5, 0.4}, 0.5},
+		{PATTERN_SPHERICAL, {0.3, 0.4, 0}, 0.5},
+		/* Spiral1Pattern, one arm: z + r + phi / 2 pi, phi = pi/2 + asin(y / r) for x >= 0 */
+		{PATTERN_SPIRAL1, {1, 0, 0}, 1.25},
+		{PATTERN_SPIRAL1, {-1, 0, 0.5}, 0.5 + 1 + 0.75},
+		/* Spiral2Pattern: triangle(r) + triangle(spiral1) */
+		{PATTERN_SPIRAL2, {1, 0, 0}, 0.0 + 0.5},
+		/* QuiltedPattern, controls 1 1: v = frac - 0.5, v * quilt_cubic(|v|), (|x|+|y|+|z|) / 3 */
+		{PATTERN_QUILTED, {0.5, 0.5, 0.5}, 0.0},
+		{PATTERN_QUILTED, {0.75, 0.5, 0.5}, quilt},
+		/* BrickPattern, <8, 3, 4.5> mortar 0.5 */
+		{PATTERN_BRICK, {1, 1.5, 1}, 1},
+		{PATTERN_BRICK, {-0.2, 1.5, 1}, 0},
+		{PATTERN_BRICK, {1, -0.3, 1}, 0},
+		{PATTERN_BRICK, {3.7, 4.5, 1}, 0}, /* the next row is shifted by half a brick: mortar at x = 3.5 */
+		/* HexagonPattern: 0 at the origin; cells of 0.5 x sqrt(3)/2 */
+		{PATTERN_HEXAGON, {0, 0, 0}, 0},
+		{PATTERN_HEXAGON, {0, 0, 1.0}, 1},
+		{PATTERN_HEXAGON, {0, 0, 3.0}, 2},
+		{PATTERN_HEXAGON, {1.25, 0, 0.4}, 2},
+		{PATTERN_HEXAGON, {-1.25, 7, 0.4}, 2}, /* |x|: symmetric in x */
+	};
+	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+		double got = raw(rows[i].kind, rows[i].p);
+		CHECK(fabs(got - rows[i].want) < 1e-9, "row %zu (kind %d at <%g, %g, %g>): %.12g, want %.12g", i,
+		      rows[i].kind, rows[i].p.x, rows[i].p.y, rows[i].p.z, got, rows[i].want);
+	}
+}
+
+static void check_waves(void)
+{
+	CHECK_NEAR(pattern_wave_apply(WAVE_RAMP, 0.3, 1, 0, 1), 0.3, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_RAMP, -0.2, 1, 0, 1), 0.8, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_RAMP, 0.3, 2, 0.1, 1), 0.7, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_RAMP, 1.0, 1, 0, 1), 1.0, 1e-12); /* fmod by 1.00001 */
+	CHECK_NEAR(pattern_wave_apply(WAVE_TRIANGLE, 0.25, 1, 0, 1), 0.5, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_TRIANGLE, 0.5, 1, 0, 1), 1.0, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_TRIANGLE, 0.75, 1, 0, 1), 0.5, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_SINE, 0.25, 1, 0, 1), 1.0, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_SINE, 0.75, 1, 0, 1), 0.0, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_SCALLOP, 0.5, 1, 0, 1), sin(M_PI / 2), 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_SCALLOP, 0.25, 1, 0, 1), sin(M_PI / 4), 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_CUBIC, 0.25, 1, 0, 1), 0.15625, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_POLY, 0.5, 1, 0, 2), 0.25, 1e-12);
+	CHECK_NEAR(pattern_wave_apply(WAVE_RAMP, 0.3, 0, 0, 1), 0.3, 1e-12); /* frequency 0: untouched */
+}
+
+static pattern_entry col(double v, float r, float g, float b)
+{
+	return (pattern_entry){.value = v, .color = {r, g, b, 0, 0}, .node = -1};
+}
+
+static void check5(const char *what, const float got[5], float r, float g, float b)
+{
+	CHECK(fabsf(got[0] - r) < 1e-6f && fabsf(got[1] - g) < 1e-6f && fabsf(got[2] - b) < 1e-6f,
+	      "%s: <%g, %g, %g>, want <%g, %g, %g>", what, got[0], got[1], got[2], r, g, b);
+}
+
+/* A gradient x with the map [0 black] [0.5 red] [0.5 blue] [1 white]. */
+static void check_colour_map(void)
+{
+	pattern_entry e[4] = {col(0, 0, 0, 0), col(0.5, 1, 0, 0), col(0.5, 0, 0, 1), col(1, 1, 1, 1)};
+	pattern_node n = pattern_node_default(PATTERN_GRADIENT);
+	n.vector = d3(1, 0, 0), n.n_entries = 4;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 4};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.25, 0, 0), 0, c);
+	check5("between black and red", c, 0.5f, 0, 0);
+	pattern_eval(&pg, 0, d3(0.75, 0, 0), 0, c);
+	check5("between blue and white", c, 0.5f, 0.5f, 1);
+	pattern_eval(&pg, 0, d3(0.49, 0, 0), 0, c);
+	check5("just below the step", c, 0.98f, 0, 0);
+	pattern_eval(&pg, 0, d3(0.51, 0, 0), 0, c);
+	check5("just above the step", c, 0.02f, 0.02f, 1);
+	pattern_map_lookup(&pg, &n, -1.0, d3(0, 0, 0), 0, c);
+	check5("below the first entry", c, 0, 0, 0);
+	pattern_map_lookup(&pg, &n, 2.0, d3(0, 0, 0), 0, c);
+	check5("above the last entry", c, 1, 1, 1);
+	/* The filter and transmit channels interpolate too. */
+	e[0].color[4] = 1.0f;
+	pattern_eval(&pg, 0, d3(0.25, 0, 0), 0, c);
+	CHECK_NEAR(c[4], 0.5, 1e-6);
+}
+
+/* checker with a colour and a pigment (a gradient of its own), and a pigment_map. */
+static void check_nested(void)
+{
+	pattern_node nodes[2] = {pattern_node_default(PATTERN_CHECKER), pattern_node_default(PATTERN_GRADIENT)};
+	nodes[0].entry0 = 0, nodes[0].n_entries = 2;
+	nodes[1].vector = d3(1, 0, 0), nodes[1].entry0 = 2, nodes[1].n_entries = 2;
+	pattern_entry e[4] = {col(0, 1, 0, 0), {.value = 1, .node = 1}, col(0, 0, 0, 0), col(1, 0, 1, 0)};
+	pattern_prog pg = {.nodes = nodes, .n_nodes = 2, .entries = e, .n_entries = 4};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.5, 0.5, 0.5), 0, c);
+	check5("checker's first entry", c, 1, 0, 0);
+	pattern_eval(&pg, 0, d3(1.5, 0.5, 0.5), 0, c);
+	check5("checker's second: the gradient's value 1.5 -> 0.5", c, 0, 0.5f, 0);
+	/* The same as a pigment_map of a gradient over x: entry 1 at 1 is the gradient pigment. */
+	nodes[0] = pattern_node_default(PATTERN_GRADIENT);
+	nodes[0].vector = d3(0, 1, 0), nodes[0].entry0 = 0, nodes[0].n_entries = 2;
+	pattern_eval(&pg, 0, d3(0.25, 0.5, 0), 0, c); /* half red, half the gradient's 0.25 green */
+	check5("pigment_map", c, 0.5f, 0.125f, 0);
+}
+
+/* A point within tol of a checker's boundary takes POV-Ray's side, floor(x + EPSILON): a float
+ * hit on the face x = 1 of a box, 1e-9 short of it, is in the cell at 1 like the face itself. */
+static void check_tolerance(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_CHECKER);
+	n.n_entries = 2;
+	pattern_entry e[2] = {col(0, 1, 0, 0), col(1, 0, 0, 1)};
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 2};
+	float c[5];
+	pattern_eval(&pg, 0, d3(1.0, 0.5, 0.5), 0, c);
+	check5("on the face", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1.0 - 1e-9, 0.5, 0.5), 1e-7, c);
+	check5("just short of the face, within tol", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1.0 - 1e-9, 0.5, 0.5), 0, c);
+	check5("just short of the face, exact", c, 1, 0, 0);
+}
+
+/* pigment_pattern: the grey of its pigment (a plain colour here) selects in its colour map. */
+static void check_pigment_pattern(void)
+{
+	pattern_node nodes[2] = {pattern_node_default(PATTERN_PIGMENT_PATTERN), pattern_node_default(PATTERN_PLAIN)};
+	nodes[0].child = 1, nodes[0].n_entries = 2;
+	nodes[1].color[0] = 1, nodes[1].color[1] = 0.5f, nodes[1].color[2] = 0;
+	pattern_entry e[2] = {col(0, 0, 0, 0), col(1, 1, 1, 1)};
+	pattern_prog pg = {.nodes = nodes, .n_nodes = 2, .entries = e, .n_entries = 2};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.3, 0.2, 0.1), 0, c);
+	float g = 0.297f + 0.589f * 0.5f;
+	check5("grey of <1, 0.5, 0>", c, g, g, g);
+}
+
+static void check_warps(void)
+{
+	pattern_warp rep = {.kind = WARP_REPEAT, .axis = 0, .width = 1, .flip = d3(1, 1, 1)};
+	dvec3 q = pattern_warp_point(&rep, d3(1.3, 0.2, 0));
+	CHECK_NEAR(q.x, 0.3, 1e-12);
+	rep.offset = d3(0, 1, 0);
+	q = pattern_warp_point(&rep, d3(2.3, 0.2, 0));
+	CHECK_NEAR(q.y, 2.2, 1e-12); /* two blocks: offset twice */
+	rep.flip = d3(-1, 1, 1), rep.offset = d3(0, 0, 0);
+	q = pattern_warp_point(&rep, d3(1.3, 0, 0));
+	CHECK_NEAR(q.x, 0.7, 1e-12); /* an odd block is mirrored within its width */
+	pattern_warp bh = {.kind = WARP_BLACK_HOLE, .radius = 1, .strength = 1, .falloff = 2};
+	q = pattern_warp_point(&bh, d3(0.5, 0, 0));
+	CHECK_NEAR(q.x, 0.625, 1e-12); /* p + d ((r - |d|) / r)^2 */
+	q = pattern_warp_point(&bh, d3(2, 0, 0));
+	CHECK_NEAR(q.x, 2.0, 1e-12);
+	bh.inverse = true;
+	q = pattern_warp_point(&bh, d3(0.5, 0, 0));
+	CHECK_NEAR(q.x, 0.375, 1e-12);
+	pattern_warp sc = {.kind = WARP_TRANSFORM};
+	CHECK(xform_scale(d3(2, 2, 2), &sc.xf), "scale");
+	q = pattern_warp_point(&sc, d3(1, 0, 0));
+	CHECK_NEAR(q.x, 0.5, 1e-12);
+	/* Turbulence moves a point by at most |amount| (1 + omega + ...) / 2, each octave's vector
+	 * noise in [-0.5, 0.5]. */
+	pattern_warp tw = {.kind = WARP_TURBULENCE, .turb = {d3(0.5, 0.5, 0.5), 6, 0.5, 2.0}};
+	double most = 0;
+	for (int i = 0; i < 2000; i++) {
+		dvec3 p = d3(i * 0.137, i * 0.071 - 3, i * 0.0191);
+		dvec3 d = d3_sub(pattern_warp_point(&tw, p), p);
+		most = fmax(most, fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))));
+	}
+	CHECK(most <= 0.5 * 0.5 * (2 - 1.0 / 32) + 1e-12 && most > 0.05, "turbulence displacement %g", most);
+}
+
+static void check_noise(void)
+{
+	bool perm_ok = true, seen[256] = {0};
+	for (int i = 0; i < 256; i++) {
+		perm_ok &= !seen[pattern_perm(i)];
+		seen[pattern_perm(i)] = true;
+	}
+	CHECK(perm_ok, "Perlin's table is a permutation of 0..255");
+	CHECK_NEAR(pattern_noise(d3(3, -7, 12)), 0.5, 1e-12); /* gradient noise is 0 on the lattice */
+	double lo = 1, hi = 0, sum = 0, tlo = 10, thi = -10;
+	pattern_turb t = {d3(1, 1, 1), 6, 0.5, 2.0};
+	int n = 20000;
+	for (int i = 0; i < n; i++) {
+		dvec3 p = d3(i * 0.3713, i * 0.1171 + 0.5, i * 0.0533 - 9);
+		double v = pattern_noise(p);
+		lo = fmin(lo, v), hi = fmax(hi, v), sum += v;
+		double tv = pattern_turbulence(p, &t);
+		tlo = fmin(tlo, tv), thi = fmax(thi, tv);
+	}
+	CHECK(lo >= 0 && hi <= 1 && lo < 0.2 && hi > 0.8, "noise range [%g, %g]", lo, hi);
+	CHECK(fabs(sum / n - 0.5) < 0.02, "noise mean %g", sum / n);
+	/* Turbulence: noise + 0.5 noise + ... + 1/32 noise, each in [0, 1]: within [0, 1.96875], about 0.98 on average. */
+	CHECK(tlo >= 0 && thi <= 1.96875 && thi - tlo > 0.8, "turbulence range [%g, %g]", tlo, thi);
+	/* Every noise-based pattern stays in [0, 1] and finite, whatever the point. */
+	const pattern_kind k[] = {PATTERN_BOZO,	   PATTERN_GRANITE, PATTERN_AGATE,   PATTERN_DENTS, PATTERN_WRINKLES,
+				  PATTERN_RIPPLES, PATTERN_WAVES,   PATTERN_CRACKLE, PATTERN_CELLS};
+	const dvec3 odd[] = {{NAN, 0, 0}, {INFINITY, 1, 2}, {1e300, -1e300, 0}, {0, 0, 0}};
+	for (size_t j = 0; j < sizeof k / sizeof *k; j++) {
+		pattern_node nd = pattern_node_default(k[j]);
+		double a = 1, b = 0;
+		for (int i = 0; i < 3000; i++) {
+			double v = pattern_raw(&nd, d3(i * 0.219, i * 0.0137, 1 - i * 0.071));
+			a = fmin(a, v), b = fmax(b, v);
+		}
+		CHECK(a >= 0 && b <= 1 && b > a, "kind %d: range [%g, %g]", k[j], a, b);
+		for (size_t i = 0; i < 4; i++) {
+			pattern_prog pg = {.nodes = &nd, .n_nodes = 1};
+			double v = pattern_value(&pg, &nd, odd[i]);
+			CHECK(v == v, "kind %d at an odd point: NaN", k[j]);
+		}
+	}
+	/* cells: one value per unit cell */
+	pattern_node cells = pattern_node_default(PATTERN_CELLS);
+	CHECK(pattern_raw(&cells, d3(0.1, 0.2, 0.3)) == pattern_raw(&cells, d3(0.9, 0.8, 0.7)), "cells constant in a cell");
+}
+
+/* A 2 x 2 image: red, green on the top row; blue, white below. */
+static void check_image(void)
+{
+	float px[16] = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 1, 1};
+	image img = {.width = 2, .height = 2, .rgba = px};
+	pattern_node n = pattern_node_default(PATTERN_IMAGE);
+	n.img = &img;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 5), 0, c); /* planar: x right, y up, z ignored */
+	check5("planar top left", c, 1, 0, 0);
+	pattern_eval(&pg, 0, d3(0.75, 0.25, -5), 0, c);
+	check5("planar bottom right", c, 1, 1, 1);
+	pattern_eval(&pg, 0, d3(1.25, -0.75, 0), 0, c);
+	check5("planar repeats", c, 0, 0, 1);
+	n.once = true;
+	pattern_eval(&pg, 0, d3(1.25, 0.25, 0), 0, c);
+	CHECK(c[4] == 1.0f && c[0] == 0.0f, "outside a once image: clear (%g, transmit %g)", c[0], c[4]);
+	n.once = false, n.map_type = 1; /* spherical: u from +x towards +z, v the latitude */
+	pattern_eval(&pg, 0, d3(0, 1, 0.1), 0, c);
+	CHECK(c[2] == 0.0f, "spherical north pole: top row");
+	pattern_eval(&pg, 0, d3(0.1, -1, 0.3), 0, c);
+	CHECK(c[2] == 1.0f, "spherical south pole: bottom row");
+	pattern_eval(&pg, 0, d3(0, 0.5, -1), 0, c); /* theta = 3 pi / 2: u = 0.75, upper half */
+	check5("spherical -z, above the equator", c, 0, 1, 0);
+	n.map_type = 2; /* cylindrical: v = y */
+	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c); /* theta = pi / 2: u = 0.25, lower row */
+	check5("cylindrical +z, low", c, 0, 0, 1);
+	n.filter_all = 0.5f, n.transmit_all = 0.25f;
+	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c);
+	CHECK(c[3] == 0.5f && c[4] == 0.25f, "filter all, transmit all: %g %g", c[3], c[4]);
+}
+
+static void check_defaults(void)
+{
+	pattern_entry e[6];
+	CHECK(pattern_default_map(PATTERN_CHECKER, e) == 2 && e[0].color[2] == 1 && e[1].color[1] == 1,
+	      "checker: blue, green");
+	CHECK(pattern_default_map(PATTERN_HEXAGON, e) == 3 && e[2].color[0] == 1, "hexagon: blue, green, red");
+	CHECK(pattern_default_map(PATTERN_GRANITE, e) == 2 && e[1].color[0] == 1, "granite: black to white");
+	CHECK(pattern_node_default(PATTERN_MARBLE).wave == WAVE_TRIANGLE, "marble's triangle wave");
+	CHECK(pattern_node_default(PATTERN_QUILTED).frequency == 0, "quilted's frequency 0");
+}
+
+/* Perturb_Normal: bumps adds amount * DNoise; any other pattern its slope on the tetrahedron,
+ * which for gradient x (value x) is -5 * 0.02 * amount * (4/3) e_x whatever the accuracy (the
+ * four unit vectors of a regular tetrahedron have sum 0 and sum v v^T = 4/3 I); a scale 2 of the
+ * pattern halves the slope and the transpose brings it back. */
+static void check_normals(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_BUMPS);
+	n.bump_amount = 0.8;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+	dvec3 p = d3(0.3, 1.7, -2.2), v = d3(0, 0, 1);
+	pattern_perturb(&pg, 0, p, &v);
+	dvec3 want = d3_add(d3(0, 0, 1), d3_scale(pattern_dnoise(p), 0.8));
+	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "bumps: <%g, %g, %g>", v.x, v.y, v.z);
+	n = pattern_node_default(PATTERN_GRADIENT);
+	n.vector = d3(1, 0, 0), n.bump_amount = 0.3, n.frequency = 0; /* the raw value x, no wrap */
+	for (double acc = 0.01; acc < 0.1; acc *= 3) {
+		n.accuracy = acc;
+		v = d3(0, 1, 0);
+		pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
+		CHECK(fabs(v.x + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9 && fabs(v.z) < 1e-9,
+		      "gradient x's slope at accuracy %g: <%g, %g, %g>", acc, v.x, v.y, v.z);
+	}
+	pattern_warp sc = {.kind = WARP_TRANSFORM};
+	CHECK(xform_scale(d3(2, 2, 2), &sc.xf), "scale");
+	pg.warps = &sc, pg.n_warps = 1, n.warp0 = 0, n.n_warps = 1;
+	v = d3(0, 1, 0);
+	pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
+	/* into: n' = 2 n; slope as before; out: / 2 -> <-0.04 / 2, 1, 0> */
+	CHECK(fabs(v.x + 0.5 * 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9, "scaled slope: <%g, %g, %g>", v.x,
+	      v.y, v.z);
+	/* bump_map: a flat image leaves the normal; a ramp rising to +x tilts it towards -x (the
+	 * triangle of heights faces away from the rise), in the frame of the normal and world y */
+	float flat[4 * 4 * 4], ramp[4 * 4 * 4];
+	for (int i = 0; i < 16; i++)
+		for (int c = 0; c < 4; c++)
+			flat[i * 4 + c] = 0.5f, ramp[i * 4 + c] = c == 3 ? 1.0f : (float)(i % 4) / 3.0f;
+	image fi = {.width = 4, .height = 4, .rgba = flat}, ri = {.width = 4, .height = 4, .rgba = ramp};
+	n = pattern_node_default(PATTERN_IMAGE);
+	n.img = &fi, n.bump_amount = 1.0, n.n_warps = 0;
+	pg.n_warps = 0;
+	v = d3(0, 0, -1);
+	pattern_perturb(&pg, 0, d3(0.4, 0.6, 0), &v);
+	CHECK(d3_length(d3_sub(d3_normalize(v), d3(0, 0, -1))) < 1e-9, "flat bump_map: <%g, %g, %g>", v.x, v.y, v.z);
+	n.img = &ri;
+	v = d3(0, 0, -1);
+	pattern_perturb(&pg, 0, d3(0.4, 0.6, 0), &v);
+	CHECK(fabs(d3_length(v) - 1) < 1e-9 && fabs(v.x) > 0.05 && fabs(v.y) < 1e-9, "ramp bump_map tilts in x: <%g, %g, %g>",
+	      v.x, v.y, v.z);
+	/* ripples at a point: finite, and the normal moves along p - source sums */
+	n = pattern_node_default(PATTERN_RIPPLES);
+	pg.n_warps = 0, n.n_warps = 0;
+	v = d3(0, 1, 0);
+	pattern_perturb(&pg, 0, d3(NAN, 1e300, 0), &v);
+	CHECK(isfinite(v.x) && isfinite(v.y) && isfinite(v.z), "ripples at an odd point stay finite");
+}
+
+int main(void)
+{
+	check_normals();
+	check_tolerance();
+	check_pigment_pattern();
+	check_table();
+	check_waves();
+	check_colour_map();
+	check_nested();
+	check_warps();
+	check_noise();
+	check_image();
+	check_defaults();
+	return check_done("test_pattern");
+}
