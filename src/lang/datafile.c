@@ -14,12 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-	do {                                                                                       \
-		if (!(x))                                                                          \
-			return false;                                                              \
-	} while (0)
-
 /* Data files open at once: each holds a stream (writing) or the file's text (reading); a loop
  * that opens without closing meets this limit long before the system's. */
 enum { LANG_MAX_DATA_FILES = 32 };

@@ -7,12 +7,6 @@
 #include <math.h>
 #include <string.h>
 
-#define TRY(x)                                                                                                         \
-	do {                                                                                                           \
-		if (!(x))                                                                                              \
-			return false;                                                                                  \
-	} while (0)
-
 /* The finish words circe reads but does not render, each warned about once per scene
  * (parser.finish_warned, one bit each). */
 enum {
@@ -26,17 +20,9 @@ enum {
 	WARN_FOG_TURBULENCE = 1u << 7,
 };
 
-/* True when t spells word, whether the lexer knows it as a circe keyword or as a POV-Ray word
- * circe had not implemented (LTK_UNSUPPORTED): the test stays right when a word becomes a keyword. */
-static bool word_is(const lang_token *t, const char *word)
-{
-	size_t n = strlen(word);
-	return t->kind != LTK_IDENT && t->kind != LTK_STRING && t->len == n && !memcmp(t->text, word, n);
-}
-
 static bool accept_word(parser *p, const char *word)
 {
-	if (!word_is(lang_peek(p), word))
+	if (!lang_word_is(lang_peek(p), word))
 		return false;
 	lang_advance(p);
 	return true;

@@ -428,7 +428,7 @@ static bool is_word_token(const lang_token *t)
 	return t->kind == LTK_IDENT || t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
 }
 
-static bool token_is(const lang_token *t, const char *s) { return t->len == strlen(s) && !memcmp(t->text, s, t->len); }
+static bool token_is(const lang_token *t, const char *s) { return lang_token_is(t, s); }
 
 /* The parameter a word names, or -1. */
 static int param_of(const compiler *c, const lang_token *t)

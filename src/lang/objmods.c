@@ -8,12 +8,6 @@
 
 #include <string.h>
 
-#define TRY(x)                                                                                      \
-	do {                                                                                        \
-		if (!(x))                                                                           \
-			return false;                                                               \
-	} while (0)
-
 typedef enum { FLAG_BOOL, FLAG_SILENT_BOOL, FLAG_BLOCK } flag_arg;
 
 static const struct object_flag {
@@ -42,7 +36,7 @@ static const struct object_flag *flag_of(const lang_token *t)
 	if (t->kind != LTK_UNSUPPORTED)
 		return NULL;
 	for (size_t i = 0; i < N_FLAGS; i++)
-		if (strlen(object_flags[i].name) == t->len && !memcmp(object_flags[i].name, t->text, t->len))
+		if (lang_token_is(t, object_flags[i].name))
 			return &object_flags[i];
 	return NULL;
 }
@@ -72,23 +66,6 @@ static bool float_follows(parser *p)
 	}
 }
 
-/* "{" ... "}" with the braces balanced (directives run); what: the block's word. */
-static bool skip_braces(parser *p, const char *what)
-{
-	diag_loc open = lang_peek(p)->loc;
-	char ctx[64];
-	snprintf(ctx, sizeof ctx, "after '%s'", what);
-	TRY(lang_expect(p, LTK_LBRACE, ctx));
-	for (unsigned long depth = 1;;) {
-		lang_tok k = lang_peek(p)->kind;
-		if (k == LTK_EOF || (k == LTK_RBRACE && depth == 1))
-			return lang_expect_close(p, open, what);
-		depth += k == LTK_LBRACE;
-		depth -= k == LTK_RBRACE;
-		lang_advance(p);
-	}
-}
-
 /* A colour directly in an object, POV-Ray's "quick colour": povray 3.7 warns "Quick color
  * belongs in texture. Color ignored." and so does circe. */
 static bool quick_colour(parser *p)
@@ -114,7 +91,7 @@ bool lang_object_flag(parser *p, lang_objflags *f, bool *matched)
 	}
 	lang_advance(p);
 	if (of->arg == FLAG_BLOCK) {
-		TRY(skip_braces(p, of->name));
+		TRY(lang_skip_block(p, of->name));
 	} else {
 		double x = 1;
 		char ctx[64];

@@ -10,6 +10,32 @@
 #include "scene/scene.h"
 
 #include <stdbool.h>
+#include <string.h>
+
+/* Returns false from the calling parse function when x is false: every parse function reports its
+ * error where it finds it and returns false, so its callers only pass the failure on. */
+#define TRY(x)                                                                                      \
+	do {                                                                                        \
+		if (!(x))                                                                           \
+			return false;                                                               \
+	} while (0)
+
+/* Whether the token is spelled w (any kind): how the words of POV-Ray that are no keywords of
+ * circe's, which lex as LTK_UNSUPPORTED or identifiers, are recognised. */
+static inline bool lang_token_is(const lang_token *t, const char *w)
+{
+	size_t n = strlen(w);
+	return t->len == n && !memcmp(t->text, w, n);
+}
+
+/* Whether t is the word w, as a keyword of circe's or a POV-Ray word circe does not reserve
+ * (LTK_UNSUPPORTED): a test that stays right when a word becomes a keyword. The finish, pigment
+ * and shape bodies read POV-Ray's words so. */
+static inline bool lang_word_is(const lang_token *t, const char *w)
+{
+	bool wordlike = t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
+	return wordlike && lang_token_is(t, w);
+}
 
 typedef enum value_kind {
 	VAL_FLOAT, VAL_VECTOR, VAL_COLOR, VAL_STRING, VAL_MATERIAL, VAL_OBJECT, VAL_MACRO,
@@ -276,6 +302,8 @@ bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* "{" ... "}" after `what`, any tokens between, the braces balanced (directives still run). */
+bool lang_skip_block(parser *p, const char *what);
 /* For shapes.c: a new geometry record (NULL after reporting), and an object of g placed in out with
  * its modifiers up to the closing '}' of the item `what` opened at open. */
 scene_geom *lang_new_geom(parser *p, scene_shape_kind kind, diag_loc loc);

@@ -8,12 +8,6 @@
 
 #include <string.h>
 
-#define TRY(x)                                                                                      \
-	do {                                                                                        \
-		if (!(x))                                                                           \
-			return false;                                                               \
-	} while (0)
-
 enum {
 	MAX_WARPS = 64 /* warps and transforms of one pigment (consecutive transforms are one) */
 };
@@ -30,14 +24,7 @@ typedef struct pig_build {
 static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
 		 const scene_pigment **out);
 
-/* The lookahead is the word w: a POV-Ray word circe does not reserve, or one of its keywords. */
-static bool is_word(const lang_token *t, const char *w)
-{
-	bool wordlike = t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE);
-	return wordlike && strlen(w) == t->len && !memcmp(t->text, w, t->len);
-}
-
-static bool peek_word(parser *p, const char *w) { return is_word(lang_peek(p), w); }
+static bool peek_word(parser *p, const char *w) { return lang_word_is(lang_peek(p), w); }
 
 static bool accept_word(parser *p, const char *w)
 {

@@ -7,12 +7,6 @@
 #include <math.h>
 #include <string.h>
 
-#define TRY(x)                                                                                      \
-	do {                                                                                        \
-		if (!(x))                                                                           \
-			return false;                                                               \
-	} while (0)
-
 /* POV-Ray's polynomial order limit (MAX_ORDER, source/backend/math/polysolv.h). */
 #define POLY_MAX_ORDER 35
 /* A polygon's points (SHAPE_POLYGON_MAX_POINTS of src/geom/povshape.h: its triangulation pairs edges). */

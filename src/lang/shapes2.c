@@ -13,26 +13,13 @@
 #include <string.h>
 #include <unistd.h>
 
-#define TRY(x) \
-	do { \
-		if (!(x)) \
-			return false; \
-	} while (0)
-
 /* The most points or components one shape may list (POV-Ray has no limit; this keeps a typo's
  * count from asking for gigabytes before the points are read). */
 #define LANG_MAX_SHAPE_POINTS 1000000
 
-static bool word_is(const lang_token *t, const char *w)
-{
-	size_t n = strlen(w);
-	return (t->kind == LTK_UNSUPPORTED || t->kind >= LANG_FIRST_KEYWORD || t->kind == LTK_IDENT) &&
-	       t->kind != LTK_EOF && t->len == n && memcmp(t->text, w, n) == 0;
-}
-
 static bool accept_word(parser *p, const char *w)
 {
-	if (!word_is(lang_peek(p), w))
+	if (!lang_word_is(lang_peek(p), w))
 		return false;
 	lang_advance(p);
 	return true;
@@ -42,7 +29,7 @@ int lang_pov_shape_kind(const lang_token *t)
 {
 	static const char *const words[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
 	for (int k = 0; k < 7; k++)
-		if (word_is(t, words[k]))
+		if (lang_word_is(t, words[k]))
 			return k;
 	return -1;
 }
@@ -309,7 +296,7 @@ static bool component_mods(parser *p, shape_blob_comp *c, diag_loc open, lang_xf
 		if (k->kind == LTK_RBRACE)
 			break;
 		if (k->kind == LTK_KW_TEXTURE || k->kind == LTK_KW_PIGMENT || k->kind == LTK_KW_FINISH ||
-		    word_is(k, "normal"))
+		    lang_word_is(k, "normal"))
 			return lang_error(p, k->loc, "a texture of one blob component is not supported by circe: give the "
 						     "blob one texture");
 		bool matched;
@@ -344,7 +331,7 @@ static bool blob(parser *p, shape_desc *s, diag_loc kw, lang_xform_item_fn xf_it
 			ok = lang_float(p, "as the component's strength", &c.strength) && (comma(p), true) &&
 			     lang_float(p, "as the component's radius", &c.radius) && (comma(p), true) &&
 			     lang_vec3(p, "as the component's centre", &c.a);
-		} else if (t.kind == LTK_KW_SPHERE || word_is(&t, "cylinder")) {
+		} else if (t.kind == LTK_KW_SPHERE || lang_word_is(&t, "cylinder")) {
 			c.cylinder = t.kind != LTK_KW_SPHERE;
 			lang_advance(p);
 			diag_loc open = lang_peek(p)->loc;
@@ -428,7 +415,7 @@ static bool font_path(parser *p, const char *name, diag_loc at, const char **out
 /* text = "text" "{" "ttf" string [ "," ] string [ "," ] float [ "," ] vector ... */
 static bool text(parser *p, shape_desc *s)
 {
-	if (word_is(lang_peek(p), "internal"))
+	if (lang_word_is(lang_peek(p), "internal"))
 		return lang_error(p, lang_peek(p)->loc, "'internal' fonts are not supported by circe: give a ttf file");
 	if (!accept_word(p, "ttf"))
 		return lang_error_found(p, "expected 'ttf' in 'text'");

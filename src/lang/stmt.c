@@ -10,12 +10,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-	do {                                                                                       \
-		if (!(x))                                                                          \
-			return false;                                                              \
-	} while (0)
-
 /* Reports "expected EXPECT or '}' to close 'what'" at the lookahead, with a note at the opening
  * brace when the file ended. */
 
@@ -408,6 +402,50 @@ static scene_material *copy_material(parser *p, const scene_material *base, diag
 	return m;
 }
 
+/* One layer of a layered texture as an entry of its pigment: its pattern, or its plain colour with
+ * its filter and transmit. */
+static scene_map_entry layer_entry(const scene_material *m, uint32_t index)
+{
+	scene_map_entry e = {.value = index, .pigment = m->pigment};
+	e.color[0] = m->color.x, e.color[1] = m->color.y, e.color[2] = m->color.z;
+	e.color[3] = m->filter, e.color[4] = m->transmit;
+	return e;
+}
+
+/* POV-Ray's layered texture: top over below (a texture written after a texture). The pigments
+ * composite by the upper layers' filter and transmit (render/pattern.c's PATTERN_LAYERS); the
+ * finish is the top layer's (POV-Ray lights each layer with its own finish: circe keeps one set
+ * of lobes, doc/language.md "Layered textures"). The layers' transparency shows the layers
+ * below, not what lies behind the object. */
+static bool layer_texture(parser *p, const scene_material *below, const scene_material *top, diag_loc at,
+			  const scene_material **out)
+{
+	if (below->kind != MAT_TEXTURE || top->kind != MAT_TEXTURE)
+		return lang_error(p, at, "a layered texture takes POV-Ray textures, but this layer is a %s material",
+				  scene_material_kind_name(below->kind != MAT_TEXTURE ? below->kind : top->kind));
+	const scene_pigment *bp = below->pigment;
+	bool stacked = bp && bp->kind == SCENE_PAT_LAYERS;
+	uint32_t n = (stacked ? bp->n_entries : 1) + 1;
+	if (n > SCENE_PIGMENT_MAX_ENTRIES)
+		return lang_error(p, at, "too many layers in a texture (limit is %d)", SCENE_PIGMENT_MAX_ENTRIES);
+	scene_map_entry *e = arena_alloc(&p->sc->arena, n, sizeof *e, 16);
+	scene_pigment *lay = arena_zalloc(&p->sc->arena, 1, sizeof *lay);
+	scene_material *m = e && lay ? copy_material(p, top, at) : NULL;
+	if (!m)
+		return lang_error(p, at, "out of memory");
+	if (stacked)
+		memcpy(e, bp->entries, (n - 1) * sizeof *e);
+	else
+		e[0] = layer_entry(below, 0);
+	e[n - 1] = layer_entry(top, n - 1);
+	*lay = scene_pigment_defaults(SCENE_PAT_LAYERS, at);
+	lay->entries = e, lay->n_entries = n, lay->pigment_map = true;
+	m->pigment = lay, m->image = NULL;
+	m->filter = m->transmit = 0.0f;
+	*out = m;
+	return true;
+}
+
 /* True when the lookahead is a transform item (which may follow a declared pigment alone). */
 static bool starts_transform(parser *p)
 {
@@ -498,7 +536,7 @@ static size_t pov_word_at(const lang_token *t, const char *const *names, size_t 
 	if (t->kind != LTK_UNSUPPORTED)
 		return 0;
 	for (size_t i = 1; i < n; i++)
-		if (strlen(names[i]) == t->len && memcmp(names[i], t->text, t->len) == 0)
+		if (lang_token_is(t, names[i]))
 			return i;
 	return 0;
 }
@@ -952,6 +990,7 @@ typedef struct mods {
 	lang_objflags flags; /* hollow, no_image, ... (objmods.c) */
 	scene_material *interior; /* a part record (new_part), or NULL */
 	diag_loc interior_loc;
+	bool mat_is_texture; /* mat came from texture { }: another texture layers on it */
 } mods;
 
 static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc loc)
@@ -992,9 +1031,16 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		const scene_material *mat;
 		bool fresh;
 		TRY(texture(p, &mat, &fresh));
+		if (m->mat && m->mat_is_texture) { /* a texture after a texture: its layer on top */
+			TRY(layer_texture(p, m->mat, mat, t.loc, &m->mat));
+			m->tex = (scene_material *)m->mat;
+			return true;
+		}
 		if (fresh)
 			m->tex = (scene_material *)mat; /* made here: interior may set its ior */
-		return set_material(p, m, mat, t.loc);
+		TRY(set_material(p, m, mat, t.loc));
+		m->mat_is_texture = true;
+		return true;
 	}
 	case LTK_KW_PIGMENT:
 	case LTK_KW_FINISH:
@@ -1826,9 +1872,20 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	lang_tok k = lang_peek(p)->kind;
 	memset(out, 0, sizeof *out);
 	*handled = true;
-	if (k == LTK_KW_MATERIAL || k == LTK_KW_TEXTURE) {
+	if (k == LTK_KW_MATERIAL) {
 		out->kind = VAL_MATERIAL;
-		return k == LTK_KW_MATERIAL ? material(p, &out->mat) : texture(p, &out->mat, NULL);
+		return material(p, &out->mat);
+	}
+	if (k == LTK_KW_TEXTURE) { /* texture { } texture { } ...: a layered texture (stones2.inc) */
+		out->kind = VAL_MATERIAL;
+		TRY(texture(p, &out->mat, NULL));
+		while (lang_raw_next(p) == LTK_KW_TEXTURE) { /* raw: a directive after the value runs later */
+			diag_loc at = lang_peek(p)->loc;
+			const scene_material *top;
+			TRY(texture(p, &top, NULL));
+			TRY(layer_texture(p, out->mat, top, at, &out->mat));
+		}
+		return true;
 	}
 	if (k == LTK_KW_PIGMENT || k == LTK_KW_FINISH || k == LTK_KW_INTERIOR)
 		return declare_part(p, out, k);
@@ -1893,13 +1950,12 @@ static const struct ignored_setting *ignored_setting(const lang_token *t)
 	if (t->kind != LTK_UNSUPPORTED)
 		return NULL;
 	for (size_t i = 0; i < sizeof ignored_settings / sizeof ignored_settings[0]; i++)
-		if (strlen(ignored_settings[i].name) == t->len && !memcmp(ignored_settings[i].name, t->text, t->len))
+		if (lang_token_is(t, ignored_settings[i].name))
 			return &ignored_settings[i];
 	return NULL;
 }
 
-/* "{" ... "}" with any tokens between, the braces balanced; directives still run. */
-static bool skip_block(parser *p, const char *what)
+bool lang_skip_block(parser *p, const char *what)
 {
 	diag_loc open;
 	TRY(open_block(p, what, &open));
@@ -1930,7 +1986,7 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 	double x;
 	vec3 c;
 	switch (s->arg) {
-	case IGNORED_BLOCK: TRY(skip_block(p, s->name)); break;
+	case IGNORED_BLOCK: TRY(lang_skip_block(p, s->name)); break;
 	case IGNORED_COLOR: TRY(lang_color(p, ctx, &c)); break;
 	case IGNORED_FLOAT: TRY(lang_float(p, ctx, &x)); break;
 	case IGNORED_OPT_BOOL:

@@ -5,6 +5,7 @@
 #include "render/pattern.h"
 
 #include <math.h>
+#include <string.h>
 
 #define TWO_PI 6.283185307179586
 /* POV-Ray's EPSILON (source/core/configcore.h): the block patterns' floor() nudge, so a point
@@ -585,12 +586,39 @@ void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v,
 	map_lookup(pg, n, v, p, POV_EPSILON, depth, out);
 }
 
+/* A layered texture's pigment (POV-Ray's texture { } texture { }, bottom first): each upper layer
+ * shows its own colour where it is opaque, 1 - filter - transmit, and lets the layers below
+ * through by transmit, tinted by its colour by filter (trace.cpp's layering of textures, on
+ * pigments alone). What the whole lets through is the layers' product. */
+static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+{
+	for (int i = 0; i < 5; i++)
+		out[i] = 0.0f;
+	for (uint32_t j = 0; j < n->n_entries; j++) {
+		float c[5];
+		entry_color(pg, &pg->entries[n->entry0 + j], p, eps, depth, c);
+		if (j == 0) {
+			memcpy(out, c, sizeof c);
+			continue;
+		}
+		float f = c[3], t = c[4], opaque = fmaxf(0.0f, 1.0f - f - t);
+		for (int i = 0; i < 3; i++)
+			out[i] = c[i] * opaque + out[i] * (t + f * c[i]);
+		out[3] *= f + t, out[4] *= f + t;
+	}
+}
+
 static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (n->kind == PATTERN_PLAIN) {
 		for (int i = 0; i < 5; i++)
 			out[i] = n->color[i];
+		return;
+	}
+	if (n->kind == PATTERN_LAYERS) {
+		layers(pg, n, p, eps, depth, out);
+		finite5(out);
 		return;
 	}
 	dvec3 q = warped(pg, n, p, &eps);

@@ -33,6 +33,8 @@ typedef enum pattern_kind {
 	PATTERN_SPHERICAL,
 	PATTERN_PIGMENT_PATTERN, /* the grey of a pigment (its node: pattern_node.child) */
 	PATTERN_FUNCTION, /* a user function's hook: evaluates to 0 until functions exist */
+	PATTERN_LAYERS, /* a layered texture's pigments (its entries, bottom first), composited by the
+			 * upper layers' filter and transmit */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 

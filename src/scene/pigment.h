@@ -24,7 +24,8 @@
 	X(DENTS, "dents") X(WRINKLES, "wrinkles") X(RIPPLES, "ripples") X(WAVES, "waves")           \
 	X(CRACKLE, "crackle") X(CELLS, "cells") X(SPIRAL1, "spiral1") X(SPIRAL2, "spiral2")         \
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
-	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")
+	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
+	X(LAYERS, "(layers)")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,

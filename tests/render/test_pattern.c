@@ -191,6 +191,28 @@ static void check_pigment_pattern(void)
 	check5("grey of <1, 0.5, 0>", c, g, g, g);
 }
 
+/* A layered texture's pigment: a blue bottom, a half-transmitting red layer, then a yellow layer
+ * that filters half and transmits a quarter (values worked by hand from the layering rule:
+ * colour * (1 - f - t) + below * (t + f * colour)). */
+static void check_layers(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_LAYERS);
+	n.n_entries = 3;
+	pattern_entry e[3] = {col(0, 0, 0, 1), col(1, 1, 0, 0), col(2, 1, 1, 0)};
+	e[1].color[4] = 0.5f;
+	e[2].color[3] = 0.5f, e[2].color[4] = 0.25f;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 3};
+	float c[5];
+	n.n_entries = 2;
+	pattern_eval(&pg, 0, d3(0.3, 0.2, 0.1), 0, c);
+	check5("red half over blue", c, 0.5f, 0, 0.5f);
+	n.n_entries = 3;
+	pattern_eval(&pg, 0, d3(0.3, 0.2, 0.1), 0, c);
+	/* yellow: opaque 0.25; r = 0.25 + 0.5 * (0.25 + 0.5) = 0.625, g = 0.25 + 0 = 0.25,
+	 * b = 0 + 0.5 * (0.25 + 0.5 * 0) = 0.125 */
+	check5("yellow filtering over both", c, 0.625f, 0.25f, 0.125f);
+}
+
 static void check_warps(void)
 {
 	pattern_warp rep = {.kind = WARP_REPEAT, .axis = 0, .width = 1, .flip = d3(1, 1, 1)};
@@ -377,6 +399,7 @@ int main(void)
 	check_normals();
 	check_tolerance();
 	check_pigment_pattern();
+	check_layers();
 	check_table();
 	check_waves();
 	check_colour_map();
