@@ -171,3 +171,6 @@ height_field { png "hf.png" smooth water_level 0.1 }
 quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
 #declare Cubic = cubic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1> }
 #declare Poly = poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }
+// rule: texture
+#declare Layered = texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.5> } }
+sphere { 0, 1 texture { Layered } texture { pigment { rgbf <0, 1, 0, 0.5> } } }
