@@ -280,6 +280,15 @@ void lang_finish_end(scene_material *m, const lang_finish_state *st)
 /* ---- fog ----------------------------------------------------------------------------------- */
 
 /* One fog item; false after an error, *matched false when the lookahead is none. */
+/* Whether a declared colour comes next (`fog { distance 200 Wheat * .5 }`: POV-Ray's Parse_Fog
+ * reads a colour identifier as the fog's colour). */
+static bool colour_name_follows(parser *p)
+{
+	const lang_token *t = lang_peek(p);
+	const symbol *s = t->kind == LTK_IDENT ? lang_lookup(p, t->text, t->len) : NULL;
+	return s && s->val.kind == VAL_COLOR;
+}
+
 static bool fog_item(parser *p, scene_fog *f, bool *matched)
 {
 	lang_token t = *lang_peek(p);
@@ -295,7 +304,7 @@ static bool fog_item(parser *p, scene_fog *f, bool *matched)
 		if (!(x > 0) || !isfinite(x))
 			return lang_error(p, t.loc, "fog distance must be > 0, found %g", x);
 		f->distance = x;
-	} else if (lang_colour_word(t.kind)) {
+	} else if (lang_colour_word(t.kind) || colour_name_follows(p)) {
 		TRY(lang_color(p, "as the fog colour", &f->color));
 		TRY(scene_color_finalise(p->sc, p->d, t.loc, "fog colour", SCENE_COLOR_RADIANCE, &f->color));
 	} else if (accept_word(p, "fog_offset")) {

@@ -1808,6 +1808,8 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	case LTK_KW_OBJECT: fn = instance; break;
 	case LTK_KW_UNION: fn = union_block; break;
 	default:
+		if (t.kind == LTK_KW_TRIANGLE || t.kind == LTK_KW_SMOOTH_TRIANGLE) /* in a union, as at the top */
+			return lang_error(p, t.loc, "'%.*s' outside a mesh is not supported by circe", (int)t.len, t.text);
 		if ((fn = lang_shape_parser(t.kind))) /* cylinder, torus, ... (shapes.c) */
 			break;
 		if (lang_pov_shape_kind(&t) >= 0) /* lathe, blob, text, ... (shapes2.c) */
@@ -2792,9 +2794,6 @@ bool lang_statement(parser *p)
 		return lang_default(p);
 	case LTK_KW_TEXTURE: /* `#declare T = texture {...} texture {...}` (stones2.inc) */
 		return lang_error(p, t->loc, "a layered texture (a texture after a texture) is not supported by circe");
-	case LTK_KW_TRIANGLE:
-	case LTK_KW_SMOOTH_TRIANGLE:
-		return lang_error(p, t->loc, "'%.*s' outside a mesh is not supported by circe", (int)t->len, t->text);
 	case LTK_IDENT: {
 		const symbol *s = lang_lookup(p, t->text, t->len);
 		const char *kw = !s ? NULL : s->val.kind == VAL_OBJECT ? "object" : s->val.kind == VAL_LIGHT ? "light_source"

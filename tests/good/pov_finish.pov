@@ -4,6 +4,8 @@ global_settings { assumed_gamma 1 ambient_light rgb <1, 0.9, 0.8> }
 fog { distance 40 color rgb <0.6, 0.7, 0.8> }
 fog { fog_type 2 distance 10 color rgb 0.9 fog_offset 0.5 fog_alt 2 up <0, 2, 0> rotate <0, 0, 10> }
 fog { 25 rgb 0.5 turbulence 0.3 }
+#declare Wheat = color red 0.96 green 0.87 blue 0.7;
+fog { distance 200 Wheat * .5 } // a declared colour (lights/circular.pov)
 #declare Shiny = finish { phong 0.8 phong_size 60 specular 0.3 roughness 0.01 metallic }
 sphere { 0, 1 pigment { color rgb <1, 0.2, 0.2> } finish { ambient 0.2 diffuse albedo 0.7 brilliance 1 } }
 sphere { 2*x, 1 pigment { color rgb 1 } finish { Shiny reflection { 0.1, 0.6 falloff 2 metallic 0.5 } } }
