@@ -147,7 +147,8 @@ static void begin_from(pig_build *b, const scene_pigment *base)
 {
 	b->pg = *base;
 	b->n_warps = base->n_warps < MAX_WARPS ? base->n_warps : MAX_WARPS;
-	memcpy(b->warps, base->warps, b->n_warps * sizeof *b->warps);
+	if (b->n_warps) /* a base without warps has none to copy (and warps may be NULL) */
+		memcpy(b->warps, base->warps, b->n_warps * sizeof *b->warps);
 }
 
 /* A pig_build on the heap (its warps make it too big to nest on the stack). */
