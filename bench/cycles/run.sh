@@ -43,22 +43,19 @@ nmse() {
 		awk '/^rmse:/ { r = $2 } /^mean:/ { m = $5 } END { printf "%.4e\n", r * r / (m * m) }'
 }
 
+# series circe|cycles METHOD: its reference, then one row per spp of SPPS into $rows.
+series() {
+	"${1}_render" "$2" "$REF_SPP" 1000 "$out/${1}_$2.ref.exr" >/dev/null || return 1
+	for s in $SPPS; do
+		t=$("${1}_render" "$2" "$s" 1 "$out/${1}_$2.$s.exr") || return 1
+		echo "$1:$2 $s $(nmse "$out/${1}_$2.$s.exr" "$out/${1}_$2.ref.exr") $t" >>"$rows"
+	done
+}
+
 rows=$out/rows.txt
 : >"$rows"
-for m in $CIRCE_METHODS; do
-	circe_render "$m" "$REF_SPP" 1000 "$out/circe_$m.ref.exr" >/dev/null || exit 1
-	for s in $SPPS; do
-		t=$(circe_render "$m" "$s" 1 "$out/circe_$m.$s.exr") || exit 1
-		echo "circe:$m $s $(nmse "$out/circe_$m.$s.exr" "$out/circe_$m.ref.exr") $t" >>"$rows"
-	done
-done
-for m in $CYCLES_METHODS; do
-	cycles_render "$m" "$REF_SPP" 1000 "$out/cycles_$m.ref.exr" >/dev/null || exit 1
-	for s in $SPPS; do
-		t=$(cycles_render "$m" "$s" 1 "$out/cycles_$m.$s.exr") || exit 1
-		echo "cycles:$m $s $(nmse "$out/cycles_$m.$s.exr" "$out/cycles_$m.ref.exr") $t" >>"$rows"
-	done
-done
+for m in $CIRCE_METHODS; do series circe "$m" || exit 1; done
+for m in $CYCLES_METHODS; do series cycles "$m" || exit 1; done
 echo "scene: bench/cycles/head.pov, ${W}x$H, $THREADS threads, references at $REF_SPP spp"
 echo
 echo "| renderer:method | spp | NMSE | seconds | 1/(NMSE x s) | vs Cycles Burley |"
