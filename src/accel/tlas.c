@@ -6,6 +6,7 @@
 #include "base/mem.h"
 
 #include <assert.h>
+#include <math.h>
 
 /* An instance as traced: world-to-object and object-to-world in float, 3x4 row-major. */
 typedef struct inst {
@@ -13,7 +14,12 @@ typedef struct inst {
 	float w2o[12], o2w[12];
 	float scale; /* of a similarity transform, 0 otherwise */
 	uint32_t set;
+	bool filtered;
+	uint32_t key;
 } inst;
+
+/* No ray steps over more rejected hits of one instance than this (then the instance is missed). */
+#define TLAS_MAX_REJECTED 4096
 
 struct tlas {
 	bvh_node *nodes;
@@ -21,6 +27,8 @@ struct tlas {
 	uint32_t *order; /* instance index of each leaf slot */
 	inst *insts;
 	uint32_t count;
+	tlas_filter filter;
+	void *filter_user;
 };
 
 static vec3 mul_point(const float m[12], vec3 p)
@@ -50,6 +58,8 @@ tlas *tlas_build(const tlas_instance *instances, uint32_t count)
 		const xform *x = &instances[i].to_world;
 		in->geom = instances[i].geom;
 		in->set = instances[i].set;
+		in->filtered = instances[i].filtered;
+		in->key = instances[i].key;
 		for (int r = 0; r < 3; r++)
 			for (int c = 0; c < 4; c++)
 				in->o2w[4 * r + c] = (float)x->m[r][c], in->w2o[4 * r + c] = (float)x->inv[r][c];
@@ -96,6 +106,37 @@ size_t tlas_bytes(const tlas *t)
 	return sizeof *t + (size_t)t->num_nodes * sizeof(bvh_node) + (size_t)t->count * (sizeof(inst) + sizeof(uint32_t));
 }
 
+void tlas_set_filter(tlas *t, tlas_filter fn, void *user)
+{
+	t->filter = fn;
+	t->filter_user = user;
+}
+
+/* The closest hit of the world ray on filtered instance `in` (object-space ray prepared from
+ * org, dir) that the filter keeps, in [tmin, *tlimit]: rejected hits are stepped over. */
+static bool filtered_hit(const tlas *t, const inst *in, const bvh_ray *ray, vec3 org, vec3 dir, float *tlimit,
+			 bvh_hit *hit)
+{
+	float tmin = ray->tmin;
+	for (int k = 0; k < TLAS_MAX_REJECTED; k++) {
+		tri_ray r;
+		float lim = *tlimit;
+		bvh_hit h;
+		if (!tri_ray_prepare(&r, org, dir, tmin, lim) || !bvh_intersect_prepared(in->geom, &r, &lim, &h))
+			return false;
+		h.inst = 0;
+		if (t->filter(t->filter_user, in->key, ray, &h)) {
+			*tlimit = lim;
+			*hit = h;
+			return true;
+		}
+		tmin = nextafterf(h.t, INFINITY);
+		if (!(tmin <= *tlimit))
+			return false;
+	}
+	return false;
+}
+
 bool tlas_circle_ok(const tlas *t, uint32_t i) { return i < t->count && t->insts[i].scale > 0.0f; }
 
 /* Visits the leaves of the top level whose boxes the ray reaches; for each instance (every one,
@@ -129,9 +170,20 @@ static bool trace(const tlas *t, const bvh_ray *ray, bvh_hit *hit, bool any, con
 				const inst *in = &t->insts[id];
 				if (set && in->set != *set)
 					continue;
+				vec3 org = mul_point(in->w2o, ray->org), dir = mul_vector(in->w2o, ray->dir);
+				if (in->filtered && t->filter) {
+					bvh_hit h;
+					if (!filtered_hit(t, in, ray, org, dir, &tlimit, &h))
+						continue;
+					if (any)
+						return true;
+					*hit = h;
+					hit->inst = id;
+					found = true;
+					continue;
+				}
 				tri_ray r;
-				if (!tri_ray_prepare(&r, mul_point(in->w2o, ray->org), mul_vector(in->w2o, ray->dir), ray->tmin,
-						     tlimit))
+				if (!tri_ray_prepare(&r, org, dir, ray->tmin, tlimit))
 					continue;
 				if (any) {
 					if (bvh_occluded_prepared(in->geom, &r))

@@ -10,11 +10,21 @@ typedef struct tlas tlas;
 
 /* set: a tag tlas_circle_set and tlas_intersect_set select instances by (for the renderer, the
  * SSS volume the instance belongs to); 0 when unused. */
+/* filtered: the instance's ray hits go through the tlas's filter (tlas_set_filter), which may
+ * reject them; key is what the filter is given for the instance. */
 typedef struct tlas_instance {
 	const bvh *geom;
 	xform to_world;
 	uint32_t set;
+	bool filtered;
+	uint32_t key;
 } tlas_instance;
+
+/* A hit filter: true keeps the hit (hit->t, u, v, prim: in instance space, t in units of the world
+ * ray's |dir|) of the ray on the filtered instance whose key is `key`. A rejected hit is stepped
+ * over: the traversal looks for the instance's next hit along the ray (closest and any hit alike).
+ * It must be a pure function of its arguments (rays are traced by many threads at once). */
+typedef bool (*tlas_filter)(void *user, uint32_t key, const bvh_ray *ray, const bvh_hit *hit);
 
 /* Restricts tlas_circle to no instance in particular. */
 #define TLAS_ALL_INSTANCES UINT32_MAX
@@ -22,6 +32,9 @@ typedef struct tlas_instance {
 /* NULL when memory runs out. Instances whose bvh is empty are kept (and never hit). */
 tlas *tlas_build(const tlas_instance *instances, uint32_t count);
 void tlas_free(tlas *t);
+/* The filter of the filtered instances (none until set: their hits are all kept). Set it before
+ * any ray is traced. */
+void tlas_set_filter(tlas *t, tlas_filter fn, void *user);
 size_t tlas_bytes(const tlas *t);
 
 /* Closest hit over all instances, in world space: hit->inst is the instance's index, hit->prim

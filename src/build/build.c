@@ -86,6 +86,7 @@ static void world_release(world *w)
 	light_set_free(&w->lights);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
+	mem_free(w->csg_nodes), mem_free(w->csg_kids);
 	mem_free(w->sss), mem_free(w->sss_of);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);

@@ -55,6 +55,9 @@ typedef struct world_stats {
 	size_t instance_bytes;  /* the world's records of them (not the top-level BVHs) */
 	const world_shape_stat *shapes; /* in the scene's order of geometry; owned by the world */
 	size_t n_shapes;
+	size_t csg_nodes;       /* nodes of the CSG solids (build_csg.c), unions made for operands too */
+	size_t csg_solids;      /* CSG solids (their roots) */
+	size_t csg_clips;       /* clipped_by objects (never traced) */
 } world_stats;
 
 

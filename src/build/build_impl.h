@@ -37,6 +37,8 @@ double axis_scale(const xform *t);
 bool build_instances(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_planes(world *w, const scene *sc, const world_options *opt, diag *d);
 bool build_top(world *w, diag *d);
+/* build_csg.c: the CSG solids' trees and their instances' classification facts, after the groups. */
+bool build_csg(world *w, const scene *sc, diag *d);
 
 /* build_shapes.c: POV-Ray's shapes each object uses, tessellated once per geometry record at the
  * accuracy its most demanding object asks for on screen. */

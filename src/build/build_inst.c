@@ -201,7 +201,7 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		}
 	}
 	build_groups(w, sc);
-	return true;
+	return build_csg(w, sc, d);
 }
 
 /* Bounds of everything but planes, and the camera (for the lights). Each plane object gets its
@@ -272,18 +272,24 @@ bool build_top(world *w, diag *d)
 	for (size_t i = 0; ok && i < w->n_insts; i++) {
 		const world_inst *in = &w->insts[i];
 		w->inst_top[i] = UINT32_MAX;
-		if (!in->g->b)
+		if (!in->g->b || in->hidden) /* a clipped_by object is never seen */
 			continue;
 		w->inst_top[i] = na;
 		w->top_inst[na] = (uint32_t)i;
-		all[na++] = (tlas_instance){in->g->b, in->xf, sss_set(w, i)};
+		all[na++] = (tlas_instance){in->g->b, in->xf, sss_set(w, i), in->csg_filtered, (uint32_t)i};
 		if (!in->no_shadow)
-			casters[nc++] = (tlas_instance){in->g->b, in->xf, 0};
+			casters[nc++] = (tlas_instance){in->g->b, in->xf, 0, in->csg_filtered, (uint32_t)i};
 	}
 	if (ok && na)
 		ok = (w->top = tlas_build(all, na)) != NULL;
 	if (ok && nc)
 		ok = (w->shadow = tlas_build(casters, nc)) != NULL;
+	if (ok && w->n_csg_nodes) { /* the CSG solids' boundaries: render/world_csg.c */
+		if (w->top)
+			tlas_set_filter(w->top, world_csg_filter, w);
+		if (w->shadow)
+			tlas_set_filter(w->shadow, world_csg_filter, w);
+	}
 	mem_free(all), mem_free(casters);
 	if (!ok)
 		diag_error(d, diag_noloc(), "out of memory while building the top-level BVH");

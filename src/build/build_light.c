@@ -156,7 +156,7 @@ bool build_lights(world *w, const scene *sc, diag *d)
 	}
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, w->insts[i].object);
-		if (o->material && v3_max_comp(o->material->emission) > 0.0f &&
+		if (o->material && v3_max_comp(o->material->emission) > 0.0f && !w->insts[i].hidden &&
 		    !add_mesh_light(w, &w->insts[i], o->material->emission, d, o->loc))
 			return false;
 	}

@@ -25,14 +25,14 @@ enum {
 	KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN, "atan") KW(ATAN2, "atan2") KW(ATANH, "atanh") \
 	KW(BACKGROUND, "background") KW(BITWISE_AND, "bitwise_and") KW(BITWISE_OR, "bitwise_or") \
 	KW(BITWISE_XOR, "bitwise_xor") KW(BLUE, "blue") KW(BLUR_SAMPLES, "blur_samples") \
-	KW(BOUNDARY, "boundary") KW(BOX, "box") KW(BURLEY, "burley") KW(CAMERA, "camera") \
+	KW(BOUNDARY, "boundary") KW(BOUNDED_BY, "bounded_by") KW(BOX, "box") KW(BURLEY, "burley") KW(CAMERA, "camera") \
 	KW(CATMULL_CLARK, "catmull_clark") KW(CEIL, "ceil") KW(CHR, "chr") KW(CIRCLE, "circle") \
-	KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") \
+	KW(CLIPPED_BY, "clipped_by") KW(CLOCK, "clock") KW(CLOCK_ON, "clock_on") KW(COLOR, "color") KW(COLOUR, "colour") \
 	KW(CONCAT, "concat") KW(CONE, "cone") KW(CONFIDENCE, "confidence") KW(CORNERS, "corners") \
 	KW(COS, "cos") KW(COSH, "cosh") KW(CREASES, "creases") KW(CUBIC, "cubic") \
 	KW(CUBIC_SPLINE, "cubic_spline") KW(CYLINDER, "cylinder") KW(DATETIME, "datetime") \
 	KW(DEFAULT, "default") KW(DEFINED, "defined") KW(DEGREES, "degrees") KW(DEPRECATED, "deprecated") \
-	KW(DIFFUSE, "diffuse") KW(DIMENSION_SIZE, "dimension_size") KW(DIMENSIONS, "dimensions") \
+	KW(DIFFERENCE, "difference") KW(DIFFUSE, "diffuse") KW(DIMENSION_SIZE, "dimension_size") KW(DIMENSIONS, "dimensions") \
 	KW(DIPOLE, "dipole") KW(DIRECTION, "direction") KW(DISC, "disc") KW(DISK, "disk") KW(DIV, "div") \
 	KW(EDGE_AND_CORNER, "edge_and_corner") KW(EDGE_ONLY, "edge_only") KW(EMISSION, "emission") \
 	KW(EXP, "exp") KW(EXR, "exr") KW(FACE_INDICES, "face_indices") KW(FACES, "faces") \
@@ -42,11 +42,11 @@ enum {
 	KW(GAUSSIAN, "gaussian") KW(GLOBAL_SETTINGS, "global_settings") KW(GRAY, "gray") \
 	KW(GREEN, "green") KW(GROUP, "group") KW(HEIGHT_FIELD, "height_field") KW(IMAGE, "image") \
 	KW(IMAGE_MAP, "image_map") KW(INT, "int") KW(INTENSITY, "intensity") KW(INTERIOR, "interior") \
-	KW(INTERNAL, "internal") KW(INVERSE, "inverse") KW(IOR, "ior") KW(JPEG, "jpeg") KW(LEVEL, "level") \
+	KW(INTERNAL, "internal") KW(INTERSECTION, "intersection") KW(INVERSE, "inverse") KW(IOR, "ior") KW(JPEG, "jpeg") KW(LEVEL, "level") \
 	KW(LIGHT_SOURCE, "light_source") KW(LINEAR_SPLINE, "linear_spline") KW(LN, "ln") \
 	KW(LOCATION, "location") KW(LOG, "log") KW(LOOK_AT, "look_at") KW(LOOP, "loop") \
 	KW(MARBLE, "marble") KW(MATERIAL, "material") KW(MATRIX, "matrix") KW(MAX, "max") \
-	KW(MAX_EDGE, "max_edge") KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MESH, "mesh") \
+	KW(MAX_EDGE, "max_edge") KW(MAX_TRACE_LEVEL, "max_trace_level") KW(MERGE, "merge") KW(MESH, "mesh") \
 	KW(MESH2, "mesh2") KW(METHOD, "method") KW(MIN, "min") KW(MIXED, "mixed") \
 	KW(MM_PER_UNIT, "mm_per_unit") KW(MOD, "mod") KW(NATURAL_SPLINE, "natural_spline") KW(NO, "no") \
 	KW(NO_SHADOW, "no_shadow") KW(NOISE_THRESHOLD, "noise_threshold") \

@@ -991,7 +991,130 @@ typedef struct mods {
 	scene_material *interior; /* a part record (new_part), or NULL */
 	diag_loc interior_loc;
 	bool mat_is_texture; /* mat came from texture { }: another texture layers on it */
+	bool inverse; /* inverse (each one toggles) */
+	/* clipped_by: its objects (in the arena; their transforms already undo the item's transforms
+	 * before clipped_by, which apply_mods then applies), operands 1.. of the clip node clip_id. */
+	scene_object *clip;
+	size_t n_clip;
+	uint32_t clip_id, clip_operands;
+	diag_loc clip_loc;
+	scene_object *bound; /* bounded_by's objects, kept for a clipped_by { bounded_by } */
+	size_t n_bound;
 } mods;
+
+/* No CSG solid nests deeper than this (its evaluation walks the path of each hit). */
+#define LANG_MAX_CSG_DEPTH 64
+
+/* Prepends the step to the CSG paths of objs[0..n) (each gets a new path in the arena). */
+static bool csg_prepend(parser *p, scene_object *objs, size_t n, scene_csg_step step)
+{
+	for (size_t i = 0; i < n; i++) {
+		scene_object *o = &objs[i];
+		if (o->csg_depth >= LANG_MAX_CSG_DEPTH)
+			return lang_error(p, step.loc, "CSG nested deeper than %d levels", LANG_MAX_CSG_DEPTH);
+		scene_csg_step *path = arena_zalloc(&p->sc->arena, o->csg_depth + 1, sizeof *path);
+		if (!path)
+			return lang_error(p, step.loc, "out of memory");
+		path[0] = step;
+		if (o->csg_depth)
+			memcpy(path + 1, o->csg, o->csg_depth * sizeof *path);
+		o->csg = path;
+		o->csg_depth++;
+	}
+	return true;
+}
+
+static bool object_item(parser *p, vecbuf *out, bool *matched);
+
+/* The objects of a clipped_by or bounded_by block, parsed into a temporary buffer and kept in the
+ * arena (*objs, *n, appended to): each object item one operand, numbered from *operands on, of
+ * the node `id` when id is not 0. */
+static bool clip_objects(parser *p, diag_loc open, const char *what, uint32_t id, uint32_t *operands,
+			 scene_object **objs, size_t *n)
+{
+	vecbuf b;
+	vecbuf_init(&b, sizeof(scene_object));
+	bool ok = true, any = false;
+	while (ok && lang_peek(p)->kind != LTK_RBRACE) {
+		size_t from = b.len;
+		bool matched;
+		ok = object_item(p, &b, &matched);
+		if (ok && !matched)
+			ok = bad_item(p, open, what, "an object");
+		any = true;
+		if (ok && id)
+			ok = csg_prepend(p, &VECBUF_AT(&b, scene_object, from), b.len - from,
+					 (scene_csg_step){id, (*operands)++, SCENE_CSG_INTERSECTION, false, open});
+	}
+	if (ok && !any)
+		ok = lang_error(p, open, "%s has no objects", what);
+	scene_object *all = NULL;
+	if (ok && !(all = arena_zalloc(&p->sc->arena, *n + b.len, sizeof *all)))
+		ok = lang_error(p, open, "out of memory");
+	if (ok) {
+		if (*n)
+			memcpy(all, *objs, *n * sizeof *all);
+		if (b.len)
+			memcpy(all + *n, b.data, b.len * sizeof *all);
+		*objs = all, *n += b.len;
+		lang_advance(p);
+	}
+	vecbuf_free(&b);
+	return ok;
+}
+
+/* clipped_by = "clipped_by" "{" ( object_item { object_item } | "bounded_by" ) "}"
+ * bounded_by = "bounded_by" "{" ( object_item { object_item } | "clipped_by" ) "}"
+ * POV-Ray's clipped_by keeps the item's surface inside every clipping object (their surfaces are
+ * not seen); bounded_by is a hint for its own intersection tests, which circe needs not: read,
+ * and kept only for a clipped_by { bounded_by } after it. Transforms after the block move the
+ * clipping objects with the item; those before it do not. */
+static bool clip_block(parser *p, mods *m, bool clip)
+{
+	diag_loc kw = lang_advance(p)->loc, open;
+	const char *what = clip ? "clipped_by" : "bounded_by";
+	TRY(open_block(p, what, &open));
+	xform undo = xform_inverse(m->t);
+	size_t from = clip ? m->n_clip : m->n_bound;
+	lang_token t = *lang_peek(p);
+	if (t.kind == (clip ? LTK_KW_BOUNDED_BY : LTK_KW_CLIPPED_BY)) {
+		lang_advance(p);
+		TRY(lang_expect_close(p, open, what));
+		if (!clip) /* bounded_by { clipped_by }: bounded by the clip, a hint again */
+			return true;
+		if (!m->n_bound)
+			return lang_error(p, t.loc, "'clipped_by { bounded_by }' needs a bounded_by before it");
+		if (!m->clip_id)
+			m->clip_id = ++p->sc->csg_ids, m->clip_operands = 1, m->clip_loc = kw;
+		scene_object *all = arena_zalloc(&p->sc->arena, m->n_clip + m->n_bound, sizeof *all);
+		if (!all)
+			return lang_error(p, kw, "out of memory");
+		if (m->n_clip)
+			memcpy(all, m->clip, m->n_clip * sizeof *all);
+		memcpy(all + m->n_clip, m->bound, m->n_bound * sizeof *all);
+		for (size_t i = 0; i < m->n_bound; i++) { /* the bound's transforms were undone already */
+			all[m->n_clip + i].clip_only = true;
+			TRY(csg_prepend(p, &all[m->n_clip + i], 1,
+					(scene_csg_step){m->clip_id, m->clip_operands, SCENE_CSG_INTERSECTION, false, kw}));
+		}
+		m->clip_operands++; /* the bound's objects clip as one union */
+		m->clip = all, m->n_clip += m->n_bound;
+		return true;
+	}
+	if (clip && !m->clip_id)
+		m->clip_id = ++p->sc->csg_ids, m->clip_operands = 1, m->clip_loc = kw;
+	if (clip)
+		TRY(clip_objects(p, open, what, m->clip_id, &m->clip_operands, &m->clip, &m->n_clip));
+	else
+		TRY(clip_objects(p, open, what, 0, NULL, &m->bound, &m->n_bound));
+	scene_object *objs = clip ? m->clip : m->bound;
+	size_t n = clip ? m->n_clip : m->n_bound;
+	for (size_t i = from; i < n; i++) {
+		objs[i].transform = xform_then(objs[i].transform, undo);
+		objs[i].clip_only = clip;
+	}
+	return true;
+}
 
 static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc loc)
 {
@@ -1021,7 +1144,12 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	}
 	switch (t.kind) {
 	case LTK_KW_INVERSE:
-		return lang_error(p, t.loc, "'inverse' of an object (CSG) is not supported by circe");
+		lang_advance(p);
+		m->inverse = !m->inverse;
+		return true;
+	case LTK_KW_CLIPPED_BY:
+	case LTK_KW_BOUNDED_BY:
+		return clip_block(p, m, t.kind == LTK_KW_CLIPPED_BY);
 	case LTK_KW_MATERIAL: {
 		const scene_material *mat;
 		TRY(material(p, &mat));
@@ -1093,13 +1221,47 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 	return true;
 }
 
+/* The CSG modifiers of an item (before apply_mods): clipped_by makes the item operand 0 of an
+ * intersection whose other operands are the clipping objects; inverse toggles the item's own
+ * inverse when it is one object, its CSG node's when it is one solid, else makes its objects one
+ * inverted union. */
+static bool csg_mods(parser *p, vecbuf *out, size_t start, mods *m, diag_loc kw)
+{
+	if (m->n_clip) {
+		TRY(csg_prepend(p, &VECBUF_AT(out, scene_object, start), out->len - start,
+				(scene_csg_step){m->clip_id, 0, SCENE_CSG_INTERSECTION, false, m->clip_loc}));
+		for (size_t i = 0; i < m->n_clip; i++)
+			if (!vecbuf_push(out, &m->clip[i]))
+				return lang_error(p, kw, "out of memory");
+	}
+	if (!m->inverse || out->len == start)
+		return true;
+	scene_object *first = &VECBUF_AT(out, scene_object, start);
+	if (out->len - start == 1 && !first->csg_depth) {
+		first->inverse = !first->inverse;
+		return true;
+	}
+	bool one = first->csg_depth > 0;
+	for (size_t i = start; one && i < out->len; i++) {
+		const scene_object *o = &VECBUF_AT(out, scene_object, i);
+		one = o->csg_depth && o->csg[0].id == first->csg[0].id;
+	}
+	if (!one)
+		return csg_prepend(p, first, out->len - start, (scene_csg_step){++p->sc->csg_ids, 0, SCENE_CSG_UNION, true, kw});
+	for (size_t i = start; i < out->len; i++) /* each path is the object's own (csg_prepend) */
+		((scene_csg_step *)VECBUF_AT(out, scene_object, i).csg)[0].inverse ^= true;
+	return true;
+}
+
 /* { modifier } "}" : the common tail of every object item. */
 static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
 {
 	mods m = {.t = xform_identity()};
 	for (;;) {
-		if (lang_accept(p, LTK_RBRACE))
-			return apply_mods(p, out, start, &m);
+		if (lang_peek(p)->kind == LTK_RBRACE) {
+			diag_loc close = lang_advance(p)->loc;
+			return csg_mods(p, out, start, &m, close) && apply_mods(p, out, start, &m);
+		}
 		bool matched;
 		TRY(modifier(p, &m, &matched));
 		if (!matched)
@@ -1739,7 +1901,7 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 			if (!any)
 				return lang_error(p, kw, "union has no objects");
 			lang_advance(p);
-			return apply_mods(p, out, start, &m);
+			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
 		}
 		bool matched;
 		TRY(object_item(p, out, &matched));
@@ -1751,6 +1913,74 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 		if (!matched)
 			return bad_item(p, open, "union", "an object, a transform, a material, no_shadow");
 	}
+}
+
+/* csg = ( "intersection" | "difference" | "merge" ) "{" object_item { object_item } { modifier } "}"
+ * Each object item is one operand (a union of several objects is one); the operands' objects
+ * stay objects and carry the node in their CSG path (scene.h). */
+static bool csg_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open, scene_csg_op op, const char *what)
+{
+	size_t start = out->len;
+	mods m = {.t = xform_identity()};
+	uint32_t id = ++p->sc->csg_ids, operands = 0;
+	for (;;) {
+		if (lang_peek(p)->kind == LTK_RBRACE) {
+			if (!operands)
+				return lang_error(p, kw, "%s has no objects", what);
+			lang_advance(p);
+			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
+		}
+		size_t from = out->len;
+		bool matched;
+		TRY(object_item(p, out, &matched));
+		if (matched) {
+			TRY(csg_prepend(p, &VECBUF_AT(out, scene_object, from), out->len - from,
+					(scene_csg_step){id, operands++, op, false, kw}));
+			continue;
+		}
+		TRY(modifier(p, &m, &matched));
+		if (!matched)
+			return bad_item(p, open, what, "an object, a transform, a material, inverse, clipped_by");
+	}
+}
+
+static bool intersection_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return csg_block(p, out, kw, open, SCENE_CSG_INTERSECTION, "intersection");
+}
+
+static bool difference_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return csg_block(p, out, kw, open, SCENE_CSG_DIFFERENCE, "difference");
+}
+
+static bool merge_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return csg_block(p, out, kw, open, SCENE_CSG_MERGE, "merge");
+}
+
+/* A copy of a declared object gets new CSG ids (one solid per copy): id + base, base the last id
+ * given, so distinct ids stay distinct and none is reused. */
+static bool csg_renumber(parser *p, scene_object *objs, size_t n, diag_loc kw)
+{
+	uint32_t base = p->sc->csg_ids, top = 0;
+	for (size_t i = 0; i < n; i++) {
+		scene_object *o = &objs[i];
+		if (!o->csg_depth)
+			continue;
+		scene_csg_step *path = arena_zalloc(&p->sc->arena, o->csg_depth, sizeof *path);
+		if (!path)
+			return lang_error(p, kw, "out of memory");
+		for (uint32_t k = 0; k < o->csg_depth; k++) {
+			path[k] = o->csg[k];
+			path[k].id += base;
+			top = path[k].id > top ? path[k].id : top;
+		}
+		o->csg = path;
+	}
+	if (top)
+		p->sc->csg_ids = top;
+	return true;
 }
 
 /* instance = "object" "{" ( identifier | object_item ) { modifier } "}"
@@ -1777,6 +2007,7 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 		if (!vecbuf_push(out, &o))
 			return lang_error(p, kw, "out of memory");
 	}
+	TRY(csg_renumber(p, &VECBUF_AT(out, scene_object, start), out->len - start, kw));
 	return object_tail(p, out, start, open, "object");
 }
 
@@ -1807,6 +2038,9 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	case LTK_KW_SUBDIVISION_SURFACE: fn = subdivision_surface; break;
 	case LTK_KW_OBJECT: fn = instance; break;
 	case LTK_KW_UNION: fn = union_block; break;
+	case LTK_KW_INTERSECTION: fn = intersection_block; break;
+	case LTK_KW_DIFFERENCE: fn = difference_block; break;
+	case LTK_KW_MERGE: fn = merge_block; break;
 	default:
 		if (t.kind == LTK_KW_TRIANGLE || t.kind == LTK_KW_SMOOTH_TRIANGLE) /* in a union, as at the top */
 			return lang_error(p, t.loc, "'%.*s' outside a mesh is not supported by circe", (int)t.len, t.text);

@@ -46,6 +46,8 @@ static void hit_normals(const world_inst *in, uint32_t prim, float u, float v, v
 		if (v3_dot(ns, ng) < 0.0f)
 			ng = v3_neg(ng); /* render_hit wants both normals in one hemisphere */
 	}
+	if (in->csg_flip) /* the instance bounds its CSG solid from outside (world_csg.c) */
+		ng = v3_neg(ng), ns = v3_neg(ns);
 	*ng_out = ng, *ns_out = ns;
 }
 
@@ -110,12 +112,18 @@ static uint32_t world_circle(void *user, const render_hit *at, const tri_circle 
 						      : tlas_circle_set(w->top, q, sss_set(w, at->object), hits, max);
 	uint32_t n = total < max ? total : max;
 	*more = total > n; /* beyond the buffer: known only by count */
+	uint32_t kept = 0;
 	for (uint32_t i = 0; i < n; i++) {
 		vec3 ns;
-		hits[i].inst = w->top_inst[hits[i].inst];
-		hit_normals(&w->insts[hits[i].inst], hits[i].prim, hits[i].u, hits[i].v, &hits[i].ng, &ns);
+		tri_circle_hit h = hits[i];
+		h.inst = w->top_inst[h.inst];
+		/* A CSG solid's circle hits are those on its boundary, as its rays' (world_csg.c). */
+		if (w->insts[h.inst].csg_filtered && !world_csg_keep(w, h.inst, h.pos))
+			continue;
+		hit_normals(&w->insts[h.inst], h.prim, h.u, h.v, &h.ng, &ns);
+		hits[kept++] = h;
 	}
-	return n;
+	return kept;
 }
 
 static void world_circle_surface(void *user, const tri_circle_hit *h, render_hit *hit)
@@ -123,6 +131,9 @@ static void world_circle_surface(void *user, const tri_circle_hit *h, render_hit
 	fill_hit(user, h->inst, h->prim, h->u, h->v, hit);
 	hit->p = h->pos;
 }
+
+/* No SSS ray steps over more hits of a CSG operand off its solid's boundary than this. */
+#define RENDER_CSG_SKIPS 4096
 
 /* The nearest hit of a ray on the SSS volume of `at`: its instance alone (the ray moved into its
  * object space: t is kept, the direction not being renormalised), or the members of its group,
@@ -148,8 +159,16 @@ static bool world_sss_closest(void *user, const render_hit *at, const render_ray
 			r.org = d3v(xform_inv_point(&in->xf, v3_to_d3(ray->o)));
 			r.dir = d3v(xform_inv_vector(&in->xf, v3_to_d3(ray->d)));
 		}
-		if (!bvh_intersect(in->g->b, &r, &best))
-			return false;
+		for (int k = 0;; k++) { /* a CSG operand: the next hit on the solid's boundary */
+			if (k == RENDER_CSG_SKIPS || !bvh_intersect(in->g->b, &r, &best))
+				return false;
+			if (!in->csg_filtered)
+				break;
+			bvh_hit keyed = best;
+			if (world_csg_filter((void *)w, (uint32_t)at->object, &r, &keyed))
+				break;
+			r.tmin = nextafterf(best.t, INFINITY);
+		}
 		inst = at->object;
 	}
 	fill_hit(w, inst, best.prim, best.u, best.v, hit);

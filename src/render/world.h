@@ -47,7 +47,41 @@ typedef struct world_inst {
 	xform pattern_xf; /* object to world as the scene placed it: a pigment's pattern lives in its
 			   * object's space (xf may hold a sphere's centre and radius, or be flattened) */
 	vec3 lo, hi;    /* world-space bounds */
+	/* CSG (build_csg.c, world_csg.c): the node holding the instance (-1: in no CSG solid), its
+	 * place among that node's children; whether its hits are classified (some node above it is
+	 * not a union); its normals reversed (it bounds the solid from outside: an odd count of
+	 * inversions - inverse, a subtracted operand - above it); its own inverse; hidden: a
+	 * clipped_by object, never traced, only its inside asked. */
+	int32_t csg_parent;
+	uint32_t csg_slot;
+	bool csg_filtered, csg_flip, csg_inverse, hidden;
+	uint8_t inside_kind; /* WORLD_INSIDE_*: how its inside is told */
+	dvec3 plane_n;       /* WORLD_INSIDE_PLANE: the unit normal and offset (object space) */
+	double plane_d;
+	dvec3 box_lo, box_hi; /* WORLD_INSIDE_BOX: object space */
 } world_inst;
+
+enum {
+	WORLD_INSIDE_MESH,  /* parity of the mesh's crossings along a fixed ray */
+	WORLD_INSIDE_PLANE, /* the half-space below the plane (POV-Ray's inside of a plane) */
+	WORLD_INSIDE_BOX,   /* the box itself (its mesh is exactly the box) */
+};
+
+/* A node of a CSG solid (build_csg.c): its children are world.csg_kids[first .. first+count). */
+typedef struct world_csg_node {
+	scene_csg_op op;
+	bool inverse;
+	int32_t parent; /* -1 at the solid's root */
+	uint32_t slot;  /* its place among its parent's children */
+	uint32_t first, count;
+} world_csg_node;
+
+/* A child of a CSG node: a node (index >= 0) or an instance (-1 - inst); operand: which operand of
+ * the node it is (0 is a difference's base). */
+typedef struct world_csg_kid {
+	int32_t item;
+	uint32_t operand;
+} world_csg_kid;
 
 /* What a material adds to its BSDF parameters at a hit. */
 typedef struct world_material {
@@ -94,12 +128,23 @@ struct world {
 	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
 	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index;
 				 * the one record of membership (the top level's sets are sss_set's) */
+	world_csg_node *csg_nodes; /* every CSG solid's nodes (build_csg.c) */
+	size_t n_csg_nodes;
+	world_csg_kid *csg_kids;
+	size_t n_csg_kids;
 	world_stats stats;
 	render_scene rs;        /* the integrator's view of this world */
 };
 
 /* render/world.c: the top level's set of instance i (its SSS volume), which the build gives it. */
 uint32_t sss_set(const world *w, size_t i);
+/* render/world_csg.c: whether the point p (world space) of instance inst's surface bounds its CSG
+ * solid (always, for an instance in none): the boolean of the solid, POV-Ray's meaning. */
+bool world_csg_keep(const world *w, uint32_t inst, vec3 p);
+/* render/world_csg.c: whether p is inside instance inst's own solid (its inverse applied). */
+bool world_inside(const world *w, uint32_t inst, vec3 p);
+/* render/world_csg.c: the top levels' hit filter (tlas_filter): key is the insts index. */
+bool world_csg_filter(void *user, uint32_t key, const bvh_ray *ray, const bvh_hit *hit);
 /* render/world.c: w->rs, the integrator's view of the built w through world.c's callbacks. */
 void world_bind(world *w);
 

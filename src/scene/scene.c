@@ -664,6 +664,17 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " no_shadow");
 		if (ob->instance)
 			fprintf(o, " instance");
+		if (ob->inverse)
+			fprintf(o, " inverse");
+		if (ob->clip_only)
+			fprintf(o, " clip");
+		if (ob->csg_depth) { /* the path from the solid's root: operator, node id, operand */
+			static const char *const ops[] = {"union", "intersection", "difference", "merge"};
+			fprintf(o, " csg");
+			for (uint32_t k = 0; k < ob->csg_depth; k++)
+				fprintf(o, " %s%s#%u.%u", ob->csg[k].inverse ? "inverse-" : "", ops[ob->csg[k].op],
+					ob->csg[k].id, ob->csg[k].operand);
+		}
 		dump_pov_flags(o, ob->pov_flags);
 		dump_loc(o, ob->loc);
 		fputc('\n', o);

@@ -222,6 +222,28 @@ typedef struct scene_geom {
 	struct scene_geom *next; /* the scene's list of all geometry */
 } scene_geom;
 
+/* CSG (POV-Ray's intersection, difference, merge; a union only where it must be a node: an
+ * operand of several objects, or an inverted union). Every object stays an object of its own (its
+ * geometry made triangles as anywhere); the objects of one CSG solid carry their path from the
+ * solid's root, and the build classifies their hits by the solid's boolean (build/README.md). */
+typedef enum scene_csg_op {
+	SCENE_CSG_UNION, /* every operand's surface is kept (POV-Ray's union) */
+	SCENE_CSG_INTERSECTION,
+	SCENE_CSG_DIFFERENCE, /* the first operand less the others */
+	SCENE_CSG_MERGE, /* the union without the surfaces inside another operand */
+} scene_csg_op;
+
+/* One step of an object's path: the CSG node it is in (an id unique to each placed copy of the
+ * block: object { Name } copies take new ids), which of its operands holds the object, the node's
+ * operator and whether the node is inverted (inverse). */
+typedef struct scene_csg_step {
+	uint32_t id;
+	uint32_t operand;
+	scene_csg_op op;
+	bool inverse;
+	diag_loc loc; /* the block's keyword */
+} scene_csg_step;
+
 /* One placed object: a geometry, its object-to-world transform and its material. Unions are
  * flattened into their members, each with the composed transform. */
 typedef struct scene_object {
@@ -237,6 +259,12 @@ typedef struct scene_object {
 	bool no_shadow;
 	bool instance; /* made by object { Name } */
 	uint8_t pov_flags; /* SCENE_OBJ_*: POV-Ray's object flags circe records but does not render yet */
+	/* CSG: the path from the solid's root (csg[0]) to the innermost node holding the object,
+	 * csg_depth steps (0: not in a CSG solid); in the scene's arena, never shared between objects. */
+	const scene_csg_step *csg;
+	uint32_t csg_depth;
+	bool inverse; /* the object's own inverse: its inside is the outside of its surface */
+	bool clip_only; /* a clipped_by object: its inside clips, its surface is never seen */
 } scene_object;
 
 /* POV-Ray 3.7's object flags (Parse_Object_Mods): hollow matters only for media; the others hide
@@ -301,6 +329,7 @@ typedef struct scene {
 	uint32_t n_materials;
 	vecbuf assets; /* scene_asset, in the order the text names them */
 	vecbuf clamped_colors; /* diag_loc of each colour clamped so far (scene_color_finalise) */
+	uint32_t csg_ids; /* the last id given to a CSG node (scene_csg_step) */
 	uint64_t source_hash; /* of every file the language read for it, includes too (lang.h) */
 } scene;
 
