@@ -291,6 +291,10 @@ static void print_check_summary(const char *path, const scene *sc, const world_s
 	printf("  triangles after tessellation: %zu unique, %zu with instances (%zu subdivision surfaces)\n",
 	       ws->triangles, ws->instanced_triangles, ws->subdiv_surfaces);
 	print_check_shapes(ws);
+	if (ws->csg_solids)
+		printf("  CSG: %zu solids, %zu nodes (unions of several objects in one operand included), %zu "
+		       "clipping objects (never traced: only their insides are asked)\n",
+		       ws->csg_solids, ws->csg_nodes, ws->csg_clips);
 	if (st.sss_nonuniform)
 		printf("  SSS objects under a non-uniform scale: %zu (circles become ellipses there: their "
 		       "triangles are flattened into world space at build)\n", st.sss_nonuniform);

@@ -256,7 +256,21 @@ bool build_csg(world *w, const scene *sc, diag *d)
 		return false;
 	}
 	classify(w);
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const scene_object *o = scene_object_at(sc, w->insts[i].object);
+		if (w->insts[i].csg_filtered && !w->insts[i].hidden && o->material &&
+		    v3_max_comp(o->material->emission) > 0.0f) {
+			/* Its light would be sampled on the whole of each operand's surface. */
+			diag_error(d, o->loc, "an emissive object in a CSG intersection, difference, merge or clipped_by "
+					      "is not supported by circe");
+			return false;
+		}
+	}
 	csg_groups(w, sc);
 	w->stats.csg_nodes = w->n_csg_nodes;
+	for (size_t n = 0; n < w->n_csg_nodes; n++)
+		w->stats.csg_solids += w->csg_nodes[n].parent < 0;
+	for (size_t i = 0; i < w->n_insts; i++)
+		w->stats.csg_clips += w->insts[i].hidden;
 	return true;
 }

@@ -1,0 +1,1 @@
+bounded_by { box { -1, 1 } }

@@ -1,4 +1,0 @@
-difference {
-  sphere { 0, 1 }
-  box { -1, 1 }
-}
