@@ -171,6 +171,14 @@ void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 			*hi = d3(fmax(hi->x, q[0]), fmax(hi->y, q[1]), fmax(hi->z, q[2]));
 		}
 		break;
+	case SHAPE2_ISOSURFACE: /* its container */
+		if (s->contained_sphere) {
+			dvec3 r = d3(s->sphere_r, s->sphere_r, s->sphere_r);
+			*lo = d3_sub(s->box_lo, r), *hi = d3_add(s->box_lo, r);
+		} else {
+			*lo = s->box_lo, *hi = s->box_hi;
+		}
+		break;
 	case SHAPE2_TEXT: {
 		size_t n = s->text ? strlen(s->text) : 0;
 		double w = (double)n * (1.0 + fabs(s->offset.x));
@@ -195,6 +203,7 @@ bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	case SHAPE2_BLOB: return shape_blob(s, acc, out, tol_out, d, loc);
 	case SHAPE2_TEXT: return shape_text(s, acc, out, d, loc);
 	case SHAPE2_BICUBIC: return shape_bicubic(s, acc, out, d, loc);
+	case SHAPE2_ISOSURFACE: return shape_isosurface(s, acc, out, tol_out, d, loc);
 	}
 	return false;
 }

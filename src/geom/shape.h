@@ -1,4 +1,4 @@
-/* shape.h - POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob and text made triangle meshes
+/* shape.h - POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob, text, bicubic_patch and isosurface made triangle meshes
  * (mesh.h), in the shape's own space, closed where the shape is closed, with outward geometric
  * and shading normals and POV-Ray's UVs where it defines them (lathe, sor). Each takes a
  * shape_desc (plain arrays: the IR points at one) and an accuracy: the largest distance, in the
@@ -21,7 +21,8 @@
 #define SHAPE_MAX_TRIANGLES 4000000u
 
 typedef enum shape_kind {
-	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC
+	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC,
+	SHAPE2_ISOSURFACE
 } shape_kind;
 
 /* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
@@ -61,6 +62,20 @@ typedef struct shape_desc {
 	double st[8];
 	int patch_type, u_steps, v_steps;
 	double flatness;
+	/* isosurface: the function f(x, y, z) (called through fn with fn_ctx; false when it cannot be
+	 * evaluated), inside where f < threshold (the threshold above), cut by the container: a box
+	 * (box_lo, box_hi) or a sphere (centre box_lo, radius sphere_r) when contained_sphere; open: the
+	 * cut left open. max_gradient, accuracy, evaluate, max_trace, all_intersections: POV-Ray's ray
+	 * marching's settings, kept for the dump (the mesh follows the accuracy it is given). */
+	bool (*fn)(const void *fn_ctx, const double xyz[3], double *out);
+	const void *fn_ctx;
+	const char *fn_name;
+	bool contained_sphere;
+	dvec3 box_lo, box_hi;
+	double sphere_r;
+	double max_gradient, iso_accuracy, evaluate[3];
+	bool has_evaluate, all_intersections;
+	int max_trace;
 } shape_desc;
 
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
@@ -121,6 +136,28 @@ void poly2d_orient(double *xy, const uint32_t *counts, uint32_t n_contours, bool
  * tol of it: the bound max|P''| h^2 / 8 of a chord over a step h. */
 uint32_t shape_cubic_steps(const double A[2], const double B[2], double tol);
 
+/* A scalar field for the polygoniser (field.c), positive inside: eval gives its value at p and,
+ * when g is not NULL, its gradient; fill (may be NULL: eval at each point) writes the field at the
+ * grid points lo + h (i, j, k), i fastest, nx * ny * nz floats; on_edges: vertices are found on
+ * their grid edge by regula falsi (a field without a cheap gradient, or with creases) rather than
+ * moved off it by Newton steps. */
+typedef struct shape_field {
+	double (*eval)(const void *ctx, dvec3 p, dvec3 *g);
+	void (*fill)(const void *ctx, dvec3 lo, double h, uint32_t nx, uint32_t ny, uint32_t nz, float *f);
+	const void *ctx;
+	bool on_edges;
+} shape_field;
+/* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
+ * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).
+ * False (reported, b untouched) when the triangles counted from the grid pass the limit or memory
+ * runs out; b->failed when making them failed. */
+bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, const char *what, shape_builder *b,
+			    diag *d, diag_loc loc);
+/* The largest distance of b's triangle centres from F's zero set, to first order (|F| / |grad F|). */
+double shape_field_error(const shape_field *F, const shape_builder *b);
+/* h grown until a grid of ext at step h has at most max_points points. */
+double shape_field_fit_step(dvec3 ext, double h, size_t max_points);
+
 bool shape_lathe(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_sor(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
@@ -128,5 +165,6 @@ bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *ou
 bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 
 #endif
