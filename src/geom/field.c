@@ -245,7 +245,8 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 			    diag *d, diag_loc loc)
 {
 	dvec3 ext = d3_sub(hi, lo);
-	grid G = {.lo = d3_sub(lo, d3(h, h, h)), .h = h};
+	double sh = (F->shift > 0 && F->shift <= 1 ? F->shift : 1) * h;
+	grid G = {.lo = d3_sub(lo, d3(sh, sh, sh)), .h = h};
 	G.nx = (uint32_t)ceil(ext.x / h) + 3, G.ny = (uint32_t)ceil(ext.y / h) + 3, G.nz = (uint32_t)ceil(ext.z / h) + 3;
 	size_t np = (size_t)G.nx * G.ny * G.nz;
 	G.f = mem_alloc(np, sizeof *G.f);

@@ -62,6 +62,20 @@ static double container(const shape_desc *s, dvec3 p, dvec3 *g)
 	return best;
 }
 
+/* threshold - f at p and its gradient by central differences. */
+static double iso_eval_fn(iso_ctx *c, dvec3 p, dvec3 *g)
+{
+	double fv = iso_f(c, p), e = c->eps, d[3];
+	for (int a = 0; a < 3; a++) {
+		dvec3 u = d3(a == 0 ? e : 0, a == 1 ? e : 0, a == 2 ? e : 0);
+		d[a] = (iso_f(c, d3_add(p, u)) - iso_f(c, d3_sub(p, u))) / (2 * e);
+	}
+	*g = d3(d[0], d[1], d[2]);
+	if (!isfinite(d3_length(*g)))
+		*g = d3(0, 0, 0);
+	return fv;
+}
+
 static double iso_eval(const void *ctx, dvec3 p, dvec3 *g)
 {
 	iso_ctx *c = (iso_ctx *)ctx; /* the failure flag and the gradient statistic are written */
@@ -72,14 +86,7 @@ static double iso_eval(const void *ctx, dvec3 p, dvec3 *g)
 	if (cv < fv)
 		return cv;
 	if (g) {
-		double e = c->eps, d[3];
-		for (int a = 0; a < 3; a++) {
-			dvec3 u = d3(a == 0 ? e : 0, a == 1 ? e : 0, a == 2 ? e : 0);
-			d[a] = (iso_f(c, d3_add(p, u)) - iso_f(c, d3_sub(p, u))) / (2 * e);
-		}
-		*g = d3(d[0], d[1], d[2]);
-		if (!isfinite(d3_length(*g)))
-			*g = d3(0, 0, 0);
+		iso_eval_fn(c, p, g);
 		c->max_grad = fmax(c->max_grad, d3_length(*g));
 	}
 	return fv;
@@ -96,28 +103,49 @@ static void iso_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 	}
 }
 
-/* Drops the triangles whose three corners lie on the container where it cuts (open). */
-static void drop_cut(iso_ctx *c, shape_builder *b, double h)
+/* Drops the triangles whose three corners lie on the container where it cuts (open), and the
+ * vertices no triangle uses then. Returns the largest distance, to first order, of the open rim's
+ * vertices (those left on the container) from the function's surface: the rim follows the grid. */
+static double drop_cut(iso_ctx *c, shape_builder *b, double h)
 {
-	bool *on = mem_alloc(b->nv ? b->nv : 1, sizeof *on);
-	if (!on) {
+	uint32_t *map = mem_alloc(b->nv ? b->nv : 1, sizeof *map);
+	if (!map) {
 		b->failed = true;
-		return;
+		return 0;
 	}
 	for (uint32_t i = 0; i < b->nv; i++) {
 		dvec3 p = v3_to_d3(b->pos[i]);
 		double cv = container(c->s, p, NULL), fv = iso_f(c, p);
-		on[i] = fabs(cv) < 1e-3 * h && !(fv < cv - 1e-9);
+		map[i] = fabs(cv) < 1e-3 * h && !(fv < cv - 1e-9); /* 1: on the cut */
 	}
 	uint32_t n = 0;
 	for (uint32_t t = 0; t < b->nt; t++) {
 		const uint32_t *i = &b->idx[3 * (size_t)t];
-		if (on[i[0]] && on[i[1]] && on[i[2]])
+		if (map[i[0]] == 1 && map[i[1]] == 1 && map[i[2]] == 1)
 			continue;
 		memmove(&b->idx[3 * (size_t)n++], i, 3 * sizeof *i);
 	}
 	b->nt = n;
-	mem_free(on);
+	for (uint32_t i = 0; i < b->nv; i++)
+		map[i] = UINT32_MAX;
+	for (size_t k = 0; k < 3 * (size_t)n; k++)
+		map[b->idx[k]] = 0;
+	uint32_t nv = 0;
+	double rim = 0;
+	for (uint32_t i = 0; i < b->nv; i++)
+		if (map[i] == 0) {
+			dvec3 p = v3_to_d3(b->pos[i]), g;
+			double cv = container(c->s, p, NULL), fv = iso_eval_fn(c, p, &g), gl = d3_length(g);
+			if (fabs(cv) < 1e-3 * h && gl > 0 && isfinite(fv / gl))
+				rim = fmax(rim, fabs(fv) / gl);
+			b->pos[nv] = b->pos[i], b->nrm[nv] = b->nrm[i], b->uv[nv] = b->uv[i];
+			map[i] = nv++;
+		}
+	for (size_t k = 0; k < 3 * (size_t)n; k++)
+		b->idx[k] = map[b->idx[k]];
+	b->nv = nv;
+	mem_free(map);
+	return rim;
 }
 
 bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
@@ -135,7 +163,9 @@ bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	 * distance asks for, when it was missed and the grid allows it. */
 	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
 	iso_ctx c = {.s = s, .eps = 0};
-	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true};
+	/* the golden ratio's fraction of a cell: the box's faces fall between grid points (a grid
+	 * point on the zero set would make degenerate triangles there) */
+	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true, .shift = 0.6180339887};
 	shape_builder b;
 	double got = 0;
 	for (int pass = 0; pass < 2; pass++) {
@@ -149,9 +179,10 @@ bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 				   s->fn_name ? s->fn_name : "function", c.failed_at.x, c.failed_at.y, c.failed_at.z);
 			return false;
 		}
+		double rim = 0;
 		if (s->open && !b.failed)
-			drop_cut(&c, &b, h);
-		got = b.failed ? 0 : shape_field_error(&F, &b);
+			rim = drop_cut(&c, &b, h);
+		got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
 		if (b.failed || got <= 1.5 * acc->tol || pass == 1)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);

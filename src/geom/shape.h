@@ -140,12 +140,14 @@ uint32_t shape_cubic_steps(const double A[2], const double B[2], double tol);
  * when g is not NULL, its gradient; fill (may be NULL: eval at each point) writes the field at the
  * grid points lo + h (i, j, k), i fastest, nx * ny * nz floats; on_edges: vertices are found on
  * their grid edge by regula falsi (a field without a cheap gradient, or with creases) rather than
- * moved off it by Newton steps. */
+ * moved off it by Newton steps; shift: the grid's first point lies shift * h before lo (0: one
+ * cell), a fraction that keeps flat faces at lo (a container's) off the grid points. */
 typedef struct shape_field {
 	double (*eval)(const void *ctx, dvec3 p, dvec3 *g);
 	void (*fill)(const void *ctx, dvec3 lo, double h, uint32_t nx, uint32_t ny, uint32_t nz, float *f);
 	const void *ctx;
 	bool on_edges;
+	double shift;
 } shape_field;
 /* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
  * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).
