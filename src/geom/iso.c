@@ -126,25 +126,15 @@ static double drop_cut(iso_ctx *c, shape_builder *b, double h)
 		memmove(&b->idx[3 * (size_t)n++], i, 3 * sizeof *i);
 	}
 	b->nt = n;
-	for (uint32_t i = 0; i < b->nv; i++)
-		map[i] = UINT32_MAX;
-	for (size_t k = 0; k < 3 * (size_t)n; k++)
-		map[b->idx[k]] = 0;
-	uint32_t nv = 0;
-	double rim = 0;
-	for (uint32_t i = 0; i < b->nv; i++)
-		if (map[i] == 0) {
-			dvec3 p = v3_to_d3(b->pos[i]), g;
-			double cv = container(c->s, p, NULL), fv = iso_eval_fn(c, p, &g), gl = d3_length(g);
-			if (fabs(cv) < 1e-3 * h && gl > 0 && isfinite(fv / gl))
-				rim = fmax(rim, fabs(fv) / gl);
-			b->pos[nv] = b->pos[i], b->nrm[nv] = b->nrm[i], b->uv[nv] = b->uv[i];
-			map[i] = nv++;
-		}
-	for (size_t k = 0; k < 3 * (size_t)n; k++)
-		b->idx[k] = map[b->idx[k]];
-	b->nv = nv;
 	mem_free(map);
+	sb_compact(b);
+	double rim = 0;
+	for (uint32_t i = 0; i < b->nv; i++) {
+		dvec3 p = v3_to_d3(b->pos[i]), g;
+		double cv = container(c->s, p, NULL), fv = iso_eval_fn(c, p, &g), gl = d3_length(g);
+		if (fabs(cv) < 1e-3 * h && gl > 0 && isfinite(fv / gl))
+			rim = fmax(rim, fabs(fv) / gl);
+	}
 	return rim;
 }
 

@@ -79,6 +79,31 @@ void sb_tri(shape_builder *b, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want)
 	o[0] = a, o[1] = c1, o[2] = c2;
 }
 
+void sb_compact(shape_builder *b)
+{
+	if (b->failed || !b->nv)
+		return;
+	uint32_t *map = mem_alloc(b->nv, sizeof *map);
+	if (!map) {
+		b->failed = true;
+		return;
+	}
+	for (uint32_t i = 0; i < b->nv; i++)
+		map[i] = UINT32_MAX;
+	for (size_t k = 0; k < 3 * (size_t)b->nt; k++)
+		map[b->idx[k]] = 0;
+	uint32_t nv = 0;
+	for (uint32_t i = 0; i < b->nv; i++)
+		if (map[i] == 0) {
+			b->pos[nv] = b->pos[i], b->nrm[nv] = b->nrm[i], b->uv[nv] = b->uv[i];
+			map[i] = nv++;
+		}
+	for (size_t k = 0; k < 3 * (size_t)b->nt; k++)
+		b->idx[k] = map[b->idx[k]];
+	b->nv = nv;
+	mem_free(map);
+}
+
 bool sb_finish(shape_builder *b, mesh *out, bool uvs, const char *what, diag *d, diag_loc loc)
 {
 	if (b->nt >= SHAPE_MAX_TRIANGLES) {
@@ -172,6 +197,7 @@ void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 		}
 		break;
 	case SHAPE2_ISOSURFACE: /* its container */
+	case SHAPE2_PARAMETRIC:
 		if (s->contained_sphere) {
 			dvec3 r = d3(s->sphere_r, s->sphere_r, s->sphere_r);
 			*lo = d3_sub(s->box_lo, r), *hi = d3_add(s->box_lo, r);
@@ -204,6 +230,7 @@ bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	case SHAPE2_TEXT: return shape_text(s, acc, out, d, loc);
 	case SHAPE2_BICUBIC: return shape_bicubic(s, acc, out, d, loc);
 	case SHAPE2_ISOSURFACE: return shape_isosurface(s, acc, out, tol_out, d, loc);
+	case SHAPE2_PARAMETRIC: return shape_parametric(s, acc, out, tol_out, d, loc);
 	}
 	return false;
 }

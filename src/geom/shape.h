@@ -22,7 +22,7 @@
 
 typedef enum shape_kind {
 	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC,
-	SHAPE2_ISOSURFACE
+	SHAPE2_ISOSURFACE, SHAPE2_PARAMETRIC
 } shape_kind;
 
 /* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
@@ -76,6 +76,13 @@ typedef struct shape_desc {
 	double max_gradient, iso_accuracy, evaluate[3];
 	bool has_evaluate, all_intersections;
 	int max_trace;
+	/* parametric: x, y and z as functions of (u, v) (fn called with fn_ctxs[k] and <u, v, 0>) over
+	 * [uv_lo, uv_hi], clipped by the container above (box_lo/box_hi or the sphere); precompute's
+	 * depth and flags kept for the dump */
+	const void *fn_ctxs[3];
+	double uv_lo[2], uv_hi[2];
+	int precompute_depth;
+	bool precompute_xyz[3];
 } shape_desc;
 
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
@@ -117,6 +124,8 @@ void sb_free(shape_builder *b);
 uint32_t sb_vertex(shape_builder *b, dvec3 p, dvec3 n, double u, double v);
 /* A triangle a b c, its winding turned so its geometric normal faces `want` (if they disagree). */
 void sb_tri(shape_builder *b, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want);
+/* Drops the vertices no triangle uses, renumbering the triangles' (sets failed when memory runs out). */
+void sb_compact(shape_builder *b);
 /* The builder's contents as a mesh; false (reported) when it failed or passed the limit. */
 bool sb_finish(shape_builder *b, mesh *out, bool uvs, const char *what, diag *d, diag_loc loc);
 
@@ -168,5 +177,6 @@ bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, doubl
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+bool shape_parametric(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 
 #endif

@@ -5,7 +5,7 @@
 const char *shape_kind_name(shape_kind k)
 {
 	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch",
-					      "isosurface"};
+					      "isosurface", "parametric"};
 	return names[k];
 }
 
@@ -60,6 +60,19 @@ void shape_dump(FILE *o, const shape_desc *s)
 			s->all_intersections ? " all_intersections" : "", s->open ? " open" : "");
 		if (s->has_evaluate)
 			fprintf(o, " evaluate %g %g %g", s->evaluate[0], s->evaluate[1], s->evaluate[2]);
+		fprintf(o, "\n");
+		break;
+	case SHAPE2_PARAMETRIC:
+		fprintf(o, " u %g %g v %g %g", s->uv_lo[0], s->uv_hi[0], s->uv_lo[1], s->uv_hi[1]);
+		if (s->contained_sphere)
+			fprintf(o, " contained_by sphere %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->sphere_r);
+		else
+			fprintf(o, " contained_by box %g %g %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->box_hi.x,
+				s->box_hi.y, s->box_hi.z);
+		fprintf(o, " max_gradient %g accuracy %g", s->max_gradient, s->iso_accuracy);
+		if (s->precompute_depth)
+			fprintf(o, " precompute %d%s%s%s", s->precompute_depth, s->precompute_xyz[0] ? " x" : "",
+				s->precompute_xyz[1] ? " y" : "", s->precompute_xyz[2] ? " z" : "");
 		fprintf(o, "\n");
 		break;
 	case SHAPE2_TEXT:

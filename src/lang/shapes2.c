@@ -28,9 +28,9 @@ static bool accept_word(parser *p, const char *w)
 
 int lang_pov_shape_kind(const lang_token *t)
 {
-	static const char *const words[] = {"lathe",	     "sor", "prism", "sphere_sweep", "blob", "text",
-					    "bicubic_patch", "isosurface"};
-	for (int k = 0; k < 8; k++)
+	static const char *const words[] = {"lathe",	     "sor",	   "prism",	 "sphere_sweep", "blob",
+					    "text",	     "bicubic_patch", "isosurface", "parametric"};
+	for (int k = 0; k < 9; k++)
 		if (lang_word_is(t, words[k]))
 			return k;
 	return -1;
@@ -509,8 +509,9 @@ static bool iso_call(const void *ctx, const double xyz[3], double *out)
 	return lang_fn_eval(ctx, xyz, out, &failed);
 }
 
-/* "function" "{" ... "}" or a declared function's name: a float function of x, y and z. */
-static bool iso_function(parser *p, shape_desc *s, const char *what)
+/* "function" "{" ... "}" or a declared function's name: a float function of x, y and z (of u, v
+ * and a third for a parametric: u and v are x and y), evaluable by circe; *out the function. */
+static bool float_function(parser *p, const char *what, const lang_function **out)
 {
 	lang_token t = *lang_peek(p);
 	const lang_function *f = NULL;
@@ -541,6 +542,14 @@ static bool iso_function(parser *p, shape_desc *s, const char *what)
 		return lang_error(p, t.loc, "'%s' is not supported by circe in a function (calling '%s')",
 				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name);
 	}
+	*out = f;
+	return true;
+}
+
+static bool iso_function(parser *p, shape_desc *s, const char *what)
+{
+	const lang_function *f;
+	TRY(float_function(p, what, &f));
 	s->fn = iso_call, s->fn_ctx = f, s->fn_name = f->name;
 	return true;
 }
@@ -638,6 +647,60 @@ static bool isosurface(parser *p, shape_desc *s, diag_loc kw)
 	return true;
 }
 
+/* parametric = "parametric" "{" function function function vector ","? vector
+ *              { "contained_by" "{" ... "}" | "max_gradient" float | "accuracy" float
+ *              | "precompute" float [ "x" ] [ ","? "y" ] [ ","? "z" ] } ...: POV-Ray 3.7's
+ *              Parse_Parametric and its defaults (a box from <-1,-1,-1> to <1,1,1>, max_gradient 1,
+ *              accuracy 0.001); the functions give x, y and z of (u, v). */
+static bool parametric(parser *p, shape_desc *s, diag_loc kw)
+{
+	static const char *const which[] = {"the parametric's x function", "the parametric's y function",
+					    "the parametric's z function"};
+	s->box_lo = d3(-1, -1, -1), s->box_hi = d3(1, 1, 1);
+	s->max_gradient = 1, s->iso_accuracy = 0.001;
+	for (int k = 0; k < 3; k++) {
+		if (lang_peek(p)->kind != LTK_KW_FUNCTION)
+			return lang_error_found(p, "expected 'function { ... }' as %s (a parametric takes three)", which[k]);
+		const lang_function *f;
+		TRY(float_function(p, which[k], &f));
+		s->fn_ctxs[k] = f;
+	}
+	s->fn = iso_call, s->fn_ctx = s->fn_ctxs[0], s->fn_name = "function";
+	dvec3 a, b;
+	diag_loc at = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "as the parametric's first <u, v> corner", &a));
+	comma(p);
+	TRY(lang_vec3(p, "as the parametric's second <u, v> corner", &b));
+	s->uv_lo[0] = a.x, s->uv_lo[1] = a.y, s->uv_hi[0] = b.x, s->uv_hi[1] = b.y;
+	if (!(b.x > a.x) || !(b.y > a.y))
+		return lang_error(p, at, "the parametric's <u, v> corners <%g, %g> and <%g, %g> span no area (u2 > u1 and "
+					 "v2 > v1 are needed)",
+				  a.x, a.y, b.x, b.y);
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (accept_word(p, "contained_by")) {
+			TRY(contained_by(p, s, t.loc));
+		} else if (accept_word(p, "max_gradient")) {
+			TRY(lang_float(p, "after 'max_gradient'", &s->max_gradient));
+		} else if (accept_word(p, "accuracy")) {
+			TRY(lang_float(p, "after 'accuracy'", &s->iso_accuracy));
+		} else if (accept_word(p, "precompute")) {
+			double depth;
+			TRY(lang_float(p, "as precompute's depth", &depth));
+			s->precompute_depth = depth < 0 ? 0 : depth > 20 ? 20 : (int)depth;
+			for (int k = 0; k < 3; k++) {
+				comma(p);
+				static const char *const xyz[] = {"x", "y", "z"};
+				if (accept_word(p, xyz[k]))
+					s->precompute_xyz[k] = true;
+			}
+		} else
+			break;
+	}
+	(void)kw;
+	return true;
+}
+
 scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
 {
 	shape_desc *s = new_desc(p, (shape_kind)kind);
@@ -652,6 +715,7 @@ scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn 
 	case SHAPE2_BLOB: ok = blob(p, s, kw, xf_item); break;
 	case SHAPE2_BICUBIC: ok = bicubic_patch(p, s); break;
 	case SHAPE2_ISOSURFACE: ok = isosurface(p, s, kw); break;
+	case SHAPE2_PARAMETRIC: ok = parametric(p, s, kw); break;
 	default: ok = text(p, s); break;
 	}
 	if (!ok)

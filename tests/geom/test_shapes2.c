@@ -566,6 +566,74 @@ static void test_isosurface(void)
 	fclose(null);
 }
 
+/* ---- parametric: a torus of radii 1 and 0.4 as three functions of (u, v) ---- */
+
+static bool fn_tx(const void *ctx, const double *q, double *out)
+{
+	*out = (1 + 0.4 * cos(q[1])) * cos(q[0]) * *(const double *)ctx;
+	return true;
+}
+static bool fn_ty(const void *ctx, const double *q, double *out)
+{
+	*out = 0.4 * sin(q[1]) * *(const double *)ctx;
+	return true;
+}
+static bool fn_tz(const void *ctx, const double *q, double *out)
+{
+	*out = (1 + 0.4 * cos(q[1])) * sin(q[0]) * *(const double *)ctx;
+	return true;
+}
+
+/* the callbacks differ by function: the context says which (its value scales the result) */
+typedef struct tctx {
+	double k;
+	int which;
+} tctx;
+static bool fn_torus3(const void *ctx, const double *q, double *out)
+{
+	const tctx *c = ctx;
+	return c->which == 0 ? fn_tx(&c->k, q, out) : c->which == 1 ? fn_ty(&c->k, q, out) : fn_tz(&c->k, q, out);
+}
+
+static double torus_dist(const void *ctx, dvec3 p)
+{
+	(void)ctx;
+	return fabs(hypot(hypot(p.x, p.z) - 1, p.y) - 0.4);
+}
+
+static void test_parametric(void)
+{
+	tctx cx = {1, 0}, cy = {1, 1}, cz = {1, 2};
+	shape_desc s = {.kind = SHAPE2_PARAMETRIC, .fn = fn_torus3, .fn_ctxs = {&cx, &cy, &cz},
+			.uv_lo = {0, 0}, .uv_hi = {2 * M_PI, 2 * M_PI}, .box_lo = d3(-2, -2, -2), .box_hi = d3(2, 2, 2)};
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "parametric torus");
+	CHECK(tol <= 1.5 * acc.tol, "the torus reached %g (asked %g)", tol, acc.tol);
+	double w = worst(&m, torus_dist, NULL);
+	CHECK(w <= 1.01 * tol, "the parametric torus within its stated %g: %g", tol, w);
+	CHECK(open_edges(&m) == 0, "the torus's seams meet: %zu open edges", open_edges(&m));
+	CHECK(flipped_normals(&m) == 0, "normals follow the winding: %zu flipped", flipped_normals(&m));
+	CHECK(fabs(fabs(volume(&m)) - 2 * M_PI * M_PI * 0.16) < 0.01 * 2 * M_PI * M_PI * 0.16, "torus volume %g",
+	      volume(&m));
+	mesh_free(&m);
+	/* clipped by a box: only the half with x > 0 */
+	s.box_lo = d3(0, -2, -2);
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "clipped parametric");
+	vec3 lo, hi;
+	mesh_bounds(&m, &lo, &hi);
+	CHECK(lo.x > -0.05f && hi.x > 1.3f, "clipped to x > 0: %g %g", lo.x, hi.x);
+	mesh_free(&m);
+	/* past the triangle limit: refused */
+	diag quiet;
+	FILE *null = fopen("/dev/null", "w");
+	diag_init(&quiet, null);
+	acc.tol = 1e-9;
+	CHECK(!shape_tessellate(&s, &acc, &m, &tol, &quiet, diag_noloc()) && quiet.errors == 1, "parametric limit");
+	fclose(null);
+}
+
 static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
@@ -592,6 +660,7 @@ int main(void)
 	test_text();
 	test_bicubic();
 	test_isosurface();
+	test_parametric();
 	test_limit();
 	return check_done("test_shapes2");
 }
