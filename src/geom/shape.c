@@ -205,6 +205,11 @@ void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 			*lo = s->box_lo, *hi = s->box_hi;
 		}
 		break;
+	case SHAPE2_JULIA: {
+		double ev, r = shape_julia_radius(s, &ev);
+		*lo = d3(-r, -r, -r), *hi = d3(r, r, r);
+		break;
+	}
 	case SHAPE2_TEXT: {
 		size_t n = s->text ? strlen(s->text) : 0;
 		double w = (double)n * (1.0 + fabs(s->offset.x));
@@ -231,6 +236,7 @@ bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	case SHAPE2_BICUBIC: return shape_bicubic(s, acc, out, d, loc);
 	case SHAPE2_ISOSURFACE: return shape_isosurface(s, acc, out, tol_out, d, loc);
 	case SHAPE2_PARAMETRIC: return shape_parametric(s, acc, out, tol_out, d, loc);
+	case SHAPE2_JULIA: return shape_julia(s, acc, out, tol_out, d, loc);
 	}
 	return false;
 }

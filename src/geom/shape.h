@@ -22,7 +22,7 @@
 
 typedef enum shape_kind {
 	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC,
-	SHAPE2_ISOSURFACE, SHAPE2_PARAMETRIC
+	SHAPE2_ISOSURFACE, SHAPE2_PARAMETRIC, SHAPE2_JULIA
 } shape_kind;
 
 /* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
@@ -83,6 +83,11 @@ typedef struct shape_desc {
 	double uv_lo[2], uv_hi[2];
 	int precompute_depth;
 	bool precompute_xyz[3];
+	/* julia_fractal: q <- f(q) + julia while |q|^2 stays within POV-Ray's exit value, for
+	 * max_iteration steps, q starting at (x, y, z, w) on the slice (slice . q = slice_dist); the
+	 * algebra (0 quaternion, 1 hypercomplex) and f (0 sqr, 1 cube); precision kept for the dump */
+	double julia[4], slice[4], slice_dist, precision;
+	int algebra, jfunc, max_iteration;
 } shape_desc;
 
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
@@ -177,6 +182,9 @@ bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, doubl
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+bool shape_julia(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+/* POV-Ray's julia_fractal bound: the radius of its sphere (Fractal::Compute_BBox) and the exit value. */
+double shape_julia_radius(const shape_desc *s, double *exit_value);
 bool shape_parametric(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 
 #endif

@@ -5,7 +5,7 @@
 const char *shape_kind_name(shape_kind k)
 {
 	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch",
-					      "isosurface", "parametric"};
+					      "isosurface", "parametric", "julia_fractal"};
 	return names[k];
 }
 
@@ -74,6 +74,11 @@ void shape_dump(FILE *o, const shape_desc *s)
 			fprintf(o, " precompute %d%s%s%s", s->precompute_depth, s->precompute_xyz[0] ? " x" : "",
 				s->precompute_xyz[1] ? " y" : "", s->precompute_xyz[2] ? " z" : "");
 		fprintf(o, "\n");
+		break;
+	case SHAPE2_JULIA:
+		fprintf(o, " <%g, %g, %g, %g> %s %s max_iteration %d precision %g slice <%g, %g, %g, %g> %g\n", s->julia[0],
+			s->julia[1], s->julia[2], s->julia[3], s->algebra ? "hypercomplex" : "quaternion", s->jfunc ? "cube" : "sqr",
+			s->max_iteration, s->precision, s->slice[0], s->slice[1], s->slice[2], s->slice[3], s->slice_dist);
 		break;
 	case SHAPE2_TEXT:
 		fprintf(o, " ttf \"%s\" \"%s\" depth %g offset %g %g %g\n", s->font, s->text, s->depth, s->offset.x,

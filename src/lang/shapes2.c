@@ -28,9 +28,9 @@ static bool accept_word(parser *p, const char *w)
 
 int lang_pov_shape_kind(const lang_token *t)
 {
-	static const char *const words[] = {"lathe",	     "sor",	   "prism",	 "sphere_sweep", "blob",
-					    "text",	     "bicubic_patch", "isosurface", "parametric"};
-	for (int k = 0; k < 9; k++)
+	static const char *const words[] = {"lathe", "sor",	   "prism",	 "sphere_sweep", "blob",
+					    "text",  "bicubic_patch", "isosurface", "parametric",	  "julia_fractal"};
+	for (int k = 0; k < 10; k++)
 		if (lang_word_is(t, words[k]))
 			return k;
 	return -1;
@@ -701,6 +701,78 @@ static bool parametric(parser *p, shape_desc *s, diag_loc kw)
 	return true;
 }
 
+/* A 4-D vector: <a, b, c, d>. */
+static bool vec4(parser *p, const char *what, double out[4])
+{
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (!(v.kind == VAL_VECTOR || v.kind == VAL_COLOR) || v.n < 4)
+		return lang_error(p, at, "expected a 4-D vector <a, b, c, d> %s", what);
+	for (int k = 0; k < 4; k++)
+		out[k] = v.v[k];
+	return true;
+}
+
+/* julia_fractal = "julia_fractal" "{" vector4 { "quaternion" | "hypercomplex" | "sqr" | "cube"
+ *                 | "max_iteration" float | "precision" float | "slice" vector4 "," float } ...:
+ *                 POV-Ray 3.7's Parse_Julia_Fractal and its defaults (quaternion sqr,
+ *                 max_iteration 20, precision 20, slice <0, 0, 0, 1>, 0); POV-Ray's other
+ *                 functions (exp, reciprocal, sin, ..., pwr) are not supported by circe. */
+static bool julia_fractal(parser *p, shape_desc *s, diag_loc kw)
+{
+	TRY(vec4(p, "as the julia_fractal's parameter", s->julia));
+	s->max_iteration = 20, s->precision = 20;
+	s->slice[0] = s->slice[1] = s->slice[2] = 0, s->slice[3] = 1, s->slice_dist = 0;
+	static const char *const other[] = {"exp",  "reciprocal", "sin",   "asin", "sinh", "asinh", "cos",
+					    "acos", "cosh",	  "acosh", "tan",  "atan", "tanh",  "atanh",
+					    "ln",   "log",	  "pwr"};
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (accept_word(p, "quaternion"))
+			s->algebra = 0;
+		else if (accept_word(p, "hypercomplex"))
+			s->algebra = 1;
+		else if (accept_word(p, "sqr"))
+			s->jfunc = 0;
+		else if (accept_word(p, "cube"))
+			s->jfunc = 1;
+		else if (accept_word(p, "max_iteration")) {
+			double m;
+			TRY(lang_float(p, "after 'max_iteration'", &m));
+			if (!(m >= 1) || !(m <= 1000))
+				return lang_error(p, t.loc, "a julia_fractal's max_iteration must be 1 to 1000, found %g", m);
+			s->max_iteration = (int)m;
+		} else if (accept_word(p, "precision")) {
+			TRY(lang_float(p, "after 'precision'", &s->precision));
+			if (!(s->precision >= 1))
+				s->precision = 1; /* POV-Ray: "Precision must be at least 1" and uses 1 */
+		} else if (accept_word(p, "slice")) {
+			TRY(vec4(p, "as the slice's normal", s->slice));
+			comma(p);
+			TRY(lang_float(p, "as the slice's distance", &s->slice_dist));
+			double l = sqrt(s->slice[0] * s->slice[0] + s->slice[1] * s->slice[1] + s->slice[2] * s->slice[2] +
+					s->slice[3] * s->slice[3]);
+			if (!(l > 0))
+				return lang_error(p, t.loc, "the julia_fractal's slice normal is the zero vector");
+			if (fabs(s->slice[3]) < 1e-9 * l)
+				return lang_error(p, t.loc, "a julia_fractal slice whose normal has no fourth component is not "
+							    "supported by circe");
+			for (int k = 0; k < 4; k++)
+				s->slice[k] /= l;
+			s->slice_dist /= l;
+		} else {
+			for (size_t k = 0; k < sizeof other / sizeof *other; k++)
+				if (lang_word_is(&t, other[k]))
+					return lang_error(p, t.loc, "julia_fractal's '%.*s' is not supported by circe (sqr and cube are)",
+							  (int)t.len, t.text);
+			break;
+		}
+	}
+	(void)kw;
+	return true;
+}
+
 scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
 {
 	shape_desc *s = new_desc(p, (shape_kind)kind);
@@ -716,6 +788,7 @@ scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn 
 	case SHAPE2_BICUBIC: ok = bicubic_patch(p, s); break;
 	case SHAPE2_ISOSURFACE: ok = isosurface(p, s, kw); break;
 	case SHAPE2_PARAMETRIC: ok = parametric(p, s, kw); break;
+	case SHAPE2_JULIA: ok = julia_fractal(p, s, kw); break;
 	default: ok = text(p, s); break;
 	}
 	if (!ok)

@@ -634,6 +634,33 @@ static void test_parametric(void)
 	fclose(null);
 }
 
+/* julia_fractal: with c = 0, q <- q^2 stays bounded exactly inside the unit ball (quaternion), and
+ * q <- q^3 too: the mesh is that sphere, within its stated cell */
+static double unit_dist(const void *ctx, dvec3 p)
+{
+	(void)ctx;
+	return fabs(d3_length(p) - 1);
+}
+
+static void test_julia(void)
+{
+	for (int f = 0; f < 2; f++) {
+		shape_desc s = {.kind = SHAPE2_JULIA, .julia = {0, 0, 0, 0}, .slice = {0, 0, 0, 1}, .jfunc = f,
+				.max_iteration = 20, .precision = 20};
+		shape_accuracy acc = {2e-2, 64}; /* cells of 0.04: a quick test */
+		mesh m = {0};
+		double tol;
+		CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "julia");
+		double w = worst(&m, unit_dist, NULL);
+		CHECK(w <= tol, "the julia set of c = 0 (%s) within its stated %g of the unit sphere: %g", f ? "cube" : "sqr",
+		      tol, w);
+		CHECK(open_edges(&m) == 0, "closed julia: %zu open edges", open_edges(&m));
+		CHECK_NEAR(volume(&m), 4 * M_PI / 3, 0.03 * 4 * M_PI / 3);
+		CHECK(flipped_normals(&m) == 0, "julia normals: %zu flipped", flipped_normals(&m));
+		mesh_free(&m);
+	}
+}
+
 static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
@@ -661,6 +688,7 @@ int main(void)
 	test_bicubic();
 	test_isosurface();
 	test_parametric();
+	test_julia();
 	test_limit();
 	return check_done("test_shapes2");
 }
