@@ -54,9 +54,19 @@ $cam
 isosurface { function { y - sin(x * 4 * pi) * 0.1 } max_gradient 1.7
 	contained_by { box { <-1, -1, -1>, <1, 1, 1> } } translate y }
 POV
+cat >"$work/parametric.pov" <<POV
+$cam
+parametric { function { (1 + 0.4 * cos(v)) * cos(u) } function { 0.4 * sin(v) }
+	function { (1 + 0.4 * cos(v)) * sin(u) } <0, 0>, <2 * pi, 2 * pi> contained_by { box { -2, 2 } }
+	rotate -60 * x translate y }
+POV
+cat >"$work/julia_fractal.pov" <<POV
+$cam
+julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 translate y }
+POV
 echo "| shape | triangles | tolerance (units) | check time (s, best of 3) |"
 echo "|---|---:|---:|---:|"
-for s in lathe sor prism sphere_sweep blob text bicubic_patch isosurface isosurface_cut; do
+for s in lathe sor prism sphere_sweep blob text bicubic_patch isosurface isosurface_cut parametric julia_fractal; do
 	best=""
 	for run in 1 2 3; do
 		t0=$(date +%s.%N)
