@@ -1159,10 +1159,11 @@ static bool box(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	TRY(lang_vec3(p, "as the second box corner", &g->u.box.corner2));
 	dvec3 a = g->u.box.corner1, b = g->u.box.corner2;
 	int flat = (a.x == b.x) + (a.y == b.y) + (a.z == b.z);
-	if (flat > 1)
-		return lang_error(p, kw, "box is flat in %d directions: its corners <%g, %g, %g> and <%g, %g, %g> make a %s",
-				  flat, a.x, a.y, a.z, b.x, b.y, b.z, flat == 3 ? "point" : "line");
-	if (flat == 1) /* POV-Ray renders it: its slab test meets the plane from either side */
+	if (flat > 1) /* POV-Ray accepts it and shows nothing (float4.pov at clock 0) */
+		diag_warning(p->d, kw, "box is flat in %d directions: its corners <%g, %g, %g> and <%g, %g, %g> make a %s, "
+				       "which is invisible (as in POV-Ray)",
+			     flat, a.x, a.y, a.z, b.x, b.y, b.z, flat == 3 ? "point" : "line");
+	else if (flat == 1) /* POV-Ray renders it: its slab test meets the plane from either side */
 		diag_warning(p->d, kw, "box is flat: its corners <%g, %g, %g> and <%g, %g, %g> share a coordinate; made a "
 				       "two-sided rectangle (it has no inside)",
 			     a.x, a.y, a.z, b.x, b.y, b.z);

@@ -13,3 +13,4 @@ union {
 	translate -2 * x
 }
 box { <-1, -1, 0>, <1, 1, 0> pigment { color rgb 0.5 } translate z }
+box { <0, 0, 1>, <1, 0, 1> translate -2 * z }
