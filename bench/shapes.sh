@@ -1,6 +1,6 @@
 #!/bin/sh
-# bench/shapes.sh [CIRCE]: the tessellation of POV-Ray's lathe, sor, prism, sphere_sweep, blob
-# and text (issue 19) at the default accuracy: each alone in a scene, seen from 6 units filling
+# bench/shapes.sh [CIRCE]: the tessellation of POV-Ray's lathe, sor, prism, sphere_sweep, blob,
+# text, bicubic_patch and isosurface (issue 19) at the default accuracy: each alone in a scene, seen from 6 units filling
 # about half of `circe check`'s 640x480 view, through `circe check` (which tessellates as a render
 # would and builds no BVH). Prints a markdown table: triangles, the tolerance chosen, and the
 # wall time of the whole check (parse + tessellation), best of 3. Run from the build folder.
@@ -44,9 +44,29 @@ bicubic_patch { type 1 <-2, 0, -2>, <-1, 1, -2>, <1, -1, -2>, <2, 0, -2>, <-2, 1
 	<1, 2, -1>, <2, 0, -1>, <-2, 0, 1>, <-1, -1, 1>, <1, 2, 1>, <2, 1, 1>, <-2, 0, 2>, <-1, 1, 2>,
 	<1, 0, 2>, <2, 0, 2> }
 POV
+cat >"$work/isosurface.pov" <<POV
+$cam
+isosurface { function { sqrt(pow(sqrt(x * x + z * z) - 0.7, 2) + y * y) - 0.25 }
+	contained_by { box { <-1, -0.5, -1>, <1, 0.5, 1> } } rotate -60 * x translate y }
+POV
+cat >"$work/isosurface_cut.pov" <<POV
+$cam
+isosurface { function { y - sin(x * 4 * pi) * 0.1 } max_gradient 1.7
+	contained_by { box { <-1, -1, -1>, <1, 1, 1> } } translate y }
+POV
+cat >"$work/parametric.pov" <<POV
+$cam
+parametric { function { (1 + 0.4 * cos(v)) * cos(u) } function { 0.4 * sin(v) }
+	function { (1 + 0.4 * cos(v)) * sin(u) } <0, 0>, <2 * pi, 2 * pi> contained_by { box { -2, 2 } }
+	rotate -60 * x translate y }
+POV
+cat >"$work/julia_fractal.pov" <<POV
+$cam
+julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 translate y }
+POV
 echo "| shape | triangles | tolerance (units) | check time (s, best of 3) |"
 echo "|---|---:|---:|---:|"
-for s in lathe sor prism sphere_sweep blob text bicubic_patch; do
+for s in lathe sor prism sphere_sweep blob text bicubic_patch isosurface isosurface_cut parametric julia_fractal; do
 	best=""
 	for run in 1 2 3; do
 		t0=$(date +%s.%N)
@@ -55,7 +75,7 @@ for s in lathe sor prism sphere_sweep blob text bicubic_patch; do
 		t=$(echo "$t1 - $t0" | bc)
 		if [ -z "$best" ] || [ "$(echo "$t < $best" | bc)" = 1 ]; then best=$t; fi
 	done
-	line=$(grep "^  $s at " "$work/out")
+	line=$(grep "^  ${s%_cut} at " "$work/out")
 	tris=$(echo "$line" | sed 's/.*: \([0-9]*\) triangles.*/\1/')
 	tol=$(echo "$line" | sed 's/.*within \([^ ]*\) units.*/\1/')
 	printf '| %s | %s | %s | %.3f |\n' "$s" "$tris" "$tol" "$best"

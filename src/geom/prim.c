@@ -87,12 +87,15 @@ bool prim_sphere(vec3 centre, float radius, uint32_t segments, mesh *out)
 
 bool prim_box(vec3 c1, vec3 c2, mesh *out)
 {
-	if (!mesh_alloc(out, 24, 12, true, true, false))
-		return false;
 	vec3 lo = v3_min(c1, c2), hi = v3_max(c1, c2);
+	int flat = lo.x == hi.x ? 0 : lo.y == hi.y ? 1 : lo.z == hi.z ? 2 : -1;
+	if (!mesh_alloc(out, flat < 0 ? 24 : 4, flat < 0 ? 12 : 2, true, true, false))
+		return false;
 	uint32_t v = 0, *ix = out->indices;
 	for (int axis = 0; axis < 3; axis++) {
 		for (int side = 0; side < 2; side++) {
+			if (flat >= 0 && (axis != flat || !side))
+				continue; /* a flat box: the one rectangle, facing +axis */
 			float s = side ? 1.0f : -1.0f;
 			vec3 n = v3(axis == 0 ? s : 0, axis == 1 ? s : 0, axis == 2 ? s : 0);
 			/* u, w span the face so that u x w = n. */

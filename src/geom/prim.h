@@ -24,7 +24,9 @@ uint32_t prim_sphere_level_segments(uint32_t level);
 double prim_sphere_rel_error(uint32_t segments);
 
 /* The box between two opposite corners (any order): 6 faces of 2 triangles with flat normals,
- * 24 vertices. Degenerate (a zero extent) boxes are still written and simply never hit. */
+ * 24 vertices. A box flat along one axis (POV-Ray renders it: its slab test meets the plane) is
+ * the one rectangle, facing +axis: 2 triangles, 4 vertices (flat along more: a rectangle of no
+ * area, never hit). */
 bool prim_box(vec3 corner1, vec3 corner2, mesh *out);
 
 /* The plane { normal, offset } (points p with dot(p, normal) = offset * |normal|, as POV-Ray),

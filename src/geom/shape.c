@@ -79,6 +79,31 @@ void sb_tri(shape_builder *b, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want)
 	o[0] = a, o[1] = c1, o[2] = c2;
 }
 
+void sb_compact(shape_builder *b)
+{
+	if (b->failed || !b->nv)
+		return;
+	uint32_t *map = mem_alloc(b->nv, sizeof *map);
+	if (!map) {
+		b->failed = true;
+		return;
+	}
+	for (uint32_t i = 0; i < b->nv; i++)
+		map[i] = UINT32_MAX;
+	for (size_t k = 0; k < 3 * (size_t)b->nt; k++)
+		map[b->idx[k]] = 0;
+	uint32_t nv = 0;
+	for (uint32_t i = 0; i < b->nv; i++)
+		if (map[i] == 0) {
+			b->pos[nv] = b->pos[i], b->nrm[nv] = b->nrm[i], b->uv[nv] = b->uv[i];
+			map[i] = nv++;
+		}
+	for (size_t k = 0; k < 3 * (size_t)b->nt; k++)
+		b->idx[k] = map[b->idx[k]];
+	b->nv = nv;
+	mem_free(map);
+}
+
 bool sb_finish(shape_builder *b, mesh *out, bool uvs, const char *what, diag *d, diag_loc loc)
 {
 	if (b->nt >= SHAPE_MAX_TRIANGLES) {
@@ -171,6 +196,20 @@ void shape_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 			*hi = d3(fmax(hi->x, q[0]), fmax(hi->y, q[1]), fmax(hi->z, q[2]));
 		}
 		break;
+	case SHAPE2_ISOSURFACE: /* its container */
+	case SHAPE2_PARAMETRIC:
+		if (s->contained_sphere) {
+			dvec3 r = d3(s->sphere_r, s->sphere_r, s->sphere_r);
+			*lo = d3_sub(s->box_lo, r), *hi = d3_add(s->box_lo, r);
+		} else {
+			*lo = s->box_lo, *hi = s->box_hi;
+		}
+		break;
+	case SHAPE2_JULIA: {
+		double ev, r = shape_julia_radius(s, &ev);
+		*lo = d3(-r, -r, -r), *hi = d3(r, r, r);
+		break;
+	}
 	case SHAPE2_TEXT: {
 		size_t n = s->text ? strlen(s->text) : 0;
 		double w = (double)n * (1.0 + fabs(s->offset.x));
@@ -195,6 +234,9 @@ bool shape_tessellate(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 	case SHAPE2_BLOB: return shape_blob(s, acc, out, tol_out, d, loc);
 	case SHAPE2_TEXT: return shape_text(s, acc, out, d, loc);
 	case SHAPE2_BICUBIC: return shape_bicubic(s, acc, out, d, loc);
+	case SHAPE2_ISOSURFACE: return shape_isosurface(s, acc, out, tol_out, d, loc);
+	case SHAPE2_PARAMETRIC: return shape_parametric(s, acc, out, tol_out, d, loc);
+	case SHAPE2_JULIA: return shape_julia(s, acc, out, tol_out, d, loc);
 	}
 	return false;
 }

@@ -1,4 +1,4 @@
-/* shape.h - POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob and text made triangle meshes
+/* shape.h - POV-Ray 3.7's lathe, sor, prism, sphere_sweep, blob, text, bicubic_patch and isosurface made triangle meshes
  * (mesh.h), in the shape's own space, closed where the shape is closed, with outward geometric
  * and shading normals and POV-Ray's UVs where it defines them (lathe, sor). Each takes a
  * shape_desc (plain arrays: the IR points at one) and an accuracy: the largest distance, in the
@@ -21,7 +21,8 @@
 #define SHAPE_MAX_TRIANGLES 4000000u
 
 typedef enum shape_kind {
-	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC
+	SHAPE2_LATHE, SHAPE2_SOR, SHAPE2_PRISM, SHAPE2_SPHERE_SWEEP, SHAPE2_BLOB, SHAPE2_TEXT, SHAPE2_BICUBIC,
+	SHAPE2_ISOSURFACE, SHAPE2_PARAMETRIC, SHAPE2_JULIA
 } shape_kind;
 
 /* POV-Ray's spline types (lathe, prism: linear, quadratic, cubic, bezier; sphere_sweep: linear,
@@ -61,6 +62,32 @@ typedef struct shape_desc {
 	double st[8];
 	int patch_type, u_steps, v_steps;
 	double flatness;
+	/* isosurface: the function f(x, y, z) (called through fn with fn_ctx; false when it cannot be
+	 * evaluated), inside where f < threshold (the threshold above), cut by the container: a box
+	 * (box_lo, box_hi) or a sphere (centre box_lo, radius sphere_r) when contained_sphere; open: the
+	 * cut left open. max_gradient, accuracy, evaluate, max_trace, all_intersections: POV-Ray's ray
+	 * marching's settings, kept for the dump (the mesh follows the accuracy it is given). */
+	bool (*fn)(const void *fn_ctx, const double xyz[3], double *out);
+	const void *fn_ctx;
+	const char *fn_name;
+	bool contained_sphere;
+	dvec3 box_lo, box_hi;
+	double sphere_r;
+	double max_gradient, iso_accuracy, evaluate[3];
+	bool has_evaluate, all_intersections;
+	int max_trace;
+	/* parametric: x, y and z as functions of (u, v) (fn called with fn_ctxs[k] and <u, v, 0>) over
+	 * [uv_lo, uv_hi], clipped by the container above (box_lo/box_hi or the sphere); precompute's
+	 * depth and flags kept for the dump */
+	const void *fn_ctxs[3];
+	double uv_lo[2], uv_hi[2];
+	int precompute_depth;
+	bool precompute_xyz[3];
+	/* julia_fractal: q <- f(q) + julia while |q|^2 stays within POV-Ray's exit value, for
+	 * max_iteration steps, q starting at (x, y, z, w) on the slice (slice . q = slice_dist); the
+	 * algebra (0 quaternion, 1 hypercomplex) and f (0 sqr, 1 cube); precision kept for the dump */
+	double julia[4], slice[4], slice_dist, precision;
+	int algebra, jfunc, max_iteration;
 } shape_desc;
 
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
@@ -102,6 +129,8 @@ void sb_free(shape_builder *b);
 uint32_t sb_vertex(shape_builder *b, dvec3 p, dvec3 n, double u, double v);
 /* A triangle a b c, its winding turned so its geometric normal faces `want` (if they disagree). */
 void sb_tri(shape_builder *b, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want);
+/* Drops the vertices no triangle uses, renumbering the triangles' (sets failed when memory runs out). */
+void sb_compact(shape_builder *b);
 /* The builder's contents as a mesh; false (reported) when it failed or passed the limit. */
 bool sb_finish(shape_builder *b, mesh *out, bool uvs, const char *what, diag *d, diag_loc loc);
 
@@ -121,6 +150,30 @@ void poly2d_orient(double *xy, const uint32_t *counts, uint32_t n_contours, bool
  * tol of it: the bound max|P''| h^2 / 8 of a chord over a step h. */
 uint32_t shape_cubic_steps(const double A[2], const double B[2], double tol);
 
+/* A scalar field for the polygoniser (field.c), positive inside: eval gives its value at p and,
+ * when g is not NULL, its gradient; fill (may be NULL: eval at each point) writes the field at the
+ * grid points lo + h (i, j, k), i fastest, nx * ny * nz floats; on_edges: vertices are found on
+ * their grid edge by regula falsi (a field without a cheap gradient, or with creases) rather than
+ * moved off it by Newton steps; shift: the grid's first point lies shift * h before lo (0: one
+ * cell), a fraction that keeps flat faces at lo (a container's) off the grid points. */
+typedef struct shape_field {
+	double (*eval)(const void *ctx, dvec3 p, dvec3 *g);
+	void (*fill)(const void *ctx, dvec3 lo, double h, uint32_t nx, uint32_t ny, uint32_t nz, float *f);
+	const void *ctx;
+	bool on_edges;
+	double shift;
+} shape_field;
+/* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
+ * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).
+ * False (reported, b untouched) when the triangles counted from the grid pass the limit or memory
+ * runs out; b->failed when making them failed. */
+bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, const char *what, shape_builder *b,
+			    diag *d, diag_loc loc);
+/* The largest distance of b's triangle centres from F's zero set, to first order (|F| / |grad F|). */
+double shape_field_error(const shape_field *F, const shape_builder *b);
+/* h grown until a grid of ext at step h has at most max_points points. */
+double shape_field_fit_step(dvec3 ext, double h, size_t max_points);
+
 bool shape_lathe(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_sor(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
@@ -128,5 +181,10 @@ bool shape_sphere_sweep(const shape_desc *s, const shape_accuracy *acc, mesh *ou
 bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
+bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+bool shape_julia(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+/* POV-Ray's julia_fractal bound: the radius of its sphere (Fractal::Compute_BBox) and the exit value. */
+double shape_julia_radius(const shape_desc *s, double *exit_value);
+bool shape_parametric(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 
 #endif

@@ -4,7 +4,8 @@
 
 const char *shape_kind_name(shape_kind k)
 {
-	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
+	static const char *const names[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch",
+					      "isosurface", "parametric", "julia_fractal"};
 	return names[k];
 }
 
@@ -47,6 +48,37 @@ void shape_dump(FILE *o, const shape_desc *s)
 			s->st[6], s->st[7]);
 		for (uint32_t i = 0; i < 16; i++)
 			fprintf(o, "  p %g %g %g\n", s->pts[3 * i], s->pts[3 * i + 1], s->pts[3 * i + 2]);
+		break;
+	case SHAPE2_ISOSURFACE:
+		fprintf(o, " function %s threshold %g", s->fn_name ? s->fn_name : "function", s->threshold);
+		if (s->contained_sphere)
+			fprintf(o, " contained_by sphere %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->sphere_r);
+		else
+			fprintf(o, " contained_by box %g %g %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->box_hi.x,
+				s->box_hi.y, s->box_hi.z);
+		fprintf(o, " max_gradient %g accuracy %g max_trace %d%s%s", s->max_gradient, s->iso_accuracy, s->max_trace,
+			s->all_intersections ? " all_intersections" : "", s->open ? " open" : "");
+		if (s->has_evaluate)
+			fprintf(o, " evaluate %g %g %g", s->evaluate[0], s->evaluate[1], s->evaluate[2]);
+		fprintf(o, "\n");
+		break;
+	case SHAPE2_PARAMETRIC:
+		fprintf(o, " u %g %g v %g %g", s->uv_lo[0], s->uv_hi[0], s->uv_lo[1], s->uv_hi[1]);
+		if (s->contained_sphere)
+			fprintf(o, " contained_by sphere %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->sphere_r);
+		else
+			fprintf(o, " contained_by box %g %g %g %g %g %g", s->box_lo.x, s->box_lo.y, s->box_lo.z, s->box_hi.x,
+				s->box_hi.y, s->box_hi.z);
+		fprintf(o, " max_gradient %g accuracy %g", s->max_gradient, s->iso_accuracy);
+		if (s->precompute_depth)
+			fprintf(o, " precompute %d%s%s%s", s->precompute_depth, s->precompute_xyz[0] ? " x" : "",
+				s->precompute_xyz[1] ? " y" : "", s->precompute_xyz[2] ? " z" : "");
+		fprintf(o, "\n");
+		break;
+	case SHAPE2_JULIA:
+		fprintf(o, " <%g, %g, %g, %g> %s %s max_iteration %d precision %g slice <%g, %g, %g, %g> %g\n", s->julia[0],
+			s->julia[1], s->julia[2], s->julia[3], s->algebra ? "hypercomplex" : "quaternion", s->jfunc ? "cube" : "sqr",
+			s->max_iteration, s->precision, s->slice[0], s->slice[1], s->slice[2], s->slice[3], s->slice_dist);
 		break;
 	case SHAPE2_TEXT:
 		fprintf(o, " ttf \"%s\" \"%s\" depth %g offset %g %g %g\n", s->font, s->text, s->depth, s->offset.x,

@@ -4,6 +4,7 @@
  * fnintern.cpp, source/core/math/spline.cpp) were read to learn them, none copied. */
 #include "lang/func.h"
 
+#include "base/noise.h"
 #include "lang/parser.h"
 
 #include <math.h>
@@ -203,6 +204,13 @@ static double f_superellipsoid(const double *a)
 	double xy = pow(pow(fabs(X), 2 / e) + pow(fabs(Y), 2 / e), e / n);
 	return 1 - pow(xy + pow(fabs(Z), 2 / n), n * 0.5);
 }
+/* POV-Ray's Noise at the point, in [0, 1]: the lattice noise of the noise patterns (render's
+ * pattern_noise, bozo), so f_noise3d and a bozo pigment agree. */
+static double f_noise3d(const double *a)
+{
+	double v = 0.5 + 0.5 * noise_perlin(d3(X, Y, Z));
+	return v < 0 ? 0 : v > 1 ? 1 : v;
+}
 static double f_th(const double *a) { return atan2(X, Z); }
 static double f_torus(const double *a)
 {
@@ -251,7 +259,7 @@ static const struct internal_fn {
 	{"f_strophoid", 7, NULL}, {"f_strophoid_2d", 10, NULL}, {"f_superellipsoid", 5, f_superellipsoid},
 	{"f_th", 3, f_th}, {"f_torus", 5, f_torus}, {"f_torus2", 6, f_torus2}, {"f_torus_gumdrop", 4, NULL},
 	{"f_umbrella", 4, NULL}, {"f_witch_of_agnesi", 5, NULL}, {"f_witch_of_agnesi_2d", 9, NULL},
-	{"f_noise3d", 3, NULL}, {"f_pattern", 3, NULL}, {"f_noise_generator", 4, NULL},
+	{"f_noise3d", 3, f_noise3d}, {"f_pattern", 3, NULL}, {"f_noise_generator", 4, NULL},
 };
 
 const char *lang_fn_internal_name(int n, int *n_params)

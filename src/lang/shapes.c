@@ -188,7 +188,8 @@ static bool polygon(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return lang_place_object(p, out, g, kw, open, "polygon");
 }
 
-/* superellipsoid = "superellipsoid" "{" vector { modifier } "}"   (<e, n>: POV-Ray's UV vector) */
+/* superellipsoid = "superellipsoid" "{" vector { modifier } "}"   (<e, n>: POV-Ray's UV vector; a
+ * float f is <f, f>) */
 static bool superellipsoid(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	scene_geom *g;
@@ -196,6 +197,8 @@ static bool superellipsoid(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	diag_loc vl = lang_peek(p)->loc;
 	value v;
 	TRY(lang_expr(p, &v));
+	if (v.kind == VAL_FLOAT) /* POV-Ray's Parse_UV_Vect promotes a float to <f, f> (cliche.pov) */
+		v.kind = VAL_VECTOR, v.n = 2, v.v[1] = v.v[0];
 	if (v.kind != VAL_VECTOR || v.n < 2)
 		return lang_error(p, vl, "expected the vector <e, n> of the superellipsoid's exponents");
 	g->u.superellipsoid.e = v.v[0], g->u.superellipsoid.n = v.v[1];

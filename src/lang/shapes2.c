@@ -7,6 +7,7 @@
 #include "lang/shapes2.h"
 
 #include "geom/shape.h"
+#include "lang/func.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -27,8 +28,9 @@ static bool accept_word(parser *p, const char *w)
 
 int lang_pov_shape_kind(const lang_token *t)
 {
-	static const char *const words[] = {"lathe", "sor", "prism", "sphere_sweep", "blob", "text", "bicubic_patch"};
-	for (int k = 0; k < 7; k++)
+	static const char *const words[] = {"lathe", "sor",	   "prism",	 "sphere_sweep", "blob",
+					    "text",  "bicubic_patch", "isosurface", "parametric",	  "julia_fractal"};
+	for (int k = 0; k < 10; k++)
 		if (lang_word_is(t, words[k]))
 			return k;
 	return -1;
@@ -500,6 +502,277 @@ static bool bicubic_patch(parser *p, shape_desc *s)
 	return true;
 }
 
+/* The isosurface's function called from the tessellator (geom knows no language). */
+static bool iso_call(const void *ctx, const double xyz[3], double *out)
+{
+	const lang_function *failed;
+	return lang_fn_eval(ctx, xyz, out, &failed);
+}
+
+/* "function" "{" ... "}" or a declared function's name: a float function of x, y and z (of u, v
+ * and a third for a parametric: u and v are x and y), evaluable by circe; *out the function. */
+static bool float_function(parser *p, const char *what, const lang_function **out)
+{
+	lang_token t = *lang_peek(p);
+	const lang_function *f = NULL;
+	if (t.kind == LTK_KW_FUNCTION) {
+		value v;
+		TRY(lang_func_value(p, NULL, &v));
+		f = v.fn;
+	} else {
+		const symbol *sym = lang_lookup(p, t.text, t.len);
+		if (!sym || sym->val.kind != VAL_FUNCTION)
+			return lang_error_found(p, "expected 'function { ... }' or a declared function %s", what);
+		lang_advance(p);
+		f = sym->val.fn;
+	}
+	if (f->n_params != 3 || f->n_out != 1)
+		return lang_error(p, t.loc, "%s must be a float function of x, y and z: '%s' takes %d parameter%s and gives %d "
+					    "value%s",
+				  what, f->name, f->n_params, f->n_params == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s");
+	double a[3] = {0, 0, 0}, r;
+	const lang_function *failed = NULL;
+	if (!lang_fn_eval(f, a, &r, &failed)) { /* what circe cannot evaluate is refused here, not per point */
+		if (failed->kind == LANG_FN_INTERNAL) {
+			int np;
+			const char *nm = lang_fn_internal_name(failed->internal, &np);
+			return lang_error(p, t.loc, "'%s' (internal(%d)) is not supported by circe", nm ? nm : "internal",
+					  failed->internal);
+		}
+		return lang_error(p, t.loc, "'%s' is not supported by circe in a function (calling '%s')",
+				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name);
+	}
+	*out = f;
+	return true;
+}
+
+static bool iso_function(parser *p, shape_desc *s, const char *what)
+{
+	const lang_function *f;
+	TRY(float_function(p, what, &f));
+	s->fn = iso_call, s->fn_ctx = f, s->fn_name = f->name;
+	return true;
+}
+
+/* contained_by = "contained_by" "{" ( "box" "{" vector, vector "}" | "sphere" "{" vector, float "}" ) "}" */
+static bool contained_by(parser *p, shape_desc *s, diag_loc kw)
+{
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'contained_by'"));
+	lang_token t = *lang_peek(p);
+	diag_loc inner = lang_peek(p)->loc;
+	if (t.kind == LTK_KW_BOX) {
+		lang_advance(p);
+		inner = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'box'"));
+		dvec3 a, b;
+		TRY(lang_vec3(p, "as the box's first corner", &a));
+		comma(p);
+		TRY(lang_vec3(p, "as the box's second corner", &b));
+		s->contained_sphere = false;
+		s->box_lo = d3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+		s->box_hi = d3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+		dvec3 e = d3_sub(s->box_hi, s->box_lo);
+		if (!(e.x > 0 && e.y > 0 && e.z > 0))
+			return lang_error(p, t.loc, "the isosurface's container box is flat: its corners <%g, %g, %g> and <%g, %g, "
+						    "%g> share a coordinate",
+					  a.x, a.y, a.z, b.x, b.y, b.z);
+	} else if (t.kind == LTK_KW_SPHERE) {
+		lang_advance(p);
+		inner = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'sphere'"));
+		TRY(lang_vec3(p, "as the sphere's centre", &s->box_lo));
+		comma(p);
+		TRY(lang_float(p, "as the sphere's radius", &s->sphere_r));
+		s->contained_sphere = true;
+		if (!(s->sphere_r > 0))
+			return lang_error(p, t.loc, "the isosurface's container sphere needs a radius > 0, found %g", s->sphere_r);
+	} else
+		return lang_error_found(p, "expected 'box' or 'sphere' in 'contained_by'");
+	(void)kw;
+	return lang_expect_close(p, inner, t.kind == LTK_KW_BOX ? "box" : "sphere") &&
+	       lang_expect_close(p, open, "contained_by");
+}
+
+/* isosurface = "isosurface" "{" ( "function" "{" expression "}" | function_name )
+ *              { "contained_by" "{" ... "}" | "threshold" float | "accuracy" float
+ *              | "max_gradient" float | "evaluate" float, float, float | "open"
+ *              | "max_trace" float | "all_intersections" } ...: POV-Ray 3.7's Parse_Isosurface,
+ *              its defaults (a box from <-1,-1,-1> to <1,1,1>, threshold 0, accuracy 0.001,
+ *              max_gradient 1.1, max_trace 1). */
+static bool isosurface(parser *p, shape_desc *s, diag_loc kw)
+{
+	s->box_lo = d3(-1, -1, -1), s->box_hi = d3(1, 1, 1);
+	s->threshold = 0, s->iso_accuracy = 0.001, s->max_gradient = 1.1, s->max_trace = 1;
+	if (lang_peek(p)->kind != LTK_KW_FUNCTION && !lang_word_is(lang_peek(p), "contained_by"))
+		TRY(iso_function(p, s, "the isosurface's function"));
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (t.kind == LTK_KW_FUNCTION) {
+			if (s->fn)
+				return lang_error(p, t.loc, "the isosurface has a second function (the first is '%s')", s->fn_name);
+			TRY(iso_function(p, s, "the isosurface's function"));
+		} else if (accept_word(p, "contained_by")) {
+			TRY(contained_by(p, s, t.loc));
+		} else if (accept_word(p, "threshold")) {
+			TRY(lang_float(p, "after 'threshold'", &s->threshold));
+		} else if (accept_word(p, "accuracy")) {
+			TRY(lang_float(p, "after 'accuracy'", &s->iso_accuracy));
+			if (!(s->iso_accuracy > 0))
+				return lang_error(p, t.loc, "an isosurface's accuracy must be > 0, found %g", s->iso_accuracy);
+		} else if (accept_word(p, "max_gradient")) {
+			TRY(lang_float(p, "after 'max_gradient'", &s->max_gradient));
+			if (!(s->max_gradient > 0))
+				return lang_error(p, t.loc, "an isosurface's max_gradient must be > 0, found %g", s->max_gradient);
+		} else if (accept_word(p, "evaluate")) {
+			TRY(lang_float(p, "as evaluate's first value", &s->evaluate[0]));
+			comma(p);
+			TRY(lang_float(p, "as evaluate's second value", &s->evaluate[1]));
+			comma(p);
+			TRY(lang_float(p, "as evaluate's third value", &s->evaluate[2]));
+			s->has_evaluate = true;
+		} else if (accept_word(p, "open")) {
+			s->open = true;
+		} else if (accept_word(p, "max_trace")) {
+			double m;
+			TRY(lang_float(p, "after 'max_trace'", &m));
+			s->max_trace = m < 1 ? 1 : m > 1e6 ? 1000000 : (int)m;
+		} else if (accept_word(p, "all_intersections")) {
+			s->all_intersections = true;
+		} else
+			break;
+	}
+	if (!s->fn)
+		return lang_error(p, kw, "an isosurface needs a function: 'function { ... }'");
+	return true;
+}
+
+/* parametric = "parametric" "{" function function function vector ","? vector
+ *              { "contained_by" "{" ... "}" | "max_gradient" float | "accuracy" float
+ *              | "precompute" float [ "x" ] [ ","? "y" ] [ ","? "z" ] } ...: POV-Ray 3.7's
+ *              Parse_Parametric and its defaults (a box from <-1,-1,-1> to <1,1,1>, max_gradient 1,
+ *              accuracy 0.001); the functions give x, y and z of (u, v). */
+static bool parametric(parser *p, shape_desc *s, diag_loc kw)
+{
+	static const char *const which[] = {"the parametric's x function", "the parametric's y function",
+					    "the parametric's z function"};
+	s->box_lo = d3(-1, -1, -1), s->box_hi = d3(1, 1, 1);
+	s->max_gradient = 1, s->iso_accuracy = 0.001;
+	for (int k = 0; k < 3; k++) {
+		if (lang_peek(p)->kind != LTK_KW_FUNCTION)
+			return lang_error_found(p, "expected 'function { ... }' as %s (a parametric takes three)", which[k]);
+		const lang_function *f;
+		TRY(float_function(p, which[k], &f));
+		s->fn_ctxs[k] = f;
+	}
+	s->fn = iso_call, s->fn_ctx = s->fn_ctxs[0], s->fn_name = "function";
+	dvec3 a, b;
+	diag_loc at = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "as the parametric's first <u, v> corner", &a));
+	comma(p);
+	TRY(lang_vec3(p, "as the parametric's second <u, v> corner", &b));
+	s->uv_lo[0] = a.x, s->uv_lo[1] = a.y, s->uv_hi[0] = b.x, s->uv_hi[1] = b.y;
+	if (!(b.x > a.x) || !(b.y > a.y))
+		return lang_error(p, at, "the parametric's <u, v> corners <%g, %g> and <%g, %g> span no area (u2 > u1 and "
+					 "v2 > v1 are needed)",
+				  a.x, a.y, b.x, b.y);
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (accept_word(p, "contained_by")) {
+			TRY(contained_by(p, s, t.loc));
+		} else if (accept_word(p, "max_gradient")) {
+			TRY(lang_float(p, "after 'max_gradient'", &s->max_gradient));
+		} else if (accept_word(p, "accuracy")) {
+			TRY(lang_float(p, "after 'accuracy'", &s->iso_accuracy));
+		} else if (accept_word(p, "precompute")) {
+			double depth;
+			TRY(lang_float(p, "as precompute's depth", &depth));
+			s->precompute_depth = depth < 0 ? 0 : depth > 20 ? 20 : (int)depth;
+			for (int k = 0; k < 3; k++) {
+				comma(p);
+				static const char *const xyz[] = {"x", "y", "z"};
+				if (accept_word(p, xyz[k]))
+					s->precompute_xyz[k] = true;
+			}
+		} else
+			break;
+	}
+	(void)kw;
+	return true;
+}
+
+/* A 4-D vector: <a, b, c, d>. */
+static bool vec4(parser *p, const char *what, double out[4])
+{
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (!(v.kind == VAL_VECTOR || v.kind == VAL_COLOR) || v.n < 4)
+		return lang_error(p, at, "expected a 4-D vector <a, b, c, d> %s", what);
+	for (int k = 0; k < 4; k++)
+		out[k] = v.v[k];
+	return true;
+}
+
+/* julia_fractal = "julia_fractal" "{" vector4 { "quaternion" | "hypercomplex" | "sqr" | "cube"
+ *                 | "max_iteration" float | "precision" float | "slice" vector4 "," float } ...:
+ *                 POV-Ray 3.7's Parse_Julia_Fractal and its defaults (quaternion sqr,
+ *                 max_iteration 20, precision 20, slice <0, 0, 0, 1>, 0); POV-Ray's other
+ *                 functions (exp, reciprocal, sin, ..., pwr) are not supported by circe. */
+static bool julia_fractal(parser *p, shape_desc *s, diag_loc kw)
+{
+	TRY(vec4(p, "as the julia_fractal's parameter", s->julia));
+	s->max_iteration = 20, s->precision = 20;
+	s->slice[0] = s->slice[1] = s->slice[2] = 0, s->slice[3] = 1, s->slice_dist = 0;
+	static const char *const other[] = {"exp",  "reciprocal", "sin",   "asin", "sinh", "asinh", "cos",
+					    "acos", "cosh",	  "acosh", "tan",  "atan", "tanh",  "atanh",
+					    "ln",   "log",	  "pwr"};
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (accept_word(p, "quaternion"))
+			s->algebra = 0;
+		else if (accept_word(p, "hypercomplex"))
+			s->algebra = 1;
+		else if (accept_word(p, "sqr"))
+			s->jfunc = 0;
+		else if (accept_word(p, "cube"))
+			s->jfunc = 1;
+		else if (accept_word(p, "max_iteration")) {
+			double m;
+			TRY(lang_float(p, "after 'max_iteration'", &m));
+			if (!(m >= 1) || !(m <= 1000))
+				return lang_error(p, t.loc, "a julia_fractal's max_iteration must be 1 to 1000, found %g", m);
+			s->max_iteration = (int)m;
+		} else if (accept_word(p, "precision")) {
+			TRY(lang_float(p, "after 'precision'", &s->precision));
+			if (!(s->precision >= 1))
+				s->precision = 1; /* POV-Ray: "Precision must be at least 1" and uses 1 */
+		} else if (accept_word(p, "slice")) {
+			TRY(vec4(p, "as the slice's normal", s->slice));
+			comma(p);
+			TRY(lang_float(p, "as the slice's distance", &s->slice_dist));
+			double l = sqrt(s->slice[0] * s->slice[0] + s->slice[1] * s->slice[1] + s->slice[2] * s->slice[2] +
+					s->slice[3] * s->slice[3]);
+			if (!(l > 0))
+				return lang_error(p, t.loc, "the julia_fractal's slice normal is the zero vector");
+			if (fabs(s->slice[3]) < 1e-9 * l)
+				return lang_error(p, t.loc, "a julia_fractal slice whose normal has no fourth component is not "
+							    "supported by circe");
+			for (int k = 0; k < 4; k++)
+				s->slice[k] /= l;
+			s->slice_dist /= l;
+		} else {
+			for (size_t k = 0; k < sizeof other / sizeof *other; k++)
+				if (lang_word_is(&t, other[k]))
+					return lang_error(p, t.loc, "julia_fractal's '%.*s' is not supported by circe (sqr and cube are)",
+							  (int)t.len, t.text);
+			break;
+		}
+	}
+	(void)kw;
+	return true;
+}
+
 scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn xf_item)
 {
 	shape_desc *s = new_desc(p, (shape_kind)kind);
@@ -513,6 +786,9 @@ scene_geom *lang_pov_shape(parser *p, int kind, diag_loc kw, lang_xform_item_fn 
 	case SHAPE2_SPHERE_SWEEP: ok = sphere_sweep(p, s); break;
 	case SHAPE2_BLOB: ok = blob(p, s, kw, xf_item); break;
 	case SHAPE2_BICUBIC: ok = bicubic_patch(p, s); break;
+	case SHAPE2_ISOSURFACE: ok = isosurface(p, s, kw); break;
+	case SHAPE2_PARAMETRIC: ok = parametric(p, s, kw); break;
+	case SHAPE2_JULIA: ok = julia_fractal(p, s, kw); break;
 	default: ok = text(p, s); break;
 	}
 	if (!ok)

@@ -1320,8 +1320,15 @@ static bool box(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	lang_accept(p, LTK_COMMA);
 	TRY(lang_vec3(p, "as the second box corner", &g->u.box.corner2));
 	dvec3 a = g->u.box.corner1, b = g->u.box.corner2;
-	if (a.x == b.x || a.y == b.y || a.z == b.z)
-		return lang_error(p, kw, "box is flat: its corners share a coordinate");
+	int flat = (a.x == b.x) + (a.y == b.y) + (a.z == b.z);
+	if (flat > 1) /* POV-Ray accepts it and shows nothing (float4.pov at clock 0) */
+		diag_warning(p->d, kw, "box is flat in %d directions: its corners <%g, %g, %g> and <%g, %g, %g> make a %s, "
+				       "which is invisible (as in POV-Ray)",
+			     flat, a.x, a.y, a.z, b.x, b.y, b.z, flat == 3 ? "point" : "line");
+	else if (flat == 1) /* POV-Ray renders it: its slab test meets the plane from either side */
+		diag_warning(p->d, kw, "box is flat: its corners <%g, %g, %g> and <%g, %g, %g> share a coordinate; made a "
+				       "two-sided rectangle (it has no inside)",
+			     a.x, a.y, a.z, b.x, b.y, b.z);
 	size_t start = out->len;
 	TRY(place(p, out, g, kw));
 	return object_tail(p, out, start, open, "box");
@@ -1404,12 +1411,22 @@ static bool push_v3(parser *p, vecbuf *v, dvec3 x)
 /* triangle        = "triangle" "{" vector "," vector "," vector "}"
  * smooth_triangle = "smooth_triangle" "{" vector "," vector "," vector "," vector ","
  *                   vector "," vector "}" */
+static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth);
+
 static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
 {
 	const char *what = smooth ? "smooth_triangle" : "triangle";
 	diag_loc open;
 	lang_advance(p);
 	TRY(open_block(p, what, &open));
+	TRY(triangle_body(p, b, smooth, any_smooth));
+	return lang_expect_close(p, open, what);
+}
+
+/* The vertices (and normals) of a triangle, after its '{'. */
+static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
+{
+	const char *what = smooth ? "smooth_triangle" : "triangle";
 	dvec3 v[3], n[3];
 	static const char *const nth[] = {"first", "second", "third"};
 	char ctx[64];
@@ -1427,7 +1444,6 @@ static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
 			TRY(lang_expect(p, LTK_COMMA, ctx));
 		}
 	}
-	TRY(lang_expect_close(p, open, what));
 	uint32_t base = (uint32_t)b->pos.len;
 	if (!smooth) {
 		dvec3 fn = d3_cross(d3_sub(v[1], v[0]), d3_sub(v[2], v[0]));
@@ -1440,6 +1456,50 @@ static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
 		TRY(push_v3(p, &b->pos, v[i]) && push_v3(p, &b->nrm, n[i]) && push(p, &b->faces, &k) && push(p, &b->nidx, &k));
 	}
 	return true;
+}
+
+/* The triangles of b as a SHAPE_MESH geometry. */
+static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, diag_loc kw)
+{
+	scene_geom *g = new_geom(p, SHAPE_MESH, kw);
+	if (!g)
+		return NULL;
+	scene_mesh *m = &g->u.mesh;
+	m->positions = take(&b->pos, &m->n_positions);
+	m->faces = take(&b->faces, &m->n_faces);
+	m->n_faces /= 3;
+	if (any_smooth) {
+		m->normals = take(&b->nrm, &m->n_normals);
+		m->normal_idx = take(&b->nidx, NULL);
+	}
+	return g;
+}
+
+/* A triangle or smooth_triangle as an object of its own (POV-Ray's triangle shape): a mesh of
+ * one triangle, two-sided as POV-Ray's (it has no inside), with the object's modifiers.
+ * object_triangle = ( "triangle" | "smooth_triangle" ) "{" vertices { modifier } "}" */
+static bool object_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open, bool smooth)
+{
+	meshbuf b;
+	meshbuf_init(&b);
+	bool any_smooth = false;
+	scene_geom *g = triangle_body(p, &b, smooth, &any_smooth) ? mesh_geom(p, &b, any_smooth, kw) : NULL;
+	meshbuf_free(&b);
+	if (!g)
+		return false;
+	size_t start = out->len;
+	TRY(place(p, out, g, kw));
+	return object_tail(p, out, start, open, smooth ? "smooth_triangle" : "triangle");
+}
+
+static bool flat_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return object_triangle(p, out, kw, open, false);
+}
+
+static bool smooth_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	return object_triangle(p, out, kw, open, true);
 }
 
 /* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } ) { modifier } "}" */
@@ -1465,20 +1525,10 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	}
 	if (ok && b.faces.len == 0)
 		ok = lang_error_found(p, "expected 'triangle', 'smooth_triangle' or 'file' in 'mesh'");
-	scene_geom *g = ok ? new_geom(p, SHAPE_MESH, kw) : NULL;
-	if (!g) {
-		meshbuf_free(&b);
-		return false;
-	}
-	scene_mesh *m = &g->u.mesh;
-	m->positions = take(&b.pos, &m->n_positions);
-	m->faces = take(&b.faces, &m->n_faces);
-	m->n_faces /= 3;
-	if (any_smooth) {
-		m->normals = take(&b.nrm, &m->n_normals);
-		m->normal_idx = take(&b.nidx, NULL);
-	}
+	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, kw) : NULL;
 	meshbuf_free(&b);
+	if (!g)
+		return false;
 	size_t start = out->len;
 	TRY(place(p, out, g, kw));
 	return object_tail(p, out, start, open, "mesh");
@@ -2023,7 +2073,7 @@ static bool pov_shape(parser *p, vecbuf *out, const lang_token *word, diag_loc o
 	return object_tail(p, out, start, open, nm);
 }
 
-/* object_item = sphere | box | plane | mesh | mesh2 | subdivision_surface | instance | union
+/* object_item = sphere | box | plane | triangle | smooth_triangle | mesh | mesh2 | subdivision_surface | instance | union
  *             | pov_shape */
 static bool object_item(parser *p, vecbuf *out, bool *matched)
 {
@@ -2041,9 +2091,9 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 	case LTK_KW_INTERSECTION: fn = intersection_block; break;
 	case LTK_KW_DIFFERENCE: fn = difference_block; break;
 	case LTK_KW_MERGE: fn = merge_block; break;
+	case LTK_KW_TRIANGLE: fn = flat_triangle; break;
+	case LTK_KW_SMOOTH_TRIANGLE: fn = smooth_triangle; break;
 	default:
-		if (t.kind == LTK_KW_TRIANGLE || t.kind == LTK_KW_SMOOTH_TRIANGLE) /* in a union, as at the top */
-			return lang_error(p, t.loc, "'%.*s' outside a mesh is not supported by circe", (int)t.len, t.text);
 		if ((fn = lang_shape_parser(t.kind))) /* cylinder, torus, ... (shapes.c) */
 			break;
 		if (lang_pov_shape_kind(&t) >= 0) /* lathe, blob, text, ... (shapes2.c) */

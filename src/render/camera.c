@@ -63,8 +63,15 @@ static const char *cam_frame(cam *c, const cam_params *p, int width, int height)
 		dvec3 forward = d3_scale(d3_sub(p->look_at, p->location), 1.0 / view_len);
 		dvec3 r = d3_cross(d3_scale(sky, 1.0 / sky_len), forward);
 		double r_len = d3_length(r);
-		if (!(r_len >= CAM_PARALLEL_SIN))
-			return "sky is parallel to the view direction";
+		if (!(r_len >= CAM_PARALLEL_SIN)) {
+			/* POV-Ray: sky along the view, "using default/supplied right vector instead"
+			 * (scene_validate warns); up = direction x right as always */
+			dvec3 r0 = v3_to_d3(right0);
+			r = d3_sub(r0, d3_scale(forward, d3_dot(r0, forward)));
+			r_len = d3_length(r);
+			if (!(r_len >= CAM_PARALLEL_SIN * d3_length(r0)) || !(r_len > 0.0))
+				return "sky and right are both parallel to the view direction";
+		}
 		dvec3 right = d3_scale(r, 1.0 / r_len);
 		c->forward = d3_to_v3(forward);
 		c->right = d3_to_v3(right);
@@ -72,8 +79,9 @@ static const char *cam_frame(cam *c, const cam_params *p, int width, int height)
 		c->focal_distance = (float)d3_dot(d3_sub(p->focal_point, p->location), forward);
 		/* POV-Ray's handedness test on the vectors as given, before look_at: with the
 		 * default direction +z and up +y, a right along -x is a right-handed (mirrored)
-		 * camera. */
-		if (v3_length(p->right) > 0.0f && v3_dot(v3_cross(up0, dir0), p->right) < 0.0f)
+		 * camera; so is one whose up and direction are parallel (a handedness of 0: POV-Ray
+		 * flips unless it is > 0; diffract.pov's up and direction are both z). */
+		if (v3_length(p->right) > 0.0f && !(v3_dot(v3_cross(up0, dir0), p->right) > 0.0f))
 			c->right = v3_neg(c->right);
 	} else {
 		/* No look_at: direction, right and up as given, not made orthogonal (POV-Ray's

@@ -228,8 +228,10 @@ static int validate_camera(const scene_camera *c, diag *d)
 	/* POV-Ray's handedness, the sign of (up x direction) . right (Parse_Camera), must exist:
 	 * a zero or coplanar right, up, direction is degenerate with or without look_at. */
 	double rl = d3_length(c->right), ul = d3_length(c->up), dl = d3_length(c->direction);
+	/* With look_at only their lengths and the handedness's sign count (Parse_Camera re-aims
+	 * them): up parallel to direction is POV-Ray's handedness 0, a mirrored camera. */
 	if (!(rl > 0 && ul > 0 && dl > 0) ||
-	    !(fabs(d3_dot(d3_cross(c->up, c->direction), c->right)) > 1e-9 * rl * ul * dl)) {
+	    (!c->has_look_at && !(fabs(d3_dot(d3_cross(c->up, c->direction), c->right)) > 1e-9 * rl * ul * dl))) {
 		diag_error(d, c->loc, "degenerate camera: right, up and direction do not span space (one is zero, or "
 				      "two are parallel)");
 		return 1;
@@ -243,9 +245,20 @@ static int validate_camera(const scene_camera *c, diag *d)
 		return 1;
 	}
 	double sl = d3_length(c->sky);
-	if (!(sl > 0) || d3_length(d3_cross(d3_scale(dir, 1 / len), d3_scale(c->sky, 1 / sl))) < 1e-9) {
-		diag_error(d, c->loc, "degenerate camera: sky is parallel to the view direction");
+	if (!(sl > 0)) {
+		diag_error(d, c->loc, "degenerate camera: sky is the zero vector");
 		return 1;
+	}
+	if (d3_length(d3_cross(d3_scale(dir, 1 / len), d3_scale(c->sky, 1 / sl))) < 1e-9) {
+		/* POV-Ray warns and takes the right vector (given or its default x) instead of sky x
+		 * direction */
+		dvec3 r = c->has_right ? c->right : d3(1, 0, 0);
+		if (d3_length(d3_cross(d3_scale(dir, 1 / len), r)) < 1e-9 * d3_length(r)) {
+			diag_error(d, c->loc, "degenerate camera: sky and right are both parallel to the view direction");
+			return 1;
+		}
+		diag_warning(d, c->loc, "camera: sky is parallel to the view direction; the right vector is used instead "
+					"(as POV-Ray does)");
 	}
 	if (c->type == 0 && !(c->angle_deg > 0 && c->angle_deg < 180)) {
 		diag_error(d, c->loc, "camera angle %g is outside (0, 180) degrees", c->angle_deg);

@@ -1,1 +1,1 @@
-camera { location <0, 0, -5> look_at <0, 0, 0> up <0, 0, 1> }
+camera { location <0, 0, -5> direction <0, 0, 1> up <0, 0, 1> }

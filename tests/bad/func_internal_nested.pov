@@ -1,3 +1,3 @@
-#declare f_noise3d = function { internal(76) }
-#declare f_snoise3d = function { 2*f_noise3d(x, y, z) - 1 }
-#declare X = f_snoise3d(1, 2, 3);
+#declare f_pillow = function { internal(48) }
+#declare f_pillow2 = function { 2*f_pillow(x, y, z, 1) - 1 }
+#declare X = f_pillow2(1, 2, 3);

@@ -1,2 +1,2 @@
-#declare f_noise3d = function { internal(76) }
-#declare X = f_noise3d(1, 2, 3);
+#declare f_pillow = function { internal(48) }
+#declare X = f_pillow(1, 2, 3, 1);

@@ -131,8 +131,12 @@ typedef double (*dist_fn)(const void *ctx, dvec3 p);
 static double worst(const mesh *m, dist_fn fn, const void *ctx)
 {
 	double w = 0;
-	for (uint32_t v = 0; v < m->num_vertices; v++)
-		w = fmax(w, fn(ctx, v3_to_d3(m->positions[v])));
+	for (uint32_t v = 0; v < m->num_vertices; v++) {
+		double x = fn(ctx, v3_to_d3(m->positions[v]));
+		if (getenv("WORST") && x > w)
+			fprintf(stderr, "worst vertex %g at %g %g %g\n", x, m->positions[v].x, m->positions[v].y, m->positions[v].z);
+		w = fmax(w, x);
+	}
 	for (uint32_t t = 0; t < m->num_triangles; t++) {
 		const uint32_t *i = &m->indices[3 * t];
 		vec3 c = v3_scale(v3_add(v3_add(m->positions[i[0]], m->positions[i[1]]), m->positions[i[2]]), 1.0f / 3);
@@ -457,6 +461,206 @@ static void test_bicubic(void)
 	mesh_free(&m);
 }
 
+/* ---- isosurface: functions given as C callbacks, as the language gives its compiled ones ---- */
+
+static bool fn_sphere(const void *ctx, const double *q, double *out)
+{
+	*out = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]) - *(const double *)ctx;
+	return true;
+}
+
+static bool fn_wiggle(const void *ctx, const double *q, double *out)
+{
+	(void)ctx;
+	*out = sin(60 * q[0]) * sin(60 * q[1]) * sin(60 * q[2]);
+	return true;
+}
+
+static bool fn_fails(const void *ctx, const double *q, double *out)
+{
+	(void)ctx;
+	*out = 0;
+	return q[0] < 0.5;
+}
+
+static double sphere_dist(const void *ctx, dvec3 p) { return fabs(d3_length(p) - *(const double *)ctx); }
+
+/* The distance of p to the boundary of (ball of radius r) cut by the box [-1, 1]^3. */
+static double cut_ball_dist(const void *ctx, dvec3 p)
+{
+	double r = *(const double *)ctx, ds = d3_length(p) - r;
+	double db = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))) - 1; /* exact on the faces, inside the box */
+	return fabs(fmax(ds, db)) * (ds > -1e-3 && db > -1e-3 ? 0 : 1); /* a point on the crease is on both */
+}
+
+static void test_isosurface(void)
+{
+	double r = 0.8;
+	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere, .fn_ctx = &r, .fn_name = "sphere",
+			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "isosurface sphere");
+	CHECK(tol <= 1.5 * acc.tol, "the sphere reached %g (asked %g)", tol, acc.tol);
+	CHECK(open_edges(&m) == 0, "closed isosurface: %zu open edges", open_edges(&m));
+	CHECK_NEAR(volume(&m), 4 * M_PI * r * r * r / 3, 0.01 * 4 * M_PI * r * r * r / 3);
+	CHECK(flipped_normals(&m) == 0, "isosurface normals: %zu flipped", flipped_normals(&m));
+	double w = worst(&m, sphere_dist, &r);
+	CHECK(w <= 1.01 * tol, "the sphere within its stated %g: %g", tol, w);
+	mesh_free(&m);
+	/* radius 1.2 in the box [-1, 1]^3: cut by the box's faces, closed by them */
+	r = 1.2;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "cut sphere");
+	CHECK(open_edges(&m) == 0, "the cut closes the isosurface: %zu open edges", open_edges(&m));
+	CHECK(flipped_normals(&m) == 0, "cut sphere normals: %zu flipped", flipped_normals(&m));
+	/* the volume of ball and box, by the midpoint rule on a 160^3 grid */
+	double vol = 0, step = 2.0 / 160;
+	for (int i = 0; i < 160; i++)
+		for (int j = 0; j < 160; j++)
+			for (int k = 0; k < 160; k++) {
+				dvec3 q = d3(-1 + (i + 0.5) * step, -1 + (j + 0.5) * step, -1 + (k + 0.5) * step);
+				vol += d3_length(q) < r ? step * step * step : 0;
+			}
+	CHECK_NEAR(volume(&m), vol, 0.01 * vol);
+	vec3 lo, hi;
+	mesh_bounds(&m, &lo, &hi);
+	CHECK(lo.x >= -1 - 1e-6f && hi.y <= 1 + 1e-6f, "inside the container: %g %g", lo.x, hi.y);
+	w = worst(&m, cut_ball_dist, &r);
+	CHECK(w <= 1.01 * tol, "the cut sphere within its stated %g: %g", tol, w);
+	mesh_free(&m);
+	/* open: the container's faces dropped */
+	s.open = true;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "open cut sphere");
+	CHECK(open_edges(&m) > 0, "open isosurface has a boundary");
+	size_t on_box = 0;
+	for (uint32_t t = 0; t < m.num_triangles; t++) {
+		int k = 0;
+		for (int c = 0; c < 3; c++) {
+			vec3 q = m.positions[m.indices[3 * t + c]];
+			k += fmaxf(fabsf(q.x), fmaxf(fabsf(q.y), fabsf(q.z))) > 1 - 1e-6f;
+		}
+		on_box += k == 3;
+	}
+	CHECK(on_box == 0, "open: %zu triangles left on the container", on_box);
+	w = worst(&m, sphere_dist, &r);
+	CHECK(w <= 1.01 * tol, "the open sphere within its stated %g: %g", tol, w);
+	mesh_free(&m);
+	/* a sphere container, a sphere function: the smaller one wins */
+	s.open = false, s.contained_sphere = true, s.box_lo = d3(0, 0, 0), s.sphere_r = 0.5;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sphere container");
+	double half = 0.5;
+	w = worst(&m, sphere_dist, &half);
+	CHECK(w <= 1.01 * tol, "the container sphere within %g: %g", tol, w);
+	CHECK(open_edges(&m) == 0 && volume(&m) > 0, "the container sphere is closed and outward");
+	mesh_free(&m);
+	/* a function circe cannot evaluate somewhere, and one past the triangle limit: refused */
+	diag quiet;
+	FILE *null = fopen("/dev/null", "w");
+	diag_init(&quiet, null);
+	shape_desc bad = s;
+	bad.fn = fn_fails, bad.contained_sphere = false, bad.box_lo = d3(-1, -1, -1);
+	CHECK(!shape_tessellate(&bad, &acc, &m, &tol, &quiet, diag_noloc()) && quiet.errors == 1, "failing function");
+	bad.fn = fn_wiggle, acc.tol = 1e-5;
+	CHECK(!shape_tessellate(&bad, &acc, &m, &tol, &quiet, diag_noloc()) && quiet.errors == 2, "past the limit");
+	fclose(null);
+}
+
+/* ---- parametric: a torus of radii 1 and 0.4 as three functions of (u, v) ---- */
+
+static bool fn_tx(const void *ctx, const double *q, double *out)
+{
+	*out = (1 + 0.4 * cos(q[1])) * cos(q[0]) * *(const double *)ctx;
+	return true;
+}
+static bool fn_ty(const void *ctx, const double *q, double *out)
+{
+	*out = 0.4 * sin(q[1]) * *(const double *)ctx;
+	return true;
+}
+static bool fn_tz(const void *ctx, const double *q, double *out)
+{
+	*out = (1 + 0.4 * cos(q[1])) * sin(q[0]) * *(const double *)ctx;
+	return true;
+}
+
+/* the callbacks differ by function: the context says which (its value scales the result) */
+typedef struct tctx {
+	double k;
+	int which;
+} tctx;
+static bool fn_torus3(const void *ctx, const double *q, double *out)
+{
+	const tctx *c = ctx;
+	return c->which == 0 ? fn_tx(&c->k, q, out) : c->which == 1 ? fn_ty(&c->k, q, out) : fn_tz(&c->k, q, out);
+}
+
+static double torus_dist(const void *ctx, dvec3 p)
+{
+	(void)ctx;
+	return fabs(hypot(hypot(p.x, p.z) - 1, p.y) - 0.4);
+}
+
+static void test_parametric(void)
+{
+	tctx cx = {1, 0}, cy = {1, 1}, cz = {1, 2};
+	shape_desc s = {.kind = SHAPE2_PARAMETRIC, .fn = fn_torus3, .fn_ctxs = {&cx, &cy, &cz},
+			.uv_lo = {0, 0}, .uv_hi = {2 * M_PI, 2 * M_PI}, .box_lo = d3(-2, -2, -2), .box_hi = d3(2, 2, 2)};
+	shape_accuracy acc = {1e-3, 64};
+	mesh m = {0};
+	double tol;
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "parametric torus");
+	CHECK(tol <= 1.5 * acc.tol, "the torus reached %g (asked %g)", tol, acc.tol);
+	double w = worst(&m, torus_dist, NULL);
+	CHECK(w <= 1.01 * tol, "the parametric torus within its stated %g: %g", tol, w);
+	CHECK(open_edges(&m) == 0, "the torus's seams meet: %zu open edges", open_edges(&m));
+	CHECK(flipped_normals(&m) == 0, "normals follow the winding: %zu flipped", flipped_normals(&m));
+	CHECK(fabs(fabs(volume(&m)) - 2 * M_PI * M_PI * 0.16) < 0.01 * 2 * M_PI * M_PI * 0.16, "torus volume %g",
+	      volume(&m));
+	mesh_free(&m);
+	/* clipped by a box: only the half with x > 0 */
+	s.box_lo = d3(0, -2, -2);
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "clipped parametric");
+	vec3 lo, hi;
+	mesh_bounds(&m, &lo, &hi);
+	CHECK(lo.x > -0.05f && hi.x > 1.3f, "clipped to x > 0: %g %g", lo.x, hi.x);
+	mesh_free(&m);
+	/* past the triangle limit: refused */
+	diag quiet;
+	FILE *null = fopen("/dev/null", "w");
+	diag_init(&quiet, null);
+	acc.tol = 1e-9;
+	CHECK(!shape_tessellate(&s, &acc, &m, &tol, &quiet, diag_noloc()) && quiet.errors == 1, "parametric limit");
+	fclose(null);
+}
+
+/* julia_fractal: with c = 0, q <- q^2 stays bounded exactly inside the unit ball (quaternion), and
+ * q <- q^3 too: the mesh is that sphere, within its stated cell */
+static double unit_dist(const void *ctx, dvec3 p)
+{
+	(void)ctx;
+	return fabs(d3_length(p) - 1);
+}
+
+static void test_julia(void)
+{
+	for (int f = 0; f < 2; f++) {
+		shape_desc s = {.kind = SHAPE2_JULIA, .julia = {0, 0, 0, 0}, .slice = {0, 0, 0, 1}, .jfunc = f,
+				.max_iteration = 20, .precision = 20};
+		shape_accuracy acc = {2e-2, 64}; /* cells of 0.04: a quick test */
+		mesh m = {0};
+		double tol;
+		CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "julia");
+		double w = worst(&m, unit_dist, NULL);
+		CHECK(w <= tol, "the julia set of c = 0 (%s) within its stated %g of the unit sphere: %g", f ? "cube" : "sqr",
+		      tol, w);
+		CHECK(open_edges(&m) == 0, "closed julia: %zu open edges", open_edges(&m));
+		CHECK_NEAR(volume(&m), 4 * M_PI / 3, 0.03 * 4 * M_PI / 3);
+		CHECK(flipped_normals(&m) == 0, "julia normals: %zu flipped", flipped_normals(&m));
+		mesh_free(&m);
+	}
+}
+
 static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
@@ -482,6 +686,9 @@ int main(void)
 	test_blob();
 	test_text();
 	test_bicubic();
+	test_isosurface();
+	test_parametric();
+	test_julia();
 	test_limit();
 	return check_done("test_shapes2");
 }

@@ -19,3 +19,5 @@ object { Ell scale 2 }
 #declare Sq = quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1> }
 #declare Cyl = cylinder { -y, y, 1 }
 object { Cyl translate 5 * x }
+// a float as both exponents (POV-Ray promotes it: cliche.pov)
+superellipsoid { 0.15 translate 4 * y }

@@ -203,9 +203,15 @@ int main(void)
 	/* Degenerate input is refused. */
 	p.look_at = p.location;
 	CHECK(!cam_init(&c, &p, 10, 10), "look_at == location accepted");
+	/* a view along sky: POV-Ray takes the right vector (the default x) instead of sky x view */
 	p = cam_params_default();
 	p.look_at = d3(0, 5, 0);
-	CHECK(!cam_init(&c, &p, 10, 10), "view parallel to sky accepted");
+	CHECK(cam_init(&c, &p, 100, 100), "view parallel to sky: the right vector");
+	render_ray r_edge = cam_ray(&c, 99, 50, v2(0.5f, 0.5f), v2(0, 0));
+	CHECK(r_edge.d.x > 0.5f && fabsf(r_edge.d.z) < 0.02f, "right of the image along +x: (%g %g %g)", r_edge.d.x, r_edge.d.y,
+	      r_edge.d.z);
+	p.right = v3(0, 1, 0); /* right along the view too: refused */
+	CHECK(!cam_init(&c, &p, 10, 10), "view parallel to sky and right accepted");
 	p = cam_params_default();
 	p.sky = v3(0, 0, 0);
 	CHECK(!cam_init(&c, &p, 10, 10), "zero sky accepted");

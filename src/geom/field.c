@@ -1,0 +1,291 @@
+/* field.c - the polygoniser blob and isosurface share: a scalar field (positive inside) sampled
+ * on a grid, its zero set polygonised by marching tetrahedra (six tetrahedra a cube, split along
+ * its main diagonal, so neighbouring cubes agree and the surface is closed), each vertex shared by
+ * the edge it lies on; the vertices then moved onto the zero set (Newton steps along the gradient,
+ * at most half a cell, or kept on their edge and found there by regula falsi), normals -gradient.
+ * The triangles are counted from the grid before any is made and refused past the limit. */
+#include "geom/shape.h"
+
+#include "base/mem.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Newton steps onto the zero set, each at most a fraction of a cell. */
+#define FIELD_NEWTON_STEPS 4
+/* Regula falsi (Illinois) steps along an edge. */
+#define FIELD_EDGE_STEPS 12
+
+typedef struct grid {
+	dvec3 lo;
+	double h;
+	uint32_t nx, ny, nz; /* points along each axis */
+	float *f; /* the field at each point */
+} grid;
+
+static size_t gidx(const grid *G, uint32_t i, uint32_t j, uint32_t k)
+{
+	return ((size_t)k * G->ny + j) * G->nx + i;
+}
+
+static dvec3 gpos(const grid *G, size_t id)
+{
+	uint32_t i = (uint32_t)(id % G->nx), j = (uint32_t)(id / G->nx % G->ny), k = (uint32_t)(id / G->nx / G->ny);
+	return d3(G->lo.x + i * G->h, G->lo.y + j * G->h, G->lo.z + k * G->h);
+}
+
+/* Edge vertices, shared: an open-addressing table from the edge's two grid points to a vertex. */
+typedef struct edge_map {
+	uint64_t *key;
+	uint32_t *val;
+	size_t cap, n;
+} edge_map;
+
+static bool map_grow(edge_map *m)
+{
+	size_t cap = m->cap ? 2 * m->cap : 1 << 16;
+	uint64_t *k = mem_alloc(cap, sizeof *k);
+	uint32_t *v = mem_alloc(cap, sizeof *v);
+	if (!k || !v) {
+		mem_free(k), mem_free(v);
+		return false;
+	}
+	memset(k, 0xff, cap * sizeof *k);
+	for (size_t i = 0; i < m->cap; i++)
+		if (m->key[i] != UINT64_MAX) {
+			size_t h = (size_t)(m->key[i] * 0x9E3779B97F4A7C15ull) & (cap - 1);
+			while (k[h] != UINT64_MAX)
+				h = (h + 1) & (cap - 1);
+			k[h] = m->key[i], v[h] = m->val[i];
+		}
+	mem_free(m->key), mem_free(m->val);
+	m->key = k, m->val = v, m->cap = cap;
+	return true;
+}
+
+typedef struct mt {
+	const shape_field *F;
+	grid *G;
+	shape_builder *b;
+	edge_map map;
+	bool failed;
+} mt;
+
+/* The zero of the field on the segment pa (value fa > 0 or < 0) to pb (fb of the other sign):
+ * the Illinois variant of regula falsi, kept inside the segment. */
+static dvec3 edge_root(const shape_field *F, dvec3 pa, double fa, dvec3 pb, double fb)
+{
+	double ta = 0, tb = 1;
+	int side = 0;
+	dvec3 ab = d3_sub(pb, pa);
+	double t = fa / (fa - fb);
+	for (int it = 0; it < FIELD_EDGE_STEPS; it++) {
+		t = (ta * fb - tb * fa) / (fb - fa);
+		if (!(t > ta && t < tb))
+			t = 0.5 * (ta + tb);
+		double ft = F->eval(F->ctx, d3_add(pa, d3_scale(ab, t)), NULL);
+		if (ft == 0 || !isfinite(ft))
+			break;
+		if ((ft > 0) == (fa > 0)) {
+			ta = t, fa = ft;
+			if (side == -1)
+				fb *= 0.5;
+			side = -1;
+		} else {
+			tb = t, fb = ft;
+			if (side == 1)
+				fa *= 0.5;
+			side = 1;
+		}
+	}
+	return d3_add(pa, d3_scale(ab, t));
+}
+
+/* The vertex on the edge between grid points a and b (field values of opposite signs). */
+static uint32_t edge_vertex(mt *t, size_t a, size_t b)
+{
+	if (a > b) {
+		size_t x = a;
+		a = b, b = x;
+	}
+	/* The tetrahedra's edges go from a point to one of 7 neighbours (+x, +y, +z and their sums):
+	 * the key is the lower point and the neighbour's rank. */
+	size_t off = b - a, sx = 1, sy = t->G->nx, sz = (size_t)t->G->nx * t->G->ny;
+	size_t offs[7] = {sx, sy, sz, sx + sy, sx + sz, sy + sz, sx + sy + sz};
+	uint64_t rank = 0;
+	while (rank < 7 && offs[rank] != off)
+		rank++;
+	uint64_t key = (uint64_t)a * 8 + rank;
+	if (2 * (t->map.n + 1) > t->map.cap && !map_grow(&t->map)) {
+		t->failed = true;
+		return 0;
+	}
+	size_t h = (size_t)(key * 0x9E3779B97F4A7C15ull) & (t->map.cap - 1);
+	while (t->map.key[h] != UINT64_MAX) {
+		if (t->map.key[h] == key)
+			return t->map.val[h];
+		h = (h + 1) & (t->map.cap - 1);
+	}
+	double fa = t->G->f[a], fb = t->G->f[b];
+	dvec3 pa = gpos(t->G, a), pb = gpos(t->G, b), p;
+	if (t->F->on_edges)
+		p = edge_root(t->F, pa, fa, pb, fb);
+	else
+		p = d3_add(pa, d3_scale(d3_sub(pb, pa), fa / (fa - fb)));
+	uint32_t v = sb_vertex(t->b, p, d3(0, 1, 0), 0, 0);
+	t->map.key[h] = key, t->map.val[h] = v, t->map.n++;
+	return v;
+}
+
+/* One tetrahedron of grid points: its piece of the zero set (inside: field above 0). */
+static void tetra(mt *t, const size_t v[4])
+{
+	int in[4], nin = 0, out[4], nout = 0;
+	for (int i = 0; i < 4; i++) {
+		if (t->G->f[v[i]] > 0)
+			in[nin++] = i;
+		else
+			out[nout++] = i;
+	}
+	if (nin == 0 || nout == 0)
+		return;
+	dvec3 ci = d3(0, 0, 0), co = d3(0, 0, 0);
+	for (int i = 0; i < nin; i++)
+		ci = d3_add(ci, d3_scale(gpos(t->G, v[in[i]]), 1.0 / nin));
+	for (int i = 0; i < nout; i++)
+		co = d3_add(co, d3_scale(gpos(t->G, v[out[i]]), 1.0 / nout));
+	dvec3 want = d3_sub(co, ci); /* outward: from inside points to outside ones */
+	if (nin == 1 || nout == 1) {
+		int lone = nin == 1 ? in[0] : out[0];
+		const int *others = nin == 1 ? out : in;
+		uint32_t e[3];
+		for (int i = 0; i < 3; i++)
+			e[i] = edge_vertex(t, v[lone], v[others[i]]);
+		sb_tri(t->b, e[0], e[1], e[2], want);
+		return;
+	}
+	uint32_t e00 = edge_vertex(t, v[in[0]], v[out[0]]), e01 = edge_vertex(t, v[in[0]], v[out[1]]);
+	uint32_t e11 = edge_vertex(t, v[in[1]], v[out[1]]), e10 = edge_vertex(t, v[in[1]], v[out[0]]);
+	sb_tri(t->b, e00, e01, e11, want);
+	sb_tri(t->b, e00, e11, e10, want);
+}
+
+/* Each cube of the grid as six tetrahedra about its diagonal from corner 0 to corner 7. */
+static void march(mt *t)
+{
+	static const int tets[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
+	const grid *G = t->G;
+	for (uint32_t k = 0; k + 1 < G->nz && !t->failed; k++)
+		for (uint32_t j = 0; j + 1 < G->ny; j++)
+			for (uint32_t i = 0; i + 1 < G->nx; i++) {
+				size_t c[8];
+				bool any_in = false, any_out = false;
+				for (int q = 0; q < 8; q++) {
+					c[q] = gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1));
+					if (G->f[c[q]] > 0)
+						any_in = true;
+					else
+						any_out = true;
+				}
+				if (!any_in || !any_out)
+					continue;
+				for (int q = 0; q < 6; q++) {
+					size_t v[4] = {c[tets[q][0]], c[tets[q][1]], c[tets[q][2]], c[tets[q][3]]};
+					tetra(t, v);
+				}
+			}
+}
+
+/* Moves every vertex onto the zero set (Newton along the gradient, at most half a cell in all;
+ * not for a field whose vertices were found on their edges) and gives it the surface's normal,
+ * -gradient. */
+static void project(const shape_field *F, shape_builder *b, double h)
+{
+	for (uint32_t i = 0; i < b->nv; i++) {
+		dvec3 p0 = v3_to_d3(b->pos[i]), p = p0, g;
+		for (int it = 0; it < (F->on_edges ? 0 : FIELD_NEWTON_STEPS); it++) {
+			double f = F->eval(F->ctx, p, &g), g2 = d3_dot(g, g);
+			if (!(g2 > 0))
+				break;
+			p = d3_sub(p, d3_scale(g, f / g2));
+		}
+		dvec3 mv = d3_sub(p, p0);
+		double l = d3_length(mv);
+		if (l > 0.5 * h)
+			p = d3_add(p0, d3_scale(mv, 0.5 * h / l));
+		F->eval(F->ctx, p, &g);
+		b->pos[i] = d3_to_v3(p);
+		dvec3 n = d3_scale(g, -1);
+		double nl = d3_length(n);
+		b->nrm[i] = nl > 0 && isfinite(nl) ? d3_to_v3(d3_scale(n, 1 / nl)) : v3(0, 1, 0);
+	}
+}
+
+double shape_field_error(const shape_field *F, const shape_builder *b)
+{
+	double w = 0;
+	for (uint32_t t = 0; t < b->nt; t++) {
+		const uint32_t *i = &b->idx[3 * t];
+		dvec3 c = d3_scale(v3_to_d3(v3_add(v3_add(b->pos[i[0]], b->pos[i[1]]), b->pos[i[2]])), 1.0 / 3), g;
+		double f = F->eval(F->ctx, c, &g), gl = d3_length(g);
+		if (gl > 0 && isfinite(f / gl))
+			w = fmax(w, fabs(f) / gl);
+	}
+	return w;
+}
+
+double shape_field_fit_step(dvec3 ext, double h, size_t max_points)
+{
+	while ((ext.x / h + 3) * (ext.y / h + 3) * (ext.z / h + 3) > (double)max_points)
+		h *= 1.05;
+	return h;
+}
+
+bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, const char *what, shape_builder *b,
+			    diag *d, diag_loc loc)
+{
+	dvec3 ext = d3_sub(hi, lo);
+	double sh = (F->shift > 0 && F->shift <= 1 ? F->shift : 1) * h;
+	grid G = {.lo = d3_sub(lo, d3(sh, sh, sh)), .h = h};
+	G.nx = (uint32_t)ceil(ext.x / h) + 3, G.ny = (uint32_t)ceil(ext.y / h) + 3, G.nz = (uint32_t)ceil(ext.z / h) + 3;
+	size_t np = (size_t)G.nx * G.ny * G.nz;
+	G.f = mem_alloc(np, sizeof *G.f);
+	if (!G.f) {
+		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
+		return false;
+	}
+	if (F->fill)
+		F->fill(F->ctx, G.lo, h, G.nx, G.ny, G.nz, G.f);
+	else
+		for (size_t i = 0; i < np; i++) {
+			double v = F->eval(F->ctx, gpos(&G, i), NULL);
+			G.f[i] = isnan(v) ? -1.0f : (float)v; /* NaN: outside */
+		}
+	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
+	size_t crossed = 0;
+	for (uint32_t k = 0; k + 1 < G.nz; k++)
+		for (uint32_t j = 0; j + 1 < G.ny; j++)
+			for (uint32_t i = 0; i + 1 < G.nx; i++) {
+				bool in = false, outp = false;
+				for (int q = 0; q < 8; q++) {
+					bool inside = G.f[gidx(&G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1))] > 0;
+					in |= inside, outp |= !inside;
+				}
+				crossed += in && outp;
+			}
+	if (crossed * 6 > SHAPE_MAX_TRIANGLES) {
+		mem_free(G.f);
+		diag_error(d, loc, "the %s would make about %zu triangles (the limit of one shape is %u)", what, crossed * 6,
+			   SHAPE_MAX_TRIANGLES);
+		return false;
+	}
+	sb_init(b);
+	mt t = {.F = F, .G = &G, .b = b};
+	march(&t);
+	mem_free(G.f), mem_free(t.map.key), mem_free(t.map.val);
+	if (t.failed)
+		b->failed = true;
+	if (!b->failed)
+		project(F, b, h);
+	return true;
+}

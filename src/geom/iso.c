@@ -1,0 +1,191 @@
+/* iso.c - POV-Ray's isosurface as a mesh: inside where f(x, y, z) < threshold and inside the
+ * container (POV-Ray's contained_by box or sphere), so the field field.c polygonises is
+ * min(threshold - f, the signed distance into the container), positive inside: where the container
+ * cuts the surface the mesh is closed by the container's face, unless `open`, where the triangles
+ * on the container are dropped (POV-Ray's `open` shows no container surface). The function is a
+ * black box: its gradient is taken by central differences, the vertices are found on their grid
+ * edges by regula falsi (no Newton step can leave the cell, whatever the function does), and the
+ * distance the triangles reach is measured (|F| / |grad F| at their centres) and reported. */
+#include "geom/shape.h"
+
+#include "base/mem.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The most grid points an isosurface may sample: each is a call of an interpreted function. */
+#define ISO_MAX_GRID_POINTS (1u << 21)
+
+typedef struct iso_ctx {
+	const shape_desc *s;
+	double eps; /* the central differences' step */
+	bool failed; /* the function could not be evaluated somewhere */
+	dvec3 failed_at;
+	double max_grad; /* the largest |grad f| met at the vertices */
+} iso_ctx;
+
+/* threshold - f(p): positive inside; NaN where f cannot be evaluated or is not finite. */
+static double iso_f(iso_ctx *c, dvec3 p)
+{
+	double xyz[3] = {p.x, p.y, p.z}, v;
+	if (!c->s->fn(c->s->fn_ctx, xyz, &v)) {
+		if (!c->failed)
+			c->failed = true, c->failed_at = p;
+		return NAN;
+	}
+	return isfinite(v) ? c->s->threshold - v : NAN;
+}
+
+/* The signed distance into the container: positive inside. */
+static double container(const shape_desc *s, dvec3 p, dvec3 *g)
+{
+	if (s->contained_sphere) {
+		dvec3 r = d3_sub(p, s->box_lo);
+		double l = d3_length(r);
+		if (g)
+			*g = l > 0 ? d3_scale(r, -1 / l) : d3(0, -1, 0);
+		return s->sphere_r - l;
+	}
+	double best = INFINITY;
+	dvec3 bg = d3(0, 0, 0);
+	const double lo[3] = {s->box_lo.x, s->box_lo.y, s->box_lo.z}, hi[3] = {s->box_hi.x, s->box_hi.y, s->box_hi.z};
+	const double q[3] = {p.x, p.y, p.z};
+	for (int a = 0; a < 3; a++) {
+		double dl = q[a] - lo[a], dh = hi[a] - q[a];
+		if (dl < best)
+			best = dl, bg = d3(a == 0, a == 1, a == 2);
+		if (dh < best)
+			best = dh, bg = d3(-(a == 0), -(a == 1), -(a == 2));
+	}
+	if (g)
+		*g = bg;
+	return best;
+}
+
+/* threshold - f at p and its gradient by central differences. */
+static double iso_eval_fn(iso_ctx *c, dvec3 p, dvec3 *g)
+{
+	double fv = iso_f(c, p), e = c->eps, d[3];
+	for (int a = 0; a < 3; a++) {
+		dvec3 u = d3(a == 0 ? e : 0, a == 1 ? e : 0, a == 2 ? e : 0);
+		d[a] = (iso_f(c, d3_add(p, u)) - iso_f(c, d3_sub(p, u))) / (2 * e);
+	}
+	*g = d3(d[0], d[1], d[2]);
+	if (!isfinite(d3_length(*g)))
+		*g = d3(0, 0, 0);
+	return fv;
+}
+
+static double iso_eval(const void *ctx, dvec3 p, dvec3 *g)
+{
+	iso_ctx *c = (iso_ctx *)ctx; /* the failure flag and the gradient statistic are written */
+	double cv = container(c->s, p, g);
+	double fv = iso_f(c, p);
+	if (isnan(fv))
+		return g ? cv : -fabs(cv) - 1; /* outside where f fails; the container's gradient */
+	if (cv < fv)
+		return cv;
+	if (g) {
+		iso_eval_fn(c, p, g);
+		c->max_grad = fmax(c->max_grad, d3_length(*g));
+	}
+	return fv;
+}
+
+/* The container's bound. */
+static void iso_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
+{
+	if (s->contained_sphere) {
+		dvec3 r = d3(s->sphere_r, s->sphere_r, s->sphere_r);
+		*lo = d3_sub(s->box_lo, r), *hi = d3_add(s->box_lo, r);
+	} else {
+		*lo = s->box_lo, *hi = s->box_hi;
+	}
+}
+
+/* Drops the triangles whose three corners lie on the container where it cuts (open), and the
+ * vertices no triangle uses then. Returns the largest distance, to first order, of the open rim's
+ * vertices (those left on the container) from the function's surface: the rim follows the grid. */
+static double drop_cut(iso_ctx *c, shape_builder *b, double h)
+{
+	uint32_t *map = mem_alloc(b->nv ? b->nv : 1, sizeof *map);
+	if (!map) {
+		b->failed = true;
+		return 0;
+	}
+	for (uint32_t i = 0; i < b->nv; i++) {
+		dvec3 p = v3_to_d3(b->pos[i]);
+		double cv = container(c->s, p, NULL), fv = iso_f(c, p);
+		map[i] = fabs(cv) < 1e-3 * h && !(fv < cv - 1e-9); /* 1: on the cut */
+	}
+	uint32_t n = 0;
+	for (uint32_t t = 0; t < b->nt; t++) {
+		const uint32_t *i = &b->idx[3 * (size_t)t];
+		if (map[i[0]] == 1 && map[i[1]] == 1 && map[i[2]] == 1)
+			continue;
+		memmove(&b->idx[3 * (size_t)n++], i, 3 * sizeof *i);
+	}
+	b->nt = n;
+	mem_free(map);
+	sb_compact(b);
+	double rim = 0;
+	for (uint32_t i = 0; i < b->nv; i++) {
+		dvec3 p = v3_to_d3(b->pos[i]), g;
+		double cv = container(c->s, p, NULL), fv = iso_eval_fn(c, p, &g), gl = d3_length(g);
+		if (fabs(cv) < 1e-3 * h && gl > 0 && isfinite(fv / gl))
+			rim = fmax(rim, fabs(fv) / gl);
+	}
+	return rim;
+}
+
+bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
+{
+	dvec3 lo, hi;
+	iso_bounds(s, &lo, &hi);
+	dvec3 ext = d3_sub(hi, lo);
+	double size = fmax(ext.x, fmax(ext.y, ext.z));
+	if (!(size > 0)) {
+		diag_error(d, loc, "the isosurface's container is empty");
+		return false;
+	}
+	/* The blob's rule with a curvature radius of an eighth of the container: a step h gives
+	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then once more at the step the measured
+	 * distance asks for, when it was missed and the grid allows it. */
+	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
+	iso_ctx c = {.s = s, .eps = 0};
+	/* the golden ratio's fraction of a cell: the box's faces fall between grid points (a grid
+	 * point on the zero set would make degenerate triangles there) */
+	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true, .shift = 0.6180339887};
+	shape_builder b;
+	double got = 0;
+	for (int pass = 0; pass < 2; pass++) {
+		h = shape_field_fit_step(ext, h, ISO_MAX_GRID_POINTS);
+		c.eps = 1e-3 * h;
+		if (!shape_field_polygonise(&F, lo, hi, h, "isosurface", &b, d, loc))
+			return false;
+		if (c.failed) {
+			sb_free(&b);
+			diag_error(d, loc, "the isosurface's function '%s' cannot be evaluated by circe at <%g, %g, %g>",
+				   s->fn_name ? s->fn_name : "function", c.failed_at.x, c.failed_at.y, c.failed_at.z);
+			return false;
+		}
+		double rim = 0;
+		if (s->open && !b.failed)
+			rim = drop_cut(&c, &b, h);
+		got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
+		if (b.failed || got <= 1.5 * acc->tol || pass == 1)
+			break;
+		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);
+		if (shape_field_fit_step(ext, h2, ISO_MAX_GRID_POINTS) >= h)
+			break; /* the grid cannot be finer */
+		sb_free(&b);
+		h = h2;
+	}
+	if (s->max_gradient > 0 && c.max_grad > 1.1 * s->max_gradient)
+		diag_warning(d, loc,
+			     "the isosurface's function has a gradient of %g, more than its max_gradient %g (POV-Ray "
+			     "would miss parts of the surface; circe's mesh does not depend on it)",
+			     c.max_grad, s->max_gradient);
+	*tol_out = fmax(acc->tol, got);
+	return sb_finish(&b, out, false, "isosurface", d, loc);
+}

@@ -1,0 +1,1 @@
+isosurface { function (a) { a * 2 } }

@@ -1,1 +1,0 @@
-superellipsoid { 1 }

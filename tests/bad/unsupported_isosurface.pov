@@ -1,1 +1,0 @@
-isosurface { function { x } }
