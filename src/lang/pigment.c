@@ -542,9 +542,10 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (*matched)
 		return true;
 	*matched = true;
-	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map") ||
-	    (b->density && peek_word(p, "density_map")))
+	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map"))
 		return map_block(p, b, peek_word(p, "pigment_map"));
+	if (b->density && peek_word(p, "density_map")) /* its entries are density bodies, as a pigment_map's */
+		return map_block(p, b, true);
 	if (peek_word(p, "warp"))
 		return warp_block(p, b);
 	if (accept_word(p, "turbulence")) {

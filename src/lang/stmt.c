@@ -551,6 +551,9 @@ static interior_word interior_word_at(const lang_token *t)
 
 /* ---- media ------------------------------------------------------------------------------- */
 
+/* The largest intervals, samples or aa_level accepted (they are unused: a bound for typos). */
+#define MEDIA_MAX_COUNT 1000000
+
 static bool word_here(parser *p, const char *w) { return lang_word_is(lang_peek(p), w); }
 
 /* An integer item of a media's sampling (accepted: circe is a path tracer) in [lo, hi]. */
@@ -558,7 +561,13 @@ static bool media_int(parser *p, const char *what, long lo, long hi, long *out)
 {
 	char ctx[48];
 	snprintf(ctx, sizeof ctx, "after '%s'", what);
-	return lang_int(p, ctx, lo, hi, out);
+	diag_loc at = lang_peek(p)->loc;
+	double x;
+	TRY(lang_float(p, ctx, &x));
+	if (!(x >= lo && x <= hi))
+		return lang_error(p, at, "%s must be in [%ld, %ld], found %g", what, lo, hi, x);
+	*out = (long)x;
+	return true;
 }
 
 /* scattering = "scattering" "{" int "," colour { "eccentricity" float | "extinction" float } "}"
@@ -569,7 +578,7 @@ static bool media_scattering(parser *p, scene_media *md)
 	lang_advance(p);
 	TRY(open_block(p, "scattering", &open));
 	long type;
-	TRY(lang_int(p, "as the scattering type (1 to 5)", 1, 5, &type));
+	TRY(media_int(p, "the scattering type", 1, 5, &type));
 	md->scattering_type = (int)type;
 	TRY(lang_expect(p, LTK_COMMA, "after the scattering type"));
 	TRY(physical_color(p, "as the scattering colour", "scattering", SCENE_COLOR_RADIANCE, &md->scattering));
@@ -632,13 +641,13 @@ static bool media_item(parser *p, scene_media *md, xform *xf, bool *matched, boo
 	if (word_here(p, "intervals") || word_here(p, "aa_level")) {
 		const char *w = word_here(p, "intervals") ? "intervals" : "aa_level";
 		lang_advance(p);
-		return media_int(p, w, w[0] == 'i' ? 1 : 0, INT_MAX, &n);
+		return media_int(p, w, w[0] == 'i' ? 1 : 0, MEDIA_MAX_COUNT, &n);
 	}
 	if (word_here(p, "samples")) { /* samples Min [, Max] */
 		lang_advance(p);
-		TRY(media_int(p, "samples", 1, INT_MAX, &n));
+		TRY(media_int(p, "samples", 1, MEDIA_MAX_COUNT, &n));
 		if (lang_accept(p, LTK_COMMA))
-			TRY(media_int(p, "samples", 1, INT_MAX, &n));
+			TRY(media_int(p, "samples", 1, MEDIA_MAX_COUNT, &n));
 		return true;
 	}
 	static const char *const floats[] = {"confidence", "variance", "ratio", "jitter", "aa_threshold"};
@@ -2055,6 +2064,12 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	}
 	if (k == LTK_KW_PIGMENT || k == LTK_KW_FINISH || k == LTK_KW_INTERIOR)
 		return declare_part(p, out, k);
+	if (word_here(p, "density")) { /* a pigment record: density { D } reads it as its base */
+		scene_material *m;
+		TRY(m = new_part(p, lang_peek(p)->loc));
+		out->kind = VAL_PIGMENT, out->mat = m;
+		return lang_density(p, &m->pigment);
+	}
 	if (word_here(p, "media")) {
 		scene_material *m;
 		TRY(m = new_part(p, lang_peek(p)->loc));

@@ -642,6 +642,8 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " fade_distance %g fade_power %g", l->fade_distance, l->fade_power);
 		if (l->shadowless)
 			fprintf(o, " shadowless");
+		if (l->no_media)
+			fprintf(o, " media_interaction off");
 		if (l->area) {
 			dump_d3(o, "area", l->axis1);
 			dump_d3(o, "and", l->axis2);
