@@ -102,14 +102,58 @@ static const render_media *media_of(const render_scene *s, int material)
 	return material >= 0 && s->media && (size_t)material < s->material_count ? s->media[material] : NULL;
 }
 
-/* The transmittance of the media of `material` (if any) over o + t d, t in [t0, t1]. */
-static vec3 media_segment(const render_scene *s, int material, uint32_t object, vec3 o, vec3 d, float t0, float t1,
-			  rng *g)
+/* The interiors a ray is in, innermost last: entered by refraction into a dielectric, left by
+ * refraction out of the same object. Deeper nests keep their outer RENDER_MAX_NEST - 1 and the
+ * innermost. */
+#define RENDER_MAX_NEST 4
+typedef struct nest {
+	int n;
+	int mat[RENDER_MAX_NEST];
+	uint32_t obj[RENDER_MAX_NEST];
+} nest;
+
+static void nest_cross(nest *st, int mat, uint32_t obj, bool entering)
 {
-	const render_media *md = media_of(s, material);
+	if (entering) {
+		int i = st->n < RENDER_MAX_NEST ? st->n++ : RENDER_MAX_NEST - 1;
+		st->mat[i] = mat, st->obj[i] = obj;
+		return;
+	}
+	for (int i = st->n - 1; i >= 0; i--)
+		if (st->obj[i] == obj) {
+			for (int k = i; k + 1 < st->n; k++)
+				st->mat[k] = st->mat[k + 1], st->obj[k] = st->obj[k + 1];
+			st->n--;
+			return;
+		}
+}
+
+static int nest_top(const nest *st) { return st->n ? st->mat[st->n - 1] : -1; }
+
+/* The media a ray in the nest travels through: the innermost interior's, or, through hollow
+ * objects without media, those of the container around them (POV-Ray's hollow); *obj the
+ * container. NULL: none. */
+static const render_media *nest_media(const render_scene *s, const nest *st, uint32_t *obj)
+{
+	for (int i = st->n - 1; i >= 0; i--) {
+		const render_media *md = media_of(s, st->mat[i]);
+		if (md) {
+			*obj = st->obj[i];
+			return md;
+		}
+		if (!s->hollow || !s->hollow(s->user, st->obj[i]))
+			return NULL;
+	}
+	return NULL;
+}
+
+/* The transmittance of the media of the nest over o + t d, t in [t0, t1]. */
+static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d, float t0, float t1, rng *g)
+{
+	media_ctx mc = {s, 0};
+	const render_media *md = s->media ? nest_media(s, st, &mc.object) : NULL;
 	if (!md || !(t1 > t0))
 		return v3s(1.0f);
-	media_ctx mc = {s, object};
 	return render_media_transmittance(md, media_density, &mc, v3_madd(o, d, t0), d, t1 - t0, g);
 }
 
@@ -119,17 +163,19 @@ static vec3 media_segment(const render_scene *s, int material, uint32_t object, 
  * otherwise. The ray starts inside the interior of material `inside` (object inside_obj), -1:
  * outside every interior. */
 static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
-				 int inside, uint32_t inside_obj, rng *g)
+				 const nest *from, rng *g)
 {
 	const vec3 o0 = ray.o;
+	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
-		return media_segment(s, inside, inside_obj, o0, ray.d, 0.0f, isfinite(tmax) ? tmax : INFINITY, g);
+		return media_segment(s, &st, o0, ray.d, 0.0f, tmax, g);
 	vec3 tr = v3s(1.0f);
+	int inside = nest_top(&st);
 	float t_in = 0.0f, t_done = 0.0f;
 	for (int k = 0; s->shadow_closest && k < RENDER_SHADOW_MAX_CROSSINGS; k++) {
 		render_hit h = {0};
 		if (!s->shadow_closest(s->user, &ray, 0.0f, tmax - t_done, &h))
-			return v3_mul(tr, media_segment(s, inside, inside_obj, o0, ray.d, t_in, tmax, g));
+			return v3_mul(tr, media_segment(s, &st, o0, ray.d, t_done, tmax, g));
 		if (h.material < 0 || (size_t)h.material >= s->material_count)
 			return v3s(0.0f);
 		const bsdf_params *b = &s->materials[h.material];
@@ -137,14 +183,16 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 			return v3s(0.0f);
 		float c = v3_dot(ray.d, h.ng);
 		tr = v3_mul(tr, bsdf_clear_shadow(b, c));
+		tr = v3_mul(tr, media_segment(s, &st, o0, ray.d, t_done, t_done + h.t, g));
 		t_done += h.t;
 		if (b->clear.kind == BSDF_CLEAR_DIELECTRIC && c < 0.0f) {
-			inside = h.material, inside_obj = h.object, t_in = t_done;
+			inside = h.material, t_in = t_done;
 		} else if (b->clear.kind == BSDF_CLEAR_DIELECTRIC && inside == h.material) {
 			tr = v3_mul(tr, bsdf_fade_apply(&b->clear.fade, t_done - t_in));
-			tr = v3_mul(tr, media_segment(s, inside, inside_obj, o0, ray.d, t_in, t_done, g));
 			inside = -1;
 		}
+		if (b->clear.kind == BSDF_CLEAR_DIELECTRIC)
+			nest_cross(&st, h.material, h.object, c < 0.0f);
 		if (!(v3_max_comp(tr) > 0.0f))
 			return v3s(0.0f);
 		ray.o = offset_origin(h.p, h.scale, c > 0.0f ? h.ng : v3_neg(h.ng));
@@ -155,8 +203,8 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 /* Next-event estimation from hit point p: one light picked by power, one sample of it. lobe_prob:
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, int medium,
-			  uint32_t medium_obj, rng *g)
+			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
+			  rng *g)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -175,7 +223,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, medium, medium_obj, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -189,8 +237,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
  * d_in): one light picked by power, the media's phase functions towards it, the shadow ray
  * starting inside the container. A light marked no_media lights no medium. */
 static vec3 sample_direct_medium(const render_scene *s, const render_settings *set, const render_media *md,
-				 const render_media_coef *c, vec3 d_in, vec3 x, int medium, uint32_t medium_obj,
-				 rng *g)
+				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, rng *g)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0 || set->mode == RENDER_BSDF_ONLY)
@@ -207,7 +254,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, medium, medium_obj, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -419,8 +466,8 @@ typedef struct path {
 	bool stood_for;	     /* refracted through glass since the last non-delta vertex, whose
 			      * shadow rays passed that glass: emitters found now were counted there */
 	bool scattered;	     /* a non-delta vertex was met */
-	int medium;	     /* the material whose interior the path is in, -1: none */
-	uint32_t medium_obj; /* the object of that interior (its media's density lives in its space) */
+	int medium;	     /* the material whose interior the path is in (nest's innermost), -1: none */
+	nest in;	     /* the interiors the path is in */
 } path;
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
@@ -488,7 +535,7 @@ static inline void add_direct(const render_scene *s, const render_settings *set,
 	if (set->mode != RENDER_BSDF_ONLY)
 		pa->radiance = v3_add(pa->radiance,
 				      v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-								     v->lobe_prob, pa->medium, pa->medium_obj, g)));
+								     v->lobe_prob, &pa->in, g)));
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
@@ -620,8 +667,8 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
 		pa->prev_delta = true;
 		pa->passed = false;
 		if (refracted) {
-			pa->medium = entering ? hit->material : -1;
-			pa->medium_obj = hit->object;
+			nest_cross(&pa->in, hit->material, hit->object, entering);
+			pa->medium = nest_top(&pa->in);
 			pa->stood_for |= pa->scattered && !set->opaque_glass_shadows;
 		}
 	}
@@ -635,10 +682,10 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
  * event there (light sampled through the phase functions, the path continued by a phase
  * sample: *ray becomes the next ray). 1: the path scattered and goes on; 0: it reached the
  * surface at seg; -1: it ends. */
-static int through_media(const render_scene *s, const render_settings *set, const render_media *md, float seg,
-			 int bounce, rng *g, path *pa, render_ray *ray)
+static int through_media(const render_scene *s, const render_settings *set, const render_media *md, uint32_t obj,
+			 float seg, int bounce, rng *g, path *pa, render_ray *ray)
 {
-	media_ctx mc = {s, pa->medium_obj};
+	media_ctx mc = {s, obj};
 	render_media_coef c;
 	float ts;
 	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, g, &pa->beta, &pa->radiance, &c, &ts))
@@ -647,7 +694,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 		return -1;
 	vec3 x = v3_madd(ray->o, ray->d, ts);
 	pa->radiance = v3_add(pa->radiance,
-			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, pa->medium, pa->medium_obj, g)));
+			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g)));
 	float u_pick = rng_float(g);
 	vec2 u = v2(rng_float(g), rng_float(g));
 	vec3 wi, fval;
@@ -681,16 +728,17 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
 		if (s->fog_count && pa.fog_view)
 			through_fog(s, &ray, hit_any ? hit.t : INFINITY, &pa);
-		const render_media *md = media_of(s, pa.medium);
+		uint32_t md_obj = 0;
+		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
-			int r = through_media(s, set, md, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
+			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
 			if (r < 0)
 				break;
 			if (r > 0)
 				continue;
-			if (!hit_any)
-				pa.medium = -1; /* a leak out of a container that is not closed */
 		}
+		if (!hit_any) /* a leak out of interiors that are not closed */
+			pa.in.n = 0, pa.medium = -1;
 		if (!hit_any) {
 			add_escaped(s, set, bounce, ray.d, &pa);
 			break;

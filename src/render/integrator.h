@@ -124,6 +124,10 @@ typedef struct render_scene {
 	 * the object's space), each channel in [0, m->density_max]. Needed when a medium has a
 	 * density pattern. Thread-safe. */
 	vec3 (*density)(void *user, uint32_t object, const render_medium *m, vec3 p);
+	/* Whether the object is hollow (POV-Ray's flag): the media of a container around it go on
+	 * inside it; a non-hollow object inside a container holds none of its media. NULL: none is.
+	 * Thread-safe. */
+	bool (*hollow)(void *user, uint32_t object);
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

@@ -145,7 +145,9 @@ bool render_media_phase_sample(const render_media *md, const render_media_coef *
 
 static float exp_sample(rng *g, float rate) { return -logf(1.0f - rng_float(g)) / rate; }
 
-static vec3 v3_exp_neg(vec3 a) { return v3(expf(-a.x), expf(-a.y), expf(-a.z)); }
+/* exp(-sigma t) per channel; 1 where sigma is 0 (also for an infinite t). */
+static float exp_neg(float sigma, float t) { return sigma > 0.0f ? expf(-sigma * t) : 1.0f; }
+static vec3 transmit(vec3 sigma, float t) { return v3(exp_neg(sigma.x, t), exp_neg(sigma.y, t), exp_neg(sigma.z, t)); }
 
 /* The integral of exp(-s t) e over t in [0, len], per channel: e (1 - exp(-s len)) / s. */
 static float emitted(float e, float s, float len)
@@ -163,7 +165,7 @@ bool render_media_track(const render_media *md, render_density_fn f, const void 
 		vec3 e = v3(emitted(c->emission.x, c->sigma_t.x, tmax), emitted(c->emission.y, c->sigma_t.y, tmax),
 			    emitted(c->emission.z, c->sigma_t.z, tmax));
 		*radiance = v3_add(*radiance, v3_mul(*beta, e));
-		*beta = v3_mul(*beta, v3_exp_neg(v3_scale(c->sigma_t, tmax)));
+		*beta = v3_mul(*beta, transmit(c->sigma_t, tmax));
 		return false;
 	}
 	float rate = md->majorant;
@@ -207,7 +209,7 @@ vec3 render_media_transmittance(const render_media *md, render_density_fn f, con
 	if (md->homogeneous) {
 		render_media_coef c;
 		render_media_coef_at(md, f, ctx, o, &c);
-		return v3_exp_neg(v3_scale(c.sigma_t, tmax));
+		return transmit(c.sigma_t, tmax);
 	}
 	float rate = md->majorant;
 	if (!(rate > 0.0f))

@@ -272,6 +272,13 @@ static vec3 world_density(void *user, uint32_t object, const render_medium *m, v
 	return v3_min(v3_max(r, v3s(0.0f)), m->density_max);
 }
 
+/* render_scene.hollow: whether instance `object` is hollow. */
+static bool world_hollow(void *user, uint32_t object)
+{
+	const world *w = user;
+	return object < w->n_insts && w->insts[object].hollow;
+}
+
 /* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables.
  * Shadow rays walk through surfaces only when some material is transparent: elsewhere an
  * occluded shadow ray costs no closest-hit query. */
@@ -286,5 +293,6 @@ void world_bind(world *w)
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,
 			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
-			       .media = w->has_media ? w->media_of : NULL, .density = world_density};
+			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
+			       .hollow = world_hollow};
 }

@@ -42,6 +42,7 @@ typedef struct world_inst {
 	float xf_gain, xf_shift; /* |xf(v)|max <= gain |v|max + shift (row sums of |M|, |t|max): a
 				  * triangle's world scale from its object one without transforming it */
 	bool no_shadow;
+	bool hollow;    /* POV-Ray's hollow: the media of a container around it fill it too */
 	int material;   /* index into world.materials */
 	int light;      /* index of its mesh light in world.lights, or -1 */
 	xform pattern_xf; /* object to world as the scene placed it: a pigment's pattern lives in its
