@@ -30,7 +30,9 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 	w->materials = mem_calloc(w->n_materials, sizeof *w->materials);
 	w->sss = mem_calloc(w->n_materials, sizeof *w->sss);
 	w->sss_of = mem_calloc(w->n_materials, sizeof *w->sss_of);
-	if (!w->geoms || !w->bsdfs || !w->materials || !w->sss || !w->sss_of) {
+	w->media = mem_calloc(w->n_materials, sizeof *w->media);
+	w->media_of = mem_calloc(w->n_materials, sizeof *w->media_of);
+	if (!w->geoms || !w->bsdfs || !w->materials || !w->sss || !w->sss_of || !w->media || !w->media_of) {
 		diag_error(d, diag_noloc(), "out of memory");
 		world_release(w);
 		return false;
@@ -88,6 +90,7 @@ static void world_release(world *w)
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
 	mem_free(w->csg_nodes), mem_free(w->csg_kids);
 	mem_free(w->sss), mem_free(w->sss_of);
+	mem_free(w->media), mem_free(w->media_of);
 	mem_free(w->geoms), mem_free(w->insts), mem_free(w->bsdfs), mem_free(w->materials);
 	mem_free(w->images), mem_free(w->image_paths), mem_free(w->env_rgb);
 	mem_free((void *)w->stats.shapes);

@@ -76,6 +76,7 @@ static light scene_light_to_light(const scene_light *sl)
 	set_distance_law(&l, sl);
 	l.tightness = (float)sl->tightness;
 	l.shadowless = sl->shadowless;
+	l.no_media = sl->no_media;
 	if (sl->area)
 		light_set_area(&l, d3v(sl->axis1), d3v(sl->axis2), sl->circular, sl->orient);
 	return l;

@@ -136,6 +136,55 @@ static void build_clear(bsdf_params *b, const scene_material *sm)
 	c->fade = (bsdf_fade){.distance = sm->fade_distance, .power = sm->fade_power, .color = sm->fade_color};
 }
 
+/* A bound of every colour density pg can give (a map interpolates between its entries). */
+static vec3 density_bound(const scene_pigment *pg, int depth)
+{
+	if (pg->kind == SCENE_PAT_PLAIN)
+		return v3_max(v3(pg->color[0], pg->color[1], pg->color[2]), v3s(0.0f));
+	if (!pg->n_entries || depth > SCENE_PIGMENT_MAX_DEPTH)
+		return v3s(1.0f); /* an image's texels, the default map: in [0, 1] */
+	vec3 b = v3s(0.0f);
+	for (uint32_t i = 0; i < pg->n_entries; i++) {
+		const scene_map_entry *e = &pg->entries[i];
+		b = v3_max(b, e->pigment ? density_bound(e->pigment, depth + 1) : v3(e->color[0], e->color[1], e->color[2]));
+	}
+	return b;
+}
+
+/* The interior's media of material k as the integrator's (render/media.h): coefficients, the
+ * densities compiled as patterns, their bounds and the majorant. */
+static bool build_media(world *w, size_t k, const scene_material *sm, diag *d)
+{
+	if (!sm->n_media)
+		return true;
+	if (w->bsdfs[k].clear.kind != BSDF_CLEAR_DIELECTRIC) {
+		diag_warning(d, sm->media[0].loc, "media in an object that is not transparent: nothing reaches it (give "
+						  "the container a pigment with filter or transmit, e.g. rgbt 1)");
+		return true;
+	}
+	render_media *md = &w->media[k];
+	md->n = sm->n_media < RENDER_MEDIA_MAX ? sm->n_media : RENDER_MEDIA_MAX;
+	for (uint32_t i = 0; i < md->n; i++) {
+		const scene_media *s = &sm->media[i];
+		render_medium *m = &md->m[i];
+		*m = (render_medium){.absorption = s->absorption, .emission = s->emission, .extinction = s->extinction,
+				     .phase = s->scattering_type ? (render_phase)s->scattering_type : RENDER_PHASE_ISOTROPIC,
+				     .g = s->eccentricity, .density_max = v3s(1.0f)};
+		if (s->scattering_type)
+			m->scattering = s->scattering;
+		for (uint32_t j = 0; j < s->n_density && j < RENDER_MEDIUM_MAX_DENSITIES; j++) {
+			if (!build_pattern(w, s->density[j], &m->density[j], d))
+				return false;
+			m->density_max = v3_mul(m->density_max, density_bound(s->density[j], 0));
+			m->n_density++;
+		}
+	}
+	render_media_finish(md);
+	w->media_of[k] = md;
+	w->has_media = true;
+	return true;
+}
+
 /* BSDF parameters and textures of a scene material. */
 bool build_material(world *w, size_t k, const scene *sc, const world_options *opt,
 			   const scene_material *sm, diag *d)
@@ -193,5 +242,5 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 			return false;
 		wm->normal_strength = sm->sss.normal_strength;
 	}
-	return true;
+	return build_media(w, k, sm, d);
 }

@@ -46,6 +46,7 @@ const char *lang_value_kind_name(const value *v)
 	case VAL_PIGMENT: return "a pigment";
 	case VAL_FINISH: return "a finish";
 	case VAL_INTERIOR: return "an interior";
+	case VAL_MEDIA: return "a media";
 	case VAL_CAMERA: return "a camera";
 	case VAL_LIGHT: return "a light_source";
 	case VAL_TRANSFORM: return "a transform";

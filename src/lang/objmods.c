@@ -43,7 +43,7 @@ static const struct object_flag *flag_of(const lang_token *t)
 
 /* Whether the lookahead begins the optional float of a flag (POV-Ray's Allow_Float): a number, a
  * sign, '(', '!', a boolean word or a declared float. */
-static bool float_follows(parser *p)
+bool lang_float_follows(parser *p)
 {
 	const lang_token *t = lang_peek(p);
 	switch (t->kind) {
@@ -96,7 +96,7 @@ bool lang_object_flag(parser *p, lang_objflags *f, bool *matched)
 		double x = 1;
 		char ctx[64];
 		snprintf(ctx, sizeof ctx, "after '%s'", of->name);
-		if (float_follows(p))
+		if (lang_float_follows(p))
 			TRY(lang_float(p, ctx, &x));
 		f->said |= of->bit;
 		f->on = (uint8_t)(x > 0 ? f->on | of->bit : f->on & ~of->bit);

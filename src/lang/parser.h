@@ -46,6 +46,7 @@ typedef enum value_kind {
 	VAL_PIGMENT, VAL_FINISH, VAL_INTERIOR, VAL_CAMERA, VAL_LIGHT, VAL_TRANSFORM,
 	VAL_COLOR_MAP, /* a color_map or pigment_map (lang/pigment.c): `mat`'s pigment holds its entries */
 	VAL_NORMAL,    /* a normal { } (lang/pigment.c): `mat`'s normal */
+	VAL_MEDIA,     /* a media { } (stmt.c): `mat`'s one media */
 	VAL_SKY,       /* a sky_sphere { } as read (stmt.c's lang_sky) */
 	VAL_FILE, /* a data file of #fopen (datafile.c) */
 	VAL_FUNCTION, VAL_SPLINE /* func.c */
@@ -293,6 +294,9 @@ typedef struct lang_objflags {
  *             | colour
  * at the lookahead; *matched false (nothing read) for any other token. */
 bool lang_object_flag(parser *p, lang_objflags *f, bool *matched);
+/* Whether the lookahead begins POV-Ray's optional float of a flag (a number, a sign, '(', '!', a
+ * boolean word or a declared float). */
+bool lang_float_follows(parser *p);
 /* Gives an object the flags an item that made or holds it says, as POV-Ray's CSG does. */
 void lang_apply_object_flags(scene_object *o, const lang_objflags *f);
 

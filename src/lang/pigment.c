@@ -19,6 +19,7 @@ typedef struct pig_build {
 	uint32_t n_warps;
 	int depth;   /* pigments around this one */
 	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
+	bool density; /* a media's density { }: its map may be written density_map */
 } pig_build;
 
 static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
@@ -543,6 +544,8 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	*matched = true;
 	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map"))
 		return map_block(p, b, peek_word(p, "pigment_map"));
+	if (b->density && peek_word(p, "density_map")) /* its entries are density bodies, as a pigment_map's */
+		return map_block(p, b, true);
 	if (peek_word(p, "warp"))
 		return warp_block(p, b);
 	if (accept_word(p, "turbulence")) {
@@ -658,8 +661,17 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 	}
 }
 
+static bool body_as(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
+		    bool density, const scene_pigment **out);
+
 static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
 		 const scene_pigment **out)
+{
+	return body_as(p, base, close, open, depth, normal, false, out);
+}
+
+static bool body_as(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
+		    bool density, const scene_pigment **out)
 {
 	if (depth >= SCENE_PIGMENT_MAX_DEPTH)
 		return lang_error(p, open, "pigments nested too deep (limit is %d)", SCENE_PIGMENT_MAX_DEPTH);
@@ -673,6 +685,7 @@ static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc 
 			b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
 		b->depth = depth;
 		b->normal = normal;
+		b->density = density;
 		if (normal && !base)
 			b->pg.is_normal = true;
 		ok = body_in(p, b, close, open, out);
@@ -685,6 +698,27 @@ static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc 
 bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out)
 {
 	return body(p, base, LTK_RBRACE, open, 0, false, out);
+}
+
+bool lang_density(parser *p, const scene_pigment **out)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'density'"));
+	TRY(body_as(p, NULL, LTK_RBRACE, open, 0, false, true, out));
+	const scene_pigment *pg = *out;
+	if (pg->kind == SCENE_PAT_PLAIN || pg->kind == SCENE_PAT_IMAGE || pg->n_entries)
+		return true;
+	scene_pigment *c = arena_zalloc(&p->sc->arena, 1, sizeof *c);
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, 2, sizeof *e);
+	if (!c || !e)
+		return lang_error(p, open, "out of memory");
+	*c = *pg;
+	e[0] = (scene_map_entry){.value = 0.0};
+	e[1] = (scene_map_entry){.value = 1.0, .color = {1, 1, 1, 0, 0}};
+	c->entries = e, c->n_entries = 2;
+	*out = c;
+	return true;
 }
 
 bool lang_pigment_map_starts(parser *p)

@@ -28,6 +28,11 @@ bool lang_pigment_map_starts(parser *p);
 /* The map at the lookahead as a VAL_COLOR_MAP value (for #declare). */
 bool lang_pigment_map_value(parser *p, value *out);
 
+/* density = "density" "{" [ identifier ] pigment_body "}": a media's density, read as a pigment
+ * whose map may be written density_map; a pattern without a map gets POV-Ray's default density
+ * map, black at 0 to white at 1. The lookahead is `density`. */
+bool lang_density(parser *p, const scene_pigment **out);
+
 /* True when the lookahead is `normal` (a POV-Ray word circe reads here). */
 bool lang_normal_starts(parser *p);
 /* normal = "normal" "{" [ identifier ] [ pattern [ [","] float ] ] { pattern_modifier

@@ -523,6 +523,7 @@ static void copy_interior(scene_material *to, const scene_material *from)
 	to->ior = from->ior;
 	to->fade_distance = from->fade_distance, to->fade_power = from->fade_power;
 	to->fade_color = from->fade_color;
+	to->media = from->media, to->n_media = from->n_media;
 }
 
 /* The interior's words that are no keywords of circe's (they lex as LTK_UNSUPPORTED). */
@@ -546,6 +547,174 @@ static interior_word interior_word_at(const lang_token *t)
 	static const char *const names[] = {"", "caustics", "dispersion", "dispersion_samples", "fade_color",
 					    "fade_colour", "fade_distance", "fade_power", "media", "refraction"};
 	return (interior_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
+}
+
+/* ---- media ------------------------------------------------------------------------------- */
+
+/* The largest intervals, samples or aa_level accepted (they are unused: a bound for typos). */
+#define MEDIA_MAX_COUNT 1000000
+
+static bool word_here(parser *p, const char *w) { return lang_word_is(lang_peek(p), w); }
+
+/* An integer item of a media's sampling (accepted: circe is a path tracer) in [lo, hi]. */
+static bool media_int(parser *p, const char *what, long lo, long hi, long *out)
+{
+	char ctx[48];
+	snprintf(ctx, sizeof ctx, "after '%s'", what);
+	diag_loc at = lang_peek(p)->loc;
+	double x;
+	TRY(lang_float(p, ctx, &x));
+	if (!(x >= lo && x <= hi))
+		return lang_error(p, at, "%s must be in [%ld, %ld], found %g", what, lo, hi, x);
+	*out = (long)x;
+	return true;
+}
+
+/* scattering = "scattering" "{" int "," colour { "eccentricity" float | "extinction" float } "}"
+ * POV-Ray's types: 1 isotropic, 2 Mie haze, 3 Mie murky, 4 Rayleigh, 5 Henyey-Greenstein. */
+static bool media_scattering(parser *p, scene_media *md)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, "scattering", &open));
+	long type;
+	TRY(media_int(p, "the scattering type", 1, 5, &type));
+	md->scattering_type = (int)type;
+	TRY(lang_expect(p, LTK_COMMA, "after the scattering type"));
+	TRY(physical_color(p, "as the scattering colour", "scattering", SCENE_COLOR_RADIANCE, &md->scattering));
+	for (;;) {
+		diag_loc at = lang_peek(p)->loc;
+		double x;
+		if (word_here(p, "eccentricity")) {
+			lang_advance(p);
+			TRY(lang_float(p, "after 'eccentricity'", &x));
+			if (!(x > -1 && x < 1))
+				return lang_error(p, at, "eccentricity must be in (-1, 1), found %g", x);
+			if (type != 5)
+				diag_warning(p->d, at, "'eccentricity' is used by scattering type 5 (Henyey-Greenstein) only, "
+						       "as in POV-Ray");
+			md->eccentricity = (float)x;
+		} else if (word_here(p, "extinction")) {
+			lang_advance(p);
+			TRY(lang_float(p, "after 'extinction'", &x));
+			if (!(x >= 0))
+				return lang_error(p, at, "extinction must be >= 0, found %g", x);
+			md->extinction = (float)x;
+		} else {
+			break;
+		}
+	}
+	return lang_expect_close(p, open, "scattering");
+}
+
+/* One media item at the lookahead; *matched false when none. POV-Ray's parse_materials.cpp
+ * Parse_Media. */
+static bool media_item(parser *p, scene_media *md, xform *xf, bool *matched, bool *was_transform)
+{
+	*matched = true;
+	*was_transform = false;
+	diag_loc at = lang_peek(p)->loc;
+	long n;
+	double x;
+	if (word_here(p, "absorption") || word_here(p, "emission")) {
+		bool abs = word_here(p, "absorption");
+		lang_advance(p);
+		return physical_color(p, abs ? "after 'absorption'" : "after 'emission'", abs ? "absorption" : "emission",
+				      SCENE_COLOR_RADIANCE, abs ? &md->absorption : &md->emission);
+	}
+	if (word_here(p, "scattering"))
+		return media_scattering(p, md);
+	if (word_here(p, "density")) {
+		if (md->n_density == SCENE_MEDIA_MAX_DENSITIES)
+			return lang_error(p, at, "too many densities in one media (limit is %d)", SCENE_MEDIA_MAX_DENSITIES);
+		const scene_pigment *pg;
+		TRY(lang_density(p, &pg));
+		md->density[md->n_density++] = pg;
+		return true;
+	}
+	if (word_here(p, "method")) {
+		lang_advance(p);
+		TRY(media_int(p, "method", 1, 3, &n));
+		md->method = (int)n;
+		return true;
+	}
+	if (word_here(p, "intervals") || word_here(p, "aa_level")) {
+		const char *w = word_here(p, "intervals") ? "intervals" : "aa_level";
+		lang_advance(p);
+		return media_int(p, w, w[0] == 'i' ? 1 : 0, MEDIA_MAX_COUNT, &n);
+	}
+	if (word_here(p, "samples")) { /* samples Min [, Max] */
+		lang_advance(p);
+		TRY(media_int(p, "samples", 1, MEDIA_MAX_COUNT, &n));
+		if (lang_accept(p, LTK_COMMA))
+			TRY(media_int(p, "samples", 1, MEDIA_MAX_COUNT, &n));
+		return true;
+	}
+	static const char *const floats[] = {"confidence", "variance", "ratio", "jitter", "aa_threshold"};
+	for (size_t i = 0; i < sizeof floats / sizeof floats[0]; i++)
+		if (word_here(p, floats[i])) {
+			lang_advance(p);
+			char ctx[48];
+			snprintf(ctx, sizeof ctx, "after '%s'", floats[i]);
+			return lang_float(p, ctx, &x);
+		}
+	TRY(lang_transform_item(p, xf, matched));
+	*was_transform = *matched;
+	return true;
+}
+
+/* media = "media" "{" [ identifier ] { media_item } "}"
+ * media_item = ( "absorption" | "emission" ) colour | scattering | density
+ *            | "method" int | "intervals" int | "samples" int [ "," int ] | "aa_level" int
+ *            | ( "confidence" | "variance" | "ratio" | "jitter" | "aa_threshold" ) float
+ *            | transform_item
+ * The sampling items are accepted and unused (circe's path tracer needs none); a transform moves
+ * the densities given in the block. */
+static bool media_block(parser *p, scene_media *md)
+{
+	diag_loc open, kw = lang_advance(p)->loc;
+	TRY(open_block(p, "media", &open));
+	*md = (scene_media){.loc = kw, .extinction = 1.0f, .method = 3};
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		const value *v;
+		TRY(v = declared(p, VAL_MEDIA, "a media"));
+		*md = v->mat->media[0];
+		md->loc = kw;
+	}
+	xform xf = xform_identity();
+	bool moved = false;
+	for (;;) {
+		bool matched, was_transform;
+		TRY(media_item(p, md, &xf, &matched, &was_transform));
+		if (!matched)
+			break;
+		moved |= was_transform;
+	}
+	if (moved)
+		for (uint32_t i = 0; i < md->n_density; i++)
+			TRY(md->density[i] = lang_pigment_moved(p, md->density[i], &xf, kw));
+	if (lang_peek(p)->kind != LTK_RBRACE)
+		return bad_item(p, open, "media",
+				"absorption, emission, scattering, density, method, intervals, samples, confidence, "
+				"variance, ratio, jitter, aa_level, aa_threshold or a transform");
+	return lang_expect_close(p, open, "media");
+}
+
+/* An interior's media, after those it holds (each in the arena: a record is never changed once
+ * made, so the list is copied). */
+static bool interior_media(parser *p, scene_material *m)
+{
+	diag_loc at = lang_peek(p)->loc;
+	if (m->n_media == SCENE_MEDIA_MAX)
+		return lang_error(p, at, "too many media in one interior (limit is %d)", SCENE_MEDIA_MAX);
+	scene_media *list = arena_zalloc(&p->sc->arena, m->n_media + 1u, sizeof *list);
+	if (!list)
+		return lang_error(p, at, "out of memory");
+	for (uint32_t i = 0; i < m->n_media; i++)
+		list[i] = m->media[i];
+	TRY(media_block(p, &list[m->n_media]));
+	m->media = list, m->n_media++;
+	return true;
 }
 
 /* One interior item after its word w (at loc): POV-Ray's parse_materials.cpp Parse_Interior. */
@@ -576,8 +745,8 @@ static bool interior_item(parser *p, scene_material *m, interior_word w, diag_lo
 			     : w == IW_REFRACTION ? "POV-Ray 3's refraction is on wherever ior is given"
 						 : "the ior is one for every wavelength");
 		return true;
-	default: /* IW_MEDIA */
-		return lang_error(p, loc, "'media' is not supported by circe");
+	default: /* IW_MEDIA: interior() reads it */
+		return lang_error(p, loc, "internal: media");
 	}
 }
 
@@ -610,6 +779,10 @@ static bool interior(parser *p, scene_material *m)
 		interior_word w = interior_word_at(&t);
 		if (w == IW_NONE)
 			break;
+		if (w == IW_MEDIA) {
+			TRY(interior_media(p, m));
+			continue;
+		}
 		lang_advance(p);
 		TRY(interior_item(p, m, w, t.loc));
 	}
@@ -2175,6 +2348,18 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	}
 	if (k == LTK_KW_PIGMENT || k == LTK_KW_FINISH || k == LTK_KW_INTERIOR)
 		return declare_part(p, out, k);
+	if (word_here(p, "density")) { /* a pigment record: density { D } reads it as its base */
+		scene_material *m;
+		TRY(m = new_part(p, lang_peek(p)->loc));
+		out->kind = VAL_PIGMENT, out->mat = m;
+		return lang_density(p, &m->pigment);
+	}
+	if (word_here(p, "media")) {
+		scene_material *m;
+		TRY(m = new_part(p, lang_peek(p)->loc));
+		out->kind = VAL_MEDIA, out->mat = m;
+		return interior_media(p, m);
+	}
 	if (k == LTK_KW_CAMERA || k == LTK_KW_LIGHT_SOURCE || k == LTK_KW_TRANSFORM)
 		return declare_record(p, out, k);
 	if (lang_pigment_map_starts(p))
@@ -2569,6 +2754,8 @@ typedef enum light_word {
 	LW_FADE_DISTANCE,
 	LW_FADE_POWER,
 	LW_JITTER,
+	LW_MEDIA_ATTENUATION,
+	LW_MEDIA_INTERACTION,
 	LW_ORIENT,
 	LW_SHADOWLESS,
 	LW_TIGHTNESS
@@ -2577,7 +2764,8 @@ typedef enum light_word {
 static light_word light_word_at(const lang_token *t)
 {
 	static const char *const names[] = {"", "adaptive", "area_light", "circular", "cylinder", "fade_distance",
-					    "fade_power", "jitter", "orient", "shadowless", "tightness"};
+					    "fade_power", "jitter", "media_attenuation", "media_interaction",
+					    "orient", "shadowless", "tightness"};
 	if (t->kind == LTK_KW_CYLINDER) /* a keyword since cylinder is a shape */
 		return LW_CYLINDER;
 	return (light_word)pov_word_at(t, names, sizeof names / sizeof names[0]);
@@ -2617,6 +2805,16 @@ static bool area_light(parser *p, scene_light *l, light_seen *seen, diag_loc at)
 
 /* One of POV-Ray's light words (light_word) at the lookahead, into *l; *matched says whether one
  * was there. */
+/* POV-Ray's optional boolean after a flag word: on when none follows. */
+static bool optional_bool(parser *p, bool *on)
+{
+	double x = 1;
+	if (lang_float_follows(p))
+		TRY(lang_float(p, "after it", &x));
+	*on = x > 0;
+	return true;
+}
+
 static bool light_word_item(parser *p, scene_light *l, light_seen *seen, bool *matched)
 {
 	lang_token t = *lang_peek(p);
@@ -2656,6 +2854,20 @@ static bool light_word_item(parser *p, scene_light *l, light_seen *seen, bool *m
 	case LW_SHADOWLESS:
 		l->shadowless = true;
 		return true;
+	case LW_MEDIA_INTERACTION: { /* [bool]: off, the light scatters in no medium */
+		bool on = true;
+		TRY(optional_bool(p, &on));
+		l->no_media = !on;
+		return true;
+	}
+	case LW_MEDIA_ATTENUATION: { /* [bool]: accepted; circe's shadow rays always cross media */
+		bool on = true;
+		TRY(optional_bool(p, &on));
+		if (!on)
+			diag_warning(p->d, t.loc, "'media_attenuation off' is ignored by circe: light through media is "
+						  "always attenuated (physically)");
+		return true;
+	}
 	case LW_AREA_LIGHT:
 		return area_light(p, l, seen, t.loc);
 	case LW_ADAPTIVE: /* accepted: circe's area sampling is continuous, nothing to subdivide */
@@ -3067,6 +3279,9 @@ bool lang_statement(parser *p)
 	lang_token *t = lang_peek(p);
 	if (t->kind == LTK_UNSUPPORTED && t->len == 3 && !memcmp(t->text, "fog", 3))
 		return lang_fog(p);
+	if (lang_word_is(t, "media"))
+		return lang_error(p, t->loc, "atmospheric media (a 'media' outside an interior) is not supported by circe: "
+					     "give it to a container object's interior (a box or sphere around the scene)");
 	switch (t->kind) {
 	case LTK_KW_GLOBAL_SETTINGS: return global_settings(p);
 	case LTK_KW_CAMERA: return camera(p);

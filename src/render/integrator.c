@@ -85,20 +85,97 @@ static bool shadow_passes(const render_settings *set, const bsdf_params *b)
 	return b->clear.kind == BSDF_CLEAR_THIN || (b->clear.kind == BSDF_CLEAR_DIELECTRIC && !set->opaque_glass_shadows);
 }
 
+/* The medium a ray travels in: the container's media and its object (for the density's space). */
+typedef struct media_ctx {
+	const render_scene *s;
+	uint32_t object;
+} media_ctx;
+
+static vec3 media_density(const void *ctx, const render_medium *m, vec3 p)
+{
+	const media_ctx *c = ctx;
+	return c->s->density ? c->s->density(c->s->user, c->object, m, p) : v3s(1.0f);
+}
+
+static const render_media *media_of(const render_scene *s, int material)
+{
+	return material >= 0 && s->media && (size_t)material < s->material_count ? s->media[material] : NULL;
+}
+
+/* The interiors a ray is in, innermost last: entered by refraction into a dielectric, left by
+ * refraction out of the same object. Deeper nests keep their outer RENDER_MAX_NEST - 1 and the
+ * innermost. */
+#define RENDER_MAX_NEST 4
+typedef struct nest {
+	int n;
+	int mat[RENDER_MAX_NEST];
+	uint32_t obj[RENDER_MAX_NEST];
+} nest;
+
+static void nest_cross(nest *st, int mat, uint32_t obj, bool entering)
+{
+	if (entering) {
+		int i = st->n < RENDER_MAX_NEST ? st->n++ : RENDER_MAX_NEST - 1;
+		st->mat[i] = mat, st->obj[i] = obj;
+		return;
+	}
+	for (int i = st->n - 1; i >= 0; i--)
+		if (st->obj[i] == obj) {
+			for (int k = i; k + 1 < st->n; k++)
+				st->mat[k] = st->mat[k + 1], st->obj[k] = st->obj[k + 1];
+			st->n--;
+			return;
+		}
+}
+
+static int nest_top(const nest *st) { return st->n ? st->mat[st->n - 1] : -1; }
+
+/* The media a ray in the nest travels through: the innermost interior's, or, through hollow
+ * objects without media, those of the container around them (POV-Ray's hollow); *obj the
+ * container. NULL: none. */
+static const render_media *nest_media(const render_scene *s, const nest *st, uint32_t *obj)
+{
+	for (int i = st->n - 1; i >= 0; i--) {
+		const render_media *md = media_of(s, st->mat[i]);
+		if (md) {
+			*obj = st->obj[i];
+			return md;
+		}
+		if (!s->hollow || !s->hollow(s->user, st->obj[i]))
+			return NULL;
+	}
+	return NULL;
+}
+
+/* The transmittance of the media of the nest over o + t d, t in [t0, t1]. */
+static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d, float t0, float t1, rng *g)
+{
+	media_ctx mc = {s, 0};
+	const render_media *md = s->media ? nest_media(s, st, &mc.object) : NULL;
+	if (!md || !(t1 > t0))
+		return v3s(1.0f);
+	return render_media_transmittance(md, media_density, &mc, v3_madd(o, d, t0), d, t1 - t0, g);
+}
+
 /* What reaches p from the light at tmax along the shadow ray: 1 when nothing is in between, 0
  * behind an opaque surface, the product of bsdf_clear_shadow at each transparent surface crossed
- * (and the fade of a dielectric's interior between its entry and its exit) otherwise. */
-static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax)
+ * (and the fade and the media of a dielectric's interior between its entry and its exit)
+ * otherwise. The ray starts inside the interior of material `inside` (object inside_obj), -1:
+ * outside every interior. */
+static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
+				 const nest *from, rng *g)
 {
+	const vec3 o0 = ray.o;
+	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
-		return v3s(1.0f);
+		return media_segment(s, &st, o0, ray.d, 0.0f, tmax, g);
 	vec3 tr = v3s(1.0f);
-	int inside = -1;
+	int inside = nest_top(&st);
 	float t_in = 0.0f, t_done = 0.0f;
 	for (int k = 0; s->shadow_closest && k < RENDER_SHADOW_MAX_CROSSINGS; k++) {
 		render_hit h = {0};
 		if (!s->shadow_closest(s->user, &ray, 0.0f, tmax - t_done, &h))
-			return tr;
+			return v3_mul(tr, media_segment(s, &st, o0, ray.d, t_done, tmax, g));
 		if (h.material < 0 || (size_t)h.material >= s->material_count)
 			return v3s(0.0f);
 		const bsdf_params *b = &s->materials[h.material];
@@ -106,6 +183,7 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 			return v3s(0.0f);
 		float c = v3_dot(ray.d, h.ng);
 		tr = v3_mul(tr, bsdf_clear_shadow(b, c));
+		tr = v3_mul(tr, media_segment(s, &st, o0, ray.d, t_done, t_done + h.t, g));
 		t_done += h.t;
 		if (b->clear.kind == BSDF_CLEAR_DIELECTRIC && c < 0.0f) {
 			inside = h.material, t_in = t_done;
@@ -113,6 +191,8 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 			tr = v3_mul(tr, bsdf_fade_apply(&b->clear.fade, t_done - t_in));
 			inside = -1;
 		}
+		if (b->clear.kind == BSDF_CLEAR_DIELECTRIC)
+			nest_cross(&st, h.material, h.object, c < 0.0f);
 		if (!(v3_max_comp(tr) > 0.0f))
 			return v3s(0.0f);
 		ray.o = offset_origin(h.p, h.scale, c > 0.0f ? h.ng : v3_neg(h.ng));
@@ -123,7 +203,8 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 /* Next-event estimation from hit point p: one light picked by power, one sample of it. lobe_prob:
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, rng *g)
+			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
+			  rng *g)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -142,7 +223,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -150,6 +231,35 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		      ? 1.0f
 		      : render_power_heuristic(light_pdf, lobe_prob * bsdf_pdf(b, wo_local, wi_local));
 	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
+}
+
+/* Next-event estimation at a scattering point x of a medium (coefficients c, reached along
+ * d_in): one light picked by power, the media's phase functions towards it, the shadow ray
+ * starting inside the container. A light marked no_media lights no medium. */
+static vec3 sample_direct_medium(const render_scene *s, const render_settings *set, const render_media *md,
+				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, rng *g)
+{
+	const light_set *ls = s->lights;
+	if (!ls || ls->count == 0 || set->mode == RENDER_BSDF_ONLY)
+		return v3s(0.0f);
+	float pick;
+	size_t li = light_set_pick(ls, rng_float(g), &pick);
+	vec2 u = v2(rng_float(g), rng_float(g));
+	light_sample ls_out;
+	if (!(pick > 0.0f) || ls->lights[li].no_media || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
+		return v3s(0.0f);
+	float phase_pdf;
+	vec3 fval = render_media_phase_eval(md, c, d_in, ls_out.wi, &phase_pdf);
+	if (!(v3_max_comp(fval) > 0.0f))
+		return v3s(0.0f);
+	render_ray shadow = {x, ls_out.wi};
+	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
+	if (!(v3_max_comp(vis) > 0.0f))
+		return v3s(0.0f);
+	float light_pdf = pick * ls_out.pdf;
+	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY) ? 1.0f : render_power_heuristic(light_pdf, phase_pdf);
+	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w / light_pdf);
 }
 
 /* ---- subsurface scattering ----------------------------------------------------------------- */
@@ -356,7 +466,8 @@ typedef struct path {
 	bool stood_for;	     /* refracted through glass since the last non-delta vertex, whose
 			      * shadow rays passed that glass: emitters found now were counted there */
 	bool scattered;	     /* a non-delta vertex was met */
-	int medium;	     /* the material whose interior the path is in, -1: none */
+	int medium;	     /* the material whose interior the path is in (nest's innermost), -1: none */
+	nest in;	     /* the interiors the path is in */
 } path;
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
@@ -422,8 +533,9 @@ static inline void add_direct(const render_scene *s, const render_settings *set,
 			      const vertex *v, rng *g, path *pa)
 {
 	if (set->mode != RENDER_BSDF_ONLY)
-		pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p,
-									       v->p_scale, v->wo_local, v->lobe_prob, g)));
+		pa->radiance = v3_add(pa->radiance,
+				      v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
+								     v->lobe_prob, &pa->in, g)));
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
@@ -555,7 +667,8 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
 		pa->prev_delta = true;
 		pa->passed = false;
 		if (refracted) {
-			pa->medium = entering ? hit->material : -1;
+			nest_cross(&pa->in, hit->material, hit->object, entering);
+			pa->medium = nest_top(&pa->in);
 			pa->stood_for |= pa->scattered && !set->opaque_glass_shadows;
 		}
 	}
@@ -563,6 +676,42 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
 		return false;
 	*ray = (render_ray){offset_origin(v->p, v->p_scale, side), wi};
 	return true;
+}
+
+/* The segment of *ray up to seg inside the media md: the emission on the way, and a scattering
+ * event there (light sampled through the phase functions, the path continued by a phase
+ * sample: *ray becomes the next ray). 1: the path scattered and goes on; 0: it reached the
+ * surface at seg; -1: it ends. */
+static int through_media(const render_scene *s, const render_settings *set, const render_media *md, uint32_t obj,
+			 float seg, int bounce, rng *g, path *pa, render_ray *ray)
+{
+	media_ctx mc = {s, obj};
+	render_media_coef c;
+	float ts;
+	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, g, &pa->beta, &pa->radiance, &c, &ts))
+		return v3_max_comp(pa->beta) > 0.0f ? 0 : -1;
+	if (bounce >= set->max_trace_level)
+		return -1;
+	vec3 x = v3_madd(ray->o, ray->d, ts);
+	pa->radiance = v3_add(pa->radiance,
+			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g)));
+	float u_pick = rng_float(g);
+	vec2 u = v2(rng_float(g), rng_float(g));
+	vec3 wi, fval;
+	float pdf;
+	if (!render_media_phase_sample(md, &c, ray->d, u_pick, u, &wi, &fval, &pdf))
+		return -1;
+	pa->beta = v3_mul(pa->beta, v3_scale(fval, 1.0f / pdf));
+	pa->prev_pdf = pdf;
+	pa->prev_delta = false;
+	pa->passed = pa->stood_for = false;
+	pa->scattered = true;
+	pa->prev_p = x, pa->prev_n = v3s(0.0f);
+	pa->fog_view = false;
+	if (!roulette(bounce, g, pa))
+		return -1;
+	*ray = (render_ray){x, wi};
+	return 1;
 }
 
 render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
@@ -579,6 +728,17 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
 		if (s->fog_count && pa.fog_view)
 			through_fog(s, &ray, hit_any ? hit.t : INFINITY, &pa);
+		uint32_t md_obj = 0;
+		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
+		if (md) {
+			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
+			if (r < 0)
+				break;
+			if (r > 0)
+				continue;
+		}
+		if (!hit_any) /* a leak out of interiors that are not closed */
+			pa.in.n = 0, pa.medium = -1;
 		if (!hit_any) {
 			add_escaped(s, set, bounce, ray.d, &pa);
 			break;

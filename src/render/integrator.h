@@ -30,6 +30,7 @@
 #include "render/camera.h"
 #include "render/fog.h"
 #include "render/light.h"
+#include "render/media.h"
 #include "sss/circle.h"
 #include "sss/medium.h"
 #include "sss/profile.h"
@@ -114,6 +115,19 @@ typedef struct render_scene {
 	 * media_attenuation). */
 	const render_fog *fogs;
 	size_t fog_count;
+	/* POV-Ray's media (media.h), indexed like materials: the media of a material's interior
+	 * (NULL for a material without), or NULL for the whole table when no material has any. A
+	 * path inside a container (entered by refraction through its surface) is tracked through
+	 * them, and shadow rays take their transmittance. */
+	const render_media *const *media;
+	/* The density of medium m at world point p in the container `object` (its patterns live in
+	 * the object's space), each channel in [0, m->density_max]. Needed when a medium has a
+	 * density pattern. Thread-safe. */
+	vec3 (*density)(void *user, uint32_t object, const render_medium *m, vec3 p);
+	/* Whether the object is hollow (POV-Ray's flag): the media of a container around it go on
+	 * inside it; a non-hollow object inside a container holds none of its media. NULL: none is.
+	 * Thread-safe. */
+	bool (*hollow)(void *user, uint32_t object);
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

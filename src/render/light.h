@@ -79,6 +79,7 @@ typedef struct light {
 	light_falloff falloff;	 /* point, spot (the inverse square by default), parallel, cylinder */
 	float fade_distance, fade_power; /* LIGHT_FALLOFF_FADE */
 	bool shadowless;	 /* POV-Ray's `shadowless`: its samples skip the shadow ray */
+	bool no_media;		 /* POV-Ray's `media_interaction off`: lights no medium (its scattering) */
 	light_area area_shape;	 /* point, spot */
 	bool area_orient;	 /* the area turned to face each receiver, both axes |axis1| long */
 	vec3 axis1, axis2;	 /* the area's full edge vectors (an ellipse's diameters) */

@@ -271,6 +271,33 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	}
 }
 
+/* render_scene.density: the product of medium m's density patterns at world point p, in the
+ * space of the container `object` (as its pigment's), each channel clamped to the bound the
+ * majorant was made from. */
+static vec3 world_density(void *user, uint32_t object, const render_medium *m, vec3 p)
+{
+	const world *w = user;
+	if (object >= w->n_insts)
+		return v3s(0.0f);
+	const world_inst *in = &w->insts[object];
+	dvec3 q = xform_inv_point(&in->pattern_xf, v3_to_d3(p));
+	double tol = PATTERN_HIT_ULPS * FLT_EPSILON * fmax(d3_length(q), 1.0);
+	vec3 r = v3s(1.0f);
+	for (uint32_t i = 0; i < m->n_density; i++) {
+		float c[5];
+		pattern_eval(&w->patterns, m->density[i], q, tol, c);
+		r = v3_mul(r, v3(c[0], c[1], c[2]));
+	}
+	return v3_min(v3_max(r, v3s(0.0f)), m->density_max);
+}
+
+/* render_scene.hollow: whether instance `object` is hollow. */
+static bool world_hollow(void *user, uint32_t object)
+{
+	const world *w = user;
+	return object < w->n_insts && w->insts[object].hollow;
+}
+
 /* The integrator's view of w: world.c's callbacks with w as their user, and the build's tables.
  * Shadow rays walk through surfaces only when some material is transparent: elsewhere an
  * occluded shadow ray costs no closest-hit query. */
@@ -284,5 +311,7 @@ void world_bind(world *w)
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,
-			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs};
+			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
+			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
+			       .hollow = world_hollow};
 }

@@ -42,6 +42,7 @@ typedef struct world_inst {
 	float xf_gain, xf_shift; /* |xf(v)|max <= gain |v|max + shift (row sums of |M|, |t|max): a
 				  * triangle's world scale from its object one without transforming it */
 	bool no_shadow;
+	bool hollow;    /* POV-Ray's hollow: the media of a container around it fill it too */
 	int material;   /* index into world.materials */
 	int light;      /* index of its mesh light in world.lights, or -1 */
 	xform pattern_xf; /* object to world as the scene placed it: a pigment's pattern lives in its
@@ -125,6 +126,9 @@ struct world {
 	bool has_sss;           /* some material scatters below its surface */
 	render_sss *sss;        /* indexed like materials; meaningful where sss_of is not NULL */
 	const render_sss **sss_of; /* the integrator's table: NULL for materials without SSS */
+	render_media *media;    /* indexed like materials: an interior's media (render/media.h) */
+	const render_media **media_of; /* the integrator's table: NULL for materials without media */
+	bool has_media;
 	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
 	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index;
 				 * the one record of membership (the top level's sets are sss_set's) */

@@ -38,6 +38,20 @@ typedef struct scene_sss {
 	const char *group; /* NULL: the object alone */
 } scene_sss;
 
+/* POV-Ray's media { } of an interior (doc/language.md "Media"): coefficients per scene unit at
+ * density 1, the scattering type (1 isotropic .. 5 Henyey-Greenstein), and the densities whose
+ * colours multiply (each a pigment tree: a pattern with its density_map, or one colour). */
+enum { SCENE_MEDIA_MAX = 8, SCENE_MEDIA_MAX_DENSITIES = 8 };
+typedef struct scene_media {
+	diag_loc loc;
+	vec3 absorption, emission, scattering;
+	int scattering_type; /* 1..5; 0: no scattering block */
+	float eccentricity, extinction;
+	int method; /* POV-Ray's sampling method, kept for the dump: circe is a path tracer */
+	const struct scene_pigment *density[SCENE_MEDIA_MAX_DENSITIES];
+	uint32_t n_density;
+} scene_media;
+
 typedef struct scene_material {
 	diag_loc loc;
 	scene_material_kind kind;
@@ -55,6 +69,8 @@ typedef struct scene_material {
 	float filter, transmit;
 	float fade_distance, fade_power; /* 0: no fade */
 	vec3 fade_color;		 /* in [0, 1] */
+	const scene_media *media; /* the interior's media, n_media of them (in the arena), or NULL */
+	uint32_t n_media;
 	vec3 emission; /* any kind may emit */
 	scene_sss sss; /* MAT_SKIN, MAT_WAX, MAT_MARBLE */
 	struct scene_material *next;

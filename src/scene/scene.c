@@ -392,6 +392,20 @@ static void dump_material(FILE *o, const scene_material *m)
 			fprintf(o, " fade_distance %g fade_power %g", m->fade_distance, m->fade_power);
 			dump_v3(o, "fade_color", m->fade_color);
 		}
+		for (uint32_t k = 0; k < m->n_media; k++) {
+			const scene_media *md = &m->media[k];
+			fprintf(o, " media");
+			dump_v3(o, "absorption", md->absorption);
+			dump_v3(o, "emission", md->emission);
+			dump_v3(o, "scattering", md->scattering);
+			fprintf(o, " type %d eccentricity %g extinction %g method %d densities %u", md->scattering_type,
+				md->eccentricity, md->extinction, md->method, md->n_density);
+			for (uint32_t j = 0; j < md->n_density; j++) {
+				fprintf(o, " [");
+				scene_pigment_dump(o, md->density[j]);
+				fprintf(o, "]");
+			}
+		}
 		fputc('\n', o);
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);
@@ -641,6 +655,8 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " fade_distance %g fade_power %g", l->fade_distance, l->fade_power);
 		if (l->shadowless)
 			fprintf(o, " shadowless");
+		if (l->no_media)
+			fprintf(o, " media_interaction off");
 		if (l->area) {
 			dump_d3(o, "area", l->axis1);
 			dump_d3(o, "and", l->axis2);

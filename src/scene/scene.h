@@ -61,6 +61,7 @@ typedef struct scene_light {
 	double tightness; /* spot and cylinder lights; 0 = none */
 	double fade_distance, fade_power; /* POV-Ray's fade; 0 = none */
 	bool shadowless;
+	bool no_media; /* media_interaction off: the light scatters in no medium */
 	/* POV-Ray's area_light: axes (full edges, from -1/2 to +1/2 about the position), the sample
 	 * counts (kept for the dump; circe samples the area continuously) and the modifiers. */
 	bool area;

@@ -144,6 +144,10 @@ sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { 
 #declare Av = Apply(function { x + y*z }, transform { translate y });
 // rule: finish_item, reflection_item
 sphere { 0, 1 finish { ambient 0.1 diffuse albedo 0.6 phong 0.5 phong_size 20 metallic reflection { 0.1, 0.5 falloff 2 } } }
+// rule: media, media_item, scattering, density
+#declare Dens = density { bozo density_map { [0 rgb 0] [1 rgb 1] } }
+#declare Fume = media { scattering { 5, rgb 0.2 eccentricity 0.5 extinction 0.8 } method 3 samples 2, 4 jitter 0.1 }
+box { 0, 1 pigment { rgbt 1 } hollow interior { media { Fume absorption 0.1 emission 0.1 density { Dens scale 0.5 } translate x } } }
 // rule: fog, fog_item
 fog { fog_type 2 distance 30 color rgb 0.5 fog_offset 1 fog_alt 2 }
 // rule: pov_shape, lathe, spline_type, uv_list, sor, prism, sphere_sweep, sweep_sphere

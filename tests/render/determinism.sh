@@ -43,6 +43,13 @@ for m in circle fullcircle disk volume; do
 	expect_status 0 "$CIRCE" compare "${m}sse2.exr" "${m}1.exr" --fail 0
 	grep -q '^max_abs: 0 at' out || fail "--sss $m: the SSE2 and the dispatched BVH differ: $(cat out)"
 done
+# Media: delta and ratio tracking draw from the sample's own generator, whatever the threads.
+for t in 1 2; do
+	expect_status 0 "$CIRCE" render "$top_srcdir/tests/scenes/media.pov" -o "media$t.exr" --threads $t -W 32 -H 24 \
+		--spp 4 --quiet
+done
+expect_status 0 "$CIRCE" compare media2.exr media1.exr --fail 0
+grep -q '^max_abs: 0 at' out || fail "media: 1 and 2 threads differ: $(cat out)"
 expect_status 0 env CIRCE_SIMD=sse2 "$CIRCE" render "$scene" -o sse2.exr $opts
 expect_status 0 "$CIRCE" compare sse2.exr t1.exr --fail 0
 grep -q '^max_abs: 0 at' out || fail "the SSE2 and the dispatched BVH differ: $(cat out)"

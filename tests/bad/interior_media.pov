@@ -1,1 +1,0 @@
-sphere { 0, 1 pigment { rgbf <1, 1, 1, 1> } interior { media { absorption 1 } } }

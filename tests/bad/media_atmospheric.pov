@@ -1,0 +1,1 @@
+media { scattering { 1, rgb 0.02 } }
