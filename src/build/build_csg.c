@@ -50,6 +50,10 @@ static void set_inside_kind(world_inst *in, const scene_geom *g)
 			in->plane_n = d3_scale(g->u.plane.normal, 1.0 / len);
 			in->plane_d = g->u.plane.offset;
 		}
+	} else if (g->kind == SHAPE_CONE && g->u.cone.open) {
+		in->inside_kind = WORLD_INSIDE_CONE;
+		in->box_lo = g->u.cone.base, in->box_hi = g->u.cone.cap;
+		in->cone_r0 = g->u.cone.base_radius, in->cone_r1 = g->u.cone.cap_radius;
 	} else if (g->kind == SHAPE_BOX) {
 		in->inside_kind = WORLD_INSIDE_BOX;
 		dvec3 a = g->u.box.corner1, b = g->u.box.corner2;

@@ -59,13 +59,16 @@ typedef struct world_inst {
 	uint8_t inside_kind; /* WORLD_INSIDE_*: how its inside is told */
 	dvec3 plane_n;       /* WORLD_INSIDE_PLANE: the unit normal and offset (object space) */
 	double plane_d;
-	dvec3 box_lo, box_hi; /* WORLD_INSIDE_BOX: object space */
+	dvec3 box_lo, box_hi; /* WORLD_INSIDE_BOX: object space; WORLD_INSIDE_CONE: base and cap */
+	double cone_r0, cone_r1; /* WORLD_INSIDE_CONE: the radii at base and cap */
 } world_inst;
 
 enum {
 	WORLD_INSIDE_MESH,  /* parity of the mesh's crossings along a fixed ray */
 	WORLD_INSIDE_PLANE, /* the half-space below the plane (POV-Ray's inside of a plane) */
 	WORLD_INSIDE_BOX,   /* the box itself (its mesh is exactly the box) */
+	WORLD_INSIDE_CONE,  /* an open cone or cylinder: the closed solid's inside, as POV-Ray's (its
+			     * open mesh bounds no volume; the solid is its within the tessellation's error) */
 };
 
 /* A node of a CSG solid (build_csg.c): its children are world.csg_kids[first .. first+count). */

@@ -39,6 +39,15 @@ static bool solid_inside(const world_inst *in, vec3 p)
 	if (p.x < in->lo.x || p.y < in->lo.y || p.z < in->lo.z || p.x > in->hi.x || p.y > in->hi.y || p.z > in->hi.z)
 		return false;
 	dvec3 q = in->identity ? v3_to_d3(p) : xform_inv_point(&in->xf, v3_to_d3(p));
+	if (in->inside_kind == WORLD_INSIDE_CONE) { /* between the caps, within the radius there */
+		dvec3 ax = d3_sub(in->box_hi, in->box_lo), rel = d3_sub(q, in->box_lo);
+		double len2 = d3_dot(ax, ax), s = len2 > 0.0 ? d3_dot(rel, ax) / len2 : -1.0;
+		if (!(s > 0.0 && s < 1.0))
+			return false;
+		dvec3 off = d3_sub(rel, d3_scale(ax, s));
+		double r = in->cone_r0 + s * (in->cone_r1 - in->cone_r0);
+		return d3_dot(off, off) < r * r;
+	}
 	if (in->inside_kind == WORLD_INSIDE_BOX)
 		return q.x > in->box_lo.x && q.y > in->box_lo.y && q.z > in->box_lo.z && q.x < in->box_hi.x &&
 		       q.y < in->box_hi.y && q.z < in->box_hi.z;
