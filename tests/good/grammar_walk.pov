@@ -164,6 +164,17 @@ text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
 bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>
 	<0, 0, 0>, <1, 0, 0>, <2, 0, 0>, <3, 0, 0>, <0, 1, 0>, <1, 1, 1>, <2, 1, 1>, <3, 1, 0>
 	<0, 2, 0>, <1, 2, 1>, <2, 2, 1>, <3, 2, 0>, <0, 3, 0>, <1, 3, 0>, <2, 3, 0>, <3, 3, 0> }
+// rule: isosurface, iso_function, iso_item
+isosurface { function { x * x + y * y + z * z - 0.25 } contained_by { sphere { 0, 1 } } threshold 0 accuracy 0.01
+	max_gradient 2 evaluate 1, 10, 0.99 open max_trace 2 all_intersections translate 3 * y }
+// rule: parametric, param_item
+parametric { function { u } function { v } function { u * v } <0, 0>, <1, 1> contained_by { box { -1, 1 } }
+	max_gradient 1 accuracy 0.01 precompute 10 x, y, z translate 3 * y }
+// rule: julia_fractal, julia_item
+julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 6 precision 10 slice <0, 0, 0, 1>, 0
+	translate 3 * y }
+// rule: object_triangle
+triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> translate 3 * y }
 // rule: shape, cylinder, cone, torus, disc, polygon, superellipsoid, height_field, quadric, poly
 cylinder { <0, 0, 0>, <0, 1, 0>, 0.5 open translate x }
 cone { 0, 1 y 0.2 }
