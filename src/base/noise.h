@@ -1,5 +1,5 @@
 /* noise.h - Perlin's improved noise ("Improving Noise", SIGGRAPH 2002): the one lattice noise of
- * circe, under the noise patterns (render/pattern.c) and the language's f_noise3d (lang/func.c). */
+ * circe, under the noise patterns (scene/pattern.c) and the language's f_noise3d (lang/func.c). */
 #ifndef CIRCE_BASE_NOISE_H
 #define CIRCE_BASE_NOISE_H
 

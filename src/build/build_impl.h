@@ -51,7 +51,6 @@ size_t clamp_texels(const image *img, scene_color_use use, float *rgb);
 void warn_reflectance_image(const image *img, diag_loc loc, const char *path, diag *d);
 /* build_pattern.c: pg compiled into w->patterns; *node receives its root. False after reporting. */
 bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d);
-void pattern_prog_free(pattern_prog *pg);
 /* The size of the lat-long image a patterned sky_sphere is baked into: 0.35 degrees a texel. */
 #define WORLD_SKY_WIDTH 1024
 #define WORLD_SKY_HEIGHT 512

@@ -1,7 +1,6 @@
-/* build_pattern.c - the IR's pigment trees (scene/pigment.h) compiled into the world's flat
- * pattern program (render/pattern.h): nodes with their warps in the order they are applied to a
- * point (the reverse of the order written: POV-Ray's Warp_EPoint walks its list backwards), map
- * entries by node index, images loaded once, the default colour maps and block colours filled. */
+/* build_pattern.c - the IR's pigment trees compiled into the world's flat pattern program by
+ * scene/pattern_compile.c, the images they name loaded once into the world; a patterned
+ * sky_sphere baked into a lat-long image. */
 #include "build/build_impl.h"
 
 #include "base/mem.h"
@@ -9,124 +8,20 @@
 
 #include <string.h>
 
-_Static_assert((int)SCENE_PAT_COUNT == (int)PATTERN_KIND_COUNT, "scene/pigment.h and render/pattern.h kinds agree");
-_Static_assert((int)SCENE_WAVE_POLY == (int)WAVE_POLY, "the wave orders agree");
-_Static_assert((int)SCENE_PIGMENT_MAX_ENTRIES == (int)PATTERN_MAX_ENTRIES, "the entry limits agree");
-
-/* Grows *items (n of them, each size bytes) by k; the first new index in *at. */
-static bool grow(void **items, size_t *n, size_t k, size_t size, uint32_t *at)
+/* The loader pattern_compile calls for an image_map or bump_map: the world's image, loaded once
+ * (a bump_map's grey is a height, not a colour: read as stored). */
+static const image *load_image(void *ctx, const scene_pigment *pg, diag *d)
 {
-	if (*n + k > UINT32_MAX)
-		return false;
-	void *r = mem_realloc(*items, *n + k ? *n + k : 1, size);
-	if (!r)
-		return false;
-	*items = r;
-	memset((char *)r + *n * size, 0, k * size);
-	*at = (uint32_t)*n;
-	*n += k;
-	return true;
+	world *w = ctx;
+	const image *img = world_image(w, pg->loc, pg->image, pg->is_normal ? IMAGE_RAW : IMAGE_SRGB, d);
+	if (img && !pg->is_normal)
+		warn_reflectance_image(img, pg->loc, pg->image, d);
+	return img;
 }
 
-static pattern_warp warp_of(const scene_warp *s)
+bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d)
 {
-	pattern_warp w = {.kind = (pattern_warp_kind)s->kind, .xf = s->xf, .axis = s->axis, .width = s->width,
-			  .offset = s->offset, .flip = s->flip, .center = s->center, .radius = s->radius,
-			  .strength = s->strength, .falloff = s->falloff, .inverse = s->inverse, .repeat = s->repeat};
-	w.turb = (pattern_turb){s->turb.amount, s->turb.octaves, s->turb.omega, s->turb.lambda};
-	return w;
-}
-
-/* The node's own parameters (no warps, entries or image). */
-static pattern_node node_of(const scene_pigment *pg)
-{
-	pattern_node n = pattern_node_default((pattern_kind)pg->kind);
-	memcpy(n.color, pg->color, sizeof n.color);
-	n.map_type = pg->map_type, n.once = pg->once, n.interpolate = pg->interpolate;
-	n.filter_all = pg->filter_all, n.transmit_all = pg->transmit_all;
-	n.vector = pg->vector, n.mortar = pg->mortar, n.control0 = pg->control0, n.control1 = pg->control1;
-	n.arms = pg->arms, n.agate_turb = pg->agate_turb, n.solid = pg->solid;
-	n.bump_amount = pg->bump_amount, n.accuracy = pg->accuracy;
-	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;
-	n.turb = (pattern_turb){pg->turb.amount, pg->turb.octaves, pg->turb.omega, pg->turb.lambda};
-	return n;
-}
-
-static bool compile(world *w, const scene_pigment *pg, int depth, uint32_t *out, diag *d);
-
-/* The entries of node k: the written ones (a pigment's compiled in turn), the block colours
- * not written and a pattern without a map taking POV-Ray's defaults. */
-static bool compile_entries(world *w, const scene_pigment *pg, uint32_t k, int depth, diag *d)
-{
-	pattern_prog *pp = &w->patterns;
-	pattern_entry defaults[6];
-	int n_def = pattern_default_map((pattern_kind)pg->kind, defaults);
-	uint32_t n = pg->entries ? pg->n_entries : (uint32_t)n_def;
-	if (pg->block_list && n < (uint32_t)scene_pattern_blocks(pg->kind))
-		n = (uint32_t)scene_pattern_blocks(pg->kind);
-	uint32_t e0;
-	if (!grow((void **)&pp->entries, &pp->n_entries, n, sizeof *pp->entries, &e0)) {
-		diag_error(d, pg->loc, "out of memory");
-		return false;
-	}
-	pp->nodes[k].entry0 = e0, pp->nodes[k].n_entries = n;
-	for (uint32_t i = 0; i < n; i++) {
-		pattern_entry e = i < (uint32_t)n_def ? defaults[i] : (pattern_entry){.node = -1};
-		if (pg->entries && i < pg->n_entries) {
-			const scene_map_entry *s = &pg->entries[i];
-			e = (pattern_entry){.value = s->value, .node = -1};
-			memcpy(e.color, s->color, sizeof e.color);
-			uint32_t child;
-			if (s->pigment) {
-				if (!compile(w, s->pigment, depth + 1, &child, d))
-					return false;
-				e.node = (int32_t)child;
-			}
-		}
-		pp->entries[e0 + i] = e;
-	}
-	return true;
-}
-
-static bool compile(world *w, const scene_pigment *pg, int depth, uint32_t *out, diag *d)
-{
-	pattern_prog *pp = &w->patterns;
-	uint32_t k, w0 = 0;
-	if (depth > PATTERN_MAX_DEPTH || !grow((void **)&pp->nodes, &pp->n_nodes, 1, sizeof *pp->nodes, &k) ||
-	    (pg->n_warps && !grow((void **)&pp->warps, &pp->n_warps, pg->n_warps, sizeof *pp->warps, &w0))) {
-		diag_error(d, pg->loc, depth > PATTERN_MAX_DEPTH ? "pigments nested too deep" : "out of memory");
-		return false;
-	}
-	pattern_node n = node_of(pg);
-	n.warp0 = w0, n.n_warps = pg->n_warps;
-	for (uint32_t i = 0; i < pg->n_warps; i++)
-		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
-	if (pg->kind == SCENE_PAT_IMAGE) {
-		/* a bump_map's grey is a height, not a colour: read as stored */
-		if (!(n.img = world_image(w, pg->loc, pg->image, pg->is_normal ? IMAGE_RAW : IMAGE_SRGB, d)))
-			return false;
-		if (!pg->is_normal)
-			warn_reflectance_image(n.img, pg->loc, pg->image, d);
-	}
-	if (pg->kind == SCENE_PAT_PIGMENT_PATTERN && pg->child) {
-		uint32_t child;
-		if (!compile(w, pg->child, depth + 1, &child, d))
-			return false;
-		n.child = (int32_t)child;
-	}
-	pp->nodes[k] = n;
-	*out = k;
-	if (pg->kind == SCENE_PAT_PLAIN || pg->kind == SCENE_PAT_IMAGE)
-		return true;
-	return compile_entries(w, pg, k, depth, d);
-}
-
-bool build_pattern(world *w, const scene_pigment *pg, uint32_t *node, diag *d) { return compile(w, pg, 0, node, d); }
-
-void pattern_prog_free(pattern_prog *pg)
-{
-	mem_free(pg->nodes), mem_free(pg->warps), mem_free(pg->entries);
-	*pg = (pattern_prog){0};
+	return pattern_compile(&w->patterns, pg, load_image, w, node, d);
 }
 
 /* POV-Ray 3.7's sky_sphere (Trace::ComputeSky): the layers from the top one down, each adding its

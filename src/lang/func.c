@@ -4,8 +4,8 @@
  * fnintern.cpp, source/core/math/spline.cpp) were read to learn them, none copied. */
 #include "lang/func.h"
 
-#include "base/noise.h"
 #include "lang/parser.h"
+#include "lang/pigment.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -109,7 +109,9 @@ static bool run_code(const lang_function *f, const double *args, double *out, co
 			if (!lang_fn_eval(o->fn, &st[sp - o->n], r, failed))
 				return false;
 			sp -= o->n;
-			st[sp++] = r[o->comp];
+			st[sp++] = o->comp == LANG_FN_GRAY ? 0.297 * r[0] + 0.589 * r[1] + 0.114 * r[2]
+				   : o->comp == LANG_FN_HF ? (r[0] + r[1] / 255.0) * 0.996093
+							   : r[o->comp];
 			break;
 		}
 		default: { /* the binary operators */
@@ -152,10 +154,18 @@ bool lang_fn_eval(const lang_function *f, const double *args, double *out, const
 		return true;
 	}
 	case LANG_FN_SPLINE: lang_spline_eval(f->spline, args[0], out); return true;
-	default: /* a pattern or pigment: its evaluator, once one is plugged in */
-		if (f->eval && f->eval(f->pattern, d3(args[0], args[1], args[2]), out))
-			return true;
-		break;
+	case LANG_FN_PATTERN: /* fnintern.cpp's f_pattern: Warp_EPoint, then Evaluate_TPat */
+		if (!f->pattern)
+			break;
+		out[0] = pattern_value(f->pattern, &f->pattern->nodes[f->pattern_root], d3(args[0], args[1], args[2]));
+		return true;
+	case LANG_FN_PIGMENT: { /* f_pigment: Compute_Pigment's rgbft */
+		float c[5];
+		pattern_eval(f->pattern, f->pattern_root, d3(args[0], args[1], args[2]), 0.0, c);
+		for (int k = 0; k < 5; k++)
+			out[k] = c[k];
+		return true;
+	}
 	}
 	*failed = f;
 	return false;
@@ -204,13 +214,10 @@ static double f_superellipsoid(const double *a)
 	double xy = pow(pow(fabs(X), 2 / e) + pow(fabs(Y), 2 / e), e / n);
 	return 1 - pow(xy + pow(fabs(Z), 2 / n), n * 0.5);
 }
-/* POV-Ray's Noise at the point, in [0, 1]: the lattice noise of the noise patterns (render's
- * pattern_noise, bozo), so f_noise3d and a bozo pigment agree. */
-static double f_noise3d(const double *a)
-{
-	double v = 0.5 + 0.5 * noise_perlin(d3(X, Y, Z));
-	return v < 0 ? 0 : v > 1 ? 1 : v;
-}
+/* POV-Ray's Noise at the point, in [0, 1] (portablenoise.cpp: its range-corrected generator's
+ * value clamped to [0, 1], mean about 0.5): the noise of the noise patterns (scene/pattern.h's
+ * pattern_noise, bozo's value), so f_noise3d, functions.inc's f_bozo and a bozo pigment agree. */
+static double f_noise3d(const double *a) { return pattern_noise(d3(X, Y, Z)); }
 static double f_th(const double *a) { return atan2(X, Z); }
 static double f_torus(const double *a)
 {
@@ -451,9 +458,14 @@ static int param_of(const compiler *c, const lang_token *t)
 	return -1;
 }
 
-/* The component a member name selects (.x .u .red 0, ... .transmit 4), or -1. */
+/* The component a member name selects (.x .u .red 0, ... .transmit 4, .gray .grey LANG_FN_GRAY,
+ * .hf LANG_FN_HF: fncode.cpp's compile_member), or -1. */
 static int component_of(const lang_token *t)
 {
+	if (token_is(t, "gray") || token_is(t, "grey"))
+		return LANG_FN_GRAY;
+	if (token_is(t, "hf"))
+		return LANG_FN_HF;
 	static const char *const names[][3] = {{"x", "u", "red"}, {"y", "v", "green"}, {"z", "blue", "blue"},
 					      {"t", "filter", "filter"}, {"transmit", "transmit", "transmit"}};
 	for (int i = 0; i < 5; i++)
@@ -531,7 +543,8 @@ static bool ccall(compiler *c, const lang_token *name, const lang_function *g)
 		lang_advance(c->p);
 		lang_token *m = lang_peek(c->p);
 		comp = component_of(m);
-		if (comp < 0 || comp >= g->n_out)
+		int needs = comp == LANG_FN_GRAY ? 3 : comp == LANG_FN_HF ? 2 : comp + 1;
+		if (comp < 0 || needs > g->n_out)
 			return lang_error_found(c->p, "expected a component of the %d of '%s' after '.'", g->n_out, fname);
 		lang_advance(c->p);
 	} else if (g->n_out > 1) {
@@ -751,24 +764,80 @@ static bool internal_body(parser *p, lang_function *f)
 	return lang_expect(p, LTK_RPAREN, "to close 'internal ('");
 }
 
-/* pattern { ... } or pigment { ... } in a function: the pattern evaluator's hook (func.h). Until a
- * pattern parser takes the block, its braces are matched and its contents dropped. */
+/* The program of tree, copied into the scene's arena (released with it); NULL after reporting. */
+static const pattern_prog *compile_tree(parser *p, const scene_pigment *tree, uint32_t *root)
+{
+	pattern_prog pp = {0}, *out = NULL;
+	if (pattern_compile(&pp, tree, NULL, NULL, root, p->d)) {
+		out = arena_zalloc(&p->sc->arena, 1, sizeof *out);
+		pattern_node *nodes = out ? arena_alloc(&p->sc->arena, pp.n_nodes, sizeof *nodes, 16) : NULL;
+		pattern_warp *warps = pp.n_warps ? arena_alloc(&p->sc->arena, pp.n_warps, sizeof *warps, 16) : NULL;
+		pattern_entry *entries = pp.n_entries ? arena_alloc(&p->sc->arena, pp.n_entries, sizeof *entries, 16) : NULL;
+		if (!nodes || (pp.n_warps && !warps) || (pp.n_entries && !entries)) {
+			lang_error(p, tree->loc, "out of memory");
+			out = NULL;
+		} else {
+			memcpy(nodes, pp.nodes, pp.n_nodes * sizeof *nodes);
+			if (pp.n_warps)
+				memcpy(warps, pp.warps, pp.n_warps * sizeof *warps);
+			if (pp.n_entries)
+				memcpy(entries, pp.entries, pp.n_entries * sizeof *entries);
+			*out = (pattern_prog){nodes, pp.n_nodes, warps, pp.n_warps, entries, pp.n_entries};
+		}
+	} else {
+		p->failed = true;
+	}
+	pattern_prog_free(&pp);
+	return out;
+}
+
+/* pattern = "pattern" "{" pattern_body "}"; pigment = "pigment" "{" ... "}" as anywhere else:
+ * the tree read by lang/pigment.c, compiled into the function's own pattern program
+ * (scene/pattern.h), which lang_fn_eval runs at the point. */
 static bool pattern_block(parser *p, lang_function *f, bool pigment)
 {
-	lang_token kw = *lang_advance(p);
 	f->kind = pigment ? LANG_FN_PIGMENT : LANG_FN_PATTERN;
 	f->n_params = 3;
 	f->n_out = pigment ? 5 : 1;
-	if (!lang_expect(p, LTK_LBRACE, pigment ? "after 'pigment'" : "after 'pattern'"))
-		return false;
-	for (int depth = 1; depth > 0;) {
-		lang_token *t = lang_peek(p);
-		if (t->kind == LTK_EOF)
-			return lang_expect_close(p, kw.loc, pigment ? "pigment" : "pattern");
-		depth += t->kind == LTK_LBRACE ? 1 : t->kind == LTK_RBRACE ? -1 : 0;
-		lang_advance(p);
+	const scene_pigment *tree;
+	if (pigment) {
+		value v;
+		bool handled;
+		if (!lang_declare_block(p, &v, &handled))
+			return false;
+		if (!(tree = lang_pigment_tree(p, v.mat)))
+			return false;
+		if (tree->kind == SCENE_PAT_PLAIN && !v.mat->pigment) { /* a colour's filter and transmit too */
+			scene_pigment *c = arena_zalloc(&p->sc->arena, 1, sizeof *c);
+			if (!c)
+				return lang_error(p, tree->loc, "out of memory");
+			*c = *tree;
+			c->color[3] = v.mat->filter, c->color[4] = v.mat->transmit;
+			tree = c;
+		}
+	} else {
+		lang_token kw = *lang_advance(p);
+		diag_loc open = lang_peek(p)->loc;
+		if (!lang_expect(p, LTK_LBRACE, "after 'pattern'"))
+			return false;
+		if (!lang_pigment_starts(p, false)) { /* functions.inc's f_mandel: an error only when called */
+			lang_token *t = lang_peek(p);
+			if (t->kind != LTK_UNSUPPORTED)
+				return lang_error_found(p, "expected a pattern (bozo, checker, gradient, ...) in 'pattern { }'");
+			f->unsupported = arena_strndup(&p->sc->arena, t->text, t->len);
+			for (int depth = 1; depth > 0;) {
+				t = lang_peek(p);
+				if (t->kind == LTK_EOF)
+					return lang_expect_close(p, kw.loc, "pattern");
+				depth += t->kind == LTK_LBRACE ? 1 : t->kind == LTK_RBRACE ? -1 : 0;
+				lang_advance(p);
+			}
+			return f->unsupported != NULL || lang_error(p, kw.loc, "out of memory");
+		}
+		if (!lang_pigment_rest(p, NULL, open, &tree))
+			return false;
 	}
-	return true;
+	return (f->pattern = compile_tree(p, tree, &f->pattern_root)) != NULL;
 }
 
 static bool spline_kind_of(lang_tok k, lang_spline_kind *kind)
@@ -907,6 +976,41 @@ static bool function_value(parser *p, const lang_token *self, value *out)
 	return true;
 }
 
+bool lang_fn_report(parser *p, diag_loc at, const lang_function *failed)
+{
+	if (failed->kind == LANG_FN_INTERNAL)
+		return lang_error(p, at, "'%s' (internal(%d)) is not supported by circe", internals[failed->internal].name,
+				  failed->internal);
+	return lang_error(p, at, "the pattern '%s' is not supported by circe (in the function '%s')",
+			  failed->unsupported ? failed->unsupported : "?", failed->name);
+}
+
+/* The function pattern's call of its function (scene_fn's eval). */
+static bool pattern_call(const void *ctx, const double xyz[3], double *out)
+{
+	const lang_function *failed;
+	return lang_fn_eval(ctx, xyz, out, &failed);
+}
+
+bool lang_func_pattern(parser *p, scene_fn *out)
+{
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	if (!function_value(p, NULL, &v))
+		return false;
+	const lang_function *f = v.fn;
+	if (f->n_params != 3 || f->n_out != 1)
+		return lang_error(p, at, "the function of a 'function' pattern must be a float function of x, y and z: this "
+					 "one takes %d parameter%s and gives %d value%s",
+				  f->n_params, f->n_params == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s");
+	double a[3] = {0, 0, 0}, r;
+	const lang_function *failed = NULL;
+	if (!lang_fn_eval(f, a, &r, &failed)) /* refused here, not per shading point */
+		return lang_fn_report(p, at, failed);
+	*out = (scene_fn){pattern_call, f, f->name};
+	return true;
+}
+
 bool lang_func_value(parser *p, const lang_token *name, value *out)
 {
 	if (lang_peek(p)->kind == LTK_KW_FUNCTION)
@@ -966,14 +1070,8 @@ static bool call_function(parser *p, const lang_token *name, const char *fname, 
 	if (n != f->n_params)
 		return lang_wrong_count(p, name->loc, fname, f->n_params, f->n_params, n);
 	const lang_function *failed = NULL;
-	if (!lang_fn_eval(f, a, r, &failed)) {
-		if (failed->kind == LANG_FN_INTERNAL)
-			return lang_error(p, name->loc, "'%s' (internal(%d)) is not supported by circe",
-					  internals[failed->internal].name, failed->internal);
-		return lang_error(p, name->loc, "'%s' is not supported by circe in a function (calling '%s', a function "
-						"of a %s)", failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name,
-				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern");
-	}
+	if (!lang_fn_eval(f, a, r, &failed))
+		return lang_fn_report(p, name->loc, failed);
 	for (int i = 0; i < f->n_out; i++)
 		if (!isfinite(r[i]))
 			return lang_error(p, name->loc, "'%s' gives %g at these arguments (a domain error or a division by zero)",

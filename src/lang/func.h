@@ -1,14 +1,16 @@
 /* func.h - POV-Ray's user-defined functions and splines: `function (params) { expression }`
  * compiled once into a flat postfix program run on a small stack, functions.inc's
  * `function { internal(N) }`, `function { transform {...} }` and `function { spline {...} }` (vector
- * valued), `function { pattern {...} }` / `{ pigment {...} }` (parsed; evaluated once a pattern
- * evaluator plugs into the hook below), and `spline { ... }` values evaluated as POV-Ray 3.7 does.
+ * valued), `function { pattern {...} }` / `{ pigment {...} }` (evaluated by scene/pattern.h's
+ * program, which src/scene holds so that the language and the renderer share it), and
+ * `spline { ... }` values evaluated as POV-Ray 3.7 does.
  * Internal to src/lang; the evaluator (lang_fn_eval, lang_spline_eval) needs no parser and
  * allocates nothing, so a renderer may call it per ray from many threads. */
 #ifndef CIRCE_LANG_FUNC_H
 #define CIRCE_LANG_FUNC_H
 
 #include "base/vec.h"
+#include "scene/pattern.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -18,6 +20,8 @@ enum {
 	LANG_FN_MAX_STACK = 64, /* stack slots one function body needs at most */
 	LANG_FN_MAX_OUT = 5, /* components of a vector-valued function's result */
 	LANG_FN_MAX_CALL_DEPTH = 64, /* functions calling functions: each level takes C stack */
+	LANG_FN_GRAY = 5, /* a call's member .gray (.grey): 0.297 red + 0.589 green + 0.114 blue */
+	LANG_FN_HF = 6, /* .hf: (red + green / 255) 0.996093 (MegaPOV's, which POV-Ray 3.7 keeps) */
 };
 
 typedef enum lang_fn_kind {
@@ -28,14 +32,6 @@ typedef enum lang_fn_kind {
 	LANG_FN_PATTERN, /* function { pattern {...} }: (x, y, z) -> the pattern's float */
 	LANG_FN_PIGMENT, /* function { pigment {...} }: (x, y, z) -> the pigment's colour */
 } lang_fn_kind;
-
-/* The pattern hook: `function { pattern {...} }` and `{ pigment {...} }` parse today (func.c's
- * pattern_block() matches the block's braces and drops its contents). A pattern evaluator plugs in
- * there: it parses the block, stores its compiled pattern in `pattern` (opaque to src/lang) and sets
- * `eval`, which gives the value at a point: out[0] the pattern's float in [0, 1] (LANG_FN_PATTERN)
- * or out[0..4] the colour's rgbft (LANG_FN_PIGMENT). While `eval` is NULL a call fails with
- * "'pattern' is not supported by circe in a function". */
-typedef bool (*lang_pattern_eval)(const void *pattern, dvec3 p, double *out);
 
 typedef struct lang_fn_op lang_fn_op; /* one instruction (func.c) */
 typedef struct lang_spline lang_spline;
@@ -55,13 +51,17 @@ typedef struct lang_function {
 	double (*impl)(const double *args);
 	const xform *xf; /* LANG_FN_TRANSFORM */
 	const lang_spline *spline; /* LANG_FN_SPLINE */
-	const void *pattern; /* LANG_FN_PATTERN, LANG_FN_PIGMENT: see lang_pattern_eval */
-	lang_pattern_eval eval;
+	/* LANG_FN_PATTERN: the pattern's value at the point after its warps and wave (POV-Ray's
+	 * f_pattern); LANG_FN_PIGMENT: the pigment's rgbft (f_pigment). The program is the
+	 * function's own, in the scene's arena. */
+	const pattern_prog *pattern;
+	uint32_t pattern_root;
+	const char *unsupported; /* LANG_FN_PATTERN: the word of a pattern circe lacks (pattern NULL) */
 } lang_function;
 
 /* Evaluates f at args (f->n_params values): out[0..f->n_out-1]. False when f, or a function it
- * calls, cannot be evaluated by circe (an internal(N) not implemented, a pattern without an
- * evaluator): *failed is that function. Results are IEEE doubles (a NaN is the caller's to refuse). */
+ * calls, cannot be evaluated by circe (an internal(N) not implemented, a pattern circe lacks):
+ * *failed is that function. Results are IEEE doubles (a NaN is the caller's to refuse). */
 bool lang_fn_eval(const lang_function *f, const double *args, double *out, const lang_function **failed);
 
 /* A POV-Ray spline: entries sorted by key, each a vector of `terms` components (2..5). */

@@ -8,6 +8,7 @@
 #include "lang/lang.h"
 #include "lang/lex.h"
 #include "scene/scene.h"
+#include "scene/pigment.h"
 
 #include <stdbool.h>
 #include <string.h>
@@ -275,6 +276,13 @@ void lang_forget(parser *p, const char *name, size_t len);
 bool lang_func_value(parser *p, const lang_token *name, value *out);
 /* A call NAME "(" args ")" of fv, a VAL_FUNCTION or VAL_SPLINE (the lookahead is '('). */
 bool lang_func_call(parser *p, const lang_token *name, const value *fv, value *out);
+/* The function pattern's `function { expression }` (the lookahead is `function`): a float
+ * function of x, y and z circe can evaluate, as the IR's hook (scene/pigment.h's scene_fn). */
+bool lang_func_pattern(parser *p, scene_fn *out);
+struct lang_function;
+/* Why `failed` (where lang_fn_eval gave up) cannot be evaluated by circe, reported at `at`: an
+ * internal(N) or a pattern circe lacks. False. */
+bool lang_fn_report(parser *p, diag_loc at, const struct lang_function *failed);
 
 /* ---- data files (datafile.c) ---- */
 bool lang_fopen(parser *p, diag_loc at); /* after '#fopen' */

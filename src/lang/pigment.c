@@ -450,13 +450,14 @@ static bool image_map(parser *p, pig_build *b)
  * object, which holds them), over a declared pigment or normal. */
 static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 {
-	diag_loc kw = lang_advance(p)->loc;
-	if (k == SCENE_PAT_FUNCTION)
-		return lang_error(p, kw, "'function' as a pattern is not supported by circe yet");
+	diag_loc kw = lang_peek(p)->loc;
 	scene_pigment d = scene_pigment_defaults(k, kw);
 	d.uv_mapping = b->pg.uv_mapping;
 	b->pg = d;
 	b->n_warps = 0;
+	if (k == SCENE_PAT_FUNCTION) /* function { expression }: lang/func.c compiles it */
+		return lang_func_pattern(p, &b->pg.fn);
+	lang_advance(p);
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
 	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */

@@ -532,16 +532,8 @@ static bool float_function(parser *p, const char *what, const lang_function **ou
 				  what, f->name, f->n_params, f->n_params == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s");
 	double a[3] = {0, 0, 0}, r;
 	const lang_function *failed = NULL;
-	if (!lang_fn_eval(f, a, &r, &failed)) { /* what circe cannot evaluate is refused here, not per point */
-		if (failed->kind == LANG_FN_INTERNAL) {
-			int np;
-			const char *nm = lang_fn_internal_name(failed->internal, &np);
-			return lang_error(p, t.loc, "'%s' (internal(%d)) is not supported by circe", nm ? nm : "internal",
-					  failed->internal);
-		}
-		return lang_error(p, t.loc, "'%s' is not supported by circe in a function (calling '%s')",
-				  failed->kind == LANG_FN_PIGMENT ? "pigment" : "pattern", failed->name);
-	}
+	if (!lang_fn_eval(f, a, &r, &failed)) /* what circe cannot evaluate is refused here, not per point */
+		return lang_fn_report(p, t.loc, failed);
 	*out = f;
 	return true;
 }

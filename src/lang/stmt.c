@@ -413,7 +413,7 @@ static scene_map_entry layer_entry(const scene_material *m, uint32_t index)
 }
 
 /* POV-Ray's layered texture: top over below (a texture written after a texture). The pigments
- * composite by the upper layers' filter and transmit (render/pattern.c's PATTERN_LAYERS); the
+ * composite by the upper layers' filter and transmit (scene/pattern.c's PATTERN_LAYERS); the
  * finish is the top layer's (POV-Ray lights each layer with its own finish: circe keeps one set
  * of lobes, doc/language.md "Layered textures"). The layers' transparency shows the layers
  * below, not what lies behind the object. */

@@ -18,7 +18,7 @@
 #include "render/camera.h"
 #include "render/integrator.h"
 #include "render/light.h"
-#include "render/pattern.h"
+#include "scene/pattern.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>

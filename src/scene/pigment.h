@@ -4,7 +4,7 @@
  * its warps and transforms in the order written. Colours keep POV-Ray's five channels (red,
  * green, blue, filter, transmit). The tree lives in the scene's arena and is shared, never
  * changed once made: a pigment moved or modified later is a copy. src/build compiles it into
- * render/pattern.h's flat program. */
+ * scene/pattern.h's flat program. */
 #ifndef CIRCE_SCENE_PIGMENT_H
 #define CIRCE_SCENE_PIGMENT_H
 
@@ -15,7 +15,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-/* X(enum suffix, POV-Ray's word): in the order of render/pattern.h's pattern_kind. */
+/* X(enum suffix, POV-Ray's word): in the order of scene/pattern.h's pattern_kind. */
 #define SCENE_PATTERNS(X)                                                                           \
 	X(PLAIN, "color") X(IMAGE, "image_map") X(CHECKER, "checker") X(HEXAGON, "hexagon")         \
 	X(BRICK, "brick") X(GRADIENT, "gradient") X(RADIAL, "radial") X(ONION, "onion")             \
@@ -34,7 +34,7 @@ typedef enum scene_pattern_kind {
 	SCENE_PAT_COUNT
 } scene_pattern_kind;
 
-/* In the order of render/pattern.h's pattern_wave. */
+/* In the order of scene/pattern.h's pattern_wave. */
 typedef enum scene_wave {
 	SCENE_WAVE_RAMP, SCENE_WAVE_TRIANGLE, SCENE_WAVE_SINE, SCENE_WAVE_SCALLOP, SCENE_WAVE_CUBIC, SCENE_WAVE_POLY
 } scene_wave;
@@ -64,6 +64,16 @@ typedef struct scene_warp {
 } scene_warp;
 
 struct scene_pigment;
+
+/* A float function of (x, y, z) the language compiled (the `function { }` pattern), called
+ * through the language's evaluator: the IR knows no syntax. eval NULL: none. eval is pure and
+ * allocates nothing, so any number of threads call it; false when it cannot evaluate. */
+typedef bool (*scene_fn_eval)(const void *ctx, const double xyz[3], double *out);
+typedef struct scene_fn {
+	scene_fn_eval eval;
+	const void *ctx;
+	const char *name; /* for the dump */
+} scene_fn;
 
 /* Entries in one colour or pigment map (POV-Ray's limit); pigments nested in maps and lists. */
 enum { SCENE_PIGMENT_MAX_ENTRIES = 256, SCENE_PIGMENT_MAX_DEPTH = 16 };
@@ -100,6 +110,7 @@ typedef struct scene_pigment {
 	bool is_normal;	  /* a normal { }: the pattern perturbs the shading normal */
 	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */
+	scene_fn fn;	  /* FUNCTION: its function */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

@@ -1,2 +1,2 @@
-// A user function as a pattern waits for circe's functions.
-sphere { 0, 1 pigment { function { x } } }
+// The function pattern takes a float function of x, y and z.
+sphere { 0, 1 pigment { function(u, v) { u + v } } }

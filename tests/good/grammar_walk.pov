@@ -130,7 +130,7 @@ sphere { 0, 1 transform Turn transform { Turn translate y } texture { pigment { 
 #declare Fa = function(a, b) { a < b ? a*b : sqr(a) + sin(b) }
 #declare Fb = function { x + Fa(y, z) }
 #declare Fc = function { internal(61) }
-#declare Fd = function { pattern { agate } }
+#declare Fd = function { pattern { agate } } #declare Ff = function { pigment { function { Fd(x, y, z) * 2 } color_map { Cm } } } #declare Fg = Ff(0.5, 0.5, 0.5).gray + Fd(1, 2, 3);
 #declare Fe = function { transform { Turn } }
 #declare Fv = Fb(1, 2, 3) + Fc(1, 1, 1, 0.5) + Fe(1, 0, 0).x;
 // rule: spline, spline_kind

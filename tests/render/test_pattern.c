@@ -3,7 +3,7 @@
  * point), the wave functions, the colour map's interpolation, block lists, pigment maps, warps,
  * image_map's planar/spherical/cylindrical mappings, and the noise's and turbulence's range. */
 #include "check.h"
-#include "render/pattern.h"
+#include "scene/pattern.h"
 
 #include <string.h>
 

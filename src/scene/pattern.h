@@ -2,19 +2,24 @@
  * nodes (a plain colour, an image_map or bump_map, or a pattern with its wave, colour map or
  * pigment map, or a normal's amount), their warps
  * (transforms, turbulence, repeat, black_hole) in the order they are applied to a point, and
- * the map entries. src/build compiles the IR's pigment trees (scene/pigment.h) into one program
- * per world; render/world.c evaluates a material's root node at each hit and at circle
- * tracing's entry points. Read-only once built: any number of threads evaluate it.
+ * the map entries. pattern_compile turns the IR's pigment trees (scene/pigment.h) into a
+ * program: src/build one per world, which render/world.c evaluates at each hit and at circle
+ * tracing's entry points; src/lang one per `function { pattern {...} }` or `{ pigment {...} }`.
+ * It lives in src/scene, beside the trees, because both the language and the renderer evaluate
+ * it and the language may not call the renderer (DESIGN.md: data flows one way). Pure: no
+ * render state, read-only once built, any number of threads evaluate it.
  *
  * Every pattern follows the definition of POV-Ray 3.7's source (source/core/material/pattern.cpp,
  * github.com/POV-Ray/povray), cited at each; the noise is Perlin's improved noise (Perlin 2002,
  * "Improving Noise", SIGGRAPH), scaled to POV-Ray's range [0, 1]: noise-based patterns (bozo,
  * granite, turbulence, ...) have POV-Ray's look and range, not its exact values. */
-#ifndef CIRCE_RENDER_PATTERN_H
-#define CIRCE_RENDER_PATTERN_H
+#ifndef CIRCE_SCENE_PATTERN_H
+#define CIRCE_SCENE_PATTERN_H
 
+#include "base/diag.h"
 #include "base/vec.h"
 #include "io/image.h"
+#include "scene/pigment.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -32,7 +37,7 @@ typedef enum pattern_kind {
 	PATTERN_SPIRAL2, PATTERN_QUILTED, PATTERN_PLANAR, PATTERN_BOXED, PATTERN_CYLINDRICAL,
 	PATTERN_SPHERICAL,
 	PATTERN_PIGMENT_PATTERN, /* the grey of a pigment (its node: pattern_node.child) */
-	PATTERN_FUNCTION, /* a user function's hook: evaluates to 0 until functions exist */
+	PATTERN_FUNCTION, /* a user function of (x, y, z) (pattern_node.fn) */
 	PATTERN_LAYERS, /* a layered texture's pigments (its entries, bottom first), composited by the
 			 * upper layers' filter and transmit */
 	PATTERN_KIND_COUNT
@@ -95,6 +100,7 @@ typedef struct pattern_node {
 	pattern_turb turb;     /* its classic turbulence (amount 0: none) */
 	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
 	int32_t child;	   /* PATTERN_PIGMENT_PATTERN: its pigment's node (-1: none, value 0) */
+	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0) */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;
@@ -107,6 +113,17 @@ typedef struct pattern_prog {
 	pattern_entry *entries;
 	size_t n_entries;
 } pattern_prog;
+
+/* An image_map's or bump_map's file loaded for pattern_compile (pg->image, pg->is_normal: a
+ * bump_map's heights, read as stored): the image, alive as long as the program, or NULL after
+ * reporting why. */
+typedef const image *(*pattern_image_loader)(void *ctx, const scene_pigment *pg, diag *d);
+/* pg's tree appended to *pp (scene/pattern_compile.c); *node receives its root. load NULL refuses
+ * an image_map with a message (a function's pigment: src/lang loads no images). False after
+ * reporting. */
+bool pattern_compile(pattern_prog *pp, const scene_pigment *pg, pattern_image_loader load, void *ctx, uint32_t *node,
+		     diag *d);
+void pattern_prog_free(pattern_prog *pp);
 
 /* The pigment of node `node` at point p (the pigment's space before its own warps): red, green,
  * blue, filter, transmit, each finite. tol: how far p may be from the true point (a float hit's

@@ -2,7 +2,7 @@
  * Each pattern cites the function of POV-Ray's source (source/core/material/pattern.cpp,
  * github.com/POV-Ray/povray) whose definition it implements; the code is written from those
  * definitions, not copied. */
-#include "render/pattern.h"
+#include "scene/pattern.h"
 
 #include "base/noise.h"
 
@@ -344,6 +344,12 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, do
 	case PATTERN_WRINKLES:
 	case PATTERN_GRANITE:
 	case PATTERN_AGATE: return raw_noisy(n, p);
+	case PATTERN_FUNCTION: { /* FunctionPattern::EvaluateRaw: the function's value, mod 1 above 1 */
+		double xyz[3] = {p.x, p.y, p.z}, v = 0.0;
+		if (!n->fn.eval || !n->fn.eval(n->fn.ctx, xyz, &v) || !isfinite(v))
+			return 0.0;
+		return v > 1.0 ? fmod(v, 1.0) : v;
+	}
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)

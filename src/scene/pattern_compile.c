@@ -1,0 +1,145 @@
+/* pattern_compile.c - the IR's pigment trees (scene/pigment.h) compiled into a flat pattern
+ * program (scene/pattern.h): nodes with their warps in the order they are applied to a point
+ * (the reverse of the order written: POV-Ray's Warp_EPoint walks its list backwards), map
+ * entries by node index, the default colour maps and block colours filled, images through the
+ * caller's loader. src/build compiles a world's program with it, src/lang a pattern or pigment
+ * function's own. */
+#include "scene/pattern.h"
+
+#include "base/mem.h"
+
+#include <string.h>
+
+_Static_assert((int)SCENE_PAT_COUNT == (int)PATTERN_KIND_COUNT, "scene/pigment.h and scene/pattern.h kinds agree");
+_Static_assert((int)SCENE_WAVE_POLY == (int)WAVE_POLY, "the wave orders agree");
+_Static_assert((int)SCENE_PIGMENT_MAX_ENTRIES == (int)PATTERN_MAX_ENTRIES, "the entry limits agree");
+
+typedef struct compiler {
+	pattern_prog *pp;
+	pattern_image_loader load;
+	void *ctx;
+	diag *d;
+} compiler;
+
+/* Grows *items (n of them, each size bytes) by k; the first new index in *at. */
+static bool grow(void **items, size_t *n, size_t k, size_t size, uint32_t *at)
+{
+	if (*n + k > UINT32_MAX)
+		return false;
+	void *r = mem_realloc(*items, *n + k ? *n + k : 1, size);
+	if (!r)
+		return false;
+	*items = r;
+	memset((char *)r + *n * size, 0, k * size);
+	*at = (uint32_t)*n;
+	*n += k;
+	return true;
+}
+
+static pattern_warp warp_of(const scene_warp *s)
+{
+	pattern_warp w = {.kind = (pattern_warp_kind)s->kind, .xf = s->xf, .axis = s->axis, .width = s->width,
+			  .offset = s->offset, .flip = s->flip, .center = s->center, .radius = s->radius,
+			  .strength = s->strength, .falloff = s->falloff, .inverse = s->inverse, .repeat = s->repeat};
+	w.turb = (pattern_turb){s->turb.amount, s->turb.octaves, s->turb.omega, s->turb.lambda};
+	return w;
+}
+
+/* The node's own parameters (no warps, entries or image). */
+static pattern_node node_of(const scene_pigment *pg)
+{
+	pattern_node n = pattern_node_default((pattern_kind)pg->kind);
+	memcpy(n.color, pg->color, sizeof n.color);
+	n.map_type = pg->map_type, n.once = pg->once, n.interpolate = pg->interpolate;
+	n.filter_all = pg->filter_all, n.transmit_all = pg->transmit_all;
+	n.vector = pg->vector, n.mortar = pg->mortar, n.control0 = pg->control0, n.control1 = pg->control1;
+	n.arms = pg->arms, n.agate_turb = pg->agate_turb, n.solid = pg->solid;
+	n.bump_amount = pg->bump_amount, n.accuracy = pg->accuracy;
+	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;
+	n.turb = (pattern_turb){pg->turb.amount, pg->turb.octaves, pg->turb.omega, pg->turb.lambda};
+	n.fn = pg->fn;
+	return n;
+}
+
+static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *out);
+
+/* The entries of node k: the written ones (a pigment's compiled in turn), the block colours
+ * not written and a pattern without a map taking POV-Ray's defaults. */
+static bool compile_entries(compiler *c, const scene_pigment *pg, uint32_t k, int depth)
+{
+	pattern_prog *pp = c->pp;
+	pattern_entry defaults[6];
+	int n_def = pattern_default_map((pattern_kind)pg->kind, defaults);
+	uint32_t n = pg->entries ? pg->n_entries : (uint32_t)n_def;
+	if (pg->block_list && n < (uint32_t)scene_pattern_blocks(pg->kind))
+		n = (uint32_t)scene_pattern_blocks(pg->kind);
+	uint32_t e0;
+	if (!grow((void **)&pp->entries, &pp->n_entries, n, sizeof *pp->entries, &e0)) {
+		diag_error(c->d, pg->loc, "out of memory");
+		return false;
+	}
+	pp->nodes[k].entry0 = e0, pp->nodes[k].n_entries = n;
+	for (uint32_t i = 0; i < n; i++) {
+		pattern_entry e = i < (uint32_t)n_def ? defaults[i] : (pattern_entry){.node = -1};
+		if (pg->entries && i < pg->n_entries) {
+			const scene_map_entry *s = &pg->entries[i];
+			e = (pattern_entry){.value = s->value, .node = -1};
+			memcpy(e.color, s->color, sizeof e.color);
+			uint32_t child;
+			if (s->pigment) {
+				if (!compile(c, s->pigment, depth + 1, &child))
+					return false;
+				e.node = (int32_t)child;
+			}
+		}
+		c->pp->entries[e0 + i] = e;
+	}
+	return true;
+}
+
+static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *out)
+{
+	pattern_prog *pp = c->pp;
+	uint32_t k, w0 = 0;
+	if (depth > PATTERN_MAX_DEPTH || !grow((void **)&pp->nodes, &pp->n_nodes, 1, sizeof *pp->nodes, &k) ||
+	    (pg->n_warps && !grow((void **)&pp->warps, &pp->n_warps, pg->n_warps, sizeof *pp->warps, &w0))) {
+		diag_error(c->d, pg->loc, depth > PATTERN_MAX_DEPTH ? "pigments nested too deep" : "out of memory");
+		return false;
+	}
+	pattern_node n = node_of(pg);
+	n.warp0 = w0, n.n_warps = pg->n_warps;
+	for (uint32_t i = 0; i < pg->n_warps; i++)
+		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
+	if (pg->kind == SCENE_PAT_IMAGE) {
+		if (!c->load) {
+			diag_error(c->d, pg->loc, "an image_map in a function's pigment is not supported by circe");
+			return false;
+		}
+		if (!(n.img = c->load(c->ctx, pg, c->d)))
+			return false;
+	}
+	if (pg->kind == SCENE_PAT_PIGMENT_PATTERN && pg->child) {
+		uint32_t child;
+		if (!compile(c, pg->child, depth + 1, &child))
+			return false;
+		n.child = (int32_t)child;
+	}
+	pp->nodes[k] = n;
+	*out = k;
+	if (pg->kind == SCENE_PAT_PLAIN || pg->kind == SCENE_PAT_IMAGE)
+		return true;
+	return compile_entries(c, pg, k, depth);
+}
+
+bool pattern_compile(pattern_prog *pp, const scene_pigment *pg, pattern_image_loader load, void *ctx, uint32_t *node,
+		     diag *d)
+{
+	compiler c = {.pp = pp, .load = load, .ctx = ctx, .d = d};
+	return compile(&c, pg, 0, node);
+}
+
+void pattern_prog_free(pattern_prog *pg)
+{
+	mem_free(pg->nodes), mem_free(pg->warps), mem_free(pg->entries);
+	*pg = (pattern_prog){0};
+}

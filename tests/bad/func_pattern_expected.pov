@@ -1,0 +1,2 @@
+// pattern { } holds a pattern, not a colour.
+#declare P = function { pattern { rgb 1 } }
