@@ -760,7 +760,7 @@ static bool internal_body(parser *p, lang_function *f)
 	f->kind = LANG_FN_INTERNAL;
 	f->internal = (int)n;
 	f->n_params = np;
-	f->impl = internals[n].impl;
+	f->impl = internals[n].impl ? internals[n].impl : lang_fn_internal_more((int)n);
 	return lang_expect(p, LTK_RPAREN, "to close 'internal ('");
 }
 

@@ -101,5 +101,7 @@ double lang_fn_float2(int tok, double x, double y);
 /* The internal functions of functions.inc: the name POV-Ray gives internal(n) and its parameter
  * count; NULL past the table. */
 const char *lang_fn_internal_name(int n, int *n_params);
+/* The internal functions of lang/internals.c by number (NULL for one it does not have). */
+double (*lang_fn_internal_more(int n))(const double *args);
 
 #endif

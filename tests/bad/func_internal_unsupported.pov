@@ -1,2 +1,2 @@
-#declare f_pillow = function { internal(48) }
-#declare X = f_pillow(1, 2, 3, 1);
+#declare f_pattern = function { internal(77) }
+#declare X = f_pattern(1, 2, 3);

@@ -1,2 +1,2 @@
-#declare f_pillow = function { internal(48) }
-isosurface { function { f_pillow(x, y, z, 1) - 0.5 } contained_by { sphere { 0, 1 } } }
+#declare f_pattern = function { internal(77) }
+isosurface { function { f_pattern(x, y, z) - 0.5 } contained_by { sphere { 0, 1 } } }

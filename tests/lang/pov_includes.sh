@@ -1,7 +1,9 @@
 #!/bin/sh
 # pov_includes: POV-Ray 3.7's colors.inc (each colour it declares printed), strings.inc, arrays.inc,
 # consts.inc and rand.inc parse and their macros work: tests/lang/pov_includes_scene.pov's #debug output
-# is exactly pov_includes_scene.stderr (povray 3.7.0 printed the same). Skips (77) without
+# is exactly pov_includes_scene.stderr (povray 3.7.0 printed the same); so are functions.inc's,
+# math.inc's and transforms.inc's functions (pov_functions_scene) and every closed-form internal
+# function of functions.inc at points taking each branch (pov_internals_scene). Skips (77) without
 # povray-includes; POV_INCLUDE names another include folder.
 set -u
 : "${CIRCE:?set CIRCE to the circe binary}" "${srcdir:?set srcdir to the source tree}"
@@ -19,3 +21,8 @@ echo "pov_includes: $(grep -c ' color rgbft ' "$tmp/err") colours of colors.inc,
 cmp -s "$tmp/err" "$srcdir/tests/lang/pov_functions_scene.stderr" ||
 	{ echo "FAIL: functions output differs (expected, then got):"; diff "$srcdir/tests/lang/pov_functions_scene.stderr" "$tmp/err" | head -40; exit 1; }
 echo "pov_includes: functions.inc, math.inc and transforms.inc functions as povray 3.7.0 computes them"
+"$CIRCE" check -I "$inc" "$srcdir/tests/lang/pov_internals_scene.pov" >"$tmp/out" 2>"$tmp/err" ||
+	{ echo "FAIL: pov_internals_scene.pov does not parse"; cat "$tmp/err"; exit 1; }
+cmp -s "$tmp/err" "$srcdir/tests/lang/pov_internals_scene.stderr" ||
+	{ echo "FAIL: internal functions differ from povray 3.7.0's (expected, then got):"; diff "$srcdir/tests/lang/pov_internals_scene.stderr" "$tmp/err" | head -40; exit 1; }
+echo "pov_includes: $(wc -l <"$tmp/err") values of functions.inc's internal functions as povray 3.7.0 computes them"

@@ -4,7 +4,8 @@
  *   run by pattern_eval) at random points, for every pattern kind with warps, turbulence and waves;
  * - pattern functions at points where POV-Ray's definitions give closed forms (gradient, onion,
  *   leopard, spherical, checker), and f_noise3d equal to the bozo pattern (functions.inc's
- *   f_bozo is f_noise3d: POV-Ray's Noise() is both), in [0, 1] with mean 0.5;
+ *   f_bozo is f_noise3d: POV-Ray's Noise() is both), in [0, 1] with mean 0.5; the noise-based
+ *   internal functions (f_ridged_mf, f_ridge, f_hetero_mf) against their definitions over it;
  * - `function { pigment { ... } }`: each of the five components, .gray, a declared pigment;
  * - `pigment { function { expression } }`: the value the function gives, above 1 taken mod 1
  *   and below 0 wrapped (POV-Ray's FunctionPattern and ramp wave), through the colour map; as
@@ -240,6 +241,54 @@ static void check_noise(void)
 	CHECK(fabs(sum / N - 0.5) < 0.03, "f_noise3d's mean %g", sum / N);
 }
 
+/* The noise-based internal functions against their definitions (fnintern.cpp) written over
+ * f_noise3d, circe's noise: f_noise_generator is the noise for any generator; f_ridged_mf of two
+ * octaves, f_ridge and f_hetero_mf of one and a half. */
+static void check_noise_fractals(void)
+{
+	enum { N = 12 };
+	static double pts[N][3];
+	char *text = NULL;
+	size_t tl = 0;
+	FILE *f = open_memstream(&text, &tl);
+	fprintf(f, "#include \"functions.inc\"\n");
+	for (int k = 0; k < N; k++) {
+		for (int j = 0; j < 3; j++)
+			pts[k][j] = uniform(-5, 5);
+		double x = pts[k][0], y = pts[k][1], z = pts[k][2];
+		fprintf(f, DBG("f_noise3d(%.17g, %.17g, %.17g)") DBG("f_noise3d(%.17g, %.17g, %.17g)")
+			DBG("f_noise3d(%.17g, %.17g, %.17g)") DBG("f_noise_generator(%.17g, %.17g, %.17g, 3)")
+			DBG("f_ridged_mf(%.17g, %.17g, %.17g, 0.7, 2, 2, 1.1, 1.5, 2)")
+			DBG("f_ridge(%.17g, %.17g, %.17g, 2, 1.5, 0.5, 0.3, 0.4, 2)")
+			DBG("f_hetero_mf(%.17g, %.17g, %.17g, 0.7, 2, 1.5, 0.2, 1, 2)"),
+			x, y, z, 2 * x, 2 * y, 2 * z, 4 * x, 4 * y, 4 * z, x, y, z, x, y, z, x, y, z, x, y, z);
+	}
+	fclose(f);
+	static double v[7 * N];
+	int n = values(text, v, 7 * N);
+	free(text);
+	CHECK(n == 7 * N, "%d values", n);
+	for (int k = 0; k + 7 <= n; k += 7) {
+		double n1 = v[k], n2 = v[k + 1], n4 = v[k + 2];
+		CHECK_NEAR(v[k + 3], n1, 1e-15);
+		/* ridged: s1 = (1.1 - |2 n - 1|)^2; weight clamp(1.5 s1); s2 = (1.1 - |2 n2 - 1|)^2 weight;
+		 * result s1 + s2 2^-0.7 */
+		double s1 = pow(1.1 - fabs(2 * n1 - 1), 2), w = fmin(1, fmax(0, s1 * 1.5));
+		double s2 = pow(1.1 - fabs(2 * n2 - 1), 2) * w;
+		CHECK_NEAR(v[k + 4], s1 + s2 * pow(2, -0.7), 1e-12);
+		/* ridge: lambda 2, octaves 1.5, omega 0.5, offset 0.3, ridge 0.4: rscale 1/0.6, scale 1/0.7;
+		 * one octave and half of the next (weight 0.5 * 0.5), normalised by 1 + 0.25 */
+		double r1 = fabs(n1 - 0.4) / 0.6 - 0.3, r2 = fabs(n2 - 0.4) / 0.6 - 0.3;
+		CHECK_NEAR(v[k + 5], (r1 + 0.5 * r2 * 0.5) / 0.7 / 1.25, 1e-12);
+		/* hetero: H 0.7, lacunarity 2, octaves 1.5, offset 0.2, power 1: signal 2 n - 1 + 0.2;
+		 * inc (2 n2 - 1 + 0.2) 2^-0.7 signal; then half of (2 n4 - 1 + 0.2) 2^-1.4 signal */
+		double sg = 2 * n1 - 1 + 0.2, e = pow(2, -0.7);
+		sg += (2 * n2 - 1 + 0.2) * e * sg;
+		sg += 0.5 * (2 * n4 - 1 + 0.2) * e * e * sg;
+		CHECK_NEAR(v[k + 6], sg, 1e-12);
+	}
+}
+
 /* Pigment functions: the five components, .gray, a declared pigment moved. */
 static void check_pigments(void)
 {
@@ -337,6 +386,7 @@ int main(void)
 	if (have_includes) { /* functions.inc itself: skipped without povray-includes */
 		check_closed_forms();
 		check_noise();
+		check_noise_fractals();
 	} else {
 		fprintf(stderr, "test_func_pattern: no functions.inc: its pattern functions not checked\n");
 	}
