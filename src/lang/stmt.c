@@ -2407,7 +2407,7 @@ static const struct ignored_setting {
 } ignored_settings[] = {
 	{"radiosity", IGNORED_BLOCK, "circe always computes global illumination"},
 	{"photons", IGNORED_BLOCK, "circe always computes global illumination, caustics included"},
-	{"noise_generator", IGNORED_FLOAT, "circe has no noise patterns"},
+	{"noise_generator", IGNORED_FLOAT, "circe has one noise, Perlin's improved noise in POV-Ray's range"},
 	{"number_of_waves", IGNORED_FLOAT, "circe has no wave patterns"},
 	{"charset", IGNORED_CHARSET, "circe reads strings as bytes"},
 	{"hf_gray_16", IGNORED_OPT_BOOL, "circe's output format is chosen on its command line"},
