@@ -997,6 +997,20 @@ static bool fn_dimensions(parser *p, const args *a, value *out)
 	return true;
 }
 
+/* vturbulence(Lambda, Omega, Octaves, A): POV-Ray's DTurbulence at A, the vector turbulence a
+ * turbulence warp moves points by (scene/pattern.h's pattern_dturbulence: circe's noise, so
+ * POV-Ray's size and smoothness, not its values); octaves limited to 1..10 as POV-Ray's parser does. */
+static bool fn_vturbulence(parser *p, const args *a, value *out)
+{
+	(void)p;
+	double oct = fmax(1.0, fmin(10.0, trunc(arg_f(a, 2))));
+	pattern_turb t = {.amount = d3(1, 1, 1), .octaves = (int)oct, .omega = arg_f(a, 1), .lambda = arg_f(a, 0)};
+	set_vec3(out, pattern_dturbulence(arg_v(a, 3), &t));
+	return true;
+}
+/* Not a keyword of circe's table (it lexes as a POV-Ray word circe lacks): found by spelling. */
+static const builtin vturbulence_builtin = {LTK_UNSUPPORTED, "fffv", fn_vturbulence};
+
 static const builtin builtins[] = {
 	{LTK_KW_SIN, "f", fn_float1},	   {LTK_KW_COS, "f", fn_float1},	  {LTK_KW_TAN, "f", fn_float1},
 	{LTK_KW_ASIN, "f", fn_float1},	   {LTK_KW_ACOS, "f", fn_float1},	  {LTK_KW_ATAN, "f", fn_float1},
@@ -1239,6 +1253,8 @@ bool lang_primary(parser *p, value *out)
 		if (lang_colour_word(t->kind))
 			return colour_value(p, out);
 		const builtin *b = builtin_of(t->kind);
+		if (!b && t->kind == LTK_UNSUPPORTED && lang_token_is(t, "vturbulence"))
+			b = &vturbulence_builtin;
 		if (b)
 			return call(p, b, out);
 		return lang_error_found(p, "expected an expression");

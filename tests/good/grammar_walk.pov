@@ -7,7 +7,7 @@
 // rule: declare, identifier, expression, logical, comparison, additive, term, unary, primary, float
 #declare A = -(1 + 2) * 3 / 3 + !0 - (1 < 2 & 2 <= 2 | 1 = 1 & 1 != 2 & 2 >= 1 & 2 > 1) + ("a" < "b" ? 1 : 0);
 // rule: vector_literal, vector, call, function, string, colour
-#declare V = <vlength(<3, 4, 0>), sin(0), clock>;
+#declare V = <vlength(<3, 4, 0>), sin(0), clock>; #declare Vt = vturbulence(2, 0.5, 6, V);
 #declare S = "tex.png";
 #declare C = color rgb <1, 0.5, 0.25>;
 // rule: deprecation

@@ -9,7 +9,8 @@
  * - `function { pigment { ... } }`: each of the five components, .gray, a declared pigment;
  * - `pigment { function { expression } }`: the value the function gives, above 1 taken mod 1
  *   and below 0 wrapped (POV-Ray's FunctionPattern and ramp wave), through the colour map; as
- *   a normal, the slope perturbation POV-Ray's Perturb_Normal gives a linear function. */
+ *   a normal, the slope perturbation POV-Ray's Perturb_Normal gives a linear function;
+ * - vturbulence() is the turbulence warp's vector. */
 #include "base/mem.h"
 #include "check.h"
 #include "lang/lang.h"
@@ -289,6 +290,31 @@ static void check_noise_fractals(void)
 	}
 }
 
+/* vturbulence(Lambda, Omega, Octaves, A) is the turbulence warp's vector (pattern_dturbulence),
+ * its octaves limited to 1..10 as POV-Ray's parser limits them. */
+static void check_vturbulence(void)
+{
+	double v[9];
+	int n = values(DBG("vturbulence(2, 0.5, 6, <0.3, 0.4, 0.5>).x") DBG("vturbulence(2, 0.5, 6, <0.3, 0.4, 0.5>).y")
+			       DBG("vturbulence(2.5, 0.6, 3, <-1, 2, 7>).z") DBG("vturbulence(2, 0.5, 0, 1).x")
+				       DBG("vturbulence(2, 0.5, 25, 1).x"),
+		       v, 9);
+	CHECK(n == 5, "%d values", n);
+	if (n != 5)
+		return;
+	pattern_turb t = {.amount = d3(1, 1, 1), .octaves = 6, .omega = 0.5, .lambda = 2};
+	dvec3 r = pattern_dturbulence(d3(0.3, 0.4, 0.5), &t);
+	CHECK_NEAR(v[0], r.x, 1e-12);
+	CHECK_NEAR(v[1], r.y, 1e-12);
+	t = (pattern_turb){.amount = d3(1, 1, 1), .octaves = 3, .omega = 0.6, .lambda = 2.5};
+	CHECK_NEAR(v[2], pattern_dturbulence(d3(-1, 2, 7), &t).z, 1e-12);
+	t = (pattern_turb){.amount = d3(1, 1, 1), .octaves = 1, .omega = 0.5, .lambda = 2};
+	CHECK_NEAR(v[3], pattern_dturbulence(d3(1, 1, 1), &t).x, 1e-12);
+	t.octaves = 10;
+	CHECK_NEAR(v[4], pattern_dturbulence(d3(1, 1, 1), &t).x, 1e-12);
+	CHECK(fabs(v[3] - v[4]) > 1e-6, "octaves make no difference: %g", v[3]);
+}
+
 /* Pigment functions: the five components, .gray, a declared pigment moved. */
 static void check_pigments(void)
 {
@@ -383,6 +409,7 @@ int main(void)
 	check_patterns();
 	check_pigments();
 	check_function_pattern();
+	check_vturbulence();
 	if (have_includes) { /* functions.inc itself: skipped without povray-includes */
 		check_closed_forms();
 		check_noise();
