@@ -191,3 +191,5 @@ quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
 sphere { 0, 1 texture { Layered } texture { pigment { rgbf <0, 1, 0, 0.5> } } }
 // rule: csg
 difference { intersection { sphere { 0, 1 } box { -1, 1 } } merge { cylinder { -x, x, 0.2 } plane { y, 0 inverse } } clipped_by { box { -2, 2 } } bounded_by { box { -2, 2 } } }
+// rule: subsurface_settings
+global_settings { subsurface { radiosity off } }
