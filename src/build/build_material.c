@@ -197,6 +197,10 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 	case MAT_TEXTURE:
 		w->bsdfs[k] = bsdf_pov(&(bsdf_pov_finish_spec){0}, v3s(0.0f)); /* filled below */
 		pov_finish_spec(sc, sm, &w->bsdfs[k].pov, d);
+		if (sm->pov_sss) { /* POV-Ray's subsurface: the BSSRDF is the diffuse term (trace.cpp) */
+			w->bsdfs[k].pov.sss_diffuse = w->bsdfs[k].pov.diffuse;
+			w->bsdfs[k].pov.diffuse = 0.0f;
+		}
 		build_clear(&w->bsdfs[k], sm);
 		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 		break;
@@ -225,6 +229,9 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		wm->pattern_uv = pig->uv_mapping;
 		wm->pattern_kd = sm->kind == MAT_TEXTURE ? sm->diffuse : 1.0f;
 	}
+	/* A POV-Ray subsurface texture's medium is derived from its pigment (its pattern's mean). */
+	if (sm->pov_sss && !build_sss(w, k, sc, opt, sm, d))
+		return false;
 	if (sm->normal) {
 		if (!build_pattern(w, sm->normal, &wm->normal, d))
 			return false;

@@ -3,6 +3,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
+#include "scene/pattern.h"
 #include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
@@ -12,7 +13,7 @@
 
 bool is_sss(const scene_material *m)
 {
-	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE);
+	return m && (m->kind == MAT_SKIN || m->kind == MAT_WAX || m->kind == MAT_MARBLE || m->pov_sss);
 }
 
 sss_method sss_method_of(const scene_material *m, const world_options *opt)
@@ -21,12 +22,67 @@ sss_method sss_method_of(const scene_material *m, const world_options *opt)
 	return s == SSS_METHOD_DEFAULT ? SSS_METHOD_CIRCLE : s;
 }
 
+/* The points a patterned pigment's mean is taken over: a Halton set in [-1, 1]^3 of the pattern's
+ * object space (a pattern of POV-Ray's scale repeats within it; deterministic). */
+#define POV_SSS_MEAN_POINTS 1024
+
+static double halton(uint32_t i, uint32_t base)
+{
+	double f = 1.0, r = 0.0;
+	for (; i; i /= base) {
+		f /= base;
+		r += f * (double)(i % base);
+	}
+	return r;
+}
+
+/* The diffuse reflectance a POV-Ray subsurface texture's medium is derived at: pigment * Kd,
+ * the pigment's mean over POV_SSS_MEAN_POINTS points when it is a pattern (the entry points'
+ * own pigment then scales each weight by pigment / mean: integrator.c's colour blurring). */
+static vec3 pov_sss_reflectance(const world *w, const world_material *wm, const scene_material *sm)
+{
+	vec3 c = sm->color;
+	if (wm->has_pattern) {
+		dvec3 sum = d3(0, 0, 0);
+		for (uint32_t i = 1; i <= POV_SSS_MEAN_POINTS; i++) {
+			dvec3 q = d3(2 * halton(i, 2) - 1, 2 * halton(i, 3) - 1, 2 * halton(i, 5) - 1);
+			float o[5];
+			pattern_eval(&w->patterns, wm->pattern, q, 0.0, o);
+			vec3 rgb = v3(o[0], o[1], o[2]);
+			scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
+			sum = d3_add(sum, v3_to_d3(rgb));
+		}
+		c = d3v(d3_scale(sum, 1.0 / POV_SSS_MEAN_POINTS));
+	}
+	scene_color_clamp(&c, SCENE_COLOR_REFLECTANCE);
+	return v3_scale(c, fminf(sm->diffuse, 1.0f));
+}
+
+/* POV-Ray's subsurface texture as circe's artist form (doc/language.md "POV-Ray's subsurface"):
+ * the albedo is POV-Ray's diffuse reflectance rd, the radius the l_d of POV-Ray's own medium for
+ * rd and the translucency (sss_pov_translucency_radius_mm). */
+static sss_medium_spec pov_sss_spec(const scene_material *sm, vec3 rd)
+{
+	const float rdc[3] = {rd.x, rd.y, rd.z};
+	const vec3 t = sm->finish.translucency_mm;
+	const float tc[3] = {t.x, t.y, t.z};
+	float ld[3];
+	for (int c = 0; c < 3; c++)
+		ld[c] = (float)sss_pov_translucency_radius_mm(rdc[c], tc[c], sm->sss.ior);
+	return (sss_medium_spec){.form = SSS_FORM_ARTIST, .has = SSS_HAS_ALBEDO | SSS_HAS_RADIUS, .albedo = rd,
+				 .radius_mm = v3(ld[0], ld[1], ld[2])};
+}
+
 /* Both forms of an SSS material's medium, from what the scene wrote: the one derivation
- * (sss/medium.h), at build time. */
-static sss_medium medium_of(const scene_material *m)
+ * (sss/medium.h), at build time. A POV-Ray subsurface texture's is pov_sss_spec's, whose
+ * reflectance the build kept in the material's render_sss (k its index). */
+static sss_medium medium_of(const world *w, size_t k, const scene_material *m)
 {
 	sss_medium md;
-	sss_medium_derive(&m->sss.medium, m->sss.ior, &md);
+	sss_medium_spec spec = m->sss.medium;
+	if (m->pov_sss)
+		spec = pov_sss_spec(m, w->sss[k].albedo);
+	sss_medium_derive(&spec, m->sss.ior, &md);
 	return md;
 }
 
@@ -38,7 +94,9 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 {
 	const scene_sss *ss = &sm->sss;
 	render_sss *r = &w->sss[k];
-	sss_medium md = medium_of(sm);
+	if (sm->pov_sss)
+		r->albedo = pov_sss_reflectance(w, &w->materials[k], sm);
+	sss_medium md = medium_of(w, k, sm);
 	if (!sss_profile_from_artist(&r->profile, ss->profile, md.albedo, md.ld_mm, ss->ior)) {
 		diag_error(d, sm->loc, "the subsurface medium is out of range (albedo %g %g %g, radius %g %g %g mm, ior %g)",
 			   md.albedo[0], md.albedo[1], md.albedo[2], md.ld_mm[0], md.ld_mm[1], md.ld_mm[2], (double)ss->ior);
@@ -64,7 +122,8 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
 	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
-	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL;
+	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL ||
+		      (sm->pov_sss && sm->image != NULL);
 	w->sss_of[k] = r;
 	w->has_sss = true;
 	return true;
@@ -75,9 +134,10 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
  * the two exceeds the walk's step bound most long walks will be dropped (dark, counted): say so
  * before the render rather than after. High albedos given in the artist form are the usual cause
  * (albedo 1 needs sigma_a = 0, so the inversion makes sigma_s' very large). */
-static void warn_dense_medium(const world_inst *in, const scene *sc, const scene_object *o, diag *d)
+static void warn_dense_medium(const world *w, const world_inst *in, const scene *sc, const scene_object *o,
+			      diag *d)
 {
-	sss_medium md = medium_of(o->material);
+	sss_medium md = medium_of(w, (size_t)in->material, o->material);
 	double size_mm = v3_length(v3_sub(in->hi, in->lo)) * sc->global.mm_per_unit, worst = 0.0;
 	const double *s_s = md.sigma_s_per_mm, *s_a = md.sigma_a_per_mm;
 	for (int c = 0; c < 3; c++) {
@@ -135,7 +195,7 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 							      "or disk for an open surface");
 			ok = false;
 		} else {
-			warn_dense_medium(&w->insts[i], sc, o, d);
+			warn_dense_medium(w, &w->insts[i], sc, o, d);
 		}
 	}
 	mem_free(closed);

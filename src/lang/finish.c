@@ -148,6 +148,42 @@ static bool irid(parser *p, diag_loc kw)
 	return lang_expect_close(p, open, "irid");
 }
 
+/* subsurface = "subsurface" "{" { "translucency" colour | "anisotropy" colour } "}"
+ * POV-Ray 3.7's (parser_materials.cpp Parse_Finish): translucency is 1 / sigma_s' in mm per
+ * channel (a float is grey); anisotropy is read and, as POV-Ray's trace.cpp does (g = 0), not used. */
+static bool subsurface(parser *p, scene_finish *f, diag_loc kw)
+{
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'subsurface'"));
+	bool has_t = false;
+	for (;;) {
+		diag_loc loc = lang_peek(p)->loc;
+		vec3 c;
+		if (lang_accept(p, LTK_RBRACE))
+			break;
+		if (accept_word(p, "translucency")) {
+			TRY(lang_color(p, "after 'translucency'", &c));
+			if (!(c.x > 0 && c.y > 0 && c.z > 0 && isfinite(c.x) && isfinite(c.y) && isfinite(c.z)))
+				return lang_error(p, loc, "subsurface translucency must be > 0 mm in every channel, found "
+							  "<%g, %g, %g> (0 is no subsurface transport: leave 'subsurface' out)",
+						  c.x, c.y, c.z);
+			f->translucency_mm = c;
+			has_t = true;
+		} else if (accept_word(p, "anisotropy")) {
+			TRY(lang_color(p, "after 'anisotropy'", &c));
+		} else {
+			return lang_error_found(p, "expected translucency, anisotropy or '}' to close 'subsurface' "
+						   "(opened at line %u)",
+						open.line);
+		}
+	}
+	if (!has_t && !f->subsurface)
+		return lang_error(p, kw, "a finish's subsurface needs its 'translucency' (mm, > 0)");
+	f->subsurface = true;
+	f->subsurface_loc = kw;
+	return true;
+}
+
 /* The highlight items: specular, roughness, phong, phong_size, metallic. */
 static bool highlight_item(parser *p, scene_material *m, lang_finish_state *st, bool *matched)
 {
@@ -246,6 +282,8 @@ bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool 
 		if (float_follows(p))
 			TRY(lang_float(p, "after 'fresnel'", &x));
 		f->refl_fresnel = x != 0;
+	} else if (accept_word(p, "subsurface")) {
+		TRY(subsurface(p, f, t.loc));
 	} else if (accept_word(p, "conserve_energy")) {
 		f->conserve_energy = true;
 	} else if (t.kind == LTK_KW_IOR) { /* POV-Ray's old place for the interior's ior */

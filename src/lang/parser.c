@@ -1793,6 +1793,8 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		while (!p->failed && lang_peek(p)->kind != LTK_EOF)
 			if (!lang_statement(p))
 				break;
+		if (!p->failed && !d->errors)
+			scene_resolve_pov_sss(sc, d);
 		if (p->failed || d->errors)
 			st = LANG_SCENE_ERROR;
 		else if (scene_validate(sc, d) > 0)

@@ -6,6 +6,7 @@
  * are matched here by their spelling: the keyword table stays as it is. */
 #include "lang/pigment.h"
 
+#include <math.h>
 #include <string.h>
 
 enum {
@@ -185,8 +186,8 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment'"));
 		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &e->pigment);
 	}
-	if (pigment_body)
-		return body(p, NULL, close, at, b->depth + 1, false, &e->pigment);
+	if (pigment_body) /* a pigment_map's pigment, or a normal_map's normal */
+		return body(p, NULL, close, at, b->depth + 1, b->normal, &e->pigment);
 	double c[5];
 	TRY(lang_color5(p, "in the map", c));
 	set5(e->color, c);
@@ -228,9 +229,11 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 /* color_map = ( "color_map" | "colour_map" | "pigment_map" ) "{" map_entry { map_entry } "}" */
 static bool map_block(parser *p, pig_build *b, bool pigments)
 {
-	const char *what = pigments ? "pigment_map" : "color_map";
+	const char *what = !pigments ? "color_map" : b->normal ? "normal_map" : "pigment_map";
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
-	TRY(lang_expect(p, LTK_LBRACE, pigments ? "after 'pigment_map'" : "after 'color_map'"));
+	char ctx[32];
+	snprintf(ctx, sizeof ctx, "after '%s'", what);
+	TRY(lang_expect(p, LTK_LBRACE, ctx));
 	const symbol *s = peek_declared(p, VAL_COLOR_MAP);
 	if (s) { /* color_map { Name } */
 		const scene_pigment *held = s->val.mat->pigment;
@@ -471,11 +474,6 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		b->pg.arms = (int)arms;
 		return true;
 	}
-	if (k == SCENE_PAT_CRACKLE && accept_word(p, "solid"))
-		b->pg.solid = true;
-	if (k == SCENE_PAT_CRACKLE && (peek_word(p, "form") || peek_word(p, "metric") || peek_word(p, "offset")))
-		return lang_error(p, lang_peek(p)->loc, "'%.*s' of crackle is not supported by circe (its default form is)",
-				  (int)lang_peek(p)->len, lang_peek(p)->text);
 	return scene_pattern_blocks(k) ? block_list(p, b) : true;
 }
 
@@ -525,10 +523,46 @@ static bool number_modifier(parser *p, pig_build *b, bool *matched)
 	return true;
 }
 
+/* crackle's modifiers (POV-Ray's Parse_Pattern): "form" vector | "metric" vector (its x: POV-Ray
+ * reads a vector for compatibility) | "offset" float | "solid"; an error on another pattern. */
+static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
+{
+	static const char *const words[] = {"form", "metric", "offset", "solid"};
+	const lang_token t = *lang_peek(p);
+	int w = -1;
+	for (int i = 0; i < 4 && w < 0; i++)
+		if (lang_word_is(&t, words[i]))
+			w = i;
+	if (!(*matched = w >= 0))
+		return true;
+	if (b->pg.kind != SCENE_PAT_CRACKLE)
+		return lang_error(p, t.loc, "'%s' belongs to crackle, not to %s", words[w],
+				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+	lang_advance(p);
+	dvec3 v;
+	switch (w) {
+	case 0: return lang_vec3(p, "after 'form'", &b->pg.crackle_form);
+	case 1:
+		TRY(lang_vec3(p, "after 'metric'", &v));
+		if (!(v.x > 0) || !isfinite(v.x))
+			return lang_error(p, t.loc, "crackle's metric must be > 0, found %g", v.x);
+		b->pg.crackle_metric = v.x;
+		return true;
+	case 2:
+		TRY(lang_float(p, "after 'offset'", &v.x));
+		if (!(v.x >= 0) || !isfinite(v.x))
+			return lang_error(p, t.loc, "crackle's offset must be >= 0, found %g", v.x);
+		b->pg.crackle_offset = v.x;
+		return true;
+	default: b->pg.solid = true; return true;
+	}
+}
+
 /* pattern_modifier = color_map | pigment_map | "turbulence" ( float | vector ) | "octaves" int
  *   | "omega" float | "lambda" float | wave | "frequency" float | "phase" float | warp
  *   | "brick_size" vector | "mortar" float | "agate_turb" float | "control0" float
  *   | "control1" float | "quick_color" colour | "noise_generator" int | "uv_mapping" | transform_item
+ *   | normal_map (a normal's) | crackle_modifier
  * *matched false when the lookahead is none. */
 static bool modifier(parser *p, pig_build *b, bool *matched)
 {
@@ -561,8 +595,14 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 		return lang_float(p, "after 'bump_size'", &b->pg.bump_amount);
 	if (b->normal && accept_word(p, "accuracy"))
 		return lang_float(p, "after 'accuracy'", &b->pg.accuracy);
-	if (b->normal && (peek_word(p, "slope_map") || peek_word(p, "normal_map")))
+	if (b->normal && peek_word(p, "normal_map")) /* its entries are normal bodies */
+		return map_block(p, b, true);
+	if (b->normal && peek_word(p, "slope_map"))
 		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
+	TRY(crackle_modifier(p, b, matched));
+	if (*matched)
+		return true;
+	*matched = true;
 	if (accept_word(p, "uv_mapping")) {
 		b->pg.uv_mapping = true;
 		return true;
@@ -639,6 +679,23 @@ static bool head(parser *p, pig_build *b)
 	return true;
 }
 
+/* average: POV-Ray divides by its entries' weights, which must be there and add to more than 0. */
+static bool average_check(parser *p, const pig_build *b)
+{
+	if (b->pg.kind != SCENE_PAT_AVERAGE)
+		return true;
+	if (!b->pg.entries)
+		return lang_error(p, b->pg.loc, "'average' needs a %s: the entries it averages, weighted by their values",
+				  b->normal ? "normal_map" : "pigment_map or color_map");
+	double total = 0.0;
+	for (uint32_t i = 0; i < b->pg.n_entries; i++)
+		total += b->pg.entries[i].value;
+	if (!(total > 0) || !isfinite(total))
+		return lang_error(p, b->pg.loc, "the weights of 'average' add up to %g: they must add up to more than 0",
+				  total);
+	return true;
+}
+
 /* body = [ head ] { pattern_modifier } close */
 static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, const scene_pigment **out)
 {
@@ -649,6 +706,7 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 				return lang_error(p, open, "a normal needs a pattern (bumps, dents, ripples, ...)");
 			if (b->pg.kind == SCENE_PAT_PLAIN && (b->n_warps || b->pg.entries))
 				b->n_warps = 0; /* a colour has no pattern to move or map */
+			TRY(average_check(p, b));
 			return (*out = finish_build(p, b, open)) != NULL;
 		}
 		bool matched;

@@ -2478,9 +2478,44 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 	return true;
 }
 
+/* subsurface_settings = "subsurface" "{" { "samples" integer [ "," ] integer | "radiosity" float } "}"
+ * POV-Ray 3.7's (parser.cpp Parse_Global_Settings): switches the finishes' subsurface on. The
+ * sample counts are recorded and warned about: circe is progressive; radiosity is recorded:
+ * circe lights every entry point by global illumination anyway. */
+static bool subsurface_settings(parser *p, scene_global *g)
+{
+	lang_advance(p);
+	diag_loc open;
+	TRY(open_block(p, "subsurface", &open));
+	g->subsurface = true;
+	for (;;) {
+		const lang_token *t = lang_peek(p);
+		diag_loc loc = t->loc;
+		long n;
+		double x;
+		if (lang_accept(p, LTK_RBRACE))
+			return true;
+		if (lang_word_is(t, "samples")) {
+			lang_advance(p);
+			TRY(lang_int(p, "after 'samples'", 1, INT32_MAX, &n));
+			g->subsurface_samples[0] = (int)n;
+			lang_accept(p, LTK_COMMA);
+			TRY(lang_int(p, "as the second sample count", 1, INT32_MAX, &n));
+			g->subsurface_samples[1] = (int)n;
+			diag_warning(p->d, loc, "the subsurface samples are ignored: circe is progressive (--spp, --time)");
+		} else if (lang_word_is(t, "radiosity")) {
+			lang_advance(p);
+			TRY(lang_float(p, "after 'radiosity'", &x));
+			g->subsurface_radiosity = x != 0;
+		} else {
+			return bad_item(p, open, "subsurface", "samples or radiosity");
+		}
+	}
+}
+
 /* global_settings = "global_settings" "{" { "mm_per_unit" float | "max_trace_level" integer
  *                   | "assumed_gamma" float | "noise_threshold" float | "ambient_light" color
- *                   | ignored_setting } "}"
+ *                   | subsurface_settings | ignored_setting } "}"
  * ignored_setting = ( "radiosity" | "photons" ) "{" balanced-tokens "}"
  *                 | "irid_wavelength" color
  *                 | ( "adc_bailout" | "noise_generator" | "number_of_waves" | "max_intersections" ) float
@@ -2524,6 +2559,10 @@ static bool global_settings(parser *p)
 				lang_advance(p); /* scales every explicit finish ambient (finish.c) */
 				TRY(physical_color(p, "after 'ambient_light'", "ambient_light", SCENE_COLOR_RADIANCE,
 						   &g->ambient_light));
+				break;
+			}
+			if (lang_word_is(&t, "subsurface")) {
+				TRY(subsurface_settings(p, g));
 				break;
 			}
 			const struct ignored_setting *s = ignored_setting(&t);

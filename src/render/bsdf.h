@@ -35,6 +35,9 @@ typedef struct bsdf_pov_finish_spec {
 	float refl_ior; /* > 0: Fresnel reflection of this relative ior; 0: the falloff form */
 	float refl_metallic;
 	vec3 glow; /* ambient * ambient_light + emission: emitted radiance per unit pigment */
+	/* > 0 on a POV-Ray subsurface texture: its Kd, with diffuse 0 (no Lambert lobe). The
+	 * BSSRDF reflects b->diffuse = pigment * sss_diffuse in its place (integrator.c). */
+	float sss_diffuse;
 } bsdf_pov_finish_spec;
 
 /* The transparent part of a surface (POV-Ray's filter and transmit, doc/language.md "Transparency

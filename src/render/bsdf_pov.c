@@ -70,7 +70,9 @@ void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 	sum = v3_add(sum, v3_max(f->refl_min, f->refl_max));
 	float m = v3_max_comp(sum);
 	b->pov_scale = m > 1.0f ? 1.0f / m : 1.0f;
-	b->diffuse = v3_scale(b->pigment, f->diffuse * b->pov_scale);
+	/* The diffuse albedo: the Lambert lobe's, or what a subsurface texture's BSSRDF reflects. */
+	b->diffuse = f->sss_diffuse > 0.0f ? v3_scale(b->pigment, fminf(f->sss_diffuse, 1.0f))
+					   : v3_scale(b->pigment, f->diffuse * b->pov_scale);
 	b->emit = v3_mul(f->glow, b->pigment);
 }
 
@@ -85,7 +87,8 @@ bsdf_params bsdf_pov(const bsdf_pov_finish_spec *f, vec3 pigment)
 static void lobe_probs(const bsdf_params *b, vec3 wo, float p[LOBE_COUNT])
 {
 	const bsdf_pov_finish_spec *f = &b->pov;
-	p[LOBE_DIFFUSE] = v3_luminance(b->diffuse);
+	/* A subsurface texture's b->diffuse is the BSSRDF's albedo: it has no Lambert lobe. */
+	p[LOBE_DIFFUSE] = f->sss_diffuse > 0.0f ? 0.0f : v3_luminance(b->diffuse);
 	p[LOBE_SPECULAR] = f->specular * bsdf_pov_blinn_weight(spec_n(f)) *
 			   v3_luminance(metallic_tint(f->metallic, b->pigment, wo.z));
 	p[LOBE_PHONG] = f->phong * bsdf_pov_blinn_weight(phong_n(f)) *

@@ -22,6 +22,11 @@ typedef struct scene_finish {
 	bool refl_fresnel;	 /* the Fresnel of the interior's ior between them instead */
 	float refl_metallic;	 /* reflection tinted by the pigment, in [0, 1] */
 	bool conserve_energy;	 /* recorded: circe's lobes always conserve energy */
+	/* subsurface { translucency T }: POV-Ray's SSS (doc/language.md "POV-Ray's subsurface"),
+	 * rendered by circle tracing when the scene's global_settings has its subsurface block. */
+	bool subsurface;
+	vec3 translucency_mm; /* 1 / sigma_s' per channel, mm, > 0 */
+	diag_loc subsurface_loc;
 } scene_finish;
 
 /* POV-Ray 3.7's finish defaults (no reflection, phong_size 40, falloff 1, brilliance 1). */

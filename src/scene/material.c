@@ -47,7 +47,7 @@ bool scene_finish_is_default(const scene_finish *f)
 	       f->phong == d.phong && f->phong_size == d.phong_size && f->metallic == d.metallic &&
 	       v3_eq(f->refl_min, d.refl_min) && v3_eq(f->refl_max, d.refl_max) && f->refl_falloff == d.refl_falloff &&
 	       f->refl_fresnel == d.refl_fresnel && f->refl_metallic == d.refl_metallic &&
-	       f->conserve_energy == d.conserve_energy;
+	       f->conserve_energy == d.conserve_energy && f->subsurface == d.subsurface;
 }
 
 void scene_sss_defaults(scene_material *m)

@@ -72,7 +72,11 @@ typedef struct scene_material {
 	const scene_media *media; /* the interior's media, n_media of them (in the arena), or NULL */
 	uint32_t n_media;
 	vec3 emission; /* any kind may emit */
-	scene_sss sss; /* MAT_SKIN, MAT_WAX, MAT_MARBLE */
+	scene_sss sss; /* MAT_SKIN, MAT_WAX, MAT_MARBLE, and a pov_sss texture */
+	/* A MAT_TEXTURE whose finish has POV-Ray's subsurface in a scene that switches it on
+	 * (scene_resolve_pov_sss): its diffuse is the BSSRDF, sss holds ior, profile and method; the
+	 * build derives the medium from the pigment and the translucency (sss/medium.h). */
+	bool pov_sss;
 	struct scene_material *next;
 } scene_material;
 

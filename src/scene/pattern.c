@@ -7,6 +7,7 @@
 #include "base/noise.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define TWO_PI 6.283185307179586
@@ -108,27 +109,56 @@ static double hash_unit(uint32_t h) { return (double)(h >> 8) * (1.0 / 16777216.
 
 static int cell_of(double v) { return (int)floor(fmax(-2.0e9, fmin(2.0e9, v))); }
 
-/* CracklePattern with POV-Ray's defaults (form <-1, 1, 0>, metric 2): the distance to the second
- * nearest feature point less the nearest, one point per unit cube, the 27 cubes around p. */
-static double crackle(dvec3 p, bool solid)
+dvec3 pattern_crackle_point(int x, int y, int z)
+{
+	uint32_t h = hash_cell(x, y, z);
+	return d3(x + hash_unit(h), y + hash_unit(h * 0x9e3779b9u + 1u), z + hash_unit(h * 0x85ebca6bu + 2u));
+}
+
+/* A distance under crackle's metric m before its root: |d|^2 summed for 2, |d| for 1, |d|^m. */
+static double metric_sum(dvec3 d, double m)
+{
+	if (m == 2.0)
+		return d.x * d.x + d.y * d.y + d.z * d.z;
+	if (m == 1.0)
+		return fabs(d.x) + fabs(d.y) + fabs(d.z);
+	return pow(fabs(d.x), m) + pow(fabs(d.y), m) + pow(fabs(d.z), m);
+}
+
+/* POV-Ray 3.7's CracklePattern::EvaluateRaw: one feature point per unit cube; the three nearest
+ * of the 81 cubes that can hold them (p's cube, its 26 neighbours, and the cubes two away along
+ * one axis from the 9 of each face: POV-Ray's gaCrackleCubeTable), their distances under the
+ * metric, each with the offset added in the metric's power, combined by the form and clamped to
+ * [0, 1]; solid: the noise at the nearest point (one value per cell). */
+static double crackle(dvec3 p, const pattern_node *n)
 {
 	int cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
-	double d1 = 1e30, d2 = 1e30;
-	uint32_t nearest = 0;
-	for (int i = -1; i <= 1; i++)
-		for (int j = -1; j <= 1; j++)
-			for (int k = -1; k <= 1; k++) {
-				uint32_t h = hash_cell(cx + i, cy + j, cz + k);
-				dvec3 f = d3(cx + i + hash_unit(h), cy + j + hash_unit(h * 0x9e3779b9u + 1u),
-					     cz + k + hash_unit(h * 0x85ebca6bu + 2u));
-				double d = d3_length(d3_sub(p, f));
-				if (d < d1)
-					d2 = d1, d1 = d, nearest = h;
-				else if (d < d2)
-					d2 = d;
+	double m = n->crackle_metric, d[3] = {1e300, 1e300, 1e300};
+	dvec3 nearest = d3(0, 0, 0);
+	for (int i = -2; i <= 2; i++)
+		for (int j = -2; j <= 2; j++)
+			for (int k = -2; k <= 2; k++) {
+				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
+					continue;
+				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k);
+				double s = metric_sum(d3_sub(f, p), m);
+				if (s < d[0])
+					d[2] = d[1], d[1] = d[0], d[0] = s, nearest = f;
+				else if (s < d[1])
+					d[2] = d[1], d[1] = s;
+				else if (s < d[2])
+					d[2] = s;
 			}
-	/* solid: the nearest point's cell value (CracklePattern's crackleIsSolid) */
-	return solid ? hash_unit(nearest * 0xc2b2ae35u + 3u) : clamp01(d2 - d1);
+	if (n->solid) /* POV-Ray: Noise(nucleus), so the cells' values cluster as its noise does */
+		return pattern_noise(nearest);
+	double o = n->crackle_offset, add = m == 2.0 ? o * o : m == 1.0 ? o : pow(o, m);
+	double r[3];
+	for (int c = 0; c < 3; c++) {
+		double v = o != 0.0 ? d[c] + add : d[c];
+		r[c] = m == 2.0 ? sqrt(v) : m == 1.0 ? v : pow(v, 1.0 / m);
+	}
+	dvec3 f = n->crackle_form;
+	return clamp01(f.x * r[0] + f.y * r[1] + f.z * r[2]);
 }
 
 /* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
@@ -302,7 +332,7 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	case PATTERN_WOOD: return wood(n, p);
 	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
 					1.0);
-	case PATTERN_CRACKLE: return crackle(p, n->solid);
+	case PATTERN_CRACKLE: return crackle(p, n);
 	case PATTERN_SPIRAL1:
 	case PATTERN_SPIRAL2: {
 		double rad = sqrt(p.x * p.x + p.y * p.y);
@@ -562,6 +592,23 @@ static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, doubl
 	}
 }
 
+/* POV-Ray's average (pigment.cpp ColourBlendMap/PigmentBlendMap::ComputeAverage): the entries'
+ * colours at p, each weighted by its value, divided by the weights' sum (the parser makes it > 0). */
+static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+{
+	double sum[5] = {0}, total = 0.0;
+	for (uint32_t j = 0; j < n->n_entries; j++) {
+		const pattern_entry *e = &pg->entries[n->entry0 + j];
+		float c[5];
+		entry_color(pg, e, p, eps, depth, c);
+		for (int i = 0; i < 5; i++)
+			sum[i] += e->value * c[i];
+		total += e->value;
+	}
+	for (int i = 0; i < 5; i++)
+		out[i] = total != 0.0 ? (float)(sum[i] / total) : 0.0f;
+}
+
 static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
 {
 	const pattern_node *n = &pg->nodes[node];
@@ -578,6 +625,8 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 	dvec3 q = warped(pg, n, p, &eps);
 	if (n->kind == PATTERN_IMAGE) {
 		image_color(n, q, out);
+	} else if (n->kind == PATTERN_AVERAGE) {
+		average(pg, n, q, eps, depth, out);
 	} else if (is_block(n->kind)) {
 		uint32_t i = (uint32_t)raw_eps(pg, n, q, eps);
 		if (i < n->n_entries)
@@ -600,6 +649,7 @@ pattern_node pattern_node_default(pattern_kind kind)
 {
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
 			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
+			  .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2
@@ -743,28 +793,84 @@ static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
 	return d3_sub(d3_add(d3_scale(xp, bump.x), d3_scale(yp, bump.y)), d3_scale(zp, bump.z));
 }
 
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm);
+
+/* A normal's normal_map (normal.cpp Perturb_Normal): the entries are normals, each perturbing v at
+ * q in turn. average: their results weighted by the entries' values over the weights' sum
+ * (NormalBlendMap::ComputeAverage); another pattern: the two entries around its value, blended
+ * by the map's weights, then normalised, as POV-Ray's. */
+static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps, int depth, dvec3 v)
+{
+	const pattern_entry *e = pg->entries + n->entry0;
+	uint32_t k = n->n_entries;
+	if (n->kind == PATTERN_AVERAGE) {
+		dvec3 sum = d3(0, 0, 0);
+		double total = 0.0;
+		for (uint32_t j = 0; j < k; j++) {
+			dvec3 vj = v;
+			perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
+			sum = d3_add(sum, d3_scale(vj, e[j].value));
+			total += e[j].value;
+		}
+		return total != 0.0 ? d3_scale(sum, 1.0 / total) : v;
+	}
+	double val = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
+	uint32_t lo = 0, hi = 0;
+	double t = 0.0;
+	if (k > 1 && val >= e[k - 1].value) {
+		lo = hi = k - 1;
+	} else if (k > 1 && val > e[0].value) {
+		hi = 1;
+		while (hi < k - 1 && e[hi].value <= val)
+			hi++;
+		lo = hi - 1;
+		double span = e[hi].value - e[lo].value;
+		t = span > 0.0 ? (val - e[lo].value) / span : 1.0;
+	}
+	dvec3 a = v, b = v;
+	perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
+	if (lo != hi) {
+		perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
+		b = d3_add(d3_scale(a, 1.0 - t), d3_scale(b, t));
+	}
+	double len = d3_length(b);
+	return len > 0.0 ? d3_scale(b, 1.0 / len) : v;
+}
+
 void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
 {
+	perturb_depth(pg, node, p, 0, nrm);
+}
+
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm)
+{
 	const pattern_node *n = &pg->nodes[node];
+	if (depth > PATTERN_MAX_DEPTH)
+		return;
 	dvec3 v = *nrm;
 	for (uint32_t i = 0; i < n->n_warps; i++)
 		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
 			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, true);
 	double eps = POV_EPSILON;
 	dvec3 q = warped(pg, n, p, &eps);
-	switch (n->kind) {
-	case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
-	case PATTERN_DENTS: {
-		double k = pattern_noise(q);
-		v = d3_add(v, d3_scale(pattern_dnoise(q), k * k * k * n->bump_amount));
-		break;
-	}
-	case PATTERN_WRINKLES: v = d3_add(v, d3_scale(wrinkles_normal(q), n->bump_amount)); break;
-	case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
-	case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
-	case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
-	case PATTERN_PLAIN: break;
-	default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
+	bool has_map = n->n_entries > 0 && pg->entries[n->entry0].node >= 0; /* a normal_map's entries */
+	if (has_map) {
+		v = normal_map(pg, n, q, eps, depth, v);
+	} else {
+		switch (n->kind) {
+		case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
+		case PATTERN_DENTS: {
+			double k = pattern_noise(q);
+			v = d3_add(v, d3_scale(pattern_dnoise(q), k * k * k * n->bump_amount));
+			break;
+		}
+		case PATTERN_WRINKLES: v = d3_add(v, d3_scale(wrinkles_normal(q), n->bump_amount)); break;
+		case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
+		case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
+		case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
+		case PATTERN_PLAIN: break;
+		default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
+		}
 	}
 	for (uint32_t i = n->n_warps; i-- > 0;)
 		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)

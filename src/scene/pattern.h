@@ -40,6 +40,7 @@ typedef enum pattern_kind {
 	PATTERN_FUNCTION, /* a user function of (x, y, z) (pattern_node.fn) */
 	PATTERN_LAYERS, /* a layered texture's pigments (its entries, bottom first), composited by the
 			 * upper layers' filter and transmit */
+	PATTERN_AVERAGE, /* its entries' colours (or normals) averaged, each weighted by its value */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -92,7 +93,9 @@ typedef struct pattern_node {
 	double mortar;	   /* brick */
 	double control0, control1; /* quilted */
 	int arms;	   /* spiral1, spiral2 */
-	bool solid;	   /* crackle solid: the nearest cell's own value */
+	bool solid;	   /* crackle solid: the noise at the nearest feature point */
+	dvec3 crackle_form; /* crackle: weights of the three nearest distances (default <-1, 1, 0>) */
+	double crackle_metric, crackle_offset; /* crackle: the distance's exponent (2), its offset (0) */
 	double agate_turb; /* agate */
 	pattern_wave wave;
 	double frequency, phase, exponent;
@@ -161,6 +164,8 @@ double pattern_turbulence(dvec3 p, const pattern_turb *t);
 dvec3 pattern_dturbulence(dvec3 p, const pattern_turb *t);
 /* Perlin's 2002 permutation (the i-th entry), for tests. */
 int pattern_perm(int i);
+/* crackle's feature point of the unit cube at <x, y, z> (exposed for tests). */
+dvec3 pattern_crackle_point(int x, int y, int z);
 /* The point p moved by one warp. */
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p);
 /* A node with POV-Ray's defaults for kind (wave, frequency 1, turbulence parameters). */

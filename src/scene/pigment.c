@@ -33,7 +33,8 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 {
 	scene_pigment p = {.loc = loc, .kind = k, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0),
 			   .bump_amount = 0.5, .accuracy = 0.02, .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
-			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
+			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0},
+			   .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0};
 	if (k == SCENE_PAT_MARBLE || k == SCENE_PAT_WOOD || k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2)
 		p.wave = SCENE_WAVE_TRIANGLE;
 	if (k == SCENE_PAT_QUILTED)
@@ -63,8 +64,18 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 		if (pg->frequency != 1.0 || pg->phase != 0.0)
 			fprintf(o, " frequency %g phase %g", pg->frequency, pg->phase);
 		if (pg->entries)
-			fprintf(o, " %s %u", pg->pigment_map ? "pigment_map" : pg->block_list ? "list" : "color_map",
+			fprintf(o, " %s %u",
+				pg->pigment_map ? (pg->is_normal ? "normal_map" : "pigment_map")
+				: pg->block_list ? "list"
+						 : "color_map",
 				pg->n_entries);
+		const dvec3 f = pg->crackle_form;
+		if (pg->kind == SCENE_PAT_CRACKLE &&
+		    (f.x != -1 || f.y != 1 || f.z != 0 || pg->crackle_metric != 2 || pg->crackle_offset != 0))
+			fprintf(o, " form <%g, %g, %g> metric %g offset %g", f.x, f.y, f.z, pg->crackle_metric,
+				pg->crackle_offset);
+		if (pg->solid)
+			fprintf(o, " solid");
 	}
 	if (pg->turb.amount.x != 0.0 || pg->turb.amount.y != 0.0 || pg->turb.amount.z != 0.0)
 		fprintf(o, " turbulence <%g, %g, %g> octaves %d omega %g lambda %g", pg->turb.amount.x, pg->turb.amount.y,

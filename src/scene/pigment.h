@@ -25,7 +25,7 @@
 	X(CRACKLE, "crackle") X(CELLS, "cells") X(SPIRAL1, "spiral1") X(SPIRAL2, "spiral2")         \
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
-	X(LAYERS, "(layers)")
+	X(LAYERS, "(layers)") X(AVERAGE, "average")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -98,6 +98,9 @@ typedef struct scene_pigment {
 	double mortar, control0, control1, agate_turb;
 	int arms;
 	bool solid; /* crackle solid */
+	dvec3 crackle_form;	     /* crackle's form: weights of the 3 nearest distances, <-1, 1, 0> */
+	double crackle_metric;	     /* crackle's metric: the exponent of its distance, 2 */
+	double crackle_offset;	     /* crackle's offset: added to each distance (in the metric), 0 */
 	scene_wave wave;
 	double frequency, phase, exponent;
 	scene_turb turb; /* the pigment's own `turbulence` (classic) */
@@ -106,7 +109,7 @@ typedef struct scene_pigment {
 	const struct scene_pigment *child; /* PIGMENT_PATTERN: the pigment whose grey is the value */
 	const scene_map_entry *entries; /* NULL: the pattern's default map */
 	uint32_t n_entries;
-	bool pigment_map; /* entries are pigments */
+	bool pigment_map; /* entries are pigments (a normal's normal_map: normals) */
 	bool is_normal;	  /* a normal { }: the pattern perturbs the shading normal */
 	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */

@@ -21,6 +21,7 @@ scene *scene_new(void)
 	s->global.max_trace_level = 5;
 	s->global.assumed_gamma = 1.0;
 	s->global.ambient_light = v3s(1.0f);
+	s->global.subsurface_samples[0] = s->global.subsurface_samples[1] = 50; /* POV-Ray 3.7 scenedata.cpp */
 	return s;
 }
 
@@ -111,6 +112,45 @@ bool scene_add_asset(scene *s, scene_asset_kind kind, const char *path, diag_loc
 }
 
 /* ---- validation ------------------------------------------------------------------------- */
+
+/* Whether an object of s wears m (a declared texture no object uses is not warned about). */
+static bool material_used(const scene *s, const scene_material *m)
+{
+	for (size_t i = 0; i < scene_n_objects(s); i++)
+		if (scene_object_at(s, i)->material == m)
+			return true;
+	return false;
+}
+
+void scene_resolve_pov_sss(scene *s, diag *d)
+{
+	bool warned_off = false, warned_ior = false;
+	for (scene_material *m = s->materials; m; m = m->next) {
+		if (m->kind != MAT_TEXTURE || !m->finish.subsurface)
+			continue;
+		bool warn = (!warned_off || !warned_ior) && material_used(s, m);
+		if (!s->global.subsurface) {
+			if (warn && !warned_off)
+				diag_warning(d, m->finish.subsurface_loc,
+					     "the finish's subsurface renders as a plain diffuse finish: POV-Ray switches "
+					     "it on with global_settings { subsurface { } } (said once per scene)");
+			warned_off = warned_off || warn;
+			continue;
+		}
+		m->pov_sss = true;
+		memset(&m->sss, 0, sizeof m->sss);
+		m->sss.profile = SSS_PROFILE_DIPOLE; /* POV-Ray's BSSRDF is Jensen et al. 2001's dipole */
+		m->sss.method = SSS_METHOD_DEFAULT;
+		m->sss.normal_strength = 1.0f;
+		m->sss.ior = m->ior > 0.0f ? m->ior : 1.0f;
+		if (!(m->ior > 0.0f) && warn && !warned_ior) {
+			diag_warning(d, m->finish.subsurface_loc,
+				     "a subsurface finish without interior { ior }: ior 1 as POV-Ray's (no boundary "
+				     "refraction); give the object an interior (said once per scene)");
+			warned_ior = true;
+		}
+	}
+}
 
 static int check_indices(diag *d, diag_loc loc, const char *what, const uint32_t *idx, uint32_t n_faces,
 			 uint32_t n_items, const char *items)
@@ -367,8 +407,11 @@ static void dump_finish(FILE *o, const scene_finish *f)
 		f->metallic);
 	dump_v3(o, "reflection_min", f->refl_min);
 	dump_v3(o, "reflection_max", f->refl_max);
-	fprintf(o, " falloff %g fresnel %d reflection_metallic %g conserve_energy %d\n", f->refl_falloff,
+	fprintf(o, " falloff %g fresnel %d reflection_metallic %g conserve_energy %d", f->refl_falloff,
 		f->refl_fresnel, f->refl_metallic, f->conserve_energy);
+	if (f->subsurface)
+		dump_v3(o, "subsurface translucency", f->translucency_mm);
+	fputc('\n', o);
 }
 
 static void dump_material(FILE *o, const scene_material *m)
@@ -409,6 +452,8 @@ static void dump_material(FILE *o, const scene_material *m)
 		fputc('\n', o);
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);
+		if (m->pov_sss)
+			fprintf(o, "  pov_sss ior %g profile %s\n", m->sss.ior, sss_profile_name(m->sss.profile));
 	}
 	const struct scene_pigment *pg = m->kind >= MAT_SKIN && m->sss.pigment ? m->sss.pigment : m->pigment;
 	if (pg) {
@@ -586,6 +631,9 @@ void scene_dump(const scene *s, FILE *o)
 		dump_v3(o, "ambient_light", al);
 		fputc('\n', o);
 	}
+	if (s->global.subsurface)
+		fprintf(o, "global subsurface samples %d %d radiosity %d\n", s->global.subsurface_samples[0],
+			s->global.subsurface_samples[1], s->global.subsurface_radiosity);
 	for (const scene_fog *f = s->fogs; f; f = f->next) {
 		fprintf(o, "fog type %d", (int)f->type);
 		dump_loc(o, f->loc);

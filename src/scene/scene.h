@@ -285,6 +285,12 @@ typedef struct scene_global {
 	double assumed_gamma; /* default 1 */
 	double noise_threshold; /* adaptive sampling's (render --noise-threshold); 0: off, the default */
 	vec3 ambient_light; /* default 1: scales every explicit finish ambient (scene/finish.h) */
+	/* global_settings { subsurface { samples D, S  radiosity B } }: POV-Ray's switch for its
+	 * finishes' subsurface (without it they render without); samples and radiosity are recorded
+	 * only: circe is progressive and lights entry points by global illumination. */
+	bool subsurface;
+	int subsurface_samples[2]; /* POV-Ray's defaults 50, 50 */
+	bool subsurface_radiosity;
 } scene_global;
 
 /* Pigment layers of a sky_sphere (POV-Ray's are unlimited; circe's sky is baked from these). */
@@ -359,6 +365,12 @@ static inline const scene_light *scene_light_at(const scene *s, size_t i)
  * the value written and the value kept — once per place in the text, however often the parser
  * passes it (a loop, a macro). False only when memory runs out (reported to d). */
 bool scene_color_finalise(scene *s, diag *d, diag_loc loc, const char *what, scene_color_use use, vec3 *c);
+
+/* POV-Ray's subsurface switch, once the whole scene is read: each texture whose finish has
+ * subsurface { } becomes a pov_sss texture (its interior's ior, or 1 as POV-Ray's atmosphere,
+ * warned about; the dipole, POV-Ray's profile) when global_settings has subsurface { }, and
+ * renders without it (warned about once) when not, as in POV-Ray 3.7. */
+void scene_resolve_pov_sss(scene *s, diag *d);
 
 /* Checks what the parser cannot check alone (index ranges, creases, camera, materials) and
  * reports every problem through d. Returns the number of errors found. */

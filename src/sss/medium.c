@@ -137,3 +137,29 @@ void sss_medium_derive(const sss_medium_spec *s, double eta, sss_medium *out)
 		out->albedo[c] = art[0], out->ld_mm[c] = art[1];
 	}
 }
+
+/* ---- POV-Ray's subsurface { translucency } (doc/language.md "POV-Ray's subsurface") ------------ */
+
+double sss_pov_fresnel_diffuse(double eta)
+{
+	if (eta < 1.0)
+		return eta * eta - pow(eta, 2.25);
+	double k = 1.0 - 1.0 / eta;
+	return (k + 3.0 * pow(k, 4.5)) / 4.0;
+}
+
+double sss_pov_alpha_prime(double rd, double eta)
+{
+	double f = sss_pov_fresnel_diffuse(eta);
+	double a = sss_dipole_alpha_prime_af(fmin(fmax(rd, 0.0), 1.0), (1.0 + f) / (1.0 - f));
+	return fmin(a, SSS_ALPHA_PRIME_MAX);
+}
+
+double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double eta)
+{
+	/* sigma_s' = 1/T, sigma_t' = 1/(T alpha'), sigma_a = (1 - alpha')/(T alpha'), so
+	 * 1/sigma_tr = 1/sqrt(3 sigma_a sigma_t') = T alpha' / sqrt(3 (1 - alpha')). */
+	double a = sss_pov_alpha_prime(rd, eta);
+	double ld = translucency_mm * a / sqrt(3.0 * (1.0 - a));
+	return fmax(ld, SSS_POV_MIN_RADIUS_FRACTION * translucency_mm);
+}

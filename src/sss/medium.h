@@ -85,4 +85,24 @@ void sss_medium_to_physical(double albedo, double ld_mm, double eta, double *sig
  * the other form derived from it. The preset, when there is one, must be known (asserted). */
 void sss_medium_derive(const sss_medium_spec *s, double eta, sss_medium *out);
 
+/* ---- POV-Ray's subsurface { translucency } ------------------------------------------------------ */
+
+/* POV-Ray 3.7's own approximation of the diffuse Fresnel reflectance F_dr (core/lighting/
+ * subsurface.h FresnelDiffuseReflectance, which replaces JMLH01's polynomial): for eta >= 1
+ * ((1 - 1/eta) + 3 (1 - 1/eta)^4.5) / 4, below 1 eta^2 - eta^2.25. 0 at eta = 1. */
+double sss_pov_fresnel_diffuse(double eta);
+/* The reduced albedo alpha' POV-Ray gives a diffuse reflectance R_d in [0, 1] (subsurface.cpp
+ * PrecomputedReducedAlbedo, which tabulates it at 100 steps): the inverse of JMLH01's R_d(alpha')
+ * (sss_dipole_albedo's formula) with A_F = (1 + F)/(1 - F), F = sss_pov_fresnel_diffuse(eta);
+ * here by bisection to 1e-15, held at SSS_ALPHA_PRIME_MAX. */
+double sss_pov_alpha_prime(double rd, double eta);
+/* The diffuse mean free path l_d = 1/sigma_tr (mm) of POV-Ray's medium for a translucency T (mm)
+ * and the diffuse reflectance rd = pigment * finish diffuse, boundary eta (trace.cpp
+ * ComputeSubsurfaceScattering: sigma_s' = 1/T, sigma_t' = sigma_s'/alpha', sigma_a = sigma_t' -
+ * sigma_s', sigma_tr = sqrt(3 sigma_a sigma_t')), in closed form T alpha' / sqrt(3 (1 - alpha')).
+ * An rd of 0 gives l_d 0, which no profile takes: l_d is held at SSS_POV_MIN_RADIUS_FRACTION T
+ * (such a channel reflects nothing, so its radius is never seen). T > 0. */
+double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double eta);
+#define SSS_POV_MIN_RADIUS_FRACTION 1e-9
+
 #endif

@@ -92,7 +92,12 @@ double sss_dipole_albedo(double alpha_prime, double eta)
 
 double sss_dipole_alpha_prime(double albedo, double eta)
 {
-	double a_f = dipole_boundary_a(eta), lo = 0.0, hi = 1.0;
+	return sss_dipole_alpha_prime_af(albedo, dipole_boundary_a(eta));
+}
+
+double sss_dipole_alpha_prime_af(double albedo, double a_f)
+{
+	double lo = 0.0, hi = 1.0;
 	if (!(albedo > 0.0))
 		return 0.0;
 	if (albedo >= 1.0)

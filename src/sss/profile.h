@@ -85,6 +85,9 @@ double sss_fresnel_moment1(double eta);
 double sss_dipole_albedo(double alpha_prime, double eta);
 /* The inverse of sss_dipole_albedo in alpha' (bisection to 1e-15), for albedo in [0, 1]. */
 double sss_dipole_alpha_prime(double albedo, double eta);
+/* The same inverse for a given boundary term A_F = (1 + F_dr)/(1 - F_dr) (>= 1) instead of eta's
+ * exact one: POV-Ray's translucency (medium.h) takes its own F_dr. */
+double sss_dipole_alpha_prime_af(double albedo, double a_f);
 
 /* Builds one channel from the physical form: reduced scattering and absorption coefficients in
  * mm^-1 and the relative index of refraction eta of the boundary. The multiple-scattering

@@ -191,3 +191,7 @@ quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
 sphere { 0, 1 texture { Layered } texture { pigment { rgbf <0, 1, 0, 0.5> } } }
 // rule: csg
 difference { intersection { sphere { 0, 1 } box { -1, 1 } } merge { cylinder { -x, x, 0.2 } plane { y, 0 inverse } } clipped_by { box { -2, 2 } } bounded_by { box { -2, 2 } } }
+// rule: subsurface_settings
+global_settings { subsurface { radiosity off } }
+// rule: normal_map, normal_entry, crackle_item
+sphere { 0, 1 pigment { crackle form <1, 0, 0> metric 1 offset 0.1 solid } normal { average normal_map { [1 bumps 0.5] [2 gradient x, 0.3 scale 2] } } }

@@ -1,7 +1,8 @@
 /* test_pattern: POV-Ray's patterns against values worked out by hand from POV-Ray 3.7's
  * definitions (source/core/material/pattern.cpp: each table row is the formula evaluated at that
  * point), the wave functions, the colour map's interpolation, block lists, pigment maps, warps,
- * image_map's planar/spherical/cylindrical mappings, and the noise's and turbulence's range. */
+ * image_map's planar/spherical/cylindrical mappings, the noise's and turbulence's range, crackle's
+ * form, metric and offset against a brute force, and average (pigments and normals). */
 #include "check.h"
 #include "scene/pattern.h"
 
@@ -394,9 +395,118 @@ static void check_normals(void)
 	CHECK(isfinite(v.x) && isfinite(v.y) && isfinite(v.z), "ripples at an odd point stay finite");
 }
 
+/* crackle (POV-Ray 3.7 CracklePattern::EvaluateRaw) against a brute force over the 9x9x9 cubes
+ * around each point, from the same feature points: the three nearest distances under the metric
+ * (sum |d|^m, then the m-th root), each with offset^m added, weighted by the form, clamped. */
+static double crackle_brute(dvec3 p, dvec3 form, double m, double offset)
+{
+	double d[3] = {1e300, 1e300, 1e300};
+	int cx = (int)floor(p.x), cy = (int)floor(p.y), cz = (int)floor(p.z);
+	for (int i = -4; i <= 4; i++)
+		for (int j = -4; j <= 4; j++)
+			for (int k = -4; k <= 4; k++) {
+				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k);
+				double s = pow(fabs(f.x - p.x), m) + pow(fabs(f.y - p.y), m) + pow(fabs(f.z - p.z), m);
+				if (s < d[0])
+					d[2] = d[1], d[1] = d[0], d[0] = s;
+				else if (s < d[1])
+					d[2] = d[1], d[1] = s;
+				else if (s < d[2])
+					d[2] = s;
+			}
+	double v = 0.0, w[3] = {form.x, form.y, form.z};
+	for (int c = 0; c < 3; c++)
+		v += w[c] * pow(d[c] + pow(offset, m), 1.0 / m);
+	return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+}
+
+static void check_crackle(void)
+{
+	struct { dvec3 form; double metric, offset; } cases[] = {
+		{{-1, 1, 0}, 2, 0},	 /* POV-Ray's default */
+		{{1, 0, 0}, 2, 0},	 /* the distance to the nearest point */
+		{{0, 0.5, 0.5}, 2, 0.3}, /* the 2nd and 3rd, offset */
+		{{-1, 1, 0}, 1, 0},	 /* Manhattan */
+		{{1, 0, 0}, 1, 0.2},
+		{{-1, 0.5, 0.7}, 3, 0.1}, /* a general metric */
+	};
+	int worst_case = -1;
+	double worst = 0.0;
+	for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+		pattern_node n = pattern_node_default(PATTERN_CRACKLE);
+		n.crackle_form = cases[c].form, n.crackle_metric = cases[c].metric, n.crackle_offset = cases[c].offset;
+		for (int i = 0; i < 200; i++) {
+			dvec3 p = d3(7.3 * sin(i * 1.7) + 0.11 * i, 5.1 * cos(i * 0.9) - 0.07 * i, 3.7 * sin(i * 2.3 + 1));
+			double got = pattern_raw(&n, p), want = crackle_brute(p, cases[c].form, cases[c].metric, cases[c].offset);
+			if (fabs(got - want) > worst)
+				worst = fabs(got - want), worst_case = (int)c;
+		}
+	}
+	CHECK(worst < 1e-12, "crackle against the brute force: worst difference %g (case %d)", worst, worst_case);
+	/* The default form through the metric 2 closed form at one point, by hand from the points. */
+	pattern_node n = pattern_node_default(PATTERN_CRACKLE);
+	dvec3 p = d3(0.5, 0.5, 0.5);
+	CHECK_NEAR(pattern_raw(&n, p), crackle_brute(p, d3(-1, 1, 0), 2, 0), 1e-12);
+	/* solid: one value per cell of the nearest point, so constant near a feature point. */
+	n.solid = true;
+	dvec3 f = pattern_crackle_point(2, -3, 1);
+	CHECK_NEAR(pattern_raw(&n, f), pattern_raw(&n, d3_add(f, d3(1e-4, -1e-4, 1e-4))), 0);
+}
+
+/* average (POV-Ray 3.7 ComputeAverage): the entries' colours weighted by their values over the
+ * weights' sum, whatever the point; an entry may be a pigment of its own. */
+static void check_average(void)
+{
+	pattern_node nodes[2] = {pattern_node_default(PATTERN_AVERAGE), pattern_node_default(PATTERN_GRADIENT)};
+	nodes[0].entry0 = 0, nodes[0].n_entries = 3;
+	nodes[1].vector = d3(1, 0, 0), nodes[1].entry0 = 3, nodes[1].n_entries = 2;
+	pattern_entry e[5] = {col(1, 1, 0, 0), col(2, 0, 1, 0), {.value = 1, .node = 1}, col(0, 0, 0, 0), col(1, 0, 0, 1)};
+	pattern_prog pg = {.nodes = nodes, .n_nodes = 2, .entries = e, .n_entries = 5};
+	float c[5];
+	pattern_eval(&pg, 0, d3(0.5, 7, -3), 0, c); /* (1 red + 2 green + 1 * 0.5 blue) / 4 */
+	check5("average of red 1, green 2, gradient 1", c, 0.25f, 0.5f, 0.125f);
+	pattern_eval(&pg, 0, d3(0.25, 0, 0), 0, c);
+	check5("and where the gradient is 0.25", c, 0.25f, 0.5f, 0.0625f);
+}
+
+/* A normal's normal_map: average weights the entries' perturbed normals (not normalised, as
+ * POV-Ray's NormalBlendMap::ComputeAverage); another pattern blends the two entries about its
+ * value by the map's weights and normalises (Perturb_Normal). The entries: gradient x normals of
+ * amounts 0.3 and 0.6, each alone computed first. */
+static void check_normal_map(void)
+{
+	pattern_node nodes[3] = {pattern_node_default(PATTERN_AVERAGE), pattern_node_default(PATTERN_GRADIENT),
+				 pattern_node_default(PATTERN_GRADIENT)};
+	for (int i = 1; i < 3; i++)
+		nodes[i].vector = d3(1, 0, 0), nodes[i].frequency = 0, nodes[i].bump_amount = 0.3 * i;
+	nodes[0].entry0 = 0, nodes[0].n_entries = 2;
+	pattern_entry e[2] = {{.value = 1, .node = 1}, {.value = 3, .node = 2}};
+	pattern_prog pg = {.nodes = nodes, .n_nodes = 3, .entries = e, .n_entries = 2};
+	dvec3 p = d3(0.2, 0.4, 0), v1 = d3(0, 1, 0), v2 = d3(0, 1, 0), v = d3(0, 1, 0);
+	pattern_perturb(&pg, 1, p, &v1);
+	pattern_perturb(&pg, 2, p, &v2);
+	CHECK(fabs(v1.x) > 1e-3 && fabs(v2.x - 2 * v1.x) < 1e-9, "the entries alone: %g, %g", v1.x, v2.x);
+	pattern_perturb(&pg, 0, p, &v);
+	dvec3 want = d3_scale(d3_add(v1, d3_scale(v2, 3)), 0.25);
+	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "average normal <%g, %g, %g>, want <%g, %g, %g>", v.x, v.y, v.z, want.x,
+	      want.y, want.z);
+	/* gradient y (value 0.4 at p) with normal_map [0 n1] [1 n2]: 0.6 n1 + 0.4 n2, normalised */
+	nodes[0] = pattern_node_default(PATTERN_GRADIENT);
+	nodes[0].vector = d3(0, 1, 0), nodes[0].entry0 = 0, nodes[0].n_entries = 2;
+	e[0].value = 0, e[1].value = 1;
+	v = d3(0, 1, 0);
+	pattern_perturb(&pg, 0, p, &v);
+	want = d3_normalize(d3_add(d3_scale(v1, 0.6), d3_scale(v2, 0.4)));
+	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "normal_map blend <%g, %g, %g>, want <%g, %g, %g>", v.x, v.y, v.z,
+	      want.x, want.y, want.z);
+}
+
 int main(void)
 {
 	check_normals();
+	check_crackle();
+	check_average();
+	check_normal_map();
 	check_tolerance();
 	check_pigment_pattern();
 	check_layers();

@@ -396,11 +396,35 @@ static void test_volume(void)
 	}
 }
 
+/* POV-Ray's subsurface syntax on the same slab: pigment 0.75 * diffuse 0.8 is the albedo 0.6, a
+ * grey translucency gives equal radii (as the wax slab's) and ior 1 no Fresnel, so circle tracing
+ * gives A E cos / pi exactly at 1 spp; the finish's Lambert lobe is gone (else the slab would show
+ * about twice that). Without global subsurface the same finish is the plain Lambert surface of the
+ * same mean (the diffusion's albedo is POV-Ray's R_d = pigment * diffuse). */
+static void test_pov_subsurface(void)
+{
+	const char *tex = "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { rgb 0.75 } finish { diffuse 0.8 "
+			  "subsurface { translucency 1.5 } } } interior { ior 1 } }\n";
+	char on[1024], off[1024];
+	snprintf(on, sizeof on, "global_settings { subsurface { } }\n" SLAB_LIGHT "%s", tex);
+	snprintf(off, sizeof off, SLAB_LIGHT "%s", tex);
+	double expect = 0.6 * (10.0 / sqrt(125.0)) / M_PI;
+	image_stats a, b;
+	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
+	CHECK(a.max - a.min <= 1e-4 * expect && fabs(a.mean - expect) <= 1e-4 * expect,
+	      "POV-Ray subsurface slab at 1 spp: pixels from %.9g to %.9g, expected all %.9g", a.min, a.max, expect);
+	CHECK(a.nohit == 0 && a.circles == W * H, "%lu circles, %lu without a hit", a.circles, a.nohit);
+	render(off, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &b);
+	CHECK(b.circles == 0 && fabs(b.mean - expect) <= 1e-4 * expect,
+	      "without global subsurface: %lu circles, mean %.9g, expected %.9g (Lambert)", b.circles, b.mean, expect);
+}
+
 int main(void)
 {
 	if (!mkdtemp(dir))
 		return 99;
 	test_slab_zero_variance();
+	test_pov_subsurface();
 	test_small_radius();
 	test_furnace();
 	test_extremes();

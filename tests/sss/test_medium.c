@@ -157,6 +157,47 @@ static void check_names(void)
 	      "the names of the scene language");
 }
 
+/* POV-Ray's translucency (medium.h): its F_dr approximation by hand at a few iors, and l_d for
+ * hand-derived cases (an independent Python bisection of the same R_d with POV-Ray's A_F, then
+ * T alpha' / sqrt(3 (1 - alpha')) and, as a cross-check, 1/sqrt(3 sigma_a sigma_t') from
+ * sigma_s' = 1/T); the artist -> physical inversion with POV-Ray's own F_dr gives back sigma_s' =
+ * 1/T. */
+static void check_pov_translucency(void)
+{
+	CHECK_NEAR(sss_pov_fresnel_diffuse(1.0), 0.0, 1e-15);
+	/* ((1 - 1/1.5) + 3 (1/3)^4.5) / 4 = (0.333333 + 3 * 0.0071277) / 4 */
+	CHECK_NEAR(sss_pov_fresnel_diffuse(1.5), 0.08867916915916321, 1e-12);
+	CHECK_NEAR(sss_pov_fresnel_diffuse(1.45), 0.08146200874334836, 1e-12);
+	CHECK_NEAR(sss_pov_fresnel_diffuse(0.8), 0.03472537023796751, 1e-12); /* 0.64 - 0.8^2.25 */
+	struct { double rd, t_mm, eta, alpha_p, ld_mm; } c[] = {
+		{0.5, 1.0, 1.5, 0.9509911282904941, 2.480153073223057},
+		{0.48, 2.5, 1.45, 0.9446513337273659, 5.795585848145875},	/* subsurface.pov's candle, red */
+		{0.006, 0.5, 1.45, 0.060037604588687274, 0.017876294201699196}, /* and its blue */
+		{0.9, 0.4562, 1.5, 0.9988546047894247, 7.773547349912382},
+		{0.3, 1.0, 1.0, 0.8452371414148621, 1.2404651677009542},
+	};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		double a = sss_pov_alpha_prime(c[i].rd, c[i].eta);
+		double ld = sss_pov_translucency_radius_mm(c[i].rd, c[i].t_mm, c[i].eta);
+		CHECK(fabs(a - c[i].alpha_p) < 1e-12, "case %zu: alpha' %.15g, by hand %.15g", i, a, c[i].alpha_p);
+		CHECK(fabs(ld / c[i].ld_mm - 1.0) < 1e-9, "case %zu: l_d %.15g mm, by hand %.15g", i, ld, c[i].ld_mm);
+		double st = 1.0 / (c[i].t_mm * a), sa = st - 1.0 / c[i].t_mm;
+		CHECK_NEAR(ld, 1.0 / sqrt(3.0 * sa * st), 1e-12 * ld);
+	}
+	/* The bounds: rd 0 keeps a positive radius, rd 1 a finite one; l_d grows with rd and with T. */
+	double l0 = sss_pov_translucency_radius_mm(0.0, 2.0, 1.5), l1 = sss_pov_translucency_radius_mm(1.0, 2.0, 1.5);
+	CHECK(l0 > 0.0 && l0 <= 2.0 * SSS_POV_MIN_RADIUS_FRACTION * 1.0000001, "rd 0: l_d %g", l0);
+	CHECK(isfinite(l1) && l1 > 1.0, "rd 1: l_d %g", l1);
+	double prev = 0.0;
+	for (int k = 1; k <= 99; k++) {
+		double l = sss_pov_translucency_radius_mm(k / 100.0, 1.0, 1.3);
+		CHECK(l > prev, "l_d not increasing at rd %d/100: %g after %g", k, l, prev);
+		prev = l;
+	}
+	CHECK_NEAR(sss_pov_translucency_radius_mm(0.4, 3.0, 1.3), 3.0 * sss_pov_translucency_radius_mm(0.4, 1.0, 1.3),
+		   1e-12);
+}
+
 int main(void)
 {
 	check_presets();
@@ -164,5 +205,6 @@ int main(void)
 	check_round_trips();
 	check_derive();
 	check_names();
+	check_pov_translucency();
 	return check_done("test_medium");
 }

@@ -1,0 +1,2 @@
+// average needs the entries it averages.
+sphere { 0, 1 pigment { average } }
