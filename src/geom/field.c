@@ -221,15 +221,30 @@ static void project(const shape_field *F, shape_builder *b, double h)
 	}
 }
 
+/* The first-order distance |F| / |grad F| at p, or 0 where it cannot be told. */
+static double field_dist(const shape_field *F, dvec3 p)
+{
+	dvec3 g;
+	double f = F->eval(F->ctx, p, &g), gl = d3_length(g);
+	return gl > 0 && isfinite(f / gl) ? fabs(f) / gl : 0.0;
+}
+
 double shape_field_error(const shape_field *F, const shape_builder *b)
 {
+	/* The centre and the edges' midpoints of each triangle: marching tetrahedra make slivers,
+	 * whose largest distance is at the midpoint of the long edge, not at the centre. */
 	double w = 0;
 	for (uint32_t t = 0; t < b->nt; t++) {
 		const uint32_t *i = &b->idx[3 * t];
-		dvec3 c = d3_scale(v3_to_d3(v3_add(v3_add(b->pos[i[0]], b->pos[i[1]]), b->pos[i[2]])), 1.0 / 3), g;
-		double f = F->eval(F->ctx, c, &g), gl = d3_length(g);
-		if (gl > 0 && isfinite(f / gl))
-			w = fmax(w, fabs(f) / gl);
+		dvec3 p0 = v3_to_d3(b->pos[i[0]]), p1 = v3_to_d3(b->pos[i[1]]), p2 = v3_to_d3(b->pos[i[2]]);
+		dvec3 c = d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3);
+		if (F->has_region && (c.x < F->region_lo.x || c.y < F->region_lo.y || c.z < F->region_lo.z ||
+				      c.x > F->region_hi.x || c.y > F->region_hi.y || c.z > F->region_hi.z))
+			continue;
+		w = fmax(w, field_dist(F, c));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p0, p1), 0.5)));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p1, p2), 0.5)));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p2, p0), 0.5)));
 	}
 	return w;
 }
