@@ -179,6 +179,14 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 /* The largest distance of b's triangles from F's zero set, to first order (|F| / |grad F|) at
  * their centres and edge midpoints (within F's region when it has one). */
 double shape_field_error(const shape_field *F, const shape_builder *b);
+/* Adaptive refinement where the grid missed: for up to `rounds` rounds, every triangle of b whose
+ * distance (as shape_field_error measures it) is above tol has its edges split at the zero set
+ * near their midpoints (Newton steps along F's gradient), and every triangle sharing a split edge
+ * is split with it (red-green: 2, 3 or 4 triangles), so the mesh stays closed. Stops early when
+ * every triangle is within tol, or before passing the triangle limit. Returns the distance reached
+ * (shape_field_error's measure, each triangle measured once), the rounds made in *rounds_made
+ * (may be NULL). F needs a gradient that Newton steps can follow (the blob's). */
+double shape_field_refine(const shape_field *F, shape_builder *b, double tol, int rounds, uint32_t *rounds_made);
 /* h grown until a grid of ext at step h has at most max_points points. */
 double shape_field_fit_step(dvec3 ext, double h, size_t max_points);
 
