@@ -221,16 +221,208 @@ static void project(const shape_field *F, shape_builder *b, double h)
 	}
 }
 
+/* The first-order distance |F| / |grad F| at p, or 0 where it cannot be told. */
+static double field_dist(const shape_field *F, dvec3 p)
+{
+	dvec3 g;
+	double f = F->eval(F->ctx, p, &g), gl = d3_length(g);
+	return gl > 0 && isfinite(f / gl) ? fabs(f) / gl : 0.0;
+}
+
 double shape_field_error(const shape_field *F, const shape_builder *b)
 {
+	/* The centre and the edges' midpoints of each triangle: marching tetrahedra make slivers,
+	 * whose largest distance is at the midpoint of the long edge, not at the centre. */
 	double w = 0;
 	for (uint32_t t = 0; t < b->nt; t++) {
 		const uint32_t *i = &b->idx[3 * t];
-		dvec3 c = d3_scale(v3_to_d3(v3_add(v3_add(b->pos[i[0]], b->pos[i[1]]), b->pos[i[2]])), 1.0 / 3), g;
-		double f = F->eval(F->ctx, c, &g), gl = d3_length(g);
-		if (gl > 0 && isfinite(f / gl))
-			w = fmax(w, fabs(f) / gl);
+		dvec3 p0 = v3_to_d3(b->pos[i[0]]), p1 = v3_to_d3(b->pos[i[1]]), p2 = v3_to_d3(b->pos[i[2]]);
+		dvec3 c = d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3);
+		if (F->has_region && (c.x < F->region_lo.x || c.y < F->region_lo.y || c.z < F->region_lo.z ||
+				      c.x > F->region_hi.x || c.y > F->region_hi.y || c.z > F->region_hi.z))
+			continue;
+		w = fmax(w, field_dist(F, c));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p0, p1), 0.5)));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p1, p2), 0.5)));
+		w = fmax(w, field_dist(F, d3_scale(d3_add(p2, p0), 0.5)));
 	}
+	return w;
+}
+
+/* ---- refinement where the distance is missed ---------------------------------------------- */
+
+/* The first-order distance of triangle t of b (its centre and edge midpoints). */
+static double tri_dist(const shape_field *F, const shape_builder *b, uint32_t t)
+{
+	const uint32_t *i = &b->idx[3 * (size_t)t];
+	dvec3 p0 = v3_to_d3(b->pos[i[0]]), p1 = v3_to_d3(b->pos[i[1]]), p2 = v3_to_d3(b->pos[i[2]]);
+	double w = field_dist(F, d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3));
+	w = fmax(w, field_dist(F, d3_scale(d3_add(p0, p1), 0.5)));
+	w = fmax(w, field_dist(F, d3_scale(d3_add(p1, p2), 0.5)));
+	return fmax(w, field_dist(F, d3_scale(d3_add(p2, p0), 0.5)));
+}
+
+/* The slot of edge key k in m (open addressing; m->key[slot] == k when it was there). */
+static size_t emap_slot(const edge_map *m, uint64_t k)
+{
+	size_t h = (size_t)(k * 0x9E3779B97F4A7C15ull) & (m->cap - 1);
+	while (m->key[h] != UINT64_MAX && m->key[h] != k)
+		h = (h + 1) & (m->cap - 1);
+	return h;
+}
+
+static uint64_t ekey(uint32_t a, uint32_t b) { return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a; }
+
+/* The point of the zero set near the midpoint of a b: Newton steps along the gradient, in all at
+ * most half the edge's length; the midpoint itself where they do not come nearer. */
+static dvec3 mid_on_surface(const shape_field *F, dvec3 a, dvec3 b, dvec3 *n)
+{
+	dvec3 m = d3_scale(d3_add(a, b), 0.5), p = m, g;
+	double lim = 0.5 * d3_length(d3_sub(b, a)), f0 = field_dist(F, m);
+	for (int it = 0; it < FIELD_NEWTON_STEPS + 2; it++) {
+		double f = F->eval(F->ctx, p, &g), g2 = d3_dot(g, g);
+		if (!(g2 > 0) || !isfinite(f))
+			break;
+		p = d3_sub(p, d3_scale(g, f / g2));
+	}
+	dvec3 mv = d3_sub(p, m);
+	double l = d3_length(mv);
+	if (!(l <= lim))
+		p = d3_add(m, d3_scale(mv, lim / l));
+	if (!(field_dist(F, p) <= f0))
+		p = m;
+	F->eval(F->ctx, p, &g);
+	*n = d3_scale(g, -1);
+	return p;
+}
+
+double shape_field_refine(const shape_field *F, shape_builder *b, double tol, int rounds, uint32_t *rounds_made)
+{
+	uint32_t done = 0;
+	/* dirty: made or changed by the last round (at first every triangle); only those are
+	 * measured, the others keep their distance */
+	uint8_t *dirty = mem_alloc(b->nt ? b->nt : 1, 1);
+	float *dist = mem_alloc(b->nt ? b->nt : 1, sizeof *dist);
+	if (!dirty || !dist) {
+		mem_free(dirty), mem_free(dist);
+		b->failed = true;
+		return 0;
+	}
+	memset(dirty, 1, b->nt ? b->nt : 1);
+	for (int r = 0; r < rounds && !b->failed; r++) {
+		/* the edges of every triangle that misses tol, each split at its point on the surface */
+		edge_map m = {0};
+		uint32_t nt = b->nt, bad = 0;
+		uint8_t *miss = mem_calloc(nt ? nt : 1, 1);
+		if (!miss) {
+			b->failed = true;
+			break;
+		}
+		for (uint32_t t = 0; t < nt; t++) {
+			if (dirty[t])
+				dist[t] = (float)tri_dist(F, b, t), dirty[t] = 0;
+			bad += miss[t] = dist[t] > tol;
+		}
+		if (!bad) {
+			mem_free(miss);
+			break;
+		}
+		bool ok = true;
+		for (uint32_t t = 0; ok && t < nt; t++)
+			for (int k = 0; ok && miss[t] && k < 3; k++) {
+				if (2 * (m.n + 1) > m.cap && !map_grow(&m)) {
+					ok = false;
+					break;
+				}
+				uint32_t a = b->idx[3 * (size_t)t + k], c = b->idx[3 * (size_t)t + (k + 1) % 3];
+				size_t h = emap_slot(&m, ekey(a, c));
+				if (m.key[h] == UINT64_MAX)
+					m.key[h] = ekey(a, c), m.val[h] = UINT32_MAX, m.n++;
+			}
+		/* every triangle with k split edges becomes k + 1: counted against the limit first */
+		size_t add = 0;
+		for (uint32_t t = 0; ok && t < nt; t++)
+			for (int k = 0; k < 3; k++) {
+				uint32_t a = b->idx[3 * (size_t)t + k], c = b->idx[3 * (size_t)t + (k + 1) % 3];
+				add += m.key[emap_slot(&m, ekey(a, c))] != UINT64_MAX;
+			}
+		if (!ok || (size_t)nt + add >= SHAPE_MAX_TRIANGLES) {
+			mem_free(miss), mem_free(m.key), mem_free(m.val);
+			if (!ok)
+				b->failed = true;
+			break; /* the limit: keep the mesh as it is, its distance measured */
+		}
+		uint32_t *idx = mem_alloc(3 * ((size_t)nt + add), sizeof *idx);
+		uint8_t *nd = mem_alloc((size_t)nt + add, 1);
+		float *ndist = mem_alloc((size_t)nt + add, sizeof *ndist);
+		if (!idx || !nd || !ndist) {
+			mem_free(miss), mem_free(m.key), mem_free(m.val), mem_free(idx), mem_free(nd), mem_free(ndist);
+			b->failed = true;
+			break;
+		}
+		for (size_t h = 0; h < m.cap; h++)
+			if (m.key[h] != UINT64_MAX) {
+				uint32_t a = (uint32_t)(m.key[h] >> 32), c = (uint32_t)m.key[h];
+				dvec3 n, p = mid_on_surface(F, v3_to_d3(b->pos[a]), v3_to_d3(b->pos[c]), &n);
+				m.val[h] = sb_vertex(b, p, n, 0, 0);
+			}
+		size_t o = 0;
+		for (uint32_t t = 0; t < nt && !b->failed; t++) {
+			uint32_t v[3], mid[3];
+			int nm = 0, first = -1;
+			for (int k = 0; k < 3; k++)
+				v[k] = b->idx[3 * (size_t)t + k];
+			for (int k = 0; k < 3; k++) {
+				size_t h = emap_slot(&m, ekey(v[k], v[(k + 1) % 3]));
+				mid[k] = m.key[h] != UINT64_MAX ? m.val[h] : UINT32_MAX;
+				nm += mid[k] != UINT32_MAX;
+			}
+#define TRI(x, y, z) (nd[o / 3] = nm > 0, ndist[o / 3] = dist[t], idx[o++] = (x), idx[o++] = (y), idx[o++] = (z))
+			if (nm == 0) {
+				TRI(v[0], v[1], v[2]);
+			} else if (nm == 3) {
+				TRI(v[0], mid[0], mid[2]), TRI(mid[0], v[1], mid[1]), TRI(mid[2], mid[1], v[2]);
+				TRI(mid[0], mid[1], mid[2]);
+			} else if (nm == 1) { /* the split edge k: v[k] mid v[k+2], mid v[k+1] v[k+2] */
+				for (int k = 0; k < 3; k++)
+					if (mid[k] != UINT32_MAX)
+						first = k;
+				uint32_t a = v[first], c = v[(first + 1) % 3], e = v[(first + 2) % 3];
+				TRI(a, mid[first], e), TRI(mid[first], c, e);
+			} else { /* two: the unsplit edge k; the quad left split along its shorter diagonal */
+				for (int k = 0; k < 3; k++)
+					if (mid[k] == UINT32_MAX)
+						first = k;
+				/* rotate so the unsplit edge is v2 v0: split edges v0 v1 (m0) and v1 v2 (m1) */
+				int k0 = (first + 1) % 3;
+				uint32_t a = v[k0], c = v[(k0 + 1) % 3], e = v[(k0 + 2) % 3];
+				uint32_t m0 = mid[k0], m1 = mid[(k0 + 1) % 3];
+				TRI(m0, c, m1);
+				double d1 = d3_length(d3_sub(v3_to_d3(b->pos[a]), v3_to_d3(b->pos[m1])));
+				double d2 = d3_length(d3_sub(v3_to_d3(b->pos[m0]), v3_to_d3(b->pos[e])));
+				if (d1 <= d2)
+					TRI(a, m0, m1), TRI(a, m1, e);
+				else
+					TRI(a, m0, e), TRI(m0, m1, e);
+			}
+#undef TRI
+		}
+		mem_free(miss), mem_free(m.key), mem_free(m.val);
+		if (b->failed) {
+			mem_free(idx), mem_free(nd), mem_free(ndist);
+			break;
+		}
+		mem_free(b->idx), mem_free(dirty), mem_free(dist);
+		b->idx = idx, b->nt = (uint32_t)(o / 3), b->cap_t = b->nt;
+		dirty = nd, dist = ndist;
+		done++;
+	}
+	double w = 0;
+	for (uint32_t t = 0; t < b->nt && !b->failed; t++)
+		w = fmax(w, dirty[t] ? tri_dist(F, b, t) : dist[t]);
+	mem_free(dirty), mem_free(dist);
+	if (rounds_made)
+		*rounds_made = done;
 	return w;
 }
 

@@ -138,30 +138,32 @@ static double drop_cut(iso_ctx *c, shape_builder *b, double h)
 	return rim;
 }
 
-bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
+bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, const char *what, mesh *out, double *tol_out,
+			    diag *d, diag_loc loc)
 {
 	dvec3 lo, hi;
 	iso_bounds(s, &lo, &hi);
 	dvec3 ext = d3_sub(hi, lo);
 	double size = fmax(ext.x, fmax(ext.y, ext.z));
 	if (!(size > 0)) {
-		diag_error(d, loc, "the isosurface's container is empty");
+		diag_error(d, loc, "the %s's container is empty", what);
 		return false;
 	}
 	/* The blob's rule with a curvature radius of an eighth of the container: a step h gives
-	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then once more at the step the measured
-	 * distance asks for, when it was missed and the grid allows it. */
+	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then again (twice at most) at the step
+	 * the measured distance asks for, when it was missed and the grid allows it. */
 	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
 	iso_ctx c = {.s = s, .eps = 0};
 	/* the golden ratio's fraction of a cell: the box's faces fall between grid points (a grid
 	 * point on the zero set would make degenerate triangles there) */
-	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true, .shift = 0.6180339887};
+	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true, .shift = 0.6180339887,
+			 .has_region = s->has_region, .region_lo = s->region_lo, .region_hi = s->region_hi};
 	shape_builder b;
 	double got = 0;
-	for (int pass = 0; pass < 2; pass++) {
+	for (int pass = 0; pass < 3; pass++) {
 		h = shape_field_fit_step(ext, h, ISO_MAX_GRID_POINTS);
 		c.eps = 1e-3 * h;
-		if (!shape_field_polygonise(&F, lo, hi, h, "isosurface", &b, d, loc))
+		if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc))
 			return false;
 		if (c.failed) {
 			sb_free(&b);
@@ -173,7 +175,7 @@ bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 		if (s->open && !b.failed)
 			rim = drop_cut(&c, &b, h);
 		got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
-		if (b.failed || got <= 1.5 * acc->tol || pass == 1)
+		if (b.failed || got <= 1.5 * acc->tol || pass == 2)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);
 		if (shape_field_fit_step(ext, h2, ISO_MAX_GRID_POINTS) >= h)
@@ -187,5 +189,10 @@ bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out,
 			     "would miss parts of the surface; circe's mesh does not depend on it)",
 			     c.max_grad, s->max_gradient);
 	*tol_out = fmax(acc->tol, got);
-	return sb_finish(&b, out, false, "isosurface", d, loc);
+	return sb_finish(&b, out, false, what, d, loc);
+}
+
+bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc)
+{
+	return shape_isosurface_named(s, acc, "isosurface", out, tol_out, d, loc);
 }

@@ -711,6 +711,54 @@ shape_quadric_kind shape_quadric_bound(const double q[10], dvec3 *centre, double
 	return k;
 }
 
+bool shape_quadric_box(const double q[10], dvec3 *lo, dvec3 *hi)
+{
+	double a[3][3] = {{q[0], q[3] / 2, q[4] / 2}, {q[3] / 2, q[1], q[5] / 2}, {q[4] / 2, q[5] / 2, q[2]}};
+	double l[3], v[3][3], g[3] = {q[6], q[7], q[8]};
+	jacobi3(a, l, v);
+	double lmax = fmax(fabs(l[0]), fmax(fabs(l[1]), fabs(l[2]))), glen = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+	*lo = d3(-INFINITY, -INFINITY, -INFINITY), *hi = d3(INFINITY, INFINITY, INFINITY);
+	if (!(lmax > 0.0) || !isfinite(lmax))
+		return true; /* linear: a half-space (or all or nothing) */
+	/* The solid P <= 0 is bounded along some axis only where the quadratic part is positive
+	 * semi-definite (an elliptic cylinder, an ellipsoid); a negative eigenvalue (a cone, a
+	 * hyperboloid, the outside of a cylinder) or a linear term along a null direction (a paraboloid)
+	 * leaves every axis unbounded. */
+	bool null[3];
+	double cl[3], k = -q[9];
+	for (int i = 0; i < 3; i++) {
+		double gl = v[0][i] * g[0] + v[1][i] * g[1] + v[2][i] * g[2];
+		null[i] = fabs(l[i]) <= 1e-12 * lmax;
+		if (!null[i] && l[i] < 0.0)
+			return true;
+		if (null[i] && fabs(gl) > 1e-12 * (glen + fabs(q[9]) + lmax))
+			return true;
+		cl[i] = null[i] ? 0.0 : -gl / (2.0 * l[i]);
+		k += null[i] ? 0.0 : l[i] * cl[i] * cl[i];
+	}
+	if (k < 0.0)
+		return false; /* (x - c)^T Q (x - c) <= k < 0: no points */
+	double c[3] = {0, 0, 0};
+	for (int i = 0; i < 3; i++)
+		for (int r = 0; r < 3; r++)
+			c[r] += v[r][i] * cl[i];
+	double plo[3] = {-INFINITY, -INFINITY, -INFINITY}, phi[3] = {INFINITY, INFINITY, INFINITY};
+	for (int r = 0; r < 3; r++) { /* along axis r: c_r +- sqrt(k sum_i v_ri^2 / l_i), if no null direction has a part along it */
+		double s = 0.0;
+		bool bounded = true;
+		for (int i = 0; i < 3; i++) {
+			if (null[i])
+				bounded = bounded && fabs(v[r][i]) <= 1e-9;
+			else
+				s += v[r][i] * v[r][i] / l[i];
+		}
+		if (bounded)
+			plo[r] = c[r] - sqrt(k * s), phi[r] = c[r] + sqrt(k * s);
+	}
+	*lo = d3(plo[0], plo[1], plo[2]), *hi = d3(phi[0], phi[1], phi[2]);
+	return true;
+}
+
 bool shape_quadric(const double q[10], const shape_accuracy *acc, mesh *out, double *err, shape_quadric_kind *kind,
 		   diag *d, diag_loc loc)
 {

@@ -74,6 +74,8 @@ typedef struct shape_desc {
 	dvec3 box_lo, box_hi;
 	double sphere_r;
 	double max_gradient, iso_accuracy, evaluate[3];
+	bool has_region; /* the distance reached measured only inside [region_lo, region_hi] (shape_field's) */
+	dvec3 region_lo, region_hi;
 	bool has_evaluate, all_intersections;
 	int max_trace;
 	/* parametric: x, y and z as functions of (u, v) (fn called with fn_ctxs[k] and <u, v, 0>) over
@@ -162,6 +164,11 @@ typedef struct shape_field {
 	const void *ctx;
 	bool on_edges;
 	double shift;
+	/* has_region: the distance reached is measured only at triangles whose centre lies in
+	 * [region_lo, region_hi] (a polynomial surface's box within its grid: what lies outside is cut
+	 * away by its CSG) */
+	bool has_region;
+	dvec3 region_lo, region_hi;
 } shape_field;
 /* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
  * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).
@@ -169,8 +176,17 @@ typedef struct shape_field {
  * runs out; b->failed when making them failed. */
 bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, const char *what, shape_builder *b,
 			    diag *d, diag_loc loc);
-/* The largest distance of b's triangle centres from F's zero set, to first order (|F| / |grad F|). */
+/* The largest distance of b's triangles from F's zero set, to first order (|F| / |grad F|) at
+ * their centres and edge midpoints (within F's region when it has one). */
 double shape_field_error(const shape_field *F, const shape_builder *b);
+/* Adaptive refinement where the grid missed: for up to `rounds` rounds, every triangle of b whose
+ * distance (as shape_field_error measures it) is above tol has its edges split at the zero set
+ * near their midpoints (Newton steps along F's gradient), and every triangle sharing a split edge
+ * is split with it (red-green: 2, 3 or 4 triangles), so the mesh stays closed. Stops early when
+ * every triangle is within tol, or before passing the triangle limit. Returns the distance reached
+ * (shape_field_error's measure, each triangle measured once), the rounds made in *rounds_made
+ * (may be NULL). F needs a gradient that Newton steps can follow (the blob's). */
+double shape_field_refine(const shape_field *F, shape_builder *b, double tol, int rounds, uint32_t *rounds_made);
 /* h grown until a grid of ext at step h has at most max_points points. */
 double shape_field_fit_step(dvec3 ext, double h, size_t max_points);
 
@@ -182,6 +198,9 @@ bool shape_blob(const shape_desc *s, const shape_accuracy *acc, mesh *out, doubl
 bool shape_text(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_bicubic(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc);
 bool shape_isosurface(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
+/* The same, its messages naming the shape `what` (polysurf.c's quadric, cubic, quartic and poly). */
+bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, const char *what, mesh *out, double *tol_out,
+			    diag *d, diag_loc loc);
 bool shape_julia(const shape_desc *s, const shape_accuracy *acc, mesh *out, double *tol_out, diag *d, diag_loc loc);
 /* POV-Ray's julia_fractal bound: the radius of its sphere (Fractal::Compute_BBox) and the exit value. */
 double shape_julia_radius(const shape_desc *s, double *exit_value);

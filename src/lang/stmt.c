@@ -1173,6 +1173,8 @@ typedef struct mods {
 	diag_loc clip_loc;
 	scene_object *bound; /* bounded_by's objects, kept for a clipped_by { bounded_by } */
 	size_t n_bound;
+	diag_loc bound_loc;
+	bool bound_clips; /* the bound's objects are clipping objects already */
 } mods;
 
 /* No CSG solid nests deeper than this (its evaluation walks the path of each hit). */
@@ -1236,11 +1238,36 @@ static bool clip_objects(parser *p, diag_loc open, const char *what, uint32_t id
 	return ok;
 }
 
+/* The bound's objects made clipping objects (one operand of the clip node, as one union). */
+static bool bound_clips(parser *p, mods *m, diag_loc kw)
+{
+	if (m->bound_clips)
+		return true;
+	m->bound_clips = true;
+	if (!m->clip_id)
+		m->clip_id = ++p->sc->csg_ids, m->clip_operands = 1, m->clip_loc = kw;
+	scene_object *all = arena_zalloc(&p->sc->arena, m->n_clip + m->n_bound, sizeof *all);
+	if (!all)
+		return lang_error(p, kw, "out of memory");
+	if (m->n_clip)
+		memcpy(all, m->clip, m->n_clip * sizeof *all);
+	memcpy(all + m->n_clip, m->bound, m->n_bound * sizeof *all);
+	for (size_t i = 0; i < m->n_bound; i++) { /* the bound's transforms were undone already */
+		all[m->n_clip + i].clip_only = true;
+		TRY(csg_prepend(p, &all[m->n_clip + i], 1,
+				(scene_csg_step){m->clip_id, m->clip_operands, SCENE_CSG_INTERSECTION, false, kw}));
+	}
+	m->clip_operands++;
+	m->clip = all, m->n_clip += m->n_bound;
+	return true;
+}
+
 /* clipped_by = "clipped_by" "{" ( object_item { object_item } | "bounded_by" ) "}"
  * bounded_by = "bounded_by" "{" ( object_item { object_item } | "clipped_by" ) "}"
  * POV-Ray's clipped_by keeps the item's surface inside every clipping object (their surfaces are
  * not seen); bounded_by is a hint for its own intersection tests, which circe needs not: read,
- * and kept only for a clipped_by { bounded_by } after it. Transforms after the block move the
+ * and kept for a clipped_by { bounded_by } after it, and to clip a quadric, cubic, quartic or poly
+ * (csg_mods: circe polygonises those inside their bound). Transforms after the block move the
  * clipping objects with the item; those before it do not. */
 static bool clip_block(parser *p, mods *m, bool clip)
 {
@@ -1257,28 +1284,15 @@ static bool clip_block(parser *p, mods *m, bool clip)
 			return true;
 		if (!m->n_bound)
 			return lang_error(p, t.loc, "'clipped_by { bounded_by }' needs a bounded_by before it");
-		if (!m->clip_id)
-			m->clip_id = ++p->sc->csg_ids, m->clip_operands = 1, m->clip_loc = kw;
-		scene_object *all = arena_zalloc(&p->sc->arena, m->n_clip + m->n_bound, sizeof *all);
-		if (!all)
-			return lang_error(p, kw, "out of memory");
-		if (m->n_clip)
-			memcpy(all, m->clip, m->n_clip * sizeof *all);
-		memcpy(all + m->n_clip, m->bound, m->n_bound * sizeof *all);
-		for (size_t i = 0; i < m->n_bound; i++) { /* the bound's transforms were undone already */
-			all[m->n_clip + i].clip_only = true;
-			TRY(csg_prepend(p, &all[m->n_clip + i], 1,
-					(scene_csg_step){m->clip_id, m->clip_operands, SCENE_CSG_INTERSECTION, false, kw}));
-		}
-		m->clip_operands++; /* the bound's objects clip as one union */
-		m->clip = all, m->n_clip += m->n_bound;
-		return true;
+		return bound_clips(p, m, kw);
 	}
 	if (clip && !m->clip_id)
 		m->clip_id = ++p->sc->csg_ids, m->clip_operands = 1, m->clip_loc = kw;
 	if (clip)
 		TRY(clip_objects(p, open, what, m->clip_id, &m->clip_operands, &m->clip, &m->n_clip));
-	else
+	else if (!m->n_bound)
+		m->bound_loc = kw;
+	if (!clip)
 		TRY(clip_objects(p, open, what, 0, NULL, &m->bound, &m->n_bound));
 	scene_object *objs = clip ? m->clip : m->bound;
 	size_t n = clip ? m->n_clip : m->n_bound;
@@ -1394,12 +1408,20 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 	return true;
 }
 
-/* The CSG modifiers of an item (before apply_mods): clipped_by makes the item operand 0 of an
- * intersection whose other operands are the clipping objects; inverse toggles the item's own
+/* The CSG modifiers of an item (before apply_mods): clipped_by (and bounded_by on a quadric,
+ * cubic, quartic or poly) makes the item operand 0 of an intersection whose other operands are the
+ * clipping objects; inverse toggles the item's own
  * inverse when it is one object, its CSG node's when it is one solid, else makes its objects one
  * inverted union. */
 static bool csg_mods(parser *p, vecbuf *out, size_t start, mods *m, diag_loc kw)
 {
+	bool poly = false; /* a polynomial surface is polygonised inside its bound: it clips it */
+	for (size_t i = start; i < out->len; i++) {
+		scene_shape_kind k = VECBUF_AT(out, scene_object, i).geom->kind;
+		poly |= k == SHAPE_QUADRIC || k == SHAPE_POLY;
+	}
+	if (poly && m->n_bound)
+		TRY(bound_clips(p, m, m->bound_loc));
 	if (m->n_clip) {
 		TRY(csg_prepend(p, &VECBUF_AT(out, scene_object, start), out->len - start,
 				(scene_csg_step){m->clip_id, 0, SCENE_CSG_INTERSECTION, false, m->clip_loc}));
