@@ -159,6 +159,9 @@ typedef struct render_sample {
 	uint32_t sss_nohit;    /* of them, those that found no entry point (no hit; a walk lost or at
 				* its step bound): the path ends there */
 	uint32_t sss_overflow; /* searches with more hits than kept (the first ones are used) */
+	uint32_t sss_walks;    /* searches that were volume walks (volume; auto where it walked) */
+	uint32_t sss_walk_dropped; /* of them, walks that reached SSS_WALK_MAX_STEPS: dropped (weight 0,
+				    * also in sss_nohit), biased low, so counted and printed */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number. May return non-finite
