@@ -37,7 +37,7 @@ enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_SCENE = 3, EXIT_INTER
 
 static const char usage_text[] =
 	"usage: circe render SCENE [-o out.exr] [--png out.png] [-W W -H H] [--spp N | --time S]\n"
-	"                    [--threads N] [--sss circle|fullcircle|disk|volume]\n"
+	"                    [--threads N] [--sss circle|fullcircle|disk|volume|auto]\n"
 	"                    [--circle-weight exact|talk] [--seed N] [--region X0,Y0,X1,Y1]\n"
 	"                    [--noise-threshold T [--min-spp N]]\n"
 	"                    [--aov albedo,normal,depth,variance,error,samples] [--tile I/N]\n"
@@ -536,8 +536,8 @@ static const cli_opt render_options[] = {
 	 "--time needs a number of seconds > 0, not '%s'"},
 	{"threads", 0, "N", "worker threads (default: every core)", opt_int, R(threads), 1, 1024,
 	 "--threads needs a count from 1 to 1024, not '%s'"},
-	{"sss", 0, "METHOD", "circle, fullcircle, disk or volume for every SSS material", opt_sss, R(sss), 0, 0,
-	 "--sss must be circle, fullcircle, disk or volume, not '%s'"},
+	{"sss", 0, "METHOD", "circle, fullcircle, disk, volume or auto for every SSS material", opt_sss, R(sss), 0, 0,
+	 "--sss must be circle, fullcircle, disk, volume or auto, not '%s'"},
 	{"circle-weight", 0, "W", "the circle estimator's weight: exact (default) or talk", opt_circle_weight,
 	 R(talk_weight), 0, 0, "--circle-weight must be exact or talk, not '%s'"},
 	{"seed", 0, "N", "the random seed (default 0)", opt_u64, R(seed), 0, LONG_MAX,
@@ -833,6 +833,11 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 				"kept\n",
 			(unsigned long long)stats->sss_searches, (unsigned long long)stats->sss_nohit,
 			(double)stats->sss_nohit / (double)stats->sss_searches, (unsigned long long)stats->sss_overflow);
+	if (!o->quiet && stats->sss_walks)
+		fprintf(stderr, "circe: sss: %llu volume walks (%.4g of the searches), %llu dropped at the step bound of %d "
+				"interactions\n",
+			(unsigned long long)stats->sss_walks, (double)stats->sss_walks / (double)stats->sss_searches,
+			(unsigned long long)stats->sss_walk_dropped, SSS_WALK_MAX_STEPS);
 	if (!o->quiet)
 		report_noise(s, stats->seconds);
 }

@@ -63,7 +63,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 bool is_sss(const scene_material *m);
 sss_method sss_method_of(const scene_material *m, const world_options *opt);
 bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm, diag *d);
-bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d);
+bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d);
 void build_groups(world *w, const scene *sc);
 
 /* build_light.c */

@@ -108,15 +108,21 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * profile's albedo comes from, so volume against the profiles measures the diffusion
 	 * models' error and nothing else. */
 	const double *ss_mm = md.sigma_s_per_mm, *sa_mm = md.sigma_a_per_mm;
-	if (r->method == SSS_METHOD_VOLUME &&
+	bool walks = r->method == SSS_METHOD_VOLUME || r->method == SSS_METHOD_AUTO;
+	if (walks &&
 	    !sss_walk_medium_from_reduced(&r->medium, ss_mm, sa_mm, ss->anisotropy, ss->ior, sc->global.mm_per_unit)) {
-		diag_error(d, sm->loc, "the subsurface medium is out of range for the volume method (sigma_s' %g %g %g, "
+		diag_error(d, sm->loc, "the subsurface medium is out of range for the %s method (sigma_s' %g %g %g, "
 				       "sigma_a %g %g %g per mm, anisotropy %g, ior %g)",
-			   ss_mm[0], ss_mm[1], ss_mm[2], sa_mm[0], sa_mm[1], sa_mm[2], (double)ss->anisotropy,
+			   sss_method_name(r->method), ss_mm[0], ss_mm[1], ss_mm[2], sa_mm[0], sa_mm[1], sa_mm[2], (double)ss->anisotropy,
 			   (double)ss->ior);
 		return false;
 	}
 	r->ior = ss->ior;
+	/* auto's length: the largest channel's diffuse mean free path, in scene units (the walk is
+	 * taken where the object is a few of them thick; check_volumes turns it off on open objects) */
+	double ld = fmax(md.ld_mm[0], fmax(md.ld_mm[1], md.ld_mm[2]));
+	r->auto_ld = (float)(ld * r->units_per_mm);
+	r->auto_walk = r->method == SSS_METHOD_AUTO;
 	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
@@ -155,7 +161,7 @@ static void warn_dense_medium(const world *w, const world_inst *in, const scene 
 
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
  * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
-bool check_volumes(const world *w, const scene *sc, const world_options *opt, diag *d)
+bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	bool ok = true;
 	int8_t *closed = mem_calloc(w->n_geoms ? w->n_geoms : 1, 1); /* 0 unknown, 1 closed, -1 open */
@@ -165,7 +171,8 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 	}
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, w->insts[i].object);
-		if (!is_sss(o->material) || sss_method_of(o->material, opt) != SSS_METHOD_VOLUME)
+		sss_method method = is_sss(o->material) ? sss_method_of(o->material, opt) : SSS_METHOD_DEFAULT;
+		if (method != SSS_METHOD_VOLUME && method != SSS_METHOD_AUTO)
 			continue;
 		const world_geom *g = w->insts[i].g;
 		size_t gi = (size_t)(g - w->geoms);
@@ -179,7 +186,16 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 			}
 			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
 		}
-		if (closed[gi] < 0) {
+		if (closed[gi] < 0 && method == SSS_METHOD_AUTO) {
+			/* auto walks only where the object is thin; an open one holds no volume to walk
+			 * in, so its material keeps to circle tracing (said once per object) */
+			render_sss *r = &w->sss[w->insts[i].material];
+			if (r->auto_walk)
+				diag_warning(d, o->loc, "the auto SSS method walks only in closed objects, and this one %s: "
+							"its material uses circle tracing everywhere",
+					     o->geom->kind == SHAPE_PLANE ? "is a plane" : "is open");
+			r->auto_walk = false;
+		} else if (closed[gi] < 0) {
 			if (o->geom->kind == SHAPE_PLANE)
 				diag_error(d, o->loc, "the volume SSS method needs a closed object, and a plane bounds "
 						      "no volume");
@@ -194,7 +210,7 @@ bool check_volumes(const world *w, const scene *sc, const world_options *opt, di
 				diag_note(d, o->material->loc, "its material is here; give it method circle, fullcircle "
 							      "or disk for an open surface");
 			ok = false;
-		} else {
+		} else if (method == SSS_METHOD_VOLUME) {
 			warn_dense_medium(w, &w->insts[i], sc, o, d);
 		}
 	}

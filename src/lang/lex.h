@@ -22,7 +22,7 @@ enum {
 #define LANG_KEYWORDS(KW) \
 	KW(ABS, "abs") KW(ACOS, "acos") KW(ACOSH, "acosh") KW(ANGLE, "angle") KW(ANISOTROPY, "anisotropy") \
 	KW(APERTURE, "aperture") KW(ARRAY, "array") KW(ASC, "asc") KW(ASIN, "asin") KW(ASINH, "asinh") \
-	KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN, "atan") KW(ATAN2, "atan2") KW(ATANH, "atanh") \
+	KW(ASSUMED_GAMMA, "assumed_gamma") KW(ATAN, "atan") KW(ATAN2, "atan2") KW(ATANH, "atanh") KW(AUTO, "auto") \
 	KW(BACKGROUND, "background") KW(BITWISE_AND, "bitwise_and") KW(BITWISE_OR, "bitwise_or") \
 	KW(BITWISE_XOR, "bitwise_xor") KW(BLUE, "blue") KW(BLUR_SAMPLES, "blur_samples") \
 	KW(BOUNDARY, "boundary") KW(BOUNDED_BY, "bounded_by") KW(BOX, "box") KW(BURLEY, "burley") KW(CAMERA, "camera") \

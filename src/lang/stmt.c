@@ -962,19 +962,19 @@ static bool sss_number(parser *p, scene_sss *s, const lang_token *t)
 }
 
 /* "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" ) | "method" ( "circle" |
- * "fullcircle" | "disk" | "volume" ): the keywords in the order of sss_profile_kind and of
+ * "fullcircle" | "disk" | "volume" | "auto" ): the keywords in the order of sss_profile_kind and of
  * sss_method after its default. */
 static bool sss_choice(parser *p, scene_sss *s, const lang_token *t)
 {
 	static const lang_tok profiles[] = {LTK_KW_GAUSSIAN, LTK_KW_SUM_OF_GAUSSIANS, LTK_KW_BURLEY, LTK_KW_DIPOLE};
-	static const lang_tok methods[] = {LTK_KW_CIRCLE, LTK_KW_FULLCIRCLE, LTK_KW_DISK, LTK_KW_VOLUME};
+	static const lang_tok methods[] = {LTK_KW_CIRCLE, LTK_KW_FULLCIRCLE, LTK_KW_DISK, LTK_KW_VOLUME, LTK_KW_AUTO};
 	lang_advance(p);
 	if (t->kind == LTK_KW_PROFILE) {
 		int i = one_of(p, profiles, 4, "expected gaussian, sum_of_gaussians, burley or dipole after 'profile'");
 		TRY(i >= 0);
 		s->profile = (sss_profile_kind)i;
 	} else {
-		int i = one_of(p, methods, 4, "expected circle, fullcircle, disk or volume after 'method'");
+		int i = one_of(p, methods, 5, "expected circle, fullcircle, disk, volume or auto after 'method'");
 		TRY(i >= 0);
 		s->method = (sss_method)(SSS_METHOD_CIRCLE + i);
 	}
@@ -999,7 +999,7 @@ static bool sss_normal_map(parser *p, scene_sss *s)
  *           | "image" string | "radius" colour | "ior" float | "roughness" float
  *           | "profile" ( "gaussian" | "sum_of_gaussians" | "burley" | "dipole" )
  *           | "normal_map" string [ "strength" float ] | "anisotropy" float
- *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" ) | "group" string */
+ *           | "method" ( "circle" | "fullcircle" | "disk" | "volume" | "auto" ) | "group" string */
 /* "pigment" "{" pattern ... "}": a POV-Ray pigment as the albedo, evaluated where light leaves and
  * where it enters (circle tracing's colour blurring), each entry weighted by pigment / albedo. */
 static bool sss_pigment(parser *p, scene_material *m, const lang_token *t)

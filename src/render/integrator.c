@@ -409,6 +409,8 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	probe_ctx ctx = {s, exit, 1.0f, &last, 1, &n};
 	sss_probe pr = {probe_closest, &ctx};
 	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, exit->scale, w_in, g, SSS_WALK_MAX_STEPS);
+	out->sss_walks++;
+	out->sss_walk_dropped += r.status == SSS_WALK_STEP_LIMIT;
 	if (r.status == SSS_WALK_ABSORBED)
 		return false; /* an outcome of the walk, not a failure */
 	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {
@@ -420,6 +422,37 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	e->hit = last;
 	e->weight = r.weight;
 	return true;
+}
+
+/* auto (src/sss/README.md, "auto"): the thickness of the object below the exit, by one ray along
+ * the inward geometric normal on the SSS volume alone, in diffuse mean free paths l_d, sets the
+ * probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 12 l_d on, smooth between);
+ * circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
+ * A random number is drawn only where the probability is strictly between 0 and 1, so a thick
+ * object renders exactly as under circle (the same random stream), a thin one exactly as under
+ * volume. */
+static bool auto_entry(const render_scene *s, const render_settings *set, const render_sss *m,
+		       const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, rng *g, sss_entry *e,
+		       render_sample *out)
+{
+	float p_walk = 0.0f;
+	if (m->auto_walk) {
+		float reach = (float)SSS_AUTO_CIRCLE_ABOVE * m->auto_ld;
+		double thick = INFINITY; /* nothing below within reach: thick */
+		if (!(reach < INFINITY)) {
+			thick = 0.0; /* no absorption at all (l_d infinite): every object is thin */
+		} else {
+			render_ray probe = {bvh_offset_scaled(exit->p, v3_neg(n_out), exit->scale), v3_neg(n_out)};
+			render_hit far = {0};
+			if (s->sss_closest(s->user, exit, &probe, 0.0f, reach, &far))
+				thick = far.t;
+		}
+		p_walk = (float)sss_auto_walk_prob(m->auto_ld > 0.0f ? thick / m->auto_ld : 0.0);
+	}
+	bool walk = p_walk >= 1.0f || (p_walk > 0.0f && rng_float(g) < p_walk);
+	if (walk)
+		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
+	return circle_entry(s, set, m, exit, n_out, g, e, out);
 }
 
 /* The one place where a method is chosen. False when no entry point was found: the path ends
@@ -437,6 +470,8 @@ static bool sss_find_entry(const render_scene *s, const render_settings *set, co
 		return disk_entry(s, m, exit, n_out, g, e, out);
 	case SSS_METHOD_VOLUME:
 		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
+	case SSS_METHOD_AUTO:
+		return auto_entry(s, set, m, exit, n_shade, n_out, wo, g, e, out);
 	case SSS_METHOD_DEFAULT: /* never: the build chose the method */
 		break;
 	}

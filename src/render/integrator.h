@@ -62,7 +62,9 @@ typedef struct render_sss {
 	float units_per_mm;  /* scene units per mm (1 / mm_per_unit): a profile radius to the scene */
 	float ior;	     /* of the boundary; the coat's */
 	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
-	sss_walk_medium medium; /* SSS_METHOD_VOLUME: the medium's coefficients per scene unit */
+	sss_walk_medium medium; /* volume and auto: the medium's coefficients per scene unit */
+	float auto_ld;	     /* the largest channel's diffuse mean free path l_d, in scene units */
+	bool auto_walk;	     /* auto may walk: every object of the material is closed */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;
@@ -159,6 +161,9 @@ typedef struct render_sample {
 	uint32_t sss_nohit;    /* of them, those that found no entry point (no hit; a walk lost or at
 				* its step bound): the path ends there */
 	uint32_t sss_overflow; /* searches with more hits than kept (the first ones are used) */
+	uint32_t sss_walks;    /* searches that were volume walks (volume; auto where it walked) */
+	uint32_t sss_walk_dropped; /* of them, walks that reached SSS_WALK_MAX_STEPS: dropped (weight 0,
+				    * also in sss_nohit), biased low, so counted and printed */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number. May return non-finite

@@ -76,6 +76,8 @@ typedef struct render_stats {
 	uint64_t sss_searches; /* SSS entry searches (circles, probes, walks) of the committed passes */
 	uint64_t sss_nohit;    /* of them, those that found no entry (their paths end: the no-hit rate) */
 	uint64_t sss_overflow; /* of them, those with more hits than kept */
+	uint64_t sss_walks;    /* of them, volume walks (every search of volume, auto's walks) */
+	uint64_t sss_walk_dropped; /* of the walks, those that reached their step bound (dark, counted) */
 	double seconds;	      /* wall time of render_run */
 	double samples_per_s; /* pixel samples committed per second */
 	int passes;	      /* committed passes */

@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const method_names[SSS_METHODS] = {"default", "circle", "fullcircle", "disk", "volume"};
+static const char *const method_names[SSS_METHODS] = {"default", "circle", "fullcircle", "disk", "volume", "auto"};
 static const char *const profile_names[SSS_PROFILE_KINDS] = {"gaussian", "sum_of_gaussians", "burley", "dipole"};
 
 /* The index of name in names[0, n), or -1. */
@@ -32,6 +32,16 @@ bool sss_method_from_name(const char *name, sss_method *m)
 	if (i >= 0)
 		*m = (sss_method)i;
 	return i >= 0;
+}
+
+double sss_auto_walk_prob(double m)
+{
+	if (!(m > SSS_AUTO_WALK_BELOW)) /* NaN too: an unknown thickness walks, the safe side */
+		return 1.0;
+	if (!(m < SSS_AUTO_CIRCLE_ABOVE))
+		return 0.0;
+	double x = log(m / SSS_AUTO_WALK_BELOW) / log(SSS_AUTO_CIRCLE_ABOVE / SSS_AUTO_WALK_BELOW);
+	return 1.0 - x * x * (3.0 - 2.0 * x);
 }
 
 const char *sss_profile_name(sss_profile_kind k)

@@ -20,11 +20,12 @@ typedef enum sss_method {
 	SSS_METHOD_FULLCIRCLE, /* full circles */
 	SSS_METHOD_DISK,       /* King et al. 2013 probe segments */
 	SSS_METHOD_VOLUME,     /* random walk in the medium: the reference the profiles approximate */
+	SSS_METHOD_AUTO,       /* per exit point: circle where the object is thick, the walk where thin */
 } sss_method;
 /* The number of methods, default included (a #define: switches over them stay complete). */
-#define SSS_METHODS 5
+#define SSS_METHODS 6
 
-/* "default", "circle", "fullcircle", "disk", "volume"; "?" out of range. */
+/* "default", "circle", "fullcircle", "disk", "volume", "auto"; "?" out of range. */
 const char *sss_method_name(sss_method m);
 /* The method of that name (the table of sss_method_name); false when none is. */
 bool sss_method_from_name(const char *name, sss_method *m);
@@ -32,6 +33,18 @@ bool sss_method_from_name(const char *name, sss_method *m);
 /* "gaussian", "sum_of_gaussians", "burley", "dipole" (the scene language's words); "?" out of range. */
 const char *sss_profile_name(sss_profile_kind k);
 bool sss_profile_from_name(const char *name, sss_profile_kind *k);
+
+/* ---- auto: the choice between circle tracing and the walk ------------------------------------------ */
+
+/* The rule of `auto` (src/sss/README.md, "auto"): at an exit point whose object is `m` diffuse
+ * mean free paths thick below it (the thickness along the inward normal over the largest channel's
+ * l_d), the walk is taken with probability 1 up to SSS_AUTO_WALK_BELOW, 0 from SSS_AUTO_CIRCLE_ABOVE
+ * on, and in between 1 - smoothstep of log m across the band (continuous with a continuous slope:
+ * no seam where the choice changes). m = +Inf (nothing below: an open surface) gives 0; NaN or
+ * m <= 0 gives 1. */
+#define SSS_AUTO_WALK_BELOW 4.0
+#define SSS_AUTO_CIRCLE_ABOVE 12.0
+double sss_auto_walk_prob(double m);
 
 /* ---- the presets ---------------------------------------------------------------------------------- */
 

@@ -20,6 +20,10 @@ typedef struct sss_walk_medium {
 	double sigma_a[3]; /* absorption coefficient per channel, per scene unit, >= 0 */
 	double g;	   /* Henyey-Greenstein anisotropy (mean cosine), in (-1, 1) */
 	double eta;	   /* index of refraction of the medium over that outside, > 0; 1: index-matched */
+	bool classic;	   /* false (the default): Dwivedi-guided free paths and directions mixed with
+			    * the classic ones by one-sample MIS (README.md, "Guided sampling"); true:
+			    * the classic walk alone (analog free paths, the phase function), for
+			    * comparison */
 } sss_walk_medium;
 
 /* The medium of a material given in the physical form (src/scene: sigma_s' and sigma_a per mm,
@@ -54,10 +58,12 @@ typedef struct sss_walk_result {
 			  * surface: the walk steps back in (README.md); about 1 in 10^6 interactions */
 } sss_walk_result;
 
-/* The default bound on interactions per walk; reaching it is counted, never silent. Measured on
- * the wax preset in a slab 200 mm deep (red albedo 0.95, the longest walks of the presets): 4096
- * dropped 1.7 % of the walks and 1.5 % of the red light, 65536 drops 0.011 %. */
-#define SSS_WALK_MAX_STEPS 65536
+/* The default bound on interactions per walk; reaching it is counted, never silent (the renderer
+ * prints the dropped walks). Measured on the wax block's defaults in a slab 200 mm deep (the
+ * longest walks of circe's media; bench/sss/walkbench): 4096 dropped 1.7 % of the walks, 65536
+ * about 1 in 20,000 (0.005 %); 2^20 none of 200,000. A walk that long costs about a second, so
+ * the bound still ends the pathological ones (no absorption in a large object) in finite time. */
+#define SSS_WALK_MAX_STEPS (1 << 20)
 /* Russian roulette starts after this many interactions, with survival probability
  * min(1, max channel of the throughput): unbiased; keeps absorbing walks short. */
 #define SSS_WALK_RR_START 16
@@ -72,6 +78,11 @@ typedef struct sss_walk_result {
  * boundary's weight is 1 and the radiance scale eta^2 of entering cancels at the exit. */
 sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, float x_scale, vec3 w,
 			 rng *g, int max_steps);
+
+/* Dwivedi's diffusion length nu0 (in mean free paths) of single-scattering albedo alpha: the
+ * root of 1 = alpha nu0/2 ln((nu0 + 1)/(nu0 - 1)) by d'Eon & Krivanek 2020's fit (eq. 67);
+ * 1 for alpha <= 0, +Inf for alpha >= 1. */
+double sss_walk_dwivedi_nu(double alpha);
 
 /* A direction about w (unit) whose cosine with w follows Henyey-Greenstein with mean cosine g:
  * cos = (1 + g^2 - ((1 - g^2)/(1 - g + 2 g u1))^2) / (2 g) (the inverse CDF), phi = 2 pi u2. */

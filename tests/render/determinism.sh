@@ -1,7 +1,7 @@
 #!/bin/sh
 # determinism.sh: the same scene and seed give bit-identical EXRs for 1 and 2 threads, and four
 # --region quarters assembled equal the whole image bit-exactly; another seed gives another image.
-# Every SSS method is deterministic across thread counts too, and the BVH's SSE2 path (4-wide, as on
+# Every SSS method (auto included, and its regions) is deterministic across thread counts too, and the BVH's SSE2 path (4-wide, as on
 # a CPU without AVX2: CIRCE_SIMD=sse2) renders the same pixels as the dispatched one (8-wide with
 # AVX2 where the CPU has it): the trees differ, their hits do not.
 . "$top_srcdir/tests/lib.sh"
@@ -33,7 +33,7 @@ light_source { <-3, 5, -4> color rgb 2 parallel point_at <0, 0, 0> }
 sphere { <0, 0.6, 0>, 0.6 material { wax { } } }
 box { <0.7, 0, -0.3>, <1.3, 0.6, 0.3> material { skin { } } }
 EOS
-for m in circle fullcircle disk volume; do
+for m in circle fullcircle disk volume auto; do
 	for t in 1 2; do
 		expect_status 0 "$CIRCE" render sss.pov -o "$m$t.exr" --threads $t --sss $m -W 24 -H 18 --spp 4 --quiet
 	done
@@ -43,6 +43,14 @@ for m in circle fullcircle disk volume; do
 	expect_status 0 "$CIRCE" compare "${m}sse2.exr" "${m}1.exr" --fail 0
 	grep -q '^max_abs: 0 at' out || fail "--sss $m: the SSE2 and the dispatched BVH differ: $(cat out)"
 done
+# auto's choice between circle and walk (wax sphere 12 mm across: in its band; the skin box 6 mm:
+# walks) comes from the sample's own generator: regions assembled equal the whole image too.
+for r in 0,0,12,9 12,0,24,9 0,9,12,18 12,9,24,18; do
+	expect_status 0 "$CIRCE" render sss.pov -o "auto_q$r.exr" --threads 2 --sss auto -W 24 -H 18 --spp 4 --quiet --region $r
+done
+expect_status 0 "$CIRCE" merge -o auto_quarters.exr auto_q*.exr
+expect_status 0 "$CIRCE" compare auto_quarters.exr auto1.exr --fail 0
+grep -q '^max_abs: 0 at' out || fail "--sss auto: regions assembled differ from the whole: $(cat out)"
 # Media: delta and ratio tracking draw from the sample's own generator, whatever the threads.
 for t in 1 2; do
 	expect_status 0 "$CIRCE" render "$top_srcdir/tests/scenes/media.pov" -o "media$t.exr" --threads $t -W 32 -H 24 \

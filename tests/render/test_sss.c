@@ -4,7 +4,8 @@
  * the furnace bound, extreme parameters give no NaN or Inf, the talk's weight is measurably low on
  * a cylinder, circle and disk converge to the same image on the bunny and the head, and the
  * volume walk conserves energy and lands near the profiles' albedo (its difference from them, the
- * model bias, is printed per material). */
+ * model bias, is printed per material); auto is circle on a thick slab and volume on a thin
+ * back-lit sheet, and blends them without a seam across a wedge. */
 #include "check.h"
 #include "lang/lang.h"
 #include "build/build.h"
@@ -46,6 +47,7 @@ typedef struct image_stats {
 	double px[W * H];
 	double mean, min, max;
 	unsigned long circles, nohit, nonfinite;
+	unsigned long px_searches[W * H], px_walks[W * H]; /* SSS searches and walks per pixel */
 } image_stats;
 
 static void render_seed(const char *text, int spp, int max_level, sss_circle_weight weight,
@@ -70,6 +72,8 @@ static void render_seed(const char *text, int spp, int max_level, sss_circle_wei
 				render_sample r = render_path(world_scene(w), &set, cam_ray(world_camera(w), x, y, pu, lu), &g);
 				st->circles += r.sss_searches;
 				st->nohit += r.sss_nohit;
+				st->px_searches[y * W + x] += r.sss_searches;
+				st->px_walks[y * W + x] += r.sss_walks;
 				if (!v3_is_finite(r.radiance))
 					st->nonfinite++;
 				else
@@ -209,11 +213,14 @@ static void test_extremes(void)
 	static const struct {
 		sss_method method;
 		const char *name;
-	} methods[] = {{SSS_METHOD_CIRCLE, "circle"}, {SSS_METHOD_DISK, "disk"}, {SSS_METHOD_VOLUME, "volume"}};
-	for (int k = 0; k < 3; k++)
+	} methods[] = {{SSS_METHOD_CIRCLE, "circle"}, {SSS_METHOD_DISK, "disk"}, {SSS_METHOD_VOLUME, "volume"},
+		       {SSS_METHOD_AUTO, "auto"}};
+	for (int k = 0; k < 4; k++)
 	for (int m = 0; m < 6; m++) {
-		/* albedo 1 has no finite walk (sigma_a = 0, test_volume checks the warning) */
-		if (methods[k].method == SSS_METHOD_VOLUME && (m == 1 || m == 4 || m == 5))
+		/* albedo 1 has no finite walk (sigma_a = 0, test_volume checks the warning); auto walks
+		 * in these thin objects */
+		if ((methods[k].method == SSS_METHOD_VOLUME || methods[k].method == SSS_METHOD_AUTO) &&
+		    (m == 1 || m == 4 || m == 5))
 			continue;
 		char text[1024];
 		snprintf(text, sizeof text,
@@ -228,8 +235,9 @@ static void test_extremes(void)
 		CHECK(st.nonfinite == 0 && st.max <= 100.0 && st.min >= 0.0,
 		      "%s, material %s: %lu non-finite, pixels in [%g, %g]", methods[k].name, mats[m], st.nonfinite,
 		      st.min, st.max);
-		/* (a medium of albedo 0 is a clear absorber: its walks cross the thin box) */
-		if (m == 0 && methods[k].method != SSS_METHOD_VOLUME)
+		/* (a medium of albedo 0 is a clear absorber: its walks cross the thin box, where auto
+		 * walks too) */
+		if (m == 0 && methods[k].method != SSS_METHOD_VOLUME && methods[k].method != SSS_METHOD_AUTO)
 			CHECK(st.max <= 0.2 + 1e-6, "%s: albedo 0 and ior 1 reflect nothing: max %g", methods[k].name,
 			      st.max);
 	}
@@ -419,6 +427,137 @@ static void test_pov_subsurface(void)
 	      "without global subsurface: %lu circles, mean %.9g, expected %.9g (Lambert)", b.circles, b.mean, expect);
 }
 
+/* auto on a slab thick against the profile (50 units of 10 mm against wax's 3 mm: 167 l_d) is
+ * circle tracing exactly: no walk, and not one random number more (src/sss/README.md, "auto"). */
+static void test_auto_thick(void)
+{
+	const char *text = SLAB_LIGHT "box { <-50, -50, -50>, <50, 0, 50> material { wax { color rgb <0.7, 0.5, 0.3> "
+				      "radius <3, 2, 1> ior 1.3 } } }\n";
+	image_stats c, a;
+	render(text, 2, 3, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
+	render(text, 2, 3, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
+	int differ = 0;
+	for (int i = 0; i < W * H; i++)
+		differ += a.px[i] != c.px[i];
+	printf("auto on a thick slab: mean %.6f, circle %.6f, %d of %d pixels differ\n", a.mean, c.mean, differ, W * H);
+	CHECK(differ == 0 && a.nonfinite == 0, "auto differs from circle on a thick slab in %d pixels", differ);
+}
+
+/* A back-lit sheet of skin 3 mm thick (0.8 of the red l_d, 3.7 mm): auto walks everywhere, so its
+ * image is volume's (the stated tolerance: identical, the same random stream); circle tracing
+ * misses most of the light that crosses the sheet. */
+static void test_auto_thin(void)
+{
+	const char *text = "global_settings { mm_per_unit 1 }\n"
+			   "camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+			   "light_source { <0, -100, 0> color rgb 1 intensity 4 parallel point_at <0, 0, 0> }\n"
+			   "light_source { <0, 100, -30> color rgb 1 intensity 0.2 parallel point_at <0, 0, 0> }\n"
+			   "box { <-60, -3, -60>, <60, 0, 60> material { skin { } } }\n";
+	image_stats c, a, v;
+	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
+	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
+	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_VOLUME, &v);
+	int differ = 0;
+	for (int i = 0; i < W * H; i++)
+		differ += a.px[i] != v.px[i];
+	printf("back-lit 3 mm sheet of skin (red): circle %.5f, auto %.5f, volume %.5f (circle %+.1f %%, auto %+.1f %%); "
+	       "%d pixels of auto differ from volume\n",
+	       c.mean, a.mean, v.mean, 100 * (c.mean / v.mean - 1), 100 * (a.mean / v.mean - 1), differ);
+	CHECK(differ == 0 && a.nonfinite == 0, "auto differs from volume on a thin sheet in %d pixels", differ);
+	CHECK(c.mean < 0.7 * v.mean, "circle %g should miss much of volume's %g on a back-lit sheet", c.mean, v.mean);
+}
+
+/* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
+ * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 12 l_d, and a
+ * little either side), seen from above, lit strongly from below and weakly from above, so the
+ * methods differ where auto blends them. Column by column, auto's mean must be the blend
+ * p(T) volume + (1 - p(T)) circle of the two methods' own means, p the rule at the column's
+ * thickness: chi-square over the columns within its 4-sigma bound (circle's own image is noisy
+ * here: its circles reach the lit bottom). The choice itself is measured without that noise:
+ * with direct light only, each path has one exit point on the top, and the fraction of them that
+ * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
+ * the band (p = 1/2) must fail the same bound, so the test sees a seam. */
+static void test_auto_wedge(void)
+{
+	const char *text =
+		"global_settings { mm_per_unit 1 }\n"
+		"camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+		"light_source { <0, -100, 0> color rgb 1 intensity 400 parallel point_at <0, 0, 0> }\n"
+		"light_source { <0, 100, -30> color rgb 1 intensity 1 parallel point_at <0, 0, 0> }\n"
+		"mesh2 { vertex_vectors { 8, <-12,0,-8>, <12,0,-8>, <12,0,8>, <-12,0,8>, <-12,-2.5,-8>, <12,-13.5,-8>, "
+		"<12,-13.5,8>, <-12,-2.5,8> }\n"
+		"  face_indices { 12, <0,2,1>, <0,3,2>, <4,5,6>, <4,6,7>, <0,1,5>, <0,5,4>, <1,2,6>, <1,6,5>, <2,3,7>, "
+		"<2,7,6>, <3,0,4>, <3,4,7> }\n"
+		"  material { wax { color rgb 0.8 radius 1 ior 1.0 profile burley } } }\n";
+	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
+	double xs[W];
+	world *w;
+	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
+	CHECK(build(text, &o, &w) && last_warnings == 0, "the wedge builds without warnings (%d)", last_warnings);
+	for (int x = 0; x < W; x++) {
+		render_ray r = cam_ray(world_camera(w), x, H / 2, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
+		xs[x] = r.o.x - r.d.x * (r.o.y / r.d.y);
+	}
+	world_free(w);
+	const int spp = 160;
+	image_stats im[3];
+	const sss_method ms[3] = {SSS_METHOD_CIRCLE, SSS_METHOD_VOLUME, SSS_METHOD_AUTO};
+	double col[3][W], se[3][W];
+	for (int k = 0; k < 3; k++) {
+		render_seed(text, spp, 3, SSS_CIRCLE_EXACT, ms[k], 11 + (uint64_t)k, &im[k]);
+		CHECK(im[k].nonfinite == 0, "method %d: %lu non-finite", k, im[k].nonfinite);
+		for (int x = 0; x < W; x++) { /* the rows of a column are samples of one thickness */
+			double s1 = 0.0, s2 = 0.0;
+			for (int y = 0; y < H; y++)
+				s1 += im[k].px[y * W + x], s2 += im[k].px[y * W + x] * im[k].px[y * W + x];
+			col[k][x] = s1 / H;
+			se[k][x] = sqrt(fmax(0.0, s2 / H - col[k][x] * col[k][x]) / (H - 1));
+		}
+	}
+	double chi2 = 0.0, chi2_hard = 0.0;
+	for (int x = 0; x < W; x++) {
+		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = sss_auto_walk_prob(t);
+		double ph = t < sqrt(SSS_AUTO_WALK_BELOW * SSS_AUTO_CIRCLE_ABOVE) ? 1.0 : 0.0;
+		double want = p * col[1][x] + (1.0 - p) * col[0][x], hard = ph * col[1][x] + (1.0 - ph) * col[0][x];
+		double e = sqrt(se[2][x] * se[2][x] + p * p * se[1][x] * se[1][x] + (1 - p) * (1 - p) * se[0][x] * se[0][x]);
+		double eh = sqrt(se[2][x] * se[2][x] + ph * se[1][x] * se[1][x] + (1 - ph) * se[0][x] * se[0][x]);
+		chi2 += (col[2][x] - want) * (col[2][x] - want) / (e * e);
+		chi2_hard += (col[2][x] - hard) * (col[2][x] - hard) / (eh * eh);
+		printf("wedge column %2d: T %5.2f l_d, p(walk) %.3f: circle %.4f, volume %.4f, auto %.4f, blend %.4f "
+		       "(%+.1f SE), hard switch %.4f\n",
+		       x, t, p, col[0][x], col[1][x], col[2][x], want, (col[2][x] - want) / e, hard);
+	}
+	double bound = W + 4.0 * sqrt(2.0 * W);
+	printf("wedge (%d spp): chi-square of auto against the smooth blend %.1f, against a hard switch %.1f, bound %.1f "
+	       "(%d columns)\n",
+	       spp, chi2, chi2_hard, bound, W);
+	CHECK(chi2 <= bound, "auto is not the smooth blend across the wedge: chi-square %g > %g", chi2, bound);
+
+	image_stats fr;
+	render_seed(text, 16, 1, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, 17, &fr);
+	double c2 = 0.0, c2_hard = 0.0;
+	int dof = 0;
+	for (int x = 0; x < W; x++) {
+		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = sss_auto_walk_prob(t);
+		double ph = t < sqrt(SSS_AUTO_WALK_BELOW * SSS_AUTO_CIRCLE_ABOVE) ? 1.0 : 0.0;
+		unsigned long n = 0, k = 0;
+		for (int y = 0; y < H; y++)
+			n += fr.px_searches[y * W + x], k += fr.px_walks[y * W + x];
+		double f = n ? (double)k / n : 0.0;
+		/* binomial variance, floored at that of one count in n so p = 0 or 1 stays defined */
+		double v = fmax(p * (1.0 - p), 1.0 / n) / n, vh = fmax(ph * (1.0 - ph), 1.0 / n) / n;
+		c2 += (f - p) * (f - p) / v, c2_hard += (f - ph) * (f - ph) / vh, dof++;
+		printf("wedge column %2d: T %5.2f l_d: walked %.4f of %lu exits, p(walk) %.4f\n", x, t, f, n, p);
+		CHECK(p < 1.0 || k == n, "column %d: p = 1 but %lu of %lu walked", x, k, n);
+		CHECK(p > 0.0 || k == 0, "column %d: p = 0 but %lu of %lu walked", x, k, n);
+	}
+	double b2 = dof + 4.0 * sqrt(2.0 * dof);
+	printf("wedge: the walked fraction against p(T): chi-square %.1f; against a hard switch %.1f; bound %.1f\n", c2,
+	       c2_hard, b2);
+	CHECK(c2 <= b2, "auto's choice does not follow p(T): chi-square %g > %g", c2, b2);
+	CHECK(c2_hard > b2, "the wedge cannot tell a hard switch (chi-square %g) from the smooth rule", c2_hard);
+}
+
 int main(void)
 {
 	if (!mkdtemp(dir))
@@ -431,6 +570,9 @@ int main(void)
 	test_talk_weight();
 	test_circle_vs_disk();
 	test_volume();
+	test_auto_thick();
+	test_auto_thin();
+	test_auto_wedge();
 	rmdir(dir);
 	return check_done("test_sss");
 }

@@ -153,6 +153,7 @@ static void check_names(void)
 	CHECK(!sss_method_from_name("circles", &m) && !sss_profile_from_name("Burley", &k), "unknown names refused");
 	CHECK(!strcmp(sss_method_name(SSS_METHOD_FULLCIRCLE), "fullcircle") &&
 		  !strcmp(sss_profile_name(SSS_PROFILE_SUM_OF_GAUSSIANS), "sum_of_gaussians") &&
+		  !strcmp(sss_method_name(SSS_METHOD_AUTO), "auto") &&
 		  !strcmp(sss_method_name((sss_method)SSS_METHODS), "?"),
 	      "the names of the scene language");
 }
@@ -198,6 +199,29 @@ static void check_pov_translucency(void)
 		   1e-12);
 }
 
+/* auto's probability of the walk: 1 below 4 l_d, 0 from 12 on, continuous (no seam) and
+ * monotone between, with slope 0 at both ends; the extremes are finite. */
+static void check_auto_rule(void)
+{
+	CHECK(sss_auto_walk_prob(0.0) == 1.0 && sss_auto_walk_prob(4.0) == 1.0 && sss_auto_walk_prob(-1.0) == 1.0,
+	      "thin walks");
+	CHECK(sss_auto_walk_prob(NAN) == 1.0 && sss_auto_walk_prob(12.0) == 0.0 && sss_auto_walk_prob(INFINITY) == 0.0 &&
+		  sss_auto_walk_prob(1e300) == 0.0,
+	      "thick is circle; NaN walks");
+	CHECK_NEAR(sss_auto_walk_prob(sqrt(48.0)), 0.5, 1e-12); /* the geometric middle of the band */
+	double prev = 1.0, worst_step = 0.0;
+	for (int i = 0; i <= 100000; i++) {
+		double m = 3.0 + 10.0 * i / 100000.0, p = sss_auto_walk_prob(m);
+		CHECK(p <= prev && p >= 0.0 && p <= 1.0, "m %g: p %g after %g", m, p, prev);
+		worst_step = fmax(worst_step, prev - p);
+		prev = p;
+	}
+	/* the largest change over a step of 1e-4 l_d: the slope is at most 1.5 / (m ln 3) <= 0.35 */
+	CHECK(worst_step < 4e-5, "a jump of %g in the walk probability", worst_step);
+	CHECK(1.0 - sss_auto_walk_prob(4.0 * 1.0001) < 1e-6 && sss_auto_walk_prob(12.0 / 1.0001) < 1e-6,
+	      "slope 0 at the ends of the band");
+}
+
 int main(void)
 {
 	check_presets();
@@ -206,5 +230,6 @@ int main(void)
 	check_derive();
 	check_names();
 	check_pov_translucency();
+	check_auto_rule();
 	return check_done("test_medium");
 }

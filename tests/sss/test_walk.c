@@ -172,20 +172,22 @@ static void check_closure(void)
 
 /* The albedo of a large box (200 mean free paths of the thinnest channel on each side) lit at
  * normal incidence in the middle of its top face: light leaving through the top. */
-static void check_semi_infinite(const char *name, const double albedo[3], const double sigma_t[3])
+static void check_semi_infinite_at(const char *name, const double albedo[3], const double sigma_t[3], double mu,
+				   bool classic, double *se_out, double *steps_out)
 {
 	double lmax = 200.0 / fmin(sigma_t[0], fmin(sigma_t[1], sigma_t[2]));
 	object o;
 	object_box(&o, v3((float)-lmax, (float)-lmax, (float)-lmax), v3((float)lmax, (float)lmax, 0.0f));
-	sss_walk_medium m = {{0}, {0}, 0.0, 1.0};
+	sss_walk_medium m = {{0}, {0}, 0.0, 1.0, classic};
 	for (int c = 0; c < 3; c++)
 		m.sigma_s[c] = albedo[c] * sigma_t[c], m.sigma_a[c] = (1.0 - albedo[c]) * sigma_t[c];
 	rng r;
 	rng_seed(&r, 11, 2);
 	stat3 st = {0};
 	long n = test_scaled(200000);
+	vec3 w_in = v3((float)sqrt(1.0 - mu * mu), 0.0f, (float)-mu);
 	for (long i = 0; i < n; i++) {
-		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r, SSS_WALK_MAX_STEPS);
+		sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, w_in, &r, SSS_WALK_MAX_STEPS);
 		bool top = res.status == SSS_WALK_EXITED && res.p.z == 0.0f;
 		if (top)
 			CHECK(res.dir.z > 0.0f && fabsf(v3_length(res.dir) - 1.0f) < 1e-5f, "i %ld steps %d p %g %g %g ng %g %g %g exit dir %g %g %g", i, res.steps, res.p.x, res.p.y, res.p.z, res.ng.x, res.ng.y, res.ng.z,
@@ -193,16 +195,102 @@ static void check_semi_infinite(const char *name, const double albedo[3], const 
 		stat_add(&st, &res, top);
 	}
 	for (int c = 0; c < 3; c++) {
-		double want = plane_albedo(albedo[c], 1.0), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
-		printf("semi-infinite %s ch %d: albedo %.3f: walk %.5f +- %.5f, Chandrasekhar %.5f (%+.2f SE)\n", name,
-		       c, albedo[c], got, se, want, (got - want) / se);
+		double want = plane_albedo(albedo[c], mu), got = test_mean3_mean(&st.m, c), se = test_mean3_se(&st.m, c);
+		printf("semi-infinite %s%s, cos %.2f, ch %d: albedo %.3f: walk %.5f +- %.5f, Chandrasekhar %.5f (%+.2f SE)\n",
+		       name, classic ? " (classic)" : "", mu, c, albedo[c], got, se, want, (got - want) / se);
 		CHECK(fabs(got - want) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", name, c, got, se, want);
+		if (se_out)
+			se_out[c] = se;
 	}
+	if (steps_out)
+		*steps_out = (double)st.steps / st.m.n;
 	printf("  %ld walks, %.1f interactions each, lost %ld, step limit %ld, re-entries %ld\n", st.m.n,
 	       (double)st.steps / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT], st.reentries);
 	CHECK(st.count[SSS_WALK_LOST] == 0 && st.count[SSS_WALK_STEP_LIMIT] == 0, "lost %ld, step limit %ld",
 	      st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
 	object_free(&o);
+}
+
+static void check_semi_infinite(const char *name, const double albedo[3], const double sigma_t[3])
+{
+	check_semi_infinite_at(name, albedo, sigma_t, 1.0, false, NULL, NULL);
+}
+
+/* Guided and classic walks against Chandrasekhar at high albedos and oblique incidence; the
+ * guided walk must be at least as good per interaction (printed: SE^2 x interactions, the cost
+ * of a given noise in ray casts). */
+static void check_guided_vs_classic(void)
+{
+	const double albedos[] = {0.95, 0.99, 0.3}, mus[] = {1.0, 0.5, 1.0}, ones[3] = {1, 1, 1};
+	for (int i = 0; i < 3; i++) {
+		double a[3] = {albedos[i], albedos[i], albedos[i]}, se_g[3], se_c[3], n_g, n_c;
+		char name[64];
+		snprintf(name, sizeof name, "grey %.2f", albedos[i]);
+		check_semi_infinite_at(name, a, ones, mus[i], false, se_g, &n_g);
+		check_semi_infinite_at(name, a, ones, mus[i], true, se_c, &n_c);
+		double cost_g = se_g[0] * se_g[0] * n_g, cost_c = se_c[0] * se_c[0] * n_c;
+		printf("  albedo %.2f cos %.2f: variance x interactions, classic / guided = %.2f\n", albedos[i], mus[i],
+		       cost_c / cost_g);
+		CHECK(cost_g < 1.1 * cost_c, "albedo %g: guided costs %g, classic %g", albedos[i], cost_g, cost_c);
+	}
+}
+
+/* A slab of optical thickness 2 lit obliquely (the far side is near: the backward guide is in
+ * use): guided and classic walks agree on the light leaving through the top (reflection) and
+ * through the bottom (transmission); the classic walk is the analog estimator, unbiased. */
+static void check_thin_slab(void)
+{
+	object o;
+	object_box(&o, v3(-400, -400, -2), v3(400, 400, 0));
+	rng r;
+	rng_seed(&r, 23, 6);
+	long n = test_scaled(100000);
+	test_mean3 top[2] = {{0}}, bottom[2] = {{0}};
+	double steps[2] = {0, 0};
+	for (int classic = 0; classic < 2; classic++) {
+		sss_walk_medium m = {{0.9, 0.7, 0.99}, {0.1, 0.3, 0.01}, 0.2, 1.3, classic};
+		for (long i = 0; i < n; i++) {
+			sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0.6f, 0, -0.8f), &r,
+						       SSS_WALK_MAX_STEPS);
+			bool ex = res.status == SSS_WALK_EXITED;
+			double w[3] = {res.weight.x, res.weight.y, res.weight.z}, z[3] = {0, 0, 0};
+			test_mean3_add(&top[classic], ex && res.p.z == 0.0f ? w : z);
+			test_mean3_add(&bottom[classic], ex && res.p.z == -2.0f ? w : z);
+			steps[classic] += res.steps;
+		}
+	}
+	for (int side = 0; side < 2; side++)
+		for (int c = 0; c < 3; c++) {
+			test_mean3 *gm = side ? &bottom[0] : &top[0], *cm = side ? &bottom[1] : &top[1];
+			double a = test_mean3_mean(gm, c), b = test_mean3_mean(cm, c);
+			double sa = test_mean3_se(gm, c), sb = test_mean3_se(cm, c), se = sqrt(sa * sa + sb * sb);
+			printf("slab tau 2, %s ch %d: guided %.5f +- %.5f, classic %.5f +- %.5f (%+.2f SE)\n",
+			       side ? "transmitted" : "reflected", c, a, sa, b, sb, (a - b) / se);
+			CHECK(fabs(a - b) <= 3.5 * se, "%s ch %d: guided %g classic %g +- %g", side ? "bottom" : "top", c, a,
+			      b, se);
+		}
+	printf("  interactions per walk: guided %.2f, classic %.2f\n", steps[0] / n, steps[1] / n);
+	object_free(&o);
+}
+
+/* Dwivedi's nu0 by the fit against the root of 1 = alpha nu/2 ln((nu + 1)/(nu - 1)). */
+static void check_dwivedi_nu(void)
+{
+	const double alphas[] = {0.2, 0.5, 0.8, 0.95, 0.99, 0.999};
+	for (size_t i = 0; i < sizeof alphas / sizeof alphas[0]; i++) {
+		double a = alphas[i], lo = 1.0 + 1e-15, hi = 1e6;
+		for (int it = 0; it < 200; it++) { /* f(nu) = alpha nu/2 ln(...) - 1 decreases in nu */
+			double mid = 0.5 * (lo + hi);
+			if (0.5 * a * mid * log((mid + 1.0) / (mid - 1.0)) > 1.0)
+				lo = mid;
+			else
+				hi = mid;
+		}
+		double fit = sss_walk_dwivedi_nu(a), exact = 0.5 * (lo + hi);
+		printf("Dwivedi nu0(%.3f): fit %.5f, root %.5f\n", a, fit, exact);
+		CHECK(fabs(fit / exact - 1.0) < 0.01, "nu0(%g): fit %g, root %g", a, fit, exact);
+	}
+	CHECK(sss_walk_dwivedi_nu(0.0) == 1.0 && isinf(sss_walk_dwivedi_nu(1.0)), "nu0 at 0 and 1");
 }
 
 /* Without absorption every walk leaves: grey, each weight is exactly 1; RGB, 1 in expectation. */
@@ -334,6 +422,9 @@ int main(void)
 	check_semi_infinite("grey 0.8", grey, ones);
 	const double rgb_albedo[3] = {0.99, 0.8, 0.3}, rgb_sigma[3] = {1.0, 2.0, 0.5};
 	check_semi_infinite("rgb", rgb_albedo, rgb_sigma);
+	check_dwivedi_nu();
+	check_guided_vs_classic();
+	check_thin_slab();
 
 	object box, sphere;
 	object_box(&box, v3(-1, -1, -1), v3(1, 1, 1));
