@@ -22,6 +22,26 @@
  * point may be brighter, and every contribution must keep a chance. */
 #define RENDER_SSS_MIN_PROB 0.1f
 
+/* The sampler's dimensions of a path vertex (sampler.h), counted from the vertex's block
+ * (render_sampler_vertex, once per loop of render_path): each purpose keeps its label, so it is
+ * the same dimension in every sample of a pixel whichever others a path skipped. A next-event
+ * estimation takes three from its base: the light's pick, the point on it (2-D), the stream of
+ * its shadow ray's media. */
+enum {
+	DIM_NEE = 0,	    /* at the surface or the medium's scattering point: 0-2 */
+	DIM_SSS_BRANCH = 3, /* coat or BSSRDF */
+	DIM_SSS_SEARCH = 4, /* the entry search's numbers: 4-8 */
+	DIM_SSS_NEE = 9,    /* at the entry point: 9-11 */
+	DIM_DELTA = 12,	    /* a delta lobe or the opaque ones */
+	DIM_CLEAR = 13,	    /* which delta lobe */
+	DIM_BSDF_LOBE = 14, /* the BSDF's (or phase function's) lobe */
+	DIM_BSDF_DIR = 15,  /* its direction (2-D) */
+	DIM_RR = 16,	    /* Russian roulette */
+	DIM_MEDIA = 17,	    /* the stream of the media's tracking along the segment before the vertex */
+	DIM_COUNT = 18
+};
+_Static_assert(DIM_COUNT <= RENDER_VERTEX_DIMS, "a vertex's dimensions fit its block");
+
 typedef struct frame {
 	vec3 t, b, n;
 } frame;
@@ -163,8 +183,9 @@ static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d,
  * otherwise. The ray starts inside the interior of material `inside` (object inside_obj), -1:
  * outside every interior. */
 static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
-				 const nest *from, rng *g)
+				 const nest *from, render_sampler *smp, uint32_t dim)
 {
+	rng local, *g = s->media ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
 	const vec3 o0 = ray.o;
 	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
@@ -204,14 +225,14 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
-			  rng *g)
+			  render_sampler *g, uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
 		return v3s(0.0f);
 	float pick;
-	size_t li = light_set_pick(ls, rng_float(g), &pick);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
+	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
@@ -223,7 +244,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -237,14 +258,15 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
  * d_in): one light picked by power, the media's phase functions towards it, the shadow ray
  * starting inside the container. A light marked no_media lights no medium. */
 static vec3 sample_direct_medium(const render_scene *s, const render_settings *set, const render_media *md,
-				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, rng *g)
+				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, render_sampler *g,
+				 uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0 || set->mode == RENDER_BSDF_ONLY)
 		return v3s(0.0f);
 	float pick;
-	size_t li = light_set_pick(ls, rng_float(g), &pick);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
+	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].no_media || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
 		return v3s(0.0f);
@@ -254,7 +276,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -285,12 +307,17 @@ static void turn_hit(render_hit *h, float side)
 _Static_assert(RENDER_SSS_MAX_HITS <= SSS_CIRCLE_MAX_HITS, "sss_circle_choose weighs every hit kept");
 
 static bool circle_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-			 const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
+			 const render_hit *exit, vec3 n_out, render_sampler *g, sss_entry *e, render_sample *out)
 {
 	sss_circle_opts o = sss_circle_default_opts();
 	o.kind = m->method == SSS_METHOD_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
 	o.weight = set->circle_weight;
-	float u_channel = rng_float(g), u_r = rng_float(g), u_phi = rng_float(g), u_pick = rng_float(g);
+	/* The radius and the circle's angle as one 2-D point: stratified together. (The random
+	 * sampler draws y first: u_r keeps the stream's order of before.) */
+	float u_channel = render_sampler_1d(g, DIM_SSS_SEARCH);
+	vec2 u_rphi = render_sampler_2d(g, DIM_SSS_SEARCH + 1);
+	float u_r = u_rphi.y, u_phi = u_rphi.x;
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 2);
 	double r_mm = sss_profile_sample(&m->profile, u_channel, u_r);
 	sss_circle c = sss_circle_make(exit->p, n_out, (float)(r_mm * m->units_per_mm), 0.0f, u_phi, &o);
 	tri_circle_hit hits[RENDER_SSS_MAX_HITS];
@@ -345,11 +372,13 @@ static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 /* The disk comparator (King et al. 2013; src/sss/README.md "The disk comparator"): a probe
  * segment along n, t or b through the sphere of r_max, every hit on the same volume weighed by
  * MIS over the axes, one chosen by resampling as circle_entry does. */
-static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out, rng *g,
-		       sss_entry *e, render_sample *out)
+static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out,
+		       render_sampler *g, sss_entry *e, render_sample *out)
 {
-	double u[4] = {rng_double(g), rng_double(g), rng_double(g), rng_double(g)};
-	float u_pick = rng_float(g);
+	double u[4];
+	for (uint32_t k = 0; k < 4; k++)
+		u[k] = render_sampler_1d_double(g, DIM_SSS_SEARCH + k);
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 4);
 	double mm_per_unit = 1.0 / m->units_per_mm;
 	sss_disk_frame f = sss_disk_frame_make(exit->p, n_out);
 	sss_disk_probe q = sss_disk_probe_make(&m->profile, mm_per_unit, &f, u);
@@ -398,8 +427,9 @@ static bool refract_in(vec3 wo, vec3 n, float ior, vec3 *wt)
  * smooth boundary's one refracted direction never finds a point light) and the comparison with
  * the profiles measures their spatial and total albedo error, not an angular one. */
 static bool volume_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_shade,
-			 vec3 n_out, vec3 wo, rng *g, sss_entry *e, render_sample *out)
+			 vec3 n_out, vec3 wo, render_sampler *smp, sss_entry *e, render_sample *out)
 {
+	rng local, *g = render_sampler_stream(smp, DIM_SSS_SEARCH, &local);
 	vec3 w_in;
 	if (!refract_in(wo, n_shade, m->ior, &w_in) || v3_dot(w_in, n_out) >= 0.0f)
 		if (!refract_in(wo, n_out, m->ior, &w_in))
@@ -425,7 +455,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 /* The one place where a method is chosen. False when no entry point was found: the path ends
  * there (each method counts its failures in out->sss_nohit; an absorbed walk is not one). */
 static bool sss_find_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-			   const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, rng *g, sss_entry *e,
+			   const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, render_sampler *g, sss_entry *e,
 			   render_sample *out)
 {
 	out->sss_searches++;
@@ -530,19 +560,19 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 
 /* Next-event estimation at v through the BSDF b (v's own, or a part of it). */
 static inline void add_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			      const vertex *v, rng *g, path *pa)
+			      const vertex *v, render_sampler *g, uint32_t dim, path *pa)
 {
 	if (set->mode != RENDER_BSDF_ONLY)
 		pa->radiance = v3_add(pa->radiance,
 				      v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-								     v->lobe_prob, &pa->in, g)));
+								     v->lobe_prob, &pa->in, g, dim)));
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
  * leaves it through the entry lobe, outside the medium. fr is the coat's Fresnel at the exit,
  * p_sss the branch's probability. */
 static inline void enter_at(const render_scene *s, const render_settings *set, const render_sss *sm,
-			    const sss_entry *e, float fr, float p_sss, vertex *v, rng *g, path *pa)
+			    const sss_entry *e, float fr, float p_sss, vertex *v, render_sampler *g, path *pa)
 {
 	bsdf_params at = s->materials[e->hit.material];
 	vec3 ns_i = e->hit.ns;
@@ -561,21 +591,21 @@ static inline void enter_at(const render_scene *s, const render_settings *set, c
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
 	v->wo_local = v3(0.0f, 0.0f, 1.0f);
 	v->b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm), .alpha = 1.0f, .ior = sm->ior};
-	add_direct(s, set, &v->b, v, g, pa);
+	add_direct(s, set, &v->b, v, g, DIM_SSS_NEE, pa);
 }
 
 /* Scattering at a subsurface material: the coat's reflection is a lobe of its own (light sampled
  * here, and v keeps only it), its transmission the BSSRDF (v moves to the entry point). False
  * when the BSSRDF found no entry: the path ends. */
 static inline bool sss_scatter(const render_scene *s, const render_settings *set, const render_sss *sm,
-			       const render_hit *hit, vec3 wo, vertex *v, rng *g, path *pa, render_sample *out)
+			       const render_hit *hit, vec3 wo, vertex *v, render_sampler *g, path *pa, render_sample *out)
 {
 	float fr = bsdf_fresnel_dielectric(v->wo_local.z, sm->ior);
 	float p_sss = sss_branch_prob(fr, v->b.diffuse);
 	bsdf_params spec = v->b;
 	spec.diffuse = v3s(0.0f);
-	add_direct(s, set, &spec, v, g, pa);
-	if (!(rng_float(g) < p_sss)) {
+	add_direct(s, set, &spec, v, g, DIM_NEE, pa);
+	if (!(render_sampler_1d(g, DIM_SSS_BRANCH) < p_sss)) {
 		v->b = spec;
 		pa->beta = v3_scale(pa->beta, 1.0f / (1.0f - p_sss));
 		return true;
@@ -588,11 +618,11 @@ static inline bool sss_scatter(const render_scene *s, const render_settings *set
 }
 
 /* Russian roulette past RENDER_RR_DEPTH; false when the path ends. */
-static inline bool roulette(int bounce, rng *g, path *pa)
+static inline bool roulette(int bounce, render_sampler *g, path *pa)
 {
 	if (bounce + 1 >= RENDER_RR_DEPTH) {
 		float q = fminf(1.0f, v3_max_comp(pa->beta));
-		if (!(rng_float(g) < q))
+		if (!(render_sampler_1d(g, DIM_RR) < q))
 			return false;
 		pa->beta = v3_scale(pa->beta, 1.0f / q);
 	}
@@ -601,10 +631,10 @@ static inline bool roulette(int bounce, rng *g, path *pa)
 
 /* The BSDF sample that continues the path from v, and Russian roulette; false when the path ends.
  * *ray becomes the next ray. */
-static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, render_ray *ray)
+static inline bool continue_path(const vertex *v, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
-	float u_lobe = rng_float(g);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	float u_lobe = render_sampler_1d(g, DIM_BSDF_LOBE);
+	vec2 u = render_sampler_2d(g, DIM_BSDF_DIR);
 	vec3 wi_local, fval;
 	float pdf;
 	if (!bsdf_sample(&v->b, v->wo_local, u_lobe, u, &wi_local, &fval, &pdf))
@@ -649,11 +679,12 @@ static inline float delta_prob(const vertex *v, bool entering)
  * which is no scattering event (the emitter MIS stays with the vertex before it). False when the
  * path ends; *ray becomes the next ray. */
 static inline bool continue_clear(const render_settings *set, const render_hit *hit, const vertex *v, bool entering,
-				  float p_delta, int bounce, rng *g, path *pa, render_ray *ray)
+				  float p_delta, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
 	vec3 wi_local, w;
 	bool refracted;
-	if (!bsdf_clear_sample(&v->b, v->wo_local, entering, rng_float(g), &wi_local, &w, &refracted))
+	if (!bsdf_clear_sample(&v->b, v->wo_local, entering, render_sampler_1d(g, DIM_CLEAR), &wi_local, &w,
+			       &refracted))
 		return false;
 	bool thin = v->b.clear.kind == BSDF_CLEAR_THIN;
 	vec3 wi = thin ? ray->d : v3_normalize(to_world(&v->f, wi_local));
@@ -683,20 +714,22 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
  * sample: *ray becomes the next ray). 1: the path scattered and goes on; 0: it reached the
  * surface at seg; -1: it ends. */
 static int through_media(const render_scene *s, const render_settings *set, const render_media *md, uint32_t obj,
-			 float seg, int bounce, rng *g, path *pa, render_ray *ray)
+			 float seg, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
 	media_ctx mc = {s, obj};
 	render_media_coef c;
 	float ts;
-	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, g, &pa->beta, &pa->radiance, &c, &ts))
+	rng local;
+	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, render_sampler_stream(g, DIM_MEDIA, &local),
+				&pa->beta, &pa->radiance, &c, &ts))
 		return v3_max_comp(pa->beta) > 0.0f ? 0 : -1;
 	if (bounce >= set->max_trace_level)
 		return -1;
 	vec3 x = v3_madd(ray->o, ray->d, ts);
 	pa->radiance = v3_add(pa->radiance,
-			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g)));
-	float u_pick = rng_float(g);
-	vec2 u = v2(rng_float(g), rng_float(g));
+			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g, DIM_NEE)));
+	float u_pick = render_sampler_1d(g, DIM_BSDF_LOBE);
+	vec2 u = render_sampler_2d(g, DIM_BSDF_DIR);
 	vec3 wi, fval;
 	float pdf;
 	if (!render_media_phase_sample(md, &c, ray->d, u_pick, u, &wi, &fval, &pdf))
@@ -714,7 +747,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	return 1;
 }
 
-render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
+render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, render_sampler *g)
 {
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
@@ -722,7 +755,9 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
 		   .fog_view = true, .medium = -1};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
-	for (int bounce = 0, passes = 0;; bounce++) {
+	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
+	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
+		render_sampler_vertex(g, (uint32_t)vtx);
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
@@ -769,9 +804,9 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
 		} else if (v.lobe_prob > 0.0f && !at_cap) {
-			add_direct(s, set, &v.b, &v, g, &pa);
+			add_direct(s, set, &v.b, &v, g, DIM_NEE, &pa);
 		}
-		bool delta = p_delta > 0.0f && rng_float(g) < p_delta;
+		bool delta = p_delta > 0.0f && render_sampler_1d(g, DIM_DELTA) < p_delta;
 		if (at_cap && !delta)
 			break;
 		if (delta) { /* a delta continuation keeps the camera ray's fog, as a mirror's does */

@@ -11,7 +11,8 @@
  * cannot see delta lights). Russian roulette starts after RENDER_RR_DEPTH scattering events, with
  * survival probability min(1, max component of the path throughput). max_trace_level is the most
  * scattering events of a path (POV-Ray's meaning: 1 is direct light only); emission reached after
- * the last event still counts. All randomness comes from the rng given per sample.
+ * the last event still counts. All randomness comes from the sample's sampler (sampler.h), each
+ * purpose at a vertex its own dimension.
  *
  * Subsurface scattering (DESIGN.md, "Subsurface scattering"): at a material with a render_sss the
  * coat's specular reflection stays a BSDF lobe; the light it transmits, 1 - F(w_o), goes through
@@ -31,6 +32,7 @@
 #include "render/fog.h"
 #include "render/light.h"
 #include "render/media.h"
+#include "render/sampler.h"
 #include "sss/circle.h"
 #include "sss/medium.h"
 #include "sss/profile.h"
@@ -161,8 +163,10 @@ typedef struct render_sample {
 	uint32_t sss_overflow; /* searches with more hits than kept (the first ones are used) */
 } render_sample;
 
-/* Traces one path from the camera ray; g supplies every random number. May return non-finite
- * radiance when the scene does (the film drops such samples). */
-render_sample render_path(const render_scene *scene, const render_settings *settings, render_ray ray, rng *g);
+/* Traces one path from the camera ray; g supplies every random number (its camera dimensions
+ * are the caller's: RENDER_DIM_PIXEL and RENDER_DIM_LENS). May return non-finite radiance when
+ * the scene does (the film drops such samples). */
+render_sample render_path(const render_scene *scene, const render_settings *settings, render_ray ray,
+			  render_sampler *g);
 
 #endif

@@ -25,6 +25,7 @@ typedef struct output_info {
 	const char *scene_path;
 	const char *scene_hash; /* hex digest of the scene text and its includes */
 	uint64_t seed;
+	const char *sampler; /* "sobol" or "random" (render_sampler_name) */
 	const char *sss_method;
 	double clock;
 	double render_seconds;
@@ -36,7 +37,7 @@ typedef struct output_info {
 
 /* Writes f as an EXR (atomically). Channels: R G B A, then albedo.R/G/B, N.X/Y/Z, Z,
  * variance.R/G/B, error (film_pixel_error) and samples (each pixel's count) as asked. Attributes:
- * software, circe.scene, circe.scene_hash, circe.seed, circe.spp (samples completed in every pixel
+ * software, circe.scene, circe.scene_hash, circe.seed, circe.sampler, circe.spp (samples completed in every pixel
  * adaptive sampling did not stop), circe.sss, circe.clock, circe.render_time_s,
  * circe.dropped_samples, circe.interrupted, circe.tile when set and circe.noise_threshold when
  * adaptive. */

@@ -205,8 +205,8 @@ int main(void)
 		const int px = 20, py = 15;
 		double sum[3] = {0}, sum2[3] = {0};
 		for (uint32_t k = 0; k < whole.spp; k++) {
-			rng g = rng_for_sample(1234, px, py, k);
-			vec2 pu = v2(rng_float(&g), rng_float(&g)), lu = v2(rng_float(&g), rng_float(&g));
+			render_sampler g = render_sampler_make(RENDER_SAMPLER_SOBOL, 1234, px, py, k);
+			vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL), lu = render_sampler_2d(&g, RENDER_DIM_LENS);
 			render_settings set = {.max_trace_level = 5, .mode = RENDER_MIS};
 			render_sample smp =
 			    render_path(&scene.rs, &set, cam_ray(&camera, px, py, pu, lu), &g);
