@@ -10,6 +10,24 @@
 #include "sss/probe.h"
 
 #include <assert.h>
+#include <string.h>
+
+static const char *const part_names[RENDER_PART_COUNT] = {"all", "camera", "coat", "sss", "direct", "indirect"};
+
+bool render_part_from_name(const char *name, render_part *part)
+{
+	for (int k = 0; k < RENDER_PART_COUNT; k++)
+		if (!strcmp(name, part_names[k])) {
+			*part = (render_part)k;
+			return true;
+		}
+	return false;
+}
+
+const char *render_part_name(render_part part)
+{
+	return part >= 0 && part < RENDER_PART_COUNT ? part_names[part] : "all";
+}
 
 /* A path passes at most this many thin transparent surfaces without counting them as bounces. */
 #define RENDER_MAX_PASSES 64
@@ -498,7 +516,33 @@ typedef struct path {
 	bool scattered;	     /* a non-delta vertex was met */
 	int medium;	     /* the material whose interior the path is in (nest's innermost), -1: none */
 	nest in;	     /* the interiors the path is in */
+	int bounce;	     /* render_path's: the scattering events before the current ray */
+	render_part first;   /* the kind of the first event (coat, sss, direct); camera: none yet */
 } path;
+
+/* Whether light after `events` scattering events, the first of kind `kind` (when events is 1),
+ * belongs to the settings' part. */
+static inline bool in_part(const render_settings *set, int events, render_part kind)
+{
+	if (set->part == RENDER_PART_ALL)
+		return true;
+	render_part p = events == 0 ? RENDER_PART_CAMERA : events == 1 ? kind : RENDER_PART_INDIRECT;
+	return p == set->part;
+}
+
+/* Adds light c (already weighed by the throughput) that arrives after the path's events. */
+static inline void gather(const render_settings *set, path *pa, vec3 c)
+{
+	if (in_part(set, pa->bounce, pa->first))
+		pa->radiance = v3_add(pa->radiance, c);
+}
+
+/* The first scattering event's kind is kind, unless one was met already. */
+static inline void first_event(path *pa, render_part kind)
+{
+	if (pa->first == RENDER_PART_CAMERA)
+		pa->first = kind;
+}
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
 typedef struct vertex {
@@ -519,7 +563,7 @@ static inline void add_escaped(const render_scene *s, const render_settings *set
 		const light *l = &ls->lights[ls->infinite[k]];
 		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
 		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
-		pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
+		gather(set, pa, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
 	}
 }
 
@@ -534,7 +578,7 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
 	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
 	float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
-	pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, l->color), w));
+	gather(set, pa, v3_scale(v3_mul(pa->beta, l->color), w));
 }
 
 /* The vertex at a surface hit from direction -wo: the material shaded there, the frame about the
@@ -558,14 +602,17 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	v->lobe_prob = 1.0f;
 }
 
-/* Next-event estimation at v through the BSDF b (v's own, or a part of it). */
+/* Next-event estimation at v through the BSDF b (v's own, or a part of it), an event of kind
+ * `kind` (for --part; computed whatever the part, so the random decisions stay the same). */
 static inline void add_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			      const vertex *v, render_sampler *g, uint32_t dim, path *pa)
+			      const vertex *v, render_sampler *g, uint32_t dim, render_part kind, path *pa)
 {
-	if (set->mode != RENDER_BSDF_ONLY)
-		pa->radiance = v3_add(pa->radiance,
-				      v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-								     v->lobe_prob, &pa->in, g, dim)));
+	if (set->mode == RENDER_BSDF_ONLY)
+		return;
+	vec3 c = v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
+						 v->lobe_prob, &pa->in, g, dim));
+	if (in_part(set, pa->bounce + 1, pa->bounce == 0 ? kind : pa->first))
+		pa->radiance = v3_add(pa->radiance, c);
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
@@ -591,7 +638,7 @@ static inline void enter_at(const render_scene *s, const render_settings *set, c
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
 	v->wo_local = v3(0.0f, 0.0f, 1.0f);
 	v->b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm), .alpha = 1.0f, .ior = sm->ior};
-	add_direct(s, set, &v->b, v, g, DIM_SSS_NEE, pa);
+	add_direct(s, set, &v->b, v, g, DIM_SSS_NEE, RENDER_PART_SSS, pa);
 }
 
 /* Scattering at a subsurface material: the coat's reflection is a lobe of its own (light sampled
@@ -604,12 +651,14 @@ static inline bool sss_scatter(const render_scene *s, const render_settings *set
 	float p_sss = sss_branch_prob(fr, v->b.diffuse);
 	bsdf_params spec = v->b;
 	spec.diffuse = v3s(0.0f);
-	add_direct(s, set, &spec, v, g, DIM_NEE, pa);
+	add_direct(s, set, &spec, v, g, DIM_NEE, RENDER_PART_COAT, pa);
 	if (!(render_sampler_1d(g, DIM_SSS_BRANCH) < p_sss)) {
+		first_event(pa, RENDER_PART_COAT);
 		v->b = spec;
 		pa->beta = v3_scale(pa->beta, 1.0f / (1.0f - p_sss));
 		return true;
 	}
+	first_event(pa, RENDER_PART_SSS);
 	sss_entry e;
 	if (!sss_find_entry(s, set, sm, hit, v->f.n, v->ng_out, wo, g, &e, out))
 		return false;
@@ -656,11 +705,12 @@ static inline bool continue_path(const vertex *v, int bounce, render_sampler *g,
 }
 
 /* The fogs between the ray's origin and t: what lies beyond is dimmed, the fog's colour added. */
-static inline void through_fog(const render_scene *s, const render_ray *ray, float t, path *pa)
+static inline void through_fog(const render_scene *s, const render_settings *set, const render_ray *ray, float t,
+			       path *pa)
 {
 	vec3 att, add;
 	render_fog_segment(s->fogs, s->fog_count, ray->o, ray->d, t, &att, &add);
-	pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, add));
+	gather(set, pa, v3_mul(pa->beta, add));
 	pa->beta = v3_mul(pa->beta, att);
 }
 
@@ -720,14 +770,20 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	render_media_coef c;
 	float ts;
 	rng local;
-	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, render_sampler_stream(g, DIM_MEDIA, &local),
-				&pa->beta, &pa->radiance, &c, &ts))
+	/* The media's emission on the way: straight into the radiance, or apart for a part. */
+	vec3 emitted = v3s(0.0f), *acc = set->part == RENDER_PART_ALL ? &pa->radiance : &emitted;
+	bool scattered = render_media_track(md, media_density, &mc, ray->o, ray->d, seg,
+					    render_sampler_stream(g, DIM_MEDIA, &local), &pa->beta, acc, &c, &ts);
+	gather(set, pa, emitted);
+	if (!scattered)
 		return v3_max_comp(pa->beta) > 0.0f ? 0 : -1;
 	if (bounce >= set->max_trace_level)
 		return -1;
 	vec3 x = v3_madd(ray->o, ray->d, ts);
-	pa->radiance = v3_add(pa->radiance,
-			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g, DIM_NEE)));
+	vec3 direct = v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g, DIM_NEE));
+	if (in_part(set, bounce + 1, bounce == 0 ? RENDER_PART_DIRECT : pa->first))
+		pa->radiance = v3_add(pa->radiance, direct);
+	first_event(pa, RENDER_PART_DIRECT);
 	float u_pick = render_sampler_1d(g, DIM_BSDF_LOBE);
 	vec2 u = render_sampler_2d(g, DIM_BSDF_DIR);
 	vec3 wi, fval;
@@ -753,16 +809,17 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
-		   .fog_view = true, .medium = -1};
+		   .fog_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
 	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
 		render_sampler_vertex(g, (uint32_t)vtx);
+		pa.bounce = bounce;
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
 		if (s->fog_count && pa.fog_view)
-			through_fog(s, &ray, hit_any ? hit.t : INFINITY, &pa);
+			through_fog(s, set, &ray, hit_any ? hit.t : INFINITY, &pa);
 		uint32_t md_obj = 0;
 		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
@@ -793,7 +850,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		vertex v;
 		make_vertex(s, &hit, wo, &v);
 		/* A POV-Ray finish's ambient and emission: seen by every ray, never sampled as a light. */
-		pa.radiance = v3_add(pa.radiance, v3_mul(pa.beta, v.b.emit));
+		gather(set, &pa, v3_mul(pa.beta, v.b.emit));
 		if (bounce == 0 && passes == 0)
 			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
@@ -804,8 +861,10 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
 		} else if (v.lobe_prob > 0.0f && !at_cap) {
-			add_direct(s, set, &v.b, &v, g, DIM_NEE, &pa);
+			add_direct(s, set, &v.b, &v, g, DIM_NEE, RENDER_PART_DIRECT, &pa);
 		}
+		if (!sm)
+			first_event(&pa, RENDER_PART_DIRECT);
 		bool delta = p_delta > 0.0f && render_sampler_1d(g, DIM_DELTA) < p_delta;
 		if (at_cap && !delta)
 			break;

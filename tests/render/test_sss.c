@@ -4,7 +4,8 @@
  * the furnace bound, extreme parameters give no NaN or Inf, the talk's weight is measurably low on
  * a cylinder, circle and disk converge to the same image on the bunny and the head, and the
  * volume walk conserves energy and lands near the profiles' albedo (its difference from them, the
- * model bias, is printed per material). */
+ * model bias, is printed per material). The parts of render_settings.part (camera, coat, sss,
+ * direct, indirect) are each there and sum to the whole image, pixel by pixel, for both samplers. */
 #include "check.h"
 #include "lang/lang.h"
 #include "build/build.h"
@@ -398,6 +399,54 @@ static void test_volume(void)
 	}
 }
 
+/* The five parts of a scene with all of them (the background seen, a skin sphere's coat and
+ * BSSRDF, a diffuse floor, interreflection) sum to the whole: the paths make the same decisions
+ * whatever the part, so the sums agree to float rounding, sample by sample. */
+static void test_parts(void)
+{
+	world *w;
+	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_CIRCLE};
+	bool ok = build("camera { location <0, 1.2, -4> look_at <0, 0.5, 0> angle 50 }\n"
+			"background { color rgb <0.3, 0.35, 0.4> }\n"
+			"light_source { <-3, 5, -4> color rgb 2 }\n"
+			"sphere { <0, 0.6, 0>, 0.6 material { skin { } } }\n"
+			"plane { y, 0 pigment { color rgb 0.7 } }\n",
+			&o, &w);
+	CHECK(ok, "the parts' scene builds");
+	if (!ok)
+		return;
+	for (int k = 0; k < 2; k++) {
+		render_sampler_kind kind = k ? RENDER_SAMPLER_RANDOM : RENDER_SAMPLER_SOBOL;
+		double whole[W * H] = {0}, sum[W * H] = {0}, total[RENDER_PART_COUNT] = {0};
+		for (int part = 0; part < RENDER_PART_COUNT; part++) {
+			render_settings set = {.max_trace_level = 5, .mode = RENDER_MIS, .part = (render_part)part};
+			for (int y = 0; y < H; y++)
+				for (int x = 0; x < W; x++)
+					for (uint32_t s = 0; s < 8; s++) {
+						render_sampler g = render_sampler_make(kind, 3, (uint32_t)x, (uint32_t)y, s);
+						vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL);
+						vec2 lu = render_sampler_2d(&g, RENDER_DIM_LENS);
+						render_sample r = render_path(world_scene(w), &set,
+									      cam_ray(world_camera(w), x, y, pu, lu), &g);
+						double v = r.radiance.x + r.radiance.y + r.radiance.z;
+						*(part ? &sum[y * W + x] : &whole[y * W + x]) += v;
+						total[part] += v;
+					}
+		}
+		double worst = 0.0;
+		for (int i = 0; i < W * H; i++)
+			worst = fmax(worst, fabs(sum[i] - whole[i]) / (1e-3 + whole[i]));
+		printf("parts, %s sampler: whole %.4f = camera %.4f + coat %.4f + sss %.4f + direct %.4f + indirect "
+		       "%.4f; worst pixel %.2g\n",
+		       render_sampler_name(kind), total[0], total[1], total[2], total[3], total[4], total[5], worst);
+		CHECK(worst < 1e-4, "%s: the parts differ from the whole by %g in a pixel", render_sampler_name(kind), worst);
+		for (int part = 1; part < RENDER_PART_COUNT; part++)
+			CHECK(total[part] > 1e-3 * total[0], "%s: part %s is missing (%g of %g)", render_sampler_name(kind),
+			      render_part_name((render_part)part), total[part], total[0]);
+	}
+	world_free(w);
+}
+
 int main(void)
 {
 	if (!mkdtemp(dir))
@@ -409,6 +458,7 @@ int main(void)
 	test_talk_weight();
 	test_circle_vs_disk();
 	test_volume();
+	test_parts();
 	rmdir(dir);
 	return check_done("test_sss");
 }
