@@ -95,6 +95,7 @@ static bool render_tile(pool *p, int tile)
 			film_pixel px = *film_at(f->acc, f, x, y);
 			if (!px.stopped) {
 				assert(px.n == p->s0);
+				px.nets = p->job->sampler == RENDER_SAMPLER_SOBOL;
 				render_pixel(p, x, y, &px, counts);
 				taken += p->s1 - p->s0;
 			}
