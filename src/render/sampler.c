@@ -8,8 +8,7 @@ static inline uint32_t reverse_bits(uint32_t x)
 	x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 	x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
 	x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-	x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-	return (x >> 16) | (x << 16);
+	return __builtin_bswap32(x);
 }
 
 /* Burley 2020's Laine-Karras style permutation (his listing with the constants he found): the
@@ -45,11 +44,15 @@ uint64_t render_sampler_key(uint64_t seed, uint32_t px, uint32_t py)
 	return rng_mix64(h ^ (((uint64_t)px << 32) | py));
 }
 
-/* The seeds of dimension dim: 64 hashed bits, and 64 more from them. */
+/* The seeds of dimension dim: 64 hashed bits (the key is a hash already: one mix of it and the
+ * dimension times an odd constant, distinct for every dimension, is enough). */
 static inline uint64_t dim_hash(uint64_t key, uint32_t dim)
 {
-	return rng_mix64(key ^ rng_mix64((uint64_t)dim + 0x9e3779b97f4a7c15ULL));
+	return rng_mix64(key ^ ((uint64_t)(dim + 1u) * 0x9e3779b97f4a7c15ULL));
 }
+
+/* A third 32-bit seed from h (the second component's scramble): h's bits multiplied up. */
+static inline uint32_t seed_y(uint64_t h) { return (uint32_t)((h * 0xd1b54a32d192ed03ULL) >> 32) ^ (uint32_t)h; }
 
 /* The shuffled index of dimension hash h: its own scramble of the sample number. */
 static inline uint32_t shuffled(uint64_t h, uint32_t index) { return render_owen_scramble(index, (uint32_t)h); }
@@ -57,14 +60,14 @@ static inline uint32_t shuffled(uint64_t h, uint32_t index) { return render_owen
 /* The scrambled 32-bit value of Sobol dimension 0 at shuffled index j: owen(reverse(j)) is
  * reverse(lk(j)). */
 static inline uint32_t value0(uint64_t h, uint32_t j) { return reverse_bits(lk_permute(j, (uint32_t)(h >> 32))); }
-static inline uint32_t value1(uint64_t h2, uint32_t j) { return render_owen_scramble(sobol1(j), (uint32_t)h2); }
+static inline uint32_t value1(uint64_t h, uint32_t j) { return render_owen_scramble(sobol1(j), seed_y(h)); }
 
 void render_sampler_bits(uint64_t key, uint32_t dim, uint32_t index, uint32_t out[2])
 {
 	uint64_t h = dim_hash(key, dim);
 	uint32_t j = shuffled(h, index);
 	out[0] = value0(h, j);
-	out[1] = value1(rng_mix64(h), j);
+	out[1] = value1(h, j);
 }
 
 static inline float to_float(uint32_t x) { return (float)(x >> 8) * 0x1p-24f; }

@@ -142,8 +142,10 @@ static void test_slab_zero_variance(void)
 	for (int i = 0; i < W * H; i++)
 		var += (many.px[i] - many.mean) * (many.px[i] - many.mean) / (W * H - 1);
 	double se = sqrt(var / (W * H));
-	CHECK(fabs(many.mean - expect) <= 4.0 * se, "disk slab at 64 spp: mean %.6g, expected %.6g (SE %.3g)", many.mean,
-	      expect, se);
+	/* Sobol's samples stratify the axis choice: half of a pixel's 64 probes are the normal
+	 * axis, and every pixel is right to float rounding (SE ~1e-10). */
+	CHECK(fabs(many.mean - expect) <= fmax(4.0 * se, 1e-6 * expect),
+	      "disk slab at 64 spp: mean %.6g, expected %.6g (SE %.3g)", many.mean, expect, se);
 }
 
 /* radius -> 0: the BSSRDF with ior 1 becomes a Lambertian of the same albedo. */
