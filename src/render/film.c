@@ -65,10 +65,11 @@ bool film_pixel_add(film_pixel *p, const render_sample *s)
 		    nrm[3] = {s->normal.x, s->normal.y, s->normal.z};
 	bool pow2 = p->n && !(p->n & (p->n - 1u)); /* the first n samples are the prefix q from now on */
 	for (int k = 0; k < 3; k++) {
-		if (pow2)
+		if (!p->nets)
+			p->sum_sq[k] += (double)rgb[k] * rgb[k];
+		else if (pow2)
 			p->sum_q[k] = p->sum[k];
 		p->sum[k] += rgb[k];
-		p->sum_sq[k] += (double)rgb[k] * rgb[k];
 		p->albedo[k] += alb[k];
 		p->normal[k] += nrm[k];
 	}

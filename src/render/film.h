@@ -11,7 +11,7 @@
  * for adaptive sampling's neighbour rule, adaptive.h) the region and a ring of that many pixels
  * around it, clipped to the image; acc and work cover it, row-major from (ax0, ay0); film_read
  * reads the region only.
- * Memory: 2 x 144 bytes per sampled pixel. Reading (film_read) is only safe between passes. */
+ * Memory: 2 x 120 bytes per sampled pixel. Reading (film_read) is only safe between passes. */
 #ifndef CIRCE_RENDER_FILM_H
 #define CIRCE_RENDER_FILM_H
 
@@ -21,8 +21,11 @@
 #include <stdint.h>
 
 typedef struct film_pixel {
-	double sum[3], sum_sq[3]; /* radiance and its square, per channel */
-	double sum_q[3];	  /* radiance of the first q samples, q the largest power of two < n */
+	double sum[3]; /* radiance, per channel */
+	union {	       /* by the pixel's estimator (nets): */
+		double sum_sq[3]; /* 0: the radiance squared */
+		double sum_q[3];  /* 1: the radiance of the first q samples, q the largest power of two < n */
+	};
 	double albedo[3], normal[3], depth;
 	uint32_t n;	   /* samples added (= the film's spp unless adaptive sampling stopped the pixel) */
 	uint32_t latch;	   /* adaptive: the check (sample count) at which its own error fell below the
