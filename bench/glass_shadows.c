@@ -15,8 +15,8 @@ static void measure(const ts_scene *s, const cam *c, bool opaque, long n, double
 	render_settings set = {.max_trace_level = 8, .mode = RENDER_MIS, .opaque_glass_shadows = opaque};
 	double sum = 0, sum2 = 0;
 	for (long k = 0; k < n; k++) {
-		rng g = rng_for_sample(11, 0, 0, (uint32_t)k);
-		vec2 pu = v2(rng_float(&g), rng_float(&g));
+		render_sampler g = render_sampler_make(RENDER_SAMPLER_SOBOL, 11, 0, 0, (uint32_t)k);
+		vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL);
 		double l = v3_luminance(render_path(&s->rs, &set, cam_ray(c, 0, 0, pu, v2(0, 0)), &g).radiance);
 		sum += l, sum2 += l * l;
 	}

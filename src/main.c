@@ -38,7 +38,8 @@ enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_SCENE = 3, EXIT_INTER
 static const char usage_text[] =
 	"usage: circe render SCENE [-o out.exr] [--png out.png] [-W W -H H] [--spp N | --time S]\n"
 	"                    [--threads N] [--sss circle|fullcircle|disk|volume|auto]\n"
-	"                    [--circle-weight exact|talk] [--seed N] [--region X0,Y0,X1,Y1]\n"
+	"                    [--circle-weight exact|talk] [--seed N] [--sampler sobol|random]\n"
+	"                    [--part camera|coat|sss|direct|indirect] [--region X0,Y0,X1,Y1]\n"
 	"                    [--noise-threshold T [--min-spp N]]\n"
 	"                    [--aov albedo,normal,depth,variance,error,samples] [--tile I/N]\n"
 	"                    [--clock F] [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR]\n"
@@ -414,6 +415,8 @@ typedef struct render_cli {
 	const char *sss;  /* NULL: each material's own method */
 	bool talk_weight; /* --circle-weight talk */
 	uint64_t seed;
+	render_sampler_kind sampler; /* --sampler: sobol (default) or random */
+	render_part part;	     /* --part: all (default) or one part of the light */
 	bool has_region;
 	int region[4]; /* x0, y0, x1, y1 */
 	unsigned aovs; /* OUTPUT_AOV_* bits */
@@ -496,6 +499,16 @@ static bool opt_circle_weight(const cli_opt *op, const char *arg, void *dest)
 	*(bool *)dest = !strcmp(arg, "talk");
 	return true;
 }
+static bool opt_sampler(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return render_sampler_from_name(arg, (render_sampler_kind *)dest);
+}
+static bool opt_part(const cli_opt *op, const char *arg, void *dest)
+{
+	(void)op;
+	return render_part_from_name(arg, (render_part *)dest);
+}
 static bool opt_region(const cli_opt *op, const char *arg, void *dest)
 {
 	(void)op;
@@ -542,6 +555,10 @@ static const cli_opt render_options[] = {
 	 R(talk_weight), 0, 0, "--circle-weight must be exact or talk, not '%s'"},
 	{"seed", 0, "N", "the random seed (default 0)", opt_u64, R(seed), 0, LONG_MAX,
 	 "--seed needs an integer >= 0, not '%s'"},
+	{"sampler", 0, "S", "the samples: sobol (Owen-scrambled, the default) or random (independent)", opt_sampler,
+	 R(sampler), 0, 0, "--sampler must be sobol or random, not '%s'"},
+	{"part", 0, "P", "only this part of the light: camera, coat, sss, direct, indirect (default all)", opt_part,
+	 R(part), 0, 0, "--part must be all, camera, coat, sss, direct or indirect, not '%s'"},
 	{"region", 0, "X0,Y0,X1,Y1", "render only this rectangle of the image", opt_region, 0, 0, 0,
 	 "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '%s'"},
 	{"noise-threshold", 0, "T", "adaptive sampling: a pixel stops below this relative error (--spp: the most)",
@@ -849,6 +866,8 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 	char hash[17];
 	snprintf(hash, sizeof hash, "%016llx", (unsigned long long)s->sc->source_hash);
 	output_info info = {.scene_path = o->scene, .scene_hash = hash, .seed = o->seed,
+			    .sampler = render_sampler_name(o->sampler),
+			    .part = o->part != RENDER_PART_ALL ? render_part_name(o->part) : NULL,
 			    .sss_method = world_sss_method(s->w), .clock = o->clock, .tile = tile[0] ? tile : NULL,
 			    .aovs = o->aovs, .noise_threshold = s->noise_threshold};
 	checkpoint_ctx cp = {s->out, &info, &s->d, s->start};
@@ -856,9 +875,9 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 	render_job job = {
 		.scene = world_scene(s->w), .camera = world_camera(s->w),
 		.settings = {.max_trace_level = max_level > 0 ? max_level : RENDER_DEFAULT_MAX_TRACE_LEVEL,
-			     .mode = RENDER_MIS,
+			     .mode = RENDER_MIS, .part = o->part,
 			     .circle_weight = o->talk_weight ? SSS_CIRCLE_TALK : SSS_CIRCLE_EXACT},
-		.seed = o->seed, .spp = o->time_s > 0 ? 0 : (uint32_t)(o->spp ? o->spp : 64), .time_budget_s = o->time_s,
+		.seed = o->seed, .sampler = o->sampler, .spp = o->time_s > 0 ? 0 : (uint32_t)(o->spp ? o->spp : 64), .time_budget_s = o->time_s,
 		.threads = o->threads, .checkpoint_interval_s = o->checkpoint_s,
 		.checkpoint = on_checkpoint, .checkpoint_user = &cp,
 		.progress = !o->quiet && isatty(fileno(stderr)) ? on_progress : NULL, .interrupt = &interrupted,

@@ -30,6 +30,8 @@ bad "-H needs a height from 1 to 65536, not 'big'" a.pov -H big
 bad "--threads needs a count from 1 to 1024, not '0'" a.pov --threads 0
 bad "--sss must be circle, fullcircle, disk, volume or auto, not 'dipole'" a.pov --sss dipole
 bad "--circle-weight must be exact or talk, not 'approx'" a.pov --circle-weight approx
+bad "--sampler must be sobol or random, not 'halton'" a.pov --sampler halton
+bad "--part must be all, camera, coat, sss, direct or indirect, not 'sky'" a.pov --part sky
 bad "--seed needs an integer >= 0, not '-3'" a.pov --seed -3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '1,2,3'" a.pov --region 1,2,3
 bad "--region needs X0,Y0,X1,Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '5,0,5,10'" a.pov --region 5,0,5,10

@@ -2,7 +2,7 @@
  * A tile is an EXR whose display window is the full frame and whose data window is the tile
  * (OpenEXR's convention). Tiles must agree on everything that decides the pixels: frame size,
  * channels, and the header attributes listed in MERGE_KEYS (scene hash, seed, samples, method,
- * clock, noise threshold); they must not overlap, and together they must cover the frame. */
+ * clock, noise threshold, sampler, part); they must not overlap, and together they must cover the frame. */
 #ifndef CIRCE_IO_MERGE_H
 #define CIRCE_IO_MERGE_H
 
@@ -12,7 +12,9 @@
 #include <stdbool.h>
 
 /* Header attributes that every tile of one frame must share. */
-#define MERGE_KEYS {"circe.scene_hash", "circe.seed", "circe.spp", "circe.sss", "circe.clock", "circe.noise_threshold"}
+#define MERGE_KEYS                                                                                           \
+	{"circe.scene_hash", "circe.seed", "circe.sampler", "circe.spp", "circe.sss", "circe.clock",                \
+	 "circe.noise_threshold", "circe.part"}
 
 /* Tile i of n of a width x height frame: row-major on a grid of cols x rows = n chosen so tiles are
  * as square as possible; sizes differ by at most one pixel in each direction. False when n < 1,

@@ -63,9 +63,13 @@ bool film_pixel_add(film_pixel *p, const render_sample *s)
 		return false;
 	const float rgb[3] = {c.x, c.y, c.z}, alb[3] = {s->albedo.x, s->albedo.y, s->albedo.z},
 		    nrm[3] = {s->normal.x, s->normal.y, s->normal.z};
+	bool pow2 = p->n && !(p->n & (p->n - 1u)); /* the first n samples are the prefix q from now on */
 	for (int k = 0; k < 3; k++) {
+		if (!p->nets)
+			p->sum_sq[k] += (double)rgb[k] * rgb[k];
+		else if (pow2)
+			p->sum_q[k] = p->sum[k];
 		p->sum[k] += rgb[k];
-		p->sum_sq[k] += (double)rgb[k] * rgb[k];
 		p->albedo[k] += alb[k];
 		p->normal[k] += nrm[k];
 	}
@@ -79,6 +83,11 @@ double film_pixel_variance(const film_pixel *p, int k)
 	if (p->n < 2)
 		return 0.0;
 	double ns = p->n, mean = p->sum[k] * (1.0 / ns); /* as the mean is read: the same rounding */
+	if (p->nets) {
+		uint32_t q = 1u << (31 - __builtin_clz(p->n - 1u)); /* the largest power of two < n */
+		double d = mean - p->sum_q[k] / (double)q;
+		return d * d * (double)q / (ns - (double)q);
+	}
 	return fmax(0.0, (p->sum_sq[k] - ns * mean * mean) / (ns - 1.0)) / ns;
 }
 

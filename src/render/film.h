@@ -21,13 +21,18 @@
 #include <stdint.h>
 
 typedef struct film_pixel {
-	double sum[3], sum_sq[3]; /* radiance and its square, per channel */
+	double sum[3]; /* radiance, per channel */
+	union {	       /* by the pixel's estimator (nets): */
+		double sum_sq[3]; /* 0: the radiance squared */
+		double sum_q[3];  /* 1: the radiance of the first q samples, q the largest power of two < n */
+	};
 	double albedo[3], normal[3], depth;
 	uint32_t n;	   /* samples added (= the film's spp unless adaptive sampling stopped the pixel) */
 	uint32_t latch;	   /* adaptive: the check (sample count) at which its own error fell below the
 			    * threshold; 0: not yet */
 	uint32_t stopped;  /* adaptive: 1 once the pixel takes no more samples */
-	uint32_t reserved; /* 0: keeps the struct free of padding, so pixels compare with memcmp */
+	uint32_t nets;	   /* 1: the samples' prefixes of 2^k are nets (the Sobol sampler): the error is
+			    * estimated from the prefixes (film_pixel_variance); 0: independent samples */
 } film_pixel;
 
 typedef struct film {
@@ -84,10 +89,19 @@ void film_read(const film *f, film_channel ch, float *out);
 /* Adds one sample to a pixel accumulator (and counts it in n); returns false, adding nothing, when
  * the radiance is non-finite or negative, or an AOV non-finite (the caller then adds a zero sample). */
 bool film_pixel_add(film_pixel *p, const render_sample *s);
-/* The variance of the pixel's mean in channel k (0..2): sample variance / n (0 below 2 samples). */
+/* The variance of the pixel's mean in channel k (0..2); 0 below 2 samples. Independent samples
+ * (nets 0): the sample variance / n. A sampler whose first 2^k samples are a net for every k
+ * (nets 1: sampler.h's Sobol): its mean converges faster than the sample variance says (it
+ * overestimates the error 4 to 6 times at 16 to 64 samples, bench/README.md), and the variance
+ * of the mean I_n is estimated instead from the mean A_q of the first q samples, q the largest
+ * power of two below n: (I_n - A_q)^2 q / (n - q), unbiased for independent samples (I_n - A_q
+ * = (n - q) / n (B - A_q), B the mean of the others) and, for a sequence of nets, a comparison
+ * of two well-stratified sets of about the same size, as Cycles compares the image with its half
+ * of the samples (kernel/film/adaptive_sampling.h). One difference per channel: noisy per pixel,
+ * unbiased over many. */
 double film_pixel_variance(const film_pixel *p, int k);
 /* The pixel's estimated relative error: the standard error of its mean (the RMS over R, G, B of
- * sqrt(sample variance / n)) over its brightness L (the mean of R, G, B), where below L = 1 the
+ * sqrt(film_pixel_variance)) over its brightness L (the mean of R, G, B), where below L = 1 the
  * divisor is sqrt(L) instead, as Cycles' adaptive sampling normalises it (kernel/film/
  * adaptive_sampling.h: dark pixels are judged as they look after a display's gamma, not by their
  * relative error, which would spend most samples on the darkest). 0 for a pixel of no variance,

@@ -10,6 +10,24 @@
 #include "sss/probe.h"
 
 #include <assert.h>
+#include <string.h>
+
+static const char *const part_names[RENDER_PART_COUNT] = {"all", "camera", "coat", "sss", "direct", "indirect"};
+
+bool render_part_from_name(const char *name, render_part *part)
+{
+	for (int k = 0; k < RENDER_PART_COUNT; k++)
+		if (!strcmp(name, part_names[k])) {
+			*part = (render_part)k;
+			return true;
+		}
+	return false;
+}
+
+const char *render_part_name(render_part part)
+{
+	return part >= 0 && part < RENDER_PART_COUNT ? part_names[part] : "all";
+}
 
 /* A path passes at most this many thin transparent surfaces without counting them as bounces. */
 #define RENDER_MAX_PASSES 64
@@ -21,6 +39,26 @@
  * anything: the branch is chosen by the albedo at the exit, but an albedo texture at the entry
  * point may be brighter, and every contribution must keep a chance. */
 #define RENDER_SSS_MIN_PROB 0.1f
+
+/* The sampler's dimensions of a path vertex (sampler.h), counted from the vertex's block
+ * (render_sampler_vertex, once per loop of render_path): each purpose keeps its label, so it is
+ * the same dimension in every sample of a pixel whichever others a path skipped. A next-event
+ * estimation takes three from its base: the light's pick, the point on it (2-D), the stream of
+ * its shadow ray's media. */
+enum {
+	DIM_NEE = 0,	    /* at the surface or the medium's scattering point: 0-2 */
+	DIM_SSS_BRANCH = 3, /* coat or BSSRDF */
+	DIM_SSS_SEARCH = 4, /* the entry search's numbers: 4-8 */
+	DIM_SSS_NEE = 9,    /* at the entry point: 9-11 */
+	DIM_DELTA = 12,	    /* a delta lobe or the opaque ones */
+	DIM_CLEAR = 13,	    /* which delta lobe */
+	DIM_BSDF_LOBE = 14, /* the BSDF's (or phase function's) lobe */
+	DIM_BSDF_DIR = 15,  /* its direction (2-D) */
+	DIM_RR = 16,	    /* Russian roulette */
+	DIM_MEDIA = 17,	    /* the stream of the media's tracking along the segment before the vertex */
+	DIM_COUNT = 18
+};
+_Static_assert(DIM_COUNT <= RENDER_VERTEX_DIMS, "a vertex's dimensions fit its block");
 
 typedef struct frame {
 	vec3 t, b, n;
@@ -163,8 +201,9 @@ static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d,
  * otherwise. The ray starts inside the interior of material `inside` (object inside_obj), -1:
  * outside every interior. */
 static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
-				 const nest *from, rng *g)
+				 const nest *from, render_sampler *smp, uint32_t dim)
 {
+	rng local, *g = s->media ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
 	const vec3 o0 = ray.o;
 	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
@@ -204,14 +243,14 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
-			  rng *g)
+			  render_sampler *g, uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
 		return v3s(0.0f);
 	float pick;
-	size_t li = light_set_pick(ls, rng_float(g), &pick);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
+	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
@@ -223,7 +262,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -237,14 +276,15 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
  * d_in): one light picked by power, the media's phase functions towards it, the shadow ray
  * starting inside the container. A light marked no_media lights no medium. */
 static vec3 sample_direct_medium(const render_scene *s, const render_settings *set, const render_media *md,
-				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, rng *g)
+				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, render_sampler *g,
+				 uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0 || set->mode == RENDER_BSDF_ONLY)
 		return v3s(0.0f);
 	float pick;
-	size_t li = light_set_pick(ls, rng_float(g), &pick);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
+	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].no_media || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
 		return v3s(0.0f);
@@ -254,7 +294,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g);
+	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
@@ -285,12 +325,17 @@ static void turn_hit(render_hit *h, float side)
 _Static_assert(RENDER_SSS_MAX_HITS <= SSS_CIRCLE_MAX_HITS, "sss_circle_choose weighs every hit kept");
 
 static bool circle_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-			 const render_hit *exit, vec3 n_out, rng *g, sss_entry *e, render_sample *out)
+			 const render_hit *exit, vec3 n_out, render_sampler *g, sss_entry *e, render_sample *out)
 {
 	sss_circle_opts o = sss_circle_default_opts();
 	o.kind = m->method == SSS_METHOD_FULLCIRCLE ? SSS_CIRCLE_FULL : SSS_CIRCLE_HALF;
 	o.weight = set->circle_weight;
-	float u_channel = rng_float(g), u_r = rng_float(g), u_phi = rng_float(g), u_pick = rng_float(g);
+	/* The radius and the circle's angle as one 2-D point: stratified together. (The random
+	 * sampler draws y first: u_r keeps the stream's order of before.) */
+	float u_channel = render_sampler_1d(g, DIM_SSS_SEARCH);
+	vec2 u_rphi = render_sampler_2d(g, DIM_SSS_SEARCH + 1);
+	float u_r = u_rphi.y, u_phi = u_rphi.x;
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 2);
 	double r_mm = sss_profile_sample(&m->profile, u_channel, u_r);
 	sss_circle c = sss_circle_make(exit->p, n_out, (float)(r_mm * m->units_per_mm), 0.0f, u_phi, &o);
 	tri_circle_hit hits[RENDER_SSS_MAX_HITS];
@@ -345,11 +390,13 @@ static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 /* The disk comparator (King et al. 2013; src/sss/README.md "The disk comparator"): a probe
  * segment along n, t or b through the sphere of r_max, every hit on the same volume weighed by
  * MIS over the axes, one chosen by resampling as circle_entry does. */
-static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out, rng *g,
-		       sss_entry *e, render_sample *out)
+static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out,
+		       render_sampler *g, sss_entry *e, render_sample *out)
 {
-	double u[4] = {rng_double(g), rng_double(g), rng_double(g), rng_double(g)};
-	float u_pick = rng_float(g);
+	double u[4];
+	for (uint32_t k = 0; k < 4; k++)
+		u[k] = render_sampler_1d_double(g, DIM_SSS_SEARCH + k);
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 4);
 	double mm_per_unit = 1.0 / m->units_per_mm;
 	sss_disk_frame f = sss_disk_frame_make(exit->p, n_out);
 	sss_disk_probe q = sss_disk_probe_make(&m->profile, mm_per_unit, &f, u);
@@ -398,8 +445,9 @@ static bool refract_in(vec3 wo, vec3 n, float ior, vec3 *wt)
  * smooth boundary's one refracted direction never finds a point light) and the comparison with
  * the profiles measures their spatial and total albedo error, not an angular one. */
 static bool volume_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_shade,
-			 vec3 n_out, vec3 wo, rng *g, sss_entry *e, render_sample *out)
+			 vec3 n_out, vec3 wo, render_sampler *smp, sss_entry *e, render_sample *out)
 {
+	rng local, *g = render_sampler_stream(smp, DIM_SSS_SEARCH, &local);
 	vec3 w_in;
 	if (!refract_in(wo, n_shade, m->ior, &w_in) || v3_dot(w_in, n_out) >= 0.0f)
 		if (!refract_in(wo, n_out, m->ior, &w_in))
@@ -432,7 +480,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
  * object renders exactly as under circle (the same random stream), a thin one exactly as under
  * volume. */
 static bool auto_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-		       const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, rng *g, sss_entry *e,
+		       const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, render_sampler *g, sss_entry *e,
 		       render_sample *out)
 {
 	float p_walk = 0.0f;
@@ -449,7 +497,9 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 		}
 		p_walk = (float)sss_auto_walk_prob(m->auto_ld > 0.0f ? thick / m->auto_ld : 0.0);
 	}
-	bool walk = p_walk >= 1.0f || (p_walk > 0.0f && rng_float(g) < p_walk);
+	/* the search's fifth number: neither circle (its first three) nor the walk (a stream keyed by
+	 * the first) draws it */
+	bool walk = p_walk >= 1.0f || (p_walk > 0.0f && render_sampler_1d(g, DIM_SSS_SEARCH + 4) < p_walk);
 	if (walk)
 		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
 	return circle_entry(s, set, m, exit, n_out, g, e, out);
@@ -458,7 +508,7 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 /* The one place where a method is chosen. False when no entry point was found: the path ends
  * there (each method counts its failures in out->sss_nohit; an absorbed walk is not one). */
 static bool sss_find_entry(const render_scene *s, const render_settings *set, const render_sss *m,
-			   const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, rng *g, sss_entry *e,
+			   const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, render_sampler *g, sss_entry *e,
 			   render_sample *out)
 {
 	out->sss_searches++;
@@ -503,7 +553,33 @@ typedef struct path {
 	bool scattered;	     /* a non-delta vertex was met */
 	int medium;	     /* the material whose interior the path is in (nest's innermost), -1: none */
 	nest in;	     /* the interiors the path is in */
+	int bounce;	     /* render_path's: the scattering events before the current ray */
+	render_part first;   /* the kind of the first event (coat, sss, direct); camera: none yet */
 } path;
+
+/* Whether light after `events` scattering events, the first of kind `kind` (when events is 1),
+ * belongs to the settings' part. */
+static inline bool in_part(const render_settings *set, int events, render_part kind)
+{
+	if (set->part == RENDER_PART_ALL)
+		return true;
+	render_part p = events == 0 ? RENDER_PART_CAMERA : events == 1 ? kind : RENDER_PART_INDIRECT;
+	return p == set->part;
+}
+
+/* Adds light c (already weighed by the throughput) that arrives after the path's events. */
+static inline void gather(const render_settings *set, path *pa, vec3 c)
+{
+	if (in_part(set, pa->bounce, pa->first))
+		pa->radiance = v3_add(pa->radiance, c);
+}
+
+/* The first scattering event's kind is kind, unless one was met already. */
+static inline void first_event(path *pa, render_part kind)
+{
+	if (pa->first == RENDER_PART_CAMERA)
+		pa->first = kind;
+}
 
 /* A surface the path scatters at: its BSDF, the shading frame, where rays leave from. */
 typedef struct vertex {
@@ -524,7 +600,7 @@ static inline void add_escaped(const render_scene *s, const render_settings *set
 		const light *l = &ls->lights[ls->infinite[k]];
 		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
 		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
-		pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
+		gather(set, pa, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
 	}
 }
 
@@ -539,7 +615,7 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
 	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
 	float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
-	pa->radiance = v3_add(pa->radiance, v3_scale(v3_mul(pa->beta, l->color), w));
+	gather(set, pa, v3_scale(v3_mul(pa->beta, l->color), w));
 }
 
 /* The vertex at a surface hit from direction -wo: the material shaded there, the frame about the
@@ -563,21 +639,24 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	v->lobe_prob = 1.0f;
 }
 
-/* Next-event estimation at v through the BSDF b (v's own, or a part of it). */
+/* Next-event estimation at v through the BSDF b (v's own, or a part of it), an event of kind
+ * `kind` (for --part; computed whatever the part, so the random decisions stay the same). */
 static inline void add_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
-			      const vertex *v, rng *g, path *pa)
+			      const vertex *v, render_sampler *g, uint32_t dim, render_part kind, path *pa)
 {
-	if (set->mode != RENDER_BSDF_ONLY)
-		pa->radiance = v3_add(pa->radiance,
-				      v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-								     v->lobe_prob, &pa->in, g)));
+	if (set->mode == RENDER_BSDF_ONLY)
+		return;
+	vec3 c = v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
+						 v->lobe_prob, &pa->in, g, dim));
+	if (in_part(set, pa->bounce + 1, pa->bounce == 0 ? kind : pa->first))
+		pa->radiance = v3_add(pa->radiance, c);
 }
 
 /* The BSSRDF branch taken: the path moves to the entry point e found for the exit `hit` and
  * leaves it through the entry lobe, outside the medium. fr is the coat's Fresnel at the exit,
  * p_sss the branch's probability. */
 static inline void enter_at(const render_scene *s, const render_settings *set, const render_sss *sm,
-			    const sss_entry *e, float fr, float p_sss, vertex *v, rng *g, path *pa)
+			    const sss_entry *e, float fr, float p_sss, vertex *v, render_sampler *g, path *pa)
 {
 	bsdf_params at = s->materials[e->hit.material];
 	vec3 ns_i = e->hit.ns;
@@ -596,25 +675,27 @@ static inline void enter_at(const render_scene *s, const render_settings *set, c
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
 	v->wo_local = v3(0.0f, 0.0f, 1.0f);
 	v->b = (bsdf_params){.kind = BSDF_SSS_ENTRY, .diffuse = v3s(sm->entry_norm), .alpha = 1.0f, .ior = sm->ior};
-	add_direct(s, set, &v->b, v, g, pa);
+	add_direct(s, set, &v->b, v, g, DIM_SSS_NEE, RENDER_PART_SSS, pa);
 }
 
 /* Scattering at a subsurface material: the coat's reflection is a lobe of its own (light sampled
  * here, and v keeps only it), its transmission the BSSRDF (v moves to the entry point). False
  * when the BSSRDF found no entry: the path ends. */
 static inline bool sss_scatter(const render_scene *s, const render_settings *set, const render_sss *sm,
-			       const render_hit *hit, vec3 wo, vertex *v, rng *g, path *pa, render_sample *out)
+			       const render_hit *hit, vec3 wo, vertex *v, render_sampler *g, path *pa, render_sample *out)
 {
 	float fr = bsdf_fresnel_dielectric(v->wo_local.z, sm->ior);
 	float p_sss = sss_branch_prob(fr, v->b.diffuse);
 	bsdf_params spec = v->b;
 	spec.diffuse = v3s(0.0f);
-	add_direct(s, set, &spec, v, g, pa);
-	if (!(rng_float(g) < p_sss)) {
+	add_direct(s, set, &spec, v, g, DIM_NEE, RENDER_PART_COAT, pa);
+	if (!(render_sampler_1d(g, DIM_SSS_BRANCH) < p_sss)) {
+		first_event(pa, RENDER_PART_COAT);
 		v->b = spec;
 		pa->beta = v3_scale(pa->beta, 1.0f / (1.0f - p_sss));
 		return true;
 	}
+	first_event(pa, RENDER_PART_SSS);
 	sss_entry e;
 	if (!sss_find_entry(s, set, sm, hit, v->f.n, v->ng_out, wo, g, &e, out))
 		return false;
@@ -623,11 +704,11 @@ static inline bool sss_scatter(const render_scene *s, const render_settings *set
 }
 
 /* Russian roulette past RENDER_RR_DEPTH; false when the path ends. */
-static inline bool roulette(int bounce, rng *g, path *pa)
+static inline bool roulette(int bounce, render_sampler *g, path *pa)
 {
 	if (bounce + 1 >= RENDER_RR_DEPTH) {
 		float q = fminf(1.0f, v3_max_comp(pa->beta));
-		if (!(rng_float(g) < q))
+		if (!(render_sampler_1d(g, DIM_RR) < q))
 			return false;
 		pa->beta = v3_scale(pa->beta, 1.0f / q);
 	}
@@ -636,10 +717,10 @@ static inline bool roulette(int bounce, rng *g, path *pa)
 
 /* The BSDF sample that continues the path from v, and Russian roulette; false when the path ends.
  * *ray becomes the next ray. */
-static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, render_ray *ray)
+static inline bool continue_path(const vertex *v, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
-	float u_lobe = rng_float(g);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	float u_lobe = render_sampler_1d(g, DIM_BSDF_LOBE);
+	vec2 u = render_sampler_2d(g, DIM_BSDF_DIR);
 	vec3 wi_local, fval;
 	float pdf;
 	if (!bsdf_sample(&v->b, v->wo_local, u_lobe, u, &wi_local, &fval, &pdf))
@@ -661,11 +742,12 @@ static inline bool continue_path(const vertex *v, int bounce, rng *g, path *pa, 
 }
 
 /* The fogs between the ray's origin and t: what lies beyond is dimmed, the fog's colour added. */
-static inline void through_fog(const render_scene *s, const render_ray *ray, float t, path *pa)
+static inline void through_fog(const render_scene *s, const render_settings *set, const render_ray *ray, float t,
+			       path *pa)
 {
 	vec3 att, add;
 	render_fog_segment(s->fogs, s->fog_count, ray->o, ray->d, t, &att, &add);
-	pa->radiance = v3_add(pa->radiance, v3_mul(pa->beta, add));
+	gather(set, pa, v3_mul(pa->beta, add));
 	pa->beta = v3_mul(pa->beta, att);
 }
 
@@ -684,11 +766,12 @@ static inline float delta_prob(const vertex *v, bool entering)
  * which is no scattering event (the emitter MIS stays with the vertex before it). False when the
  * path ends; *ray becomes the next ray. */
 static inline bool continue_clear(const render_settings *set, const render_hit *hit, const vertex *v, bool entering,
-				  float p_delta, int bounce, rng *g, path *pa, render_ray *ray)
+				  float p_delta, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
 	vec3 wi_local, w;
 	bool refracted;
-	if (!bsdf_clear_sample(&v->b, v->wo_local, entering, rng_float(g), &wi_local, &w, &refracted))
+	if (!bsdf_clear_sample(&v->b, v->wo_local, entering, render_sampler_1d(g, DIM_CLEAR), &wi_local, &w,
+			       &refracted))
 		return false;
 	bool thin = v->b.clear.kind == BSDF_CLEAR_THIN;
 	vec3 wi = thin ? ray->d : v3_normalize(to_world(&v->f, wi_local));
@@ -718,20 +801,28 @@ static inline bool continue_clear(const render_settings *set, const render_hit *
  * sample: *ray becomes the next ray). 1: the path scattered and goes on; 0: it reached the
  * surface at seg; -1: it ends. */
 static int through_media(const render_scene *s, const render_settings *set, const render_media *md, uint32_t obj,
-			 float seg, int bounce, rng *g, path *pa, render_ray *ray)
+			 float seg, int bounce, render_sampler *g, path *pa, render_ray *ray)
 {
 	media_ctx mc = {s, obj};
 	render_media_coef c;
 	float ts;
-	if (!render_media_track(md, media_density, &mc, ray->o, ray->d, seg, g, &pa->beta, &pa->radiance, &c, &ts))
+	rng local;
+	/* The media's emission on the way: straight into the radiance, or apart for a part. */
+	vec3 emitted = v3s(0.0f), *acc = set->part == RENDER_PART_ALL ? &pa->radiance : &emitted;
+	bool scattered = render_media_track(md, media_density, &mc, ray->o, ray->d, seg,
+					    render_sampler_stream(g, DIM_MEDIA, &local), &pa->beta, acc, &c, &ts);
+	gather(set, pa, emitted);
+	if (!scattered)
 		return v3_max_comp(pa->beta) > 0.0f ? 0 : -1;
 	if (bounce >= set->max_trace_level)
 		return -1;
 	vec3 x = v3_madd(ray->o, ray->d, ts);
-	pa->radiance = v3_add(pa->radiance,
-			      v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g)));
-	float u_pick = rng_float(g);
-	vec2 u = v2(rng_float(g), rng_float(g));
+	vec3 direct = v3_mul(pa->beta, sample_direct_medium(s, set, md, &c, ray->d, x, &pa->in, g, DIM_NEE));
+	if (in_part(set, bounce + 1, bounce == 0 ? RENDER_PART_DIRECT : pa->first))
+		pa->radiance = v3_add(pa->radiance, direct);
+	first_event(pa, RENDER_PART_DIRECT);
+	float u_pick = render_sampler_1d(g, DIM_BSDF_LOBE);
+	vec2 u = render_sampler_2d(g, DIM_BSDF_DIR);
 	vec3 wi, fval;
 	float pdf;
 	if (!render_media_phase_sample(md, &c, ray->d, u_pick, u, &wi, &fval, &pdf))
@@ -749,20 +840,23 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	return 1;
 }
 
-render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, rng *g)
+render_sample render_path(const render_scene *s, const render_settings *set, render_ray ray, render_sampler *g)
 {
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
-		   .fog_view = true, .medium = -1};
+		   .fog_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
-	for (int bounce = 0, passes = 0;; bounce++) {
+	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
+	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
+		render_sampler_vertex(g, (uint32_t)vtx);
+		pa.bounce = bounce;
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
 		bool hit_any = trace(s, &ray, &hit, &sphere_light);
 		if (s->fog_count && pa.fog_view)
-			through_fog(s, &ray, hit_any ? hit.t : INFINITY, &pa);
+			through_fog(s, set, &ray, hit_any ? hit.t : INFINITY, &pa);
 		uint32_t md_obj = 0;
 		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
@@ -793,7 +887,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		vertex v;
 		make_vertex(s, &hit, wo, &v);
 		/* A POV-Ray finish's ambient and emission: seen by every ray, never sampled as a light. */
-		pa.radiance = v3_add(pa.radiance, v3_mul(pa.beta, v.b.emit));
+		gather(set, &pa, v3_mul(pa.beta, v.b.emit));
 		if (bounce == 0 && passes == 0)
 			out.albedo = bsdf_albedo(&v.b);
 		const render_sss *sm = s->sss ? s->sss[hit.material] : NULL;
@@ -804,9 +898,11 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
 		} else if (v.lobe_prob > 0.0f && !at_cap) {
-			add_direct(s, set, &v.b, &v, g, &pa);
+			add_direct(s, set, &v.b, &v, g, DIM_NEE, RENDER_PART_DIRECT, &pa);
 		}
-		bool delta = p_delta > 0.0f && rng_float(g) < p_delta;
+		if (!sm)
+			first_event(&pa, RENDER_PART_DIRECT);
+		bool delta = p_delta > 0.0f && render_sampler_1d(g, DIM_DELTA) < p_delta;
 		if (at_cap && !delta)
 			break;
 		if (delta) { /* a delta continuation keeps the camera ray's fog, as a mirror's does */

@@ -11,7 +11,8 @@
  * cannot see delta lights). Russian roulette starts after RENDER_RR_DEPTH scattering events, with
  * survival probability min(1, max component of the path throughput). max_trace_level is the most
  * scattering events of a path (POV-Ray's meaning: 1 is direct light only); emission reached after
- * the last event still counts. All randomness comes from the rng given per sample.
+ * the last event still counts. All randomness comes from the sample's sampler (sampler.h), each
+ * purpose at a vertex its own dimension.
  *
  * Subsurface scattering (DESIGN.md, "Subsurface scattering"): at a material with a render_sss the
  * coat's specular reflection stays a BSDF lobe; the light it transmits, 1 - F(w_o), goes through
@@ -31,6 +32,7 @@
 #include "render/fog.h"
 #include "render/light.h"
 #include "render/media.h"
+#include "render/sampler.h"
 #include "sss/circle.h"
 #include "sss/medium.h"
 #include "sss/profile.h"
@@ -134,6 +136,26 @@ typedef struct render_scene {
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;
 
+/* The parts of the light a path gathers, by the scattering events before it (the variance
+ * breakdown of issue 20: `circe render --part`): seen from the camera with none (emitters, the
+ * background, ambient and fog on the camera's ray); after one, by the kind of that event: the
+ * coat of a subsurface material (its specular reflection), its BSSRDF (the exit-entry step), any
+ * other surface or a medium; after two or more. The five partition the image: every path makes
+ * the same random decisions whatever the part (only what it adds is masked), so the parts of one
+ * seed sum to the whole image sample by sample. */
+typedef enum render_part {
+	RENDER_PART_ALL = 0,
+	RENDER_PART_CAMERA,
+	RENDER_PART_COAT,
+	RENDER_PART_SSS,
+	RENDER_PART_DIRECT,
+	RENDER_PART_INDIRECT,
+	RENDER_PART_COUNT
+} render_part;
+/* Parses all, camera, coat, sss, direct or indirect; false for anything else. */
+bool render_part_from_name(const char *name, render_part *part);
+const char *render_part_name(render_part part);
+
 #define RENDER_RR_DEPTH		       3
 /* A BSDF sample at least this dense (per steradian) continues a mirror's view: its lobe is
  * narrower than 1 / 100 sr (GGX alpha < ~0.06), as POV-Ray's reflection rays. */
@@ -149,6 +171,7 @@ typedef struct render_settings {
 	 * true: dielectrics block shadow rays and only paths find the light through them (caustics,
 	 * unbiased, noisy). Thin transparent surfaces pass shadow rays in both (exact). */
 	bool opaque_glass_shadows;
+	render_part part; /* RENDER_PART_ALL (default): everything */
 } render_settings;
 
 /* One camera sample: radiance and the AOVs of the first surface hit (zero where the ray escapes). */
@@ -166,8 +189,10 @@ typedef struct render_sample {
 				    * also in sss_nohit), biased low, so counted and printed */
 } render_sample;
 
-/* Traces one path from the camera ray; g supplies every random number. May return non-finite
- * radiance when the scene does (the film drops such samples). */
-render_sample render_path(const render_scene *scene, const render_settings *settings, render_ray ray, rng *g);
+/* Traces one path from the camera ray; g supplies every random number (its camera dimensions
+ * are the caller's: RENDER_DIM_PIXEL and RENDER_DIM_LENS). May return non-finite radiance when
+ * the scene does (the film drops such samples). */
+render_sample render_path(const render_scene *scene, const render_settings *settings, render_ray ray,
+			  render_sampler *g);
 
 #endif

@@ -57,12 +57,16 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 	} else {
 		char seed[32];
 		snprintf(seed, sizeof seed, "%" PRIu64, info->seed);
-		exrfile_attr at[13];
+		exrfile_attr at[15];
 		int na = 0;
 		at[na++] = (exrfile_attr){.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe " PACKAGE_VERSION};
 		at[na++] = (exrfile_attr){.name = "circe.scene", .kind = EXRFILE_ATTR_STRING, .s = info->scene_path};
 		at[na++] = (exrfile_attr){.name = "circe.scene_hash", .kind = EXRFILE_ATTR_STRING, .s = info->scene_hash};
 		at[na++] = (exrfile_attr){.name = "circe.seed", .kind = EXRFILE_ATTR_STRING, .s = seed};
+		if (info->sampler)
+			at[na++] = (exrfile_attr){.name = "circe.sampler", .kind = EXRFILE_ATTR_STRING, .s = info->sampler};
+		if (info->part)
+			at[na++] = (exrfile_attr){.name = "circe.part", .kind = EXRFILE_ATTR_STRING, .s = info->part};
 		at[na++] = (exrfile_attr){.name = "circe.spp", .kind = EXRFILE_ATTR_INT, .i = (int)f->spp};
 		at[na++] = (exrfile_attr){.name = "circe.sss", .kind = EXRFILE_ATTR_STRING, .s = info->sss_method};
 		at[na++] = (exrfile_attr){.name = "circe.clock", .kind = EXRFILE_ATTR_DOUBLE, .d = info->clock};

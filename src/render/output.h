@@ -25,6 +25,8 @@ typedef struct output_info {
 	const char *scene_path;
 	const char *scene_hash; /* hex digest of the scene text and its includes */
 	uint64_t seed;
+	const char *sampler; /* "sobol" or "random" (render_sampler_name) */
+	const char *part;    /* render_part_name of a --part render, NULL for the whole light */
 	const char *sss_method;
 	double clock;
 	double render_seconds;
@@ -36,10 +38,10 @@ typedef struct output_info {
 
 /* Writes f as an EXR (atomically). Channels: R G B A, then albedo.R/G/B, N.X/Y/Z, Z,
  * variance.R/G/B, error (film_pixel_error) and samples (each pixel's count) as asked. Attributes:
- * software, circe.scene, circe.scene_hash, circe.seed, circe.spp (samples completed in every pixel
+ * software, circe.scene, circe.scene_hash, circe.seed, circe.sampler, circe.spp (samples completed in every pixel
  * adaptive sampling did not stop), circe.sss, circe.clock, circe.render_time_s,
- * circe.dropped_samples, circe.interrupted, circe.tile when set and circe.noise_threshold when
- * adaptive. */
+ * circe.dropped_samples, circe.interrupted, circe.tile when set, circe.noise_threshold when
+ * adaptive and circe.part for a part of the light. */
 bool output_write_exr(const char *path, const film *f, const output_info *info, diag *d);
 /* Writes the beauty of f as an 8-bit sRGB PNG (atomically), exposure in stops. */
 bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d);

@@ -58,9 +58,9 @@ static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[
 {
 	const render_job *job = p->job;
 	for (uint32_t s = p->s0; s < p->s1; s++) {
-		rng g = rng_for_sample(job->seed, (uint32_t)x, (uint32_t)y, s);
-		vec2 pu = v2(rng_float(&g), rng_float(&g));
-		vec2 lu = v2(rng_float(&g), rng_float(&g));
+		render_sampler g = render_sampler_make(job->sampler, job->seed, (uint32_t)x, (uint32_t)y, s);
+		vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL);
+		vec2 lu = render_sampler_2d(&g, RENDER_DIM_LENS);
 		render_ray ray;
 		render_sample smp = {0}; /* no ray (outside a fisheye's circle): black */
 		if (cam_sample(job->camera, x, y, pu, lu, &ray))
@@ -97,6 +97,7 @@ static bool render_tile(pool *p, int tile)
 			film_pixel px = *film_at(f->acc, f, x, y);
 			if (!px.stopped) {
 				assert(px.n == p->s0);
+				px.nets = p->job->sampler == RENDER_SAMPLER_SOBOL;
 				render_pixel(p, x, y, &px, counts);
 				taken += p->s1 - p->s0;
 			}

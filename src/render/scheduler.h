@@ -4,7 +4,7 @@
  * at most RENDER_PASS_MAX_S seconds (and no more than the time budget left), so checkpoints and
  * the time budget are honoured within about one pass. Within a pass, tiles of tile_size^2 pixels
  * are taken from an atomic counter by `threads` worker threads. Because each pixel's samples are
- * summed one by one in sample order from rng_for_sample(seed, x, y, s), the image is
+ * summed one by one in sample order, each from its sampler (seed, x, y, s; sampler.h), the image is
  * bit-identical for any thread count, tile size, region and pass schedule.
  *
  * Adaptive sampling (job.adaptive, adaptive.h): passes also end on each of its checks, which run
@@ -54,6 +54,7 @@ typedef struct render_job {
 	const cam *camera;
 	render_settings settings;
 	uint64_t seed;
+	render_sampler_kind sampler;  /* Sobol (the default, 0) or random (sampler.h) */
 	uint32_t spp;		      /* target samples per pixel; 0: none (then a time budget is needed) */
 	double time_budget_s;	      /* 0: none */
 	int threads;		      /* 0: all online cores */

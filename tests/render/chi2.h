@@ -19,8 +19,8 @@
 #include <stdlib.h>
 
 #define CHI2_SUITE_ALPHA 0.01
-/* The number of chi-square tests in tests/render (test_sampling, test_bsdf, test_light). */
-#define CHI2_SUITE_TESTS 19
+/* The number of chi-square tests in tests/render (test_sampling, test_bsdf, test_light, test_sobol). */
+#define CHI2_SUITE_TESTS 23
 /* A pooled bin must expect at least this many samples for the chi-square approximation. */
 #define CHI2_MIN_EXPECTED 5.0
 

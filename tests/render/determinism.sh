@@ -1,6 +1,7 @@
 #!/bin/sh
 # determinism.sh: the same scene and seed give bit-identical EXRs for 1 and 2 threads, and four
 # --region quarters assembled equal the whole image bit-exactly; another seed gives another image.
+# Both samplers (Sobol, the default, and random).
 # Every SSS method (auto included, and its regions) is deterministic across thread counts too, and the BVH's SSE2 path (4-wide, as on
 # a CPU without AVX2: CIRCE_SIMD=sse2) renders the same pixels as the dispatched one (8-wide with
 # AVX2 where the CPU has it): the trees differ, their hits do not.
@@ -26,6 +27,19 @@ grep -q '^max_abs: 0 at' out || fail "regions assembled differ from the whole: $
 # shellcheck disable=SC2086
 expect_status 0 "$CIRCE" render "$scene" -o s4.exr $opts --seed 4
 expect_status 1 "$CIRCE" compare s4.exr t1.exr --fail 0
+# The random sampler (--sampler random) is as deterministic, and another image than Sobol's.
+for t in 1 2; do
+	# shellcheck disable=SC2086
+	expect_status 0 "$CIRCE" render "$scene" -o "r$t.exr" --threads $t --sampler random $opts
+done
+expect_status 0 "$CIRCE" compare r2.exr r1.exr --fail 0
+grep -q '^max_abs: 0 at' out || fail "--sampler random: 1 and 2 threads differ: $(cat out)"
+expect_status 1 "$CIRCE" compare r1.exr t1.exr --fail 0
+# Tiles of different samplers are not one render.
+# shellcheck disable=SC2086
+expect_status 0 "$CIRCE" render "$scene" -o qr.exr --threads 2 --region 0,0,20,15 --sampler random $opts
+expect_status 1 "$CIRCE" merge -o mixed.exr qr.exr "q20,0,40,15.exr" "q0,15,20,30.exr" "q20,15,40,30.exr"
+grep -q 'circe.sampler is' err || fail "merge took tiles of two samplers: $(cat err)"
 cat >sss.pov <<'EOS'
 camera { location <0, 1.2, -4> look_at <0, 0.5, 0> angle 50 }
 background { color rgb <0.6, 0.7, 0.8> }

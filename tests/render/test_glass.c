@@ -143,8 +143,8 @@ static double render_mean(const ts_scene *s, const cam *c, render_settings set, 
 {
 	double sum = 0, sum2 = 0;
 	for (int k = 0; k < n; k++) {
-		rng g = rng_for_sample(5, 0, 0, (uint32_t)k);
-		vec2 pu = v2(rng_float(&g), rng_float(&g));
+		render_sampler g = render_sampler_make(RENDER_SAMPLER_SOBOL, 5, 0, 0, (uint32_t)k);
+		vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL);
 		render_sample smp = render_path(&s->rs, &set, cam_ray(c, 0, 0, pu, v2(0, 0)), &g);
 		double l = v3_luminance(smp.radiance);
 		CHECK(isfinite(l), "a NaN or Inf sample");

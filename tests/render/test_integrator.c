@@ -21,8 +21,8 @@ static void render_image(const ts_scene *s, const cam *c, render_settings set, i
 		for (int x = 0; x < c->width; x++) {
 			double sum = 0, sum2 = 0;
 			for (int k = 0; k < spp; k++) {
-				rng g = rng_for_sample(77, (uint32_t)x, (uint32_t)y, (uint32_t)k);
-				vec2 pu = v2(rng_float(&g), rng_float(&g));
+				render_sampler g = render_sampler_make(RENDER_SAMPLER_SOBOL, 77, (uint32_t)x, (uint32_t)y, (uint32_t)k);
+				vec2 pu = render_sampler_2d(&g, RENDER_DIM_PIXEL);
 				render_ray r = cam_ray(c, x, y, pu, v2(0, 0));
 				render_sample smp = render_path(&s->rs, &set, r, &g);
 				double l = v3_luminance(smp.radiance);
