@@ -485,10 +485,9 @@ const symbol *lang_lookup(parser *p, const char *name, size_t len)
 	return NULL;
 }
 
-/* A parameter of the running macro call with this name, or NULL. */
-static symbol *parameter(parser *p, const lang_token *name)
+/* A parameter of the macro call of frame `depth` with this name, or NULL. */
+static symbol *parameter(parser *p, int depth, const lang_token *name)
 {
-	int depth = p->n_files - 1;
 	if (!p->files[depth].macro)
 		return NULL;
 	for (size_t i = p->locals.len; i-- > 0;) {
@@ -504,9 +503,9 @@ static symbol *parameter(parser *p, const lang_token *name)
 /* #declare assigns the global; #local the current include file's scope (the main file's #local is
  * global, as in POV-Ray). As POV-Ray 3.7, #declare (as #local) of a parameter assigns the
  * parameter: the caller's variable when it was passed by reference. */
-static bool define(parser *p, const lang_token *name, bool local, const value *v)
+static bool define_in(parser *p, int frame, const lang_token *name, bool local, const value *v)
 {
-	symbol *param = parameter(p, name);
+	symbol *param = parameter(p, frame, name);
 	if (param) {
 		target(p, param)->val = *v;
 		return true;
@@ -518,6 +517,8 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	 * as a global is the global's. */
 	for (size_t i = p->locals.len; !local && i-- > 0;) {
 		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (s->depth > frame) /* a deeper frame's, still open (see decl_target.frame) */
+			continue;
 		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
 			symbol *t = s->param ? target(p, s) : s;
 			t->val = *v;
@@ -526,9 +527,14 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			return true;
 		}
 	}
-	int depth = local ? p->n_files - 1 : 0;
+	int depth = local ? frame : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
-	for (size_t i = tab->len; i-- > 0;) {
+	/* The scope's symbols end at `at`: past it lie those of deeper frames still open (a macro
+	 * whose body gave the value), which pop_scope removes from the end. */
+	size_t at = tab->len;
+	while (depth && at > 0 && VECBUF_AT(tab, symbol, at - 1).depth > depth)
+		at--;
+	for (size_t i = at; i-- > 0;) {
 		symbol *s = &VECBUF_AT(tab, symbol, i);
 		if (s->depth != depth)
 			break;
@@ -542,7 +548,22 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0, dep};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
+	if (at < tab->len - 1) { /* before the deeper frames' symbols; their references follow them */
+		memmove(&VECBUF_AT(tab, symbol, at + 1), &VECBUF_AT(tab, symbol, at), (tab->len - 1 - at) * sizeof s);
+		VECBUF_AT(tab, symbol, at) = s;
+		for (size_t i = 0; i < tab->len; i++) {
+			symbol *r = &VECBUF_AT(tab, symbol, i);
+			if (r->ref < 0 && (size_t)(-r->ref - 1) >= at)
+				r->ref--;
+		}
+	}
 	return true;
+}
+
+/* define_in at the running frame. */
+static bool define(parser *p, const lang_token *name, bool local, const value *v)
+{
+	return define_in(p, p->n_files - 1, name, local, v);
 }
 
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v) { return define(p, name, local, v); }
@@ -660,6 +681,10 @@ bool lang_element_target(parser *p, const lang_token *name, lang_array **arr, si
 typedef struct decl_target {
 	lang_token name;
 	bool local;
+	/* the frame of the #declare or #local: the one it defines in. A block value that a macro call
+	 * gives (`#local M = Matrix_Trans(...)`) ends at the block's '}' while the called macro's
+	 * frame is still open, as nothing is read past it. */
+	int frame;
 	lang_array *arr; /* an element's array, or NULL */
 	size_t index;
 	diag_loc at; /* the value, for an element's kind error */
@@ -675,7 +700,7 @@ static bool assign(parser *p, const decl_target *tg, value *v, bool fresh, depre
 	if (tg->arr)
 		return lang_array_store(p, tg->at, tg->arr, tg->index, v);
 	p->pending_dep = dep;
-	return define(p, &tg->name, tg->local, v);
+	return define_in(p, tg->frame, &tg->name, tg->local, v);
 }
 
 /* The value after '=': a block or array (';' optional), a lone string or array (';' optional, no
@@ -728,6 +753,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 {
 	bool local = dir->kind == LTK_DIR_LOCAL;
 	const char *dname = local ? "#local" : "#declare";
+	int frame = p->n_files - 1;
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	p->no_expand = true;
 	lang_token *t = lang_peek(p);
@@ -746,7 +772,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 			return lang_error(p, t->loc, "cannot %s '%.*s': it is a keyword", dname, (int)t->len, t->text);
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
-	decl_target tg = {.name = *lang_advance(p), .local = local};
+	decl_target tg = {.name = *lang_advance(p), .local = local, .frame = frame};
 	if (lang_peek(p)->kind == LTK_LBRACKET && !lang_element_target(p, &tg.name, &tg.arr, &tg.index)) {
 		p->directive_expr = false;
 		return false;
