@@ -478,6 +478,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		}
 		return true;
 	}
+	if (lang_peek(p)->kind == LTK_KW_OBJECT) /* POV-Ray's object pattern */
+		return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(pigment_color(p, what, use, m));
@@ -831,6 +833,8 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 			TRY(lang_normal(p, m));
 		else if (k == LTK_RBRACE)
 			break;
+		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern (a keyword of circe's for objects) */
+			return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 		else {
 			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
