@@ -26,6 +26,11 @@ static int one_of(parser *p, const lang_tok *kws, int n, const char *msg)
 
 static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
 {
+	bool csg = !strcmp(what, "union") || !strcmp(what, "intersection") || !strcmp(what, "difference") ||
+		   !strcmp(what, "merge");
+	if (csg && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) /* POV-Ray's lights in CSG (drums.pov, iortest.pov) */
+		return lang_error(p, lang_peek(p)->loc, "a light_source inside a %s is not supported by circe: give it "
+							"beside the %s, with the %s's transforms", what, what, what);
 	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
 	lang_error_found(p, "expected %s or '}' to close '%s' (opened at line %u)", expect, what, open.line);
 	if (at_eof)
