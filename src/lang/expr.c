@@ -152,7 +152,8 @@ static bool vector_literal(parser *p, value *out)
 		if (out->n >= LANG_MAX_VECTOR)
 			return lang_error(p, open, "vector has too many components (limit is %d)", LANG_MAX_VECTOR);
 		out->v[out->n++] = c.v[0];
-		if (lang_accept(p, LTK_COMMA))
+		/* a comma before the '>' is allowed, as POV-Ray's (animations/float4: rgb<0.2,0.1,0.5,>) */
+		if (lang_accept(p, LTK_COMMA) && lang_peek(p)->kind != LTK_GT)
 			continue;
 		lang_tok k = lang_peek(p)->kind;
 		if (k == LTK_GT)

@@ -208,6 +208,90 @@ static int map_source(parser *p, const char *path, const diag_source **out)
 
 /* Hands the pages of a mapped source that lie well behind the lexer back to the kernel. They are
  * clean file pages: quoting a line there, or a #while jumping back, faults them in again. */
+/* ---- the token memo ----------------------------------------------------------------------
+ * A #while or #for body and a macro's body are read again at each turn; their tokens are lexed
+ * once and remembered by where the lexer stood (and where its text ends: a macro frame's lexer
+ * stops at the body's #end): the lexer is a pure function of that position, and the sources stay
+ * in place for the whole parse. Only successful reads are kept (an error is lexed, and reported,
+ * again), only while a loop or a macro runs, and at most MEMO_MAX of them. */
+enum { MEMO_MIN = 1024, MEMO_MAX = 1 << 18 };
+
+struct lex_memo {
+	const char *at, *end; /* at NULL: a free slot */
+	lang_lexer after;
+	lang_token tok;
+};
+
+static size_t memo_slot(const char *at, size_t cap)
+{
+	uint64_t h = (uint64_t)(uintptr_t)at * 0x9e3779b97f4a7c15u;
+	return (size_t)(h >> 32) & (cap - 1);
+}
+
+static struct lex_memo *memo_find(parser *p, const lang_lexer *lx)
+{
+	if (!p->memo)
+		return NULL;
+	for (size_t i = memo_slot(lx->p, p->memo_cap);; i = (i + 1) & (p->memo_cap - 1)) {
+		struct lex_memo *m = &p->memo[i];
+		if (!m->at || (m->at == lx->p && m->end == lx->end))
+			return m;
+	}
+}
+
+/* True while a #while or #for runs, or a macro's body is read. */
+static bool memo_wanted(const parser *p)
+{
+	if (p->n_macro_calls > 0)
+		return true;
+	for (int i = p->n_conds - 1; i >= 0; i--)
+		if (p->conds[i].kind == COND_WHILE || p->conds[i].kind == COND_FOR)
+			return true;
+	return false;
+}
+
+static void memo_put(parser *p, const char *at, const char *end, const lang_lexer *after, const lang_token *t)
+{
+	if (p->memo_n + 1 > p->memo_cap / 2) { /* grow, keeping the load under one half */
+		if (p->memo_cap >= MEMO_MAX)
+			return;
+		size_t cap = p->memo_cap ? p->memo_cap * 2 : MEMO_MIN;
+		struct lex_memo *old = p->memo, *m = mem_calloc(cap, sizeof *m);
+		if (!m)
+			return; /* the memo is an optimisation: without memory, lex again */
+		size_t old_cap = p->memo_cap;
+		p->memo = m, p->memo_cap = cap;
+		for (size_t i = 0; i < old_cap; i++)
+			if (old[i].at) {
+				lang_lexer k = {.p = old[i].at, .end = old[i].end};
+				*memo_find(p, &k) = old[i];
+			}
+		mem_free(old);
+	}
+	lang_lexer k = {.p = at, .end = end};
+	struct lex_memo *m = memo_find(p, &k);
+	if (!m->at)
+		p->memo_n++;
+	*m = (struct lex_memo){at, end, *after, *t};
+}
+
+/* lang_lex through the memo. */
+static bool lex(parser *p, lang_lexer *lx, diag *d, lang_token *t)
+{
+	struct lex_memo *m = memo_find(p, lx);
+	if (m && m->at) {
+		*t = m->tok;
+		*lx = m->after;
+		return true;
+	}
+	const char *at = lx->p;
+	if (!lang_lex(lx, d, t))
+		return false;
+	if (memo_wanted(p))
+		memo_put(p, at, lx->end, lx, t);
+	return true;
+}
+
 static void release_behind(include_frame *f)
 {
 	const diag_source *src = f->lx.src;
@@ -306,7 +390,7 @@ static bool do_include(parser *p, diag_loc at)
 {
 	const char *name;
 	lang_token t;
-	if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, &t)) {
+	if (!lex(p, &p->files[p->n_files - 1].lx, p->d, &t)) {
 		p->failed = true;
 		return false;
 	}
@@ -401,10 +485,9 @@ const symbol *lang_lookup(parser *p, const char *name, size_t len)
 	return NULL;
 }
 
-/* A parameter of the running macro call with this name, or NULL. */
-static symbol *parameter(parser *p, const lang_token *name)
+/* A parameter of the macro call of frame `depth` with this name, or NULL. */
+static symbol *parameter(parser *p, int depth, const lang_token *name)
 {
-	int depth = p->n_files - 1;
 	if (!p->files[depth].macro)
 		return NULL;
 	for (size_t i = p->locals.len; i-- > 0;) {
@@ -420,9 +503,9 @@ static symbol *parameter(parser *p, const lang_token *name)
 /* #declare assigns the global; #local the current include file's scope (the main file's #local is
  * global, as in POV-Ray). As POV-Ray 3.7, #declare (as #local) of a parameter assigns the
  * parameter: the caller's variable when it was passed by reference. */
-static bool define(parser *p, const lang_token *name, bool local, const value *v)
+static bool define_in(parser *p, int frame, const lang_token *name, bool local, const value *v)
 {
-	symbol *param = parameter(p, name);
+	symbol *param = parameter(p, frame, name);
 	if (param) {
 		target(p, param)->val = *v;
 		return true;
@@ -434,6 +517,8 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	 * as a global is the global's. */
 	for (size_t i = p->locals.len; !local && i-- > 0;) {
 		symbol *s = &VECBUF_AT(&p->locals, symbol, i);
+		if (s->depth > frame) /* a deeper frame's, still open (see decl_target.frame) */
+			continue;
 		if (strlen(s->name) == name->len && !memcmp(s->name, name->text, name->len)) {
 			symbol *t = s->param ? target(p, s) : s;
 			t->val = *v;
@@ -442,9 +527,14 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 			return true;
 		}
 	}
-	int depth = local ? p->n_files - 1 : 0;
+	int depth = local ? frame : 0;
 	vecbuf *tab = depth ? &p->locals : &p->globals;
-	for (size_t i = tab->len; i-- > 0;) {
+	/* The scope's symbols end at `at`: past it lie those of deeper frames still open (a macro
+	 * whose body gave the value), which pop_scope removes from the end. */
+	size_t at = tab->len;
+	while (depth && at > 0 && VECBUF_AT(tab, symbol, at - 1).depth > depth)
+		at--;
+	for (size_t i = at; i-- > 0;) {
 		symbol *s = &VECBUF_AT(tab, symbol, i);
 		if (s->depth != depth)
 			break;
@@ -458,7 +548,22 @@ static bool define(parser *p, const lang_token *name, bool local, const value *v
 	symbol s = {arena_strndup(&p->sc->arena, name->text, name->len), depth, name->loc, *v, false, 0, dep};
 	if (!s.name || !vecbuf_push(tab, &s))
 		return no_memory(p, name->loc);
+	if (at < tab->len - 1) { /* before the deeper frames' symbols; their references follow them */
+		memmove(&VECBUF_AT(tab, symbol, at + 1), &VECBUF_AT(tab, symbol, at), (tab->len - 1 - at) * sizeof s);
+		VECBUF_AT(tab, symbol, at) = s;
+		for (size_t i = 0; i < tab->len; i++) {
+			symbol *r = &VECBUF_AT(tab, symbol, i);
+			if (r->ref < 0 && (size_t)(-r->ref - 1) >= at)
+				r->ref--;
+		}
+	}
 	return true;
+}
+
+/* define_in at the running frame. */
+static bool define(parser *p, const lang_token *name, bool local, const value *v)
+{
+	return define_in(p, p->n_files - 1, name, local, v);
 }
 
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v) { return define(p, name, local, v); }
@@ -576,6 +681,10 @@ bool lang_element_target(parser *p, const lang_token *name, lang_array **arr, si
 typedef struct decl_target {
 	lang_token name;
 	bool local;
+	/* the frame of the #declare or #local: the one it defines in. A block value that a macro call
+	 * gives (`#local M = Matrix_Trans(...)`) ends at the block's '}' while the called macro's
+	 * frame is still open, as nothing is read past it. */
+	int frame;
 	lang_array *arr; /* an element's array, or NULL */
 	size_t index;
 	diag_loc at; /* the value, for an element's kind error */
@@ -591,7 +700,7 @@ static bool assign(parser *p, const decl_target *tg, value *v, bool fresh, depre
 	if (tg->arr)
 		return lang_array_store(p, tg->at, tg->arr, tg->index, v);
 	p->pending_dep = dep;
-	return define(p, &tg->name, tg->local, v);
+	return define_in(p, tg->frame, &tg->name, tg->local, v);
 }
 
 /* The value after '=': a block or array (';' optional), a lone string or array (';' optional, no
@@ -644,6 +753,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 {
 	bool local = dir->kind == LTK_DIR_LOCAL;
 	const char *dname = local ? "#local" : "#declare";
+	int frame = p->n_files - 1;
 	p->directive_expr = true, p->directive_expr_at = p->dir_frame;
 	p->no_expand = true;
 	lang_token *t = lang_peek(p);
@@ -662,7 +772,7 @@ static bool do_declare(parser *p, const lang_token *dir)
 			return lang_error(p, t->loc, "cannot %s '%.*s': it is a keyword", dname, (int)t->len, t->text);
 		return lang_error_found(p, "expected an identifier after '%s'", dname);
 	}
-	decl_target tg = {.name = *lang_advance(p), .local = local};
+	decl_target tg = {.name = *lang_advance(p), .local = local, .frame = frame};
 	if (lang_peek(p)->kind == LTK_LBRACKET && !lang_element_target(p, &tg.name, &tg.arr, &tg.index)) {
 		p->directive_expr = false;
 		return false;
@@ -764,7 +874,7 @@ static bool skip_block(parser *p, diag_loc open, skip_kind kind, const char *wha
 		stop = &t;
 	for (;;) {
 		p->skip_stop_at = lx->p;
-		if (!lang_lex(lx, p->d, &t)) {
+		if (!lex(p, lx, p->d, &t)) {
 			p->failed = true;
 			return false;
 		}
@@ -1159,7 +1269,7 @@ static bool do_switch(parser *p, diag_loc loc)
 	if (!paren_float(p, "after '#switch'", "switch value", &v))
 		return false;
 	lang_token t;
-	if (!lang_lex(&p->files[p->n_files - 1].lx, p->d, &t)) {
+	if (!lex(p, &p->files[p->n_files - 1].lx, p->d, &t)) {
 		p->failed = true;
 		return false;
 	}
@@ -1257,7 +1367,7 @@ lang_tok lang_raw_next(parser *p)
 	lang_token t;
 	diag quiet;
 	diag_init(&quiet, NULL);
-	return lang_lex(&lx, &quiet, &t) ? t.kind : LTK_EOF;
+	return lex(p, &lx, &quiet, &t) ? t.kind : LTK_EOF;
 }
 
 /* The operand of #debug, #warning, #error: a string, a name declared as one, an array element or a
@@ -1387,7 +1497,7 @@ static bool bare_identifier(parser *p)
 	lang_token t;
 	diag quiet;
 	diag_init(&quiet, NULL);
-	return lang_lex(&lx, &quiet, &t) && (t.kind == LTK_COMMA || t.kind == LTK_RPAREN);
+	return lex(p, &lx, &quiet, &t) && (t.kind == LTK_COMMA || t.kind == LTK_RPAREN);
 }
 
 static bool wrong_arg_count(parser *p, diag_loc at, const lang_macro *m, int given)
@@ -1571,7 +1681,7 @@ static bool fetch(parser *p, lang_token *t)
 			continue;
 		}
 		include_frame *f = &p->files[p->n_files - 1];
-		if (!lang_lex(&f->lx, p->d, t)) {
+		if (!lex(p, &f->lx, p->d, t)) {
 			p->failed = true;
 			p->eof.loc = t->loc;
 			*t = p->eof;
@@ -1674,7 +1784,7 @@ void lang_skip_optional_semi(parser *p)
 		lang_token t;
 		diag quiet;
 		diag_init(&quiet, NULL);
-		bool ok = lang_lex(&f->lx, &quiet, &t);
+		bool ok = lex(p, &f->lx, &quiet, &t);
 		if (ok && t.kind == LTK_EOF && f->macro && p->n_conds == f->cond_base && end_of_file(p, &t))
 			continue; /* a macro's body that ends with the block: `#declare B = Ball(1);` */
 		if (!ok || t.kind != LTK_SEMI)
@@ -1807,6 +1917,7 @@ done:
 	vecbuf_free(&p->globals);
 	vecbuf_free(&p->locals);
 	vecbuf_free(&p->rand_streams);
+	mem_free(p->memo);
 	mem_free(p);
 	if (st == LANG_OK && !hash_sources(d, before, &sc->source_hash)) {
 		diag_error(d, diag_noloc(), "out of memory");

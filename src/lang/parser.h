@@ -95,8 +95,8 @@ typedef struct lang_array {
 	bool *set;
 } lang_array;
 
-/* A #macro: its parameters and where its body lies in its source (re-lexed at each call, as a
- * #while body is: the lexer is a few compares a character). */
+/* A #macro: its parameters and where its body lies in its source (read again at each call, as a
+ * #while body is; their tokens are lexed once, parser.c's token memo). */
 typedef struct lang_macro {
 	const char *name;
 	diag_loc loc; /* its #macro */
@@ -171,6 +171,8 @@ typedef struct parser {
 	int dir_frame; /* n_files where the running directive was read */
 	int depth; /* recursion guard for expressions and nested blocks */
 	long total_iterations;
+	struct lex_memo *memo; /* parser.c: the tokens of loop and macro bodies, lexed once */
+	size_t memo_cap, memo_n;
 	int n_macro_calls; /* macro frames in files */
 	const char *skip_stop_at; /* skip_block: where the directive that ended it begins (before blanks) */
 	bool no_expand; /* reading a directive's name: a macro's name is not a call */

@@ -26,6 +26,11 @@ static int one_of(parser *p, const lang_tok *kws, int n, const char *msg)
 
 static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
 {
+	bool csg = !strcmp(what, "union") || !strcmp(what, "intersection") || !strcmp(what, "difference") ||
+		   !strcmp(what, "merge");
+	if (csg && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) /* POV-Ray's lights in CSG (drums.pov, iortest.pov) */
+		return lang_error(p, lang_peek(p)->loc, "a light_source inside a %s is not supported by circe: give it "
+							"beside the %s, with the %s's transforms", what, what, what);
 	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
 	lang_error_found(p, "expected %s or '}' to close '%s' (opened at line %u)", expect, what, open.line);
 	if (at_eof)
@@ -478,6 +483,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		}
 		return true;
 	}
+	if (lang_peek(p)->kind == LTK_KW_OBJECT) /* POV-Ray's object pattern */
+		return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(pigment_color(p, what, use, m));
@@ -831,6 +838,8 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 			TRY(lang_normal(p, m));
 		else if (k == LTK_RBRACE)
 			break;
+		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern (a keyword of circe's for objects) */
+			return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 		else {
 			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
