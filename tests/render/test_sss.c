@@ -445,8 +445,8 @@ static void test_auto_thin(void)
 }
 
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
- * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 12 l_d, and a
- * little either side), seen from above, lit strongly from below and weakly from above, so the
+ * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 8 l_d, and
+ * more either side), seen from above, lit strongly from below and weakly from above, so the
  * methods differ where auto blends them. Column by column, auto's mean must be the blend
  * p(T) volume + (1 - p(T)) circle of the two methods' own means, p the rule at the column's
  * thickness: chi-square over the columns within its 4-sigma bound (circle's own image is noisy
