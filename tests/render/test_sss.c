@@ -418,6 +418,20 @@ static void test_auto_thick(void)
 		differ += a.px[i] != c.px[i];
 	printf("auto on a thick slab: mean %.6f, circle %.6f, %d of %d pixels differ\n", a.mean, c.mean, differ, W * H);
 	CHECK(differ == 0 && a.nonfinite == 0, "auto differs from circle on a thick slab in %d pixels", differ);
+
+	/* an open object (a plane) holds no volume to walk in: a warning, and circle tracing only,
+	 * the material's own `method auto` (no --sss) as well */
+	const char *plane = SLAB_LIGHT "plane { y, 0 material { wax { color rgb 0.6 radius 3 method auto } } }\n";
+	world *w;
+	world_options o = {.width = W, .height = H};
+	CHECK(build(plane, &o, &w) && last_warnings == 1, "auto on a plane: %d warnings, expected 1", last_warnings);
+	world_free(w);
+	render(plane, 1, 2, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
+	unsigned long walks = 0;
+	for (int i = 0; i < W * H; i++)
+		walks += a.px_walks[i];
+	CHECK(walks == 0 && a.nonfinite == 0 && a.circles > 0, "auto on a plane: %lu walks of %lu searches", walks,
+	      a.circles);
 }
 
 /* A back-lit sheet of skin 3 mm thick (0.8 of the red l_d, 3.7 mm): auto walks everywhere, so its
