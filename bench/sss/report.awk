@@ -2,7 +2,7 @@
 # (awk -F, -f report.awk results.csv bias.csv). Equal-time errors come from a least-squares line
 # through log(MSE) against log(spp) of each method's series and its time per sample (see fit),
 # read at the longest time every method of the scene reached.
-BEGIN { FIT_MIN_SPP = 4; nmeth = split("circle fullcircle talk disk volume", order, " ") }
+BEGIN { FIT_MIN_SPP = 4; nmeth = split("circle fullcircle talk disk volume auto", order, " ") }
 
 FNR == 1 { file++; next }
 

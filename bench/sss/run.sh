@@ -21,8 +21,8 @@ usage: bench/sss/run.sh [--quick] [--size WxH] [--max-spp N] [--ref-spp N] [--vo
                       (`circe render --time`; default 60): a walk costs 10 to 100 times a circle
   --volume-ref-spp N  or this many samples instead (then --volume-ref-time is ignored)
   --volume-max-spp N  cap of the volume method's series (default 8)
-  --scenes LIST      among: slab sphere bunny head lips finger (default: all)
-  --methods LIST     among: circle fullcircle talk disk volume (default: all)
+  --scenes LIST      among: slab sphere bunny head lips finger sheet (default: all)
+  --methods LIST     among: circle fullcircle talk disk volume auto (default: all)
   --ref-threads N    threads for the references (default 2; the series always run on 1 thread)
   --work DIR         renders, logs and the reference cache (default ./bench-sss)
   --out DIR          where results.csv, bias.csv, plots/ and README.md go
@@ -41,8 +41,8 @@ ref_spp=1024
 vol_ref_spp=
 vol_ref_time=60
 vol_max_spp=8
-scenes="slab sphere bunny head lips finger"
-methods="circle fullcircle talk disk volume"
+scenes="slab sphere bunny head lips finger sheet"
+methods="circle fullcircle talk disk volume auto"
 ref_threads=2
 work=bench-sss
 out=
@@ -82,7 +82,7 @@ for s in $scenes; do
 	[ -f "$here/scenes/$s.pov" ] || { echo "run.sh: no scene $here/scenes/$s.pov" >&2; exit 2; }
 done
 for m in $methods; do
-	case $m in circle | fullcircle | talk | disk | volume) ;;
+	case $m in circle | fullcircle | talk | disk | volume | auto) ;;
 	*) echo "run.sh: unknown method '$m'" >&2; exit 2 ;;
 	esac
 done
@@ -98,7 +98,7 @@ run_start=$(now)
 # reference (their difference is then bias plus independent noise, as bias.csv assumes).
 ref_seed() {
 	case $1 in circle) echo 900001 ;; fullcircle) echo 900002 ;; talk) echo 900003 ;;
-	disk) echo 900004 ;; *) echo 900005 ;; esac
+	disk) echo 900004 ;; auto) echo 900006 ;; *) echo 900005 ;; esac
 }
 log() { printf '%s\n' "$*" >&2; }
 
@@ -170,7 +170,7 @@ reference() {
 # ---- methods this circe does not have: one tiny render each, looking for circe's stand-in note
 skipped=""
 for m in $methods; do
-	case $m in disk | volume) ;; *) continue ;; esac
+	case $m in disk | volume | auto) ;; *) continue ;; esac
 	set -- $scenes
 	render "$1" "$m" 1 1 1 "$work/renders/probe.$m.exr" "$work/logs/probe.$m.log"
 	if stand_in "$work/logs/probe.$m.log"; then

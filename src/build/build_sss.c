@@ -122,7 +122,7 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * taken where the object is a few of them thick; check_volumes turns it off on open objects) */
 	double ld = fmax(md.ld_mm[0], fmax(md.ld_mm[1], md.ld_mm[2]));
 	r->auto_ld = (float)(ld * r->units_per_mm);
-	r->auto_walk = r->method == SSS_METHOD_AUTO;
+	r->auto_walk = r->method == SSS_METHOD_AUTO && !r->auto_open; /* check_volumes ran first */
 	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
@@ -188,13 +188,13 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 		}
 		if (closed[gi] < 0 && method == SSS_METHOD_AUTO) {
 			/* auto walks only where the object is thin; an open one holds no volume to walk
-			 * in, so its material keeps to circle tracing (said once per object) */
-			render_sss *r = &w->sss[w->insts[i].material];
-			if (r->auto_walk)
+			 * in, so its material keeps to circle tracing (said once per material) */
+			render_sss *r = &w->sss[w->insts[i].material]; /* built after this check */
+			if (!r->auto_open)
 				diag_warning(d, o->loc, "the auto SSS method walks only in closed objects, and this one %s: "
 							"its material uses circle tracing everywhere",
 					     o->geom->kind == SHAPE_PLANE ? "is a plane" : "is open");
-			r->auto_walk = false;
+			r->auto_open = true;
 		} else if (closed[gi] < 0) {
 			if (o->geom->kind == SHAPE_PLANE)
 				diag_error(d, o->loc, "the volume SSS method needs a closed object, and a plane bounds "

@@ -474,7 +474,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 
 /* auto (src/sss/README.md, "auto"): the thickness of the object below the exit, by one ray along
  * the inward geometric normal on the SSS volume alone, in diffuse mean free paths l_d, sets the
- * probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 12 l_d on, smooth between);
+ * probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 8 l_d on, smooth between);
  * circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
  * A random number is drawn only where the probability is strictly between 0 and 1, so a thick
  * object renders exactly as under circle (the same random stream), a thin one exactly as under

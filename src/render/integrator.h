@@ -67,6 +67,7 @@ typedef struct render_sss {
 	sss_walk_medium medium; /* volume and auto: the medium's coefficients per scene unit */
 	float auto_ld;	     /* the largest channel's diffuse mean free path l_d, in scene units */
 	bool auto_walk;	     /* auto may walk: every object of the material is closed */
+	bool auto_open;	     /* the build's: an object of this material under auto is open */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;

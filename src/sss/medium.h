@@ -43,7 +43,7 @@ bool sss_profile_from_name(const char *name, sss_profile_kind *k);
  * no seam where the choice changes). m = +Inf (nothing below: an open surface) gives 0; NaN or
  * m <= 0 gives 1. */
 #define SSS_AUTO_WALK_BELOW 4.0
-#define SSS_AUTO_CIRCLE_ABOVE 12.0
+#define SSS_AUTO_CIRCLE_ABOVE 8.0
 double sss_auto_walk_prob(double m);
 
 /* ---- the presets ---------------------------------------------------------------------------------- */

@@ -447,6 +447,20 @@ static void test_auto_thick(void)
 		differ += a.px[i] != c.px[i];
 	printf("auto on a thick slab: mean %.6f, circle %.6f, %d of %d pixels differ\n", a.mean, c.mean, differ, W * H);
 	CHECK(differ == 0 && a.nonfinite == 0, "auto differs from circle on a thick slab in %d pixels", differ);
+
+	/* an open object (a plane) holds no volume to walk in: a warning, and circle tracing only,
+	 * the material's own `method auto` (no --sss) as well */
+	const char *plane = SLAB_LIGHT "plane { y, 0 material { wax { color rgb 0.6 radius 3 method auto } } }\n";
+	world *w;
+	world_options o = {.width = W, .height = H};
+	CHECK(build(plane, &o, &w) && last_warnings == 1, "auto on a plane: %d warnings, expected 1", last_warnings);
+	world_free(w);
+	render(plane, 1, 2, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
+	unsigned long walks = 0;
+	for (int i = 0; i < W * H; i++)
+		walks += a.px_walks[i];
+	CHECK(walks == 0 && a.nonfinite == 0 && a.circles > 0, "auto on a plane: %lu walks of %lu searches", walks,
+	      a.circles);
 }
 
 /* A back-lit sheet of skin 3 mm thick (0.8 of the red l_d, 3.7 mm): auto walks everywhere, so its
@@ -474,8 +488,8 @@ static void test_auto_thin(void)
 }
 
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
- * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 12 l_d, and a
- * little either side), seen from above, lit strongly from below and weakly from above, so the
+ * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 8 l_d, and
+ * more either side), seen from above, lit strongly from below and weakly from above, so the
  * methods differ where auto blends them. Column by column, auto's mean must be the blend
  * p(T) volume + (1 - p(T)) circle of the two methods' own means, p the rule at the column's
  * thickness: chi-square over the columns within its 4-sigma bound (circle's own image is noisy

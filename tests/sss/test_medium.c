@@ -199,26 +199,32 @@ static void check_pov_translucency(void)
 		   1e-12);
 }
 
-/* auto's probability of the walk: 1 below 4 l_d, 0 from 12 on, continuous (no seam) and
- * monotone between, with slope 0 at both ends; the extremes are finite. */
+/* auto's probability of the walk: 1 up to SSS_AUTO_WALK_BELOW l_d, 0 from SSS_AUTO_CIRCLE_ABOVE
+ * on, continuous (no seam) and monotone between, with slope 0 at both ends; the extremes are
+ * finite. */
 static void check_auto_rule(void)
 {
-	CHECK(sss_auto_walk_prob(0.0) == 1.0 && sss_auto_walk_prob(4.0) == 1.0 && sss_auto_walk_prob(-1.0) == 1.0,
+	const double lo = SSS_AUTO_WALK_BELOW, hi = SSS_AUTO_CIRCLE_ABOVE;
+	CHECK(sss_auto_walk_prob(0.0) == 1.0 && sss_auto_walk_prob(lo) == 1.0 && sss_auto_walk_prob(-1.0) == 1.0,
 	      "thin walks");
-	CHECK(sss_auto_walk_prob(NAN) == 1.0 && sss_auto_walk_prob(12.0) == 0.0 && sss_auto_walk_prob(INFINITY) == 0.0 &&
+	CHECK(sss_auto_walk_prob(NAN) == 1.0 && sss_auto_walk_prob(hi) == 0.0 && sss_auto_walk_prob(INFINITY) == 0.0 &&
 		  sss_auto_walk_prob(1e300) == 0.0,
 	      "thick is circle; NaN walks");
-	CHECK_NEAR(sss_auto_walk_prob(sqrt(48.0)), 0.5, 1e-12); /* the geometric middle of the band */
+	CHECK_NEAR(sss_auto_walk_prob(sqrt(lo * hi)), 0.5, 1e-12); /* the geometric middle of the band */
+	const double step = 1e-4;
 	double prev = 1.0, worst_step = 0.0;
-	for (int i = 0; i <= 100000; i++) {
-		double m = 3.0 + 10.0 * i / 100000.0, p = sss_auto_walk_prob(m);
+	for (double m = 0.5 * lo; m < 1.5 * hi; m += step) {
+		double p = sss_auto_walk_prob(m);
 		CHECK(p <= prev && p >= 0.0 && p <= 1.0, "m %g: p %g after %g", m, p, prev);
 		worst_step = fmax(worst_step, prev - p);
 		prev = p;
 	}
-	/* the largest change over a step of 1e-4 l_d: the slope is at most 1.5 / (m ln 3) <= 0.35 */
-	CHECK(worst_step < 4e-5, "a jump of %g in the walk probability", worst_step);
-	CHECK(1.0 - sss_auto_walk_prob(4.0 * 1.0001) < 1e-6 && sss_auto_walk_prob(12.0 / 1.0001) < 1e-6,
+	/* the largest change over one step: the slope of 1 - smoothstep(ln(m/lo)/ln(hi/lo)) is at most
+	 * 1.5 / (m ln(hi/lo)), largest at the low end */
+	double slope = 1.5 / (lo * log(hi / lo));
+	CHECK(worst_step < 1.01 * slope * step, "a jump of %g in the walk probability (slope bound %g)", worst_step,
+	      slope * step);
+	CHECK(1.0 - sss_auto_walk_prob(lo * 1.0001) < 1e-6 && sss_auto_walk_prob(hi / 1.0001) < 1e-6,
 	      "slope 0 at the ends of the band");
 }
 
