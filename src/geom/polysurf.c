@@ -97,7 +97,7 @@ bool shape_poly_surface(int order, const double *c, dvec3 lo, dvec3 hi, double m
 	double m = SHAPE_POLY_MARGIN * fmax(ext.x, fmax(ext.y, ext.z));
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = poly_fn, .fn_ctx = &pc, .fn_name = what, .threshold = 0.0,
 			.box_lo = d3_sub(lo, d3(m, m, m)), .box_hi = d3_add(hi, d3(m, m, m)),
-			.has_region = true, .region_lo = lo, .region_hi = hi};
+			.has_region = true, .region_lo = lo, .region_hi = hi, .max_passes = 3};
 	shape_accuracy acc = {.tol = max_error, .segments = 3};
 	return shape_isosurface_named(&s, &acc, what, out, err, d, loc);
 }
