@@ -22,6 +22,12 @@ uint32_t shape_poly_terms(int order);
 /* sum c[t] x^i y^j z^k in POV-Ray's term order (Poly::inside): i from the order down to 0, then j
  * from order - i down to 0, then k from order - i - j down to 0. */
 double shape_poly_eval(int order, const double *c, dvec3 p);
+/* A ball about the origin holding the solid P < 0, when P's top-degree form is positive on every
+ * direction (an even order; x^4 + y^4 + z^4 - 1000 bounds itself): its least value on the unit
+ * sphere bounded from below by dense sampling less a Lipschitz margin, then the radius past which
+ * that form outweighs the lower terms. False where this cannot be shown (then the solid may still
+ * be bounded: a piriform's top form vanishes along a plane). */
+bool shape_poly_ball(int order, const double *c, double *radius);
 /* A quadric's A .. J (A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J) as the
  * 10 coefficients of an order-2 poly. */
 void shape_quadric_poly(const double q[10], double c[10]);

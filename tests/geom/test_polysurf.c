@@ -3,7 +3,7 @@
  * random points on the triangles that are not the box's faces within the stated (and the reported)
  * distance, closed (every welded edge in two triangles), outward (the divergence theorem's volume
  * against the solid's, shading normals along the geometric ones), and a paraboloid's cut by its
- * box; shape_quadric_box against a brute-force grid and its unbounded kinds. (The triangle limit
+ * box; shape_quadric_box against a brute-force grid and its unbounded kinds; shape_poly_ball. (The triangle limit
  * is field.c's, tested with the isosurface in test_shapes2.) */
 #include "check.h"
 #include "base/rng.h"
@@ -228,11 +228,31 @@ static void test_quadric_box(void)
 	CHECK(!shape_quadric_box(none, &lo, &hi), "x^2 + y^2 + z^2 + 1 <= 0 is empty");
 }
 
+/* shape_poly_ball: a ball holding the solid where the top form is positive on every direction */
+static void test_poly_ball(void)
+{
+	double bicube[35] = {0}, r;
+	bicube[0] = bicube[20] = bicube[30] = 1, bicube[34] = -1000; /* x^4 + y^4 + z^4 - 1000 (bicube.pov) */
+	CHECK(shape_poly_ball(4, bicube, &r), "bicube bounds itself");
+	double reach = pow(1000, 0.25) * pow(3, 0.25); /* the farthest point, along a diagonal: 3 x^4 = 1000 */
+	CHECK(r >= reach && r <= 2 * reach, "bicube's ball %g holds its farthest point %g, not much more", r, reach);
+	const double torus[35] = {1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+				  1, 0, 0, 2, 0, 56, 0, 0, 0, 0, 1, 0, -104, 0, 784};
+	CHECK(shape_poly_ball(4, torus, &r) && r >= sqrt(R2) + sqrt(r2), "torus ball %g holds R + r", r);
+	const double piriform[35] = {4, 0, 0, -4, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+				     0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0};
+	CHECK(!shape_poly_ball(4, piriform, &r), "piriform's top form 4 x^4 vanishes on x = 0: not shown bounded");
+	double cubic[20] = {0};
+	cubic[0] = 1, cubic[19] = -1;
+	CHECK(!shape_poly_ball(3, cubic, &r), "an odd order is never bounded this way");
+}
+
 int main(void)
 {
 	diag_init(&D, stderr);
 	test_terms();
 	test_quadric_box();
+	test_poly_ball();
 	test_torus();
 	test_sphere_and_cut();
 	diag_free(&D);
