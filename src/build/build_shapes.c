@@ -155,8 +155,12 @@ static bbox own_box(const world *w, const scene_geom *g)
 		quadric_coeffs(&g->u.quadric, q);
 		return shape_quadric_box(q, &b.lo, &b.hi) ? b : box_none();
 	}
-	case SHAPE_POLY:
+	case SHAPE_POLY: { /* bounded by its own solid where its top form is positive everywhere */
+		double r;
+		if (shape_poly_ball(g->u.poly.order, g->u.poly.coeffs, &r))
+			return box_sphere(d3(0, 0, 0), r);
 		return box_all();
+	}
 	case SHAPE_MESH: case SHAPE_MESH_FILE: case SHAPE_SUBDIV: case SHAPE_POV: {
 		vec3 lo, hi;
 		const mesh *m = &w->geoms[g->id].m;

@@ -229,6 +229,21 @@ static double field_dist(const shape_field *F, dvec3 p)
 	return gl > 0 && isfinite(f / gl) ? fabs(f) / gl : 0.0;
 }
 
+/* The first-order distance of the triangle p0 p1 p2: |F| at its centre and edge midpoints over
+ * |grad F| at its centre (one gradient a triangle: an isosurface's costs six calls of its function). */
+static double tri_points_dist(const shape_field *F, dvec3 p0, dvec3 p1, dvec3 p2)
+{
+	dvec3 c = d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3), g;
+	double f = F->eval(F->ctx, c, &g), gl = d3_length(g);
+	if (!(gl > 0) || !isfinite(f / gl))
+		return 0.0;
+	double m = fabs(f);
+	m = fmax(m, fabs(F->eval(F->ctx, d3_scale(d3_add(p0, p1), 0.5), NULL)));
+	m = fmax(m, fabs(F->eval(F->ctx, d3_scale(d3_add(p1, p2), 0.5), NULL)));
+	m = fmax(m, fabs(F->eval(F->ctx, d3_scale(d3_add(p2, p0), 0.5), NULL)));
+	return isfinite(m / gl) ? m / gl : 0.0;
+}
+
 double shape_field_error(const shape_field *F, const shape_builder *b)
 {
 	/* The centre and the edges' midpoints of each triangle: marching tetrahedra make slivers,
@@ -241,10 +256,7 @@ double shape_field_error(const shape_field *F, const shape_builder *b)
 		if (F->has_region && (c.x < F->region_lo.x || c.y < F->region_lo.y || c.z < F->region_lo.z ||
 				      c.x > F->region_hi.x || c.y > F->region_hi.y || c.z > F->region_hi.z))
 			continue;
-		w = fmax(w, field_dist(F, c));
-		w = fmax(w, field_dist(F, d3_scale(d3_add(p0, p1), 0.5)));
-		w = fmax(w, field_dist(F, d3_scale(d3_add(p1, p2), 0.5)));
-		w = fmax(w, field_dist(F, d3_scale(d3_add(p2, p0), 0.5)));
+		w = fmax(w, tri_points_dist(F, p0, p1, p2));
 	}
 	return w;
 }
@@ -255,11 +267,7 @@ double shape_field_error(const shape_field *F, const shape_builder *b)
 static double tri_dist(const shape_field *F, const shape_builder *b, uint32_t t)
 {
 	const uint32_t *i = &b->idx[3 * (size_t)t];
-	dvec3 p0 = v3_to_d3(b->pos[i[0]]), p1 = v3_to_d3(b->pos[i[1]]), p2 = v3_to_d3(b->pos[i[2]]);
-	double w = field_dist(F, d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3));
-	w = fmax(w, field_dist(F, d3_scale(d3_add(p0, p1), 0.5)));
-	w = fmax(w, field_dist(F, d3_scale(d3_add(p1, p2), 0.5)));
-	return fmax(w, field_dist(F, d3_scale(d3_add(p2, p0), 0.5)));
+	return tri_points_dist(F, v3_to_d3(b->pos[i[0]]), v3_to_d3(b->pos[i[1]]), v3_to_d3(b->pos[i[2]]));
 }
 
 /* The slot of edge key k in m (open addressing; m->key[slot] == k when it was there). */

@@ -150,8 +150,8 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 		return false;
 	}
 	/* The blob's rule with a curvature radius of an eighth of the container: a step h gives
-	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then again (twice at most) at the step
-	 * the measured distance asks for, when it was missed and the grid allows it. */
+	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then again (once, or max_passes - 1
+	 * times) at the step the measured distance asks for, when it was missed and the grid allows it. */
 	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
 	iso_ctx c = {.s = s, .eps = 0};
 	/* the golden ratio's fraction of a cell: the box's faces fall between grid points (a grid
@@ -160,7 +160,8 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 			 .has_region = s->has_region, .region_lo = s->region_lo, .region_hi = s->region_hi};
 	shape_builder b;
 	double got = 0;
-	for (int pass = 0; pass < 3; pass++) {
+	int passes = s->max_passes > 0 ? s->max_passes : 2;
+	for (int pass = 0; pass < passes; pass++) {
 		h = shape_field_fit_step(ext, h, ISO_MAX_GRID_POINTS);
 		c.eps = 1e-3 * h;
 		if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc))
@@ -175,7 +176,7 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 		if (s->open && !b.failed)
 			rim = drop_cut(&c, &b, h);
 		got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
-		if (b.failed || got <= 1.5 * acc->tol || pass == 2)
+		if (b.failed || got <= 1.5 * acc->tol || pass == passes - 1)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);
 		if (shape_field_fit_step(ext, h2, ISO_MAX_GRID_POINTS) >= h)

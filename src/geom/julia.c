@@ -15,21 +15,7 @@
 
 /* The most grid points a fractal may sample. */
 #define JULIA_MAX_GRID_POINTS (1u << 21)
-/* POV-Ray's Fractal_Tolerance (fractal.h) */
-#define JULIA_TOLERANCE 1e-7
 
-double shape_julia_radius(const shape_desc *s, double *exit_value)
-{
-	if (s->algebra == 0) {
-		double r = 1 + sqrt(s->julia[0] * s->julia[0] + s->julia[1] * s->julia[1] + s->julia[2] * s->julia[2] +
-				    s->julia[3] * s->julia[3]) + JULIA_TOLERANCE;
-		r = fmin(r, 2.0);
-		*exit_value = r * r + JULIA_TOLERANCE;
-		return r;
-	}
-	*exit_value = 16;
-	return 4;
-}
 
 static bool julia_inside(const shape_desc *s, double ev, dvec3 p)
 {

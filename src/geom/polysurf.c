@@ -69,6 +69,69 @@ void shape_quadric_poly(const double q[10], double c[10])
 	memcpy(c, v, sizeof v);
 }
 
+bool shape_poly_ball(int order, const double *c, double *radius)
+{
+	if (order < 2 || order % 2)
+		return false;
+	/* C_k: the sum of |c| over the terms of degree k (each at most rho^k on the sphere of radius rho);
+	 * L: the top form's gradient on the unit sphere is at most order * C_order */
+	double ck[SHAPE_POLY_MAX_ORDER + 1] = {0};
+	uint32_t t = 0;
+	for (int i = order; i >= 0; i--)
+		for (int j = order - i; j >= 0; j--)
+			for (int k = order - i - j; k >= 0; k--, t++)
+				ck[i + j + k] += fabs(c[t]);
+	if (!(ck[order] > 0))
+		return false;
+	/* The top form's least value on the unit sphere: sampled at N Fibonacci directions, less its
+	 * Lipschitz bound times twice the lattice's spacing (every point of the sphere is nearer a
+	 * direction than that), so a positive m is a true lower bound. */
+	enum { N = 200000 };
+	const double golden = M_PI * (3.0 - sqrt(5.0)), delta = 2.0 * sqrt(4.0 * M_PI / N);
+	double lo = INFINITY;
+	for (int q = 0; q < N; q++) {
+		double z = 1.0 - (2.0 * q + 1.0) / N, r = sqrt(fmax(0.0, 1.0 - z * z)), ph = golden * q;
+		dvec3 u = d3(r * cos(ph), r * sin(ph), z);
+		double x[SHAPE_POLY_MAX_ORDER + 1], y[SHAPE_POLY_MAX_ORDER + 1], w[SHAPE_POLY_MAX_ORDER + 1], h = 0.0;
+		x[0] = y[0] = w[0] = 1.0;
+		for (int i = 1; i <= order; i++)
+			x[i] = x[i - 1] * u.x, y[i] = y[i - 1] * u.y, w[i] = w[i - 1] * u.z;
+		t = 0;
+		for (int i = order; i >= 0; i--)
+			for (int j = order - i; j >= 0; j--)
+				for (int k = order - i - j; k >= 0; k--, t++)
+					if (i + j + k == order && c[t] != 0.0)
+						h += c[t] * x[i] * y[j] * w[k];
+		lo = fmin(lo, h);
+	}
+		double m = lo - order * ck[order] * delta;
+	if (!(m > 0))
+		return false;
+	/* P >= m rho^n - sum_{k<n} C_k rho^k on the sphere of radius rho: positive past the one
+	 * positive root of the right side (one sign change), found by doubling and bisection. */
+	double hi = 1.0;
+	for (int it = 0; it < 200; it++) {
+		double f = m * pow(hi, order);
+		for (int k = 0; k < order; k++)
+			f -= ck[k] * pow(hi, k);
+		if (f > 0)
+			break;
+		hi *= 2;
+	}
+	double a = 0.0;
+	for (int it = 0; it < 100; it++) {
+		double mid = 0.5 * (a + hi), f = m * pow(mid, order);
+		for (int k = 0; k < order; k++)
+			f -= ck[k] * pow(mid, k);
+		if (f > 0)
+			hi = mid;
+		else
+			a = mid;
+	}
+	*radius = hi;
+	return isfinite(hi);
+}
+
 typedef struct poly_ctx {
 	int order;
 	const double *c;
@@ -97,7 +160,7 @@ bool shape_poly_surface(int order, const double *c, dvec3 lo, dvec3 hi, double m
 	double m = SHAPE_POLY_MARGIN * fmax(ext.x, fmax(ext.y, ext.z));
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = poly_fn, .fn_ctx = &pc, .fn_name = what, .threshold = 0.0,
 			.box_lo = d3_sub(lo, d3(m, m, m)), .box_hi = d3_add(hi, d3(m, m, m)),
-			.has_region = true, .region_lo = lo, .region_hi = hi};
+			.has_region = true, .region_lo = lo, .region_hi = hi, .max_passes = 3};
 	shape_accuracy acc = {.tol = max_error, .segments = 3};
 	return shape_isosurface_named(&s, &acc, what, out, err, d, loc);
 }

@@ -2,6 +2,7 @@
  * quadric ellipsoid (povshape.h). Parametric shapes lay out a (columns + 1) x (rows + 1) vertex grid,
  * the seam duplicated for UVs; closedness is that of positions. */
 #include "geom/povshape.h"
+#include "geom/polysurf.h"
 
 #include "base/mem.h"
 
@@ -636,40 +637,6 @@ bool shape_height_field(const float *heights, uint32_t w, uint32_t h, bool smoot
 
 /* ---- quadric ------------------------------------------------------------------------------------ */
 
-/* Eigen decomposition of the symmetric 3 x 3 matrix a (Jacobi rotations): a = V diag(l) V^T, the
- * columns of v the eigenvectors. */
-static void jacobi3(double a[3][3], double l[3], double v[3][3])
-{
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			v[i][j] = i == j;
-	for (int sweep = 0; sweep < 50; sweep++) {
-		double off = fabs(a[0][1]) + fabs(a[0][2]) + fabs(a[1][2]);
-		if (off == 0.0)
-			break;
-		for (int p = 0; p < 2; p++)
-			for (int q = p + 1; q < 3; q++) {
-				if (a[p][q] == 0.0)
-					continue;
-				double th = 0.5 * (a[q][q] - a[p][p]) / a[p][q];
-				double t = copysign(1.0, th) / (fabs(th) + sqrt(th * th + 1.0)), c = 1.0 / sqrt(t * t + 1.0), s = t * c;
-				for (int k = 0; k < 3; k++) { /* a = J^T a J */
-					double akp = a[k][p], akq = a[k][q];
-					a[k][p] = c * akp - s * akq, a[k][q] = s * akp + c * akq;
-				}
-				for (int k = 0; k < 3; k++) {
-					double apk = a[p][k], aqk = a[q][k];
-					a[p][k] = c * apk - s * aqk, a[q][k] = s * apk + c * aqk;
-				}
-				for (int k = 0; k < 3; k++) {
-					double vkp = v[k][p], vkq = v[k][q];
-					v[k][p] = c * vkp - s * vkq, v[k][q] = s * vkp + c * vkq;
-				}
-			}
-	}
-	for (int i = 0; i < 3; i++)
-		l[i] = a[i][i];
-}
 
 /* The ellipsoid of a quadric: its kind and, for an ellipsoid, centre c, semi-axes and their
  * directions (the columns of v). */
@@ -677,7 +644,7 @@ static shape_quadric_kind quadric_ellipsoid(const double q[10], dvec3 *c, double
 {
 	double a[3][3] = {{q[0], q[3] / 2, q[4] / 2}, {q[3] / 2, q[1], q[5] / 2}, {q[4] / 2, q[5] / 2, q[2]}};
 	double l[3], g[3] = {q[6], q[7], q[8]};
-	jacobi3(a, l, v);
+	shape_sym3_eigen(a, l, v);
 	double lmax = fmax(fabs(l[0]), fmax(fabs(l[1]), fabs(l[2])));
 	/* Definite: every eigenvalue of one sign, none negligible (which would make an axis infinite). */
 	double sign = l[0] > 0 ? 1.0 : -1.0;
@@ -711,53 +678,6 @@ shape_quadric_kind shape_quadric_bound(const double q[10], dvec3 *centre, double
 	return k;
 }
 
-bool shape_quadric_box(const double q[10], dvec3 *lo, dvec3 *hi)
-{
-	double a[3][3] = {{q[0], q[3] / 2, q[4] / 2}, {q[3] / 2, q[1], q[5] / 2}, {q[4] / 2, q[5] / 2, q[2]}};
-	double l[3], v[3][3], g[3] = {q[6], q[7], q[8]};
-	jacobi3(a, l, v);
-	double lmax = fmax(fabs(l[0]), fmax(fabs(l[1]), fabs(l[2]))), glen = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-	*lo = d3(-INFINITY, -INFINITY, -INFINITY), *hi = d3(INFINITY, INFINITY, INFINITY);
-	if (!(lmax > 0.0) || !isfinite(lmax))
-		return true; /* linear: a half-space (or all or nothing) */
-	/* The solid P <= 0 is bounded along some axis only where the quadratic part is positive
-	 * semi-definite (an elliptic cylinder, an ellipsoid); a negative eigenvalue (a cone, a
-	 * hyperboloid, the outside of a cylinder) or a linear term along a null direction (a paraboloid)
-	 * leaves every axis unbounded. */
-	bool null[3];
-	double cl[3], k = -q[9];
-	for (int i = 0; i < 3; i++) {
-		double gl = v[0][i] * g[0] + v[1][i] * g[1] + v[2][i] * g[2];
-		null[i] = fabs(l[i]) <= 1e-12 * lmax;
-		if (!null[i] && l[i] < 0.0)
-			return true;
-		if (null[i] && fabs(gl) > 1e-12 * (glen + fabs(q[9]) + lmax))
-			return true;
-		cl[i] = null[i] ? 0.0 : -gl / (2.0 * l[i]);
-		k += null[i] ? 0.0 : l[i] * cl[i] * cl[i];
-	}
-	if (k < 0.0)
-		return false; /* (x - c)^T Q (x - c) <= k < 0: no points */
-	double c[3] = {0, 0, 0};
-	for (int i = 0; i < 3; i++)
-		for (int r = 0; r < 3; r++)
-			c[r] += v[r][i] * cl[i];
-	double plo[3] = {-INFINITY, -INFINITY, -INFINITY}, phi[3] = {INFINITY, INFINITY, INFINITY};
-	for (int r = 0; r < 3; r++) { /* along axis r: c_r +- sqrt(k sum_i v_ri^2 / l_i), if no null direction has a part along it */
-		double s = 0.0;
-		bool bounded = true;
-		for (int i = 0; i < 3; i++) {
-			if (null[i])
-				bounded = bounded && fabs(v[r][i]) <= 1e-9;
-			else
-				s += v[r][i] * v[r][i] / l[i];
-		}
-		if (bounded)
-			plo[r] = c[r] - sqrt(k * s), phi[r] = c[r] + sqrt(k * s);
-	}
-	*lo = d3(plo[0], plo[1], plo[2]), *hi = d3(phi[0], phi[1], phi[2]);
-	return true;
-}
 
 bool shape_quadric(const double q[10], const shape_accuracy *acc, mesh *out, double *err, shape_quadric_kind *kind,
 		   diag *d, diag_loc loc)

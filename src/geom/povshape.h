@@ -90,10 +90,6 @@ bool shape_quadric(const double q[10], const shape_accuracy *a, mesh *out, doubl
 		   diag *d, diag_loc loc);
 /* The quadric's kind and, for an ellipsoid, its centre and longest semi-axis. */
 shape_quadric_kind shape_quadric_bound(const double q[10], dvec3 *centre, double *radius);
-/* The box of the quadric's solid (POV-Ray's inside: the value <= 0), an axis infinite (+-INFINITY)
- * where the solid is unbounded along it: an ellipsoid or an elliptic cylinder bounds the axes its
- * axis has no part along; cones, hyperboloids, paraboloids and half-spaces bound none. False when
- * the solid is empty (a positive semi-definite quadric whose minimum is above 0). */
-bool shape_quadric_box(const double q[10], dvec3 *lo, dvec3 *hi);
+/* shape_quadric_box (the box of any quadric's solid) is in polysurf.h. */
 
 #endif

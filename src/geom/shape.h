@@ -75,6 +75,7 @@ typedef struct shape_desc {
 	double sphere_r;
 	double max_gradient, iso_accuracy, evaluate[3];
 	bool has_region; /* the distance reached measured only inside [region_lo, region_hi] (shape_field's) */
+	int max_passes; /* grids made at most (0: 2, the first and one at the step it asks for) */
 	dvec3 region_lo, region_hi;
 	bool has_evaluate, all_intersections;
 	int max_trace;

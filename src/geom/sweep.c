@@ -7,6 +7,7 @@
 #include "base/mem.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* POV-Ray's EPSILON (core/configcore.h): two outline points this close close a sub-prism. */
@@ -501,6 +502,168 @@ static bool prism_caps(shape_builder *b, const shape_desc *s, const outline *o)
 	return true;
 }
 
+/* ---- a prism whose sub-polygons cross each other: POV-Ray's even-odd rule (Prism::Inside counts
+ * the crossings of a ray in the outline's plane, whatever the sub-polygons do) ---- */
+
+typedef struct pedge {
+	double ax, ay, bx, by; /* the outline's (x, z) as (x, y) */
+} pedge;
+
+/* The even-odd inside of the outline at (x, y): the crossings of the ray toward +x. */
+static bool evenodd_inside(const pedge *e, size_t ne, double x, double y)
+{
+	bool in = false;
+	for (size_t i = 0; i < ne; i++)
+		if ((e[i].ay > y) != (e[i].by > y) &&
+		    x < e[i].ax + (y - e[i].ay) * (e[i].bx - e[i].ax) / (e[i].by - e[i].ay))
+			in = !in;
+	return in;
+}
+
+/* Where segments i and j cross properly: the parameter along i (false when they do not). */
+static bool seg_cross(const pedge *i, const pedge *j, double *t, double *u)
+{
+	double rx = i->bx - i->ax, ry = i->by - i->ay, sx = j->bx - j->ax, sy = j->by - j->ay;
+	double den = rx * sy - ry * sx;
+	if (den == 0)
+		return false;
+	double qx = j->ax - i->ax, qy = j->ay - i->ay;
+	*t = (qx * sy - qy * sx) / den, *u = (qx * ry - qy * rx) / den;
+	return *t > 1e-12 && *t < 1 - 1e-12 && *u > 1e-12 && *u < 1 - 1e-12;
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return x < y ? -1 : x > y;
+}
+
+typedef struct slab_e {
+	double x0, x1, xm;
+} slab_e;
+
+static int cmp_slab(const void *a, const void *b)
+{
+	double x = ((const slab_e *)a)->xm, y = ((const slab_e *)b)->xm;
+	return x < y ? -1 : x > y;
+}
+
+/* Walls: every edge split where others cross it, each piece facing away from the inside (which
+ * side is inside changes at each crossing); caps: the even-odd region cut into trapezoids between
+ * the heights of every vertex and crossing. Flat normals (the pieces are not smoothed). */
+static bool prism_evenodd(shape_builder *b, const shape_desc *s, const outline *o, const shape_accuracy *acc, diag *d,
+			  diag_loc loc)
+{
+	size_t ne = o->n_points;
+	pedge *e = mem_alloc(ne ? ne : 1, sizeof *e);
+	double *ts = mem_alloc(ne + 2, sizeof *ts);
+	vecbuf ys;
+	vecbuf_init(&ys, sizeof(double));
+	bool ok = e && ts;
+	for (uint32_t k = 0, a = 0, n = 0; ok && k < o->n_contours; a += o->counts[k], k++)
+		for (uint32_t i = 0; i < o->counts[k]; i++, n++) {
+			const double *p = &o->xy[2 * (a + i)], *q = &o->xy[2 * (a + (i + 1) % o->counts[k])];
+			e[n] = (pedge){p[0], p[1], q[0], q[1]};
+			ok = vecbuf_push(&ys, &p[1]);
+		}
+	/* the walls, and the heights where edges cross */
+	for (size_t i = 0; ok && i < ne; i++) {
+		size_t nt = 0;
+		ts[nt++] = 0;
+		for (size_t j = 0; j < ne; j++) {
+			double t, u;
+			if (j != i && seg_cross(&e[i], &e[j], &t, &u)) {
+				if (nt < ne + 1)
+					ts[nt++] = t;
+				if (j > i) {
+					double y = e[i].ay + t * (e[i].by - e[i].ay);
+					ok = ok && vecbuf_push(&ys, &y);
+				}
+			}
+		}
+		ts[nt++] = 1;
+		qsort(ts, nt, sizeof *ts, cmp_dbl);
+		double dx = e[i].bx - e[i].ax, dy = e[i].by - e[i].ay, len = hypot(dx, dy);
+		if (!(len > 0))
+			continue;
+		for (size_t k = 0; k + 1 < nt; k++) {
+			double t0 = ts[k], t1 = ts[k + 1], tm = 0.5 * (t0 + t1);
+			if (!(t1 > t0))
+				continue;
+			double p0[2] = {e[i].ax + t0 * dx, e[i].ay + t0 * dy}, p1[2] = {e[i].ax + t1 * dx, e[i].ay + t1 * dy};
+			double mx = e[i].ax + tm * dx, my = e[i].ay + tm * dy, nx = dy / len, ny = -dx / len;
+			double eps = 1e-7 * (1 + fabs(mx) + fabs(my));
+			bool right_in = evenodd_inside(e, ne, mx + eps * nx, my + eps * ny);
+			dvec3 want = right_in ? d3(-nx, 0, -ny) : d3(nx, 0, ny);
+			dvec3 P1 = prism_point(s, p0, s->h1), Q1 = prism_point(s, p1, s->h1);
+			dvec3 P2 = prism_point(s, p0, s->h2), Q2 = prism_point(s, p1, s->h2);
+			uint32_t v0 = sb_vertex(b, P1, want, 0, 0), v1 = sb_vertex(b, Q1, want, 0, 0);
+			uint32_t v2 = sb_vertex(b, Q2, want, 0, 0), v3 = sb_vertex(b, P2, want, 0, 0);
+			if (!s->conic || s->h1 != 0)
+				sb_tri(b, v0, v1, v2, want);
+			if (!s->conic || s->h2 != 0)
+				sb_tri(b, v0, v2, v3, want);
+		}
+	}
+	/* the caps: trapezoids of each slab between consecutive heights, counted first */
+	size_t ny = ys.len;
+	double *y = ok ? (double *)ys.data : NULL;
+	if (ok)
+		qsort(y, ny, sizeof *y, cmp_dbl);
+	size_t cap_tris = 0;
+	for (size_t k = 0; ok && k + 1 < ny; k++) {
+		if (!(y[k + 1] > y[k]))
+			continue;
+		double ym = 0.5 * (y[k] + y[k + 1]);
+		size_t c = 0;
+		for (size_t i = 0; i < ne; i++)
+			c += (e[i].ay > ym) != (e[i].by > ym);
+		cap_tris += 2 * c; /* each inside interval two triangles, two caps */
+	}
+	if (ok && (size_t)b->nt + cap_tris >= SHAPE_MAX_TRIANGLES) {
+		mem_free(e), mem_free(ts), vecbuf_free(&ys);
+		diag_error(d, loc, "the prism would make more than %u triangles (the limit of one shape)", SHAPE_MAX_TRIANGLES);
+		return false;
+	}
+	slab_e *se = ok ? mem_alloc(ne ? ne : 1, sizeof *se) : NULL;
+	ok = ok && se;
+	for (size_t k = 0; ok && !s->open && k + 1 < ny; k++) {
+		double ya = y[k], yb = y[k + 1], ym = 0.5 * (ya + yb);
+		if (!(yb > ya))
+			continue;
+		size_t c = 0;
+		for (size_t i = 0; i < ne; i++)
+			if ((e[i].ay > ym) != (e[i].by > ym)) {
+				double sl = (e[i].bx - e[i].ax) / (e[i].by - e[i].ay);
+				se[c++] = (slab_e){e[i].ax + (ya - e[i].ay) * sl, e[i].ax + (yb - e[i].ay) * sl,
+						   e[i].ax + (ym - e[i].ay) * sl};
+			}
+		qsort(se, c, sizeof *se, cmp_slab);
+		for (size_t i = 0; i + 1 < c; i += 2) /* even-odd: between crossings 2k and 2k + 1 */
+			for (int side = 0; side < 2; side++) {
+				double h = side ? s->h2 : s->h1;
+				if (s->conic && h == 0)
+					continue;
+				dvec3 up = d3(0, side ? 1 : -1, 0);
+				double q[4][2] = {{se[i].x0, ya}, {se[i + 1].x0, ya}, {se[i + 1].x1, yb}, {se[i].x1, yb}};
+				uint32_t v[4];
+				for (int m = 0; m < 4; m++)
+					v[m] = sb_vertex(b, prism_point(s, q[m], h), up, 0, 0);
+				if (se[i + 1].x0 > se[i].x0)
+					sb_tri(b, v[0], v[1], v[2], up);
+				if (se[i + 1].x1 > se[i].x1)
+					sb_tri(b, v[0], v[2], v[3], up);
+			}
+	}
+	(void)acc;
+	mem_free(se), mem_free(e), mem_free(ts), vecbuf_free(&ys);
+	if (!ok) {
+		diag_error(d, loc, "out of memory while tessellating the prism");
+		return false;
+	}
+	return true;
+}
+
 bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag *d, diag_loc loc)
 {
 	/* A conic prism's outline is scaled by up to max |h|: flatten it finer in proportion. */
@@ -518,10 +681,24 @@ bool shape_prism(const shape_desc *s, const shape_accuracy *acc, mesh *out, diag
 		return false;
 	}
 	uint32_t ea, eb;
-	if (poly2d_self_intersects(o.xy, o.counts, o.n_contours, &ea, &eb)) {
+	/* A sub-polygon that crosses itself (a bow tie) is refused; sub-polygons that cross each other
+	 * are POV-Ray's even-odd region (prism3a.pov's overlapping squares). */
+	for (uint32_t k = 0, a = 0; k < o.n_contours; a += o.counts[k], k++)
+		if (poly2d_self_intersects(&o.xy[2 * a], &o.counts[k], 1, &ea, &eb)) {
+			outline_free(&o);
+			diag_error(d, loc, "the prism's outline crosses itself: POV-Ray's inside test is undefined there");
+			return false;
+		}
+	if (poly2d_self_intersects(o.xy, o.counts, o.n_contours, &ea, &eb)) { /* POV-Ray's even-odd rule */
+		shape_builder b;
+		sb_init(&b);
+		bool ok = prism_evenodd(&b, s, &o, acc, d, loc);
 		outline_free(&o);
-		diag_error(d, loc, "the prism's outline crosses itself: POV-Ray's inside test is undefined there");
-		return false;
+		if (!ok) {
+			sb_free(&b);
+			return false;
+		}
+		return sb_finish(&b, out, false, "prism", d, loc);
 	}
 	if (!orient_outline(&o)) {
 		outline_free(&o);

@@ -1253,6 +1253,8 @@ bool lang_primary(parser *p, value *out)
 	default: {
 		if (lang_colour_word(t->kind))
 			return colour_value(p, out);
+		if (t->kind == LTK_UNSUPPORTED && (lang_word_is(t, "min_extent") || lang_word_is(t, "max_extent")))
+			return lang_extent(p, out); /* extent.c */
 		const builtin *b = builtin_of(t->kind);
 		if (!b && t->kind == LTK_UNSUPPORTED && lang_token_is(t, "vturbulence"))
 			b = &vturbulence_builtin;

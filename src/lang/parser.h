@@ -266,6 +266,8 @@ bool lang_member(parser *p, value *v);
 /* "'FNAME' takes N arguments, found M" at at (lo..hi required; hi < 0: no limit). */
 bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi, int found);
 const char *lang_value_kind_name(const value *v);
+/* extent.c: min_extent(object) or max_extent(object), the word at the current token. */
+bool lang_extent(parser *p, value *out);
 
 /* Declares name (#declare, or #local with local) as v; false after reporting. */
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v);

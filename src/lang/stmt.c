@@ -2986,6 +2986,52 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 	return true;
 }
 
+/* The light's looks_like objects copied into the arena (each light placed moves its own). */
+static bool copy_looks(parser *p, scene_light *l, diag_loc at)
+{
+	if (!l->n_looks)
+		return true;
+	scene_object *o = arena_zalloc(&p->sc->arena, l->n_looks, sizeof *o);
+	if (!o)
+		return lang_error(p, at, "out of memory");
+	memcpy(o, l->looks, l->n_looks * sizeof *o);
+	l->looks = o;
+	return true;
+}
+
+/* looks_like = "looks_like" "{" object_item { modifier } "}": POV-Ray's (Parse_Light_Source): the
+ * object translated to the light's position as it stands, then its modifiers, no_shadow; one a
+ * light. */
+static bool looks_like(parser *p, scene_light *l)
+{
+	diag_loc kw = lang_advance(p)->loc, open;
+	if (l->n_looks)
+		return lang_error(p, kw, "only one looks_like is allowed in a light_source");
+	TRY(open_block(p, "looks_like", &open));
+	vecbuf b;
+	vecbuf_init(&b, sizeof(scene_object));
+	bool matched, ok = object_item(p, &b, &matched);
+	if (ok && (!matched || !b.len))
+		ok = lang_error_found(p, "expected an object in 'looks_like'");
+	xform to = xform_translate(l->position);
+	for (size_t i = 0; ok && i < b.len; i++) {
+		scene_object *o = &VECBUF_AT(&b, scene_object, i);
+		o->transform = xform_then(o->transform, to);
+	}
+	ok = ok && object_tail(p, &b, 0, open, "looks_like");
+	scene_object *o = ok ? arena_zalloc(&p->sc->arena, b.len, sizeof *o) : NULL;
+	if (ok && !o)
+		ok = lang_error(p, kw, "out of memory");
+	if (ok) {
+		memcpy(o, b.data, b.len * sizeof *o);
+		for (size_t i = 0; i < b.len; i++)
+			o[i].no_shadow = true;
+		l->looks = o, l->n_looks = (uint32_t)b.len;
+	}
+	vecbuf_free(&b);
+	return ok;
+}
+
 /* What a light_source starts with: a declared light's name (copied, then modified; its
  * point_at counts as given), or the position and an optional colour after a comma (a float, a
  * vector or a name: `<0, 9, 0>, 1` is grey). */
@@ -2996,6 +3042,7 @@ static bool light_head(parser *p, scene_light *l, diag_loc kw, bool *point_at)
 		TRY(v = declared(p, VAL_LIGHT, "a light_source"));
 		*l = *v->light;
 		l->loc = kw;
+		TRY(copy_looks(p, l, kw));
 		*point_at = l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER;
 		return true;
 	}
@@ -3055,6 +3102,10 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 		bool matched;
 		TRY(transform_item(p, &moved, &matched));
 		if (matched) {
+			for (uint32_t i = 0; i < l.n_looks; i++) { /* copies of the light's own (light_head, looks_like) */
+				scene_object *o = (scene_object *)&l.looks[i];
+				o->transform = xform_then(o->transform, moved);
+			}
 			l.position = xform_point(&moved, l.position);
 			l.point_at = xform_point(&moved, l.point_at);
 			l.axis1 = xform_vector(&moved, l.axis1);
@@ -3120,6 +3171,10 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			break;
 		default: {
 			bool matched;
+			if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "looks_like")) {
+				TRY(looks_like(p, &l));
+				continue;
+			}
 			TRY(light_word_item(p, &l, &seen, &matched));
 			if (matched)
 				continue;
@@ -3138,6 +3193,9 @@ static bool light_source(parser *p)
 	TRY(light_block(p, &l, kw.loc));
 	if (!vecbuf_push(&p->sc->lights, &l))
 		return lang_error(p, kw.loc, "out of memory");
+	for (uint32_t i = 0; i < l.n_looks; i++) /* the objects that show it */
+		if (!vecbuf_push(&p->sc->objects, &l.looks[i]))
+			return lang_error(p, kw.loc, "out of memory");
 	return true;
 }
 

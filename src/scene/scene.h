@@ -68,6 +68,11 @@ typedef struct scene_light {
 	dvec3 axis1, axis2;
 	int area_n1, area_n2;
 	bool circular, orient, jitter;
+	/* POV-Ray's looks_like: the objects that show the light (placed at its position when given,
+	 * moved by its later transforms, no_shadow), added to the scene's objects where the light is
+	 * placed; in the scene's arena. */
+	const struct scene_object *looks;
+	uint32_t n_looks;
 } scene_light;
 
 typedef enum scene_shape_kind {

@@ -3,7 +3,8 @@
  * random points on the triangles that are not the box's faces within the stated (and the reported)
  * distance, closed (every welded edge in two triangles), outward (the divergence theorem's volume
  * against the solid's, shading normals along the geometric ones), and a paraboloid's cut by its
- * box. (The triangle limit is field.c's, tested with the isosurface in test_shapes2.) */
+ * box; shape_quadric_box against a brute-force grid and its unbounded kinds; shape_poly_ball. (The triangle limit
+ * is field.c's, tested with the isosurface in test_shapes2.) */
 #include "check.h"
 #include "base/rng.h"
 #include "geom/polysurf.h"
@@ -187,10 +188,71 @@ static void test_sphere_and_cut(void)
 	mesh_free(&m);
 }
 
+/* shape_quadric_box: an elliptic cylinder bounds the axes across it, an ellipsoid all three,
+ * a paraboloid, a cone and the outside of a sphere none; a quadric without points is empty. */
+static void test_quadric_box(void)
+{
+	dvec3 lo, hi;
+	const double cyl_x[10] = {0, 4, 1, 0, 0, 0, 0, 0, 0, -4}; /* 4 y^2 + z^2 <= 4: |y| <= 1, |z| <= 2 */
+	CHECK(shape_quadric_box(cyl_x, &lo, &hi), "cylinder has points");
+	CHECK(isinf(lo.x) && isinf(hi.x), "cylinder open along x: %g %g", lo.x, hi.x);
+	CHECK_NEAR(lo.y, -1, 1e-12);
+	CHECK_NEAR(hi.y, 1, 1e-12);
+	CHECK_NEAR(lo.z, -2, 1e-12);
+	CHECK_NEAR(hi.z, 2, 1e-12);
+	/* a rotated ellipsoid (x + y)^2 / 2 + (x - y)^2 + z^2 <= 1, centred at (1, 0, 0) after its linear terms */
+	const double ell[10] = {1.5, 1.5, 1, -1, 0, 0, -3, 1, 0, 0.5};
+	CHECK(shape_quadric_box(ell, &lo, &hi), "ellipsoid has points");
+	/* brute force: the extremes of P <= 0 on a fine grid lie inside the box and near its faces */
+	double ext[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+	for (int i = 0; i <= 120; i++)
+		for (int j = 0; j <= 120; j++)
+			for (int k = 0; k <= 120; k++) {
+				dvec3 p = d3(-3 + 6.0 * i / 120, -3 + 6.0 * j / 120, -3 + 6.0 * k / 120);
+				double c[10];
+				shape_quadric_poly(ell, c);
+				if (shape_poly_eval(2, c, p) <= 0) {
+					ext[0] = fmin(ext[0], p.x), ext[1] = fmin(ext[1], p.y), ext[2] = fmin(ext[2], p.z);
+					ext[3] = fmax(ext[3], p.x), ext[4] = fmax(ext[4], p.y), ext[5] = fmax(ext[5], p.z);
+				}
+			}
+	const double box[6] = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+	for (int a = 0; a < 6; a++)
+		CHECK(fabs(box[a] - ext[a]) <= 0.06 && (a < 3 ? box[a] <= ext[a] : box[a] >= ext[a]),
+		      "ellipsoid box side %d: %g, the grid's extreme %g", a, box[a], ext[a]);
+	const double para[10] = {1, 1, 0, 0, 0, 0, 0, 0, -1, 0}, cone[10] = {1, -1, 1, 0, 0, 0, 0, 0, 0, 0};
+	const double outside[10] = {-1, -1, -1, 0, 0, 0, 0, 0, 0, 1}, none[10] = {1, 1, 1, 0, 0, 0, 0, 0, 0, 1};
+	CHECK(shape_quadric_box(para, &lo, &hi) && isinf(lo.x) && isinf(hi.y) && isinf(hi.z), "paraboloid unbounded");
+	CHECK(shape_quadric_box(cone, &lo, &hi) && isinf(lo.x) && isinf(lo.y) && isinf(lo.z), "cone unbounded");
+	CHECK(shape_quadric_box(outside, &lo, &hi) && isinf(lo.x) && isinf(hi.z), "a sphere's outside unbounded");
+	CHECK(!shape_quadric_box(none, &lo, &hi), "x^2 + y^2 + z^2 + 1 <= 0 is empty");
+}
+
+/* shape_poly_ball: a ball holding the solid where the top form is positive on every direction */
+static void test_poly_ball(void)
+{
+	double bicube[35] = {0}, r;
+	bicube[0] = bicube[20] = bicube[30] = 1, bicube[34] = -1000; /* x^4 + y^4 + z^4 - 1000 (bicube.pov) */
+	CHECK(shape_poly_ball(4, bicube, &r), "bicube bounds itself");
+	double reach = pow(1000, 0.25) * pow(3, 0.25); /* the farthest point, along a diagonal: 3 x^4 = 1000 */
+	CHECK(r >= reach && r <= 2 * reach, "bicube's ball %g holds its farthest point %g, not much more", r, reach);
+	const double torus[35] = {1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+				  1, 0, 0, 2, 0, 56, 0, 0, 0, 0, 1, 0, -104, 0, 784};
+	CHECK(shape_poly_ball(4, torus, &r) && r >= sqrt(R2) + sqrt(r2), "torus ball %g holds R + r", r);
+	const double piriform[35] = {4, 0, 0, -4, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+				     0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0};
+	CHECK(!shape_poly_ball(4, piriform, &r), "piriform's top form 4 x^4 vanishes on x = 0: not shown bounded");
+	double cubic[20] = {0};
+	cubic[0] = 1, cubic[19] = -1;
+	CHECK(!shape_poly_ball(3, cubic, &r), "an odd order is never bounded this way");
+}
+
 int main(void)
 {
 	diag_init(&D, stderr);
 	test_terms();
+	test_quadric_box();
+	test_poly_ball();
 	test_torus();
 	test_sphere_and_cut();
 	diag_free(&D);

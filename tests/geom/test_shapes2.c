@@ -301,6 +301,22 @@ static void test_prism(void)
 	diag_init(&quiet, null);
 	CHECK(!shape_tessellate(&s, &acc, &m, &tol, &quiet, diag_noloc()), "a crossing outline is refused");
 	fclose(null);
+	/* two squares that cross each other (prism3a.pov's kind): POV-Ray's even-odd region, the
+	 * overlap a hole: area 4 + 4 - 2 * 1, walls split where the squares cross, outward */
+	double O[] = {0, 0, 2, 0, 2, 2, 0, 2, 0, 0, 1, 1, 3, 1, 3, 3, 1, 3, 1, 1};
+	s = (shape_desc){.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = O, .n_pts = 10, .h1 = 0, .h2 = 2};
+	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "crossing sub-polygons");
+	CHECK_NEAR(volume(&m), 2 * 6, 1e-4);
+	CHECK(flipped_normals(&m) == 0, "even-odd prism normals: %zu flipped", flipped_normals(&m));
+	/* nothing of the mesh inside the hole [1, 2]^2 but its walls */
+	bool hole_empty = true;
+	for (uint32_t t = 0; t < m.num_triangles; t++) {
+		const uint32_t *ix = &m.indices[3 * t];
+		vec3 c = v3_scale(v3_add(v3_add(m.positions[ix[0]], m.positions[ix[1]]), m.positions[ix[2]]), 1.0f / 3);
+		hole_empty &= !(c.x > 1.001f && c.x < 1.999f && c.z > 1.001f && c.z < 1.999f);
+	}
+	CHECK(hole_empty, "the overlap is a hole");
+	mesh_free(&m);
 }
 
 typedef struct sweep_ctx {
