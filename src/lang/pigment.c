@@ -198,9 +198,14 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e, uint32_t *n, const char *what)
 {
 	diag_loc open = lang_advance(p)->loc; /* '[' */
-	double v, v2;
+	double v = 1.0, v2;
 	bool two;
-	TRY(lang_float(p, "as the map entry's value", &v));
+	lang_tok k = lang_peek(p)->kind;
+	bool weight_follows = k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || k == LTK_PLUS ||
+			      peek_declared(p, VAL_FLOAT);
+	/* average's weight is optional, 1 when left out (POV-Ray's Parse_Blend_Map: Allow_Float(1.0)) */
+	if (b->pg.kind != SCENE_PAT_AVERAGE || weight_follows)
+		TRY(lang_float(p, "as the map entry's value", &v));
 	/* [v colour], [v, colour], or the old form [v1 v2 colour1 colour2] (commas optional) */
 	lang_accept(p, LTK_COMMA);
 	two = !pigments && !starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT && lang_peek(p)->kind != LTK_LT;
@@ -230,6 +235,9 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 static bool map_block(parser *p, pig_build *b, bool pigments)
 {
 	const char *what = !pigments ? "color_map" : b->normal ? "normal_map" : "pigment_map";
+	if (b->pg.kind == SCENE_PAT_AVERAGE && !pigments)
+		return lang_error(p, lang_peek(p)->loc, "'average' takes a %s, not a color_map (as POV-Ray)",
+				  b->normal ? "normal_map" : "pigment_map");
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
 	char ctx[32];
 	snprintf(ctx, sizeof ctx, "after '%s'", what);
@@ -685,7 +693,7 @@ static bool average_check(parser *p, const pig_build *b)
 		return true;
 	if (!b->pg.entries)
 		return lang_error(p, b->pg.loc, "'average' needs a %s: the entries it averages, weighted by their values",
-				  b->normal ? "normal_map" : "pigment_map or color_map");
+				  b->normal ? "normal_map" : "pigment_map");
 	double total = 0.0;
 	for (uint32_t i = 0; i < b->pg.n_entries; i++)
 		total += b->pg.entries[i].value;
