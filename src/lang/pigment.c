@@ -21,6 +21,10 @@ typedef struct pig_build {
 	int depth;   /* pigments around this one */
 	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
 	bool density; /* a media's density { }: its map may be written density_map */
+	/* A patterned texture's (lang_texture_pattern): the texture reader, and the entries' textures. */
+	lang_texture_fn tex;
+	const scene_material **tex_mats;
+	uint32_t n_tex;
 } pig_build;
 
 static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
@@ -175,10 +179,29 @@ const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, cons
 
 /* ---- maps and lists ------------------------------------------------------------------------ */
 
+/* A patterned texture's entry: a texture (`texture { }` in a list, a texture body up to ']' in a
+ * texture_map), kept in b->tex_mats; the entry's pigment is the texture's. */
+static bool texture_entry(parser *p, pig_build *b, lang_tok close, scene_map_entry *e)
+{
+	diag_loc at = lang_peek(p)->loc;
+	const scene_material *m;
+	TRY(b->tex(p, close, &m));
+	if (m->kind != MAT_TEXTURE)
+		return lang_error(p, at, "a patterned texture's entries are POV-Ray textures, but this one is a %s material",
+				  scene_material_kind_name(m->kind));
+	b->tex_mats[b->n_tex++] = m;
+	return (e->pigment = declared_tree(p, m, at)) != NULL;
+}
+
 /* An entry's colour, or pigment: "pigment" "{" body "}" or (in a pigment_map) a body up to ']'. */
 static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok close, scene_map_entry *e)
 {
 	diag_loc at = lang_peek(p)->loc;
+	if (b->tex) {
+		if (!pigment_body && lang_peek(p)->kind != LTK_KW_TEXTURE)
+			return lang_error_found(p, "expected a texture in the patterned texture's list");
+		return texture_entry(p, b, pigment_body ? close : LTK_RBRACE, e);
+	}
 	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
 		diag_loc open;
 		lang_advance(p);
@@ -234,7 +257,7 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 /* color_map = ( "color_map" | "colour_map" | "pigment_map" ) "{" map_entry { map_entry } "}" */
 static bool map_block(parser *p, pig_build *b, bool pigments)
 {
-	const char *what = !pigments ? "color_map" : b->normal ? "normal_map" : "pigment_map";
+	const char *what = !pigments ? "color_map" : b->tex ? "texture_map" : b->normal ? "normal_map" : "pigment_map";
 	if (b->pg.kind == SCENE_PAT_AVERAGE && !pigments)
 		return lang_error(p, lang_peek(p)->loc, "'average' takes a %s, not a color_map (as POV-Ray)",
 				  b->normal ? "normal_map" : "pigment_map");
@@ -271,7 +294,8 @@ static bool map_block(parser *p, pig_build *b, bool pigments)
 static bool block_list(parser *p, pig_build *b)
 {
 	int most = scene_pattern_blocks(b->pg.kind);
-	if (!starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT)
+	lang_tok first = b->tex ? LTK_KW_TEXTURE : LTK_KW_PIGMENT; /* a patterned texture lists textures */
+	if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first)
 		return true;
 	scene_map_entry *e = arena_zalloc(&p->sc->arena, (size_t)most, sizeof *e);
 	if (!e)
@@ -280,13 +304,13 @@ static bool block_list(parser *p, pig_build *b)
 	int n = 0;
 	do {
 		if (n == most)
-			return lang_error(p, lang_peek(p)->loc, "'%s' takes at most %d colours or pigments",
-					  scene_pattern_name(b->pg.kind), most);
+			return lang_error(p, lang_peek(p)->loc, "'%s' takes at most %d %s", scene_pattern_name(b->pg.kind),
+					  most, b->tex ? "textures" : "colours or pigments");
 		e[n].value = n;
 		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
 		n++;
 		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
-	} while (starts_colour(p) || lang_peek(p)->kind == LTK_KW_PIGMENT);
+	} while ((!b->tex && starts_colour(p)) || lang_peek(p)->kind == first);
 	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
 	return true;
 }
@@ -584,6 +608,11 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (*matched)
 		return true;
 	*matched = true;
+	if (b->tex && peek_word(p, "texture_map")) /* its entries are texture bodies */
+		return map_block(p, b, true);
+	if (b->tex && (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map")))
+		return lang_error(p, at, "a patterned texture takes a texture_map, not a %.*s", (int)lang_peek(p)->len,
+				  lang_peek(p)->text);
 	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map"))
 		return map_block(p, b, peek_word(p, "pigment_map"));
 	if (b->density && peek_word(p, "density_map")) /* its entries are density bodies, as a pigment_map's */
@@ -721,8 +750,8 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 		if (!matched) {
 			if (close == LTK_RBRACKET)
 				return lang_error_found(p, "expected a pattern modifier or ']' to close the map entry");
-			return lang_error_found(p, "expected a pattern modifier or '}' to close 'pigment' (opened at line %u)",
-						open.line);
+			return lang_error_found(p, "expected a pattern modifier or '}' to close '%s' (opened at line %u)",
+						b->tex ? "texture" : "pigment", open.line);
 		}
 	}
 }
@@ -834,4 +863,29 @@ bool lang_normal_value(parser *p, value *out)
 	TRY(lang_normal(p, m));
 	out->kind = VAL_NORMAL, out->mat = m;
 	return true;
+}
+
+/* ---- patterned textures ------------------------------------------------------------------------ */
+
+bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT; }
+
+bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
+			  const scene_material *const **mats, uint32_t *n)
+{
+	TRY(lang_enter(p, open));
+	pig_build *b = new_build(p, open);
+	bool ok = b != NULL;
+	if (ok) {
+		b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
+		b->tex = tex;
+		b->tex_mats = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *b->tex_mats);
+		ok = b->tex_mats ? body_in(p, b, close, open, pig) : lang_error(p, open, "out of memory");
+		*mats = b->tex_mats, *n = b->n_tex;
+		if (ok && !b->n_tex)
+			ok = lang_error(p, open, "a patterned texture needs its textures: a texture_map, or a list of "
+						 "texture { } after its block pattern");
+	}
+	mem_free(b);
+	lang_leave(p);
+	return ok;
 }

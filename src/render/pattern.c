@@ -802,13 +802,15 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		double total = 0.0;
 		for (uint32_t j = 0; j < k; j++) {
 			dvec3 vj = v;
-			perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
+			if (e[j].node >= 0)
+				perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
 			sum = d3_add(sum, d3_scale(vj, e[j].value));
 			total += e[j].value;
 		}
 		return total != 0.0 ? d3_scale(sum, 1.0 / total) : v;
 	}
-	double val = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
+	double raw = raw_eps(pg, n, q, eps);
+	double val = is_block(n->kind) ? raw : pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
 	uint32_t lo = 0, hi = 0;
 	double t = 0.0;
 	if (k > 1 && val >= e[k - 1].value) {
@@ -822,9 +824,11 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		t = span > 0.0 ? (val - e[lo].value) / span : 1.0;
 	}
 	dvec3 a = v, b = v;
-	perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
+	if (e[hi].node >= 0) /* an entry the build filled with a colour (a block list's default) is flat */
+		perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
 	if (lo != hi) {
-		perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
+		if (e[lo].node >= 0)
+			perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
 		b = d3_add(d3_scale(a, 1.0 - t), d3_scale(b, t));
 	}
 	double len = d3_length(b);
