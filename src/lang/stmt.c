@@ -877,6 +877,24 @@ static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok clos
 	return true;
 }
 
+/* A texture's uv_mapping: its pigment's and normal's patterns evaluated at the surface's <u, v, 0>
+ * (copies of their trees' roots; a plain colour has nothing to map). */
+static bool texture_uv_mapping(parser *p, scene_material *m, diag_loc at)
+{
+	const scene_pigment **trees[2] = {&m->pigment, &m->normal};
+	for (int i = 0; i < 2; i++) {
+		if (!*trees[i] || (*trees[i])->uv_mapping)
+			continue;
+		scene_pigment *c = arena_zalloc(&p->sc->arena, 1, sizeof *c);
+		if (!c)
+			return lang_error(p, at, "out of memory");
+		*c = **trees[i];
+		c->uv_mapping = true;
+		*trees[i] = c;
+	}
+	return true;
+}
+
 /* texture = "texture" "{" texture_body "}"
  * *fresh (may be NULL) tells whether the record is new, hence the caller's to modify. */
 static bool texture(parser *p, const scene_material **out, bool *fresh)
@@ -888,7 +906,7 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 	return texture_body(p, kw, open, LTK_RBRACE, out, fresh);
 }
 
-/* texture_body = [ identifier ] { pigment | finish | normal | transform_item } | pattern_texture
+/* texture_body = [ identifier ] { pigment | finish | normal | "uv_mapping" | transform_item } | pattern_texture
  * up to close ('}', or a texture_map entry's ']'). */
 static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, const scene_material **out,
 			 bool *fresh)
@@ -915,6 +933,7 @@ static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, 
 		return lang_error(p, kw, "'texture' needs a texture, but this one is a %s material",
 				  scene_material_kind_name(m->kind));
 	diag_loc moved = {0};
+	bool uv = false;
 	for (;;) {
 		lang_tok k = lang_peek(p)->kind;
 		bool matched;
@@ -926,14 +945,18 @@ static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, 
 			TRY(lang_normal(p, m));
 		else if (k == close)
 			break;
+		else if (lang_word_is(lang_peek(p), "uv_mapping")) /* POV-Ray's: the whole texture at <u, v, 0> */
+			lang_advance(p), uv = true;
 		else {
 			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
-				return bad_item(p, open, "texture", "pigment, normal, finish or a transform");
+				return bad_item(p, open, "texture", "pigment, normal, finish, uv_mapping or a transform");
 		}
 	}
 	lang_advance(p);
 	TRY(pattern_transform(p, m, moved, "texture"));
+	if (uv)
+		TRY(texture_uv_mapping(p, m, kw));
 	*out = m;
 	if (fresh)
 		*fresh = true;

@@ -9,3 +9,4 @@ sphere { 0, 1 texture { gradient y texture_map { [0 Dark] [0.5 pigment { rgb 1 }
 sphere { 0, 1 texture { average texture_map { [1 Dark] [3 Light] } } }
 #declare Tiles = texture { hexagon texture { Dark } texture { Light } texture { pigment { agate } } rotate x * 90 }
 box { -1, 1 texture { Tiles scale 2 } }
+sphere { 0, 1 texture { uv_mapping pigment { checker rgb 1 rgb 0 scale 0.1 } normal { bumps 0.2 } } } // the whole texture at <u, v, 0>
