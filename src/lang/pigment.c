@@ -499,6 +499,18 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
 		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &b->pg.child);
 	}
+	if (k == SCENE_PAT_MANDEL || k == SCENE_PAT_JULIA) { /* mandel N | julia <re, im>, N */
+		long it;
+		if (k == SCENE_PAT_JULIA) {
+			dvec3 c;
+			TRY(lang_vec3(p, "after 'julia'", &c));
+			b->pg.julia_c[0] = c.x, b->pg.julia_c[1] = c.y;
+			lang_accept(p, LTK_COMMA);
+		}
+		TRY(lang_int(p, "as the fractal's iterations limit", 1, 1000000, &it));
+		b->pg.fractal_iterations = (int)it;
+		return true;
+	}
 	if (k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2) {
 		long arms;
 		TRY(lang_int(p, "as the spiral's number of arms", -1000000, 1000000, &arms));
@@ -589,11 +601,44 @@ static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
 	}
 }
 
+/* The fractals' modifiers (POV-Ray's Parse_Pattern): "exterior" int [","] float (types 0 to 8) |
+ * "interior" int [","] float (0 to 6) | "exponent" 2 (the only one circe has); errors elsewhere. */
+static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
+{
+	const lang_token t = *lang_peek(p);
+	bool ext = lang_word_is(&t, "exterior"), in = lang_word_is(&t, "interior"), ex = lang_word_is(&t, "exponent");
+	if (!(*matched = ext || in || ex))
+		return true;
+	if (b->pg.kind != SCENE_PAT_MANDEL && b->pg.kind != SCENE_PAT_JULIA)
+		return lang_error(p, t.loc, "'%.*s' belongs to mandel and julia, not to %s", (int)t.len, t.text,
+				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+	lang_advance(p);
+	long type;
+	double f;
+	if (ex) {
+		TRY(lang_float(p, "after 'exponent'", &f));
+		if (f != 2.0)
+			return lang_error(p, t.loc, "a fractal's exponent other than 2 is not supported by circe, found %g", f);
+		return true;
+	}
+	TRY(lang_int(p, ext ? "as the exterior type" : "as the interior type", 0, ext ? 8 : 6, &type));
+	lang_accept(p, LTK_COMMA);
+	TRY(lang_float(p, "as the factor", &f));
+	if (ext && (type == 7 || type == 8) && !(f >= 1.0 && f < 4294967296.0))
+		return lang_error(p, t.loc, "exterior type %ld counts iterations modulo its factor: it must be >= 1, found %g",
+				  type, f);
+	if (ext)
+		b->pg.fractal_exterior = (int)type, b->pg.exterior_factor = f;
+	else
+		b->pg.fractal_interior = (int)type, b->pg.interior_factor = f;
+	return true;
+}
+
 /* pattern_modifier = color_map | pigment_map | "turbulence" ( float | vector ) | "octaves" int
  *   | "omega" float | "lambda" float | wave | "frequency" float | "phase" float | warp
  *   | "brick_size" vector | "mortar" float | "agate_turb" float | "control0" float
  *   | "control1" float | "quick_color" colour | "noise_generator" int | "uv_mapping" | transform_item
- *   | normal_map (a normal's) | crackle_modifier
+ *   | normal_map (a normal's) | crackle_modifier | fractal_modifier
  * *matched false when the lookahead is none. */
 static bool modifier(parser *p, pig_build *b, bool *matched)
 {
@@ -636,6 +681,8 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (b->normal && peek_word(p, "slope_map"))
 		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
 	TRY(crackle_modifier(p, b, matched));
+	if (!*matched)
+		TRY(fractal_modifier(p, b, matched));
 	if (*matched)
 		return true;
 	*matched = true;
