@@ -1480,7 +1480,20 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	case LTK_KW_STURM: /* POV-Ray's root solver for some shapes: a tessellated shape needs none */
 		lang_advance(p);
 		return true;
-	default: return lang_object_flag(p, &m->flags, matched);
+	default:
+		if (lang_word_is(&t, "interior_texture")) { /* read as a texture, then dropped */
+			const scene_material *inner;
+			lang_advance(p);
+			diag_loc open;
+			TRY(open_block(p, "interior_texture", &open));
+			TRY(texture_body(p, t.loc, open, LTK_RBRACE, &inner, NULL));
+			if (!(p->finish_warned & LANG_WARNED_INTERIOR_TEXTURE))
+				diag_warning(p->d, t.loc, "'interior_texture' is ignored: circe shows the object's texture on "
+							  "both sides of its surface (said once per scene)");
+			p->finish_warned |= LANG_WARNED_INTERIOR_TEXTURE;
+			return true;
+		}
+		return lang_object_flag(p, &m->flags, matched);
 	}
 }
 
