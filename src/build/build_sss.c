@@ -22,9 +22,11 @@ sss_method sss_method_of(const scene_material *m, const world_options *opt)
 	return s == SSS_METHOD_DEFAULT ? SSS_METHOD_CIRCLE : s;
 }
 
-/* The points a patterned pigment's mean is taken over: a Halton set in [-1, 1]^3 of the pattern's
- * object space (a pattern of POV-Ray's scale repeats within it; deterministic). */
+/* The points a patterned pigment's mean is taken over: a Halton set in [-POV_SSS_MEAN_HALF,
+ * POV_SSS_MEAN_HALF]^3 of the pattern's object space: patterns of POV-Ray's scales (1, or a few
+ * units as subsurface.pov's checker of 4) repeat many times within it; deterministic. */
 #define POV_SSS_MEAN_POINTS 1024
+#define POV_SSS_MEAN_HALF 10.0
 
 static double halton(uint32_t i, uint32_t base)
 {
@@ -45,7 +47,8 @@ static vec3 pov_sss_reflectance(const world *w, const world_material *wm, const 
 	if (wm->has_pattern) {
 		dvec3 sum = d3(0, 0, 0);
 		for (uint32_t i = 1; i <= POV_SSS_MEAN_POINTS; i++) {
-			dvec3 q = d3(2 * halton(i, 2) - 1, 2 * halton(i, 3) - 1, 2 * halton(i, 5) - 1);
+			dvec3 q = d3_scale(d3(2 * halton(i, 2) - 1, 2 * halton(i, 3) - 1, 2 * halton(i, 5) - 1),
+					   POV_SSS_MEAN_HALF);
 			float o[5];
 			pattern_eval(&w->patterns, wm->pattern, q, 0.0, o);
 			vec3 rgb = v3(o[0], o[1], o[2]);

@@ -180,7 +180,8 @@ typedef struct parser {
 	/* statements' state (stmt.c) */
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
-	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each */
+	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each
+				 * (and stmt.c's LANG_WARNED_INTERIOR_TEXTURE) */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
 	vecbuf datafiles; /* lang_datafile (datafile.c): every data file opened, open or not */
 	lang_token held; /* with has_held: the token after a #declare without ';', read again next */
@@ -337,6 +338,9 @@ bool lang_default(parser *p);
 /* ---- finish items and fog (finish.c) ---- */
 /* What a finish block remembers until it closes: the albedo forms of its highlights, which
  * POV-Ray applies with the exponents the block ends with. */
+/* parser.finish_warned's bit for stmt.c's interior_texture warning (finish.c's use the low ones). */
+#define LANG_WARNED_INTERIOR_TEXTURE (1u << 31)
+
 typedef struct lang_finish_state {
 	bool phong_albedo, specular_albedo;
 } lang_finish_state;

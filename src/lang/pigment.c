@@ -21,6 +21,10 @@ typedef struct pig_build {
 	int depth;   /* pigments around this one */
 	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
 	bool density; /* a media's density { }: its map may be written density_map */
+	/* A patterned texture's (lang_texture_pattern): the texture reader, and the entries' textures. */
+	lang_texture_fn tex;
+	const scene_material **tex_mats;
+	uint32_t n_tex;
 } pig_build;
 
 static bool body(parser *p, const scene_pigment *base, lang_tok close, diag_loc open, int depth, bool normal,
@@ -175,10 +179,29 @@ const scene_pigment *lang_pigment_moved(parser *p, const scene_pigment *pg, cons
 
 /* ---- maps and lists ------------------------------------------------------------------------ */
 
+/* A patterned texture's entry: a texture (`texture { }` in a list, a texture body up to ']' in a
+ * texture_map), kept in b->tex_mats; the entry's pigment is the texture's. */
+static bool texture_entry(parser *p, pig_build *b, lang_tok close, scene_map_entry *e)
+{
+	diag_loc at = lang_peek(p)->loc;
+	const scene_material *m;
+	TRY(b->tex(p, close, &m));
+	if (m->kind != MAT_TEXTURE)
+		return lang_error(p, at, "a patterned texture's entries are POV-Ray textures, but this one is a %s material",
+				  scene_material_kind_name(m->kind));
+	b->tex_mats[b->n_tex++] = m;
+	return (e->pigment = declared_tree(p, m, at)) != NULL;
+}
+
 /* An entry's colour, or pigment: "pigment" "{" body "}" or (in a pigment_map) a body up to ']'. */
 static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok close, scene_map_entry *e)
 {
 	diag_loc at = lang_peek(p)->loc;
+	if (b->tex) {
+		if (!pigment_body && lang_peek(p)->kind != LTK_KW_TEXTURE)
+			return lang_error_found(p, "expected a texture in the patterned texture's list");
+		return texture_entry(p, b, pigment_body ? close : LTK_RBRACE, e);
+	}
 	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
 		diag_loc open;
 		lang_advance(p);
@@ -198,9 +221,14 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e, uint32_t *n, const char *what)
 {
 	diag_loc open = lang_advance(p)->loc; /* '[' */
-	double v, v2;
+	double v = 1.0, v2;
 	bool two;
-	TRY(lang_float(p, "as the map entry's value", &v));
+	lang_tok k = lang_peek(p)->kind;
+	bool weight_follows = k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || k == LTK_PLUS ||
+			      peek_declared(p, VAL_FLOAT);
+	/* average's weight is optional, 1 when left out (POV-Ray's Parse_Blend_Map: Allow_Float(1.0)) */
+	if (b->pg.kind != SCENE_PAT_AVERAGE || weight_follows)
+		TRY(lang_float(p, "as the map entry's value", &v));
 	/* [v colour], [v, colour], or the old form [v1 v2 colour1 colour2] (commas optional) */
 	lang_accept(p, LTK_COMMA);
 	two = !pigments && !starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT && lang_peek(p)->kind != LTK_LT;
@@ -229,7 +257,10 @@ static bool map_entry(parser *p, pig_build *b, bool pigments, scene_map_entry *e
 /* color_map = ( "color_map" | "colour_map" | "pigment_map" ) "{" map_entry { map_entry } "}" */
 static bool map_block(parser *p, pig_build *b, bool pigments)
 {
-	const char *what = !pigments ? "color_map" : b->normal ? "normal_map" : "pigment_map";
+	const char *what = !pigments ? "color_map" : b->tex ? "texture_map" : b->normal ? "normal_map" : "pigment_map";
+	if (b->pg.kind == SCENE_PAT_AVERAGE && !pigments)
+		return lang_error(p, lang_peek(p)->loc, "'average' takes a %s, not a color_map (as POV-Ray)",
+				  b->normal ? "normal_map" : "pigment_map");
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
 	char ctx[32];
 	snprintf(ctx, sizeof ctx, "after '%s'", what);
@@ -263,7 +294,8 @@ static bool map_block(parser *p, pig_build *b, bool pigments)
 static bool block_list(parser *p, pig_build *b)
 {
 	int most = scene_pattern_blocks(b->pg.kind);
-	if (!starts_colour(p) && lang_peek(p)->kind != LTK_KW_PIGMENT)
+	lang_tok first = b->tex ? LTK_KW_TEXTURE : LTK_KW_PIGMENT; /* a patterned texture lists textures */
+	if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first)
 		return true;
 	scene_map_entry *e = arena_zalloc(&p->sc->arena, (size_t)most, sizeof *e);
 	if (!e)
@@ -272,13 +304,13 @@ static bool block_list(parser *p, pig_build *b)
 	int n = 0;
 	do {
 		if (n == most)
-			return lang_error(p, lang_peek(p)->loc, "'%s' takes at most %d colours or pigments",
-					  scene_pattern_name(b->pg.kind), most);
+			return lang_error(p, lang_peek(p)->loc, "'%s' takes at most %d %s", scene_pattern_name(b->pg.kind),
+					  most, b->tex ? "textures" : "colours or pigments");
 		e[n].value = n;
 		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
 		n++;
 		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
-	} while (starts_colour(p) || lang_peek(p)->kind == LTK_KW_PIGMENT);
+	} while ((!b->tex && starts_colour(p)) || lang_peek(p)->kind == first);
 	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
 	return true;
 }
@@ -468,6 +500,18 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
 		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &b->pg.child);
 	}
+	if (k == SCENE_PAT_MANDEL || k == SCENE_PAT_JULIA) { /* mandel N | julia <re, im>, N */
+		long it;
+		if (k == SCENE_PAT_JULIA) {
+			dvec3 c;
+			TRY(lang_vec3(p, "after 'julia'", &c));
+			b->pg.julia_c[0] = c.x, b->pg.julia_c[1] = c.y;
+			lang_accept(p, LTK_COMMA);
+		}
+		TRY(lang_int(p, "as the fractal's iterations limit", 1, 1000000, &it));
+		b->pg.fractal_iterations = (int)it;
+		return true;
+	}
 	if (k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2) {
 		long arms;
 		TRY(lang_int(p, "as the spiral's number of arms", -1000000, 1000000, &arms));
@@ -558,11 +602,44 @@ static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
 	}
 }
 
+/* The fractals' modifiers (POV-Ray's Parse_Pattern): "exterior" int [","] float (types 0 to 8) |
+ * "interior" int [","] float (0 to 6) | "exponent" 2 (the only one circe has); errors elsewhere. */
+static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
+{
+	const lang_token t = *lang_peek(p);
+	bool ext = lang_word_is(&t, "exterior"), in = lang_word_is(&t, "interior"), ex = lang_word_is(&t, "exponent");
+	if (!(*matched = ext || in || ex))
+		return true;
+	if (b->pg.kind != SCENE_PAT_MANDEL && b->pg.kind != SCENE_PAT_JULIA)
+		return lang_error(p, t.loc, "'%.*s' belongs to mandel and julia, not to %s", (int)t.len, t.text,
+				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+	lang_advance(p);
+	long type;
+	double f;
+	if (ex) {
+		TRY(lang_float(p, "after 'exponent'", &f));
+		if (f != 2.0)
+			return lang_error(p, t.loc, "a fractal's exponent other than 2 is not supported by circe, found %g", f);
+		return true;
+	}
+	TRY(lang_int(p, ext ? "as the exterior type" : "as the interior type", 0, ext ? 8 : 6, &type));
+	lang_accept(p, LTK_COMMA);
+	TRY(lang_float(p, "as the factor", &f));
+	if (ext && (type == 7 || type == 8) && !(f >= 1.0 && f < 4294967296.0))
+		return lang_error(p, t.loc, "exterior type %ld counts iterations modulo its factor: it must be >= 1, found %g",
+				  type, f);
+	if (ext)
+		b->pg.fractal_exterior = (int)type, b->pg.exterior_factor = f;
+	else
+		b->pg.fractal_interior = (int)type, b->pg.interior_factor = f;
+	return true;
+}
+
 /* pattern_modifier = color_map | pigment_map | "turbulence" ( float | vector ) | "octaves" int
  *   | "omega" float | "lambda" float | wave | "frequency" float | "phase" float | warp
  *   | "brick_size" vector | "mortar" float | "agate_turb" float | "control0" float
  *   | "control1" float | "quick_color" colour | "noise_generator" int | "uv_mapping" | transform_item
- *   | normal_map (a normal's) | crackle_modifier
+ *   | normal_map (a normal's) | crackle_modifier | fractal_modifier
  * *matched false when the lookahead is none. */
 static bool modifier(parser *p, pig_build *b, bool *matched)
 {
@@ -577,6 +654,11 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (*matched)
 		return true;
 	*matched = true;
+	if (b->tex && peek_word(p, "texture_map")) /* its entries are texture bodies */
+		return map_block(p, b, true);
+	if (b->tex && (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map")))
+		return lang_error(p, at, "a patterned texture takes a texture_map, not a %.*s", (int)lang_peek(p)->len,
+				  lang_peek(p)->text);
 	if (peek_word(p, "color_map") || peek_word(p, "colour_map") || peek_word(p, "pigment_map"))
 		return map_block(p, b, peek_word(p, "pigment_map"));
 	if (b->density && peek_word(p, "density_map")) /* its entries are density bodies, as a pigment_map's */
@@ -600,6 +682,8 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (b->normal && peek_word(p, "slope_map"))
 		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
 	TRY(crackle_modifier(p, b, matched));
+	if (!*matched)
+		TRY(fractal_modifier(p, b, matched));
 	if (*matched)
 		return true;
 	*matched = true;
@@ -686,7 +770,7 @@ static bool average_check(parser *p, const pig_build *b)
 		return true;
 	if (!b->pg.entries)
 		return lang_error(p, b->pg.loc, "'average' needs a %s: the entries it averages, weighted by their values",
-				  b->normal ? "normal_map" : "pigment_map or color_map");
+				  b->normal ? "normal_map" : "pigment_map");
 	double total = 0.0;
 	for (uint32_t i = 0; i < b->pg.n_entries; i++)
 		total += b->pg.entries[i].value;
@@ -714,8 +798,8 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 		if (!matched) {
 			if (close == LTK_RBRACKET)
 				return lang_error_found(p, "expected a pattern modifier or ']' to close the map entry");
-			return lang_error_found(p, "expected a pattern modifier or '}' to close 'pigment' (opened at line %u)",
-						open.line);
+			return lang_error_found(p, "expected a pattern modifier or '}' to close '%s' (opened at line %u)",
+						b->tex ? "texture" : "pigment", open.line);
 		}
 	}
 }
@@ -827,4 +911,29 @@ bool lang_normal_value(parser *p, value *out)
 	TRY(lang_normal(p, m));
 	out->kind = VAL_NORMAL, out->mat = m;
 	return true;
+}
+
+/* ---- patterned textures ------------------------------------------------------------------------ */
+
+bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT; }
+
+bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
+			  const scene_material *const **mats, uint32_t *n)
+{
+	TRY(lang_enter(p, open));
+	pig_build *b = new_build(p, open);
+	bool ok = b != NULL;
+	if (ok) {
+		b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
+		b->tex = tex;
+		b->tex_mats = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *b->tex_mats);
+		ok = b->tex_mats ? body_in(p, b, close, open, pig) : lang_error(p, open, "out of memory");
+		*mats = b->tex_mats, *n = b->n_tex;
+		if (ok && !b->n_tex)
+			ok = lang_error(p, open, "a patterned texture needs its textures: a texture_map, or a list of "
+						 "texture { } after its block pattern");
+	}
+	mem_free(b);
+	lang_leave(p);
+	return ok;
 }

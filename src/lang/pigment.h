@@ -41,6 +41,18 @@ bool lang_normal(parser *p, scene_material *m);
 /* A normal { } as a VAL_NORMAL value (for #declare). */
 bool lang_normal_value(parser *p, value *out);
 
+/* POV-Ray's patterned texture: `texture { PATTERN [texture { } ...] { pattern_modifier |
+ * texture_map { [v texture_body] ... } } }`. tex reads one entry's texture: `texture { ... }`
+ * when close is '}', a texture body up to ']' (consumed) when it is ']'. */
+typedef bool (*lang_texture_fn)(parser *p, lang_tok close, const scene_material **out);
+/* True when the lookahead is a pattern's word (a texture's body is then a patterned texture). */
+bool lang_texture_pattern_starts(parser *p);
+/* The rest of a patterned texture's body up to close (consumed), open its '{': *pig is the
+ * pattern whose entries are the entries' pigments (in the arena), mats[0..*n) the entries'
+ * textures in the order written (at least one). */
+bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
+			  const scene_material *const **mats, uint32_t *n);
+
 /* stmt.c's helpers pigment.c reads with: lang_asset_path (parser.h), and one transform item
  * composed after *t (*matched false when the lookahead is none). */
 bool lang_transform_item(parser *p, xform *t, bool *matched);

@@ -805,7 +805,104 @@ static const scene_material *declared_material(parser *p)
 	return v ? v->mat : NULL;
 }
 
-/* texture = "texture" "{" [ identifier ] { pigment | finish | transform_item } "}"
+static bool texture(parser *p, const scene_material **out, bool *fresh);
+static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, const scene_material **out,
+			 bool *fresh);
+
+/* lang_texture_fn for a patterned texture's entries: `texture { }`, or a body up to ']'. */
+static bool texture_entry(parser *p, lang_tok close, const scene_material **out)
+{
+	if (close == LTK_RBRACE)
+		return texture(p, out, NULL);
+	diag_loc at = lang_peek(p)->loc;
+	return texture_body(p, at, at, close, out, NULL);
+}
+
+/* Whether two textures light alike (their finish and normal): a patterned texture keeps its
+ * first entry's. */
+static bool same_finish(const scene_material *a, const scene_material *b)
+{
+	const scene_finish *f = &a->finish, *g = &b->finish;
+	return a->diffuse == b->diffuse && a->specular == b->specular && a->roughness == b->roughness &&
+	       f->phong == g->phong && f->phong_size == g->phong_size && f->metallic == g->metallic &&
+	       !memcmp(&f->refl_min, &g->refl_min, sizeof f->refl_min) &&
+	       !memcmp(&f->refl_max, &g->refl_max, sizeof f->refl_max) && f->refl_fresnel == g->refl_fresnel &&
+	       f->has_ambient == g->has_ambient && !memcmp(&f->ambient, &g->ambient, sizeof f->ambient) &&
+	       f->subsurface == g->subsurface && !memcmp(&f->translucency_mm, &g->translucency_mm, sizeof f->translucency_mm);
+}
+
+/* The normal of a patterned texture whose entries have normals: the same pattern (its
+ * parameters, warps, transforms) with a normal_map of the entries' normals (render/pattern.c's
+ * normal_map), an entry without one leaving the normal as it is. */
+static bool pattern_texture_normal(parser *p, const scene_pigment *pig, const scene_material *const *mats,
+				   uint32_t n, const scene_pigment **out)
+{
+	*out = NULL;
+	bool any = false;
+	for (uint32_t i = 0; i < n; i++)
+		any = any || mats[i]->normal;
+	if (!any)
+		return true;
+	scene_pigment *nrm = arena_zalloc(&p->sc->arena, 1, sizeof *nrm);
+	scene_pigment *flat = arena_zalloc(&p->sc->arena, 1, sizeof *flat);
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, n, sizeof *e);
+	if (!nrm || !flat || !e)
+		return lang_error(p, pig->loc, "out of memory");
+	*flat = scene_pigment_defaults(SCENE_PAT_PLAIN, pig->loc);
+	flat->is_normal = true;
+	for (uint32_t i = 0; i < n && i < pig->n_entries; i++)
+		e[i] = (scene_map_entry){.value = pig->entries[i].value, .pigment = mats[i]->normal ? mats[i]->normal : flat};
+	*nrm = *pig;
+	nrm->entries = e, nrm->n_entries = n < pig->n_entries ? n : pig->n_entries, nrm->is_normal = true;
+	*out = nrm;
+	return true;
+}
+
+/* pattern_texture = pattern [ "texture" "{" texture_body "}" { [ "," ] ... } ]
+ *                   { pattern_modifier | "texture_map" "{" { "[" float texture_body "]" } "}" }
+ * POV-Ray's patterned texture (its pattern's value picks or blends the entries' textures). circe
+ * blends the entries' pigments by the pattern (each evaluated where the surface is, SSS entry
+ * points too) and their normals when they have any (as a normal_map); the finish is the first
+ * entry's, warned about when the entries' finishes differ (doc/language.md "Layered textures"). */
+static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok close, const scene_material **out)
+{
+	const scene_pigment *pig;
+	const scene_material *const *mats;
+	uint32_t n;
+	TRY(lang_texture_pattern(p, open, close, texture_entry, &pig, &mats, &n));
+	scene_material *m = copy_material(p, mats[0], kw);
+	TRY(m);
+	m->pigment = pig, m->image = NULL, m->filter = m->transmit = 0.0f;
+	TRY(pattern_texture_normal(p, pig, mats, n, &m->normal));
+	for (uint32_t i = 1; i < n; i++)
+		if (!same_finish(mats[0], mats[i])) {
+			diag_warning(p->d, kw, "the textures of this pattern differ in their finish: circe lights them all "
+					       "with the first one's (the pigments and normals follow the pattern)");
+			break;
+		}
+	*out = m;
+	return true;
+}
+
+/* A texture's uv_mapping: its pigment's and normal's patterns evaluated at the surface's <u, v, 0>
+ * (copies of their trees' roots; a plain colour has nothing to map). */
+static bool texture_uv_mapping(parser *p, scene_material *m, diag_loc at)
+{
+	const scene_pigment **trees[2] = {&m->pigment, &m->normal};
+	for (int i = 0; i < 2; i++) {
+		if (!*trees[i] || (*trees[i])->uv_mapping)
+			continue;
+		scene_pigment *c = arena_zalloc(&p->sc->arena, 1, sizeof *c);
+		if (!c)
+			return lang_error(p, at, "out of memory");
+		*c = **trees[i];
+		c->uv_mapping = true;
+		*trees[i] = c;
+	}
+	return true;
+}
+
+/* texture = "texture" "{" texture_body "}"
  * *fresh (may be NULL) tells whether the record is new, hence the caller's to modify. */
 static bool texture(parser *p, const scene_material **out, bool *fresh)
 {
@@ -813,10 +910,26 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 		*fresh = false;
 	diag_loc kw = lang_advance(p)->loc, open;
 	TRY(open_block(p, "texture", &open));
+	return texture_body(p, kw, open, LTK_RBRACE, out, fresh);
+}
+
+/* texture_body = [ identifier ] { pigment | finish | normal | "uv_mapping" | transform_item } | pattern_texture
+ * up to close ('}', or a texture_map entry's ']'). */
+static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, const scene_material **out,
+			 bool *fresh)
+{
+	if (fresh)
+		*fresh = false;
+	if (lang_texture_pattern_starts(p)) {
+		TRY(pattern_texture(p, kw, open, close, out));
+		if (fresh)
+			*fresh = true;
+		return true;
+	}
 	const scene_material *base = NULL;
 	if (lang_peek(p)->kind == LTK_IDENT)
 		TRY(base = declared_material(p));
-	if (base && lang_peek(p)->kind == LTK_RBRACE) {
+	if (base && lang_peek(p)->kind == close) {
 		lang_advance(p);
 		*out = base;
 		return true;
@@ -827,6 +940,7 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 		return lang_error(p, kw, "'texture' needs a texture, but this one is a %s material",
 				  scene_material_kind_name(m->kind));
 	diag_loc moved = {0};
+	bool uv = false;
 	for (;;) {
 		lang_tok k = lang_peek(p)->kind;
 		bool matched;
@@ -836,18 +950,22 @@ static bool texture(parser *p, const scene_material **out, bool *fresh)
 			TRY(finish(p, m));
 		else if (lang_normal_starts(p))
 			TRY(lang_normal(p, m));
-		else if (k == LTK_RBRACE)
+		else if (k == close)
 			break;
 		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern (a keyword of circe's for objects) */
 			return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
+		else if (lang_word_is(lang_peek(p), "uv_mapping")) /* POV-Ray's: the whole texture at <u, v, 0> */
+			lang_advance(p), uv = true;
 		else {
 			TRY(pattern_transform_item(p, m, &moved, &matched));
 			if (!matched)
-				return bad_item(p, open, "texture", "pigment, normal, finish or a transform");
+				return bad_item(p, open, "texture", "pigment, normal, finish, uv_mapping or a transform");
 		}
 	}
 	lang_advance(p);
 	TRY(pattern_transform(p, m, moved, "texture"));
+	if (uv)
+		TRY(texture_uv_mapping(p, m, kw));
 	*out = m;
 	if (fresh)
 		*fresh = true;
@@ -1385,7 +1503,20 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	case LTK_KW_STURM: /* POV-Ray's root solver for some shapes: a tessellated shape needs none */
 		lang_advance(p);
 		return true;
-	default: return lang_object_flag(p, &m->flags, matched);
+	default:
+		if (lang_word_is(&t, "interior_texture")) { /* read as a texture, then dropped */
+			const scene_material *inner;
+			lang_advance(p);
+			diag_loc open;
+			TRY(open_block(p, "interior_texture", &open));
+			TRY(texture_body(p, t.loc, open, LTK_RBRACE, &inner, NULL));
+			if (!(p->finish_warned & LANG_WARNED_INTERIOR_TEXTURE))
+				diag_warning(p->d, t.loc, "'interior_texture' is ignored: circe shows the object's texture on "
+							  "both sides of its surface (said once per scene)");
+			p->finish_warned |= LANG_WARNED_INTERIOR_TEXTURE;
+			return true;
+		}
+		return lang_object_flag(p, &m->flags, matched);
 	}
 }
 

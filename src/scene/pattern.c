@@ -161,6 +161,61 @@ static double crackle(dvec3 p, const pattern_node *n)
 	return clamp01(f.x * r[0] + f.y * r[1] + f.z * r[2]);
 }
 
+/* POV-Ray 3.7's FractalPattern::ExteriorColour and InteriorColour: what a point that escapes
+ * after `iters` iterations at z = a + bi, or one that never does (mindist2: the least |z|^2 on
+ * its orbit), is worth, by the pattern's types and factors. */
+static double fractal_exterior(const pattern_node *n, int iters, double a, double b)
+{
+	double f = n->exterior_factor;
+	switch (n->fractal_exterior) {
+	case 0: return f;
+	case 1: return (double)iters / n->fractal_iterations;
+	case 2: return a * f;
+	case 3: return b * f;
+	case 4: return a * a * f;
+	case 5: return b * b * f;
+	case 6: return sqrt(a * a + b * b) * f;
+	case 7: return f >= 1.0 ? (double)(iters % (unsigned)f) / f : 0.0; /* the parser keeps f >= 1 */
+	case 8: return f > 0.0 ? (double)(iters % (unsigned)(1.0 + f)) / f : 0.0;
+	default: return 0.0;
+	}
+}
+
+static double fractal_interior(const pattern_node *n, double a, double b, double mindist2)
+{
+	double f = n->interior_factor;
+	switch (n->fractal_interior) {
+	case 0: return f;
+	case 1: return sqrt(mindist2) * f;
+	case 2: return a * f;
+	case 3: return b * f;
+	case 4: return a * a * f;
+	case 5: return b * b * f;
+	case 6: return a * a + b * b * f; /* POV-Ray's own precedence, kept */
+	default: return 0.0;
+	}
+}
+
+/* Mandel2Pattern and JuliaPattern::EvaluateRaw: z <- z^2 + c from z = c = <x, y> (mandel) or from
+ * z = <x, y> with the pattern's c (julia), until |z|^2 > 4 or the iterations limit. */
+static double fractal(const pattern_node *n, dvec3 p)
+{
+	double a = p.x, b = p.y, cr = p.x, ci = p.y;
+	if (n->kind == PATTERN_JULIA)
+		cr = n->julia_c[0], ci = n->julia_c[1];
+	double a2 = a * a, b2 = b * b, mindist2 = a2 + b2;
+	for (int it = 0; it < n->fractal_iterations; it++) {
+		b = 2.0 * a * b + ci;
+		a = a2 - b2 + cr;
+		a2 = a * a, b2 = b * b;
+		double d2 = a2 + b2;
+		mindist2 = fmin(mindist2, d2);
+		if (d2 > 4.0)
+			return fractal_exterior(n, it, a, b);
+	}
+	return fractal_interior(n, a, b, mindist2);
+}
+
 /* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
  * <i, 0, 0>; circe draws it from the cell hash) and its frequency from POV-Ray's own generator
  * (noise.cpp's Initialize_Waves, its seed and constants). */
@@ -333,6 +388,8 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
 					1.0);
 	case PATTERN_CRACKLE: return crackle(p, n);
+	case PATTERN_MANDEL:
+	case PATTERN_JULIA: return fractal(n, p);
 	case PATTERN_SPIRAL1:
 	case PATTERN_SPIRAL2: {
 		double rad = sqrt(p.x * p.x + p.y * p.y);
@@ -650,6 +707,7 @@ pattern_node pattern_node_default(pattern_kind kind)
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
 			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
 			  .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
+			  .fractal_iterations = 1, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2
@@ -678,6 +736,9 @@ int pattern_default_map(pattern_kind kind, pattern_entry out[6])
 	static const double radial[4][4] = {{0.0, 0, 1, 1}, {0.333, 1, 1, 0}, {0.666, 1, 0, 1}, {1.0, 0, 1, 1}};
 	static const double wood[2][4] = {{0.6, 0.666, 0.312, 0.2}, {0.6, 0.4, 0.1333, 0.066}};
 	static const double gray[2][4] = {{0.0, 0, 0, 0}, {1.0, 1, 1, 1}};
+	/* POV-Ray's gaDefaultBlendMapEntries_Mandel */
+	static const double mandel[5][4] = {{0.001, 0, 0, 0}, {0.001, 0, 1, 1}, {0.012, 1, 1, 0}, {0.015, 1, 0, 1},
+					    {0.1, 0, 1, 1}};
 	const double(*t)[4] = gray;
 	int n = 2;
 	switch (kind) {
@@ -689,6 +750,7 @@ int pattern_default_map(pattern_kind kind, pattern_entry out[6])
 	case PATTERN_MARBLE: t = marble, n = 3; break;
 	case PATTERN_RADIAL: t = radial, n = 4; break;
 	case PATTERN_WOOD: t = wood, n = 2; break;
+	case PATTERN_MANDEL: t = mandel, n = 5; break;
 	default: break;
 	}
 	for (int i = 0; i < n; i++)
@@ -808,13 +870,15 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		double total = 0.0;
 		for (uint32_t j = 0; j < k; j++) {
 			dvec3 vj = v;
-			perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
+			if (e[j].node >= 0)
+				perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
 			sum = d3_add(sum, d3_scale(vj, e[j].value));
 			total += e[j].value;
 		}
 		return total != 0.0 ? d3_scale(sum, 1.0 / total) : v;
 	}
-	double val = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
+	double raw = raw_eps(pg, n, q, eps);
+	double val = is_block(n->kind) ? raw : pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
 	uint32_t lo = 0, hi = 0;
 	double t = 0.0;
 	if (k > 1 && val >= e[k - 1].value) {
@@ -828,9 +892,11 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		t = span > 0.0 ? (val - e[lo].value) / span : 1.0;
 	}
 	dvec3 a = v, b = v;
-	perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
+	if (e[hi].node >= 0) /* an entry the build filled with a colour (a block list's default) is flat */
+		perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
 	if (lo != hi) {
-		perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
+		if (e[lo].node >= 0)
+			perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
 		b = d3_add(d3_scale(a, 1.0 - t), d3_scale(b, t));
 	}
 	double len = d3_length(b);

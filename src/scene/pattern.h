@@ -41,6 +41,7 @@ typedef enum pattern_kind {
 	PATTERN_LAYERS, /* a layered texture's pigments (its entries, bottom first), composited by the
 			 * upper layers' filter and transmit */
 	PATTERN_AVERAGE, /* its entries' colours (or normals) averaged, each weighted by its value */
+	PATTERN_MANDEL, PATTERN_JULIA, /* POV-Ray's fractals of z^2 + c in the x-y plane */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -96,6 +97,10 @@ typedef struct pattern_node {
 	bool solid;	   /* crackle solid: the noise at the nearest feature point */
 	dvec3 crackle_form; /* crackle: weights of the three nearest distances (default <-1, 1, 0>) */
 	double crackle_metric, crackle_offset; /* crackle: the distance's exponent (2), its offset (0) */
+	int fractal_iterations;		       /* mandel, julia: the iterations limit */
+	double julia_c[2];		       /* julia's c */
+	int fractal_exterior, fractal_interior; /* POV-Ray's exterior and interior types */
+	double exterior_factor, interior_factor;
 	double agate_turb; /* agate */
 	pattern_wave wave;
 	double frequency, phase, exponent;

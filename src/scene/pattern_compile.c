@@ -55,6 +55,9 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.vector = pg->vector, n.mortar = pg->mortar, n.control0 = pg->control0, n.control1 = pg->control1;
 	n.arms = pg->arms, n.agate_turb = pg->agate_turb, n.solid = pg->solid;
 	n.crackle_form = pg->crackle_form, n.crackle_metric = pg->crackle_metric, n.crackle_offset = pg->crackle_offset;
+	n.fractal_iterations = pg->fractal_iterations, n.julia_c[0] = pg->julia_c[0], n.julia_c[1] = pg->julia_c[1];
+	n.fractal_exterior = pg->fractal_exterior, n.fractal_interior = pg->fractal_interior;
+	n.exterior_factor = pg->exterior_factor, n.interior_factor = pg->interior_factor;
 	n.bump_amount = pg->bump_amount, n.accuracy = pg->accuracy;
 	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;
 	n.turb = (pattern_turb){pg->turb.amount, pg->turb.octaves, pg->turb.omega, pg->turb.lambda};

@@ -34,7 +34,8 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 	scene_pigment p = {.loc = loc, .kind = k, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0),
 			   .bump_amount = 0.5, .accuracy = 0.02, .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
 			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0},
-			   .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0};
+			   .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
+			   .fractal_iterations = 1, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0};
 	if (k == SCENE_PAT_MARBLE || k == SCENE_PAT_WOOD || k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2)
 		p.wave = SCENE_WAVE_TRIANGLE;
 	if (k == SCENE_PAT_QUILTED)
@@ -76,6 +77,10 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA)
+			fprintf(o, " c <%g, %g> iterations %d exterior %d %g interior %d %g", pg->julia_c[0], pg->julia_c[1],
+				pg->fractal_iterations, pg->fractal_exterior, pg->exterior_factor, pg->fractal_interior,
+				pg->interior_factor);
 	}
 	if (pg->turb.amount.x != 0.0 || pg->turb.amount.y != 0.0 || pg->turb.amount.z != 0.0)
 		fprintf(o, " turbulence <%g, %g, %g> octaves %d omega %g lambda %g", pg->turb.amount.x, pg->turb.amount.y,

@@ -25,7 +25,8 @@
 	X(CRACKLE, "crackle") X(CELLS, "cells") X(SPIRAL1, "spiral1") X(SPIRAL2, "spiral2")         \
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
-	X(LAYERS, "(layers)") X(AVERAGE, "average")
+	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
+	X(MANDEL, "mandel") X(JULIA, "julia")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -101,6 +102,10 @@ typedef struct scene_pigment {
 	dvec3 crackle_form;	     /* crackle's form: weights of the 3 nearest distances, <-1, 1, 0> */
 	double crackle_metric;	     /* crackle's metric: the exponent of its distance, 2 */
 	double crackle_offset;	     /* crackle's offset: added to each distance (in the metric), 0 */
+	int fractal_iterations;	     /* mandel, julia: the iterations limit, >= 1 */
+	double julia_c[2];	     /* julia: the constant c = <re, im> */
+	int fractal_exterior, fractal_interior; /* POV-Ray's types: 1 and 0 */
+	double exterior_factor, interior_factor; /* 1 and 1 */
 	scene_wave wave;
 	double frequency, phase, exponent;
 	scene_turb turb; /* the pigment's own `turbulence` (classic) */

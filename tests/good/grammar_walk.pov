@@ -193,5 +193,9 @@ sphere { 0, 1 texture { Layered } texture { pigment { rgbf <0, 1, 0, 0.5> } } }
 difference { intersection { sphere { 0, 1 } box { -1, 1 } } merge { cylinder { -x, x, 0.2 } plane { y, 0 inverse } } clipped_by { box { -2, 2 } } bounded_by { box { -2, 2 } } }
 // rule: subsurface_settings
 global_settings { subsurface { radiosity off } }
-// rule: normal_map, normal_entry, crackle_item
+// rule: normal_map, normal_entry, pattern_item
 sphere { 0, 1 pigment { crackle form <1, 0, 0> metric 1 offset 0.1 solid } normal { average normal_map { [1 bumps 0.5] [2 gradient x, 0.3 scale 2] } } }
+sphere { 0, 1 pigment { julia <0, 1>, 10 exterior 2, 1 interior 1, 0.5 exponent 2 } }
+// rule: texture_body, pattern_texture, texture_map
+sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } normal { bumps 0.2 } } scale 2 } }
+sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }

@@ -501,10 +501,33 @@ static void check_normal_map(void)
 	      want.x, want.y, want.z);
 }
 
+/* mandel and julia (POV-Ray 3.7 Mandel2Pattern, JuliaPattern, FractalPattern's Exterior/
+ * InteriorColour) at points traced by hand: z <- z^2 + c until |z|^2 > 4. */
+static void check_fractals(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_MANDEL);
+	n.fractal_iterations = 10;
+	CHECK_NEAR(pattern_raw(&n, d3(0, 0, 5)), 1.0, 0);	 /* z stays 0: interior type 0, factor 1 */
+	CHECK_NEAR(pattern_raw(&n, d3(2, 0, 0)), 0.0, 0);	 /* z1 = 6: escapes at iteration 0 */
+	CHECK_NEAR(pattern_raw(&n, d3(1, 0, 0)), 0.1, 1e-15); /* z1 = 2 (|z|^2 = 4 stays), z2 = 5: 1 / 10 */
+	n.fractal_exterior = 6, n.exterior_factor = 0.5;	 /* |z| at escape, times 0.5 */
+	CHECK_NEAR(pattern_raw(&n, d3(1, 0, 0)), 2.5, 1e-15);
+	n.fractal_interior = 1, n.interior_factor = 2;	 /* -1 -> 0 -> -1 ...: the least |z| is 0 */
+	CHECK_NEAR(pattern_raw(&n, d3(-1, 0, 0)), 0.0, 0);
+	pattern_node j = pattern_node_default(PATTERN_JULIA);
+	j.fractal_iterations = 8, j.julia_c[0] = 0, j.julia_c[1] = 0;
+	CHECK_NEAR(pattern_raw(&j, d3(0.5, 0, 0)), 1.0, 0);	  /* 0.5 -> 0.25 -> ...: never escapes */
+	CHECK_NEAR(pattern_raw(&j, d3(0, 1.5, 0)), 0.0, 0);	  /* z1 = -2.25: escapes at iteration 0 */
+	j.julia_c[0] = -1, j.julia_c[1] = 0;
+	CHECK_NEAR(pattern_raw(&j, d3(1.7, 0, 0)), 1.0 / 8, 1e-15); /* 1.89 (|z|^2 3.57), then 2.5721: 1 / 8 */
+	CHECK_NEAR(pattern_raw(&j, d3(1.5, 0, 0)), 1.0, 0);	    /* 1.25, 0.5625, -0.684, ...: stays */
+}
+
 int main(void)
 {
 	check_normals();
 	check_crackle();
+	check_fractals();
 	check_average();
 	check_normal_map();
 	check_tolerance();

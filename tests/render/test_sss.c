@@ -431,6 +431,24 @@ static void test_pov_subsurface(void)
 	render(off, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &b);
 	CHECK(b.circles == 0 && fabs(b.mean - expect) <= 1e-4 * expect,
 	      "without global subsurface: %lu circles, mean %.9g, expected %.9g (Lambert)", b.circles, b.mean, expect);
+	/* A checker of pigments 0.75 and 0.25 in cells far larger than the profile: the medium is
+	 * derived at the pigment's mean and each entry weighed by its own pigment / mean, so a pixel
+	 * whose circles stay in one cell shows that cell's albedo (0.6, 0.2) exactly, and the pixels
+	 * near the cells' edges lie between the two. */
+	snprintf(on, sizeof on,
+		 "global_settings { subsurface { } }\n" SLAB_LIGHT
+		 "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { checker rgb 0.75 rgb 0.25 scale 3 translate "
+		 "<1.5, 0, 1.5> } finish { diffuse 0.8 subsurface { translucency 1.5 } } } interior { ior 1 } }\n");
+	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
+	double hi = expect, lo = expect / 3.0;
+	int n_hi = 0, n_lo = 0, outside = 0;
+	for (int i = 0; i < W * H; i++) {
+		n_hi += fabs(a.px[i] - hi) <= 1e-4 * hi;
+		n_lo += fabs(a.px[i] - lo) <= 1e-4 * lo;
+		outside += a.px[i] < lo * (1 - 1e-4) || a.px[i] > hi * (1 + 1e-4);
+	}
+	CHECK(n_hi > W * H / 8 && n_lo > W * H / 8 && outside == 0,
+	      "checker slab: %d pixels at %.6g, %d at %.6g, %d outside them (of %d)", n_hi, hi, n_lo, lo, outside, W * H);
 }
 
 /* auto on a slab thick against the profile (50 units of 10 mm against wax's 3 mm: 167 l_d) is
