@@ -2431,7 +2431,7 @@ static bool declare_part(parser *p, value *out, lang_tok k)
 }
 
 static bool camera_block(parser *p, scene_camera *c, diag_loc kw);
-static bool light_block(parser *p, scene_light *out, diag_loc kw);
+static bool light_block(parser *p, scene_light *out, diag_loc kw, vecbuf *looks);
 
 /* A declared camera, light_source or transform: its IR record, in the arena. */
 static bool declare_record(parser *p, value *out, lang_tok k)
@@ -2452,7 +2452,7 @@ static bool declare_record(parser *p, value *out, lang_tok k)
 		return camera_block(p, r, kw.loc);
 	}
 	out->kind = VAL_LIGHT, out->light = r;
-	return light_block(p, r, kw.loc);
+	return light_block(p, r, kw.loc, NULL);
 }
 
 static bool declare_sky(parser *p, value *out);
@@ -3126,15 +3126,37 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
 	return true;
 }
 
+static void give_default(parser *p, size_t start);
+
+/* "looks_like" "{" object_item "}" (the lookahead is looks_like): the object into *looks. */
+static bool looks_like(parser *p, vecbuf *looks, bool *has, const lang_token *kw)
+{
+	if (!looks)
+		return lang_error(p, kw->loc, "'looks_like' in a declared light_source is not supported by circe: give it "
+					      "where the light is placed");
+	if (*has)
+		return lang_error(p, kw->loc, "a light_source takes one looks_like (as POV-Ray)");
+	*has = true;
+	lang_advance(p);
+	diag_loc open;
+	TRY(open_block(p, "looks_like", &open));
+	/* as object { }: a declared object or an object, then modifiers (POV-Ray's Parse_Object_Mods) */
+	return instance(p, looks, kw->loc, open);
+}
+
 /* light_source = "light_source" "{" ( identifier | vector [ "," colour ] ) { colour
  *                | "intensity" float | "radius" float | "spotlight" | "cylinder" | "parallel"
  *                | "point_at" vector | "falloff" float | "tightness" float | "fade_distance" float
  *                | "fade_power" float | "shadowless"
  *                | "area_light" vector "," vector "," float "," float | "jitter" | "circular"
  *                | "orient" | "adaptive" float | transform_item } "}"
+ *                | "looks_like" "{" object_item "}"
  * Into *out, the keyword consumed (at kw). A float colour is grey (`<0, 9, 0>, 1`). A transform
- * moves the position and point_at given before it, and turns the area axes, as in POV-Ray. */
-static bool light_block(parser *p, scene_light *out, diag_loc kw)
+ * moves the position and point_at given before it, and turns the area axes, as in POV-Ray.
+ * looks_like's object (POV-Ray's Parse_Light_Source) is moved to the light's position as it stands
+ * then and by the light's transforms after it, and made no_shadow, into *looks (NULL: a declared
+ * light, where circe refuses it). */
+static bool light_block(parser *p, scene_light *out, diag_loc kw, vecbuf *looks)
 {
 	diag_loc open;
 	TRY(open_block(p, "light_source", &open));
@@ -3144,6 +3166,9 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 	diag_loc point_at_loc = kw, falloff_loc = kw;
 	light_seen seen = {0};
 	TRY(light_head(p, &l, kw, &point_at));
+	size_t n_looks = looks ? looks->len : 0; /* looks_like's objects: looks[n_looks..] */
+	bool has_looks = false;
+	xform looks_xf = xform_identity();
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		double x;
@@ -3151,10 +3176,16 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			TRY(light_colour(p, &l.color));
 			continue;
 		}
+		if (lang_word_is(&t, "looks_like")) {
+			TRY(looks_like(p, looks, &has_looks, &t));
+			looks_xf = xform_translate(l.position);
+			continue;
+		}
 		xform moved = xform_identity();
 		bool matched;
 		TRY(transform_item(p, &moved, &matched));
 		if (matched) {
+			looks_xf = xform_then(looks_xf, moved);
 			l.position = xform_point(&moved, l.position);
 			l.point_at = xform_point(&moved, l.point_at);
 			l.axis1 = xform_vector(&moved, l.axis1);
@@ -3167,6 +3198,11 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			lang_advance(p);
 			TRY(light_close(p, &l, kw, point_at ? &point_at_loc : NULL, falloff ? &falloff_loc : NULL) &&
 			    light_pov_checks(p, &l, &seen));
+			for (size_t i = n_looks; has_looks && i < looks->len; i++) {
+				scene_object *o = (scene_object *)looks->data + i;
+				o->transform = xform_then(o->transform, looks_xf);
+				o->no_shadow = true; /* POV-Ray's implied no_shadow: the light must get out */
+			}
 			*out = l;
 			return true;
 		case LTK_KW_INTENSITY:
@@ -3235,7 +3271,9 @@ static bool light_source(parser *p)
 {
 	lang_token kw = *lang_advance(p);
 	scene_light l;
-	TRY(light_block(p, &l, kw.loc));
+	size_t start = p->sc->objects.len;
+	TRY(light_block(p, &l, kw.loc, &p->sc->objects));
+	give_default(p, start);
 	if (!vecbuf_push(&p->sc->lights, &l))
 		return lang_error(p, kw.loc, "out of memory");
 	return true;
