@@ -131,8 +131,9 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
 	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
-	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL ||
-		      (sm->pov_sss && sm->image != NULL);
+	/* A POV-Ray subsurface texture's weight is always its entry's b->diffuse / albedo: its
+	 * pigment there, and the finish's scale that keeps the lobes and the BSSRDF within 1. */
+	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL || sm->pov_sss;
 	w->sss_of[k] = r;
 	w->has_sss = true;
 	return true;

@@ -66,13 +66,14 @@ void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 	b->pigment = v3_min(v3_max(pigment, v3s(0.0f)), v3s(1.0f));
 	/* The largest the lobes can reflect in any channel: every tint is at most 1. */
 	float hl = f->specular * bsdf_pov_blinn_weight(spec_n(f)) + f->phong * bsdf_pov_blinn_weight(phong_n(f));
-	vec3 sum = v3_add(v3_scale(b->pigment, f->diffuse), v3s(hl));
+	/* The diffuse term: the Lambert lobe's Kd, or a subsurface texture's (its BSSRDF's albedo,
+	 * scaled with the lobes so that the whole still reflects at most 1). */
+	float kd = f->sss_diffuse > 0.0f ? f->sss_diffuse : f->diffuse;
+	vec3 sum = v3_add(v3_scale(b->pigment, kd), v3s(hl));
 	sum = v3_add(sum, v3_max(f->refl_min, f->refl_max));
 	float m = v3_max_comp(sum);
 	b->pov_scale = m > 1.0f ? 1.0f / m : 1.0f;
-	/* The diffuse albedo: the Lambert lobe's, or what a subsurface texture's BSSRDF reflects. */
-	b->diffuse = f->sss_diffuse > 0.0f ? v3_scale(b->pigment, fminf(f->sss_diffuse, 1.0f))
-					   : v3_scale(b->pigment, f->diffuse * b->pov_scale);
+	b->diffuse = v3_scale(b->pigment, kd * b->pov_scale);
 	b->emit = v3_mul(f->glow, b->pigment);
 }
 

@@ -155,6 +155,24 @@ static void test_pov_finish(long n)
 	bsdf_params rc = bsdf_pov(&f, v3(0.8f, 0.5f, 0.2f));
 	vec3 a = v3_normalize(v3(0.3f, -0.2f, 0.8f)), b = v3_normalize(v3(-0.5f, 0.1f, 0.4f));
 	CHECK_NEAR(bsdf_eval(&rc, a, b).y, bsdf_eval(&rc, b, a).y, 1e-6);
+	/* A POV-Ray subsurface texture (sss_diffuse): no Lambert lobe (the highlight alone remains),
+	 * and b->diffuse, the BSSRDF's albedo, scaled with the lobes so that BSSRDF + highlight +
+	 * reflection stay within 1 (white pigment, Kd 1, specular 0.6, reflection 0.3). */
+	f = pov_spec(0.0f, 0.6f, 0.1f, 0.0f, 40.0f);
+	f.refl_min = f.refl_max = v3s(0.3f);
+	bsdf_params hl = bsdf_pov(&f, v3s(1.0f));
+	f.sss_diffuse = 1.0f;
+	bsdf_params ss = bsdf_pov(&f, v3s(1.0f));
+	float hlw = 0.6f * bsdf_pov_blinn_weight(10.0f);
+	CHECK_NEAR(ss.diffuse.x, 1.0 / (1.0 + hlw + 0.3), 1e-6);
+	CHECK_NEAR(ss.pov_scale, 1.0 / (1.0 + hlw + 0.3), 1e-6);
+	for (double th = 5; th < 85; th += 20) {
+		vec3 wi = dir_at(th + 3), wo = dir_at(th);
+		wo.x = -wo.x;
+		double want = bsdf_eval(&hl, wo, wi).x * ss.pov_scale / hl.pov_scale;
+		CHECK(fabs(bsdf_eval(&ss, wo, wi).x - want) <= 1e-5 * want + 1e-9, "sss texture's lobes at %g deg: %g, want %g",
+		      th, bsdf_eval(&ss, wo, wi).x, want);
+	}
 }
 
 int main(void)
