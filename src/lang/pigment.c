@@ -500,6 +500,17 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
 		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &b->pg.child);
 	}
+	if (k == SCENE_PAT_MAGNET) { /* magnet ( 1 | 2 ) ( mandel N | julia <re, im>, N ) */
+		long type;
+		TRY(lang_int(p, "as the magnet's type", 1, 2, &type));
+		b->pg.magnet_type = (int)type;
+		if (!peek_word(p, "julia") && !peek_word(p, "mandel"))
+			return lang_error(p, lang_peek(p)->loc, "expected mandel or julia after 'magnet %ld', found '%.*s'", type,
+					  (int)lang_peek(p)->len, lang_peek(p)->text);
+		b->pg.magnet_julia = peek_word(p, "julia");
+		lang_advance(p);
+		k = b->pg.magnet_julia ? SCENE_PAT_JULIA : SCENE_PAT_MANDEL;
+	}
 	if (k == SCENE_PAT_MANDEL || k == SCENE_PAT_JULIA) { /* mandel N | julia <re, im>, N */
 		long it;
 		if (k == SCENE_PAT_JULIA) {
@@ -602,6 +613,36 @@ static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
 	}
 }
 
+/* slope_map = "slope_map" "{" { "[" float [ "," ] vector "]" } "}": a normal's map of the
+ * pattern's value to <height, slope> (POV-Ray's Parse_Blend_Map of kBlendMapType_Slope: a UV
+ * vector each), read into the entries' first two colour channels. */
+static bool slope_map(parser *p, pig_build *b)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'slope_map'"));
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *e);
+	if (!e)
+		return lang_error(p, kw, "out of memory");
+	uint32_t n = 0;
+	while (lang_peek(p)->kind == LTK_LBRACKET) {
+		diag_loc at = lang_advance(p)->loc;
+		if (n == SCENE_PIGMENT_MAX_ENTRIES)
+			return lang_error(p, at, "too many entries in 'slope_map' (limit is %d)", SCENE_PIGMENT_MAX_ENTRIES);
+		double v;
+		dvec3 hs;
+		TRY(lang_float(p, "as the slope_map entry's value", &v));
+		lang_accept(p, LTK_COMMA);
+		TRY(lang_vec3(p, "as the slope_map entry's <height, slope>", &hs));
+		TRY(lang_expect(p, LTK_RBRACKET, "to close the slope_map entry"));
+		e[n++] = (scene_map_entry){.value = v, .color = {(float)hs.x, (float)hs.y, 0, 0, 0}};
+	}
+	if (!n)
+		return lang_error_found(p, "expected '[' (a slope_map needs at least one entry)");
+	TRY(lang_expect_close(p, open, "slope_map"));
+	b->pg.entries = e, b->pg.n_entries = n, b->pg.slope_map = true, b->pg.pigment_map = b->pg.block_list = false;
+	return true;
+}
+
 /* The fractals' modifiers (POV-Ray's Parse_Pattern): "exterior" int [","] float (types 0 to 8) |
  * "interior" int [","] float (0 to 6) | "exponent" 2 (the only one circe has); errors elsewhere. */
 static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
@@ -610,7 +651,8 @@ static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
 	bool ext = lang_word_is(&t, "exterior"), in = lang_word_is(&t, "interior"), ex = lang_word_is(&t, "exponent");
 	if (!(*matched = ext || in || ex))
 		return true;
-	if (b->pg.kind != SCENE_PAT_MANDEL && b->pg.kind != SCENE_PAT_JULIA)
+	bool fractal = b->pg.kind == SCENE_PAT_MANDEL || b->pg.kind == SCENE_PAT_JULIA || b->pg.kind == SCENE_PAT_MAGNET;
+	if (!fractal || (ex && b->pg.kind == SCENE_PAT_MAGNET))
 		return lang_error(p, t.loc, "'%.*s' belongs to mandel and julia, not to %s", (int)t.len, t.text,
 				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
 	lang_advance(p);
@@ -680,7 +722,7 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	if (b->normal && peek_word(p, "normal_map")) /* its entries are normal bodies */
 		return map_block(p, b, true);
 	if (b->normal && peek_word(p, "slope_map"))
-		return lang_error(p, at, "'%.*s' is not supported by circe", (int)lang_peek(p)->len, lang_peek(p)->text);
+		return slope_map(p, b);
 	TRY(crackle_modifier(p, b, matched));
 	if (!*matched)
 		TRY(fractal_modifier(p, b, matched));

@@ -216,6 +216,53 @@ static double fractal(const pattern_node *n, dvec3 p)
 	return fractal_interior(n, a, b, mindist2);
 }
 
+/* Complex numbers for the magnet fractals. */
+typedef struct cplx {
+	double re, im;
+} cplx;
+static cplx c_add(cplx a, cplx b) { return (cplx){a.re + b.re, a.im + b.im}; }
+static cplx c_mul(cplx a, cplx b) { return (cplx){a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re}; }
+static cplx c_scale(cplx a, double s) { return (cplx){a.re * s, a.im * s}; }
+static cplx c_div(cplx a, cplx b)
+{
+	double d = b.re * b.re + b.im * b.im;
+	return (cplx){(a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d};
+}
+
+/* POV-Ray 3.7's Magnet1M/1J/2M/2JPattern::EvaluateRaw: type 1 iterates
+ * z <- ((z^2 + c - 1) / (2z + c - 2))^2, type 2 z <- ((z^3 + 3(c - 1)z + (c - 1)(c - 2)) /
+ * (3z^2 + 3(c - 2)z + (c - 1)(c - 2) + 1))^2; mandel's form starts at z = 0 with c the point (the
+ * least |z|^2 starting at 10000), julia's at z = the point with c given; a point escapes when
+ * |z|^2 > 10000 or z comes within 0.01 of 1. */
+static double magnet(const pattern_node *n, dvec3 p)
+{
+	cplx z = {0, 0}, c = {p.x, p.y};
+	double mindist2 = 10000.0;
+	if (n->magnet_julia) {
+		z = c, c = (cplx){n->julia_c[0], n->julia_c[1]};
+		mindist2 = z.re * z.re + z.im * z.im;
+	}
+	cplx c1 = {c.re - 1.0, c.im}, c2 = {c.re - 2.0, c.im}, c12 = c_mul(c1, c2);
+	for (int it = 0; it < n->fractal_iterations; it++) {
+		cplx num, den;
+		if (n->magnet_type == 2) {
+			cplx z2 = c_mul(z, z);
+			num = c_add(c_add(c_mul(z2, z), c_scale(c_mul(c1, z), 3.0)), c12);
+			den = c_add(c_add(c_scale(z2, 3.0), c_scale(c_mul(c2, z), 3.0)), (cplx){c12.re + 1.0, c12.im});
+		} else {
+			num = c_add(c_mul(z, z), c1);
+			den = c_add(c_scale(z, 2.0), c2);
+		}
+		cplx q = c_div(num, den);
+		z = c_mul(q, q);
+		double d2 = z.re * z.re + z.im * z.im;
+		mindist2 = fmin(mindist2, d2);
+		if (d2 > 10000.0 || (z.re - 1.0) * (z.re - 1.0) + z.im * z.im < 1e-4)
+			return fractal_exterior(n, it, z.re, z.im);
+	}
+	return fractal_interior(n, z.re, z.im, mindist2);
+}
+
 /* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
  * <i, 0, 0>; circe draws it from the cell hash) and its frequency from POV-Ray's own generator
  * (noise.cpp's Initialize_Waves, its seed and constants). */
@@ -390,6 +437,7 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	case PATTERN_CRACKLE: return crackle(p, n);
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA: return fractal(n, p);
+	case PATTERN_MAGNET: return magnet(n, p);
 	case PATTERN_SPIRAL1:
 	case PATTERN_SPIRAL2: {
 		double rad = sqrt(p.x * p.x + p.y * p.y);
@@ -795,6 +843,30 @@ static dvec3 wrinkles_normal(dvec3 p)
 
 /* Perturb_Normal's slope of any pattern: its value at the four corners of a tetrahedron of size
  * accuracy around p, times -5 amount (POV-Ray's "fudge factor") scaled to the step. */
+/* POV-Ray 3.7's Do_Slope_Map (normal.cpp): a value to a height through the slope_map's entries
+ * <height, slope>, by its Hermite_Cubic between the two entries about it (t their map weight),
+ * the end entries' heights beyond them. */
+static double slope_lookup(const pattern_prog *pg, const pattern_node *n, double v)
+{
+	const pattern_entry *e = pg->entries + n->entry0;
+	uint32_t k = n->n_entries;
+	if (k == 0)
+		return v;
+	if (k == 1 || v <= e[0].value)
+		return e[0].color[0];
+	if (v >= e[k - 1].value)
+		return e[k - 1].color[0];
+	uint32_t j = 1;
+	while (j < k - 1 && e[j].value <= v)
+		j++;
+	double span = e[j].value - e[j - 1].value;
+	if (!(span > 0.0))
+		return e[j].color[0];
+	double t = (v - e[j - 1].value) / span, h1 = e[j - 1].color[0], s1 = e[j - 1].color[1];
+	double h2 = e[j].color[0], s2 = e[j].color[1];
+	return t * t * t * (s1 + s2 + 2.0 * (h1 - h2)) - t * t * (2.0 * s1 + s2 + 3.0 * (h1 - h2)) + t * s1 + h1;
+}
+
 static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps)
 {
 	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
@@ -810,6 +882,8 @@ static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q
 		double value = raw_eps(pg, n, at, eps);
 		if (!is_block(n->kind))
 			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
+		if (n->slope_map)
+			value = slope_lookup(pg, n, value);
 		d = d3_add(d, d3_scale(v, value * amount));
 	}
 	return d;

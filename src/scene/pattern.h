@@ -42,6 +42,7 @@ typedef enum pattern_kind {
 			 * upper layers' filter and transmit */
 	PATTERN_AVERAGE, /* its entries' colours (or normals) averaged, each weighted by its value */
 	PATTERN_MANDEL, PATTERN_JULIA, /* POV-Ray's fractals of z^2 + c in the x-y plane */
+	PATTERN_MAGNET, /* POV-Ray's magnet fractals, types 1 and 2, mandel's or julia's form */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -98,7 +99,10 @@ typedef struct pattern_node {
 	dvec3 crackle_form; /* crackle: weights of the three nearest distances (default <-1, 1, 0>) */
 	double crackle_metric, crackle_offset; /* crackle: the distance's exponent (2), its offset (0) */
 	int fractal_iterations;		       /* mandel, julia: the iterations limit */
-	double julia_c[2];		       /* julia's c */
+	double julia_c[2];		       /* julia's c (and a julia magnet's) */
+	int magnet_type;		       /* magnet: 1 or 2 */
+	bool slope_map; /* a normal's slope_map: the entries' color[0] heights, color[1] slopes */
+	bool magnet_julia;		       /* magnet: julia's form */
 	int fractal_exterior, fractal_interior; /* POV-Ray's exterior and interior types */
 	double exterior_factor, interior_factor;
 	double agate_turb; /* agate */

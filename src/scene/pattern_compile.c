@@ -57,6 +57,7 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.crackle_form = pg->crackle_form, n.crackle_metric = pg->crackle_metric, n.crackle_offset = pg->crackle_offset;
 	n.fractal_iterations = pg->fractal_iterations, n.julia_c[0] = pg->julia_c[0], n.julia_c[1] = pg->julia_c[1];
 	n.fractal_exterior = pg->fractal_exterior, n.fractal_interior = pg->fractal_interior;
+	n.magnet_type = pg->magnet_type, n.magnet_julia = pg->magnet_julia, n.slope_map = pg->slope_map;
 	n.exterior_factor = pg->exterior_factor, n.interior_factor = pg->interior_factor;
 	n.bump_amount = pg->bump_amount, n.accuracy = pg->accuracy;
 	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;

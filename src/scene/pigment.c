@@ -68,6 +68,7 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 			fprintf(o, " %s %u",
 				pg->pigment_map ? (pg->is_normal ? "normal_map" : "pigment_map")
 				: pg->block_list ? "list"
+				: pg->slope_map	 ? "slope_map"
 						 : "color_map",
 				pg->n_entries);
 		const dvec3 f = pg->crackle_form;
@@ -77,7 +78,9 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
-		if (pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA)
+		if (pg->kind == SCENE_PAT_MAGNET)
+			fprintf(o, " type %d %s", pg->magnet_type, pg->magnet_julia ? "julia" : "mandel");
+		if (pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA || pg->kind == SCENE_PAT_MAGNET)
 			fprintf(o, " c <%g, %g> iterations %d exterior %d %g interior %d %g", pg->julia_c[0], pg->julia_c[1],
 				pg->fractal_iterations, pg->fractal_exterior, pg->exterior_factor, pg->fractal_interior,
 				pg->interior_factor);

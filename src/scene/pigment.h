@@ -26,7 +26,7 @@
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
-	X(MANDEL, "mandel") X(JULIA, "julia")
+	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -104,6 +104,8 @@ typedef struct scene_pigment {
 	double crackle_offset;	     /* crackle's offset: added to each distance (in the metric), 0 */
 	int fractal_iterations;	     /* mandel, julia: the iterations limit, >= 1 */
 	double julia_c[2];	     /* julia: the constant c = <re, im> */
+	int magnet_type;	     /* magnet: 1 or 2 */
+	bool magnet_julia;	     /* magnet: julia's form (z starts at the point, c given), else mandel's */
 	int fractal_exterior, fractal_interior; /* POV-Ray's types: 1 and 0 */
 	double exterior_factor, interior_factor; /* 1 and 1 */
 	scene_wave wave;
@@ -119,6 +121,7 @@ typedef struct scene_pigment {
 	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */
 	scene_fn fn;	  /* FUNCTION: its function */
+	bool slope_map;	  /* a normal's slope_map: each entry's color[0] a height, color[1] its slope */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

@@ -1,4 +1,4 @@
-// A pattern circe lacks in a pattern function (functions.inc's f_mandel) is declared without
-// complaint and refused, by its name, where the function is called.
-#declare M = function { pattern { mandel 25 } }
+// A pattern circe lacks in a pattern function (slope, a normal's pattern of the surface's
+// direction) is declared without complaint and refused, by its name, where the function is called.
+#declare M = function { pattern { slope y } }
 #declare X = M(1, 2, 3);

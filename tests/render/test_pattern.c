@@ -521,6 +521,41 @@ static void check_fractals(void)
 	j.julia_c[0] = -1, j.julia_c[1] = 0;
 	CHECK_NEAR(pattern_raw(&j, d3(1.7, 0, 0)), 1.0 / 8, 1e-15); /* 1.89 (|z|^2 3.57), then 2.5721: 1 / 8 */
 	CHECK_NEAR(pattern_raw(&j, d3(1.5, 0, 0)), 1.0, 0);	    /* 1.25, 0.5625, -0.684, ...: stays */
+	/* magnet (Magnet1M/2MPattern): z <- ((z^2 + c - 1) / (2z + c - 2))^2 from 0; at c = 3 it sits
+	 * at z = 4 (interior); at c = -100 it reaches 1 (|z - 1|^2 < 1e-4) at iteration 1 (type 1),
+	 * at iteration 0 (type 2), and type 2 at c = 3 at iteration 2 (traced in Python). */
+	pattern_node m = pattern_node_default(PATTERN_MAGNET);
+	m.fractal_iterations = 10, m.magnet_type = 1;
+	CHECK_NEAR(pattern_raw(&m, d3(3, 0, 0)), 1.0, 0);
+	CHECK_NEAR(pattern_raw(&m, d3(-100, 0, 0)), 0.1, 1e-15);
+	m.magnet_type = 2;
+	CHECK_NEAR(pattern_raw(&m, d3(-100, 0, 0)), 0.0, 0);
+	CHECK_NEAR(pattern_raw(&m, d3(3, 0, 0)), 0.2, 1e-15);
+}
+
+/* slope_map (normal.cpp Do_Slope_Map): gradient x (its value x) through [0 <0, 0>] [1 <1, 0>] is
+ * POV-Ray's Hermite cubic h = 3t^2 - 2t^3; the normal then moves by POV-Ray's four-point slope of
+ * h (amount -5 * 0.3, the tetrahedron's x components 0.9428, -0.4714, -0.4714, 0 at 0.02),
+ * worked here from h itself: about the derivative 6t - 6t^2 (1.5 at 0.5, 0.96 at 0.2) times what
+ * the bare gradient gives (-0.04), plus the scheme's own curvature term. */
+static double smooth_h(double t) { return t <= 0 ? 0 : t >= 1 ? 1 : 3 * t * t - 2 * t * t * t; }
+static void check_slope_map(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_GRADIENT);
+	n.vector = d3(1, 0, 0), n.bump_amount = 0.3, n.frequency = 0, n.slope_map = true, n.n_entries = 2;
+	pattern_entry e[2] = {{.value = 0, .color = {0, 0}, .node = -1}, {.value = 1, .color = {1, 0}, .node = -1}};
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 2};
+	const double xs[2] = {0.5, 0.2}, slopes[2] = {1.5, 0.96}, ax[4] = {0.942809041, -0.471404521, -0.471404521, 0};
+	for (int i = 0; i < 2; i++) {
+		dvec3 v = d3(0, 1, 0);
+		pattern_perturb(&pg, 0, d3(xs[i], 0, 0), &v);
+		double want = 0.0;
+		for (int k = 0; k < 4; k++)
+			want += ax[k] * smooth_h(xs[i] + 0.02 * ax[k]) * -5.0 * 0.3;
+		CHECK(fabs(v.x - want) < 1e-9, "slope_map at x %g: <%g, %g, %g>, want x %.9g", xs[i], v.x, v.y, v.z, want);
+		CHECK(fabs(want / (-0.04 * slopes[i]) - 1) < 0.02, "the four-point slope %g against the derivative's %g", want,
+		      -0.04 * slopes[i]);
+	}
 }
 
 int main(void)
@@ -528,6 +563,7 @@ int main(void)
 	check_normals();
 	check_crackle();
 	check_fractals();
+	check_slope_map();
 	check_average();
 	check_normal_map();
 	check_tolerance();
