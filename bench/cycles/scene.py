@@ -96,7 +96,9 @@ p.inputs["Subsurface Color"].default_value = col
 p.inputs["Subsurface"].default_value = 1.0  # also the radius' scale: radius in scene units
 p.inputs["Subsurface Radius"].default_value = tuple(r / 22.0 for r in (1.35, 1.14, 0.99))
 p.inputs["Subsurface IOR"].default_value = 1.4
-p.inputs["Roughness"].default_value = 0.35
+# circe's coat takes its roughness as the GGX alpha (src/render/bsdf.h, bsdf_coat); Cycles'
+# Principled squares its roughness into alpha: sqrt(0.35) is the same lobe.
+p.inputs["Roughness"].default_value = math.sqrt(0.35)
 p.inputs["Specular"].default_value = ((1.4 - 1) / (1.4 + 1)) ** 2 / 0.08  # F0 of ior 1.4
 if which == "textured":
     # skin { image "Map-COL.jpg" normal_map "..._Tangent_SmoothUV.jpg" strength 1 }: the colour
