@@ -11,10 +11,10 @@ awk -v d="$tmp" '$2 !~ /^ref:/ { f = d "/" $1 "." $2; gsub(/[:@]/, "_", f); prin
 scenes=$(awk '{ print $1 }' "$rows" | uniq | tr '\n' ' ')
 n=$(echo $scenes | wc -w)
 {
-	echo "set terminal pngcairo noenhanced size $((420 * n)),400 font ',10'"
+	echo "set terminal pngcairo noenhanced size $((420 * n)),420 font ',10'"
 	echo "set output '$png'"
 	echo "set multiplot layout 1,$n"
-	echo "set logscale xy; set grid; set key top right; set xlabel 'CPU seconds'; set ylabel 'NMSE'"
+	echo "set logscale xy; set grid; set key top right font ',8'; set yrange [3e-4:3e-1]; set xrange [0.3:10]; set xlabel 'CPU seconds'; set ylabel 'NMSE'"
 	echo "set format y '%.0e'"
 	for sc in $scenes; do
 		echo "set title '$sc'"
