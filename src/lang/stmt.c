@@ -390,6 +390,7 @@ static scene_material *new_texture(parser *p, diag_loc loc)
 	if (m && p->default_tex) {
 		copy_pigment(m, p->default_tex);
 		copy_finish(m, p->default_tex);
+		m->normal = p->default_tex->normal;
 	}
 	return m;
 }
@@ -3484,9 +3485,9 @@ static bool declare_sky(parser *p, value *out)
 	return true;
 }
 
-/* default = "#default" "{" { texture | pigment | finish } "}"
+/* default = "#default" "{" { texture | pigment | finish | normal } "}"
  * As POV-Ray 3.7: each item changes the default texture, which every texture made after it
- * starts from (a texture { finish {...} } takes the default's pigment), and which an object
+ * starts from (a texture { finish {...} } takes the default's pigment and normal), and which an object
  * placed after it without a texture receives (lang_statement). Each #default makes a new record,
  * so the textures that took an earlier default keep it. */
 bool lang_default(parser *p)
@@ -3515,7 +3516,13 @@ bool lang_default(parser *p)
 			p->default_tex = d;
 			break;
 		default:
-			return bad_item(p, open, "#default", "texture, pigment or finish");
+			if (lang_normal_starts(p)) {
+				TRY(d = new_texture(p, t.loc));
+				TRY(lang_normal(p, d));
+				p->default_tex = d;
+				break;
+			}
+			return bad_item(p, open, "#default", "texture, pigment, finish or normal");
 		}
 	}
 }
