@@ -2946,7 +2946,8 @@ static bool light_colour(parser *p, vec3 *c)
 	diag_loc loc = lang_peek(p)->loc;
 	TRY(lang_color(p, "as the light colour", c));
 	if (!(c->x >= 0 && c->y >= 0 && c->z >= 0))
-		return lang_error(p, loc, "light colour must be >= 0 in every channel");
+		return lang_error(p, loc, "a negative light colour (POV-Ray's negative light, which takes light away) is not "
+					  "supported by circe");
 	return true;
 }
 
@@ -3225,6 +3226,20 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
  * moves the position and point_at given before it, and turns the area axes, as in POV-Ray. */
 static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
 
+/* A spotlight's radius or falloff in degrees: POV-Ray keeps only its cosine, so a negative angle
+ * is its opposite (cornell.pov's `radius -90` for a cosine falloff); over 90 degrees a cone wider
+ * than a half-space. */
+static bool spot_angle(parser *p, diag_loc loc, const char *what, double *x)
+{
+	*x = fabs(*x);
+	if (!isfinite(*x))
+		return lang_error(p, loc, "spotlight %s must be finite", what);
+	if (*x > 90)
+		return lang_error(p, loc, "a spotlight %s over 90 degrees (a cone wider than a half-space) is not supported by "
+					  "circe, found %g", what, *x);
+	return true;
+}
+
 static bool light_block(parser *p, scene_light *out, diag_loc kw)
 {
 	diag_loc open;
@@ -3282,7 +3297,7 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 			lang_advance(p);
 			TRY(lang_float(p, "after 'radius'", &x));
 			if (l.kind == SCENE_LIGHT_SPOT) {
-				TRY(in_range(p, t.loc, "spotlight radius (a cone angle)", x, 0, 90));
+				TRY(spot_angle(p, t.loc, "radius", &x));
 				l.cone_deg = x;
 			} else if (l.kind == SCENE_LIGHT_CYLINDER) {
 				if (x < 0)
@@ -3301,7 +3316,7 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 				TRY(lang_float(p, "after 'falloff'", &x));
 				l.cyl_falloff = x;
 			} else {
-				TRY(lang_float(p, "after 'falloff'", &x) && in_range(p, t.loc, "spotlight falloff", x, 0, 90));
+				TRY(lang_float(p, "after 'falloff'", &x) && spot_angle(p, t.loc, "falloff", &x));
 				l.falloff_deg = x;
 			}
 			falloff = true, falloff_loc = t.loc;
