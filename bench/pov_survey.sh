@@ -79,7 +79,8 @@ for s in $scenes; do
 	printf '%s\n' "$msg" | sed -E \
 		-e "s/^('[^']*') is not supported by circe.*/not supported: \1/" -e t \
 		-e "s/^undeclared identifier ('[^']*').*/undeclared identifier \1/" -e t \
-		-e "s/^cannot find include file .*/cannot find include file/" -e t \
+		-e "s/^cannot find (include|font) file .*/a file not in povray-examples (include, font or image)/" -e t \
+		-e "s/^image file .*: cannot open it: No such file or directory$/a file not in povray-examples (include, font or image)/" -e t \
 		-e "s/identifier '[^']*'/identifier 'NAME'/g" \
 		-e "s/string \"[^\"]*\"/string \"...\"/g" \
 		-e "s/'-?[0-9][0-9.e+-]*'/'NUMBER'/g" \

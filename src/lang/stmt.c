@@ -3340,6 +3340,15 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 				TRY(looks_like(p, &l));
 				continue;
 			}
+			if (lang_word_is(&t, "photons")) { /* POV-Ray's photon flags of a light (balcony.pov) */
+				lang_advance(p);
+				TRY(lang_skip_block(p, "photons"));
+				if (!(p->finish_warned & LANG_WARNED_LIGHT_PHOTONS))
+					diag_warning(p->d, t.loc, "a light_source's 'photons' is accepted and ignored: circe "
+								  "computes caustics by its own path tracing (said once)");
+				p->finish_warned |= LANG_WARNED_LIGHT_PHOTONS;
+				continue;
+			}
 			TRY(light_word_item(p, &l, &seen, &matched));
 			if (matched)
 				continue;
