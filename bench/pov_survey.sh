@@ -1,7 +1,7 @@
 #!/bin/sh
 # bench/pov_survey.sh [CIRCE]: POV-Ray 3.7's sample scenes (Debian's povray-examples) through
 # `circe check`, each from its own folder with -I at POV-Ray's include folder and the scene's
-# folder, under a time limit. The first error of each scene is classified by its message and a
+# folder, under a time limit (an animation at the first frame and clock of the .ini of its name). The first error of each scene is classified by its message and a
 # markdown table printed: how many pass, what stops the rest. A crash (a signal) or a timeout is a
 # defect of circe and is listed loudly at the end (and the exit status is 1), as is any sanitizer
 # report when CIRCE is a build of --enable-sanitizers.
@@ -23,14 +23,31 @@ if [ -z "$scenes" ] || [ ! -d "$inc" ]; then
 fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/pov-survey.XXXXXX") || exit 99
 trap 'rm -rf "$work"' EXIT
+# The scenes run in a copy of the examples' folder: some write files beside them (#fopen ...
+# write: the portfolio's HTML pages), which must not touch the installed package.
+root=$(printf '%s\n' "$scenes" | sed -n 's|^\(.*/examples\)/.*|\1|p' | head -n 1)
+[ -n "$root" ] && cp -R "$root" "$work/examples" || { echo "pov_survey: cannot copy the examples" >&2; exit 99; }
 : >"$work/stops"
 : >"$work/defects"
 total=0 pass=0
 for s in $scenes; do
 	total=$((total + 1))
-	dir=$(dirname "$s")
-	(cd "$dir" && exec timeout -k 2 "$limit" "$circe" check -I "$inc" -I "$dir" "$s") >/dev/null 2>"$work/err"
+	copy=$work/examples/${s#"$root"/}
+	dir=$(dirname "$copy")
+	# An animation's .ini of the scene's name (the portfolio's, animations/): its first frame and
+	# clock, as POV-Ray renders it with that .ini (frame_number 0 indexes the portfolio's arrays at -1).
+	anim=
+	ini=${s%.pov}.ini
+	if [ -f "$ini" ]; then
+		f=$(tr -d '\r' <"$ini" | sed -n -E 's/^[[:space:]]*[Ii]nitial_[Ff]rame[[:space:]]*=[[:space:]]*([0-9]+)[[:space:]]*(;.*)?$/\1/p' | tail -n 1)
+		c=$(tr -d '\r' <"$ini" | sed -n -E 's/^[[:space:]]*[Ii]nitial_[Cc]lock[[:space:]]*=[[:space:]]*(-?[0-9.]+)[[:space:]]*(;.*)?$/\1/p' | tail -n 1)
+		[ -z "$f" ] || anim="--frame $f"
+		[ -z "$c" ] || anim="$anim --clock $c"
+	fi
+	# shellcheck disable=SC2086 # $anim is options, split on purpose
+	(cd "$dir" && exec timeout -k 2 "$limit" "$circe" check $anim -I "$inc" -I "$dir" "$copy") >/dev/null 2>"$work/err.copy"
 	rc=$?
+	sed "s|$work/examples|$root|g" "$work/err.copy" >"$work/err"
 	# A circe built with --enable-sanitizers: any report is a defect, whatever the exit status.
 	if grep -q -E 'ERROR: (Address|Leak)Sanitizer|runtime error: ' "$work/err"; then
 		echo "DEFECT sanitizer report: $s" >>"$work/defects"
@@ -62,7 +79,8 @@ for s in $scenes; do
 	printf '%s\n' "$msg" | sed -E \
 		-e "s/^('[^']*') is not supported by circe.*/not supported: \1/" -e t \
 		-e "s/^undeclared identifier ('[^']*').*/undeclared identifier \1/" -e t \
-		-e "s/^cannot find include file .*/cannot find include file/" -e t \
+		-e "s/^cannot find (include|font) file .*/a file not in povray-examples (include, font or image)/" -e t \
+		-e "s/^image file .*: cannot open it: No such file or directory$/a file not in povray-examples (include, font or image)/" -e t \
 		-e "s/identifier '[^']*'/identifier 'NAME'/g" \
 		-e "s/string \"[^\"]*\"/string \"...\"/g" \
 		-e "s/'-?[0-9][0-9.e+-]*'/'NUMBER'/g" \

@@ -44,7 +44,7 @@ static const char usage_text[] =
 	"                    [--aov albedo,normal,depth,variance,error,samples] [--tile I/N]\n"
 	"                    [--clock F] [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR]\n"
 	"                    [--quiet]\n"
-	"       circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE] [--dump]\n"
+	"       circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE] [--dump]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
 	"                     [--channels R,G,B]\n"
 	"       circe merge -o FULL.exr TILE.exr...\n"
@@ -312,6 +312,7 @@ static void print_check_summary(const char *path, const scene *sc, const world_s
 typedef struct check_cli {
 	include_list includes;
 	double clock;
+	long frame; /* -1: none (frame_number and its range are 0) */
 	bool dump;
 	size_t max_memory;
 } check_cli;
@@ -334,6 +335,8 @@ static const cli_opt check_options[] = {
 	 0, "too many -I folders (limit is 64)"},
 	{"clock", 0, "F", "the scene's clock (default 0)", opt_check_clock, C(clock), 0, 0,
 	 "--clock needs a number, got '%s'"},
+	{"frame", 0, "N", "the frame number an animated scene reads as frame_number (default: none, 0)", opt_long,
+	 C(frame), 0, 99999999, "--frame needs a frame number >= 0, not '%s'"},
 	{"dump", 0, NULL, "print the parsed scene instead of its statistics", opt_flag, C(dump), 0, 0, NULL},
 	{"max-memory", 0, "SIZE", "memory limit such as 512M or 2G (default: the machine's memory)", opt_size,
 	 C(max_memory), 0, 0, "--max-memory needs a size such as 512M or 2G, not '%s'"},
@@ -341,18 +344,19 @@ static const cli_opt check_options[] = {
 };
 #undef C
 
-/* circe check SCENE [-I DIR] [--clock F] [--max-memory SIZE]: parse and build, print statistics;
+/* circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE]: parse and build, print statistics;
  * a scene whose render would need more than the memory limit fails. */
 static int cmd_check(int argc, char **argv)
 {
-	check_cli o = {0};
+	check_cli o = {.frame = -1};
 	int status = cli_parse_options(argc, argv, "check", check_options,
 				       sizeof check_options / sizeof check_options[0], &o);
 	if (status != EXIT_OK)
 		return status < 0 ? EXIT_OK : status;
 	size_t max_memory = o.max_memory;
 	bool dump = o.dump;
-	lang_options lo = {.include_dirs = o.includes.dir, .n_include_dirs = (size_t)o.includes.n, .clock = o.clock};
+	lang_options lo = {.include_dirs = o.includes.dir, .n_include_dirs = (size_t)o.includes.n, .clock = o.clock,
+			   .animated = o.frame >= 0, .frame = o.frame};
 	if (optind != argc - 1)
 		return usage_error("%s", optind >= argc ? "'check' needs a SCENE file" : "'check' takes one SCENE file");
 	mem_set_limit(max_memory ? max_memory : physical_memory());

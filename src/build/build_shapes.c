@@ -337,7 +337,7 @@ static bool boxed_tessellate(const scene_geom *g, bbox box, const scene_object *
 	const char *what = g->kind == SHAPE_POLY ? g->u.poly.keyword : "quadric";
 	if (unbounded) {
 		diag_error(d, unbounded->loc,
-			   "this %s is an unbounded surface and nothing bounds it: circe polygonises a quadric, cubic, "
+			   "an unbounded %s (nothing bounds it) is not supported by circe: it polygonises a quadric, cubic, "
 			   "quartic or poly inside its clipped_by or bounded_by, or the bounded objects it is intersected with",
 			   what);
 		if (unbounded->loc.line != g->loc.line || unbounded->loc.col != g->loc.col || unbounded->loc.src != g->loc.src)

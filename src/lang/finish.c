@@ -193,7 +193,7 @@ static bool highlight_item(parser *p, scene_material *m, lang_finish_state *st, 
 	if (t.kind == LTK_KW_SPECULAR) {
 		lang_advance(p);
 		st->specular_albedo = accept_word(p, "albedo");
-		TRY(unit_float(p, t.loc, "specular", &x));
+		TRY(lang_float(p, "after 'specular'", &x) && at_least(p, t.loc, "finish specular", x, 0));
 		m->specular = (float)x;
 	} else if (t.kind == LTK_KW_ROUGHNESS) {
 		lang_advance(p);
@@ -255,7 +255,8 @@ bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool 
 	if (t.kind == LTK_KW_DIFFUSE) {
 		lang_advance(p);
 		accept_word(p, "albedo"); /* brilliance 1: POV-Ray's albedo adjustment (b + 1) / 2 is 1 */
-		TRY(unit_float(p, t.loc, "diffuse", &x));
+		/* Above 1 as POV-Ray allows (soft.pov's 1.5): the BSDF scales its lobes' sum to 1. */
+		TRY(lang_float(p, "after 'diffuse'", &x) && at_least(p, t.loc, "finish diffuse", x, 0));
 		m->diffuse = (float)x;
 		if (lang_accept(p, LTK_COMMA)) {
 			TRY(lang_float(p, "as the backside diffuse", &x));

@@ -340,6 +340,8 @@ bool lang_default(parser *p);
  * POV-Ray applies with the exponents the block ends with. */
 /* parser.finish_warned's bit for stmt.c's interior_texture warning (finish.c's use the low ones). */
 #define LANG_WARNED_INTERIOR_TEXTURE (1u << 31)
+/* ... and for a light_source's ignored photons block. */
+#define LANG_WARNED_LIGHT_PHOTONS (1u << 30)
 
 typedef struct lang_finish_state {
 	bool phong_albedo, specular_albedo;

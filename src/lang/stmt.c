@@ -2369,6 +2369,23 @@ static bool csg_renumber(parser *p, scene_object *objs, size_t n, diag_loc kw)
 	return true;
 }
 
+/* A declared object's name: its objects pushed onto out as instances placed at kw. */
+static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
+{
+	const value *v = declared(p, VAL_OBJECT, "an object");
+	if (!v)
+		return false;
+	size_t start = out->len;
+	for (size_t i = 0; i < v->obj->n; i++) {
+		scene_object o = v->obj->items[i];
+		o.instance = true;
+		o.loc = kw;
+		if (!vecbuf_push(out, &o))
+			return lang_error(p, kw, "out of memory");
+	}
+	return csg_renumber(p, &VECBUF_AT(out, scene_object, start), out->len - start, kw);
+}
+
 /* instance = "object" "{" ( identifier | object_item ) { modifier } "}"
  * POV-Ray's object { } holds a declared object or an object itself (a macro's, often). */
 static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
@@ -2382,18 +2399,8 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 			return lang_error_found(p, "expected a declared object or an object after 'object {'");
 		return object_tail(p, out, start, open, "object");
 	}
-	const value *v = declared(p, VAL_OBJECT, "an object");
-	if (!v)
-		return false;
 	size_t start = out->len;
-	for (size_t i = 0; i < v->obj->n; i++) {
-		scene_object o = v->obj->items[i];
-		o.instance = true;
-		o.loc = kw;
-		if (!vecbuf_push(out, &o))
-			return lang_error(p, kw, "out of memory");
-	}
-	TRY(csg_renumber(p, &VECBUF_AT(out, scene_object, start), out->len - start, kw));
+	TRY(declared_object(p, out, kw));
 	return object_tail(p, out, start, open, "object");
 }
 
@@ -2940,7 +2947,8 @@ static bool light_colour(parser *p, vec3 *c)
 	diag_loc loc = lang_peek(p)->loc;
 	TRY(lang_color(p, "as the light colour", c));
 	if (!(c->x >= 0 && c->y >= 0 && c->z >= 0))
-		return lang_error(p, loc, "light colour must be >= 0 in every channel");
+		return lang_error(p, loc, "a negative light colour (POV-Ray's negative light, which takes light away) is not "
+					  "supported by circe");
 	return true;
 }
 
@@ -3131,7 +3139,7 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 	return true;
 }
 
-/* looks_like = "looks_like" "{" object_item { modifier } "}": POV-Ray's (Parse_Light_Source): the
+/* looks_like = "looks_like" "{" ( identifier | object_item ) { modifier } "}": POV-Ray's (Parse_Light_Source): the
  * object translated to the light's position as it stands, then its modifiers, no_shadow; one a
  * light. */
 static bool looks_like(parser *p, scene_light *l)
@@ -3142,7 +3150,11 @@ static bool looks_like(parser *p, scene_light *l)
 	TRY(open_block(p, "looks_like", &open));
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
-	bool matched, ok = object_item(p, &b, &matched);
+	bool matched = true, ok;
+	if (lang_peek(p)->kind == LTK_IDENT) /* a declared object, as POV-Ray's Parse_Object takes it */
+		ok = declared_object(p, &b, lang_peek(p)->loc);
+	else
+		ok = object_item(p, &b, &matched);
 	if (ok && (!matched || !b.len))
 		ok = lang_error_found(p, "expected an object in 'looks_like'");
 	xform to = xform_translate(l->position);
@@ -3213,10 +3225,32 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
  *                | "orient" | "adaptive" float | transform_item } "}"
  * Into *out, the keyword consumed (at kw). A float colour is grey (`<0, 9, 0>, 1`). A transform
  * moves the position and point_at given before it, and turns the area axes, as in POV-Ray. */
+static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
+
+/* A spotlight's radius or falloff in degrees: POV-Ray keeps only its cosine, so a negative angle
+ * is its opposite (cornell.pov's `radius -90` for a cosine falloff); over 90 degrees a cone wider
+ * than a half-space. */
+static bool spot_angle(parser *p, diag_loc loc, const char *what, double *x)
+{
+	*x = fabs(*x);
+	if (!isfinite(*x))
+		return lang_error(p, loc, "spotlight %s must be finite", what);
+	if (*x > 90)
+		return lang_error(p, loc, "a spotlight %s over 90 degrees (a cone wider than a half-space) is not supported by "
+					  "circe, found %g", what, *x);
+	return true;
+}
+
 static bool light_block(parser *p, scene_light *out, diag_loc kw)
 {
 	diag_loc open;
 	TRY(open_block(p, "light_source", &open));
+	return light_body(p, out, kw, open);
+}
+
+/* A light_source's items after its '{' (at open). */
+static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
+{
 	scene_light l = {.loc = kw, .kind = SCENE_LIGHT_POINT, .color = v3s(1), .intensity = 1,
 			 .point_at = d3(0, 0, 1), .cone_deg = 30, .falloff_deg = 45};
 	bool point_at = false, falloff = false;
@@ -3264,7 +3298,7 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 			lang_advance(p);
 			TRY(lang_float(p, "after 'radius'", &x));
 			if (l.kind == SCENE_LIGHT_SPOT) {
-				TRY(in_range(p, t.loc, "spotlight radius (a cone angle)", x, 0, 90));
+				TRY(spot_angle(p, t.loc, "radius", &x));
 				l.cone_deg = x;
 			} else if (l.kind == SCENE_LIGHT_CYLINDER) {
 				if (x < 0)
@@ -3283,7 +3317,7 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 				TRY(lang_float(p, "after 'falloff'", &x));
 				l.cyl_falloff = x;
 			} else {
-				TRY(lang_float(p, "after 'falloff'", &x) && in_range(p, t.loc, "spotlight falloff", x, 0, 90));
+				TRY(lang_float(p, "after 'falloff'", &x) && spot_angle(p, t.loc, "falloff", &x));
 				l.falloff_deg = x;
 			}
 			falloff = true, falloff_loc = t.loc;
@@ -3307,6 +3341,15 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 				TRY(looks_like(p, &l));
 				continue;
 			}
+			if (lang_word_is(&t, "photons")) { /* POV-Ray's photon flags of a light (balcony.pov) */
+				lang_advance(p);
+				TRY(lang_skip_block(p, "photons"));
+				if (!(p->finish_warned & LANG_WARNED_LIGHT_PHOTONS))
+					diag_warning(p->d, t.loc, "a light_source's 'photons' is accepted and ignored: circe "
+								  "computes caustics by its own path tracing (said once)");
+				p->finish_warned |= LANG_WARNED_LIGHT_PHOTONS;
+				continue;
+			}
 			TRY(light_word_item(p, &l, &seen, &matched));
 			if (matched)
 				continue;
@@ -3318,17 +3361,23 @@ static bool light_block(parser *p, scene_light *out, diag_loc kw)
 	}
 }
 
+/* A light placed in the scene, with the objects of its looks_like. */
+static bool add_light(parser *p, const scene_light *l, diag_loc kw)
+{
+	if (!vecbuf_push(&p->sc->lights, l))
+		return lang_error(p, kw, "out of memory");
+	for (uint32_t i = 0; i < l->n_looks; i++) /* the objects that show it */
+		if (!vecbuf_push(&p->sc->objects, &l->looks[i]))
+			return lang_error(p, kw, "out of memory");
+	return true;
+}
+
 static bool light_source(parser *p)
 {
 	lang_token kw = *lang_advance(p);
 	scene_light l;
 	TRY(light_block(p, &l, kw.loc));
-	if (!vecbuf_push(&p->sc->lights, &l))
-		return lang_error(p, kw.loc, "out of memory");
-	for (uint32_t i = 0; i < l.n_looks; i++) /* the objects that show it */
-		if (!vecbuf_push(&p->sc->objects, &l.looks[i]))
-			return lang_error(p, kw.loc, "out of memory");
-	return true;
+	return add_light(p, &l, kw.loc);
 }
 
 /* background = "background" "{" colour "}" */
@@ -3567,6 +3616,23 @@ bool lang_statement(parser *p)
 			return lang_error(p, t->loc, "'%.*s' is a declared %s: place it with %s { %.*s }", (int)t->len,
 					  t->text, kw, kw, (int)t->len, t->text);
 		break;
+	}
+	case LTK_KW_OBJECT: { /* object { Light ... }: a declared light placed, as POV-Ray's Parse_Object_Id takes it */
+		lang_token kw = *lang_advance(p);
+		diag_loc open;
+		TRY(open_block(p, "object", &open));
+		size_t start = p->sc->objects.len;
+		if (names(p, VAL_LIGHT)) {
+			scene_light l;
+			TRY(light_body(p, &l, kw.loc, open));
+			return add_light(p, &l, kw.loc);
+		}
+		TRY(lang_enter(p, kw.loc));
+		bool ok = instance(p, &p->sc->objects, kw.loc, open);
+		lang_leave(p);
+		TRY(ok);
+		give_default(p, start);
+		return true;
 	}
 	default:
 		break;

@@ -1,1 +1,1 @@
-sphere { 0, 1 texture { finish { specular 2 } } }
+sphere { 0, 1 texture { finish { specular -1 } } }

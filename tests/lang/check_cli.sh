@@ -56,6 +56,17 @@ expect 3 "clock 0 makes radius 0" -- "$CIRCE" check "$tmp/clock.pov"
 expect 0 "--clock sets clock" -- "$CIRCE" check --clock 0.5 "$tmp/clock.pov"
 expect 0 "--dump" -- "$CIRCE" check --dump --clock 0.5 "$tmp/clock.pov"
 grep -q "radius 0.5" "$tmp/out" || { echo "FAIL dump lacks the clocked radius"; fail=1; }
+# --frame N: an animation's frame, as POV-Ray's Initial_Frame of a scene's .ini gives it (the
+# portfolio scenes index arrays by frame_number - 1): frame_number and its range are N, clock_on 1.
+printf '#declare A = array[2] { 3, 5 }\nsphere { <frame_number, initial_frame, clock_on>, A[frame_number - 1] }\n' >"$tmp/frame.pov"
+expect 3 "frame_number 0 without --frame" -- "$CIRCE" check "$tmp/frame.pov"
+grep -q "frame.pov:2:53: error: array index -1 out of range 0..1 of 'A'" "$tmp/err" ||
+	{ echo "FAIL frame_number without --frame:"; cat "$tmp/err"; fail=1; }
+expect 0 "--frame sets frame_number" -- "$CIRCE" check --dump --frame 2 "$tmp/frame.pov"
+grep -q "center <2, 2, 1> radius 5" "$tmp/out" || { echo "FAIL --frame 2:"; cat "$tmp/out"; fail=1; }
+expect 2 "bad frame" -- "$CIRCE" check --frame -1 "$good/basic.pov"
+grep -qx "circe: error: --frame needs a frame number >= 0, not '-1'" "$tmp/err" ||
+	{ echo "FAIL bad --frame message:"; cat "$tmp/err"; fail=1; }
 # #debug, #warning and #undef's warning go to stderr exactly so; check still succeeds.
 expect 0 "#debug and #warning" -- sh -c 'cd "$1" && "$2" check messages.pov' sh "$good" "$CIRCE"
 cmp -s "$tmp/err" "$good/messages.stderr" ||
