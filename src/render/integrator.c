@@ -475,9 +475,10 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 /* auto's light estimate (src/sss/README.md, "auto"): the unshadowed irradiance at p on the side
  * its unit normal n faces, in luminance: each light's one sample at the fixed u = (1/2, 1/2)
  * (a delta light's own value; an area's or a sphere's centre-ish point), weighed by the cosine
- * over its density, and an infinite light as pi times its radiance along n. Deterministic and
- * continuous in p and n; no random number, no ray. */
-static double auto_irradiance(const render_scene *s, vec3 p, vec3 n)
+ * wrapped by `wrap` ((cos + wrap) / (1 + wrap), clamped at 0) over its density, and an infinite
+ * light as pi times its radiance along n. Deterministic and continuous in p and n; no random
+ * number, no ray. */
+static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
 {
 	double e = 0.0;
 	if (!s->lights)
@@ -491,7 +492,7 @@ static double auto_irradiance(const render_scene *s, vec3 p, vec3 n)
 		light_sample ls;
 		if (!light_sample_from(l, p, n, v2(0.5f, 0.5f), &ls) || !(ls.pdf > 0.0f))
 			continue;
-		float c = v3_dot(n, ls.wi);
+		float c = (v3_dot(n, ls.wi) + wrap) / (1.0f + wrap);
 		if (c > 0.0f)
 			e += (double)v3_luminance(ls.li) * c / ls.pdf;
 	}
@@ -528,8 +529,8 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 		double p = sss_auto_walk_prob(mfp);
 		if (p > 0.0 && hit) {
 			vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
-			double e_far = auto_irradiance(s, far.p, n_far);
-			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out) : 0.0;
+			double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
+			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
 			p *= sss_auto_light_prob(sss_auto_light_share(e_near, e_far, mfp));
 		}
 		p_walk = (float)p;

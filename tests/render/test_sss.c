@@ -537,9 +537,9 @@ static void test_auto_front(void)
  * with direct light only, each path has one exit point on the top, and the fraction of them that
  * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
  * the band (p = 1/2) must fail the same bound, so the test sees a seam. The light factor is 1 all
- * across: the far side's share of the exit's light, 363 e^-T / (0.96 + 363 e^-T) (the bottom's
- * cosine 0.91 under the 400 light, the top's 0.96 under the 1), is 0.11 at 8 l_d, above
- * SSS_AUTO_LIGHT_WALK, so p is the geometric rule's alone. */
+ * across: the far side's share of the exit's light, 382 e^-T / (0.96 + 382 e^-T) (the bottom's
+ * cosine 0.91, wrapped to 0.95, under the 400 light, the top's 0.96 under the 1), is 0.12 at
+ * 8 l_d, above SSS_AUTO_LIGHT_WALK, so p is the geometric rule's alone. */
 static void test_auto_wedge(void)
 {
 	const char *text =
