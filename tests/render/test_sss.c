@@ -552,6 +552,11 @@ static void test_auto_wedge(void)
 		"  face_indices { 12, <0,2,1>, <0,3,2>, <4,5,6>, <4,6,7>, <0,1,5>, <0,5,4>, <1,2,6>, <1,6,5>, <2,3,7>, "
 		"<2,7,6>, <3,0,4>, <3,4,7> }\n"
 		"  material { wax { color rgb 0.8 radius 1 ior 1.0 profile burley } } }\n";
+	/* the light factor is 1 wherever the geometric rule is not 0 (the comment above) */
+	double share = sss_auto_light_share(100.0 / sqrt(100.0 * 100.0 + 30.0 * 30.0),
+					    400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP),
+					    SSS_AUTO_CIRCLE_ABOVE);
+	CHECK(sss_auto_light_prob(share) == 1.0, "the wedge's far-side share %g at the band's end is below 1", share);
 	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
 	double xs[W];
 	world *w;
