@@ -7,24 +7,28 @@
 # sees at equal time). Also each method's render time per sample relative to circle's, and the
 # fraction of auto's entry searches that walked. Writes the table (markdown) to stdout and, with
 # --images, side-by-side PNGs (circle | auto | volume at equal time) into bench/sss/plots/.
+# With OLD=path/to/circe, an older binary's auto joins as "auto, before" (a rule's before and after
+# in one run).
 # Usage, from build/: sh ../bench/sss/auto.sh [--time T] [--ref-time REF] [--size WxH]
-#                     [--scenes "finger sheet ..."] [--images] [--work DIR]
-# Defaults: T 4 s, REF 20 s, 64x48, all scenes: about four minutes.
+#                     [--scenes "finger sheet ..."] [--methods "circle auto ..."] [--images] [--work DIR]
+# Defaults: T 4 s, REF 20 s, 64x48, all scenes: about five minutes.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 circe=${CIRCE:-./circe}
 t=4 ref_t=20 size=64x48 images=0 work=bench-sss/auto
-scenes="finger sheet head lips slab sphere bunny"
+scenes="finger sheet head head_front lips slab sphere bunny"
 methods="circle disk auto volume"
+old=${OLD:-}
 while [ $# -gt 0 ]; do
 	case $1 in
 	--time) t=$2; shift ;;
 	--ref-time) ref_t=$2; shift ;;
 	--size) size=$2; shift ;;
 	--scenes) scenes=$2; shift ;;
+	--methods) methods=$2; shift ;;
 	--images) images=1 ;;
 	--work) work=$2; shift ;;
-	-h | --help) sed -n '2,13p' "$0"; exit 0 ;;
+	-h | --help) sed -n '2,15p' "$0"; exit 0 ;;
 	*) echo "auto.sh: unknown option '$1'" >&2; exit 2 ;;
 	esac
 	shift
@@ -48,9 +52,10 @@ for s in $scenes; do
 	"$circe" render "$pov" -o "$ref" -W "$W" -H "$H" --time "$ref_t" --seed 900005 --threads 2 --sss volume \
 		>"$work/$s.ref.log" 2>&1 || { echo "auto.sh: $s: reference failed" >&2; continue; }
 	c_sps= c_rmse=
-	for m in $methods; do
-		log="$work/$s.$m.log"
-		"$circe" render "$pov" -o "$work/$s.$m.exr" -W "$W" -H "$H" --time "$t" --seed 1 --threads 1 --sss "$m" \
+	for m in $methods ${old:+auto-old}; do
+		log="$work/$s.$m.log" bin=$circe sss=$m
+		[ "$m" = auto-old ] && bin=$old sss=auto
+		"$bin" render "$pov" -o "$work/$s.$m.exr" -W "$W" -H "$H" --time "$t" --seed 1 --threads 1 --sss "$sss" \
 			>"$log" 2>&1 || { echo "auto.sh: $s $m failed" >&2; continue; }
 		spp=$(field "$log" 's/.*: \([0-9]*\) samples per pixel in .*/\1/p')
 		sec=$(field "$log" 's/.*, render \([0-9.e+-]*\) s$/\1/p')
@@ -60,7 +65,7 @@ for s in $scenes; do
 		[ "$m" = circle ] && c_sps=$sps c_rmse=$1
 		awk -v s="$s" -v m="$m" -v n="$spp" -v sps="$sps" -v cs="$c_sps" -v w="${walks:-0}" -v r="$1" -v a="$2" \
 			-v b="$3" -v cr="$c_rmse" 'BEGIN {
-			printf "| %s | %s | %d | %.2f | %.2f | %+.1f %% | %.4g | %s |\n", s, (m == "auto" ? "**auto**" : m), n,
+			printf "| %s | %s | %d | %.2f | %.2f | %+.1f %% | %.4g | %s |\n", s, (m == "auto" ? "**auto**" : m == "auto-old" ? "auto, before" : m), n,
 				sps / cs, w, 100 * (a / b - 1), r, (m == "circle" ? "1" : sprintf("%.2f", r / cr)) }'
 	done
 done

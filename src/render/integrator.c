@@ -472,13 +472,43 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	return true;
 }
 
+/* auto's light estimate (src/sss/README.md, "auto"): the unshadowed irradiance at p on the side
+ * its unit normal n faces, in luminance: each light's one sample at the fixed u = (1/2, 1/2)
+ * (a delta light's own value; an area's or a sphere's centre-ish point), weighed by the cosine
+ * wrapped by `wrap` ((cos + wrap) / (1 + wrap), clamped at 0) over its density, and an infinite
+ * light as pi times its radiance along n. Deterministic and continuous in p and n; no random
+ * number, no ray. */
+static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
+{
+	double e = 0.0;
+	if (!s->lights)
+		return 0.0;
+	for (size_t i = 0; i < s->lights->count; i++) {
+		const light *l = &s->lights->lights[i];
+		if (light_is_infinite(l)) {
+			e += RENDER_PI * (double)v3_luminance(light_radiance_dir(l, n));
+			continue;
+		}
+		light_sample ls;
+		if (!light_sample_from(l, p, n, v2(0.5f, 0.5f), &ls) || !(ls.pdf > 0.0f))
+			continue;
+		float c = (v3_dot(n, ls.wi) + wrap) / (1.0f + wrap);
+		if (c > 0.0f)
+			e += (double)v3_luminance(ls.li) * c / ls.pdf;
+	}
+	return e;
+}
+
 /* auto (src/sss/README.md, "auto"): the thickness of the object below the exit, by one ray along
  * the inward geometric normal on the SSS volume alone, in diffuse mean free paths l_d, sets the
- * probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 8 l_d on, smooth between);
- * circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
+ * geometric probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 8 l_d on, smooth
+ * between); where it is not 0, the share of the exit's light that comes from the far side where
+ * the ray left (sss_auto_light_share of the two sides' unshadowed irradiance) multiplies it by
+ * sss_auto_light_prob (0 below 1 %, 1 from 10 %): the walk only where light reaches the far side.
+ * Circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
  * A random number is drawn only where the probability is strictly between 0 and 1, so a thick
- * object renders exactly as under circle (the same random stream), a thin one exactly as under
- * volume. */
+ * object (or a thin one lit from the front only) renders exactly as under circle (the same random
+ * stream), a thin one lit through exactly as under volume. */
 static bool auto_entry(const render_scene *s, const render_settings *set, const render_sss *m,
 		       const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, render_sampler *g, sss_entry *e,
 		       render_sample *out)
@@ -487,15 +517,23 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 	if (m->auto_walk) {
 		float reach = (float)SSS_AUTO_CIRCLE_ABOVE * m->auto_ld;
 		double thick = INFINITY; /* nothing below within reach: thick */
+		render_ray probe = {bvh_offset_scaled(exit->p, v3_neg(n_out), exit->scale), v3_neg(n_out)};
+		render_hit far = {0};
+		bool hit = false;
 		if (!(reach < INFINITY)) {
 			thick = 0.0; /* no absorption at all (l_d infinite): every object is thin */
-		} else {
-			render_ray probe = {bvh_offset_scaled(exit->p, v3_neg(n_out), exit->scale), v3_neg(n_out)};
-			render_hit far = {0};
-			if (s->sss_closest(s->user, exit, &probe, 0.0f, reach, &far))
-				thick = far.t;
+		} else if ((hit = s->sss_closest(s->user, exit, &probe, 0.0f, reach, &far))) {
+			thick = far.t;
 		}
-		p_walk = (float)sss_auto_walk_prob(m->auto_ld > 0.0f ? thick / m->auto_ld : 0.0);
+		double mfp = m->auto_ld > 0.0f ? thick / m->auto_ld : 0.0;
+		double p = sss_auto_walk_prob(mfp);
+		if (p > 0.0 && hit) {
+			vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
+			double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
+			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
+			p *= sss_auto_light_prob(sss_auto_light_share(e_near, e_far, mfp));
+		}
+		p_walk = (float)p;
 	}
 	/* the search's fifth number: neither circle (its first three) nor the walk (a stream keyed by
 	 * the first) draws it */

@@ -44,6 +44,25 @@ double sss_auto_walk_prob(double m)
 	return 1.0 - x * x * (3.0 - 2.0 * x);
 }
 
+double sss_auto_light_prob(double f)
+{
+	if (!(f < SSS_AUTO_LIGHT_WALK)) /* NaN too */
+		return 1.0;
+	if (!(f > SSS_AUTO_LIGHT_CIRCLE))
+		return 0.0;
+	double x = log(f / SSS_AUTO_LIGHT_CIRCLE) / log(SSS_AUTO_LIGHT_WALK / SSS_AUTO_LIGHT_CIRCLE);
+	return x * x * (3.0 - 2.0 * x);
+}
+
+double sss_auto_light_share(double e_near, double e_far, double m)
+{
+	double far = e_far > 0.0 ? e_far * exp(-fmax(m, 0.0)) : 0.0; /* NaN or <= 0: unlit */
+	double near = e_near > 0.0 ? e_near : 0.0;
+	if (!(far > 0.0))
+		return 0.0;
+	return far / (near + far);
+}
+
 const char *sss_profile_name(sss_profile_kind k)
 {
 	return (unsigned)k < SSS_PROFILE_KINDS ? profile_names[k] : "?";

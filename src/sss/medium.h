@@ -46,6 +46,23 @@ bool sss_profile_from_name(const char *name, sss_profile_kind *k);
 #define SSS_AUTO_CIRCLE_ABOVE 8.0
 double sss_auto_walk_prob(double m);
 
+/* The light factor of `auto` (src/sss/README.md, "auto"): f is the share of the light leaving an
+ * exit point that the profile misses, estimated from the unshadowed irradiance of the far side
+ * (where the thickness ray leaves the object) and of the exit point's own side,
+ * f = E_far e^-m / (E_near + E_far e^-m). The walk's probability is multiplied by 0 for
+ * f <= SSS_AUTO_LIGHT_CIRCLE, 1 for f >= SSS_AUTO_LIGHT_WALK, and smoothstep of log f across the
+ * band between (continuous with a continuous slope); NaN gives 1, the safe side. */
+#define SSS_AUTO_LIGHT_CIRCLE 0.01
+#define SSS_AUTO_LIGHT_WALK 0.1
+/* The far side's cosine is wrapped, (cos + w) / (1 + w) clamped at 0: light entering near the far
+ * point but past its terminator diffuses to it (the sides of a back-lit finger). */
+#ifndef SSS_AUTO_LIGHT_WRAP
+#define SSS_AUTO_LIGHT_WRAP 1.0f
+#endif
+double sss_auto_light_prob(double f);
+/* f from the two irradiances (any common unit, >= 0) and m: 0 when neither side is lit. */
+double sss_auto_light_share(double e_near, double e_far, double m);
+
 /* ---- the presets ---------------------------------------------------------------------------------- */
 
 /* Jensen et al. 2001 measured coefficients (their Figure 5), with the eta their Rd column implies. */

@@ -505,6 +505,28 @@ static void test_auto_thin(void)
 	CHECK(c.mean < 0.7 * v.mean, "circle %g should miss much of volume's %g on a back-lit sheet", c.mean, v.mean);
 }
 
+/* The same 3 mm sheet lit from the front only: nothing lights its far side, so auto does not walk
+ * (the light factor, src/sss/README.md "auto") and its image is circle's bit for bit, while the
+ * geometric rule alone would walk every exit; lit from behind as well (test_auto_thin) it walks. */
+static void test_auto_front(void)
+{
+	const char *text = "global_settings { mm_per_unit 1 }\n"
+			   "camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+			   "light_source { <0, 100, -30> color rgb 1 intensity 2 parallel point_at <0, 0, 0> }\n"
+			   "box { <-60, -3, -60>, <60, 0, 60> material { skin { } } }\n";
+	image_stats c, a;
+	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
+	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
+	int differ = 0;
+	unsigned long walks = 0;
+	for (int i = 0; i < W * H; i++)
+		differ += a.px[i] != c.px[i], walks += a.px_walks[i];
+	printf("front-lit 3 mm sheet of skin: auto %.5f, circle %.5f, %d pixels differ, %lu walks\n", a.mean, c.mean,
+	       differ, walks);
+	CHECK(differ == 0 && walks == 0 && a.nonfinite == 0 && a.circles > 0,
+	      "auto walks a sheet lit from the front only: %d pixels differ from circle, %lu walks", differ, walks);
+}
+
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
  * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 8 l_d, and
  * more either side), seen from above, lit strongly from below and weakly from above, so the
@@ -514,7 +536,10 @@ static void test_auto_thin(void)
  * here: its circles reach the lit bottom). The choice itself is measured without that noise:
  * with direct light only, each path has one exit point on the top, and the fraction of them that
  * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
- * the band (p = 1/2) must fail the same bound, so the test sees a seam. */
+ * the band (p = 1/2) must fail the same bound, so the test sees a seam. The light factor is 1 all
+ * across: the far side's share of the exit's light, 382 e^-T / (0.96 + 382 e^-T) (the bottom's
+ * cosine 0.91, wrapped to 0.95, under the 400 light, the top's 0.96 under the 1), is 0.12 at
+ * 8 l_d, above SSS_AUTO_LIGHT_WALK, so p is the geometric rule's alone. */
 static void test_auto_wedge(void)
 {
 	const char *text =
@@ -527,6 +552,11 @@ static void test_auto_wedge(void)
 		"  face_indices { 12, <0,2,1>, <0,3,2>, <4,5,6>, <4,6,7>, <0,1,5>, <0,5,4>, <1,2,6>, <1,6,5>, <2,3,7>, "
 		"<2,7,6>, <3,0,4>, <3,4,7> }\n"
 		"  material { wax { color rgb 0.8 radius 1 ior 1.0 profile burley } } }\n";
+	/* the light factor is 1 wherever the geometric rule is not 0 (the comment above) */
+	double share = sss_auto_light_share(100.0 / sqrt(100.0 * 100.0 + 30.0 * 30.0),
+					    400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP),
+					    SSS_AUTO_CIRCLE_ABOVE);
+	CHECK(sss_auto_light_prob(share) == 1.0, "the wedge's far-side share %g at the band's end is below 1", share);
 	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
 	double xs[W];
 	world *w;
@@ -658,6 +688,7 @@ int main(void)
 	test_volume();
 	test_auto_thick();
 	test_auto_thin();
+	test_auto_front();
 	test_auto_wedge();
 	test_parts();
 	rmdir(dir);

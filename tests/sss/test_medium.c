@@ -228,6 +228,39 @@ static void check_auto_rule(void)
 	      "slope 0 at the ends of the band");
 }
 
+/* auto's light factor: 0 up to a far-side share of SSS_AUTO_LIGHT_CIRCLE, 1 from SSS_AUTO_LIGHT_WALK,
+ * continuous and monotone between with slope 0 at both ends; the share itself against its formula
+ * E_far e^-m / (E_near + E_far e^-m), 0 when the far side is unlit, NaN walking. */
+static void check_auto_light(void)
+{
+	const double lo = SSS_AUTO_LIGHT_CIRCLE, hi = SSS_AUTO_LIGHT_WALK;
+	CHECK(sss_auto_light_prob(0.0) == 0.0 && sss_auto_light_prob(lo) == 0.0 && sss_auto_light_prob(-1.0) == 0.0,
+	      "no far light: circle");
+	CHECK(sss_auto_light_prob(hi) == 1.0 && sss_auto_light_prob(1.0) == 1.0 && sss_auto_light_prob(NAN) == 1.0,
+	      "far light: the walk; NaN walks");
+	CHECK_NEAR(sss_auto_light_prob(sqrt(lo * hi)), 0.5, 1e-12);
+	const double step = 1e-6;
+	double prev = 0.0, worst_step = 0.0;
+	for (double f = 0.5 * lo; f < 1.5 * hi; f += step) {
+		double p = sss_auto_light_prob(f);
+		CHECK(p >= prev && p >= 0.0 && p <= 1.0, "f %g: p %g after %g", f, p, prev);
+		worst_step = fmax(worst_step, p - prev);
+		prev = p;
+	}
+	/* smoothstep(ln(f/lo)/ln(hi/lo)) has slope at most 1.5 / (f ln(hi/lo)), largest at f = lo */
+	double slope = 1.5 / (lo * log(hi / lo));
+	CHECK(worst_step < 1.01 * slope * step, "a jump of %g in the light factor (slope bound %g)", worst_step,
+	      slope * step);
+	CHECK(sss_auto_light_prob(lo * 1.0001) < 1e-6 && 1.0 - sss_auto_light_prob(hi / 1.0001) < 1e-6,
+	      "slope 0 at the ends of the band");
+	CHECK(sss_auto_light_share(1.0, 0.0, 2.0) == 0.0 && sss_auto_light_share(0.0, 0.0, 0.0) == 0.0 &&
+		  sss_auto_light_share(1.0, NAN, 1.0) == 0.0,
+	      "an unlit far side has no share");
+	CHECK(sss_auto_light_share(0.0, 3.0, 5.0) == 1.0, "an unlit near side: all the light is the far side's");
+	CHECK_NEAR(sss_auto_light_share(1.0, 40.0, 4.0), 40.0 * exp(-4.0) / (1.0 + 40.0 * exp(-4.0)), 1e-15);
+	CHECK_NEAR(sss_auto_light_share(2.0, 5.0, -1.0), 5.0 / 7.0, 1e-15); /* m < 0 counts as 0 */
+}
+
 int main(void)
 {
 	check_presets();
@@ -237,5 +270,6 @@ int main(void)
 	check_names();
 	check_pov_translucency();
 	check_auto_rule();
+	check_auto_light();
 	return check_done("test_medium");
 }
