@@ -417,13 +417,21 @@ static bool font_path(parser *p, const char *name, diag_loc at, const char **out
 /* text = "text" "{" "ttf" string [ "," ] string [ "," ] float [ "," ] vector ... */
 static bool text(parser *p, shape_desc *s)
 {
-	if (lang_word_is(lang_peek(p), "internal"))
-		return lang_error(p, lang_peek(p)->loc, "'internal' fonts are not supported by circe: give a ttf file");
-	if (!accept_word(p, "ttf"))
-		return lang_error_found(p, "expected 'ttf' in 'text'");
 	diag_loc fl = lang_peek(p)->loc;
 	const char *name;
-	TRY(lang_string(p, "after 'ttf'", &name));
+	if (accept_word(p, "internal")) {
+		/* POV-Ray's fonts compiled into it (base/fileinputoutput.cpp, Internal_Font_File): 1
+		 * timrom, 2 cyrvetic, 3 crystal, any other number povlogo; circe reads the same files of
+		 * povray-includes / fonts-povray from the -I folders (benchmark.pov's `internal 1`). */
+		double n;
+		TRY(lang_float(p, "after 'internal'", &n));
+		name = n == 1 ? "timrom.ttf" : n == 2 ? "cyrvetic.ttf" : n == 3 ? "crystal.ttf" : "povlogo.ttf";
+	} else {
+		if (!accept_word(p, "ttf"))
+			return lang_error_found(p, "expected 'ttf' or 'internal' in 'text'");
+		fl = lang_peek(p)->loc;
+		TRY(lang_string(p, "after 'ttf'", &name));
+	}
 	comma(p);
 	diag_loc sl = lang_peek(p)->loc;
 	TRY(lang_string(p, "as the text's string", &s->text));
