@@ -57,7 +57,7 @@ double sss_auto_walk_prob(double m);
 /* The far side's cosine is wrapped, (cos + w) / (1 + w) clamped at 0: light entering near the far
  * point but past its terminator diffuses to it (the sides of a back-lit finger). */
 #ifndef SSS_AUTO_LIGHT_WRAP
-#define SSS_AUTO_LIGHT_WRAP 1.0f
+#define SSS_AUTO_LIGHT_WRAP 0.5f
 #endif
 double sss_auto_light_prob(double f);
 /* f from the two irradiances (any common unit, >= 0) and m: 0 when neither side is lit. */

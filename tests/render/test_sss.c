@@ -537,8 +537,8 @@ static void test_auto_front(void)
  * with direct light only, each path has one exit point on the top, and the fraction of them that
  * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
  * the band (p = 1/2) must fail the same bound, so the test sees a seam. The light factor is 1 all
- * across: the far side's share of the exit's light, 382 e^-T / (0.96 + 382 e^-T) (the bottom's
- * cosine 0.91, wrapped to 0.95, under the 400 light, the top's 0.96 under the 1), is 0.12 at
+ * across: the far side's share of the exit's light, 376 e^-T / (0.96 + 376 e^-T) (the bottom's
+ * cosine 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1), is 0.12 at
  * 8 l_d, above SSS_AUTO_LIGHT_WALK, so p is the geometric rule's alone. */
 static void test_auto_wedge(void)
 {
@@ -626,6 +626,76 @@ static void test_auto_wedge(void)
 	CHECK(c2_hard > b2, "the wedge cannot tell a hard switch (chi-square %g) from the smooth rule", c2_hard);
 }
 
+/* The light factor across an image: a long wax cylinder 2 l_d across (radius 10 of l_d 10 mm),
+ * its axis along z, seen from above, lit from above (10) and below (1.48): every exit is thin
+ * (m = 2, the geometric probability 1), and the far side's share of the light, with the near
+ * cosine c = n.y and the far ones wrapped (the light from above counts there too where c < w),
+ * f = (1.48 (c + w) + 10 (w - c)+) / (1 + w) e^-2 / (10 c + ...), runs from 2 % on the crest to
+ * 100 % at the rims, across the factor's band (1 % to 10 %). With direct
+ * light only each path has one exit, where the camera's ray meets the cylinder: the walked
+ * fraction, column by column, must follow the factor computed here from that point (binomial
+ * chi-square), and must fail the geometric rule alone (p = 1). */
+static void test_auto_light_band(void)
+{
+	const char *text =
+		"global_settings { mm_per_unit 1 }\n"
+		"camera { location <0, 40, -0.5> look_at <0, 0, 0> angle 30 }\n"
+		"light_source { <0, 100, 0> color rgb 1 intensity 10 parallel point_at <0, 0, 0> }\n"
+		"light_source { <0, -100, 0> color rgb 1 intensity 1.48 parallel point_at <0, 0, 0> }\n"
+		"cylinder { <0, 0, -40>, <0, 0, 40>, 10 material { wax { color rgb 0.8 radius 10 ior 1.0 profile burley } } }\n";
+	world *w;
+	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
+	CHECK(build(text, &o, &w) && last_warnings == 0, "the cylinder builds without warnings (%d)", last_warnings);
+	double pp[W * H];
+	for (int y = 0; y < H; y++)
+		for (int x = 0; x < W; x++) {
+			render_ray r = cam_ray(world_camera(w), x, y, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
+			/* the ray against x^2 + y^2 = 100 */
+			double a = (double)r.d.x * r.d.x + (double)r.d.y * r.d.y;
+			double b = 2.0 * ((double)r.o.x * r.d.x + (double)r.o.y * r.d.y);
+			double cc = (double)r.o.x * r.o.x + (double)r.o.y * r.o.y - 100.0, disc = b * b - 4.0 * a * cc;
+			pp[y * W + x] = -1.0; /* misses: no exit */
+			if (disc <= 0.0)
+				continue;
+			double t = (-b - sqrt(disc)) / (2.0 * a), hy = r.o.y + t * r.d.y;
+			double c = hy / 10.0; /* n.y: the near cosine under the light from above */
+			if (c < 0.4)
+				continue; /* near the silhouette p moves fast within a pixel, judged at its centre */
+			double e_near = 10.0 * fmax(c, 0.0), w = SSS_AUTO_LIGHT_WRAP; /* the far side: both lights */
+			double e_far = 1.48 * fmax((c + w) / (1.0 + w), 0.0) + 10.0 * fmax((w - c) / (1.0 + w), 0.0);
+			pp[y * W + x] = sss_auto_walk_prob(2.0) * sss_auto_light_prob(sss_auto_light_share(e_near, e_far, 2.0));
+		}
+	world_free(w);
+	image_stats fr;
+	render_seed(text, 16, 1, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, 19, &fr);
+	CHECK(fr.nonfinite == 0, "the cylinder: %lu non-finite", fr.nonfinite);
+	double c2 = 0.0, c2_geo = 0.0;
+	int dof = 0;
+	for (int x = 0; x < W; x++) {
+		double n = 0.0, k = 0.0, mean = 0.0, var = 0.0;
+		for (int y = 0; y < H; y++) {
+			double p = pp[y * W + x], ni = fr.px_searches[y * W + x];
+			if (p < 0.0) { /* a column reaching the silhouette is left out */
+				n = 0.0;
+				break;
+			}
+			n += ni, k += fr.px_walks[y * W + x], mean += p * ni, var += p * (1.0 - p) * ni;
+		}
+		if (n < 50.0)
+			continue;
+		var = fmax(var, 1.0); /* a count of one: p = 0 or 1 stays defined */
+		c2 += (k - mean) * (k - mean) / var, c2_geo += (k - n) * (k - n), dof++; /* p = 1: the variance floored at one count */
+		printf("light band column %2d: walked %.4f of %.0f exits, expected %.4f\n", x, k / n, n, mean / n);
+	}
+	double b2 = dof + 4.0 * sqrt(2.0 * dof);
+	printf("light band: the walked fraction against the light factor: chi-square %.1f; against the geometric "
+	       "rule alone %.1f; bound %.1f (%d columns)\n",
+	       c2, c2_geo, b2, dof);
+	CHECK(dof >= W / 2, "the cylinder fills %d columns", dof);
+	CHECK(c2 <= b2, "auto's choice does not follow the light factor: chi-square %g > %g", c2, b2);
+	CHECK(c2_geo > b2, "the cylinder cannot tell the light factor from the geometric rule (chi-square %g)", c2_geo);
+}
+
 /* The five parts of a scene with all of them (the background seen, a skin sphere's coat and
  * BSSRDF, a diffuse floor, interreflection) sum to the whole: the paths make the same decisions
  * whatever the part, so the sums agree to float rounding, sample by sample. */
@@ -690,6 +760,7 @@ int main(void)
 	test_auto_thin();
 	test_auto_front();
 	test_auto_wedge();
+	test_auto_light_band();
 	test_parts();
 	rmdir(dir);
 	return check_done("test_sss");
