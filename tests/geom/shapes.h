@@ -1,10 +1,11 @@
 /* shapes.h - for the geometry tests: OpenSubdiv's test shapes read through circe's cage reader,
  * and the crack check of a tessellation (vertices welded by exact position, then every edge
- * shared by exactly two triangles). */
+ * shared by exactly two triangles), and a point uniformly on a triangle. */
 #ifndef CIRCE_TESTS_GEOM_SHAPES_H
 #define CIRCE_TESTS_GEOM_SHAPES_H
 
 #include "geom/cage.h"
+#include "base/rng.h"
 #include "geom/mesh.h"
 
 #include <stdio.h>
@@ -108,6 +109,17 @@ static inline const char *shape_path(const char *name)
 	const char *top = getenv("top_srcdir");
 	snprintf(buf, sizeof buf, "%s/scenes/assets/opensubdiv_shapes/%s", top ? top : ".", name);
 	return buf;
+}
+
+/* A point uniformly on triangle t. */
+static inline dvec3 sample_tri(const mesh *m, uint32_t t, rng *r)
+{
+	double u = rng_double(r), v = rng_double(r);
+	if (u + v > 1.0)
+		u = 1.0 - u, v = 1.0 - v;
+	dvec3 a = v3_to_d3(m->positions[m->indices[3 * t]]), b = v3_to_d3(m->positions[m->indices[3 * t + 1]]),
+	      c = v3_to_d3(m->positions[m->indices[3 * t + 2]]);
+	return d3_add(a, d3_add(d3_scale(d3_sub(b, a), u), d3_scale(d3_sub(c, a), v)));
 }
 
 #endif

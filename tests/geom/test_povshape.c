@@ -12,17 +12,6 @@
 
 static diag D;
 
-/* A point uniformly on triangle t. */
-static dvec3 sample_tri(const mesh *m, uint32_t t, rng *r)
-{
-	double u = rng_double(r), v = rng_double(r);
-	if (u + v > 1.0)
-		u = 1.0 - u, v = 1.0 - v;
-	dvec3 a = v3_to_d3(m->positions[m->indices[3 * t]]), b = v3_to_d3(m->positions[m->indices[3 * t + 1]]),
-	      c = v3_to_d3(m->positions[m->indices[3 * t + 2]]);
-	return d3_add(a, d3_add(d3_scale(d3_sub(b, a), u), d3_scale(d3_sub(c, a), v)));
-}
-
 /* The largest distance(p) over `per` random points of every triangle. */
 static double max_distance(const mesh *m, double (*dist)(dvec3, const double *), const double *prm, int per)
 {
