@@ -651,7 +651,9 @@ static shape_quadric_kind quadric_ellipsoid(const double q[10], dvec3 *c, double
 	bool definite = lmax > 0.0 && isfinite(lmax);
 	for (int i = 0; i < 3; i++)
 		definite = definite && sign * l[i] > 1e-12 * lmax;
-	if (!definite)
+	/* Negative definite: the solid (POV-Ray's inside, where the quadric is below 0) is the
+	 * outside of the ellipsoid, unbounded: polygonised inside its bounds as a poly is. */
+	if (!definite || sign < 0.0)
 		return SHAPE_QUADRIC_UNBOUNDED;
 	/* Centre -Q^-1 g / 2 in the eigenbasis; then (p - c)^T Q (p - c) = k. */
 	double cl[3], k = -q[9];

@@ -226,6 +226,14 @@ static void test_quadric(void)
 	      "a quadric cylinder is unbounded");
 	CHECK(shape_quadric(hyp, &a, &m, &err, &k, &D, diag_noloc()) && k == SHAPE_QUADRIC_UNBOUNDED, "a hyperboloid is unbounded");
 	CHECK(shape_quadric(none, &a, &m, &err, &k, &D, diag_noloc()) && k == SHAPE_QUADRIC_EMPTY, "x^2+y^2+z^2+1 is empty");
+	/* Negative definite: POV-Ray's inside (below 0) of -x^2-y^2-z^2+1 is the outside of the ball,
+	 * unbounded (polygonised inside its CSG box, as a poly), never the ball itself. */
+	const double out_ball[10] = {-1, -1, -1, 0, 0, 0, 0, 0, 0, 1};
+	dvec3 oc;
+	double orad;
+	CHECK(shape_quadric(out_ball, &a, &m, &err, &k, &D, diag_noloc()) && k == SHAPE_QUADRIC_UNBOUNDED &&
+		      !m.num_triangles && shape_quadric_bound(out_ball, &oc, &orad) == SHAPE_QUADRIC_UNBOUNDED,
+	      "-x^2-y^2-z^2+1's solid is the outside of the ball: unbounded (kind %d)", (int)k);
 }
 
 /* ---- polygon: the triangles cover exactly the even-odd inside -------------------------------- */
