@@ -11,7 +11,8 @@
 # OUTDIR/NAME.side.png (circe left, POV-Ray right) and OUTDIR/sheet.png, a contact sheet of every
 # pair. A scene either renderer refuses is listed with its reason. Exit 77 without povray or
 # ImageMagick. Environment: POV_SIDE_SPP (circe's samples per pixel, default 256),
-# POV_INCLUDE (default /usr/share/povray-3.7/include).
+# POV_INCLUDE (default /usr/share/povray-3.7/include), POV_SIDE_TIMEOUT (seconds each renderer may
+# take per scene, through coreutils' timeout; default none).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 circe=${1:-$here/../build/circe}
@@ -19,6 +20,9 @@ out=${2:-${TMPDIR:-/tmp}/pov_side}
 [ $# -ge 2 ] && shift 2 || shift $#
 inc=${POV_INCLUDE:-/usr/share/povray-3.7/include}
 spp=${POV_SIDE_SPP:-256}
+limit=${POV_SIDE_TIMEOUT:-}
+to=""
+[ -n "$limit" ] && to="timeout $limit"
 for t in povray convert compare montage; do
 	command -v $t >/dev/null 2>&1 || { echo "pov_side: no $t, skipped"; exit 77; }
 done
@@ -39,12 +43,13 @@ for s in "$@"; do
 	name=$(basename "$s" .pov)
 	dir=$(cd "$(dirname "$s")" && pwd)
 	c="$out/$name.circe.png" p="$out/$name.povray.png"
-	if ! (cd "$dir" && "$circe" render -I "$inc" -I "$dir" "$dir/$name.pov" -o "$out/$name.exr" --png "$c" \
+	if ! (cd "$dir" && $to "$circe" render -I "$inc" -I "$dir" "$dir/$name.pov" -o "$out/$name.exr" --png "$c" \
 		-W 160 -H 120 --spp "$spp" --quiet) 2>"$out/$name.circe.log"; then
-		printf '| %s | circe refuses: %s | | | |\n' "$name" "$(grep -m1 error "$out/$name.circe.log" | cut -c1-80)"
+		msg=$(grep -m1 error "$out/$name.circe.log" | cut -c1-80)
+		printf '| %s | circe refuses: %s | | | |\n' "$name" "${msg:-no message (over POV_SIDE_TIMEOUT?)}"
 		continue
 	fi
-	if ! (cd "$dir" && povray +W160 +H120 -D -V +I"$dir/$name.pov" +O"$p" +L"$inc" +L"$dir") >"$out/$name.povray.log" 2>&1; then
+	if ! (cd "$dir" && $to povray +W160 +H120 -D -V +I"$dir/$name.pov" +O"$p" +L"$inc" +L"$dir") >"$out/$name.povray.log" 2>&1; then
 		printf '| %s | | POV-Ray fails (%s.povray.log) | | |\n' "$name" "$name"
 		continue
 	fi
