@@ -7,6 +7,7 @@
 #include "lang/parser.h"
 #include "lang/pigment.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,8 +145,6 @@ bool lang_fn_eval(const lang_function *f, const double *args, double *out, const
 	switch (f->kind) {
 	case LANG_FN_CODE: return run_code(f, args, out, failed);
 	case LANG_FN_INTERNAL:
-		if (!f->impl)
-			break;
 		out[0] = f->impl(args);
 		return true;
 	case LANG_FN_TRANSFORM: {
@@ -275,6 +274,13 @@ const char *lang_fn_internal_name(int n, int *n_params)
 		return NULL;
 	*n_params = internals[n].n_params;
 	return internals[n].name;
+}
+
+double (*lang_fn_internal_impl(int n))(const double *args)
+{
+	if (n < 0 || (size_t)n >= sizeof internals / sizeof internals[0])
+		return NULL;
+	return internals[n].impl ? internals[n].impl : lang_fn_internal_more(n);
 }
 
 /* ---- splines ----------------------------------------------------------------------------- */
@@ -760,7 +766,8 @@ static bool internal_body(parser *p, lang_function *f)
 	f->kind = LANG_FN_INTERNAL;
 	f->internal = (int)n;
 	f->n_params = np;
-	f->impl = internals[n].impl ? internals[n].impl : lang_fn_internal_more((int)n);
+	f->impl = lang_fn_internal_impl((int)n);
+	assert(f->impl); /* every internal has one: test_func */
 	return lang_expect(p, LTK_RPAREN, "to close 'internal ('");
 }
 
@@ -978,9 +985,6 @@ static bool function_value(parser *p, const lang_token *self, value *out)
 
 bool lang_fn_report(parser *p, diag_loc at, const lang_function *failed)
 {
-	if (failed->kind == LANG_FN_INTERNAL)
-		return lang_error(p, at, "'%s' (internal(%d)) is not supported by circe", internals[failed->internal].name,
-				  failed->internal);
 	return lang_error(p, at, "the pattern '%s' is not supported by circe (in the function '%s')",
 			  failed->unsupported ? failed->unsupported : "?", failed->name);
 }

@@ -46,7 +46,7 @@ typedef struct lang_function {
 	/* LANG_FN_CODE */
 	const lang_fn_op *code;
 	int n_code;
-	/* LANG_FN_INTERNAL: its number; impl NULL for one circe does not implement */
+	/* LANG_FN_INTERNAL: its number and implementation (lang_fn_internal_impl) */
 	int internal;
 	double (*impl)(const double *args);
 	const xform *xf; /* LANG_FN_TRANSFORM */
@@ -60,8 +60,8 @@ typedef struct lang_function {
 } lang_function;
 
 /* Evaluates f at args (f->n_params values): out[0..f->n_out-1]. False when f, or a function it
- * calls, cannot be evaluated by circe (an internal(N) not implemented, a pattern circe lacks):
- * *failed is that function. Results are IEEE doubles (a NaN is the caller's to refuse). */
+ * calls, is a pattern function of a pattern circe lacks (f->unsupported names it): *failed is
+ * that function. Results are IEEE doubles (a NaN is the caller's to refuse). */
 bool lang_fn_eval(const lang_function *f, const double *args, double *out, const lang_function **failed);
 
 /* A POV-Ray spline: entries sorted by key, each a vector of `terms` components (2..5). */
@@ -101,6 +101,9 @@ double lang_fn_float2(int tok, double x, double y);
 /* The internal functions of functions.inc: the name POV-Ray gives internal(n) and its parameter
  * count; NULL past the table. */
 const char *lang_fn_internal_name(int n, int *n_params);
+/* internal(n)'s implementation, from func.c's table or internals.c's; every n of the table has
+ * one (test_func checks them all); NULL past the table. */
+double (*lang_fn_internal_impl(int n))(const double *args);
 /* The internal functions of lang/internals.c by number (NULL for one it does not have). */
 double (*lang_fn_internal_more(int n))(const double *args);
 

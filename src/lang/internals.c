@@ -4,8 +4,8 @@
  * as POV-Ray clamps them), the "_2d" curves swept or revolved, the helices, spirals, meshes and
  * blobs, and the noise-based fractals (f_ridge, f_ridged_mf, f_hetero_mf, f_noise_generator),
  * which run circe's noise (scene/pattern.h's pattern_noise, POV-Ray's range [0, 1]) and so have
- * POV-Ray's structure, not its values. f_pattern (77) is POV-Ray's hook of pattern functions,
- * never called by a scene: it stays unimplemented. func.c's table takes them from
+ * POV-Ray's structure, not its values; f_pattern (77), POV-Ray's hook of pattern functions,
+ * is 0 when a scene calls it directly, as in POV-Ray. func.c's table takes them from
  * lang_fn_internal_more. */
 #include "lang/func.h"
 
@@ -505,6 +505,14 @@ static double f_ridged_mf(const double *a)
 /* POV-Ray's noise of generator P0: circe has one noise, whichever is asked. */
 static double f_noise_generator(const double *a) { return pattern_noise(d3(X, Y, Z)); }
 
+/* POV-Ray's f_pattern: the slot its pattern functions run through; called as internal(77) it has
+ * no pattern and gives 0 (povray 3.7.0 prints 0 at any point: tests/lang/pov_internals_scene). */
+static double f_pattern(const double *a)
+{
+	(void)a;
+	return 0.0;
+}
+
 double (*lang_fn_internal_more(int n))(const double *)
 {
 	static double (*const more[])(const double *) = {
@@ -523,7 +531,7 @@ double (*lang_fn_internal_more(int n))(const double *)
 		[55] = f_quartic_saddle, [58] = f_ridge, [59] = f_ridged_mf, [62] = f_spikes, [63] = f_spikes_2d,
 		[64] = f_spiral, [65] = f_steiners_roman, [66] = f_strophoid, [67] = f_strophoid_2d,
 		[72] = f_torus_gumdrop, [73] = f_umbrella, [74] = f_witch_of_agnesi, [75] = f_witch_of_agnesi_2d,
-		[78] = f_noise_generator,
+		[77] = f_pattern, [78] = f_noise_generator,
 	};
 	return n >= 0 && n < (int)(sizeof more / sizeof *more) ? more[n] : NULL;
 }

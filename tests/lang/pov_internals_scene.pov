@@ -1,6 +1,7 @@
-// pov_internals_scene: functions.inc's internal functions (all but the noise-based ones and
-// f_pattern) at points with parameters that take each branch; pov_internals_scene.stderr is what
-// povray 3.7.0 printed for this file (tests/lang/pov_includes.sh compares circe's output with it).
+// pov_internals_scene: functions.inc's internal functions (all but the noise-based ones; f_pattern,
+// internal(77), is 0 when called directly) at points with parameters that take each branch;
+// pov_internals_scene.stderr is what povray 3.7.0 printed for this file (tests/lang/pov_includes.sh
+// compares circe's output with it).
 #version 3.7;
 #include "functions.inc"
 #debug concat("f_algbr_cyl1 1 ", str(f_algbr_cyl1(0.3, 0.5, -0.4, 0.9, 1.3, 1, 0.5, 30), 0, 6), "\n")
@@ -315,3 +316,6 @@
 #debug concat("f_witch_of_agnesi_2d 7 ", str(f_witch_of_agnesi_2d(0.3, 0.5, -0.4, 0.9, 1.3, 0.7, 0, 0.6, 0.8), 0, 6), "\n")
 #debug concat("f_witch_of_agnesi_2d 8 ", str(f_witch_of_agnesi_2d(0.7, -0.2, 0.6, 0.9, 1.3, 0.7, 0, 0.6, 0.8), 0, 6), "\n")
 #debug concat("f_witch_of_agnesi_2d 9 ", str(f_witch_of_agnesi_2d(-1.1, 0.8, 0.35, 0.9, 1.3, 0.7, 0, 0.6, 0.8), 0, 6), "\n")
+#declare F77 = function { internal(77) }
+#debug concat("f_pattern 1 ", str(F77(0.3, 0.5, -0.4), 0, 6), "\n")
+#debug concat("f_pattern 2 ", str(F77(-1.1, 0.8, 0.35), 0, 6), "\n")

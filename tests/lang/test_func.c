@@ -228,9 +228,21 @@ static void check_splines(void)
 	CHECK_NEAR(at(&s, 3), wiggly(0.7), 0);
 }
 
+/* Every internal(N) of POV-Ray's table has an implementation (func.c's or internals.c's): the
+ * evaluator relies on it. */
+static void check_internals_complete(void)
+{
+	int np, n = 0;
+	for (; lang_fn_internal_name(n, &np); n++)
+		CHECK(lang_fn_internal_impl(n) != NULL, "internal(%d) '%s' has no implementation", n,
+		      lang_fn_internal_name(n, &np));
+	CHECK(n == 79 && !lang_fn_internal_impl(n) && !lang_fn_internal_impl(-1), "%d internals", n);
+}
+
 int main(void)
 {
 	check_cases(cases, sizeof cases / sizeof cases[0], "");
+	check_internals_complete();
 	FILE *probe = fopen("/usr/share/povray-3.7/include/functions.inc", "r");
 	if (probe) { /* functions.inc itself: skipped without povray-includes */
 		fclose(probe);

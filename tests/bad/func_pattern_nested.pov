@@ -1,0 +1,3 @@
+#declare F = function { pattern { slope y } }
+#declare F2 = function { 2*F(x, y, z) - 1 }
+#declare X = F2(1, 2, 3);
