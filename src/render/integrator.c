@@ -506,9 +506,9 @@ static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
  * the ray left (sss_auto_light_share of the two sides' unshadowed irradiance) multiplies it by
  * sss_auto_light_prob (0 below 1 %, 1 from 10 %): the walk only where light reaches the far side.
  * Circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
- * A random number is drawn only where the probability is strictly between 0 and 1, so a thick
- * object (or a thin one lit from the front only) renders exactly as under circle (the same random
- * stream), a thin one lit through exactly as under volume. */
+ * The choice draws its own sampler dimension, and only where the probability is strictly between
+ * 0 and 1, so a thick object (or a thin one lit from the front only) renders exactly as under
+ * circle, a thin one lit through exactly as under volume. */
 static bool auto_entry(const render_scene *s, const render_settings *set, const render_sss *m,
 		       const render_hit *exit, vec3 n_shade, vec3 n_out, vec3 wo, render_sampler *g, sss_entry *e,
 		       render_sample *out)
