@@ -243,9 +243,14 @@ static bool colour_operand(parser *p, const colour_form *f, const lang_token *kw
 		return lang_error(p, at, "'%.*s' needs a float or a %d-vector, found %s", (int)kw->len, kw->text, f->terms,
 				  lang_value_kind_name(&o));
 	}
-	if (f->srgb)
-		for (int i = 0; i < 3; i++)
-			c->v[i] = srgb_decode(c->v[i]);
+	if (f->srgb) { /* POV-Ray 3.7 decodes sRGB into its working space (express.cpp Parse_Express's
+			* workingGammaToSRGB): linear^(1/G), which the end of the parse raises back to linear */
+		double g = scene_working_gamma(&p->sc->global, p->version);
+		for (int i = 0; i < 3; i++) {
+			double l = srgb_decode(c->v[i]);
+			c->v[i] = g == 1.0 || l == 0.0 ? l : l > 0.0 ? pow(l, 1.0 / g) : -pow(-l, 1.0 / g);
+		}
+	}
 	return finite_result(p, kw->loc, c, "the colour");
 }
 

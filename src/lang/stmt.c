@@ -2718,6 +2718,7 @@ static bool global_settings(parser *p)
 			lang_advance(p);
 			TRY(lang_float(p, "after 'assumed_gamma'", &x) && positive(p, t.loc, "assumed_gamma", x));
 			g->assumed_gamma = x;
+			g->assumed_gamma_set = true;
 			break;
 		case LTK_KW_NOISE_THRESHOLD: /* circe's: adaptive sampling, as render --noise-threshold */
 			lang_advance(p);

@@ -20,6 +20,7 @@ scene *scene_new(void)
 	s->global.mm_per_unit = 10.0;
 	s->global.max_trace_level = 5;
 	s->global.assumed_gamma = 1.0;
+	s->global.working_gamma = 1.0;
 	s->global.ambient_light = v3s(1.0f);
 	s->global.subsurface_samples[0] = s->global.subsurface_samples[1] = 50; /* POV-Ray 3.7 scenedata.cpp */
 	return s;

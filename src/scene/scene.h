@@ -288,6 +288,8 @@ typedef struct scene_global {
 	double mm_per_unit; /* default 10 */
 	int max_trace_level; /* default 5 */
 	double assumed_gamma; /* default 1 */
+	bool assumed_gamma_set; /* written: POV-Ray's explicit gamma mode (else its #version decides) */
+	double working_gamma; /* the gamma the parse raised the scene's colours by (scene_apply_working_gamma) */
 	double noise_threshold; /* adaptive sampling's (render --noise-threshold); 0: off, the default */
 	vec3 ambient_light; /* default 1: scales every explicit finish ambient (scene/finish.h) */
 	/* global_settings { subsurface { samples D, S  radiosity B } }: POV-Ray's switch for its
@@ -370,6 +372,17 @@ static inline const scene_light *scene_light_at(const scene *s, size_t i)
  * the value written and the value kept — once per place in the text, however often the parser
  * passes it (a loop, a macro). False only when memory runs out (reported to d). */
 bool scene_color_finalise(scene *s, diag *d, diag_loc loc, const char *what, scene_color_use use, vec3 *c);
+
+/* POV-Ray 3.7's working gamma for a scene (parser/parse.cpp, the end of Parse_Frame): the
+ * assumed_gamma written, else for a scene whose #version ends below 3.7 its legacy mode (no
+ * gamma handling: the numbers go to the display as they are, a gamma of about 2.2), else 1. */
+#define SCENE_LEGACY_GAMMA 2.2
+double scene_working_gamma(const scene_global *g, double version);
+/* Raises every colour of the scene (lights, background, fog, sky, materials' pigments, finish
+ * and interior colours, media emission) to c^g once the parse ends (scene/gamma.c; doc/language.md
+ * "assumed_gamma"): circe's linear rendering of a scene written in POV-Ray's working space of gamma g.
+ * Images, filter, transmit, normals and coefficients are left as they are. False when memory runs out. */
+bool scene_apply_working_gamma(scene *s, double g);
 
 /* POV-Ray's subsurface switch, once the whole scene is read: each texture whose finish has
  * subsurface { } becomes a pov_sss texture (its interior's ior, or 1 as POV-Ray's atmosphere,
