@@ -114,18 +114,48 @@ static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_
  * surface lets pigment * filter + transmit through, a smooth dielectric where the object has an
  * interior, straight through where it has none; its diffuse is scaled by POV-Ray's opacity
  * 1 - filter - transmit (core/render/trace.cpp: att = Opacity(), highlights unscaled). */
-static void build_clear(bsdf_params *b, const scene_material *sm)
+static bool pigment_can_clear(const scene_pigment *pg, int depth)
+{
+	if (!pg || depth > SCENE_PIGMENT_MAX_DEPTH || pg->is_normal)
+		return false;
+	if (pg->kind == SCENE_PAT_PLAIN)
+		return pg->color[3] + pg->color[4] > 0.0f;
+	if (pg->kind == SCENE_PAT_IMAGE) /* outside a `once` image POV-Ray's pigment is clear */
+		return pg->filter_all + pg->transmit_all > 0.0f || pg->once;
+	for (uint32_t i = 0; i < pg->n_entries; i++) {
+		const scene_map_entry *e = &pg->entries[i];
+		if (e->pigment ? pigment_can_clear(e->pigment, depth + 1) : e->color[3] + e->color[4] > 0.0f)
+			return true;
+	}
+	return false;
+}
+
+/* A texture whose pattern pigment can let light through somewhere: its transparency is the
+ * point's (bsdf_clear.patterned, set at each hit by render/world.c's shade_pattern), the
+ * material's own filter and transmit unused (POV-Ray's pigment gives all five channels). */
+static bool pattern_clear(const scene_material *sm)
+{
+	return sm->kind == MAT_TEXTURE && !sm->pov_sss && sm->pigment && pigment_can_clear(sm->pigment, 0);
+}
+
+static void build_clear(bsdf_params *b, world_material *wm, const scene_material *sm)
 {
 	float f = sm->filter, t = sm->transmit;
-	if (!(f + t > 0.0f))
+	bool patterned = pattern_clear(sm);
+	if (!(f + t > 0.0f) && !patterned)
 		return;
 	bsdf_clear *c = &b->clear;
+	if (patterned) {
+		f = t = 0.0f;
+		c->patterned = true;
+		wm->opaque_diffuse = b->pov.diffuse;
+	}
 	c->tint = v3_min(v3_add(v3_scale(sm->color, f), v3s(t)), v3s(1.0f));
 	/* A finish's own reflection (glass.inc's reflection { 0.1, 1 fresnel }) is the surface's
 	 * mirror: the dielectric does not reflect a second time on top of it. */
 	const bsdf_pov_finish_spec *fs = &b->pov;
 	bool finish_reflects = v3_max_comp(fs->refl_min) > 0.0f || v3_max_comp(fs->refl_max) > 0.0f;
-	c->reflect = finish_reflects ? 0.0f : fminf(1.0f, f + t);
+	c->reflect = finish_reflects ? 0.0f : patterned ? 1.0f : fminf(1.0f, f + t);
 	b->pov.diffuse *= fmaxf(0.0f, 1.0f - f - t); /* bsdf_pov_set_pigment derives the lobe from it */
 	if (!(sm->ior > 0.0f)) {
 		c->kind = BSDF_CLEAR_THIN;
@@ -201,7 +231,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 			w->bsdfs[k].pov.sss_diffuse = w->bsdfs[k].pov.diffuse;
 			w->bsdfs[k].pov.diffuse = 0.0f;
 		}
-		build_clear(&w->bsdfs[k], sm);
+		build_clear(&w->bsdfs[k], wm, sm);
 		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 		break;
 	case MAT_EMISSION:

@@ -60,6 +60,10 @@ typedef struct bsdf_clear {
 	float reflect; /* DIELECTRIC: weight of the Fresnel reflection, min(1, filter + transmit) */
 	float ior;     /* DIELECTRIC: of the inside (outside is 1) */
 	bsdf_fade fade;
+	/* The pigment is a pattern whose colours carry filter or transmit (a checker of Clear):
+	 * tint and reflect are the point's, set by the shading (render/world.c shade_pattern), where
+	 * the built reflect is the factor (0 or 1) on min(1, filter + transmit). */
+	bool patterned;
 } bsdf_clear;
 
 /* A material's reflection parameters at one shading point (textures already applied). */

@@ -218,6 +218,13 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 		if (h.material < 0 || (size_t)h.material >= s->material_count)
 			return v3s(0.0f);
 		const bsdf_params *b = &s->materials[h.material];
+		bsdf_params at;
+		if (b->clear.patterned && s->shade) { /* the pattern's transparency at this point */
+			vec3 ns = h.ns;
+			at = *b;
+			s->shade(s->user, &h, &at, &ns);
+			b = &at;
+		}
 		if (!shadow_passes(set, b) || (s->sss && s->sss[h.material]))
 			return v3s(0.0f);
 		float c = v3_dot(ray.d, h.ng);

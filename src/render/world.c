@@ -204,7 +204,9 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
 
 /* A POV-Ray pigment at the hit, in its object's space (the scene's placement undone, whatever
  * the instance's mesh transform) or at <u, v, 0> with uv_mapping: the diffuse colour, clamped to
- * a reflectance. Its filter and transmit are not used yet. */
+ * a reflectance. A texture whose pattern carries filter or transmit (bsdf_clear.patterned) takes
+ * the point's: its transparent part lets pigment * filter + transmit through and its diffuse is
+ * scaled by the opacity 1 - filter - transmit, as a plain colour's (build_material.c build_clear). */
 static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params)
 {
 	const world_inst *in = &w->insts[hit->object];
@@ -217,6 +219,12 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 	pattern_eval(&w->patterns, wm->pattern, p, tol, c);
 	vec3 rgb = v3(c[0], c[1], c[2]);
 	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
+	if (params->kind == BSDF_POV && params->clear.patterned) {
+		float f = fminf(fmaxf(c[3], 0.0f), 1.0f), t = fminf(fmaxf(c[4], 0.0f), 1.0f);
+		params->clear.tint = v3_min(v3_add(v3_scale(rgb, f), v3s(t)), v3s(1.0f));
+		params->clear.reflect *= fminf(1.0f, f + t);
+		params->pov.diffuse = wm->opaque_diffuse * fmaxf(0.0f, 1.0f - f - t);
+	}
 	if (params->kind == BSDF_POV) /* the finish's lobes follow the pigment (its diffuse included) */
 		bsdf_pov_set_pigment(params, rgb);
 	else

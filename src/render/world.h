@@ -95,6 +95,8 @@ typedef struct world_material {
 	bool has_pattern; /* a POV-Ray pigment: node `pattern` of world.patterns gives the albedo */
 	bool pattern_uv;  /* evaluated at <u, v, 0> (uv_mapping) rather than the object-space point */
 	float pattern_kd; /* the BSDF's diffuse over the pigment (a texture's finish diffuse; else 1) */
+	float opaque_diffuse; /* a patterned transparent texture (bsdf_clear.patterned): its diffuse
+				 weight before the point's opacity 1 - filter - transmit scales it */
 	uint32_t pattern;
 	bool has_normal;  /* a POV-Ray normal { }: node `normal` of world.patterns perturbs the normal */
 	bool normal_uv;

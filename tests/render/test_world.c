@@ -319,6 +319,38 @@ int main(void)
 		}
 	}
 
+	/* A checker of an opaque colour and POV-Ray's Clear-like rgbf: the texture is transparent
+	 * where the pattern says (thin: no interior), its tint pigment * filter + transmit and its
+	 * diffuse scaled by the opacity there; opaque and at its full diffuse elsewhere. */
+	ok = build("plane { y, 0.5 pigment { checker rgb <0.2, 0.4, 0.6> rgbf <1, 0.5, 1, 1> } finish { diffuse 0.6 } }\n"
+		   "sphere { <0, 5, 0>, 1 pigment { rgb 0.5 } }\n",
+		   &w, &err);
+	CHECK(ok, "checker with filter: %s", err);
+	free(err);
+	if (ok) {
+		render_hit hc;
+		CHECK(trace(w, v3(0.5f, 3, 0.5f), v3(0, -1, 0), &hc), "hit the checker's first square");
+		const bsdf_params base = w->bsdfs[hc.material];
+		CHECK(base.clear.kind == BSDF_CLEAR_THIN && base.clear.patterned, "a patterned thin surface");
+		bsdf_params at = base;
+		vec3 ns = hc.ns;
+		w->rs.shade(w->rs.user, &hc, &at, &ns);
+		CHECK(v3_max_comp(at.clear.tint) == 0.0f && at.clear.reflect == 0.0f, "opaque square: tint %g",
+		      v3_max_comp(at.clear.tint));
+		CHECK_NEAR(at.pov.diffuse, 0.6, 1e-6);
+		CHECK(trace(w, v3(1.5f, 3, 0.5f), v3(0, -1, 0), &hc), "hit the checker's second square");
+		at = base;
+		w->rs.shade(w->rs.user, &hc, &at, &ns);
+		CHECK(same_vec(at.clear.tint, v3(1, 0.5f, 1)), "clear square: tint (%g %g %g)", at.clear.tint.x,
+		      at.clear.tint.y, at.clear.tint.z);
+		CHECK_NEAR(at.pov.diffuse, 0.0, 0);
+		/* the plain sphere stays opaque */
+		CHECK(trace(w, v3(0, 10, 0), v3(0, -1, 0), &hc) && w->bsdfs[hc.material].clear.kind == BSDF_CLEAR_NONE &&
+			      !w->bsdfs[hc.material].clear.patterned,
+		      "an opaque pigment is no transparent surface");
+		world_free(w);
+	}
+
 	check_sphere_levels();
 	check_many_spheres();
 	check_camera_text();
