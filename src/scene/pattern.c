@@ -32,15 +32,23 @@ static double clamp01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
 
 double pattern_noise(dvec3 p) { return clamp01(0.5 + 0.5 * NOISE_GAIN * perlin(p)); }
 
+/* POV-Ray 3.7's noise (texture.cpp Noise, noise_generator 2, the default from #version 3.5 on)
+ * is its lattice sum s brought into [0, 1] as (s + 1.05242) * 0.48985582; DNoise's components
+ * are such sums themselves, not brought in (texture.cpp OriDNoise). */
+#define POV_NOISE2_SCALE 0.48985582
+
 /* Three noises at points far apart (so the components are independent), as POV-Ray's DNoise
- * draws three components from its lattice, each distributed as noise - 0.5 (POV-Ray's DNoise
- * components are its noise's sum before the 0.5 is added: portablenoise.cpp). */
+ * draws three components from its lattice: each is circe's noise - 0.5 taken back to the scale
+ * of POV-Ray's sum (divided by POV_NOISE2_SCALE, so about twice noise - 0.5), which is what
+ * bumps, dents and the turbulence warp move by. Measured beside POV-Ray (a plane under
+ * `normal { bumps 0.1 }` and a parallel light: the shading's spread was 0.46 of POV-Ray's before). */
 dvec3 pattern_dnoise(dvec3 p)
 {
-	double x = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
-	double y = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
-	double z = 0.5 * NOISE_GAIN * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
-	return d3(fmax(-0.5, fmin(0.5, x)), fmax(-0.5, fmin(0.5, y)), fmax(-0.5, fmin(0.5, z)));
+	const double k = 0.5 * NOISE_GAIN / POV_NOISE2_SCALE, lim = 0.5 / POV_NOISE2_SCALE;
+	double x = k * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
+	double y = k * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
+	double z = k * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
+	return d3(fmax(-lim, fmin(lim, x)), fmax(-lim, fmin(lim, y)), fmax(-lim, fmin(lim, z)));
 }
 
 /* noise.cpp's Turbulence (its original-generator branch: circe's noise already spans [0, 1]):
@@ -991,6 +999,10 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 	for (uint32_t i = 0; i < n->n_warps; i++)
 		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
 			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, true);
+	/* POV-Ray's Warp_Normal (warps.cpp, without no_bump_scale): the normal is unit in the
+	 * pattern's space when the perturbation is added, so a scaled pattern or object keeps the
+	 * bumps' angle; UnWarp_Normal makes the result unit again. */
+	v = d3_normalize(v);
 	double eps = POV_EPSILON;
 	dvec3 q = warped(pg, n, p, &eps);
 	bool has_map = n->n_entries > 0 && pg->entries[n->entry0].node >= 0; /* a normal_map's entries */
@@ -1015,6 +1027,7 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 	for (uint32_t i = n->n_warps; i-- > 0;)
 		if (pg->warps[n->warp0 + i].kind == WARP_TRANSFORM)
 			v = pattern_normal_through(&pg->warps[n->warp0 + i].xf, v, false);
+	v = d3_normalize(v);
 	if (isfinite(v.x) && isfinite(v.y) && isfinite(v.z))
 		*nrm = v;
 }

@@ -390,12 +390,13 @@ static void check_function_pattern(void)
 	/* Perturb_Normal's slope of v = y/2 + 1/4 (accuracy 0.02, bump_size 0.5): the four pyramid
 	 * directions v_i sum to 0 and sum v_i v_i.y = 4/3 y, so n moves by
 	 * 0.5 * -5 * (0.02 / 0.02) * 0.5 * 0.02 * 4/3 along y, i.e. by -1/30 (the value rises with y:
-	 * the normal tips down the slope). */
+	 * the normal tips down the slope), and is made unit (UnWarp_Normal). */
 	dvec3 n = d3(0, 0, 1);
 	pattern_perturb(&pp, r[3], d3(0.2, 0.3, -0.4), &n);
+	double len = sqrt(1.0 + 1.0 / 900.0);
 	CHECK_NEAR(n.x, 0.0, 1e-8); /* the pyramid's directions to 9 digits */
-	CHECK_NEAR(n.y, -1.0 / 30.0, 1e-8);
-	CHECK_NEAR(n.z, 1.0, 1e-8);
+	CHECK_NEAR(n.y, -1.0 / 30.0 / len, 1e-8);
+	CHECK_NEAR(n.z, 1.0 / len, 1e-8);
 	pattern_prog_free(&pp);
 	scene_free(sc);
 }

@@ -237,8 +237,8 @@ static void check_warps(void)
 	CHECK(xform_scale(d3(2, 2, 2), &sc.xf), "scale");
 	q = pattern_warp_point(&sc, d3(1, 0, 0));
 	CHECK_NEAR(q.x, 0.5, 1e-12);
-	/* Turbulence moves a point by at most |amount| (1 + omega + ...) / 2, each octave's vector
-	 * noise in [-0.5, 0.5]. */
+	/* Turbulence moves a point by at most |amount| (1 + omega + ...) L, each octave's vector
+	 * noise in [-L, L], L = 0.5 / 0.48985582 (POV-Ray's DNoise: its noise's sum, pattern_dnoise). */
 	pattern_warp tw = {.kind = WARP_TURBULENCE, .turb = {d3(0.5, 0.5, 0.5), 6, 0.5, 2.0}};
 	double most = 0;
 	for (int i = 0; i < 2000; i++) {
@@ -246,7 +246,7 @@ static void check_warps(void)
 		dvec3 d = d3_sub(pattern_warp_point(&tw, p), p);
 		most = fmax(most, fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))));
 	}
-	CHECK(most <= 0.5 * 0.5 * (2 - 1.0 / 32) + 1e-12 && most > 0.05, "turbulence displacement %g", most);
+	CHECK(most <= 0.5 * (0.5 / 0.48985582) * (2 - 1.0 / 32) + 1e-12 && most > 0.1, "turbulence displacement %g", most);
 }
 
 static void check_noise(void)
@@ -341,8 +341,9 @@ static void check_defaults(void)
 
 /* Perturb_Normal: bumps adds amount * DNoise; any other pattern its slope on the tetrahedron,
  * which for gradient x (value x) is -5 * 0.02 * amount * (4/3) e_x whatever the accuracy (the
- * four unit vectors of a regular tetrahedron have sum 0 and sum v v^T = 4/3 I); a scale 2 of the
- * pattern halves the slope and the transpose brings it back. */
+ * four unit vectors of a regular tetrahedron have sum 0 and sum v v^T = 4/3 I); the result is
+ * unit (UnWarp_Normal). A scale 2 of the pattern keeps the angle: Warp_Normal makes the normal
+ * unit in the pattern's space before the slope is added (warps.cpp, without no_bump_scale). */
 static void check_normals(void)
 {
 	pattern_node n = pattern_node_default(PATTERN_BUMPS);
@@ -350,15 +351,19 @@ static void check_normals(void)
 	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
 	dvec3 p = d3(0.3, 1.7, -2.2), v = d3(0, 0, 1);
 	pattern_perturb(&pg, 0, p, &v);
-	dvec3 want = d3_add(d3(0, 0, 1), d3_scale(pattern_dnoise(p), 0.8));
+	dvec3 want = d3_normalize(d3_add(d3(0, 0, 1), d3_scale(pattern_dnoise(p), 0.8)));
 	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "bumps: <%g, %g, %g>", v.x, v.y, v.z);
+	/* the same bumps under a normal of length 3: the normal is made unit first */
+	v = d3(0, 0, 3);
+	pattern_perturb(&pg, 0, p, &v);
+	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "bumps on a long normal: <%g, %g, %g>", v.x, v.y, v.z);
 	n = pattern_node_default(PATTERN_GRADIENT);
 	n.vector = d3(1, 0, 0), n.bump_amount = 0.3, n.frequency = 0; /* the raw value x, no wrap */
 	for (double acc = 0.01; acc < 0.1; acc *= 3) {
 		n.accuracy = acc;
 		v = d3(0, 1, 0);
 		pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
-		CHECK(fabs(v.x + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9 && fabs(v.z) < 1e-9,
+		CHECK(fabs(v.x / v.y + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(d3_length(v) - 1) < 1e-12 && fabs(v.z) < 1e-9,
 		      "gradient x's slope at accuracy %g: <%g, %g, %g>", acc, v.x, v.y, v.z);
 	}
 	pattern_warp sc = {.kind = WARP_TRANSFORM};
@@ -366,9 +371,9 @@ static void check_normals(void)
 	pg.warps = &sc, pg.n_warps = 1, n.warp0 = 0, n.n_warps = 1;
 	v = d3(0, 1, 0);
 	pattern_perturb(&pg, 0, d3(0.2, 0, 0), &v);
-	/* into: n' = 2 n; slope as before; out: / 2 -> <-0.04 / 2, 1, 0> */
-	CHECK(fabs(v.x + 0.5 * 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(v.y - 1) < 1e-9, "scaled slope: <%g, %g, %g>", v.x,
-	      v.y, v.z);
+	/* into: n' = 2 n, made unit; slope as before; out: / 2, made unit -> the unscaled angle */
+	CHECK(fabs(v.x / v.y + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(d3_length(v) - 1) < 1e-12, "scaled slope: <%g, %g, %g>",
+	      v.x, v.y, v.z);
 	/* bump_map: a flat image leaves the normal; a ramp rising to +x tilts it towards -x (the
 	 * triangle of heights faces away from the rise), in the frame of the normal and world y */
 	float flat[4 * 4 * 4], ramp[4 * 4 * 4];
@@ -485,9 +490,9 @@ static void check_normal_map(void)
 	dvec3 p = d3(0.2, 0.4, 0), v1 = d3(0, 1, 0), v2 = d3(0, 1, 0), v = d3(0, 1, 0);
 	pattern_perturb(&pg, 1, p, &v1);
 	pattern_perturb(&pg, 2, p, &v2);
-	CHECK(fabs(v1.x) > 1e-3 && fabs(v2.x - 2 * v1.x) < 1e-9, "the entries alone: %g, %g", v1.x, v2.x);
+	CHECK(fabs(v1.x) > 1e-3 && fabs(v2.x / v2.y - 2 * v1.x / v1.y) < 1e-9, "the entries alone: %g, %g", v1.x, v2.x);
 	pattern_perturb(&pg, 0, p, &v);
-	dvec3 want = d3_scale(d3_add(v1, d3_scale(v2, 3)), 0.25);
+	dvec3 want = d3_normalize(d3_scale(d3_add(v1, d3_scale(v2, 3)), 0.25)); /* UnWarp_Normal's unit */
 	CHECK(d3_length(d3_sub(v, want)) < 1e-12, "average normal <%g, %g, %g>, want <%g, %g, %g>", v.x, v.y, v.z, want.x,
 	      want.y, want.z);
 	/* gradient y (value 0.4 at p) with normal_map [0 n1] [1 n2]: 0.6 n1 + 0.4 n2, normalised */
@@ -545,14 +550,20 @@ static void check_slope_map(void)
 	n.vector = d3(1, 0, 0), n.bump_amount = 0.3, n.frequency = 0, n.slope_map = true, n.n_entries = 2;
 	pattern_entry e[2] = {{.value = 0, .color = {0, 0}, .node = -1}, {.value = 1, .color = {1, 0}, .node = -1}};
 	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 2};
-	const double xs[2] = {0.5, 0.2}, slopes[2] = {1.5, 0.96}, ax[4] = {0.942809041, -0.471404521, -0.471404521, 0};
+	const double xs[2] = {0.5, 0.2}, slopes[2] = {1.5, 0.96}, ax[4] = {0.942809041, -0.471404521, -0.471404521, 0},
+		     ay[4] = {-0.333333333, -0.333333333, -0.333333333, 1}, az[4] = {0, 0.816496581, -0.816496581, 0};
 	for (int i = 0; i < 2; i++) {
 		dvec3 v = d3(0, 1, 0);
 		pattern_perturb(&pg, 0, d3(xs[i], 0, 0), &v);
-		double want = 0.0;
-		for (int k = 0; k < 4; k++)
-			want += ax[k] * smooth_h(xs[i] + 0.02 * ax[k]) * -5.0 * 0.3;
-		CHECK(fabs(v.x - want) < 1e-9, "slope_map at x %g: <%g, %g, %g>, want x %.9g", xs[i], v.x, v.y, v.z, want);
+		double want = 0.0, wy = 1.0, wz = 0.0; /* the normal before it is made unit */
+		for (int k = 0; k < 4; k++) {
+			double h = smooth_h(xs[i] + 0.02 * ax[k]) * -5.0 * 0.3;
+			want += ax[k] * h, wy += ay[k] * h, wz += az[k] * h;
+		}
+		double len = sqrt(want * want + wy * wy + wz * wz);
+		CHECK(fabs(v.x - want / len) < 1e-9 && fabs(v.y - wy / len) < 1e-9 && fabs(v.z - wz / len) < 1e-9,
+		      "slope_map at x %g: <%g, %g, %g>, want <%.9g, %.9g, %.9g>", xs[i], v.x, v.y, v.z, want / len, wy / len,
+		      wz / len);
 		CHECK(fabs(want / (-0.04 * slopes[i]) - 1) < 0.02, "the four-point slope %g against the derivative's %g", want,
 		      -0.04 * slopes[i]);
 	}
