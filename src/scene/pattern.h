@@ -166,7 +166,8 @@ void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v,
 
 /* Noise, in [0, 1] and 0.5 on average, like POV-Ray's Noise(). */
 double pattern_noise(dvec3 p);
-/* Vector noise, each component in [-0.5, 0.5] and 0 on average (POV-Ray's DNoise). */
+/* Vector noise, each component in [-0.5, 0.5] / 0.48985582 and 0 on average (POV-Ray's DNoise: the
+ * bare lattice sum of its noise_generator 2, about twice noise - 0.5). */
 dvec3 pattern_dnoise(dvec3 p);
 /* POV-Ray's Turbulence (a sum of octaves of noise) and DTurbulence (of vector noise). */
 double pattern_turbulence(dvec3 p, const pattern_turb *t);
