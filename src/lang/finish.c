@@ -254,7 +254,7 @@ bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool 
 	*matched = true;
 	if (t.kind == LTK_KW_DIFFUSE) {
 		lang_advance(p);
-		accept_word(p, "albedo"); /* brilliance 1: POV-Ray's albedo adjustment (b + 1) / 2 is 1 */
+		f->diffuse_albedo = accept_word(p, "albedo"); /* POV-Ray's adjustment (b + 1) / 2 (build) */
 		/* Above 1 as POV-Ray allows (soft.pov's 1.5): the BSDF scales its lobes' sum to 1. */
 		TRY(lang_float(p, "after 'diffuse'", &x) && at_least(p, t.loc, "finish diffuse", x, 0));
 		m->diffuse = (float)x;
@@ -275,7 +275,8 @@ bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool 
 		f->brilliance = (float)x;
 		if (x != 1)
 			warn_once(p, WARN_BRILLIANCE, t.loc,
-				  "'brilliance' other than 1 is rendered as 1: circe's diffuse lobe is Lambert's");
+				  "'brilliance' other than 1 keeps circe's Lambert lobe, of the energy POV-Ray's cos^b "
+				  "reflects: the diffuse times 2 / (b + 1)");
 	} else if (accept_word(p, "reflection")) {
 		TRY(reflection(p, f));
 	} else if (accept_word(p, "fresnel")) {

@@ -14,7 +14,8 @@ typedef struct scene_finish {
 	vec3 ambient;	  /* an explicit `ambient`: glows ambient * pigment * ambient_light */
 	bool has_ambient; /* POV-Ray's implicit 0.1 is what circe's global illumination replaces */
 	vec3 emission;	  /* glows emission * pigment */
-	float brilliance; /* 1: Lambert; another value is accepted and warned about */
+	float brilliance; /* 1: Lambert; another: a Lambert lobe of the energy of POV-Ray's cos^b (build) */
+	bool diffuse_albedo; /* `diffuse albedo`: POV-Ray's (b + 1) / 2, which undoes that energy */
 	float phong, phong_size; /* POV-Ray's phong highlight and its exponent on the reflected vector */
 	float metallic;		 /* highlights tinted by the pigment, in [0, 1] */
 	vec3 refl_min, refl_max; /* reflection at normal and at grazing incidence */

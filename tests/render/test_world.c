@@ -351,6 +351,24 @@ int main(void)
 		world_free(w);
 	}
 
+	/* brilliance b: a Lambert lobe of the energy POV-Ray's cos^b reflects, 2 / (b + 1) of the
+	 * diffuse; `diffuse albedo` undoes it as POV-Ray's (b + 1) / 2 does; b = 1 changes nothing. */
+	ok = build("sphere { <-3, 0, 0>, 1 pigment { rgb 1 } finish { diffuse 0.6 brilliance 5 } }\n"
+		   "sphere { <0, 0, 0>, 1 pigment { rgb 1 } finish { diffuse albedo 0.6 brilliance 5 } }\n"
+		   "sphere { <3, 0, 0>, 1 pigment { rgb 1 } finish { diffuse 0.6 brilliance 1 } }\n",
+		   &w, &err);
+	CHECK(ok, "brilliance: %s", err);
+	free(err);
+	if (ok) {
+		const float want[3] = {0.6f * 2.0f / 6.0f, 0.6f, 0.6f};
+		for (int i = 0; i < 3; i++) {
+			render_hit hb;
+			CHECK(trace(w, v3(3.0f * (float)(i - 1), 0, -5), v3(0, 0, 1), &hb), "hit sphere %d", i);
+			CHECK_NEAR(w->bsdfs[hb.material].pov.diffuse, want[i], 1e-6);
+		}
+		world_free(w);
+	}
+
 	check_sphere_levels();
 	check_many_spheres();
 	check_camera_text();
