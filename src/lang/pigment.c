@@ -78,6 +78,13 @@ static bool starts_modifier(parser *p)
 	return false;
 }
 
+bool lang_pigment_quick_colour(parser *p, bool *matched)
+{
+	*matched = accept_word(p, "quick_color") || accept_word(p, "quick_colour");
+	double c[5];
+	return !*matched || lang_color5(p, "after 'quick_color'", c); /* a preview colour: circe has no preview */
+}
+
 bool lang_pigment_starts(parser *p, bool has_base)
 {
 	if (peek_pattern(p) != SCENE_PAT_COUNT || lang_peek(p)->kind == LTK_KW_IMAGE_MAP || peek_word(p, "uv_mapping"))
@@ -480,6 +487,71 @@ static bool image_map(parser *p, pig_build *b)
 
 /* ---- pattern heads and modifiers --------------------------------------------------------- */
 
+/* A float when one follows (POV-Ray's Allow_Float), else def. */
+static bool optional_float(parser *p, const char *ctx, double def, double *out)
+{
+	lang_tok k = lang_peek(p)->kind;
+	*out = def;
+	if (k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || k == LTK_PLUS || peek_declared(p, VAL_FLOAT))
+		return lang_float(p, ctx, out);
+	return true;
+}
+
+/* [ "," ] [ lo ] [ "," ] [ hi ] after a slope's or altitude's vector, as POV-Ray's Parse_Pattern
+ * reads them: kept as lo and hi - lo, or both 0 (with a warning) when hi = lo != 0. */
+static bool slope_range(parser *p, const char *what, double *lo, double *width)
+{
+	diag_loc at = lang_peek(p)->loc;
+	double l, h;
+	lang_accept(p, LTK_COMMA);
+	TRY(optional_float(p, "as the low end of the range", 0.0, &l));
+	lang_accept(p, LTK_COMMA);
+	TRY(optional_float(p, "as the high end of the range", 0.0, &h));
+	if (h != 0.0 && h == l) {
+		diag_warning(p->d, at, "zero %s range, ignored (as POV-Ray does)", what);
+		*lo = *width = 0.0;
+	} else {
+		*lo = l, *width = h - l;
+	}
+	return true;
+}
+
+/* slope_args = vector | "{" [ "point_at" ] vector [ "," lo [ "," hi ] ]
+ *              [ "altitude" vector [ "," lo [ "," hi ] ] ] "}"   (POV-Ray 3.7's Parse_Pattern):
+ * the vectors' lengths weight the slope and the altitude, then both are made unit. */
+static bool slope_args(parser *p, scene_pigment *g, diag_loc kw)
+{
+	dvec3 alt = d3(0, 0, 0);
+	if (lang_peek(p)->kind == LTK_LBRACE) {
+		diag_loc open = lang_advance(p)->loc;
+		g->slope_point_at = accept_word(p, "point_at");
+		TRY(lang_vec3(p, g->slope_point_at ? "after 'point_at'" : "as the slope's direction", &g->slope_dir));
+		TRY(slope_range(p, "slope", &g->slope_lo, &g->slope_width));
+		if (peek_word(p, "altitude")) {
+			if (g->slope_point_at)
+				return lang_error(p, lang_peek(p)->loc, "'altitude' cannot be used with 'point_at' in a slope pattern");
+			lang_advance(p);
+			TRY(lang_vec3(p, "after 'altitude'", &alt));
+			TRY(slope_range(p, "altitude", &g->altit_lo, &g->altit_width));
+		}
+		TRY(lang_expect_close(p, open, "slope"));
+	} else {
+		TRY(lang_vec3(p, "after 'slope'", &g->slope_dir));
+	}
+	if (g->slope_point_at) {
+		g->slope_len = 1.0, g->altit_len = 0.0;
+		return true;
+	}
+	double sl = d3_length(g->slope_dir), al = d3_length(alt), total = sl + al;
+	if (!(total > 0.0) || !isfinite(total))
+		return lang_error(p, kw, "the slope's direction and altitude both have length 0");
+	if (sl > 0.0)
+		g->slope_dir = d3_scale(g->slope_dir, 1.0 / sl);
+	g->altit_dir = al > 0.0 ? d3_scale(alt, 1.0 / al) : alt;
+	g->slope_len = sl / total, g->altit_len = 1.0 - g->slope_len;
+	return true;
+}
+
 /* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
  * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
  * object, which holds them), over a declared pigment or normal. */
@@ -495,6 +567,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 	lang_advance(p);
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_SLOPE)
+		return slope_args(p, &b->pg, kw);
 	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */
 		diag_loc open = lang_peek(p)->loc;
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
@@ -733,10 +807,10 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 		b->pg.uv_mapping = true;
 		return true;
 	}
-	if (accept_word(p, "quick_color") || accept_word(p, "quick_colour")) {
-		double c[5];
-		return lang_color5(p, "after 'quick_color'", c); /* a preview colour: circe has no preview */
-	}
+	TRY(lang_pigment_quick_colour(p, matched));
+	if (*matched)
+		return true;
+	*matched = true;
 	if (accept_word(p, "noise_generator")) {
 		long n;
 		TRY(lang_int(p, "after 'noise_generator'", 1, 3, &n));
@@ -759,8 +833,41 @@ static bool normal_amount(parser *p, pig_build *b)
 	return true;
 }
 
+/* tiles = "tiles" "{" texture "tile2" texture "}": POV-Ray's old checker of two textures
+ * (3.7's Parse_Tiles: the first texture on the checker's odd cells, entry 1, tile2's on the even
+ * ones, entry 0). A tile of layered textures is not supported, as a layered texture in any
+ * patterned texture's entry. */
+static bool tiles(parser *p, pig_build *b)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'tiles'"));
+	b->pg = scene_pigment_defaults(SCENE_PAT_CHECKER, kw);
+	b->n_warps = 0;
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, 2, sizeof *e);
+	if (!e)
+		return lang_error(p, kw, "out of memory");
+	for (int i = 1; i >= 0; i--) {
+		if (i == 0 && !accept_word(p, "tile2"))
+			return lang_error_found(p, "expected 'tile2' and the second tile's texture in 'tiles'");
+		if (lang_peek(p)->kind != LTK_KW_TEXTURE)
+			return lang_error_found(p, "expected the %s tile's texture in 'tiles'", i ? "first" : "second");
+		e[i].value = i;
+		TRY(texture_entry(p, b, LTK_RBRACE, &e[i]));
+		if (lang_peek(p)->kind == LTK_KW_TEXTURE)
+			return lang_error(p, lang_peek(p)->loc, "a layered texture in a tile (a texture after a texture) is "
+								"not supported by circe");
+	}
+	TRY(lang_expect_close(p, open, "tiles"));
+	const scene_material *first = b->tex_mats[0]; /* the textures in the entries' order */
+	b->tex_mats[0] = b->tex_mats[1], b->tex_mats[1] = first;
+	b->pg.entries = e, b->pg.n_entries = 2, b->pg.block_list = true, b->pg.pigment_map = false;
+	return true;
+}
+
 static bool head(parser *p, pig_build *b)
 {
+	if (b->tex && peek_word(p, "tiles"))
+		return tiles(p, b);
 	scene_pattern_kind k = peek_pattern(p);
 	if (k != SCENE_PAT_COUNT) {
 		double amount = b->pg.bump_amount, accuracy = b->pg.accuracy;
@@ -957,7 +1064,7 @@ bool lang_normal_value(parser *p, value *out)
 
 /* ---- patterned textures ------------------------------------------------------------------------ */
 
-bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT; }
+bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT || peek_word(p, "tiles"); }
 
 bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
 			  const scene_material *const **mats, uint32_t *n)

@@ -11,6 +11,9 @@
 /* True when the lookahead begins a body lang_pigment_rest reads: a pattern's word, image_map,
  * uv_mapping, or, over a declared pigment (has_base), one of a pattern's modifiers. */
 bool lang_pigment_starts(parser *p, bool has_base);
+/* "quick_color" colour (or quick_colour) when the lookahead is one: POV-Ray's preview colour,
+ * read and ignored (circe has no quick preview). *matched says whether it was. */
+bool lang_pigment_quick_colour(parser *p, bool *matched);
 /* The rest of a pigment's body up to its '}' (consumed), over base (a declared pigment's tree,
  * or NULL); *out receives the new tree (in the scene's arena). open: the pigment's '{'. */
 bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out);

@@ -474,6 +474,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
 		copy_pigment(m, v->mat);
 	}
+	for (bool q = true; q;) /* pigment { quick_color C } over a texture's pigment (chess2.pov) */
+		TRY(lang_pigment_quick_colour(p, &q));
 	if (lang_pigment_starts(p, m->pigment != NULL)) {
 		TRY(lang_pigment_rest(p, m->pigment, open, &m->pigment));
 		m->image = NULL;
@@ -497,6 +499,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 			return pattern_transform(p, m, moved, "pigment");
 		bool matched;
 		TRY(pattern_transform_item(p, m, &moved, &matched));
+		if (!matched)
+			TRY(lang_pigment_quick_colour(p, &matched));
 		if (!matched)
 			return lang_expect_close(p, open, "pigment");
 	}

@@ -459,11 +459,49 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	}
 }
 
+/* POV-Ray 3.7.0's slope_pattern (pattern.cpp; SlopePattern::EvaluateRaw of later versions): the
+ * angle between the surface's normal and the direction (or the direction to the point_at
+ * point), asin(cos) mapped to [0, 1] (0 facing away, 0.5 across, 1 along), through the low and
+ * width given; with an altitude, blended by the two weights with the point's projection on the
+ * altitude's direction (through its low and width); wrapped into [0, 1) (1 itself just below).
+ * The normal is the surface's in world space, not moved by the pattern's transforms (POV-Ray's
+ * PNormal); the altitude sees the pattern's point. No surface (a function, a medium, a sky): 0. */
+static double slope(const pattern_node *n, dvec3 p, const pattern_surface *sf)
+{
+	if (!sf)
+		return 0.0;
+	double v1;
+	if (n->slope_point_at) {
+		dvec3 d = d3_sub(n->slope_dir, sf->point);
+		double len = d3_length(d);
+		v1 = len > 0.0 ? d3_dot(sf->normal, d) / len : 0.0;
+	} else {
+		v1 = d3_dot(sf->normal, n->slope_dir);
+	}
+	v1 = v1 > 1.0 ? 1.0 : v1 < -1.0 ? -1.0 : v1;
+	v1 = (asin(v1) / M_PI * 2.0 + 1.0) * 0.5;
+	if (n->slope_width != 0.0)
+		v1 = (v1 - n->slope_lo) / n->slope_width;
+	if (n->altit_len == 0.0) {
+		if (v1 == 1.0)
+			return v1 - POV_EPSILON;
+		return v1 < 0.0 ? 1.0 + fmod(v1, 1.0) : fmod(v1, 1.0);
+	}
+	double v2 = d3_dot(p, n->altit_dir);
+	if (n->altit_width != 0.0)
+		v2 = (v2 - n->altit_lo) / n->altit_width;
+	double v = n->slope_len * v1 + n->altit_len * v2;
+	if (v - 1.0 < POV_EPSILON && v >= 1.0)
+		return v - POV_EPSILON;
+	return v < 0.0 ? 1.0 + fmod(v, 1.0) : fmod(v, 1.0);
+}
+
 /* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
  * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double eps, int depth,
+		       float out[5]);
 
-static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps)
+static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps)
 {
 	switch (n->kind) {
 	case PATTERN_CHECKER: /* CheckerPattern::Evaluate */
@@ -485,18 +523,19 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, do
 			return 0.0;
 		return v > 1.0 ? fmod(v, 1.0) : v;
 	}
+	case PATTERN_SLOPE: return slope(n, p, sf);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
 			return 0.0;
-		eval_depth(pg, (uint32_t)n->child, p, eps, 0, c);
+		eval_depth(pg, (uint32_t)n->child, p, sf, eps, 0, c);
 		return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
 	}
 	default: return raw_shapes(n, p, eps);
 	}
 }
 
-double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, POV_EPSILON); }
+double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, NULL, POV_EPSILON); }
 
 static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
 
@@ -576,7 +615,7 @@ double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 {
 	double eps = POV_EPSILON;
 	dvec3 q = warped(pg, n, p, &eps);
-	double raw = raw_eps(pg, n, q, eps);
+	double raw = raw_eps(pg, n, q, NULL, eps);
 	if (is_block(n->kind) || n->kind == PATTERN_PLAIN || n->kind == PATTERN_IMAGE)
 		return raw;
 	return pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
@@ -591,17 +630,19 @@ static void finite5(float c[5])
 
 
 /* An entry's colour at p: its own, or its pigment's. */
-static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, double eps, int depth, float out[5])
+static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, const pattern_surface *sf, double eps,
+			int depth, float out[5])
 {
 	if (e->node >= 0 && depth < PATTERN_MAX_DEPTH) {
-		eval_depth(pg, (uint32_t)e->node, p, eps, depth + 1, out);
+		eval_depth(pg, (uint32_t)e->node, p, sf, eps, depth + 1, out);
 		return;
 	}
 	for (int i = 0; i < 5; i++)
 		out[i] = e->node >= 0 ? 0.0f : e->color[i];
 }
 
-static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, double eps, int depth,
+static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, const pattern_surface *sf,
+		       double eps, int depth,
 		       float out[5])
 {
 	const pattern_entry *e = pg->entries + n->entry0;
@@ -612,11 +653,11 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 		return;
 	}
 	if (k == 1 || v <= e[0].value) {
-		entry_color(pg, &e[0], p, eps, depth, out);
+		entry_color(pg, &e[0], p, sf, eps, depth, out);
 		return;
 	}
 	if (v >= e[k - 1].value) {
-		entry_color(pg, &e[k - 1], p, eps, depth, out);
+		entry_color(pg, &e[k - 1], p, sf, eps, depth, out);
 		return;
 	}
 	uint32_t j = 1;
@@ -625,8 +666,8 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 	double span = e[j].value - e[j - 1].value;
 	double t = span > 0.0 ? (v - e[j - 1].value) / span : 1.0;
 	float a[5], b[5];
-	entry_color(pg, &e[j - 1], p, eps, depth, a);
-	entry_color(pg, &e[j], p, eps, depth, b);
+	entry_color(pg, &e[j - 1], p, sf, eps, depth, a);
+	entry_color(pg, &e[j], p, sf, eps, depth, b);
 	for (int i = 0; i < 5; i++)
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
@@ -672,20 +713,21 @@ static void image_color(const pattern_node *n, dvec3 p, float out[5])
 
 void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])
 {
-	map_lookup(pg, n, v, p, POV_EPSILON, depth, out);
+	map_lookup(pg, n, v, p, NULL, POV_EPSILON, depth, out);
 }
 
 /* A layered texture's pigment (POV-Ray's texture { } texture { }, bottom first): each upper layer
  * shows its own colour where it is opaque, 1 - filter - transmit, and lets the layers below
  * through by transmit, tinted by its colour by filter (trace.cpp's layering of textures, on
  * pigments alone). What the whole lets through is the layers' product. */
-static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps,
+		   int depth, float out[5])
 {
 	for (int i = 0; i < 5; i++)
 		out[i] = 0.0f;
 	for (uint32_t j = 0; j < n->n_entries; j++) {
 		float c[5];
-		entry_color(pg, &pg->entries[n->entry0 + j], p, eps, depth, c);
+		entry_color(pg, &pg->entries[n->entry0 + j], p, sf, eps, depth, c);
 		if (j == 0) {
 			memcpy(out, c, sizeof c);
 			continue;
@@ -699,13 +741,14 @@ static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, doubl
 
 /* POV-Ray's average (pigment.cpp ColourBlendMap/PigmentBlendMap::ComputeAverage): the entries'
  * colours at p, each weighted by its value, divided by the weights' sum (the parser makes it > 0). */
-static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps,
+		    int depth, float out[5])
 {
 	double sum[5] = {0}, total = 0.0;
 	for (uint32_t j = 0; j < n->n_entries; j++) {
 		const pattern_entry *e = &pg->entries[n->entry0 + j];
 		float c[5];
-		entry_color(pg, e, p, eps, depth, c);
+		entry_color(pg, e, p, sf, eps, depth, c);
 		for (int i = 0; i < 5; i++)
 			sum[i] += e->value * c[i];
 		total += e->value;
@@ -714,7 +757,8 @@ static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, doub
 		out[i] = total != 0.0 ? (float)(sum[i] / total) : 0.0f;
 }
 
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double eps, int depth,
+		       float out[5])
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (n->kind == PATTERN_PLAIN) {
@@ -723,7 +767,7 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 		return;
 	}
 	if (n->kind == PATTERN_LAYERS) {
-		layers(pg, n, p, eps, depth, out);
+		layers(pg, n, p, sf, eps, depth, out);
 		finite5(out);
 		return;
 	}
@@ -731,23 +775,29 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 	if (n->kind == PATTERN_IMAGE) {
 		image_color(n, q, out);
 	} else if (n->kind == PATTERN_AVERAGE) {
-		average(pg, n, q, eps, depth, out);
+		average(pg, n, q, sf, eps, depth, out);
 	} else if (is_block(n->kind)) {
-		uint32_t i = (uint32_t)raw_eps(pg, n, q, eps);
+		uint32_t i = (uint32_t)raw_eps(pg, n, q, sf, eps);
 		if (i < n->n_entries)
-			entry_color(pg, &pg->entries[n->entry0 + i], q, eps, depth, out);
+			entry_color(pg, &pg->entries[n->entry0 + i], q, sf, eps, depth, out);
 		else
 			out[0] = out[1] = out[2] = out[3] = out[4] = 0.0f;
 	} else {
-		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
-		map_lookup(pg, n, v, q, eps, depth, out);
+		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, sf, eps), n->frequency, n->phase, n->exponent);
+		map_lookup(pg, n, v, q, sf, eps, depth, out);
 	}
 	finite5(out);
 }
 
+void pattern_eval_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double tol,
+		     float out[5])
+{
+	eval_depth(pg, node, p, sf, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+}
+
 void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5])
 {
-	eval_depth(pg, node, p, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+	pattern_eval_at(pg, node, p, NULL, tol, out);
 }
 
 pattern_node pattern_node_default(pattern_kind kind)
@@ -867,7 +917,7 @@ static double slope_lookup(const pattern_prog *pg, const pattern_node *n, double
 	return t * t * t * (s1 + s2 + 2.0 * (h1 - h2)) - t * t * (2.0 * s1 + s2 + 3.0 * (h1 - h2)) + t * s1 + h1;
 }
 
-static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps)
+static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, const pattern_surface *sf, double eps)
 {
 	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
 					     {-0.471404521, -0.333333333, 0.816496581},
@@ -879,7 +929,7 @@ static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q
 	for (int i = 0; i < 4; i++) {
 		dvec3 v = d3(pyramid[i][0], pyramid[i][1], pyramid[i][2]);
 		dvec3 at = d3_add(q, d3_scale(v, delta));
-		double value = raw_eps(pg, n, at, eps);
+		double value = raw_eps(pg, n, at, sf, eps);
 		if (!is_block(n->kind))
 			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
 		if (n->slope_map)
@@ -929,13 +979,15 @@ static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
 	return d3_sub(d3_add(d3_scale(xp, bump.x), d3_scale(yp, bump.y)), d3_scale(zp, bump.z));
 }
 
-static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm);
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, int depth,
+			  dvec3 *nrm);
 
 /* A normal's normal_map (normal.cpp Perturb_Normal): the entries are normals, each perturbing v at
  * q in turn. average: their results weighted by the entries' values over the weights' sum
  * (NormalBlendMap::ComputeAverage); another pattern: the two entries around its value, blended
  * by the map's weights, then normalised, as POV-Ray's. */
-static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps, int depth, dvec3 v)
+static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, const pattern_surface *sf, double eps,
+			int depth, dvec3 v)
 {
 	const pattern_entry *e = pg->entries + n->entry0;
 	uint32_t k = n->n_entries;
@@ -945,13 +997,13 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		for (uint32_t j = 0; j < k; j++) {
 			dvec3 vj = v;
 			if (e[j].node >= 0)
-				perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
+				perturb_depth(pg, (uint32_t)e[j].node, q, sf, depth + 1, &vj);
 			sum = d3_add(sum, d3_scale(vj, e[j].value));
 			total += e[j].value;
 		}
 		return total != 0.0 ? d3_scale(sum, 1.0 / total) : v;
 	}
-	double raw = raw_eps(pg, n, q, eps);
+	double raw = raw_eps(pg, n, q, sf, eps);
 	double val = is_block(n->kind) ? raw : pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
 	uint32_t lo = 0, hi = 0;
 	double t = 0.0;
@@ -967,22 +1019,28 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 	}
 	dvec3 a = v, b = v;
 	if (e[hi].node >= 0) /* an entry the build filled with a colour (a block list's default) is flat */
-		perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
+		perturb_depth(pg, (uint32_t)e[hi].node, q, sf, depth + 1, &b);
 	if (lo != hi) {
 		if (e[lo].node >= 0)
-			perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
+			perturb_depth(pg, (uint32_t)e[lo].node, q, sf, depth + 1, &a);
 		b = d3_add(d3_scale(a, 1.0 - t), d3_scale(b, t));
 	}
 	double len = d3_length(b);
 	return len > 0.0 ? d3_scale(b, 1.0 / len) : v;
 }
 
-void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+void pattern_perturb_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, dvec3 *nrm)
 {
-	perturb_depth(pg, node, p, 0, nrm);
+	perturb_depth(pg, node, p, sf, 0, nrm);
 }
 
-static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm)
+void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+{
+	pattern_perturb_at(pg, node, p, NULL, nrm);
+}
+
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, int depth,
+			  dvec3 *nrm)
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (depth > PATTERN_MAX_DEPTH)
@@ -995,7 +1053,7 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 	dvec3 q = warped(pg, n, p, &eps);
 	bool has_map = n->n_entries > 0 && pg->entries[n->entry0].node >= 0; /* a normal_map's entries */
 	if (has_map) {
-		v = normal_map(pg, n, q, eps, depth, v);
+		v = normal_map(pg, n, q, sf, eps, depth, v);
 	} else {
 		switch (n->kind) {
 		case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
@@ -1009,7 +1067,7 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 		case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
 		case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
 		case PATTERN_PLAIN: break;
-		default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
+		default: v = d3_add(v, slope_normal(pg, n, q, sf, eps)); break;
 		}
 	}
 	for (uint32_t i = n->n_warps; i-- > 0;)

@@ -63,6 +63,9 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;
 	n.turb = (pattern_turb){pg->turb.amount, pg->turb.octaves, pg->turb.omega, pg->turb.lambda};
 	n.fn = pg->fn;
+	n.slope_dir = pg->slope_dir, n.altit_dir = pg->altit_dir, n.slope_len = pg->slope_len, n.altit_len = pg->altit_len;
+	n.slope_lo = pg->slope_lo, n.slope_width = pg->slope_width, n.altit_lo = pg->altit_lo;
+	n.altit_width = pg->altit_width, n.slope_point_at = pg->slope_point_at;
 	return n;
 }
 

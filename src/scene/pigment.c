@@ -78,6 +78,14 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_SLOPE) {
+			const dvec3 d = d3_add(pg->slope_dir, d3(0, 0, 0)), a = d3_add(pg->altit_dir, d3(0, 0, 0)); /* no -0 */
+			fprintf(o, " %s <%g, %g, %g> weight %g low %g width %g", pg->slope_point_at ? "point_at" : "direction", d.x,
+				d.y, d.z, pg->slope_len, pg->slope_lo, pg->slope_width);
+			if (pg->altit_len != 0.0)
+				fprintf(o, " altitude <%g, %g, %g> weight %g low %g width %g", a.x, a.y, a.z, pg->altit_len,
+					pg->altit_lo, pg->altit_width);
+		}
 		if (pg->kind == SCENE_PAT_MAGNET)
 			fprintf(o, " type %d %s", pg->magnet_type, pg->magnet_julia ? "julia" : "mandel");
 		if (pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA || pg->kind == SCENE_PAT_MAGNET)

@@ -26,7 +26,7 @@
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
-	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet")
+	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -122,6 +122,12 @@ typedef struct scene_pigment {
 	bool block_list;  /* entries are a block pattern's list */
 	scene_fn fn;	  /* FUNCTION: its function */
 	bool slope_map;	  /* a normal's slope_map: each entry's color[0] a height, color[1] its slope */
+	/* SLOPE, as POV-Ray's parser leaves it: the unit direction (point_at: the point) and its
+	 * weight, the altitude's unit direction and weight (the weights add to 1), each one's low and
+	 * width (hi - lo; 0: not given) */
+	dvec3 slope_dir, altit_dir;
+	double slope_len, altit_len, slope_lo, slope_width, altit_lo, altit_width;
+	bool slope_point_at;
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

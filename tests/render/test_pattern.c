@@ -251,7 +251,7 @@ static void check_warps(void)
 
 static void check_noise(void)
 {
-	bool perm_ok = true, seen[256] = {0};
+	bool perm_ok = true, seen[256] = {0, 0, 0};
 	for (int i = 0; i < 256; i++) {
 		perm_ok &= !seen[pattern_perm(i)];
 		seen[pattern_perm(i)] = true;
@@ -558,8 +558,69 @@ static void check_slope_map(void)
 	}
 }
 
+/* POV-Ray 3.7.0's slope_pattern worked by hand: v1 = (asin(n . d) / (pi / 2) + 1) / 2, through
+ * (v1 - lo) / width, blended with the altitude's (p . a - lo) / width by the weights, wrapped
+ * into [0, 1) (1 itself just below 1). The normal is the surface's, not the point's. */
+static void check_slope(void)
+{
+	const double r = sqrt(0.5);
+	struct {
+		dvec3 dir, normal, point, p;
+		double lo, width, alen, alo, awidth;
+		bool point_at;
+		double want;
+	} rows[] = {
+		{{0, 1, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 1.0 - 1e-10}, /* along: 1, kept below 1 */
+		{{0, 1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.5},	     /* across */
+		{{0, 1, 0}, {0, -1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.0},	     /* facing away */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.75},	     /* 45 degrees: asin = pi/4 */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0.5, 0.5, 0, 0, 0, false, 0.5},    /* slope 0.5 to 1 stretched */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0.5, 0, 0, 0, false, 0.5},	     /* 1.5 wraps to 0.5 */
+		{{0, -1, 0}, {0.6, -0.8, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, (asin(0.8) / M_PI * 2 + 1) / 2},
+		/* weights 1/4 and 3/4 (|<0,-1,0>| and |3y|): 0.25 * 0.5 + 0.75 * (0.4 + 1) / 2 */
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0.4, 0}, 0, 0, 0.75, -1, 2, false, 0.65},
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0.4, 5}, 0, 0, 0.75, 0, 0, false, 0.125 + 0.3}, /* no range: p . y */
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 5.4, 0}, 0, 0, 0.75, 0, 0, false, 0.175}, /* 4.175 wraps */
+		/* point_at <10, 10, 0> seen from the origin with normal x: cos 45 degrees */
+		{{10, 10, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 0.75},
+		{{0, 10, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 1.0 - 1e-10},
+		{{0, -10, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 0.0},
+	};
+	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+		pattern_node n = pattern_node_default(PATTERN_SLOPE);
+		n.slope_dir = rows[i].dir, n.slope_point_at = rows[i].point_at;
+		n.slope_lo = rows[i].lo, n.slope_width = rows[i].width;
+		n.altit_len = rows[i].alen, n.slope_len = 1.0 - rows[i].alen, n.altit_dir = d3(0, 1, 0);
+		n.altit_lo = rows[i].alo, n.altit_width = rows[i].awidth;
+		pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+		pattern_surface sf = {rows[i].normal, rows[i].point};
+		double v = pattern_value(&pg, &n, rows[i].p);
+		CHECK(v == 0.0, "slope %zu without a surface gives 0 (POV-Ray's), got %g", i, v);
+		float c[5];
+		pattern_entry e[2] = {{.value = 0, .color = {0, 0, 0}, .node = -1}, {.value = 1, .color = {1, 1, 1}, .node = -1}};
+		pg.entries = e, pg.n_entries = 2, n.entry0 = 0, n.n_entries = 2;
+		pattern_eval_at(&pg, 0, rows[i].p, &sf, 0.0, c);
+		CHECK(fabs(c[0] - rows[i].want) < 1e-6, "slope row %zu: %.9g, want %.9g", i, c[0], rows[i].want);
+	}
+	/* In a normal, the slope part is the same at the four samples: only the altitude tilts it,
+	 * as a gradient of weight 3/4 along y would (amount 0.5, the four-point scheme's -5 factor). */
+	pattern_node n = pattern_node_default(PATTERN_SLOPE);
+	n.slope_dir = d3(0, -1, 0), n.slope_len = 0.25, n.altit_len = 0.75, n.altit_dir = d3(1, 0, 0);
+	pattern_node g = pattern_node_default(PATTERN_GRADIENT);
+	g.vector = d3(0.75, 0, 0);
+	pattern_prog ps = {.nodes = &n, .n_nodes = 1}, pgr = {.nodes = &g, .n_nodes = 1};
+	pattern_surface sf = {d3(0, 1, 0), d3(0, 0, 0)};
+	dvec3 a = d3(0, 1, 0), b = d3(0, 1, 0);
+	pattern_perturb_at(&ps, 0, d3(0.3, 0, 0), &sf, &a);
+	pattern_perturb(&pgr, 0, d3(0.3, 0, 0), &b);
+	CHECK(fabs(a.x - b.x) < 1e-9 && fabs(a.y - b.y) < 1e-9 && fabs(a.z - b.z) < 1e-9 && fabs(a.x) > 0.01,
+	      "a slope normal tilts as its altitude's gradient: <%g, %g, %g> against <%g, %g, %g>", a.x, a.y, a.z, b.x, b.y,
+	      b.z);
+}
+
 int main(void)
 {
+	check_slope();
 	check_normals();
 	check_crackle();
 	check_fractals();
