@@ -6,11 +6,15 @@
  * are matched here by their spelling: the keyword table stays as it is. */
 #include "lang/pigment.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 enum {
-	MAX_WARPS = 64 /* warps and transforms of one pigment (consecutive transforms are one) */
+	MAX_WARPS = 64, /* warps and transforms of one pigment (consecutive transforms are one) */
+	MAX_DF3_VOXELS = 1 << 26 /* a density_file's voxels: 256 MiB as floats */
 };
 
 /* A pigment being read: the node and the warps and entries it will own. */
@@ -516,6 +520,97 @@ static bool slope_range(parser *p, const char *what, double *lo, double *width)
 	return true;
 }
 
+/* A data file the scene names (POV-Ray's Locate_File): beside the file that names it, then in each
+ * -I folder; the path in the arena, or NULL (no error said). */
+static const char *data_path(parser *p, const char *name, diag_loc at)
+{
+	const char *from = at.src ? at.src->name : "";
+	const char *slash = strrchr(from, '/');
+	size_t nl = strlen(name);
+	for (size_t i = 0; i <= p->opt.n_include_dirs; i++) {
+		const char *dir = i == 0 ? from : p->opt.include_dirs[i - 1];
+		size_t dl = name[0] == '/' ? 0 : i == 0 ? (slash ? (size_t)(slash - from) : 0) : strlen(dir);
+		char *path = arena_alloc(&p->sc->arena, dl + nl + 2, 1, 1);
+		if (!path)
+			return NULL;
+		memcpy(path, dir, dl);
+		size_t k = dl;
+		if (dl && dir[dl - 1] != '/')
+			path[k++] = '/';
+		memcpy(path + k, name, nl + 1);
+		if (access(path, R_OK) == 0)
+			return path;
+		if (name[0] == '/')
+			break;
+	}
+	return NULL;
+}
+
+/* POV-Ray 3.7's Read_Density_File: three big-endian 16-bit sizes, then the voxels, x fastest, of
+ * 8, 16 or 32 bits (big-endian), whichever the file's length fits; each kept as its integer over
+ * its type's largest. */
+static bool read_df3(parser *p, scene_pigment *g, const char *path, diag_loc at)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return lang_error(p, at, "density_file '%s': cannot open it: %s", path, strerror(errno));
+	unsigned char h[6];
+	long len = -1;
+	bool ok = fread(h, 1, 6, f) == 6 && fseek(f, 0, SEEK_END) == 0 && (len = ftell(f)) >= 6 && fseek(f, 6, SEEK_SET) == 0;
+	if (!ok) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s': not a df3 file (it has no 6-byte header of its size)", path);
+	}
+	uint32_t n[3] = {(uint32_t)h[0] << 8 | h[1], (uint32_t)h[2] << 8 | h[3], (uint32_t)h[4] << 8 | h[5]};
+	uint64_t count = (uint64_t)n[0] * n[1] * n[2], data = (uint64_t)len - 6;
+	int bytes = count && data == count ? 1 : count && data == 2 * count ? 2 : count && data == 4 * count ? 4 : 0;
+	if (!bytes) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s': %u x %u x %u voxels, but %llu bytes of data fit none of 8, 16 or "
+					 "32 bits a voxel (POV-Ray: \"Invalid density file size\")",
+				  path, n[0], n[1], n[2], (unsigned long long)data);
+	}
+	if (count > MAX_DF3_VOXELS) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s' has %llu voxels, more than circe's limit of %d", path,
+				  (unsigned long long)count, MAX_DF3_VOXELS);
+	}
+	float *v = arena_alloc(&p->sc->arena, (size_t)count, sizeof *v, sizeof *v);
+	unsigned char *raw = mem_alloc((size_t)data, 1);
+	ok = v && raw && fread(raw, 1, (size_t)data, f) == (size_t)data;
+	fclose(f);
+	if (ok) {
+		const double top = bytes == 1 ? 255.0 : bytes == 2 ? 65535.0 : 4294967295.0;
+		for (uint64_t i = 0; i < count; i++) {
+			const unsigned char *b = raw + i * (uint64_t)bytes;
+			uint32_t x = bytes == 1 ? b[0]
+				     : bytes == 2 ? (uint32_t)b[0] << 8 | b[1]
+						  : (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3];
+			v[i] = (float)(x / top);
+		}
+	}
+	mem_free(raw);
+	if (!ok)
+		return lang_error(p, at, v && raw ? "density_file '%s': cannot read its voxels" : "out of memory", path);
+	g->voxels = v, g->vox_file = path;
+	memcpy(g->vox_n, n, sizeof n);
+	return true;
+}
+
+/* density_args = "df3" string: the file, found as POV-Ray finds it, read while parsing. */
+static bool density_file_args(parser *p, scene_pigment *g)
+{
+	if (!accept_word(p, "df3"))
+		return lang_error_found(p, "expected 'df3' after 'density_file' (POV-Ray's one density file format)");
+	diag_loc at = lang_peek(p)->loc;
+	const char *name, *path;
+	TRY(lang_string(p, "as the density file", &name));
+	if (!(path = data_path(p, name, at)))
+		return lang_error(p, at, "cannot find density file '%s' (searched the including file's folder%s)", name,
+				  p->opt.n_include_dirs ? " and the -I folders" : "");
+	return read_df3(p, g, path, at);
+}
+
 /* slope_args = vector | "{" [ "point_at" ] vector [ "," lo [ "," hi ] ]
  *              [ "altitude" vector [ "," lo [ "," hi ] ] ] "}"   (POV-Ray 3.7's Parse_Pattern):
  * the vectors' lengths weight the slope and the altitude, then both are made unit. */
@@ -569,6 +664,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
 	if (k == SCENE_PAT_SLOPE)
 		return slope_args(p, &b->pg, kw);
+	if (k == SCENE_PAT_DENSITY_FILE)
+		return density_file_args(p, &b->pg);
 	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */
 		diag_loc open = lang_peek(p)->loc;
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
@@ -805,6 +902,16 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 	*matched = true;
 	if (accept_word(p, "uv_mapping")) {
 		b->pg.uv_mapping = true;
+		return true;
+	}
+	if (peek_word(p, "interpolate")) { /* density_file's (POV-Ray: "Cannot use interpolate with non-density_file") */
+		if (b->pg.kind != SCENE_PAT_DENSITY_FILE)
+			return lang_error(p, at, "'interpolate' belongs to density_file (or an image_map's block), not to %s",
+					  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+		lang_advance(p);
+		double v;
+		TRY(lang_float(p, "after 'interpolate'", &v));
+		b->pg.vox_interp = (int)v;
 		return true;
 	}
 	TRY(lang_pigment_quick_colour(p, matched));

@@ -496,6 +496,64 @@ static double slope(const pattern_node *n, dvec3 p, const pattern_surface *sf)
 	return v < 0.0 ? 1.0 + fmod(v, 1.0) : fmod(v, 1.0);
 }
 
+/* density_pattern's tricubic step (POV-Ray 3.7's intp3): Catmull-Rom between fb and fc. */
+static double intp3(double t, double fa, double fb, double fc, double fd)
+{
+	double b = (fc - fa) * 0.5, d = (fd - fb) * 0.5;
+	double e = 2.0 * (fb - fc) + b + d, f = -3.0 * (fb - fc) - 2.0 * b - d;
+	return ((e * t + f) * t + b) * t + fb;
+}
+
+static uint32_t wrap_index(long long i, uint32_t n) { return (uint32_t)(((i % n) + n) % n); }
+
+/* POV-Ray 3.7's density_pattern (pattern.cpp): the voxels fill the unit cube, 0 outside it;
+ * interpolate 0 the voxel the point is in, 1 trilinear between it and its upper neighbours
+ * (wrapping at the far faces), 2 tricubic (Catmull-Rom over 4 x 4 x 4 voxels, wrapping; POV-Ray
+ * wraps an index -1 through an unsigned modulo, which it means as the last voxel: circe takes
+ * the last voxel). Never below 0. */
+static double density_file(const pattern_node *n, dvec3 p)
+{
+	const uint32_t sx = n->vox_n[0], sy = n->vox_n[1], sz = n->vox_n[2];
+	if (!n->voxels || !sx || !sy || !sz || !(p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0 && p.z >= 0.0 && p.z < 1.0))
+		return 0.0;
+#define VOX(x, y, z) ((double)n->voxels[((size_t)(z) * sy + (y)) * sx + (x)])
+	double xx = p.x * sx, yy = p.y * sy, zz = p.z * sz, d;
+	uint32_t x1 = (uint32_t)xx, y1 = (uint32_t)yy, z1 = (uint32_t)zz;
+	x1 = x1 < sx ? x1 : sx - 1, y1 = y1 < sy ? y1 : sy - 1, z1 = z1 < sz ? z1 : sz - 1;
+	switch (n->vox_interp % 10) {
+	case 0: d = VOX(x1, y1, z1); break;
+	case 1: {
+		uint32_t x2 = (x1 + 1) % sx, y2 = (y1 + 1) % sy, z2 = (z1 + 1) % sz;
+		xx -= floor(xx), yy -= floor(yy), zz -= floor(zz);
+		double xi = 1.0 - xx, yi = 1.0 - yy;
+		d = ((VOX(x1, y1, z1) * xi + VOX(x2, y1, z1) * xx) * yi + (VOX(x1, y2, z1) * xi + VOX(x2, y2, z1) * xx) * yy) *
+			    (1.0 - zz) +
+		    ((VOX(x1, y1, z2) * xi + VOX(x2, y1, z2) * xx) * yi + (VOX(x1, y2, z2) * xi + VOX(x2, y2, z2) * xx) * yy) * zz;
+		break;
+	}
+	default: {
+		xx -= floor(xx), yy -= floor(yy), zz -= floor(zz);
+		uint32_t k[4];
+		for (int i = 0; i < 4; i++)
+			k[i] = wrap_index((long long)z1 + i - 1, sz);
+		double in_y[4];
+		for (int i = 0; i < 4; i++) {
+			uint32_t ii = wrap_index((long long)x1 + i - 1, sx);
+			double in_z[4];
+			for (int j = 0; j < 4; j++) {
+				uint32_t jj = wrap_index((long long)y1 + j - 1, sy);
+				in_z[j] = intp3(zz, VOX(ii, jj, k[0]), VOX(ii, jj, k[1]), VOX(ii, jj, k[2]), VOX(ii, jj, k[3]));
+			}
+			in_y[i] = intp3(yy, in_z[0], in_z[1], in_z[2], in_z[3]);
+		}
+		d = intp3(xx, in_y[0], in_y[1], in_y[2], in_y[3]);
+		break;
+	}
+	}
+#undef VOX
+	return d < 0.0 ? 0.0 : d;
+}
+
 /* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
  * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
 static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double eps, int depth,
@@ -524,6 +582,7 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 		return v > 1.0 ? fmod(v, 1.0) : v;
 	}
 	case PATTERN_SLOPE: return slope(n, p, sf);
+	case PATTERN_DENSITY_FILE: return density_file(n, p);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)

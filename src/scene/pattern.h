@@ -44,6 +44,7 @@ typedef enum pattern_kind {
 	PATTERN_MANDEL, PATTERN_JULIA, /* POV-Ray's fractals of z^2 + c in the x-y plane */
 	PATTERN_MAGNET, /* POV-Ray's magnet fractals, types 1 and 2, mandel's or julia's form */
 	PATTERN_SLOPE,	/* the surface normal's angle to a direction (and an altitude): pattern_surface */
+	PATTERN_DENSITY_FILE, /* a df3 file's voxels on the unit cube */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -119,6 +120,9 @@ typedef struct pattern_node {
 	dvec3 slope_dir, altit_dir;
 	double slope_len, altit_len, slope_lo, slope_width, altit_lo, altit_width;
 	bool slope_point_at;
+	const float *voxels; /* density_file: x fastest, each in [0, 1]; its size; 0 none, 1 trilinear, 2 tricubic */
+	uint32_t vox_n[3];
+	int vox_interp;
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;

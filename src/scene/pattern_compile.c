@@ -66,6 +66,8 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.slope_dir = pg->slope_dir, n.altit_dir = pg->altit_dir, n.slope_len = pg->slope_len, n.altit_len = pg->altit_len;
 	n.slope_lo = pg->slope_lo, n.slope_width = pg->slope_width, n.altit_lo = pg->altit_lo;
 	n.altit_width = pg->altit_width, n.slope_point_at = pg->slope_point_at;
+	n.voxels = pg->voxels, n.vox_interp = pg->vox_interp;
+	memcpy(n.vox_n, pg->vox_n, sizeof n.vox_n);
 	return n;
 }
 

@@ -78,6 +78,9 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_DENSITY_FILE)
+			fprintf(o, " df3 \"%s\" <%u, %u, %u> interpolate %d", pg->vox_file ? pg->vox_file : "", pg->vox_n[0],
+				pg->vox_n[1], pg->vox_n[2], pg->vox_interp);
 		if (pg->kind == SCENE_PAT_SLOPE) {
 			const dvec3 d = d3_add(pg->slope_dir, d3(0, 0, 0)), a = d3_add(pg->altit_dir, d3(0, 0, 0)); /* no -0 */
 			fprintf(o, " %s <%g, %g, %g> weight %g low %g width %g", pg->slope_point_at ? "point_at" : "direction", d.x,

@@ -26,7 +26,8 @@
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
-	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")
+	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
+	X(DENSITY_FILE, "density_file")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -128,6 +129,12 @@ typedef struct scene_pigment {
 	dvec3 slope_dir, altit_dir;
 	double slope_len, altit_len, slope_lo, slope_width, altit_lo, altit_width;
 	bool slope_point_at;
+	/* DENSITY_FILE: the df3 file's voxels (x fastest, then y, then z), each its integer over its
+	 * type's largest, its size in voxels, and interpolate (0 none, 1 trilinear, 2 tricubic) */
+	const float *voxels;
+	uint32_t vox_n[3];
+	int vox_interp;
+	const char *vox_file; /* for the dump */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

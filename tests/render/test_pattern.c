@@ -618,9 +618,39 @@ static void check_slope(void)
 	      b.z);
 }
 
+/* POV-Ray 3.7's density_pattern on small grids worked by hand: the voxel a point is in; trilinear
+ * (wrapping at the far face); tricubic (Catmull-Rom: the midpoint of 0 0 1 0 is 9/16, a line is
+ * kept); 0 outside the unit cube. */
+static double density_at(const float *v, uint32_t nx, uint32_t ny, uint32_t nz, int interp, dvec3 p)
+{
+	pattern_node n = pattern_node_default(PATTERN_DENSITY_FILE);
+	n.voxels = v, n.vox_n[0] = nx, n.vox_n[1] = ny, n.vox_n[2] = nz, n.vox_interp = interp;
+	return pattern_raw(&n, p);
+}
+
+static void check_density_file(void)
+{
+	float g[8]; /* x + 2y + 4z over 7, on 2 x 2 x 2 */
+	for (int i = 0; i < 8; i++)
+		g[i] = (float)((i & 1) + 2 * (i >> 1 & 1) + 4 * (i >> 2)) / 7.0f;
+	CHECK_NEAR(density_at(g, 2, 2, 2, 0, d3(0.3, 0.6, 0.1)), 2.0 / 7.0, 1e-7);
+	CHECK_NEAR(density_at(g, 2, 2, 2, 0, d3(0.9, 0.9, 0.9)), 1.0, 1e-7);
+	/* trilinear at <0.6, 1.2, 0.2> voxels: x 0.6, y from 1 towards 0 (wrapped) by 0.2: 0.8, z 0.2 */
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(0.3, 0.6, 0.1)), (0.6 + 2 * 0.8 + 4 * 0.2) / 7.0, 1e-7);
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(1.0, 0.5, 0.5)), 0.0, 0.0);  /* outside: x = 1 */
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(0.5, -1e-9, 0.5)), 0.0, 0.0); /* outside: y < 0 */
+	const float spike[4] = {0, 0, 1, 0}, line[4] = {0, 1.0f / 3, 2.0f / 3, 1};
+	CHECK_NEAR(density_at(spike, 4, 1, 1, 2, d3(0.375, 0.5, 0.5)), 9.0 / 16.0, 1e-7);
+	CHECK_NEAR(density_at(line, 4, 1, 1, 2, d3(0.3, 0.2, 0.7)), 0.4, 1e-7);
+	CHECK_NEAR(density_at(line, 4, 1, 1, 1, d3(0.3, 0.2, 0.7)), 0.4, 1e-7);
+	CHECK_NEAR(density_at(spike, 4, 1, 1, 12, d3(0.375, 0.5, 0.5)), 9.0 / 16.0, 1e-7); /* interpolate mod 10 */
+	CHECK_NEAR(density_at(NULL, 4, 1, 1, 1, d3(0.3, 0.2, 0.7)), 0.0, 0.0);
+}
+
 int main(void)
 {
 	check_slope();
+	check_density_file();
 	check_normals();
 	check_crackle();
 	check_fractals();
