@@ -8,13 +8,15 @@
 
 #include <string.h>
 
-/* The loader pattern_compile calls for an image_map or bump_map: the world's image, loaded once
- * (a bump_map's grey is a height, not a colour: read as stored). */
+/* The loader pattern_compile calls for an image_map, bump_map or image_pattern: the world's image,
+ * loaded once (a bump_map's grey is a height and an image_pattern's a pattern value, not colours:
+ * read as stored). */
 static const image *load_image(void *ctx, const scene_pigment *pg, diag *d)
 {
 	world *w = ctx;
-	const image *img = world_image(w, pg->loc, pg->image, pg->is_normal ? IMAGE_RAW : IMAGE_SRGB, d);
-	if (img && !pg->is_normal)
+	bool raw = pg->is_normal || pg->kind == SCENE_PAT_IMAGE_PATTERN; /* image_pattern's grey is data too */
+	const image *img = world_image(w, pg->loc, pg->image, raw ? IMAGE_RAW : IMAGE_SRGB, d);
+	if (img && !raw)
 		warn_reflectance_image(img, pg->loc, pg->image, d);
 	return img;
 }

@@ -433,20 +433,34 @@ static bool warp_block(parser *p, pig_build *b)
 
 /* ---- image_map --------------------------------------------------------------------------- */
 
+static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind);
+
+static bool image_map(parser *p, pig_build *b) { return image_block(p, b, SCENE_PAT_IMAGE); }
+
 /* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" ] string { "map_type" int | "once"
  *             | "interpolate" int | ( "filter" | "transmit" ) "all" float } "}" */
-static bool image_map(parser *p, pig_build *b)
+/* image_pattern = "image_pattern" "{" the same head { "map_type" int | "once" | "interpolate" int
+ *                 | "use_color" | "use_colour" | "use_index" | "use_alpha" | "gamma" float } "}"
+ * (POV-Ray's Parse_Image_Pattern): the image's grey or alpha as a pattern. */
+static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 {
+	const char *what = kind == SCENE_PAT_IMAGE_PATTERN ? "image_pattern" : b->normal ? "bump_map" : "image_map";
+	bool pat = kind == SCENE_PAT_IMAGE_PATTERN;
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
-	TRY(lang_expect(p, LTK_LBRACE, "after 'image_map'"));
-	double amount = b->pg.bump_amount; /* a bump_map keeps its normal's amount */
-	b->pg = scene_pigment_defaults(SCENE_PAT_IMAGE, kw);
+	char ctx[32];
+	snprintf(ctx, sizeof ctx, "after '%s'", what);
+	TRY(lang_expect(p, LTK_LBRACE, ctx));
+	double amount = b->pg.bump_amount, accuracy = b->pg.accuracy; /* a bump_map keeps its normal's amount */
+	bool uv = b->pg.uv_mapping;
+	b->pg = scene_pigment_defaults(kind, kw);
 	b->pg.bump_amount = amount, b->pg.is_normal = b->normal;
+	if (pat)
+		b->pg.accuracy = accuracy, b->pg.uv_mapping = uv;
 	lang_tok k = lang_peek(p)->kind;
 	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
 		lang_advance(p);
 	else if (lang_peek(p)->kind != LTK_STRING)
-		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in 'image_map'");
+		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in '%s'", what);
 	TRY(lang_asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &b->pg.image));
 	for (;;) {
 		long n;
@@ -465,7 +479,12 @@ static bool image_map(parser *p, pig_build *b)
 		} else if (accept_word(p, "interpolate")) {
 			TRY(lang_int(p, "after 'interpolate'", 0, 4, &n));
 			b->pg.interpolate = n != 0; /* 2 bilinear, 4 normalised distance: both bilinear here */
-		} else if (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT) {
+		} else if (pat && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||
+				   accept_word(p, "use_index"))) {
+			b->pg.use_alpha = false; /* circe's images have no palette: the grey of the colour */
+		} else if (pat && accept_word(p, "use_alpha")) {
+			b->pg.use_alpha = true;
+		} else if (!pat && (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT)) {
 			bool filter = lang_advance(p)->kind == LTK_KW_FILTER;
 			if (!accept_word(p, "all"))
 				return lang_error(p, lang_peek(p)->loc, "a palette index after '%s' is not supported by circe: "
@@ -481,10 +500,12 @@ static bool image_map(parser *p, pig_build *b)
 		} else if (accept_word(p, "gamma")) {
 			diag_loc at = p->prev.loc;
 			TRY(lang_float(p, "after 'gamma'", &x));
-			diag_warning(p->d, at, "'gamma' of an image_map is ignored: circe decodes PNG and JPEG from sRGB "
-					       "and reads EXR as linear");
+			diag_warning(p->d, at, pat ? "'gamma' of an image_pattern is ignored: circe reads its values as stored, as "
+						     "POV-Ray does without gamma"
+						   : "'gamma' of an image_map is ignored: circe decodes PNG and JPEG from sRGB "
+						     "and reads EXR as linear");
 		} else {
-			return lang_expect_close(p, open, "image_map");
+			return lang_expect_close(p, open, what);
 		}
 	}
 }
@@ -520,9 +541,7 @@ static bool slope_range(parser *p, const char *what, double *lo, double *width)
 	return true;
 }
 
-/* A data file the scene names (POV-Ray's Locate_File): beside the file that names it, then in each
- * -I folder; the path in the arena, or NULL (no error said). */
-static const char *data_path(parser *p, const char *name, diag_loc at)
+const char *lang_data_path(parser *p, const char *name, diag_loc at)
 {
 	const char *from = at.src ? at.src->name : "";
 	const char *slash = strrchr(from, '/');
@@ -605,7 +624,7 @@ static bool density_file_args(parser *p, scene_pigment *g)
 	diag_loc at = lang_peek(p)->loc;
 	const char *name, *path;
 	TRY(lang_string(p, "as the density file", &name));
-	if (!(path = data_path(p, name, at)))
+	if (!(path = lang_data_path(p, name, at)))
 		return lang_error(p, at, "cannot find density file '%s' (searched the including file's folder%s)", name,
 				  p->opt.n_include_dirs ? " and the -I folders" : "");
 	return read_df3(p, g, path, at);
@@ -659,6 +678,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 	b->n_warps = 0;
 	if (k == SCENE_PAT_FUNCTION) /* function { expression }: lang/func.c compiles it */
 		return lang_func_pattern(p, &b->pg.fn);
+	if (k == SCENE_PAT_IMAGE_PATTERN)
+		return image_block(p, b, k);
 	lang_advance(p);
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);

@@ -91,6 +91,13 @@ static bool asset_path(parser *p, const char *what, scene_asset_kind kind, const
 	diag_loc loc = lang_peek(p)->loc;
 	const char *name;
 	TRY(lang_string(p, what, &name));
+	/* An image not beside the scene is sought in the -I folders, as POV-Ray's Locate_File searches
+	 * its library paths (povray-includes ships test.png, plasma2.png, mtmandj.png, ...). */
+	const char *found = kind == SCENE_ASSET_IMAGE ? lang_data_path(p, name, loc) : NULL;
+	if (found) {
+		*out = found;
+		return scene_add_asset(p->sc, kind, found, loc) || lang_error(p, loc, "out of memory");
+	}
 	const char *from = loc.src ? loc.src->name : "";
 	const char *slash = strrchr(from, '/');
 	if (name[0] == '/' || !slash) {

@@ -459,6 +459,55 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	}
 }
 
+/* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
+ * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
+ * (u the angle about y, v = y); repeated unless once. The texel (bilinear with interpolate, else
+ * the nearest) into c; false outside the image (once, or the mapping's poles). */
+static bool image_texel(const pattern_node *n, dvec3 p, float c[4])
+{
+	double u = p.x, v = p.y;
+	bool inside = true;
+	if (n->map_type == 1 || n->map_type == 2) {
+		double len = d3_length(p);
+		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
+		double r = sqrt(x * x + z * z), theta = 0.0;
+		if (r > 0.0) {
+			theta = acos(fmax(-1.0, fmin(1.0, x / r)));
+			if (z < 0.0)
+				theta = TWO_PI - theta;
+		}
+		u = theta / TWO_PI;
+		v = n->map_type == 1 ? 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI : p.y;
+		inside = len > 0.0 && (n->map_type == 1 || r > 0.0);
+	}
+	if (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0))
+		inside = false;
+	if (!inside || !n->img)
+		return false;
+	if (n->interpolate) {
+		image_bilinear(n->img, (float)(u - floor(u)), (float)(v - floor(v)), c);
+	} else { /* the nearest texel */
+		int w = n->img->width, h = n->img->height;
+		int ix = (int)fmin(w - 1, floor((u - floor(u)) * w)), iy = (int)fmin(h - 1, floor((1.0 - (v - floor(v))) * h));
+		for (int i = 0; i < 4; i++)
+			c[i] = n->img->rgba[((size_t)iy * w + ix) * 4 + i];
+	}
+	return true;
+}
+
+/* imageutil.cpp's image_pattern: the image's grey (0.297 r + 0.589 g + 0.114 b) at the mapped
+ * texel, or with use_alpha its transparency (1 - alpha; an image without alpha: its red, as
+ * POV-Ray), clamped to [0, 1]; 0 outside the image. The image is read as stored (POV-Ray reads it
+ * without gamma correction). */
+static double image_pattern(const pattern_node *n, dvec3 p)
+{
+	float c[4];
+	if (!image_texel(n, p, c))
+		return 0.0;
+	double v = n->use_alpha ? (n->img_alpha ? 1.0 - c[3] : c[0]) : 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+	return clamp01(v);
+}
+
 /* POV-Ray 3.7.0's slope_pattern (pattern.cpp; SlopePattern::EvaluateRaw of later versions): the
  * angle between the surface's normal and the direction (or the direction to the point_at
  * point), asin(cos) mapped to [0, 1] (0 facing away, 0.5 across, 1 along), through the low and
@@ -583,6 +632,7 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 	}
 	case PATTERN_SLOPE: return slope(n, p, sf);
 	case PATTERN_DENSITY_FILE: return density_file(n, p);
+	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
@@ -731,40 +781,13 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
 
-/* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
- * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
- * (u the angle about y, v = y); repeated unless once, outside which it is clear. */
+/* An image_map's colour at p (image_texel maps it): clear outside the image. */
 static void image_color(const pattern_node *n, dvec3 p, float out[5])
 {
-	double u = p.x, v = p.y;
-	bool inside = true;
-	if (n->map_type == 1 || n->map_type == 2) {
-		double len = d3_length(p);
-		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
-		double r = sqrt(x * x + z * z), theta = 0.0;
-		if (r > 0.0) {
-			theta = acos(fmax(-1.0, fmin(1.0, x / r)));
-			if (z < 0.0)
-				theta = TWO_PI - theta;
-		}
-		u = theta / TWO_PI;
-		v = n->map_type == 1 ? 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI : p.y;
-		inside = len > 0.0 && (n->map_type == 1 || r > 0.0);
-	}
-	if (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0))
-		inside = false;
-	if (!inside || !n->img) {
+	float c[4];
+	if (!image_texel(n, p, c)) {
 		out[0] = out[1] = out[2] = out[3] = 0.0f, out[4] = 1.0f;
 		return;
-	}
-	float c[4];
-	if (n->interpolate) {
-		image_bilinear(n->img, (float)(u - floor(u)), (float)(v - floor(v)), c);
-	} else { /* the nearest texel */
-		int w = n->img->width, h = n->img->height;
-		int ix = (int)fmin(w - 1, floor((u - floor(u)) * w)), iy = (int)fmin(h - 1, floor((1.0 - (v - floor(v))) * h));
-		for (int i = 0; i < 4; i++)
-			c[i] = n->img->rgba[((size_t)iy * w + ix) * 4 + i];
 	}
 	out[0] = c[0], out[1] = c[1], out[2] = c[2];
 	out[3] = n->filter_all, out[4] = n->transmit_all;

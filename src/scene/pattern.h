@@ -45,6 +45,7 @@ typedef enum pattern_kind {
 	PATTERN_MAGNET, /* POV-Ray's magnet fractals, types 1 and 2, mandel's or julia's form */
 	PATTERN_SLOPE,	/* the surface normal's angle to a direction (and an altitude): pattern_surface */
 	PATTERN_DENSITY_FILE, /* a df3 file's voxels on the unit cube */
+	PATTERN_IMAGE_PATTERN, /* an image's grey (or alpha), mapped as an image_map */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -89,7 +90,7 @@ enum {
 typedef struct pattern_node {
 	pattern_kind kind;
 	float color[5];	  /* PATTERN_PLAIN */
-	const image *img; /* PATTERN_IMAGE: map_type 0 planar, 1 spherical, 2 cylindrical */
+	const image *img; /* PATTERN_IMAGE, _IMAGE_PATTERN: map_type 0 planar, 1 spherical, 2 cylindrical */
 	int map_type;
 	bool once, interpolate;
 	float filter_all, transmit_all;
@@ -123,6 +124,7 @@ typedef struct pattern_node {
 	const float *voxels; /* density_file: x fastest, each in [0, 1]; its size; 0 none, 1 trilinear, 2 tricubic */
 	uint32_t vox_n[3];
 	int vox_interp;
+	bool use_alpha, img_alpha; /* image_pattern: its alpha as the value; whether the image has any */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;

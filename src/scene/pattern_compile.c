@@ -66,7 +66,7 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.slope_dir = pg->slope_dir, n.altit_dir = pg->altit_dir, n.slope_len = pg->slope_len, n.altit_len = pg->altit_len;
 	n.slope_lo = pg->slope_lo, n.slope_width = pg->slope_width, n.altit_lo = pg->altit_lo;
 	n.altit_width = pg->altit_width, n.slope_point_at = pg->slope_point_at;
-	n.voxels = pg->voxels, n.vox_interp = pg->vox_interp;
+	n.voxels = pg->voxels, n.vox_interp = pg->vox_interp, n.use_alpha = pg->use_alpha;
 	memcpy(n.vox_n, pg->vox_n, sizeof n.vox_n);
 	return n;
 }
@@ -120,13 +120,17 @@ static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *o
 	n.warp0 = w0, n.n_warps = pg->n_warps;
 	for (uint32_t i = 0; i < pg->n_warps; i++)
 		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
-	if (pg->kind == SCENE_PAT_IMAGE) {
+	if (pg->kind == SCENE_PAT_IMAGE || pg->kind == SCENE_PAT_IMAGE_PATTERN) {
 		if (!c->load) {
-			diag_error(c->d, pg->loc, "an image_map in a function's pigment is not supported by circe");
+			diag_error(c->d, pg->loc, "an %s in a function's pigment is not supported by circe",
+				   pg->kind == SCENE_PAT_IMAGE ? "image_map" : "image_pattern");
 			return false;
 		}
 		if (!(n.img = c->load(c->ctx, pg, c->d)))
 			return false;
+		size_t texels = (size_t)n.img->width * (size_t)n.img->height;
+		for (size_t i = 0; i < texels && !n.img_alpha; i++) /* POV-Ray's HasTransparency */
+			n.img_alpha = n.img->rgba[4 * i + 3] != 1.0f;
 	}
 	if (pg->kind == SCENE_PAT_PIGMENT_PATTERN && pg->child) {
 		uint32_t child;

@@ -44,6 +44,8 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 		p.vector = d3(8.0, 3.0, 4.5);
 	if (k == SCENE_PAT_IMAGE)
 		p.interpolate = false;
+	if (k == SCENE_PAT_IMAGE_PATTERN)
+		p.frequency = 0.0; /* Parse_Pattern's IMAGE_PATTERN_TOKEN */
 	return p;
 }
 
@@ -78,6 +80,9 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_IMAGE_PATTERN)
+			fprintf(o, " \"%s\" map_type %d%s%s%s", pg->image ? pg->image : "", pg->map_type, pg->once ? " once" : "",
+				pg->interpolate ? " interpolate" : "", pg->use_alpha ? " use_alpha" : "");
 		if (pg->kind == SCENE_PAT_DENSITY_FILE)
 			fprintf(o, " df3 \"%s\" <%u, %u, %u> interpolate %d", pg->vox_file ? pg->vox_file : "", pg->vox_n[0],
 				pg->vox_n[1], pg->vox_n[2], pg->vox_interp);

@@ -27,7 +27,7 @@
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
-	X(DENSITY_FILE, "density_file")
+	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -135,6 +135,7 @@ typedef struct scene_pigment {
 	uint32_t vox_n[3];
 	int vox_interp;
 	const char *vox_file; /* for the dump */
+	bool use_alpha; /* IMAGE_PATTERN (its file in image): the value is the image's transparency */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

@@ -647,9 +647,33 @@ static void check_density_file(void)
 	CHECK_NEAR(density_at(NULL, 4, 1, 1, 1, d3(0.3, 0.2, 0.7)), 0.0, 0.0);
 }
 
+/* image_pattern (imageutil.cpp): the texel's grey 0.297 r + 0.589 g + 0.114 b, with use_alpha
+ * 1 - alpha (an image without alpha: its red), 0 outside a once image; mapped as image_map. */
+static void check_image_pattern(void)
+{
+	float px[8] = {1, 0.5f, 0, 1, 0, 0, 1, 0.25f}; /* left: orange, opaque; right: blue, alpha 0.25 */
+	image img = {.width = 2, .height = 1, .rgba = px};
+	pattern_node n = pattern_node_default(PATTERN_IMAGE_PATTERN);
+	n.img = &img, n.img_alpha = true, n.frequency = 0;
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 3)), 0.297 + 0.589 * 0.5, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(0.75, 0.5, 3)), 0.114, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(-0.25, 7.5, 0)), 0.114, 1e-7); /* repeated */
+	n.use_alpha = true;
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 0)), 0.0, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(0.75, 0.5, 0)), 0.75, 1e-7);
+	n.img_alpha = false; /* no transparency in the image: the red channel */
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 0)), 1.0, 1e-7);
+	n.use_alpha = false, n.once = true;
+	CHECK_NEAR(pattern_raw(&n, d3(1.25, 0.5, 0)), 0.0, 0.0);
+	n.once = false, n.map_type = 2; /* cylindrical: u the angle about y from +x towards +z */
+	CHECK_NEAR(pattern_raw(&n, d3(0, 0.3, -1)), 0.114, 1e-7); /* 3 pi / 2: u = 0.75 */
+	CHECK_NEAR(pattern_raw(&n, d3(0, 0.3, 1)), 0.297 + 0.589 * 0.5, 1e-7);
+}
+
 int main(void)
 {
 	check_slope();
+	check_image_pattern();
 	check_density_file();
 	check_normals();
 	check_crackle();
