@@ -680,6 +680,9 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_func_pattern(p, &b->pg.fn);
 	if (k == SCENE_PAT_IMAGE_PATTERN)
 		return image_block(p, b, k);
+	if (k == SCENE_PAT_FACETS && !b->normal) /* POV-Ray's Only_In("facets", "normal") */
+		return lang_error(p, kw, "'facets' is a normal's pattern: it cannot be used in a %s",
+				  b->tex ? "texture" : b->density ? "density" : "pigment");
 	lang_advance(p);
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
@@ -782,7 +785,7 @@ static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
 			w = i;
 	if (!(*matched = w >= 0))
 		return true;
-	if (b->pg.kind != SCENE_PAT_CRACKLE)
+	if (b->pg.kind != SCENE_PAT_CRACKLE && !(w == 1 && b->pg.kind == SCENE_PAT_FACETS)) /* facets' metric too */
 		return lang_error(p, t.loc, "'%s' belongs to crackle, not to %s", words[w],
 				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
 	lang_advance(p);
@@ -925,6 +928,14 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 		b->pg.uv_mapping = true;
 		return true;
 	}
+	if (peek_word(p, "coords") || peek_word(p, "size")) { /* facets' (POV-Ray: Only_In("coords", "facets")) */
+		bool coords = peek_word(p, "coords");
+		if (b->pg.kind != SCENE_PAT_FACETS)
+			return lang_error(p, at, "'%s' belongs to facets, not to %s", coords ? "coords" : "size",
+					  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+		lang_advance(p);
+		return lang_float(p, coords ? "after 'coords'" : "after 'size'", coords ? &b->pg.facets_coords : &b->pg.facets_size);
+	}
 	if (peek_word(p, "interpolate")) { /* density_file's (POV-Ray: "Cannot use interpolate with non-density_file") */
 		if (b->pg.kind != SCENE_PAT_DENSITY_FILE)
 			return lang_error(p, at, "'interpolate' belongs to density_file (or an image_map's block), not to %s",
@@ -1010,6 +1021,21 @@ static bool head(parser *p, pig_build *b)
 		if (sn) {
 			lang_advance(p);
 			begin_from(b, sn->val.mat->normal);
+			return true;
+		}
+		const symbol *sa = peek_declared(p, VAL_ARRAY);
+		if (sa && lang_raw_next(p) == LTK_LBRACKET) { /* normal { Normals[I] } (the portfolio's allnormals) */
+			lang_token t = *lang_advance(p);
+			diag_loc at = lang_peek(p)->loc;
+			lang_array *a;
+			size_t i;
+			TRY(lang_element_target(p, &t, &a, &i));
+			if (!a->set[i])
+				return lang_error(p, at, "element of '%.*s' read before it was assigned", (int)t.len, t.text);
+			if (a->elems[i].kind != VAL_NORMAL)
+				return lang_error(p, t.loc, "an element of '%.*s' is %s, not a normal", (int)t.len, t.text,
+						  lang_value_kind_name(&a->elems[i]));
+			begin_from(b, a->elems[i].mat->normal);
 			return true;
 		}
 		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)

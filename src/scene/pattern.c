@@ -1064,6 +1064,40 @@ static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
 static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, int depth,
 			  dvec3 *nrm);
 
+/* POV-Ray 3.7's facets (normal.cpp): the point (coords) or the unit normal, scaled by 1 / size,
+ * finds the nearest of the cells' feature points (crackle's, of the 81 cubes about it) under the
+ * metric (2: squared distance; 1: POV-Ray's dx + dy + dz, signed as it writes it; else the sum of
+ * |d|^metric). Without coords that point is the new normal (so the normal is quantised into
+ * facets); with coords F the normal is pushed by F times the vector noise at that point, less
+ * its part along the normal. */
+static dvec3 facets_normal(const pattern_node *n, dvec3 q, dvec3 v)
+{
+	double len = d3_length(v);
+	if (!(len > 0.0))
+		return v;
+	v = d3_scale(v, 1.0 / len);
+	double scale = n->facets_size < 1e-6 ? 1e6 : 1.0 / n->facets_size, m = n->crackle_metric;
+	dvec3 t = d3_scale(n->facets_coords != 0.0 ? q : v, scale);
+	int cx = cell_of(t.x), cy = cell_of(t.y), cz = cell_of(t.z);
+	double best = INFINITY;
+	dvec3 nearest = t;
+	for (int i = -2; i <= 2; i++)
+		for (int j = -2; j <= 2; j++)
+			for (int k = -2; k <= 2; k++) {
+				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
+					continue;
+				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k), d = d3_sub(f, t);
+				double s = m == 2.0 ? d3_dot(d, d) : m == 1.0 ? d.x + d.y + d.z : metric_sum(d, m);
+				if (s < best)
+					best = s, nearest = f;
+			}
+	if (n->facets_coords == 0.0)
+		return nearest;
+	dvec3 pert = pattern_dnoise(nearest);
+	pert = d3_sub(pert, d3_scale(v, d3_dot(pert, v)));
+	return d3_add(v, d3_scale(pert, n->facets_coords));
+}
+
 /* A normal's normal_map (normal.cpp Perturb_Normal): the entries are normals, each perturbing v at
  * q in turn. average: their results weighted by the entries' values over the weights' sum
  * (NormalBlendMap::ComputeAverage); another pattern: the two entries around its value, blended
@@ -1148,6 +1182,7 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const 
 		case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
 		case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
 		case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
+		case PATTERN_FACETS: v = facets_normal(n, q, v); break;
 		case PATTERN_PLAIN: break;
 		default: v = d3_add(v, slope_normal(pg, n, q, sf, eps)); break;
 		}

@@ -46,6 +46,8 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 		p.interpolate = false;
 	if (k == SCENE_PAT_IMAGE_PATTERN)
 		p.frequency = 0.0; /* Parse_Pattern's IMAGE_PATTERN_TOKEN */
+	if (k == SCENE_PAT_FACETS)
+		p.facets_size = 0.1; /* Parse_Pattern's FACETS_TOKEN: size 0.1, coords 0, metric 2 */
 	return p;
 }
 
@@ -80,6 +82,8 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_FACETS)
+			fprintf(o, " coords %g size %g metric %g", pg->facets_coords, pg->facets_size, pg->crackle_metric);
 		if (pg->kind == SCENE_PAT_IMAGE_PATTERN)
 			fprintf(o, " \"%s\" map_type %d%s%s%s", pg->image ? pg->image : "", pg->map_type, pg->once ? " once" : "",
 				pg->interpolate ? " interpolate" : "", pg->use_alpha ? " use_alpha" : "");

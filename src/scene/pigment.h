@@ -27,7 +27,8 @@
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
-	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")
+	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
+	X(FACETS, "facets")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -136,6 +137,7 @@ typedef struct scene_pigment {
 	int vox_interp;
 	const char *vox_file; /* for the dump */
 	bool use_alpha; /* IMAGE_PATTERN (its file in image): the value is the image's transparency */
+	double facets_coords, facets_size; /* FACETS (a normal's only; its metric: crackle_metric): 0, 0.1 */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

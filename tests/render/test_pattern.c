@@ -670,9 +670,45 @@ static void check_image_pattern(void)
 	CHECK_NEAR(pattern_raw(&n, d3(0, 0.3, 1)), 0.297 + 0.589 * 0.5, 1e-7);
 }
 
+/* facets (normal.cpp): without coords the new normal is the feature point nearest the unit normal
+ * over size (brute force over 7^3 cells here); normals in one facet get the same one; with coords
+ * the push is tangent to the normal. */
+static void check_facets(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_FACETS);
+	n.facets_size = 0.1;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+	const dvec3 dirs[3] = {{0, 1, 0}, {0.6, 0, 0.8}, {-0.48, 0.6, -0.64}};
+	for (int d = 0; d < 3; d++) {
+		dvec3 v = d3_scale(dirs[d], 2.0), t = d3_scale(dirs[d], 10.0); /* not unit: facets normalises */
+		pattern_perturb(&pg, 0, d3(5, 6, 7), &v);
+		dvec3 best = t;
+		double bd = 1e300;
+		for (int i = -3; i <= 3; i++)
+			for (int j = -3; j <= 3; j++)
+				for (int k = -3; k <= 3; k++) {
+					dvec3 f = pattern_crackle_point((int)floor(t.x) + i, (int)floor(t.y) + j, (int)floor(t.z) + k);
+					double e = d3_dot(d3_sub(f, t), d3_sub(f, t));
+					if (e < bd)
+						bd = e, best = f;
+				}
+		CHECK(d3_length(d3_sub(v, best)) < 1e-12, "facets %d: <%g, %g, %g>, the nearest point <%g, %g, %g>", d, v.x,
+		      v.y, v.z, best.x, best.y, best.z);
+		dvec3 w = d3_add(dirs[d], d3(1e-7, -1e-7, 1e-7)); /* a normal next to it: the same facet */
+		pattern_perturb(&pg, 0, d3(-3, 1, 2), &w);
+		CHECK(d3_length(d3_sub(w, best)) < 1e-12, "facets are flat: <%g, %g, %g>", w.x, w.y, w.z);
+	}
+	n.facets_coords = 0.5;
+	dvec3 v = d3(0, 0, 1);
+	pattern_perturb(&pg, 0, d3(0.33, 0.77, 1.5), &v);
+	CHECK(fabs(v.z - 1.0) < 1e-12 && (v.x != 0.0 || v.y != 0.0), "facets coords pushes the normal sideways: <%g, %g, %g>",
+	      v.x, v.y, v.z);
+}
+
 int main(void)
 {
 	check_slope();
+	check_facets();
 	check_image_pattern();
 	check_density_file();
 	check_normals();
