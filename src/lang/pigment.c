@@ -1240,3 +1240,58 @@ bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture
 	lang_leave(p);
 	return ok;
 }
+
+/* ---- rainbow ----------------------------------------------------------------------------------- */
+
+/* rainbow = "rainbow" "{" { "angle" float | "width" float | "distance" float | "jitter" float
+ *           | "direction" vector | "up" vector | "arc_angle" float | "falloff_angle" float
+ *           | colour_map } "}"   (POV-Ray 3.7's Parse_Rainbow, its checks included).
+ * Read and ignored with a warning: POV-Ray's rainbow is a colour added to the rays that pass
+ * `distance` at an angle to `direction`, an atmospheric effect circe does not render. */
+bool lang_rainbow(parser *p)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'rainbow'"));
+	dvec3 dir = d3(0, 0, 0), up = d3(0, 1, 0);
+	double arc = 180.0, falloff = 180.0, x;
+	bool has_arc = false, has_falloff = false;
+	for (;;) {
+		diag_loc at = lang_peek(p)->loc;
+		if (lang_accept(p, LTK_RBRACE))
+			break;
+		if (accept_word(p, "angle") || accept_word(p, "width") || accept_word(p, "distance") ||
+		    accept_word(p, "jitter")) {
+			TRY(lang_float(p, "in 'rainbow'", &x));
+		} else if (accept_word(p, "direction")) {
+			TRY(lang_vec3(p, "after 'direction'", &dir));
+		} else if (accept_word(p, "up")) {
+			TRY(lang_vec3(p, "after 'up'", &up));
+		} else if (peek_word(p, "arc_angle") || peek_word(p, "falloff_angle")) {
+			bool is_arc = peek_word(p, "arc_angle");
+			lang_advance(p);
+			TRY(lang_float(p, is_arc ? "after 'arc_angle'" : "after 'falloff_angle'", &x));
+			if (!(x >= 0.0 && x <= 360.0))
+				return lang_error(p, at, "a rainbow's %s must be from 0 to 360 degrees, found %g",
+						  is_arc ? "arc_angle" : "falloff_angle", x);
+			*(is_arc ? &arc : &falloff) = x;
+			*(is_arc ? &has_arc : &has_falloff) = true;
+		} else if (lang_pigment_map_starts(p)) {
+			value v;
+			TRY(lang_pigment_map_value(p, &v));
+		} else {
+			return lang_expect_close(p, open, "rainbow");
+		}
+	}
+	if (has_arc && !has_falloff)
+		falloff = arc;
+	if (arc < falloff)
+		return lang_error(p, kw, "a rainbow's arc_angle %g is smaller than its falloff_angle %g", arc, falloff);
+	double dd = d3_dot(dir, dir), uu = d3_dot(up, up);
+	if (dd < 1e-10 || uu < 1e-10)
+		return lang_error(p, kw, "a rainbow's %s vector is zero", dd < 1e-10 ? "direction" : "up");
+	if (fabs(1.0 - fabs(d3_dot(dir, up) / sqrt(dd * uu))) < 1e-10)
+		return lang_error(p, kw, "a rainbow's up and direction vectors are colinear");
+	diag_warning(p->d, kw, "'rainbow' is ignored: circe does not render POV-Ray's rainbow (a colour added to the "
+			       "rays at an angle to its direction, an atmospheric effect)");
+	return true;
+}

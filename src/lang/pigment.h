@@ -11,6 +11,9 @@
 /* True when the lookahead begins a body lang_pigment_rest reads: a pattern's word, image_map,
  * uv_mapping, or, over a declared pigment (has_base), one of a pattern's modifiers. */
 bool lang_pigment_starts(parser *p, bool has_base);
+/* rainbow { ... }: read, checked as POV-Ray checks it, and ignored with a warning (the lookahead
+ * is "rainbow"). */
+bool lang_rainbow(parser *p);
 /* A data file the scene names (an image, a df3), as POV-Ray's Locate_File finds it: beside the
  * file that names it at `at`, then in each -I folder; the readable path (in the arena), or NULL. */
 const char *lang_data_path(parser *p, const char *name, diag_loc at);

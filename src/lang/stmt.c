@@ -3605,6 +3605,8 @@ bool lang_statement(parser *p)
 	lang_token *t = lang_peek(p);
 	if (t->kind == LTK_UNSUPPORTED && t->len == 3 && !memcmp(t->text, "fog", 3))
 		return lang_fog(p);
+	if (lang_word_is(t, "rainbow"))
+		return lang_rainbow(p);
 	if (lang_word_is(t, "media"))
 		return lang_error(p, t->loc, "atmospheric media (a 'media' outside an interior) is not supported by circe: "
 					     "give it to a container object's interior (a box or sphere around the scene)");

@@ -202,3 +202,5 @@ sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }] [1 pigmen
 // rule: tiles, quick_colour, slope_range
 sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 quick_color rgb 0.5 } } tile2 texture { pigment { rgb 0 } } } scale 2 } }
 sphere { 0, 1 pigment { slope { -y, 0, 0.5 altitude y, -1, 1 } } }
+// rule: rainbow
+rainbow { angle 42 width 5 direction z up y arc_angle 100 colour_map { [0 rgbf 1] [1 rgbf <1, 0, 0, 0.8>] } }
