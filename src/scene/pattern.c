@@ -508,6 +508,133 @@ static double image_pattern(const pattern_node *n, dvec3 p)
 	return clamp01(v);
 }
 
+/* ---- POV-Ray 3.7's tilings (pattern.cpp's tiling_*): each folds the x-z plane into one tile
+ * by its symmetries and gives 0 at the tile's centre rising to 1 at its edge; a tiling of k kinds
+ * of tile puts kind i in [i/k, (i+1)/k]. Written from POV-Ray's constructions: ---------------- */
+
+#define TILE_S3 1.7320508075688772935 /* sqrt 3 */
+#define TILE_H3 0.86602540378443864676 /* sqrt 3 / 2 */
+
+/* v modulo m into [0, m). */
+static double mod_floor(double v, double m) { return v - m * floor(v / m); }
+
+/* Squares of side 1 on the integer grid: the larger of the two axes' distances from the centre. */
+static double tiling_square(dvec3 p)
+{
+	double x = fabs(p.x), z = fabs(p.z);
+	x = 2.0 * fabs(x - floor(x) - 0.5), z = 2.0 * fabs(z - floor(z) - 0.5);
+	return fmax(x, z);
+}
+
+/* Hexagons of side 1: the 3 x sqrt 3 cell folded by its mirrors to the triangle between a
+ * hexagon's centre and an edge, where the two distances to the edges are linear. */
+static double tiling_hexagon(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 3.0), z = mod_floor(p.z, TILE_S3);
+	if (z > TILE_H3)
+		z = TILE_S3 - z;
+	if (x > 1.5)
+		x -= 1.5, z = TILE_H3 - z;
+	if (TILE_S3 * x + z < TILE_H3)
+		x = 0.5 - x, z = TILE_H3 - z;
+	if (x > 1.0)
+		x = 2.0 - x;
+	double d = fmax(1.0 - z / TILE_H3, 1.0 - (TILE_S3 * x + z - TILE_H3) / TILE_S3);
+	return clamp01(d);
+}
+
+/* Equilateral triangles of side 1, two kinds (pointing up and down: 0 and 1/2). */
+static double tiling_triangle(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 0.5)
+		x = 1.0 - x;
+	if (x == 0.0) /* POV-Ray's own branch on the cell's edge: a mirror, no change of kind */
+		z = TILE_H3 - z, x = 0.5;
+	else if (z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+	double d = fmax(1.0 - z * 2.0 * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3);
+	return kind / 2.0 + 0.5 * d;
+}
+
+/* The lozenge fold shared by tilings 4 and 5: (x, z) in a half cell to the distance to the
+ * lozenge's edges. */
+static double lozenge_fold(double x, double z)
+{
+	if (2.0 * z > TILE_H3)
+		z = TILE_H3 - z, x = 1.5 - x;
+	if (x > 0.75)
+		x -= 1.0;
+	if (x != 0.0 && z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x;
+	return fmax(1.0 - z * 4.0 * TILE_S3 / 3.0, 1.0 - fabs(TILE_S3 * x - z) * TILE_S3 * 2.0 / 3.0);
+}
+
+/* Lozenges (rhombi of 60 degrees), one kind. */
+static double tiling_lozenge(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, TILE_S3);
+	if (z > TILE_H3)
+		z -= TILE_H3, x += 0.5;
+	return lozenge_fold(x, z);
+}
+
+/* Rhombi in three orientations (kinds 0, 1/3, 2/3): the cube pattern seen from a corner. */
+static double tiling_rhombus(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 3.0), z = mod_floor(p.z, TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind = 2 - kind;
+	if (x > 1.5)
+		x -= 1.5, z = TILE_H3 - z, kind = 2 - kind;
+	if (x < 0.5)
+		x = 1.0 - x, kind = 2 - kind;
+	x -= 0.5;
+	if (x == 0.0 || z / x > TILE_S3) { /* the upright rhombus turned by 60 degrees onto the others */
+		double rx = x / 2.0 + z * TILE_H3, rz = z / 2.0 - x * TILE_H3;
+		x = rx, z = rz, kind = 1;
+	}
+	return clamp01(lozenge_fold(x, z) / 3.0 + kind / 3.0);
+}
+
+/* Rectangles of 2 x 1 in a basket weave of 4 x 4, two kinds (along x: 1/2 and up; along z: 0):
+ * each unit square of the cell is moved to its rectangle's frame. */
+static double tiling_rectangle(dvec3 p)
+{
+	double x = mod_floor(p.x, 4.0), z = mod_floor(p.z, 4.0);
+	/* per unit square (x + 4 z): its shift in x and z, and whether its rectangle lies along x */
+	static const signed char shift[16][3] = {
+		{0, 1, 1}, {2, 0, 0}, {2, 0, 0}, {3, 0, 1}, {0, 1, 1}, {1, 2, 1}, {3, 1, 0}, {3, 1, 0},
+		{0, 2, 0}, {1, 2, 1}, {2, 3, 1}, {4, 2, 0}, {1, 3, 0}, {1, 3, 0}, {2, 3, 1}, {3, 4, 1}};
+	int cell = (int)x + 4 * (int)z;
+	cell = cell < 0 ? 0 : cell > 15 ? 15 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	bool along_x = shift[cell][2];
+	double dx, dz;
+	if (along_x)
+		dx = 2.0 * fabs(x - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	else
+		dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * fabs(z - 0.5);
+	return fabs(fmax(dx, dz) / 2.0 + (along_x ? 0.5 : 0.0));
+}
+
+/* TilingPattern::EvaluateRaw's choice; the parser refuses 7 to 27, POV-Ray's others are squares. */
+static double tiling(int number, dvec3 p)
+{
+	switch (number) {
+	case 2: return tiling_hexagon(p);
+	case 3: return tiling_triangle(p);
+	case 4: return tiling_lozenge(p);
+	case 5: return tiling_rhombus(p);
+	case 6: return tiling_rectangle(p);
+	default: return tiling_square(p);
+	}
+}
+
 /* POV-Ray 3.7.0's slope_pattern (pattern.cpp; SlopePattern::EvaluateRaw of later versions): the
  * angle between the surface's normal and the direction (or the direction to the point_at
  * point), asin(cos) mapped to [0, 1] (0 facing away, 0.5 across, 1 along), through the low and
@@ -633,6 +760,7 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 	case PATTERN_SLOPE: return slope(n, p, sf);
 	case PATTERN_DENSITY_FILE: return density_file(n, p);
 	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
+	case PATTERN_TILING: return tiling(n->tiling, p);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)

@@ -47,6 +47,7 @@ typedef enum pattern_kind {
 	PATTERN_DENSITY_FILE, /* a df3 file's voxels on the unit cube */
 	PATTERN_IMAGE_PATTERN, /* an image's grey (or alpha), mapped as an image_map */
 	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
+	PATTERN_TILING, /* POV-Ray's tilings of the x-z plane (1 to 6) */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -127,6 +128,7 @@ typedef struct pattern_node {
 	int vox_interp;
 	bool use_alpha, img_alpha; /* image_pattern: its alpha as the value; whether the image has any */
 	double facets_coords, facets_size; /* facets: coords' amount (0: the normal's facets), cell size */
+	int tiling; /* tiling: its number */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;

@@ -67,7 +67,7 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.slope_lo = pg->slope_lo, n.slope_width = pg->slope_width, n.altit_lo = pg->altit_lo;
 	n.altit_width = pg->altit_width, n.slope_point_at = pg->slope_point_at;
 	n.voxels = pg->voxels, n.vox_interp = pg->vox_interp, n.use_alpha = pg->use_alpha;
-	n.facets_coords = pg->facets_coords, n.facets_size = pg->facets_size;
+	n.facets_coords = pg->facets_coords, n.facets_size = pg->facets_size, n.tiling = pg->tiling;
 	memcpy(n.vox_n, pg->vox_n, sizeof n.vox_n);
 	return n;
 }

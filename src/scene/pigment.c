@@ -82,6 +82,8 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_TILING)
+			fprintf(o, " %d", pg->tiling);
 		if (pg->kind == SCENE_PAT_FACETS)
 			fprintf(o, " coords %g size %g metric %g", pg->facets_coords, pg->facets_size, pg->crackle_metric);
 		if (pg->kind == SCENE_PAT_IMAGE_PATTERN)

@@ -28,7 +28,7 @@
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
 	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
-	X(FACETS, "facets")
+	X(FACETS, "facets") X(TILING, "tiling")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -138,6 +138,7 @@ typedef struct scene_pigment {
 	const char *vox_file; /* for the dump */
 	bool use_alpha; /* IMAGE_PATTERN (its file in image): the value is the image's transparency */
 	double facets_coords, facets_size; /* FACETS (a normal's only; its metric: crackle_metric): 0, 0.1 */
+	int tiling; /* TILING: POV-Ray's tiling number (circe has 1 to 6; 0 and above 27 are 1, as POV-Ray) */
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

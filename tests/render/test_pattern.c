@@ -705,9 +705,71 @@ static void check_facets(void)
 	      v.x, v.y, v.z);
 }
 
+/* POV-Ray's tilings 1 to 6, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+ * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
+ * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
+ * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
+ * six of each.) */
+static void check_tiling(void)
+{
+	static const struct {
+		int tiling;
+		double x, z;
+		int pov16;
+	} rows[] = {
+		{1, 3.375, 3.875, 49151},
+		{1, 3.625, 3.125, 49151},
+		{1, 2.875, 2.375, 49151},
+		{1, 1.625, 1.375, 16384},
+		{1, 0.625, 0.625, 16384},
+		{1, 2.375, 0.125, 49151},
+		{2, 3.375, 3.875, 34441},
+		{2, 3.625, 3.125, 39874},
+		{2, 2.875, 2.375, 49400},
+		{2, 1.625, 1.375, 38085},
+		{2, 0.625, 0.625, 18239},
+		{2, 2.375, 0.125, 29305},
+		{3, 3.375, 3.875, 19225},
+		{3, 3.625, 3.125, 47917},
+		{3, 2.875, 2.375, 41332},
+		{3, 1.625, 1.375, 48936},
+		{3, 0.625, 0.625, 31376},
+		{3, 2.375, 0.125, 18579},
+		{4, 3.375, 3.875, 47478},
+		{4, 3.625, 3.125, 42045},
+		{4, 2.875, 2.375, 31773},
+		{4, 1.625, 1.375, 43403},
+		{4, 0.625, 0.625, 30912},
+		{4, 2.375, 0.125, 46617},
+		{5, 3.375, 3.875, 15826},
+		{5, 3.625, 3.125, 48428},
+		{5, 2.875, 2.375, 32933},
+		{5, 1.625, 1.375, 36313},
+		{5, 0.625, 0.625, 10304},
+		{5, 2.375, 0.125, 59229},
+		{6, 3.375, 3.875, 40959},
+		{6, 3.625, 3.125, 57343},
+		{6, 2.875, 2.375, 57343},
+		{6, 1.625, 1.375, 40959},
+		{6, 0.625, 0.625, 40959},
+		{6, 2.375, 0.125, 24576},
+	};
+	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+		pattern_node n = pattern_node_default(PATTERN_TILING);
+		n.tiling = rows[i].tiling;
+		double v = pattern_raw(&n, d3(rows[i].x, 0.0, rows[i].z)), want = rows[i].pov16 / 65535.0;
+		CHECK(fabs(v - want) <= 1.0 / 65535.0, "tiling %d at <%g, 0, %g>: %.6f, povray %.6f", rows[i].tiling, rows[i].x,
+		      rows[i].z, v, want);
+	}
+	pattern_node n = pattern_node_default(PATTERN_TILING);
+	n.tiling = 0; /* 0 (and POV-Ray's numbers past 27): squares */
+	CHECK_NEAR(pattern_raw(&n, d3(-1.25, 3, 0.5)), 0.5, 1e-12);
+}
+
 int main(void)
 {
 	check_slope();
+	check_tiling();
 	check_facets();
 	check_image_pattern();
 	check_density_file();
