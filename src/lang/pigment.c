@@ -444,8 +444,13 @@ static bool image_map(parser *p, pig_build *b) { return image_block(p, b, SCENE_
  * (POV-Ray's Parse_Image_Pattern): the image's grey or alpha as a pattern. */
 static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 {
-	const char *what = kind == SCENE_PAT_IMAGE_PATTERN ? "image_pattern" : b->normal ? "bump_map" : "image_map";
-	bool pat = kind == SCENE_PAT_IMAGE_PATTERN;
+	const char *what = kind == SCENE_PAT_IMAGE_PATTERN ? "image_pattern"
+			   : kind == SCENE_PAT_MATERIAL_MAP  ? "material_map"
+			   : b->normal			     ? "bump_map"
+							     : "image_map";
+	bool pat = kind == SCENE_PAT_IMAGE_PATTERN, mat = kind == SCENE_PAT_MATERIAL_MAP;
+	scene_map_entry *e = NULL;
+	uint32_t n_tex = 0;
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
 	char ctx[32];
 	snprintf(ctx, sizeof ctx, "after '%s'", what);
@@ -465,8 +470,27 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 	for (;;) {
 		long n;
 		double x;
+		if (mat && lang_peek(p)->kind == LTK_RBRACE) {
+			if (!n_tex)
+				return lang_error_found(p, "expected a texture in 'material_map' (its textures, which the image's "
+							   "indices pick)");
+			lang_advance(p);
+			b->pg.entries = e, b->pg.n_entries = n_tex, b->pg.block_list = true, b->pg.pigment_map = false;
+			return true;
+		}
 		if (lang_accept(p, LTK_RBRACE))
 			return true;
+		if (mat && lang_peek(p)->kind == LTK_KW_TEXTURE) { /* the textures, by index */
+			if (!e && !(e = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *e)))
+				return lang_error(p, kw, "out of memory");
+			if (n_tex == SCENE_PIGMENT_MAX_ENTRIES)
+				return lang_error(p, lang_peek(p)->loc, "too many textures in 'material_map' (limit is %d)",
+						  SCENE_PIGMENT_MAX_ENTRIES);
+			e[n_tex].value = n_tex;
+			TRY(texture_entry(p, b, LTK_RBRACE, &e[n_tex]));
+			n_tex++;
+			continue;
+		}
 		if (accept_word(p, "map_type")) {
 			TRY(lang_int(p, "after 'map_type'", 0, 7, &n));
 			if (n > 2)
@@ -484,7 +508,7 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 			b->pg.use_alpha = false; /* circe's images have no palette: the grey of the colour */
 		} else if (pat && accept_word(p, "use_alpha")) {
 			b->pg.use_alpha = true;
-		} else if (!pat && (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT)) {
+		} else if (!pat && !mat && (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT)) {
 			bool filter = lang_advance(p)->kind == LTK_KW_FILTER;
 			if (!accept_word(p, "all"))
 				return lang_error(p, lang_peek(p)->loc, "a palette index after '%s' is not supported by circe: "
@@ -680,6 +704,9 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_func_pattern(p, &b->pg.fn);
 	if (k == SCENE_PAT_IMAGE_PATTERN)
 		return image_block(p, b, k);
+	if (k == SCENE_PAT_MATERIAL_MAP) /* a texture's (head() reads it there) */
+		return lang_error(p, kw, "'material_map' picks textures: it belongs in a texture, not in a %s",
+				  b->normal ? "normal" : b->density ? "density" : "pigment");
 	if (k == SCENE_PAT_FACETS && !b->normal) /* POV-Ray's Only_In("facets", "normal") */
 		return lang_error(p, kw, "'facets' is a normal's pattern: it cannot be used in a %s",
 				  b->tex ? "texture" : b->density ? "density" : "pigment");
@@ -1019,6 +1046,8 @@ static bool head(parser *p, pig_build *b)
 {
 	if (b->tex && peek_word(p, "tiles"))
 		return tiles(p, b);
+	if (b->tex && peek_word(p, "material_map"))
+		return image_block(p, b, SCENE_PAT_MATERIAL_MAP);
 	scene_pattern_kind k = peek_pattern(p);
 	if (k != SCENE_PAT_COUNT) {
 		double amount = b->pg.bump_amount, accuracy = b->pg.accuracy;
@@ -1230,7 +1259,11 @@ bool lang_normal_value(parser *p, value *out)
 
 /* ---- patterned textures ------------------------------------------------------------------------ */
 
-bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT || peek_word(p, "tiles"); }
+bool lang_texture_pattern_starts(parser *p)
+{
+	scene_pattern_kind k = peek_pattern(p);
+	return (k != SCENE_PAT_COUNT && k != SCENE_PAT_MATERIAL_MAP) || peek_word(p, "tiles") || peek_word(p, "material_map");
+}
 
 bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
 			  const scene_material *const **mats, uint32_t *n)

@@ -635,6 +635,26 @@ static double tiling(int number, dvec3 p)
 	}
 }
 
+/* imageutil.cpp's material_map: the entry the image names at the mapped point: a palette image's
+ * index (the nearest texel), another image's red times 255; past the entries' count n it wraps
+ * (mod n), n itself being the last entry (POV-Ray's list walk); outside a once image, or no
+ * image, the first. */
+static double material_map(const pattern_node *n, dvec3 p)
+{
+	float c[4];
+	pattern_node near = *n;
+	near.interpolate = near.interpolate && !(n->img && n->img->indexed); /* an index is not blended */
+	if (!image_texel(&near, p, c))
+		return 0.0;
+	double v = n->img->indexed ? c[0] : c[0] * 255.0;
+	long k = v > 0.0 && v < 1e9 ? (long)v : 0, count = n->n_entries;
+	if (count > 0 && k > count)
+		k %= count;
+	if (count > 0 && k >= count)
+		k = count - 1;
+	return (double)k;
+}
+
 /* POV-Ray 3.7.0's slope_pattern (pattern.cpp; SlopePattern::EvaluateRaw of later versions): the
  * angle between the surface's normal and the direction (or the direction to the point_at
  * point), asin(cos) mapped to [0, 1] (0 facing away, 0.5 across, 1 along), through the low and
@@ -761,6 +781,7 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 	case PATTERN_DENSITY_FILE: return density_file(n, p);
 	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
 	case PATTERN_TILING: return tiling(n->tiling, p);
+	case PATTERN_MATERIAL_MAP: return material_map(n, p);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
@@ -774,7 +795,10 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 
 double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, NULL, POV_EPSILON); }
 
-static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
+static bool is_block(pattern_kind k)
+{
+	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP;
+}
 
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 {

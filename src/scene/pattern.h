@@ -48,6 +48,7 @@ typedef enum pattern_kind {
 	PATTERN_IMAGE_PATTERN, /* an image's grey (or alpha), mapped as an image_map */
 	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
 	PATTERN_TILING, /* POV-Ray's tilings of the x-z plane (1 to 6) */
+	PATTERN_MATERIAL_MAP, /* a block pattern: an image's palette index (or red) picks the entry */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -92,7 +93,7 @@ enum {
 typedef struct pattern_node {
 	pattern_kind kind;
 	float color[5];	  /* PATTERN_PLAIN */
-	const image *img; /* PATTERN_IMAGE, _IMAGE_PATTERN: map_type 0 planar, 1 spherical, 2 cylindrical */
+	const image *img; /* PATTERN_IMAGE, _IMAGE_PATTERN, _MATERIAL_MAP: map_type 0 planar, 1 spherical, 2 cylindrical */
 	int map_type;
 	bool once, interpolate;
 	float filter_all, transmit_all;

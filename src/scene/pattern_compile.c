@@ -121,10 +121,10 @@ static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *o
 	n.warp0 = w0, n.n_warps = pg->n_warps;
 	for (uint32_t i = 0; i < pg->n_warps; i++)
 		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
-	if (pg->kind == SCENE_PAT_IMAGE || pg->kind == SCENE_PAT_IMAGE_PATTERN) {
+	if (pg->kind == SCENE_PAT_IMAGE || pg->kind == SCENE_PAT_IMAGE_PATTERN || pg->kind == SCENE_PAT_MATERIAL_MAP) {
 		if (!c->load) {
 			diag_error(c->d, pg->loc, "an %s in a function's pigment is not supported by circe",
-				   pg->kind == SCENE_PAT_IMAGE ? "image_map" : "image_pattern");
+				   scene_pattern_name(pg->kind));
 			return false;
 		}
 		if (!(n.img = c->load(c->ctx, pg, c->d)))

@@ -86,7 +86,7 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 			fprintf(o, " %d", pg->tiling);
 		if (pg->kind == SCENE_PAT_FACETS)
 			fprintf(o, " coords %g size %g metric %g", pg->facets_coords, pg->facets_size, pg->crackle_metric);
-		if (pg->kind == SCENE_PAT_IMAGE_PATTERN)
+		if (pg->kind == SCENE_PAT_IMAGE_PATTERN || pg->kind == SCENE_PAT_MATERIAL_MAP)
 			fprintf(o, " \"%s\" map_type %d%s%s%s", pg->image ? pg->image : "", pg->map_type, pg->once ? " once" : "",
 				pg->interpolate ? " interpolate" : "", pg->use_alpha ? " use_alpha" : "");
 		if (pg->kind == SCENE_PAT_DENSITY_FILE)

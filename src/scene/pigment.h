@@ -28,7 +28,7 @@
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
 	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
-	X(FACETS, "facets") X(TILING, "tiling")
+	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,

@@ -206,3 +206,5 @@ sphere { 0, 1 pigment { slope { -y, 0, 0.5 altitude y, -1, 1 } } }
 rainbow { angle 42 width 5 direction z up y arc_angle 100 colour_map { [0 rgbf 1] [1 rgbf <1, 0, 0, 0.8>] } }
 // rule: texture_list
 mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { pigment { rgb 0.5 } } } face_indices { 1, <0, 1, 2>, 0 } }
+// rule: material_map
+sphere { 0, 1 texture { material_map { png "t.png" once texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } } }

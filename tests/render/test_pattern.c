@@ -766,9 +766,37 @@ static void check_tiling(void)
 	CHECK_NEAR(pattern_raw(&n, d3(-1.25, 3, 0.5)), 0.5, 1e-12);
 }
 
+/* material_map (imageutil.cpp): the entry a palette image's index names (or another image's red
+ * times 255), past the count n wrapped mod n, n itself the last entry; the first outside a once
+ * image. Entries: three colours. */
+static void check_material_map(void)
+{
+	float px[16] = {0, 0, 0, 1, 2, 0, 0, 1, 4, 0, 0, 1, 3, 0, 0, 1}; /* indices 0, 2, 4, 3 in a row */
+	image img = {.width = 4, .height = 1, .rgba = px, .indexed = true};
+	pattern_node n = pattern_node_default(PATTERN_MATERIAL_MAP);
+	pattern_entry e[3] = {{.value = 0, .color = {1, 0, 0}, .node = -1},
+			      {.value = 1, .color = {0, 1, 0}, .node = -1},
+			      {.value = 2, .color = {0, 0, 1}, .node = -1}};
+	n.img = &img, n.n_entries = 3;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 3};
+	const double want[4] = {0, 2, 1, 2}; /* 4 > 3: 4 mod 3 = 1; 3 = n: the last */
+	for (int i = 0; i < 4; i++) {
+		float c[5];
+		pattern_eval(&pg, 0, d3(0.125 + 0.25 * i, 0.5, 0), 0, c);
+		int got = c[0] == 1 ? 0 : c[1] == 1 ? 1 : c[2] == 1 ? 2 : -1;
+		CHECK(got == (int)want[i], "material_map texel %d: entry %d, want %g", i, got, want[i]);
+	}
+	n.once = true;
+	CHECK_NEAR(pattern_raw(&n, d3(1.5, 0.5, 0)), 0.0, 0.0);
+	n.once = false, img.indexed = false; /* a colour image: red times 255 (2/255 is entry 2) */
+	px[4] = 2.0f / 255.0f;
+	CHECK_NEAR(pattern_raw(&n, d3(0.375, 0.5, 0)), 2.0, 0.0);
+}
+
 int main(void)
 {
 	check_slope();
+	check_material_map();
 	check_tiling();
 	check_facets();
 	check_image_pattern();
