@@ -25,6 +25,7 @@ typedef struct pig_build {
 	int depth;   /* pigments around this one */
 	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
 	bool density; /* a media's density { }: its map may be written density_map */
+	bool default_normal; /* #default's normal: it may have no pattern (only its amount, for later ones) */
 	/* A patterned texture's (lang_texture_pattern): the texture reader, and the entries' textures. */
 	lang_texture_fn tex;
 	const scene_material **tex_mats;
@@ -213,6 +214,12 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 			return lang_error_found(p, "expected a texture in the patterned texture's list");
 		return texture_entry(p, b, pigment_body ? close : LTK_RBRACE, e);
 	}
+	if (!pigment_body && b->normal && peek_word(p, "normal")) { /* a normal's block list: normal { body } */
+		lang_advance(p);
+		diag_loc open = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, true, &e->pigment);
+	}
 	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
 		diag_loc open;
 		lang_advance(p);
@@ -306,8 +313,13 @@ static bool block_list(parser *p, pig_build *b)
 {
 	int most = scene_pattern_blocks(b->pg.kind);
 	lang_tok first = b->tex ? LTK_KW_TEXTURE : LTK_KW_PIGMENT; /* a patterned texture lists textures */
-	if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first)
+	if (b->normal) { /* a normal's block pattern lists normals: `normal { checker normal {..} normal {..} }` */
+		if (!peek_word(p, "normal"))
+			return true;
+		first = lang_peek(p)->kind;
+	} else if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first) {
 		return true;
+	}
 	scene_map_entry *e = arena_zalloc(&p->sc->arena, (size_t)most, sizeof *e);
 	if (!e)
 		return lang_error(p, lang_peek(p)->loc, "out of memory");
@@ -321,7 +333,7 @@ static bool block_list(parser *p, pig_build *b)
 		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
 		n++;
 		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
-	} while ((!b->tex && starts_colour(p)) || lang_peek(p)->kind == first);
+	} while ((!b->tex && !b->normal && starts_colour(p)) || (b->normal ? peek_word(p, "normal") : lang_peek(p)->kind == first));
 	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
 	return true;
 }
@@ -458,9 +470,9 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 	double amount = b->pg.bump_amount, accuracy = b->pg.accuracy; /* a bump_map keeps its normal's amount */
 	bool uv = b->pg.uv_mapping;
 	b->pg = scene_pigment_defaults(kind, kw);
-	b->pg.bump_amount = amount, b->pg.is_normal = b->normal;
+	b->pg.bump_amount = amount, b->pg.is_normal = b->normal, b->pg.uv_mapping = uv;
 	if (pat)
-		b->pg.accuracy = accuracy, b->pg.uv_mapping = uv;
+		b->pg.accuracy = accuracy;
 	lang_tok k = lang_peek(p)->kind;
 	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
 		lang_advance(p);
@@ -1044,6 +1056,12 @@ static bool tiles(parser *p, pig_build *b)
 
 static bool head(parser *p, pig_build *b)
 {
+	while (peek_word(p, "uv_mapping") &&
+	       (lang_raw_next(p) == LTK_UNSUPPORTED ||
+		(lang_raw_next(p) >= LANG_FIRST_KEYWORD && lang_raw_next(p) < LANG_FIRST_DIRECTIVE))) {
+		lang_advance(p); /* POV-Ray's `pigment { uv_mapping spiral2 8 }`: uv_mapping before the pattern */
+		b->pg.uv_mapping = true;
+	}
 	if (b->tex && peek_word(p, "tiles"))
 		return tiles(p, b);
 	if (b->tex && peek_word(p, "material_map"))
@@ -1130,7 +1148,7 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 	TRY(head(p, b));
 	for (;;) {
 		if (lang_accept(p, close)) {
-			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN)
+			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN && !b->default_normal)
 				return lang_error(p, open, "a normal needs a pattern (bumps, dents, ripples, ...)");
 			if (b->pg.kind == SCENE_PAT_PLAIN && (b->n_warps || b->pg.entries))
 				b->n_warps = 0; /* a colour has no pattern to move or map */
@@ -1236,6 +1254,27 @@ bool lang_pigment_map_value(parser *p, value *out)
 const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m) { return declared_tree(p, m, m->loc); }
 
 bool lang_normal_starts(parser *p) { return peek_word(p, "normal"); }
+
+bool lang_default_normal(parser *p, scene_material *m)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+	TRY(lang_enter(p, open));
+	pig_build *b = new_build(p, open);
+	bool ok = b != NULL;
+	if (ok) {
+		if (m->normal)
+			begin_from(b, m->normal);
+		else
+			b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
+		b->normal = b->default_normal = b->pg.is_normal = true;
+		ok = body_in(p, b, LTK_RBRACE, open, &m->normal);
+	}
+	mem_free(b);
+	lang_leave(p);
+	return ok;
+}
 
 bool lang_normal(parser *p, scene_material *m)
 {

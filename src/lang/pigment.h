@@ -47,6 +47,9 @@ bool lang_normal_starts(parser *p);
 /* normal = "normal" "{" [ identifier ] [ pattern [ [","] float ] ] { pattern_modifier
  *          | "bump_size" float | "accuracy" float } "}": m's normal (a copy over a declared one). */
 bool lang_normal(parser *p, scene_material *m);
+/* #default's normal: as lang_normal, but it may have no pattern (POV-Ray's `#default { normal {
+ * bump_size 1.5 } }`: an amount the normals written later start from; it perturbs nothing). */
+bool lang_default_normal(parser *p, scene_material *m);
 /* A normal { } as a VAL_NORMAL value (for #declare). */
 bool lang_normal_value(parser *p, value *out);
 

@@ -3719,7 +3719,7 @@ bool lang_default(parser *p)
 		default:
 			if (lang_normal_starts(p)) {
 				TRY(d = new_texture(p, t.loc));
-				TRY(lang_normal(p, d));
+				TRY(lang_default_normal(p, d));
 				p->default_tex = d;
 				break;
 			}

@@ -56,6 +56,10 @@ static const char *const wave_names[] = {"ramp_wave", "triangle_wave", "sine_wav
 
 void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 {
+	if (pg->kind == SCENE_PAT_PLAIN && pg->is_normal) { /* #default's normal without a pattern */
+		fprintf(o, "normal none %g", pg->bump_amount);
+		return;
+	}
 	if (pg->kind == SCENE_PAT_PLAIN) {
 		fprintf(o, "pigment rgbft <%g, %g, %g, %g, %g>", pg->color[0], pg->color[1], pg->color[2], pg->color[3],
 			pg->color[4]);
