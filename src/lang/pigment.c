@@ -505,11 +505,7 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 		}
 		if (accept_word(p, "map_type")) {
 			TRY(lang_int(p, "after 'map_type'", 0, 7, &n));
-			if (n > 2)
-				return lang_error(p, p->prev.loc, "'map_type %ld' is not supported by circe (0 planar, 1 spherical, "
-								  "2 cylindrical are)",
-						  n);
-			b->pg.map_type = (int)n;
+			b->pg.map_type = n == 1 || n == 2 || n == 5 ? (int)n : 0; /* POV-Ray's map_pos: others planar */
 		} else if (lang_accept(p, LTK_KW_ONCE)) {
 			b->pg.once = true;
 		} else if (accept_word(p, "interpolate")) {

@@ -461,13 +461,29 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 
 /* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
  * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
- * (u the angle about y, v = y); repeated unless once. The texel (bilinear with interpolate, else
+ * (u the angle about y, v = y), torus (5: u the angle about y, v the angle about the ring of
+ * radius 1, from its inside); map types 3, 4, 6 and 7 are planar, as map_pos's default; repeated
+ * unless once. The texel (bilinear with interpolate, else
  * the nearest) into c; false outside the image (once, or the mapping's poles). */
 static bool image_texel(const pattern_node *n, dvec3 p, float c[4])
 {
 	double u = p.x, v = p.y;
 	bool inside = true;
-	if (n->map_type == 1 || n->map_type == 2) {
+	if (n->map_type == 5) { /* torus_image_map: about the y axis, major radius 1 (POV-Ray's Gradient.x) */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return false;
+		double theta = acos(fmax(-1.0, fmin(1.0, p.x / len)));
+		if (p.z < 0.0)
+			theta = TWO_PI - theta;
+		double rx = len - 1.0, r = sqrt(rx * rx + p.y * p.y);
+		if (r == 0.0)
+			return false;
+		double phi = acos(fmax(-1.0, fmin(1.0, -rx / r)));
+		if (p.y > 0.0)
+			phi = TWO_PI - phi;
+		u = theta / TWO_PI, v = phi / TWO_PI;
+	} else if (n->map_type == 1 || n->map_type == 2) {
 		double len = d3_length(p);
 		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
 		double r = sqrt(x * x + z * z), theta = 0.0;

@@ -323,6 +323,18 @@ static void check_image(void)
 	n.map_type = 2; /* cylindrical: v = y */
 	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c); /* theta = pi / 2: u = 0.25, lower row */
 	check5("cylindrical +z, low", c, 0, 0, 1);
+	/* torus (5, imageutil.cpp's torus_image_map, major radius 1): u the angle about y, v the angle
+	 * about the ring from its inside (0), through the outer equator (1/2), the top (3/4) */
+	n.map_type = 5;
+	pattern_eval(&pg, 0, d3(1.5, 0, 0), 0, c); /* u 0, v 1/2: the lower row's first */
+	check5("torus outer equator", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1, 0.5, 0), 0, c); /* u 0, v 3/4: the top row */
+	check5("torus top", c, 1, 0, 0);
+	pattern_eval(&pg, 0, d3(0, 0, -1.5), 0, c); /* u 3/4, v 1/2 */
+	check5("torus at -z", c, 1, 1, 1);
+	pattern_eval(&pg, 0, d3(0, 0.3, 0), 0, c);
+	CHECK(c[4] == 1.0f, "torus on the y axis: off the image");
+	n.map_type = 2;
 	n.filter_all = 0.5f, n.transmit_all = 0.25f;
 	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c);
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "filter all, transmit all: %g %g", c[3], c[4]);
