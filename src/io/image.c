@@ -101,7 +101,7 @@ static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
 		return false;
 	img->width = w;
 	img->height = h;
-	img->indexed = false;
+	img->indexed = false, img->palette = 0;
 	img->rgba = mem_alloc((size_t)w * (size_t)h * 4, sizeof(float));
 	if (!img->rgba) {
 		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
@@ -165,6 +165,7 @@ static bool load_png_indices(png_image *pi, const char *path, size_t max_bytes, 
 		o[0] = v, o[1] = o[2] = 0.0f, o[3] = 1.0f;
 	}
 	out->indexed = true;
+	out->palette = (int)pi->colormap_entries;
 	return true;
 }
 

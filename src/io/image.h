@@ -13,6 +13,7 @@ typedef struct image {
 	int width, height;
 	float *rgba; /* width * height * 4, rows top to bottom */
 	bool indexed; /* IMAGE_INDEX of a palette PNG: red holds each pixel's palette index (0 to 255) */
+	int palette;  /* indexed: the palette's number of entries */
 } image;
 
 typedef enum image_encoding {

@@ -518,12 +518,32 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 			b->pg.use_alpha = true;
 		} else if (!pat && !mat && (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT)) {
 			bool filter = lang_advance(p)->kind == LTK_KW_FILTER;
-			if (!accept_word(p, "all"))
-				return lang_error(p, lang_peek(p)->loc, "a palette index after '%s' is not supported by circe: "
-									"give '%s all' and a float",
-						  filter ? "filter" : "transmit", filter ? "filter" : "transmit");
-			TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
-			*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+			if (accept_word(p, "all")) {
+				TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
+				*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+				/* POV-Ray sets every palette entry too: those given before are overwritten */
+				*(filter ? &b->pg.pal_filter : &b->pg.pal_transmit) = NULL;
+			} else { /* a palette index: POV-Ray's (int)(index + 0.01), then the value */
+				diag_loc at = lang_peek(p)->loc;
+				TRY(lang_float(p, filter ? "as the palette index after 'filter'" : "as the palette index after 'transmit'", &x));
+				int reg = (int)(x + 0.01);
+				if (!(x + 0.01 >= 0.0 && reg < 256))
+					return lang_error(p, at, "palette index %g after '%s' is out of range (0 to 255)", x,
+							  filter ? "filter" : "transmit");
+				lang_accept(p, LTK_COMMA);
+				TRY(lang_float(p, filter ? "as the palette entry's filter" : "as the palette entry's transmit", &x));
+				const float **slot = filter ? &b->pg.pal_filter : &b->pg.pal_transmit;
+				if (!*slot) {
+					float *tab = arena_alloc(&p->sc->arena, 256, sizeof *tab, sizeof *tab);
+					if (!tab)
+						return lang_error(p, at, "out of memory");
+					for (int i = 0; i < 256; i++)
+						tab[i] = NAN;
+					*slot = tab;
+				}
+				((float *)*slot)[reg] = (float)x;
+				b->pg.pal_max = reg > b->pg.pal_max ? reg : b->pg.pal_max;
+			}
 		} else if (b->normal && accept_word(p, "bump_size")) {
 			TRY(lang_float(p, "after 'bump_size'", &b->pg.bump_amount));
 		} else if (b->normal && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||

@@ -949,7 +949,9 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
 
-/* An image_map's colour at p (image_texel maps it): clear outside the image. */
+/* An image_map's colour at p (image_texel maps it): clear outside the image. A palette image's
+ * `filter I, F` and `transmit I, F` give the texels of index I their filter and transmit (the
+ * nearest texel's index: POV-Ray blends interpolated texels' values, circe takes the nearest's). */
 static void image_color(const pattern_node *n, dvec3 p, float out[5])
 {
 	float c[4];
@@ -959,6 +961,18 @@ static void image_color(const pattern_node *n, dvec3 p, float out[5])
 	}
 	out[0] = c[0], out[1] = c[1], out[2] = c[2];
 	out[3] = n->filter_all, out[4] = n->transmit_all;
+	if (n->img_index) {
+		pattern_node near = *n;
+		near.img = n->img_index, near.interpolate = false;
+		float ix[4];
+		if (image_texel(&near, p, ix) && ix[0] >= 0.0f && ix[0] < 256.0f) {
+			int i = (int)ix[0];
+			if (n->pal_filter && !isnan(n->pal_filter[i]))
+				out[3] = n->pal_filter[i];
+			if (n->pal_transmit && !isnan(n->pal_transmit[i]))
+				out[4] = n->pal_transmit[i];
+		}
+	}
 }
 
 void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])

@@ -130,6 +130,8 @@ typedef struct pattern_node {
 	bool use_alpha, img_alpha; /* image_pattern: its alpha as the value; whether the image has any */
 	double facets_coords, facets_size; /* facets: coords' amount (0: the normal's facets), cell size */
 	int tiling; /* tiling: its number */
+	const image *img_index; /* image_map with palette filter/transmit: its indices (IMAGE_INDEX) */
+	const float *pal_filter, *pal_transmit; /* per palette index, NaN: filter_all / transmit_all */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;

@@ -129,6 +129,25 @@ static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *o
 		}
 		if (!(n.img = c->load(c->ctx, pg, c->d)))
 			return false;
+		if (pg->kind == SCENE_PAT_IMAGE && (pg->pal_filter || pg->pal_transmit)) {
+			scene_pigment ix = *pg; /* the same file's palette indices: the loader reads a material_map so */
+			ix.kind = SCENE_PAT_MATERIAL_MAP;
+			if (!(n.img_index = c->load(c->ctx, &ix, c->d)))
+				return false;
+			if (!n.img_index->indexed) {
+				diag_error(c->d, pg->loc, "'filter' or 'transmit' of a palette index needs a palette image, and "
+							  "'%s' is not one (POV-Ray: not with a non color-mapped image)",
+					   pg->image);
+				return false;
+			}
+			if (pg->pal_max >= n.img_index->palette) {
+				diag_error(c->d, pg->loc, "palette index %d of 'filter' or 'transmit' is out of range: '%s' has %d "
+							  "colours (POV-Ray: color register value out of range)",
+					   pg->pal_max, pg->image, n.img_index->palette);
+				return false;
+			}
+			n.pal_filter = pg->pal_filter, n.pal_transmit = pg->pal_transmit;
+		}
 		size_t texels = (size_t)n.img->width * (size_t)n.img->height;
 		for (size_t i = 0; i < texels && !n.img_alpha; i++) /* POV-Ray's HasTransparency */
 			n.img_alpha = n.img->rgba[4 * i + 3] != 1.0f;

@@ -68,6 +68,12 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 	if (pg->kind == SCENE_PAT_IMAGE) {
 		fprintf(o, "pigment image_map \"%s\" map_type %d%s%s", pg->image ? pg->image : "", pg->map_type,
 			pg->once ? " once" : "", pg->interpolate ? " interpolate" : "");
+		for (int i = 0; i < 256; i++) {
+			if (pg->pal_filter && pg->pal_filter[i] == pg->pal_filter[i])
+				fprintf(o, " filter %d, %g", i, pg->pal_filter[i]);
+			if (pg->pal_transmit && pg->pal_transmit[i] == pg->pal_transmit[i])
+				fprintf(o, " transmit %d, %g", i, pg->pal_transmit[i]);
+		}
 	} else {
 		fprintf(o, "pigment %s %s", scene_pattern_name(pg->kind), wave_names[pg->wave]);
 		if (pg->frequency != 1.0 || pg->phase != 0.0)

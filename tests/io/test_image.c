@@ -101,7 +101,7 @@ int main(void)
 
 	/* Bilinear lookup: texel centres give the texel, midpoints the mean, u and v repeat, v = 1 is
 	 * the top row. A 2x2 image: top row 0 and 1, bottom row 2 and 3 (in R). */
-	image tex = {2, 2, (float[]){0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1}, false};
+	image tex = {2, 2, (float[]){0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1}, false, 0};
 	float px[4];
 	image_bilinear(&tex, 0.25f, 0.75f, px);
 	CHECK_NEAR(px[0], 0.0, 1e-6);
@@ -149,7 +149,7 @@ int main(void)
 	pw.colormap_entries = 4;
 	const unsigned char cmap[16] = {0, 0, 0, 0, 255, 0, 0, 255, 0, 0, 0, 255, 0, 0, 255, 255}, idx[4] = {2, 1, 3, 0};
 	CHECK(png_image_write_to_file(&pw, path("p.png"), 0, idx, 4, cmap), "palette png write: %s", pw.message);
-	CHECK(image_load(path("p.png"), IMAGE_INDEX, &img, &d) && img.indexed, "palette png read as indices");
+	CHECK(image_load(path("p.png"), IMAGE_INDEX, &img, &d) && img.indexed && img.palette == 4, "palette png read as indices");
 	for (int i = 0; i < 4; i++)
 		CHECK(img.rgba[4 * i] == (float)idx[i], "palette index %d: %g, want %d", i, img.rgba[4 * i], idx[i]);
 	image_free(&img);

@@ -338,6 +338,21 @@ static void check_image(void)
 	n.filter_all = 0.5f, n.transmit_all = 0.25f;
 	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c);
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "filter all, transmit all: %g %g", c[3], c[4]);
+	/* a palette image's `transmit 1, 0.9` and `filter 3, 0.4`: the texels of those indices; the
+	 * others keep transmit all and filter all */
+	float ix[16] = {1, 0, 0, 1, 3, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1}; /* top: 1 3; bottom: 0 1 */
+	image idx = {.width = 2, .height = 2, .rgba = ix, .indexed = true, .palette = 4};
+	float ft[256], tt[256];
+	for (int i = 0; i < 256; i++)
+		ft[i] = tt[i] = NAN;
+	tt[1] = 0.9f, ft[3] = 0.4f;
+	n.map_type = 0, n.img_index = &idx, n.pal_filter = ft, n.pal_transmit = tt;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c); /* top left: index 1 */
+	CHECK(c[0] == 1 && c[3] == 0.5f && c[4] == 0.9f, "palette index 1: transmit %g filter %g", c[4], c[3]);
+	pattern_eval(&pg, 0, d3(0.75, 0.75, 0), 0, c); /* top right: index 3 */
+	CHECK(c[3] == 0.4f && c[4] == 0.25f, "palette index 3: filter %g transmit %g", c[3], c[4]);
+	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: index 0, none given */
+	CHECK(c[3] == 0.5f && c[4] == 0.25f, "palette index 0: filter %g transmit %g", c[3], c[4]);
 }
 
 static void check_defaults(void)
