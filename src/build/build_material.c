@@ -22,11 +22,16 @@ static size_t texture_room(void)
 const image *world_image(world *w, diag_loc loc, const char *path, image_encoding enc, diag *d)
 {
 	size_t max_bytes = texture_room();
-	char *full = mem_strdup(path);
+	/* The cache's key is the path and the encoding: one file read as colour and as data (an
+	 * image_map and a bump_map of it) is two images. */
+	size_t n = strlen(path);
+	char *full = mem_alloc(n + 3, 1);
 	if (!full) {
 		diag_error(d, loc, "out of memory");
 		return NULL;
 	}
+	memcpy(full, path, n);
+	full[n] = '\x1f', full[n + 1] = (char)('0' + (int)enc), full[n + 2] = '\0';
 	for (size_t i = 0; i < w->n_images; i++)
 		if (!strcmp(w->image_paths[i], full)) {
 			mem_free(full);
@@ -44,7 +49,7 @@ const image *world_image(world *w, diag_loc loc, const char *path, image_encodin
 		diag_error(d, loc, "out of memory");
 		return NULL;
 	}
-	if (!image_load_limited(full, enc, max_bytes, img, d)) {
+	if (!image_load_limited(path, enc, max_bytes, img, d)) {
 		diag_note(d, loc, "the image was named here");
 		mem_free(img);
 		mem_free(full);

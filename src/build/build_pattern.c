@@ -8,13 +8,17 @@
 
 #include <string.h>
 
-/* The loader pattern_compile calls for an image_map or bump_map: the world's image, loaded once
- * (a bump_map's grey is a height, not a colour: read as stored). */
+/* The loader pattern_compile calls for an image_map, bump_map, image_pattern or material_map: the
+ * world's image, loaded once (a bump_map's grey is a height and an image_pattern's a pattern value,
+ * not colours: read as stored; a material_map's palette PNG as its indices). */
 static const image *load_image(void *ctx, const scene_pigment *pg, diag *d)
 {
 	world *w = ctx;
-	const image *img = world_image(w, pg->loc, pg->image, pg->is_normal ? IMAGE_RAW : IMAGE_SRGB, d);
-	if (img && !pg->is_normal)
+	/* image_pattern's grey and material_map's index are data too */
+	bool raw = pg->is_normal || pg->kind == SCENE_PAT_IMAGE_PATTERN || pg->kind == SCENE_PAT_MATERIAL_MAP;
+	image_encoding enc = pg->kind == SCENE_PAT_MATERIAL_MAP ? IMAGE_INDEX : raw ? IMAGE_RAW : IMAGE_SRGB;
+	const image *img = world_image(w, pg->loc, pg->image, enc, d);
+	if (img && !raw)
 		warn_reflectance_image(img, pg->loc, pg->image, d);
 	return img;
 }

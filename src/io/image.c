@@ -101,6 +101,7 @@ static bool image_alloc(image *img, int w, int h, const char *path, diag *d)
 		return false;
 	img->width = w;
 	img->height = h;
+	img->indexed = false, img->palette = 0;
 	img->rgba = mem_alloc((size_t)w * (size_t)h * 4, sizeof(float));
 	if (!img->rgba) {
 		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
@@ -139,6 +140,35 @@ static void from_integers(image *img, const unsigned char *px, int comps, image_
 	}
 }
 
+/* A palette PNG's indices (POV-Ray's material_map and image patterns use them): libpng's colormap
+ * read keeps a palette image's own order, so each pixel's byte is its index in the file's PLTE. */
+static bool load_png_indices(png_image *pi, const char *path, size_t max_bytes, image *out, diag *d)
+{
+	unsigned char cmap[256 * 4];
+	pi->format = PNG_FORMAT_RGBA_COLORMAP;
+	if (!size_ok(pi->width, pi->height, max_bytes, path, d) ||
+	    !image_alloc(out, (int)pi->width, (int)pi->height, path, d)) {
+		png_image_free(pi);
+		return false;
+	}
+	unsigned char *idx = sample_tail(out, 1);
+	if (!png_image_finish_read(pi, NULL, idx, (png_int_32)pi->width, cmap)) {
+		diag_file_error(d, path, "cannot read PNG: %s", pi->message);
+		png_image_free(pi);
+		image_free(out);
+		return false;
+	}
+	size_t n = (size_t)out->width * (size_t)out->height;
+	for (size_t i = 0; i < n; i++) { /* front to back: each index read before its texel is written */
+		float v = idx[i];
+		float *o = out->rgba + i * 4;
+		o[0] = v, o[1] = o[2] = 0.0f, o[3] = 1.0f;
+	}
+	out->indexed = true;
+	out->palette = (int)pi->colormap_entries;
+	return true;
+}
+
 static bool load_png(FILE *fp, const char *path, image_encoding enc, size_t max_bytes, image *out, diag *d)
 {
 	png_image pi;
@@ -148,6 +178,8 @@ static bool load_png(FILE *fp, const char *path, image_encoding enc, size_t max_
 		diag_file_error(d, path, "cannot read PNG: %s", pi.message);
 		return false;
 	}
+	if (enc == IMAGE_INDEX && (pi.format & PNG_FORMAT_FLAG_COLORMAP))
+		return load_png_indices(&pi, path, max_bytes, out, d);
 	/* Let libpng expand palettes and low bit depths to 8-bit RGBA or grey+alpha. */
 	int comps = PNG_IMAGE_SAMPLE_CHANNELS(pi.format) >= 3 ? 4 : 2;
 	pi.format = comps == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA;

@@ -12,11 +12,14 @@
 typedef struct image {
 	int width, height;
 	float *rgba; /* width * height * 4, rows top to bottom */
+	bool indexed; /* IMAGE_INDEX of a palette PNG: red holds each pixel's palette index (0 to 255) */
+	int palette;  /* indexed: the palette's number of entries */
 } image;
 
 typedef enum image_encoding {
 	IMAGE_SRGB, /* 8/16-bit values are sRGB-encoded colour: decode to linear */
-	IMAGE_RAW   /* 8/16-bit values map linearly to [0, 1] (normal maps, masks) */
+	IMAGE_RAW,  /* 8/16-bit values map linearly to [0, 1] (normal maps, masks) */
+	IMAGE_INDEX /* as IMAGE_RAW, but a palette PNG gives its palette indices (image.indexed) */
 } image_encoding;
 
 typedef enum image_format { IMAGE_UNKNOWN, IMAGE_PNG, IMAGE_JPEG, IMAGE_EXR } image_format;

@@ -6,11 +6,15 @@
  * are matched here by their spelling: the keyword table stays as it is. */
 #include "lang/pigment.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 enum {
-	MAX_WARPS = 64 /* warps and transforms of one pigment (consecutive transforms are one) */
+	MAX_WARPS = 64, /* warps and transforms of one pigment (consecutive transforms are one) */
+	MAX_DF3_VOXELS = 1 << 26 /* a density_file's voxels: 256 MiB as floats */
 };
 
 /* A pigment being read: the node and the warps and entries it will own. */
@@ -21,6 +25,7 @@ typedef struct pig_build {
 	int depth;   /* pigments around this one */
 	bool normal; /* a normal { }: an amount after the pattern, bump_size, accuracy */
 	bool density; /* a media's density { }: its map may be written density_map */
+	bool default_normal; /* #default's normal: it may have no pattern (only its amount, for later ones) */
 	/* A patterned texture's (lang_texture_pattern): the texture reader, and the entries' textures. */
 	lang_texture_fn tex;
 	const scene_material **tex_mats;
@@ -76,6 +81,13 @@ static bool starts_modifier(parser *p)
 		if (peek_word(p, modifier_words[i]))
 			return true;
 	return false;
+}
+
+bool lang_pigment_quick_colour(parser *p, bool *matched)
+{
+	*matched = accept_word(p, "quick_color") || accept_word(p, "quick_colour");
+	double c[5];
+	return !*matched || lang_color5(p, "after 'quick_color'", c); /* a preview colour: circe has no preview */
 }
 
 bool lang_pigment_starts(parser *p, bool has_base)
@@ -202,6 +214,12 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 			return lang_error_found(p, "expected a texture in the patterned texture's list");
 		return texture_entry(p, b, pigment_body ? close : LTK_RBRACE, e);
 	}
+	if (!pigment_body && b->normal && peek_word(p, "normal")) { /* a normal's block list: normal { body } */
+		lang_advance(p);
+		diag_loc open = lang_peek(p)->loc;
+		TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, true, &e->pigment);
+	}
 	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
 		diag_loc open;
 		lang_advance(p);
@@ -295,8 +313,13 @@ static bool block_list(parser *p, pig_build *b)
 {
 	int most = scene_pattern_blocks(b->pg.kind);
 	lang_tok first = b->tex ? LTK_KW_TEXTURE : LTK_KW_PIGMENT; /* a patterned texture lists textures */
-	if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first)
+	if (b->normal) { /* a normal's block pattern lists normals: `normal { checker normal {..} normal {..} }` */
+		if (!peek_word(p, "normal"))
+			return true;
+		first = lang_peek(p)->kind;
+	} else if ((b->tex || !starts_colour(p)) && lang_peek(p)->kind != first) {
 		return true;
+	}
 	scene_map_entry *e = arena_zalloc(&p->sc->arena, (size_t)most, sizeof *e);
 	if (!e)
 		return lang_error(p, lang_peek(p)->loc, "out of memory");
@@ -310,7 +333,7 @@ static bool block_list(parser *p, pig_build *b)
 		TRY(entry_item(p, b, false, LTK_RBRACE, &e[n]));
 		n++;
 		lang_accept(p, LTK_COMMA); /* POV-Ray's commas in a list are optional */
-	} while ((!b->tex && starts_colour(p)) || lang_peek(p)->kind == first);
+	} while ((!b->tex && !b->normal && starts_colour(p)) || (b->normal ? peek_word(p, "normal") : lang_peek(p)->kind == first));
 	b->pg.entries = e, b->pg.n_entries = (uint32_t)n, b->pg.block_list = true, b->pg.pigment_map = false;
 	return true;
 }
@@ -422,46 +445,105 @@ static bool warp_block(parser *p, pig_build *b)
 
 /* ---- image_map --------------------------------------------------------------------------- */
 
+static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind);
+
+static bool image_map(parser *p, pig_build *b) { return image_block(p, b, SCENE_PAT_IMAGE); }
+
 /* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" ] string { "map_type" int | "once"
  *             | "interpolate" int | ( "filter" | "transmit" ) "all" float } "}" */
-static bool image_map(parser *p, pig_build *b)
+/* image_pattern = "image_pattern" "{" the same head { "map_type" int | "once" | "interpolate" int
+ *                 | "use_color" | "use_colour" | "use_index" | "use_alpha" | "gamma" float } "}"
+ * (POV-Ray's Parse_Image_Pattern): the image's grey or alpha as a pattern. */
+static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 {
+	const char *what = kind == SCENE_PAT_IMAGE_PATTERN ? "image_pattern"
+			   : kind == SCENE_PAT_MATERIAL_MAP  ? "material_map"
+			   : b->normal			     ? "bump_map"
+							     : "image_map";
+	bool pat = kind == SCENE_PAT_IMAGE_PATTERN, mat = kind == SCENE_PAT_MATERIAL_MAP;
+	scene_map_entry *e = NULL;
+	uint32_t n_tex = 0;
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
-	TRY(lang_expect(p, LTK_LBRACE, "after 'image_map'"));
-	double amount = b->pg.bump_amount; /* a bump_map keeps its normal's amount */
-	b->pg = scene_pigment_defaults(SCENE_PAT_IMAGE, kw);
-	b->pg.bump_amount = amount, b->pg.is_normal = b->normal;
+	char ctx[32];
+	snprintf(ctx, sizeof ctx, "after '%s'", what);
+	TRY(lang_expect(p, LTK_LBRACE, ctx));
+	double amount = b->pg.bump_amount, accuracy = b->pg.accuracy; /* a bump_map keeps its normal's amount */
+	bool uv = b->pg.uv_mapping;
+	b->pg = scene_pigment_defaults(kind, kw);
+	b->pg.bump_amount = amount, b->pg.is_normal = b->normal, b->pg.uv_mapping = uv;
+	if (pat)
+		b->pg.accuracy = accuracy;
 	lang_tok k = lang_peek(p)->kind;
 	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
 		lang_advance(p);
 	else if (lang_peek(p)->kind != LTK_STRING)
-		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in 'image_map'");
+		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in '%s'", what);
 	TRY(lang_asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &b->pg.image));
 	for (;;) {
 		long n;
 		double x;
+		if (mat && lang_peek(p)->kind == LTK_RBRACE) {
+			if (!n_tex)
+				return lang_error_found(p, "expected a texture in 'material_map' (its textures, which the image's "
+							   "indices pick)");
+			lang_advance(p);
+			b->pg.entries = e, b->pg.n_entries = n_tex, b->pg.block_list = true, b->pg.pigment_map = false;
+			return true;
+		}
 		if (lang_accept(p, LTK_RBRACE))
 			return true;
+		if (mat && lang_peek(p)->kind == LTK_KW_TEXTURE) { /* the textures, by index */
+			if (!e && !(e = arena_zalloc(&p->sc->arena, SCENE_PIGMENT_MAX_ENTRIES, sizeof *e)))
+				return lang_error(p, kw, "out of memory");
+			if (n_tex == SCENE_PIGMENT_MAX_ENTRIES)
+				return lang_error(p, lang_peek(p)->loc, "too many textures in 'material_map' (limit is %d)",
+						  SCENE_PIGMENT_MAX_ENTRIES);
+			e[n_tex].value = n_tex;
+			TRY(texture_entry(p, b, LTK_RBRACE, &e[n_tex]));
+			n_tex++;
+			continue;
+		}
 		if (accept_word(p, "map_type")) {
 			TRY(lang_int(p, "after 'map_type'", 0, 7, &n));
-			if (n > 2)
-				return lang_error(p, p->prev.loc, "'map_type %ld' is not supported by circe (0 planar, 1 spherical, "
-								  "2 cylindrical are)",
-						  n);
-			b->pg.map_type = (int)n;
+			b->pg.map_type = n == 1 || n == 2 || n == 5 ? (int)n : 0; /* POV-Ray's map_pos: others planar */
 		} else if (lang_accept(p, LTK_KW_ONCE)) {
 			b->pg.once = true;
 		} else if (accept_word(p, "interpolate")) {
 			TRY(lang_int(p, "after 'interpolate'", 0, 4, &n));
 			b->pg.interpolate = n != 0; /* 2 bilinear, 4 normalised distance: both bilinear here */
-		} else if (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT) {
+		} else if (pat && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||
+				   accept_word(p, "use_index"))) {
+			b->pg.use_alpha = false; /* circe's images have no palette: the grey of the colour */
+		} else if (pat && accept_word(p, "use_alpha")) {
+			b->pg.use_alpha = true;
+		} else if (!pat && !mat && (lang_peek(p)->kind == LTK_KW_FILTER || lang_peek(p)->kind == LTK_KW_TRANSMIT)) {
 			bool filter = lang_advance(p)->kind == LTK_KW_FILTER;
-			if (!accept_word(p, "all"))
-				return lang_error(p, lang_peek(p)->loc, "a palette index after '%s' is not supported by circe: "
-									"give '%s all' and a float",
-						  filter ? "filter" : "transmit", filter ? "filter" : "transmit");
-			TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
-			*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+			if (accept_word(p, "all")) {
+				TRY(lang_float(p, filter ? "after 'filter all'" : "after 'transmit all'", &x));
+				*(filter ? &b->pg.filter_all : &b->pg.transmit_all) = (float)x;
+				/* POV-Ray sets every palette entry too: those given before are overwritten */
+				*(filter ? &b->pg.pal_filter : &b->pg.pal_transmit) = NULL;
+			} else { /* a palette index: POV-Ray's (int)(index + 0.01), then the value */
+				diag_loc at = lang_peek(p)->loc;
+				TRY(lang_float(p, filter ? "as the palette index after 'filter'" : "as the palette index after 'transmit'", &x));
+				int reg = (int)(x + 0.01);
+				if (!(x + 0.01 >= 0.0 && reg < 256))
+					return lang_error(p, at, "palette index %g after '%s' is out of range (0 to 255)", x,
+							  filter ? "filter" : "transmit");
+				lang_accept(p, LTK_COMMA);
+				TRY(lang_float(p, filter ? "as the palette entry's filter" : "as the palette entry's transmit", &x));
+				const float **slot = filter ? &b->pg.pal_filter : &b->pg.pal_transmit;
+				if (!*slot) {
+					float *tab = arena_alloc(&p->sc->arena, 256, sizeof *tab, sizeof *tab);
+					if (!tab)
+						return lang_error(p, at, "out of memory");
+					for (int i = 0; i < 256; i++)
+						tab[i] = NAN;
+					*slot = tab;
+				}
+				((float *)*slot)[reg] = (float)x;
+				b->pg.pal_max = reg > b->pg.pal_max ? reg : b->pg.pal_max;
+			}
 		} else if (b->normal && accept_word(p, "bump_size")) {
 			TRY(lang_float(p, "after 'bump_size'", &b->pg.bump_amount));
 		} else if (b->normal && (accept_word(p, "use_color") || accept_word(p, "use_colour") ||
@@ -470,15 +552,171 @@ static bool image_map(parser *p, pig_build *b)
 		} else if (accept_word(p, "gamma")) {
 			diag_loc at = p->prev.loc;
 			TRY(lang_float(p, "after 'gamma'", &x));
-			diag_warning(p->d, at, "'gamma' of an image_map is ignored: circe decodes PNG and JPEG from sRGB "
-					       "and reads EXR as linear");
+			diag_warning(p->d, at, pat ? "'gamma' of an image_pattern is ignored: circe reads its values as stored, as "
+						     "POV-Ray does without gamma"
+						   : "'gamma' of an image_map is ignored: circe decodes PNG and JPEG from sRGB "
+						     "and reads EXR as linear");
 		} else {
-			return lang_expect_close(p, open, "image_map");
+			return lang_expect_close(p, open, what);
 		}
 	}
 }
 
 /* ---- pattern heads and modifiers --------------------------------------------------------- */
+
+/* A float when one follows (POV-Ray's Allow_Float), else def. */
+static bool optional_float(parser *p, const char *ctx, double def, double *out)
+{
+	lang_tok k = lang_peek(p)->kind;
+	*out = def;
+	if (k == LTK_NUMBER || k == LTK_LPAREN || k == LTK_MINUS || k == LTK_PLUS || peek_declared(p, VAL_FLOAT))
+		return lang_float(p, ctx, out);
+	return true;
+}
+
+/* [ "," ] [ lo ] [ "," ] [ hi ] after a slope's or altitude's vector, as POV-Ray's Parse_Pattern
+ * reads them: kept as lo and hi - lo, or both 0 (with a warning) when hi = lo != 0. */
+static bool slope_range(parser *p, const char *what, double *lo, double *width)
+{
+	diag_loc at = lang_peek(p)->loc;
+	double l, h;
+	lang_accept(p, LTK_COMMA);
+	TRY(optional_float(p, "as the low end of the range", 0.0, &l));
+	lang_accept(p, LTK_COMMA);
+	TRY(optional_float(p, "as the high end of the range", 0.0, &h));
+	if (h != 0.0 && h == l) {
+		diag_warning(p->d, at, "zero %s range, ignored (as POV-Ray does)", what);
+		*lo = *width = 0.0;
+	} else {
+		*lo = l, *width = h - l;
+	}
+	return true;
+}
+
+const char *lang_data_path(parser *p, const char *name, diag_loc at)
+{
+	const char *from = at.src ? at.src->name : "";
+	const char *slash = strrchr(from, '/');
+	size_t nl = strlen(name);
+	for (size_t i = 0; i <= p->opt.n_include_dirs; i++) {
+		const char *dir = i == 0 ? from : p->opt.include_dirs[i - 1];
+		size_t dl = name[0] == '/' ? 0 : i == 0 ? (slash ? (size_t)(slash - from) : 0) : strlen(dir);
+		char *path = arena_alloc(&p->sc->arena, dl + nl + 2, 1, 1);
+		if (!path)
+			return NULL;
+		memcpy(path, dir, dl);
+		size_t k = dl;
+		if (dl && dir[dl - 1] != '/')
+			path[k++] = '/';
+		memcpy(path + k, name, nl + 1);
+		if (access(path, R_OK) == 0)
+			return path;
+		if (name[0] == '/')
+			break;
+	}
+	return NULL;
+}
+
+/* POV-Ray 3.7's Read_Density_File: three big-endian 16-bit sizes, then the voxels, x fastest, of
+ * 8, 16 or 32 bits (big-endian), whichever the file's length fits; each kept as its integer over
+ * its type's largest. */
+static bool read_df3(parser *p, scene_pigment *g, const char *path, diag_loc at)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return lang_error(p, at, "density_file '%s': cannot open it: %s", path, strerror(errno));
+	unsigned char h[6];
+	long len = -1;
+	bool ok = fread(h, 1, 6, f) == 6 && fseek(f, 0, SEEK_END) == 0 && (len = ftell(f)) >= 6 && fseek(f, 6, SEEK_SET) == 0;
+	if (!ok) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s': not a df3 file (it has no 6-byte header of its size)", path);
+	}
+	uint32_t n[3] = {(uint32_t)h[0] << 8 | h[1], (uint32_t)h[2] << 8 | h[3], (uint32_t)h[4] << 8 | h[5]};
+	uint64_t count = (uint64_t)n[0] * n[1] * n[2], data = (uint64_t)len - 6;
+	int bytes = count && data == count ? 1 : count && data == 2 * count ? 2 : count && data == 4 * count ? 4 : 0;
+	if (!bytes) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s': %u x %u x %u voxels, but %llu bytes of data fit none of 8, 16 or "
+					 "32 bits a voxel (POV-Ray: \"Invalid density file size\")",
+				  path, n[0], n[1], n[2], (unsigned long long)data);
+	}
+	if (count > MAX_DF3_VOXELS) {
+		fclose(f);
+		return lang_error(p, at, "density_file '%s' has %llu voxels, more than circe's limit of %d", path,
+				  (unsigned long long)count, MAX_DF3_VOXELS);
+	}
+	float *v = arena_alloc(&p->sc->arena, (size_t)count, sizeof *v, sizeof *v);
+	unsigned char *raw = mem_alloc((size_t)data, 1);
+	ok = v && raw && fread(raw, 1, (size_t)data, f) == (size_t)data;
+	fclose(f);
+	if (ok) {
+		const double top = bytes == 1 ? 255.0 : bytes == 2 ? 65535.0 : 4294967295.0;
+		for (uint64_t i = 0; i < count; i++) {
+			const unsigned char *b = raw + i * (uint64_t)bytes;
+			uint32_t x = bytes == 1 ? b[0]
+				     : bytes == 2 ? (uint32_t)b[0] << 8 | b[1]
+						  : (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3];
+			v[i] = (float)(x / top);
+		}
+	}
+	mem_free(raw);
+	if (!ok)
+		return lang_error(p, at, v && raw ? "density_file '%s': cannot read its voxels" : "out of memory", path);
+	g->voxels = v, g->vox_file = path;
+	memcpy(g->vox_n, n, sizeof n);
+	return true;
+}
+
+/* density_args = "df3" string: the file, found as POV-Ray finds it, read while parsing. */
+static bool density_file_args(parser *p, scene_pigment *g)
+{
+	if (!accept_word(p, "df3"))
+		return lang_error_found(p, "expected 'df3' after 'density_file' (POV-Ray's one density file format)");
+	diag_loc at = lang_peek(p)->loc;
+	const char *name, *path;
+	TRY(lang_string(p, "as the density file", &name));
+	if (!(path = lang_data_path(p, name, at)))
+		return lang_error(p, at, "cannot find density file '%s' (searched the including file's folder%s)", name,
+				  p->opt.n_include_dirs ? " and the -I folders" : "");
+	return read_df3(p, g, path, at);
+}
+
+/* slope_args = vector | "{" [ "point_at" ] vector [ "," lo [ "," hi ] ]
+ *              [ "altitude" vector [ "," lo [ "," hi ] ] ] "}"   (POV-Ray 3.7's Parse_Pattern):
+ * the vectors' lengths weight the slope and the altitude, then both are made unit. */
+static bool slope_args(parser *p, scene_pigment *g, diag_loc kw)
+{
+	dvec3 alt = d3(0, 0, 0);
+	if (lang_peek(p)->kind == LTK_LBRACE) {
+		diag_loc open = lang_advance(p)->loc;
+		g->slope_point_at = accept_word(p, "point_at");
+		TRY(lang_vec3(p, g->slope_point_at ? "after 'point_at'" : "as the slope's direction", &g->slope_dir));
+		TRY(slope_range(p, "slope", &g->slope_lo, &g->slope_width));
+		if (peek_word(p, "altitude")) {
+			if (g->slope_point_at)
+				return lang_error(p, lang_peek(p)->loc, "'altitude' cannot be used with 'point_at' in a slope pattern");
+			lang_advance(p);
+			TRY(lang_vec3(p, "after 'altitude'", &alt));
+			TRY(slope_range(p, "altitude", &g->altit_lo, &g->altit_width));
+		}
+		TRY(lang_expect_close(p, open, "slope"));
+	} else {
+		TRY(lang_vec3(p, "after 'slope'", &g->slope_dir));
+	}
+	if (g->slope_point_at) {
+		g->slope_len = 1.0, g->altit_len = 0.0;
+		return true;
+	}
+	double sl = d3_length(g->slope_dir), al = d3_length(alt), total = sl + al;
+	if (!(total > 0.0) || !isfinite(total))
+		return lang_error(p, kw, "the slope's direction and altitude both have length 0");
+	if (sl > 0.0)
+		g->slope_dir = d3_scale(g->slope_dir, 1.0 / sl);
+	g->altit_dir = al > 0.0 ? d3_scale(alt, 1.0 / al) : alt;
+	g->slope_len = sl / total, g->altit_len = 1.0 - g->slope_len;
+	return true;
+}
 
 /* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
  * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
@@ -492,9 +730,33 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 	b->n_warps = 0;
 	if (k == SCENE_PAT_FUNCTION) /* function { expression }: lang/func.c compiles it */
 		return lang_func_pattern(p, &b->pg.fn);
+	if (k == SCENE_PAT_IMAGE_PATTERN)
+		return image_block(p, b, k);
+	if (k == SCENE_PAT_MATERIAL_MAP) /* a texture's (head() reads it there) */
+		return lang_error(p, kw, "'material_map' picks textures: it belongs in a texture, not in a %s",
+				  b->normal ? "normal" : b->density ? "density" : "pigment");
+	if (k == SCENE_PAT_FACETS && !b->normal) /* POV-Ray's Only_In("facets", "normal") */
+		return lang_error(p, kw, "'facets' is a normal's pattern: it cannot be used in a %s",
+				  b->tex ? "texture" : b->density ? "density" : "pigment");
 	lang_advance(p);
 	if (k == SCENE_PAT_GRADIENT)
 		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_SLOPE)
+		return slope_args(p, &b->pg, kw);
+	if (k == SCENE_PAT_DENSITY_FILE)
+		return density_file_args(p, &b->pg);
+	if (k == SCENE_PAT_TILING) { /* tiling N: POV-Ray reads an unsigned char */
+		double v;
+		diag_loc at = lang_peek(p)->loc;
+		TRY(lang_float(p, "after 'tiling'", &v));
+		int t = (int)(unsigned char)(long long)fmax(-1e18, fmin(1e18, v));
+		if (t >= 7 && t <= 27)
+			return lang_error(p, at, "'tiling %d' is not supported by circe (tilings 1 to 6 are: squares, hexagons, "
+						 "triangles, lozenges, rhombi, rectangles)",
+					  t);
+		b->pg.tiling = t;
+		return true;
+	}
 	if (k == SCENE_PAT_PIGMENT_PATTERN) { /* pigment_pattern { pigment_body } */
 		diag_loc open = lang_peek(p)->loc;
 		TRY(lang_expect(p, LTK_LBRACE, "after 'pigment_pattern'"));
@@ -590,7 +852,7 @@ static bool crackle_modifier(parser *p, pig_build *b, bool *matched)
 			w = i;
 	if (!(*matched = w >= 0))
 		return true;
-	if (b->pg.kind != SCENE_PAT_CRACKLE)
+	if (b->pg.kind != SCENE_PAT_CRACKLE && !(w == 1 && b->pg.kind == SCENE_PAT_FACETS)) /* facets' metric too */
 		return lang_error(p, t.loc, "'%s' belongs to crackle, not to %s", words[w],
 				  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
 	lang_advance(p);
@@ -733,10 +995,28 @@ static bool modifier(parser *p, pig_build *b, bool *matched)
 		b->pg.uv_mapping = true;
 		return true;
 	}
-	if (accept_word(p, "quick_color") || accept_word(p, "quick_colour")) {
-		double c[5];
-		return lang_color5(p, "after 'quick_color'", c); /* a preview colour: circe has no preview */
+	if (peek_word(p, "coords") || peek_word(p, "size")) { /* facets' (POV-Ray: Only_In("coords", "facets")) */
+		bool coords = peek_word(p, "coords");
+		if (b->pg.kind != SCENE_PAT_FACETS)
+			return lang_error(p, at, "'%s' belongs to facets, not to %s", coords ? "coords" : "size",
+					  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+		lang_advance(p);
+		return lang_float(p, coords ? "after 'coords'" : "after 'size'", coords ? &b->pg.facets_coords : &b->pg.facets_size);
 	}
+	if (peek_word(p, "interpolate")) { /* density_file's (POV-Ray: "Cannot use interpolate with non-density_file") */
+		if (b->pg.kind != SCENE_PAT_DENSITY_FILE)
+			return lang_error(p, at, "'interpolate' belongs to density_file (or an image_map's block), not to %s",
+					  b->pg.kind == SCENE_PAT_PLAIN ? "a plain colour" : scene_pattern_name(b->pg.kind));
+		lang_advance(p);
+		double v;
+		TRY(lang_float(p, "after 'interpolate'", &v));
+		b->pg.vox_interp = (int)v;
+		return true;
+	}
+	TRY(lang_pigment_quick_colour(p, matched));
+	if (*matched)
+		return true;
+	*matched = true;
 	if (accept_word(p, "noise_generator")) {
 		long n;
 		TRY(lang_int(p, "after 'noise_generator'", 1, 3, &n));
@@ -759,8 +1039,49 @@ static bool normal_amount(parser *p, pig_build *b)
 	return true;
 }
 
+/* tiles = "tiles" "{" texture "tile2" texture "}": POV-Ray's old checker of two textures
+ * (3.7's Parse_Tiles: the first texture on the checker's odd cells, entry 1, tile2's on the even
+ * ones, entry 0). A tile of layered textures is not supported, as a layered texture in any
+ * patterned texture's entry. */
+static bool tiles(parser *p, pig_build *b)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'tiles'"));
+	b->pg = scene_pigment_defaults(SCENE_PAT_CHECKER, kw);
+	b->n_warps = 0;
+	scene_map_entry *e = arena_zalloc(&p->sc->arena, 2, sizeof *e);
+	if (!e)
+		return lang_error(p, kw, "out of memory");
+	for (int i = 1; i >= 0; i--) {
+		if (i == 0 && !accept_word(p, "tile2"))
+			return lang_error_found(p, "expected 'tile2' and the second tile's texture in 'tiles'");
+		if (lang_peek(p)->kind != LTK_KW_TEXTURE)
+			return lang_error_found(p, "expected the %s tile's texture in 'tiles'", i ? "first" : "second");
+		e[i].value = i;
+		TRY(texture_entry(p, b, LTK_RBRACE, &e[i]));
+		if (lang_peek(p)->kind == LTK_KW_TEXTURE)
+			return lang_error(p, lang_peek(p)->loc, "a layered texture in a tile (a texture after a texture) is "
+								"not supported by circe");
+	}
+	TRY(lang_expect_close(p, open, "tiles"));
+	const scene_material *first = b->tex_mats[0]; /* the textures in the entries' order */
+	b->tex_mats[0] = b->tex_mats[1], b->tex_mats[1] = first;
+	b->pg.entries = e, b->pg.n_entries = 2, b->pg.block_list = true, b->pg.pigment_map = false;
+	return true;
+}
+
 static bool head(parser *p, pig_build *b)
 {
+	while (peek_word(p, "uv_mapping") &&
+	       (lang_raw_next(p) == LTK_UNSUPPORTED ||
+		(lang_raw_next(p) >= LANG_FIRST_KEYWORD && lang_raw_next(p) < LANG_FIRST_DIRECTIVE))) {
+		lang_advance(p); /* POV-Ray's `pigment { uv_mapping spiral2 8 }`: uv_mapping before the pattern */
+		b->pg.uv_mapping = true;
+	}
+	if (b->tex && peek_word(p, "tiles"))
+		return tiles(p, b);
+	if (b->tex && peek_word(p, "material_map"))
+		return image_block(p, b, SCENE_PAT_MATERIAL_MAP);
 	scene_pattern_kind k = peek_pattern(p);
 	if (k != SCENE_PAT_COUNT) {
 		double amount = b->pg.bump_amount, accuracy = b->pg.accuracy;
@@ -775,6 +1096,21 @@ static bool head(parser *p, pig_build *b)
 		if (sn) {
 			lang_advance(p);
 			begin_from(b, sn->val.mat->normal);
+			return true;
+		}
+		const symbol *sa = peek_declared(p, VAL_ARRAY);
+		if (sa && lang_raw_next(p) == LTK_LBRACKET) { /* normal { Normals[I] } (the portfolio's allnormals) */
+			lang_token t = *lang_advance(p);
+			diag_loc at = lang_peek(p)->loc;
+			lang_array *a;
+			size_t i;
+			TRY(lang_element_target(p, &t, &a, &i));
+			if (!a->set[i])
+				return lang_error(p, at, "element of '%.*s' read before it was assigned", (int)t.len, t.text);
+			if (a->elems[i].kind != VAL_NORMAL)
+				return lang_error(p, t.loc, "an element of '%.*s' is %s, not a normal", (int)t.len, t.text,
+						  lang_value_kind_name(&a->elems[i]));
+			begin_from(b, a->elems[i].mat->normal);
 			return true;
 		}
 		if (lang_peek(p)->kind == LTK_KW_IMAGE_MAP)
@@ -828,7 +1164,7 @@ static bool body_in(parser *p, pig_build *b, lang_tok close, diag_loc open, cons
 	TRY(head(p, b));
 	for (;;) {
 		if (lang_accept(p, close)) {
-			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN)
+			if (b->normal && b->pg.kind == SCENE_PAT_PLAIN && !b->default_normal)
 				return lang_error(p, open, "a normal needs a pattern (bumps, dents, ripples, ...)");
 			if (b->pg.kind == SCENE_PAT_PLAIN && (b->n_warps || b->pg.entries))
 				b->n_warps = 0; /* a colour has no pattern to move or map */
@@ -935,6 +1271,27 @@ const scene_pigment *lang_pigment_tree(parser *p, const scene_material *m) { ret
 
 bool lang_normal_starts(parser *p) { return peek_word(p, "normal"); }
 
+bool lang_default_normal(parser *p, scene_material *m)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
+	TRY(lang_enter(p, open));
+	pig_build *b = new_build(p, open);
+	bool ok = b != NULL;
+	if (ok) {
+		if (m->normal)
+			begin_from(b, m->normal);
+		else
+			b->pg = scene_pigment_defaults(SCENE_PAT_PLAIN, open);
+		b->normal = b->default_normal = b->pg.is_normal = true;
+		ok = body_in(p, b, LTK_RBRACE, open, &m->normal);
+	}
+	mem_free(b);
+	lang_leave(p);
+	return ok;
+}
+
 bool lang_normal(parser *p, scene_material *m)
 {
 	lang_advance(p);
@@ -957,7 +1314,11 @@ bool lang_normal_value(parser *p, value *out)
 
 /* ---- patterned textures ------------------------------------------------------------------------ */
 
-bool lang_texture_pattern_starts(parser *p) { return peek_pattern(p) != SCENE_PAT_COUNT; }
+bool lang_texture_pattern_starts(parser *p)
+{
+	scene_pattern_kind k = peek_pattern(p);
+	return (k != SCENE_PAT_COUNT && k != SCENE_PAT_MATERIAL_MAP) || peek_word(p, "tiles") || peek_word(p, "material_map");
+}
 
 bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture_fn tex, const scene_pigment **pig,
 			  const scene_material *const **mats, uint32_t *n)
@@ -978,4 +1339,59 @@ bool lang_texture_pattern(parser *p, diag_loc open, lang_tok close, lang_texture
 	mem_free(b);
 	lang_leave(p);
 	return ok;
+}
+
+/* ---- rainbow ----------------------------------------------------------------------------------- */
+
+/* rainbow = "rainbow" "{" { "angle" float | "width" float | "distance" float | "jitter" float
+ *           | "direction" vector | "up" vector | "arc_angle" float | "falloff_angle" float
+ *           | colour_map } "}"   (POV-Ray 3.7's Parse_Rainbow, its checks included).
+ * Read and ignored with a warning: POV-Ray's rainbow is a colour added to the rays that pass
+ * `distance` at an angle to `direction`, an atmospheric effect circe does not render. */
+bool lang_rainbow(parser *p)
+{
+	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'rainbow'"));
+	dvec3 dir = d3(0, 0, 0), up = d3(0, 1, 0);
+	double arc = 180.0, falloff = 180.0, x;
+	bool has_arc = false, has_falloff = false;
+	for (;;) {
+		diag_loc at = lang_peek(p)->loc;
+		if (lang_accept(p, LTK_RBRACE))
+			break;
+		if (accept_word(p, "angle") || accept_word(p, "width") || accept_word(p, "distance") ||
+		    accept_word(p, "jitter")) {
+			TRY(lang_float(p, "in 'rainbow'", &x));
+		} else if (accept_word(p, "direction")) {
+			TRY(lang_vec3(p, "after 'direction'", &dir));
+		} else if (accept_word(p, "up")) {
+			TRY(lang_vec3(p, "after 'up'", &up));
+		} else if (peek_word(p, "arc_angle") || peek_word(p, "falloff_angle")) {
+			bool is_arc = peek_word(p, "arc_angle");
+			lang_advance(p);
+			TRY(lang_float(p, is_arc ? "after 'arc_angle'" : "after 'falloff_angle'", &x));
+			if (!(x >= 0.0 && x <= 360.0))
+				return lang_error(p, at, "a rainbow's %s must be from 0 to 360 degrees, found %g",
+						  is_arc ? "arc_angle" : "falloff_angle", x);
+			*(is_arc ? &arc : &falloff) = x;
+			*(is_arc ? &has_arc : &has_falloff) = true;
+		} else if (lang_pigment_map_starts(p)) {
+			value v;
+			TRY(lang_pigment_map_value(p, &v));
+		} else {
+			return lang_expect_close(p, open, "rainbow");
+		}
+	}
+	if (has_arc && !has_falloff)
+		falloff = arc;
+	if (arc < falloff)
+		return lang_error(p, kw, "a rainbow's arc_angle %g is smaller than its falloff_angle %g", arc, falloff);
+	double dd = d3_dot(dir, dir), uu = d3_dot(up, up);
+	if (dd < 1e-10 || uu < 1e-10)
+		return lang_error(p, kw, "a rainbow's %s vector is zero", dd < 1e-10 ? "direction" : "up");
+	if (fabs(1.0 - fabs(d3_dot(dir, up) / sqrt(dd * uu))) < 1e-10)
+		return lang_error(p, kw, "a rainbow's up and direction vectors are colinear");
+	diag_warning(p->d, kw, "'rainbow' is ignored: circe does not render POV-Ray's rainbow (a colour added to the "
+			       "rays at an angle to its direction, an atmospheric effect)");
+	return true;
 }

@@ -11,6 +11,15 @@
 /* True when the lookahead begins a body lang_pigment_rest reads: a pattern's word, image_map,
  * uv_mapping, or, over a declared pigment (has_base), one of a pattern's modifiers. */
 bool lang_pigment_starts(parser *p, bool has_base);
+/* rainbow { ... }: read, checked as POV-Ray checks it, and ignored with a warning (the lookahead
+ * is "rainbow"). */
+bool lang_rainbow(parser *p);
+/* A data file the scene names (an image, a df3), as POV-Ray's Locate_File finds it: beside the
+ * file that names it at `at`, then in each -I folder; the readable path (in the arena), or NULL. */
+const char *lang_data_path(parser *p, const char *name, diag_loc at);
+/* "quick_color" colour (or quick_colour) when the lookahead is one: POV-Ray's preview colour,
+ * read and ignored (circe has no quick preview). *matched says whether it was. */
+bool lang_pigment_quick_colour(parser *p, bool *matched);
 /* The rest of a pigment's body up to its '}' (consumed), over base (a declared pigment's tree,
  * or NULL); *out receives the new tree (in the scene's arena). open: the pigment's '{'. */
 bool lang_pigment_rest(parser *p, const scene_pigment *base, diag_loc open, const scene_pigment **out);
@@ -38,6 +47,9 @@ bool lang_normal_starts(parser *p);
 /* normal = "normal" "{" [ identifier ] [ pattern [ [","] float ] ] { pattern_modifier
  *          | "bump_size" float | "accuracy" float } "}": m's normal (a copy over a declared one). */
 bool lang_normal(parser *p, scene_material *m);
+/* #default's normal: as lang_normal, but it may have no pattern (POV-Ray's `#default { normal {
+ * bump_size 1.5 } }`: an amount the normals written later start from; it perturbs nothing). */
+bool lang_default_normal(parser *p, scene_material *m);
 /* A normal { } as a VAL_NORMAL value (for #declare). */
 bool lang_normal_value(parser *p, value *out);
 

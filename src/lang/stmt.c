@@ -91,6 +91,13 @@ static bool asset_path(parser *p, const char *what, scene_asset_kind kind, const
 	diag_loc loc = lang_peek(p)->loc;
 	const char *name;
 	TRY(lang_string(p, what, &name));
+	/* An image not beside the scene is sought in the -I folders, as POV-Ray's Locate_File searches
+	 * its library paths (povray-includes ships test.png, plasma2.png, mtmandj.png, ...). */
+	const char *found = kind == SCENE_ASSET_IMAGE ? lang_data_path(p, name, loc) : NULL;
+	if (found) {
+		*out = found;
+		return scene_add_asset(p->sc, kind, found, loc) || lang_error(p, loc, "out of memory");
+	}
 	const char *from = loc.src ? loc.src->name : "";
 	const char *slash = strrchr(from, '/');
 	if (name[0] == '/' || !slash) {
@@ -474,6 +481,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		TRY(v = declared(p, VAL_PIGMENT, "a pigment"));
 		copy_pigment(m, v->mat);
 	}
+	for (bool q = true; q;) /* pigment { quick_color C } over a texture's pigment (chess2.pov) */
+		TRY(lang_pigment_quick_colour(p, &q));
 	if (lang_pigment_starts(p, m->pigment != NULL)) {
 		TRY(lang_pigment_rest(p, m->pigment, open, &m->pigment));
 		m->image = NULL;
@@ -497,6 +506,8 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 			return pattern_transform(p, m, moved, "pigment");
 		bool matched;
 		TRY(pattern_transform_item(p, m, &moved, &matched));
+		if (!matched)
+			TRY(lang_pigment_quick_colour(p, &matched));
 		if (!matched)
 			return lang_expect_close(p, open, "pigment");
 	}
@@ -1690,6 +1701,8 @@ static bool plane(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 
 typedef struct meshbuf {
 	vecbuf pos, nrm, uv, faces, nidx, uvidx, sizes, locs;
+	vecbuf texs;  /* mesh2's texture_list: const scene_material * */
+	vecbuf ftex;  /* each face's texture_list index (int32_t; -1: none), with a texture_list */
 } meshbuf;
 
 static void meshbuf_init(meshbuf *b)
@@ -1702,12 +1715,15 @@ static void meshbuf_init(meshbuf *b)
 	vecbuf_init(&b->uvidx, sizeof(uint32_t));
 	vecbuf_init(&b->sizes, sizeof(uint32_t));
 	vecbuf_init(&b->locs, sizeof(diag_loc));
+	vecbuf_init(&b->texs, sizeof(const scene_material *));
+	vecbuf_init(&b->ftex, sizeof(int32_t));
 }
 
 static void meshbuf_free(meshbuf *b)
 {
 	vecbuf_free(&b->pos), vecbuf_free(&b->nrm), vecbuf_free(&b->uv), vecbuf_free(&b->faces);
 	vecbuf_free(&b->nidx), vecbuf_free(&b->uvidx), vecbuf_free(&b->sizes), vecbuf_free(&b->locs);
+	vecbuf_free(&b->texs), vecbuf_free(&b->ftex);
 }
 
 /* Hands a buffer's array to the IR (NULL when empty) and resets the buffer. */
@@ -1950,6 +1966,56 @@ static bool item_uv(parser *p, void *c, uint32_t i)
 	return push(p, x->dst, &uv);
 }
 
+/* A face's texture_list indices after its <a, b, c>, with a texture_list (POV-Ray's
+ * Parse_Mesh2): [ "," ] t, or t1 "," t2 "," t3 (per-vertex textures, interpolated by POV-Ray: circe
+ * takes them when the three are the same, else refuses); none: the mesh's own texture. */
+static bool face_textures(parser *p, list_ctx *x, uint32_t i)
+{
+	int32_t t = -1;
+	lang_accept(p, LTK_COMMA); /* the list's commas are optional: taking it here changes nothing */
+	lang_token *k = lang_peek(p);
+	const symbol *s = k->kind == LTK_IDENT ? lang_lookup(p, k->text, k->len) : NULL;
+	if (k->kind == LTK_NUMBER || k->kind == LTK_LPAREN || (s && s->val.kind == VAL_FLOAT)) {
+		uint32_t n = (uint32_t)x->b->texs.len;
+		long v[3];
+		int got = 0;
+		diag_loc at = lang_peek(p)->loc;
+		do {
+			TRY(lang_int(p, "as the face's texture_list index", 0, (long)n - 1, &v[got]));
+			got++;
+		} while (got < 3 && lang_peek(p)->kind == LTK_COMMA && lang_raw_next(p) != LTK_LT &&
+			 lang_accept(p, LTK_COMMA));
+		if (got == 2)
+			return lang_error(p, at, "face %u of 'face_indices' has 2 texture indices: give 1, or 3 (one a vertex)", i);
+		if (got == 3 && (v[1] != v[0] || v[2] != v[0]))
+			return lang_error(p, at, "face %u of 'face_indices' gives its vertices different textures (%ld, %ld, "
+						 "%ld): POV-Ray's textures interpolated across a triangle are not supported by circe",
+					  i, v[0], v[1], v[2]);
+		t = (int32_t)v[0];
+	}
+	return push(p, &x->b->ftex, &t);
+}
+
+/* texture_list = "texture_list" "{" int { [ "," ] texture } "}": mesh2's textures, which its
+ * faces name by index (before face_indices, as POV-Ray requires). */
+static bool texture_list(parser *p, meshbuf *b)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'texture_list'"));
+	long n;
+	TRY(lang_int(p, "as the number of textures in 'texture_list'", 1, 65535, &n));
+	for (long i = 0; i < n; i++) {
+		lang_accept(p, LTK_COMMA);
+		if (lang_peek(p)->kind != LTK_KW_TEXTURE)
+			return lang_error_found(p, "'texture_list' announces %ld textures but gives %ld: expected 'texture'", n, i);
+		const scene_material *m;
+		TRY(texture(p, &m, NULL));
+		TRY(push(p, &b->texs, &m));
+	}
+	return lang_expect_close(p, open, "texture_list");
+}
+
 /* A triangle <a, b, c> of mesh2 (exactly three indices). */
 static bool item_tri(parser *p, void *c, uint32_t i)
 {
@@ -1966,6 +2032,8 @@ static bool item_tri(parser *p, void *c, uint32_t i)
 					  x->target, idx[k], x->limit);
 		TRY(push(p, x->dst, &idx[k]));
 	}
+	if (x->dst == &x->b->faces && x->b->texs.len)
+		TRY(face_textures(p, x, i));
 	return true;
 }
 
@@ -1996,7 +2064,7 @@ static bool once(parser *p, bool *seen, const lang_token *t)
 }
 
 /* mesh2 = "mesh2" "{" "vertex_vectors" list [ "normal_vectors" list ] [ "uv_vectors" list ]
- *         "face_indices" list [ "normal_indices" list ] [ "uv_indices" list ] { modifier } "}" */
+ *         [ texture_list ] "face_indices" list [ "normal_indices" list ] [ "uv_indices" list ] { modifier } "}" */
 static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 {
 	bool seen[6] = {false};
@@ -2006,6 +2074,14 @@ static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 	for (;;) {
 		lang_token t = *lang_peek(p);
 		list_ctx c = {b, NULL, NULL, "", 0, NULL};
+		if (lang_word_is(&t, "texture_list")) {
+			if (seen[3])
+				return lang_error(p, t.loc, "'texture_list' must come before 'face_indices' (POV-Ray's order)");
+			if (b->texs.len)
+				return lang_error(p, t.loc, "'texture_list' given twice");
+			TRY(texture_list(p, b));
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_KW_VERTEX_VECTORS:
 			TRY(once(p, &seen[0], &t));
@@ -2063,35 +2139,111 @@ static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 	}
 }
 
+/* The faces of m whose texture_list index is t (-1: those without) as a mesh of their own, its
+ * vertex arrays copied whole; NULL when none has it (or out of memory: *oom). */
+static scene_geom *mesh_part(parser *p, const scene_mesh *m, const int32_t *ftex, int32_t t, diag_loc kw, bool *oom)
+{
+	uint32_t n = 0;
+	for (uint32_t f = 0; f < m->n_faces; f++)
+		n += ftex[f] == t;
+	if (!n)
+		return NULL;
+	scene_geom *g = new_geom(p, SHAPE_MESH, kw);
+	if (!g)
+		return *oom = true, NULL;
+	scene_mesh *d = &g->u.mesh;
+	*d = (scene_mesh){.n_positions = m->n_positions, .n_normals = m->n_normals, .n_uvs = m->n_uvs, .n_faces = n};
+	d->positions = mem_alloc(m->n_positions, sizeof *d->positions);
+	d->normals = m->normals ? mem_alloc(m->n_normals, sizeof *d->normals) : NULL;
+	d->uvs = m->uvs ? mem_alloc(m->n_uvs, sizeof *d->uvs) : NULL;
+	d->faces = mem_alloc(n, 3 * sizeof *d->faces);
+	d->normal_idx = m->normal_idx ? mem_alloc(n, 3 * sizeof *d->normal_idx) : NULL;
+	d->uv_idx = m->uv_idx ? mem_alloc(n, 3 * sizeof *d->uv_idx) : NULL;
+	if (!d->positions || (m->normals && !d->normals) || (m->uvs && !d->uvs) || !d->faces ||
+	    (m->normal_idx && !d->normal_idx) || (m->uv_idx && !d->uv_idx))
+		return *oom = true, NULL; /* the geom's arrays are freed with the scene */
+	memcpy(d->positions, m->positions, m->n_positions * sizeof *d->positions);
+	if (m->normals)
+		memcpy(d->normals, m->normals, m->n_normals * sizeof *d->normals);
+	if (m->uvs)
+		memcpy(d->uvs, m->uvs, m->n_uvs * sizeof *d->uvs);
+	for (uint32_t f = 0, k = 0; f < m->n_faces; f++) {
+		if (ftex[f] != t)
+			continue;
+		memcpy(d->faces + 3 * k, m->faces + 3 * f, 3 * sizeof *d->faces);
+		if (m->normal_idx)
+			memcpy(d->normal_idx + 3 * k, m->normal_idx + 3 * f, 3 * sizeof *d->normal_idx);
+		if (m->uv_idx)
+			memcpy(d->uv_idx + 3 * k, m->uv_idx + 3 * f, 3 * sizeof *d->uv_idx);
+		k++;
+	}
+	return g;
+}
+
+/* A mesh2 with a texture_list is placed as one mesh per texture its faces name (and one of the
+ * faces naming none, which take the object's texture), each list texture in the mesh's own space,
+ * moving with the object as POV-Ray's per-triangle textures do. */
+static bool place_textured_mesh(parser *p, vecbuf *out, const scene_mesh *whole, const meshbuf *b, diag_loc kw)
+{
+	const int32_t *ftex = b->ftex.data;
+	const scene_material *const *texs = b->texs.data;
+	bool oom = false;
+	for (int32_t t = -1; t < (int32_t)b->texs.len; t++) {
+		scene_geom *g = mesh_part(p, whole, ftex, t, kw, &oom);
+		if (oom)
+			return lang_error(p, kw, "out of memory");
+		if (!g)
+			continue;
+		TRY(place(p, out, g, kw));
+		if (t >= 0)
+			VECBUF_AT(out, scene_object, out->len - 1).material = texs[t];
+	}
+	return true;
+}
+
 static bool mesh2(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	meshbuf b;
 	meshbuf_init(&b);
-	scene_geom *g = mesh2_body(p, &b, kw, open) ? new_geom(p, SHAPE_MESH, kw) : NULL;
-	if (!g) {
+	if (!mesh2_body(p, &b, kw, open)) {
 		meshbuf_free(&b);
 		return false;
 	}
-	scene_mesh *m = &g->u.mesh;
-	m->positions = take(&b.pos, &m->n_positions);
-	m->normals = take(&b.nrm, &m->n_normals);
-	m->uvs = take(&b.uv, &m->n_uvs);
-	m->faces = take(&b.faces, &m->n_faces);
-	m->n_faces /= 3;
+	scene_mesh m = {0};
+	m.positions = take(&b.pos, &m.n_positions);
+	m.normals = take(&b.nrm, &m.n_normals);
+	m.uvs = take(&b.uv, &m.n_uvs);
+	m.faces = take(&b.faces, &m.n_faces);
+	m.n_faces /= 3;
 	/* Normals or uvs without their own indices follow the vertex indices. */
 	if (b.nidx.len)
-		m->normal_idx = take(&b.nidx, NULL);
-	else if (m->normals && (m->normal_idx = mem_alloc(m->n_faces, 3 * sizeof(uint32_t))))
-		memcpy(m->normal_idx, m->faces, (size_t)m->n_faces * 3 * sizeof(uint32_t));
+		m.normal_idx = take(&b.nidx, NULL);
+	else if (m.normals && (m.normal_idx = mem_alloc(m.n_faces, 3 * sizeof(uint32_t))))
+		memcpy(m.normal_idx, m.faces, (size_t)m.n_faces * 3 * sizeof(uint32_t));
 	if (b.uvidx.len)
-		m->uv_idx = take(&b.uvidx, NULL);
-	else if (m->uvs && (m->uv_idx = mem_alloc(m->n_faces, 3 * sizeof(uint32_t))))
-		memcpy(m->uv_idx, m->faces, (size_t)m->n_faces * 3 * sizeof(uint32_t));
-	meshbuf_free(&b);
-	if ((m->normals && !m->normal_idx) || (m->uvs && !m->uv_idx))
-		return lang_error(p, kw, "out of memory");
+		m.uv_idx = take(&b.uvidx, NULL);
+	else if (m.uvs && (m.uv_idx = mem_alloc(m.n_faces, 3 * sizeof(uint32_t))))
+		memcpy(m.uv_idx, m.faces, (size_t)m.n_faces * 3 * sizeof(uint32_t));
+	bool textured = false;
+	for (size_t f = 0; f < b.ftex.len; f++)
+		textured |= VECBUF_AT(&b.ftex, int32_t, f) >= 0;
 	size_t start = out->len;
-	TRY(place(p, out, g, kw));
+	bool ok = (!m.normals || m.normal_idx) && (!m.uvs || m.uv_idx);
+	scene_geom *g = NULL;
+	if (!ok)
+		lang_error(p, kw, "out of memory");
+	else if (textured)
+		ok = place_textured_mesh(p, out, &m, &b, kw);
+	else
+		ok = (g = new_geom(p, SHAPE_MESH, kw)) != NULL && place(p, out, g, kw);
+	if (g)
+		g->u.mesh = m; /* the geom owns the arrays now */
+	else {
+		mem_free(m.positions), mem_free(m.normals), mem_free(m.uvs);
+		mem_free(m.faces), mem_free(m.normal_idx), mem_free(m.uv_idx);
+	}
+	meshbuf_free(&b);
+	TRY(ok);
 	return object_tail(p, out, start, open, "mesh2");
 }
 
@@ -3568,7 +3720,7 @@ bool lang_default(parser *p)
 		default:
 			if (lang_normal_starts(p)) {
 				TRY(d = new_texture(p, t.loc));
-				TRY(lang_normal(p, d));
+				TRY(lang_default_normal(p, d));
 				p->default_tex = d;
 				break;
 			}
@@ -3595,6 +3747,8 @@ bool lang_statement(parser *p)
 	lang_token *t = lang_peek(p);
 	if (t->kind == LTK_UNSUPPORTED && t->len == 3 && !memcmp(t->text, "fog", 3))
 		return lang_fog(p);
+	if (lang_word_is(t, "rainbow"))
+		return lang_rainbow(p);
 	if (lang_word_is(t, "media"))
 		return lang_error(p, t->loc, "atmospheric media (a 'media' outside an interior) is not supported by circe: "
 					     "give it to a container object's interior (a box or sphere around the scene)");

@@ -207,7 +207,8 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
  * a reflectance. A texture whose pattern carries filter or transmit (bsdf_clear.patterned) takes
  * the point's: its transparent part lets pigment * filter + transmit through and its diffuse is
  * scaled by the opacity 1 - filter - transmit, as a plain colour's (build_material.c build_clear). */
-static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params)
+static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, vec3 ns,
+			  bsdf_params *params)
 {
 	const world_inst *in = &w->insts[hit->object];
 	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
@@ -216,7 +217,8 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 	double tol = wm->pattern_uv ? PATTERN_HIT_ULPS * FLT_EPSILON
 				    : PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
 	float c[5];
-	pattern_eval(&w->patterns, wm->pattern, p, tol, c);
+	pattern_surface sf = {v3_to_d3(ns), v3_to_d3(hit->p)}; /* slope's: the world normal, perturbed */
+	pattern_eval_at(&w->patterns, wm->pattern, p, &sf, tol, c);
 	vec3 rgb = v3(c[0], c[1], c[2]);
 	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
 	if (params->kind == BSDF_POV && params->clear.patterned) {
@@ -238,7 +240,8 @@ static void shade_normal(const world *w, const world_material *wm, const render_
 	const world_inst *in = &w->insts[hit->object];
 	dvec3 p = wm->normal_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
 	dvec3 n = pattern_normal_through(&in->pattern_xf, v3_to_d3(*ns), true);
-	pattern_perturb(&w->patterns, wm->normal, p, &n);
+	pattern_surface sf = {v3_to_d3(*ns), v3_to_d3(hit->p)};
+	pattern_perturb_at(&w->patterns, wm->normal, p, &sf, &n);
 	vec3 out = v3_normalize(d3v(pattern_normal_through(&in->pattern_xf, n, false)));
 	if (v3_is_finite(out) && v3_length2(out) > 0.5f)
 		*ns = out;
@@ -252,8 +255,12 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	if (hit->material < 0 || hit->object >= w->n_insts)
 		return;
 	const world_material *wm = &w->materials[hit->material];
+	/* The normal first: a slope pigment sees the perturbed normal, as POV-Ray's (trace.cpp's
+	 * ComputeLightedTexture perturbs a layer's normal before its pigment). */
+	if (wm->has_normal)
+		shade_normal(w, wm, hit, ns);
 	if (wm->has_pattern)
-		shade_pattern(w, wm, hit, params);
+		shade_pattern(w, wm, hit, *ns, params);
 	if (wm->albedo) {
 		float c[4];
 		image_bilinear(wm->albedo, hit->uv.x, hit->uv.y, c);
@@ -263,8 +270,6 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 		if (params->kind == BSDF_POV) /* the texel is the finish's pigment */
 			bsdf_pov_set_pigment(params, params->diffuse);
 	}
-	if (wm->has_normal)
-		shade_normal(w, wm, hit, ns);
 	const world_inst *in = &w->insts[hit->object];
 	const mesh *m = &in->g->m;
 	if (wm->normal_map && m->tangents) {

@@ -467,11 +467,319 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	}
 }
 
+/* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
+ * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
+ * (u the angle about y, v = y), torus (5: u the angle about y, v the angle about the ring of
+ * radius 1, from its inside); map types 3, 4, 6 and 7 are planar, as map_pos's default; repeated
+ * unless once. The texel (bilinear with interpolate, else
+ * the nearest) into c; false outside the image (once, or the mapping's poles). */
+static bool image_texel(const pattern_node *n, dvec3 p, float c[4])
+{
+	double u = p.x, v = p.y;
+	bool inside = true;
+	if (n->map_type == 5) { /* torus_image_map: about the y axis, major radius 1 (POV-Ray's Gradient.x) */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return false;
+		double theta = acos(fmax(-1.0, fmin(1.0, p.x / len)));
+		if (p.z < 0.0)
+			theta = TWO_PI - theta;
+		double rx = len - 1.0, r = sqrt(rx * rx + p.y * p.y);
+		if (r == 0.0)
+			return false;
+		double phi = acos(fmax(-1.0, fmin(1.0, -rx / r)));
+		if (p.y > 0.0)
+			phi = TWO_PI - phi;
+		u = theta / TWO_PI, v = phi / TWO_PI;
+	} else if (n->map_type == 1 || n->map_type == 2) {
+		double len = d3_length(p);
+		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
+		double r = sqrt(x * x + z * z), theta = 0.0;
+		if (r > 0.0) {
+			theta = acos(fmax(-1.0, fmin(1.0, x / r)));
+			if (z < 0.0)
+				theta = TWO_PI - theta;
+		}
+		u = theta / TWO_PI;
+		v = n->map_type == 1 ? 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI : p.y;
+		inside = len > 0.0 && (n->map_type == 1 || r > 0.0);
+	}
+	if (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0))
+		inside = false;
+	if (!inside || !n->img)
+		return false;
+	if (n->interpolate) {
+		image_bilinear(n->img, (float)(u - floor(u)), (float)(v - floor(v)), c);
+	} else { /* the nearest texel */
+		int w = n->img->width, h = n->img->height;
+		int ix = (int)fmin(w - 1, floor((u - floor(u)) * w)), iy = (int)fmin(h - 1, floor((1.0 - (v - floor(v))) * h));
+		for (int i = 0; i < 4; i++)
+			c[i] = n->img->rgba[((size_t)iy * w + ix) * 4 + i];
+	}
+	return true;
+}
+
+/* imageutil.cpp's image_pattern: the image's grey (0.297 r + 0.589 g + 0.114 b) at the mapped
+ * texel, or with use_alpha its transparency (1 - alpha; an image without alpha: its red, as
+ * POV-Ray), clamped to [0, 1]; 0 outside the image. The image is read as stored (POV-Ray reads it
+ * without gamma correction). */
+static double image_pattern(const pattern_node *n, dvec3 p)
+{
+	float c[4];
+	if (!image_texel(n, p, c))
+		return 0.0;
+	double v = n->use_alpha ? (n->img_alpha ? 1.0 - c[3] : c[0]) : 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+	return clamp01(v);
+}
+
+/* ---- POV-Ray 3.7's tilings (pattern.cpp's tiling_*): each folds the x-z plane into one tile
+ * by its symmetries and gives 0 at the tile's centre rising to 1 at its edge; a tiling of k kinds
+ * of tile puts kind i in [i/k, (i+1)/k]. Written from POV-Ray's constructions: ---------------- */
+
+#define TILE_S3 1.7320508075688772935 /* sqrt 3 */
+#define TILE_H3 0.86602540378443864676 /* sqrt 3 / 2 */
+
+/* v modulo m into [0, m). */
+static double mod_floor(double v, double m) { return v - m * floor(v / m); }
+
+/* Squares of side 1 on the integer grid: the larger of the two axes' distances from the centre. */
+static double tiling_square(dvec3 p)
+{
+	double x = fabs(p.x), z = fabs(p.z);
+	x = 2.0 * fabs(x - floor(x) - 0.5), z = 2.0 * fabs(z - floor(z) - 0.5);
+	return fmax(x, z);
+}
+
+/* Hexagons of side 1: the 3 x sqrt 3 cell folded by its mirrors to the triangle between a
+ * hexagon's centre and an edge, where the two distances to the edges are linear. */
+static double tiling_hexagon(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 3.0), z = mod_floor(p.z, TILE_S3);
+	if (z > TILE_H3)
+		z = TILE_S3 - z;
+	if (x > 1.5)
+		x -= 1.5, z = TILE_H3 - z;
+	if (TILE_S3 * x + z < TILE_H3)
+		x = 0.5 - x, z = TILE_H3 - z;
+	if (x > 1.0)
+		x = 2.0 - x;
+	double d = fmax(1.0 - z / TILE_H3, 1.0 - (TILE_S3 * x + z - TILE_H3) / TILE_S3);
+	return clamp01(d);
+}
+
+/* Equilateral triangles of side 1, two kinds (pointing up and down: 0 and 1/2). */
+static double tiling_triangle(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 0.5)
+		x = 1.0 - x;
+	if (x == 0.0) /* POV-Ray's own branch on the cell's edge: a mirror, no change of kind */
+		z = TILE_H3 - z, x = 0.5;
+	else if (z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+	double d = fmax(1.0 - z * 2.0 * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3);
+	return kind / 2.0 + 0.5 * d;
+}
+
+/* The lozenge fold shared by tilings 4 and 5: (x, z) in a half cell to the distance to the
+ * lozenge's edges. */
+static double lozenge_fold(double x, double z)
+{
+	if (2.0 * z > TILE_H3)
+		z = TILE_H3 - z, x = 1.5 - x;
+	if (x > 0.75)
+		x -= 1.0;
+	if (x != 0.0 && z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x;
+	return fmax(1.0 - z * 4.0 * TILE_S3 / 3.0, 1.0 - fabs(TILE_S3 * x - z) * TILE_S3 * 2.0 / 3.0);
+}
+
+/* Lozenges (rhombi of 60 degrees), one kind. */
+static double tiling_lozenge(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, TILE_S3);
+	if (z > TILE_H3)
+		z -= TILE_H3, x += 0.5;
+	return lozenge_fold(x, z);
+}
+
+/* Rhombi in three orientations (kinds 0, 1/3, 2/3): the cube pattern seen from a corner. */
+static double tiling_rhombus(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 3.0), z = mod_floor(p.z, TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind = 2 - kind;
+	if (x > 1.5)
+		x -= 1.5, z = TILE_H3 - z, kind = 2 - kind;
+	if (x < 0.5)
+		x = 1.0 - x, kind = 2 - kind;
+	x -= 0.5;
+	if (x == 0.0 || z / x > TILE_S3) { /* the upright rhombus turned by 60 degrees onto the others */
+		double rx = x / 2.0 + z * TILE_H3, rz = z / 2.0 - x * TILE_H3;
+		x = rx, z = rz, kind = 1;
+	}
+	return clamp01(lozenge_fold(x, z) / 3.0 + kind / 3.0);
+}
+
+/* Rectangles of 2 x 1 in a basket weave of 4 x 4, two kinds (along x: 1/2 and up; along z: 0):
+ * each unit square of the cell is moved to its rectangle's frame. */
+static double tiling_rectangle(dvec3 p)
+{
+	double x = mod_floor(p.x, 4.0), z = mod_floor(p.z, 4.0);
+	/* per unit square (x + 4 z): its shift in x and z, and whether its rectangle lies along x */
+	static const signed char shift[16][3] = {
+		{0, 1, 1}, {2, 0, 0}, {2, 0, 0}, {3, 0, 1}, {0, 1, 1}, {1, 2, 1}, {3, 1, 0}, {3, 1, 0},
+		{0, 2, 0}, {1, 2, 1}, {2, 3, 1}, {4, 2, 0}, {1, 3, 0}, {1, 3, 0}, {2, 3, 1}, {3, 4, 1}};
+	int cell = (int)x + 4 * (int)z;
+	cell = cell < 0 ? 0 : cell > 15 ? 15 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	bool along_x = shift[cell][2];
+	double dx, dz;
+	if (along_x)
+		dx = 2.0 * fabs(x - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	else
+		dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * fabs(z - 0.5);
+	return fabs(fmax(dx, dz) / 2.0 + (along_x ? 0.5 : 0.0));
+}
+
+/* TilingPattern::EvaluateRaw's choice; the parser refuses 7 to 27, POV-Ray's others are squares. */
+static double tiling(int number, dvec3 p)
+{
+	switch (number) {
+	case 2: return tiling_hexagon(p);
+	case 3: return tiling_triangle(p);
+	case 4: return tiling_lozenge(p);
+	case 5: return tiling_rhombus(p);
+	case 6: return tiling_rectangle(p);
+	default: return tiling_square(p);
+	}
+}
+
+/* imageutil.cpp's material_map: the entry the image names at the mapped point: a palette image's
+ * index (the nearest texel), another image's red times 255; past the entries' count n it wraps
+ * (mod n), n itself being the last entry (POV-Ray's list walk); outside a once image, or no
+ * image, the first. */
+static double material_map(const pattern_node *n, dvec3 p)
+{
+	float c[4];
+	pattern_node near = *n;
+	near.interpolate = near.interpolate && !(n->img && n->img->indexed); /* an index is not blended */
+	if (!image_texel(&near, p, c))
+		return 0.0;
+	double v = n->img->indexed ? c[0] : c[0] * 255.0;
+	long k = v > 0.0 && v < 1e9 ? (long)v : 0, count = n->n_entries;
+	if (count > 0 && k > count)
+		k %= count;
+	if (count > 0 && k >= count)
+		k = count - 1;
+	return (double)k;
+}
+
+/* POV-Ray 3.7.0's slope_pattern (pattern.cpp; SlopePattern::EvaluateRaw of later versions): the
+ * angle between the surface's normal and the direction (or the direction to the point_at
+ * point), asin(cos) mapped to [0, 1] (0 facing away, 0.5 across, 1 along), through the low and
+ * width given; with an altitude, blended by the two weights with the point's projection on the
+ * altitude's direction (through its low and width); wrapped into [0, 1) (1 itself just below).
+ * The normal is the surface's in world space, not moved by the pattern's transforms (POV-Ray's
+ * PNormal); the altitude sees the pattern's point. No surface (a function, a medium, a sky): 0. */
+static double slope(const pattern_node *n, dvec3 p, const pattern_surface *sf)
+{
+	if (!sf)
+		return 0.0;
+	double v1;
+	if (n->slope_point_at) {
+		dvec3 d = d3_sub(n->slope_dir, sf->point);
+		double len = d3_length(d);
+		v1 = len > 0.0 ? d3_dot(sf->normal, d) / len : 0.0;
+	} else {
+		v1 = d3_dot(sf->normal, n->slope_dir);
+	}
+	v1 = v1 > 1.0 ? 1.0 : v1 < -1.0 ? -1.0 : v1;
+	v1 = (asin(v1) / M_PI * 2.0 + 1.0) * 0.5;
+	if (n->slope_width != 0.0)
+		v1 = (v1 - n->slope_lo) / n->slope_width;
+	if (n->altit_len == 0.0) {
+		if (v1 == 1.0)
+			return v1 - POV_EPSILON;
+		return v1 < 0.0 ? 1.0 + fmod(v1, 1.0) : fmod(v1, 1.0);
+	}
+	double v2 = d3_dot(p, n->altit_dir);
+	if (n->altit_width != 0.0)
+		v2 = (v2 - n->altit_lo) / n->altit_width;
+	double v = n->slope_len * v1 + n->altit_len * v2;
+	if (v - 1.0 < POV_EPSILON && v >= 1.0)
+		return v - POV_EPSILON;
+	return v < 0.0 ? 1.0 + fmod(v, 1.0) : fmod(v, 1.0);
+}
+
+/* density_pattern's tricubic step (POV-Ray 3.7's intp3): Catmull-Rom between fb and fc. */
+static double intp3(double t, double fa, double fb, double fc, double fd)
+{
+	double b = (fc - fa) * 0.5, d = (fd - fb) * 0.5;
+	double e = 2.0 * (fb - fc) + b + d, f = -3.0 * (fb - fc) - 2.0 * b - d;
+	return ((e * t + f) * t + b) * t + fb;
+}
+
+static uint32_t wrap_index(long long i, uint32_t n) { return (uint32_t)(((i % n) + n) % n); }
+
+/* POV-Ray 3.7's density_pattern (pattern.cpp): the voxels fill the unit cube, 0 outside it;
+ * interpolate 0 the voxel the point is in, 1 trilinear between it and its upper neighbours
+ * (wrapping at the far faces), 2 tricubic (Catmull-Rom over 4 x 4 x 4 voxels, wrapping; POV-Ray
+ * wraps an index -1 through an unsigned modulo, which it means as the last voxel: circe takes
+ * the last voxel). Never below 0. */
+static double density_file(const pattern_node *n, dvec3 p)
+{
+	const uint32_t sx = n->vox_n[0], sy = n->vox_n[1], sz = n->vox_n[2];
+	if (!n->voxels || !sx || !sy || !sz || !(p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0 && p.z >= 0.0 && p.z < 1.0))
+		return 0.0;
+#define VOX(x, y, z) ((double)n->voxels[((size_t)(z) * sy + (y)) * sx + (x)])
+	double xx = p.x * sx, yy = p.y * sy, zz = p.z * sz, d;
+	uint32_t x1 = (uint32_t)xx, y1 = (uint32_t)yy, z1 = (uint32_t)zz;
+	x1 = x1 < sx ? x1 : sx - 1, y1 = y1 < sy ? y1 : sy - 1, z1 = z1 < sz ? z1 : sz - 1;
+	switch (n->vox_interp % 10) {
+	case 0: d = VOX(x1, y1, z1); break;
+	case 1: {
+		uint32_t x2 = (x1 + 1) % sx, y2 = (y1 + 1) % sy, z2 = (z1 + 1) % sz;
+		xx -= floor(xx), yy -= floor(yy), zz -= floor(zz);
+		double xi = 1.0 - xx, yi = 1.0 - yy;
+		d = ((VOX(x1, y1, z1) * xi + VOX(x2, y1, z1) * xx) * yi + (VOX(x1, y2, z1) * xi + VOX(x2, y2, z1) * xx) * yy) *
+			    (1.0 - zz) +
+		    ((VOX(x1, y1, z2) * xi + VOX(x2, y1, z2) * xx) * yi + (VOX(x1, y2, z2) * xi + VOX(x2, y2, z2) * xx) * yy) * zz;
+		break;
+	}
+	default: {
+		xx -= floor(xx), yy -= floor(yy), zz -= floor(zz);
+		uint32_t k[4];
+		for (int i = 0; i < 4; i++)
+			k[i] = wrap_index((long long)z1 + i - 1, sz);
+		double in_y[4];
+		for (int i = 0; i < 4; i++) {
+			uint32_t ii = wrap_index((long long)x1 + i - 1, sx);
+			double in_z[4];
+			for (int j = 0; j < 4; j++) {
+				uint32_t jj = wrap_index((long long)y1 + j - 1, sy);
+				in_z[j] = intp3(zz, VOX(ii, jj, k[0]), VOX(ii, jj, k[1]), VOX(ii, jj, k[2]), VOX(ii, jj, k[3]));
+			}
+			in_y[i] = intp3(yy, in_z[0], in_z[1], in_z[2], in_z[3]);
+		}
+		d = intp3(xx, in_y[0], in_y[1], in_y[2], in_y[3]);
+		break;
+	}
+	}
+#undef VOX
+	return d < 0.0 ? 0.0 : d;
+}
+
 /* pattern_raw with eps for POV-Ray's EPSILON: the nudge that puts a point on a cell's boundary on
  * the side POV-Ray puts it, grown to the point's own uncertainty (pattern_eval's tol). */
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5]);
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double eps, int depth,
+		       float out[5]);
 
-static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps)
+static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps)
 {
 	switch (n->kind) {
 	case PATTERN_CHECKER: /* CheckerPattern::Evaluate */
@@ -493,20 +801,28 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, do
 			return 0.0;
 		return v > 1.0 ? fmod(v, 1.0) : v;
 	}
+	case PATTERN_SLOPE: return slope(n, p, sf);
+	case PATTERN_DENSITY_FILE: return density_file(n, p);
+	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
+	case PATTERN_TILING: return tiling(n->tiling, p);
+	case PATTERN_MATERIAL_MAP: return material_map(n, p);
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
 			return 0.0;
-		eval_depth(pg, (uint32_t)n->child, p, eps, 0, c);
+		eval_depth(pg, (uint32_t)n->child, p, sf, eps, 0, c);
 		return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
 	}
 	default: return raw_shapes(n, p, eps);
 	}
 }
 
-double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, POV_EPSILON); }
+double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, NULL, POV_EPSILON); }
 
-static bool is_block(pattern_kind k) { return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK; }
+static bool is_block(pattern_kind k)
+{
+	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP;
+}
 
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 {
@@ -584,7 +900,7 @@ double pattern_value(const pattern_prog *pg, const pattern_node *n, dvec3 p)
 {
 	double eps = POV_EPSILON;
 	dvec3 q = warped(pg, n, p, &eps);
-	double raw = raw_eps(pg, n, q, eps);
+	double raw = raw_eps(pg, n, q, NULL, eps);
 	if (is_block(n->kind) || n->kind == PATTERN_PLAIN || n->kind == PATTERN_IMAGE)
 		return raw;
 	return pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
@@ -599,17 +915,19 @@ static void finite5(float c[5])
 
 
 /* An entry's colour at p: its own, or its pigment's. */
-static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, double eps, int depth, float out[5])
+static void entry_color(const pattern_prog *pg, const pattern_entry *e, dvec3 p, const pattern_surface *sf, double eps,
+			int depth, float out[5])
 {
 	if (e->node >= 0 && depth < PATTERN_MAX_DEPTH) {
-		eval_depth(pg, (uint32_t)e->node, p, eps, depth + 1, out);
+		eval_depth(pg, (uint32_t)e->node, p, sf, eps, depth + 1, out);
 		return;
 	}
 	for (int i = 0; i < 5; i++)
 		out[i] = e->node >= 0 ? 0.0f : e->color[i];
 }
 
-static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, double eps, int depth,
+static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, const pattern_surface *sf,
+		       double eps, int depth,
 		       float out[5])
 {
 	const pattern_entry *e = pg->entries + n->entry0;
@@ -620,11 +938,11 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 		return;
 	}
 	if (k == 1 || v <= e[0].value) {
-		entry_color(pg, &e[0], p, eps, depth, out);
+		entry_color(pg, &e[0], p, sf, eps, depth, out);
 		return;
 	}
 	if (v >= e[k - 1].value) {
-		entry_color(pg, &e[k - 1], p, eps, depth, out);
+		entry_color(pg, &e[k - 1], p, sf, eps, depth, out);
 		return;
 	}
 	uint32_t j = 1;
@@ -633,67 +951,55 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 	double span = e[j].value - e[j - 1].value;
 	double t = span > 0.0 ? (v - e[j - 1].value) / span : 1.0;
 	float a[5], b[5];
-	entry_color(pg, &e[j - 1], p, eps, depth, a);
-	entry_color(pg, &e[j], p, eps, depth, b);
+	entry_color(pg, &e[j - 1], p, sf, eps, depth, a);
+	entry_color(pg, &e[j], p, sf, eps, depth, b);
 	for (int i = 0; i < 5; i++)
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
 
-/* ImagePattern through imageutil.cpp's map_pos: planar on the unit square of x-y, spherical
- * (u the longitude from +x towards +z... as POV-Ray's acos form, v the latitude), cylindrical
- * (u the angle about y, v = y); repeated unless once, outside which it is clear. */
+/* An image_map's colour at p (image_texel maps it): clear outside the image. A palette image's
+ * `filter I, F` and `transmit I, F` give the texels of index I their filter and transmit (the
+ * nearest texel's index: POV-Ray blends interpolated texels' values, circe takes the nearest's). */
 static void image_color(const pattern_node *n, dvec3 p, float out[5])
 {
-	double u = p.x, v = p.y;
-	bool inside = true;
-	if (n->map_type == 1 || n->map_type == 2) {
-		double len = d3_length(p);
-		double x = len > 0.0 ? p.x / len : 0.0, y = len > 0.0 ? p.y / len : 0.0, z = len > 0.0 ? p.z / len : 0.0;
-		double r = sqrt(x * x + z * z), theta = 0.0;
-		if (r > 0.0) {
-			theta = acos(fmax(-1.0, fmin(1.0, x / r)));
-			if (z < 0.0)
-				theta = TWO_PI - theta;
-		}
-		u = theta / TWO_PI;
-		v = n->map_type == 1 ? 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI : p.y;
-		inside = len > 0.0 && (n->map_type == 1 || r > 0.0);
-	}
-	if (n->once && (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0))
-		inside = false;
-	if (!inside || !n->img) {
+	float c[4];
+	if (!image_texel(n, p, c)) {
 		out[0] = out[1] = out[2] = out[3] = 0.0f, out[4] = 1.0f;
 		return;
 	}
-	float c[4];
-	if (n->interpolate) {
-		image_bilinear(n->img, (float)(u - floor(u)), (float)(v - floor(v)), c);
-	} else { /* the nearest texel */
-		int w = n->img->width, h = n->img->height;
-		int ix = (int)fmin(w - 1, floor((u - floor(u)) * w)), iy = (int)fmin(h - 1, floor((1.0 - (v - floor(v))) * h));
-		for (int i = 0; i < 4; i++)
-			c[i] = n->img->rgba[((size_t)iy * w + ix) * 4 + i];
-	}
 	out[0] = c[0], out[1] = c[1], out[2] = c[2];
 	out[3] = n->filter_all, out[4] = n->transmit_all;
+	if (n->img_index) {
+		pattern_node near = *n;
+		near.img = n->img_index, near.interpolate = false;
+		float ix[4];
+		if (image_texel(&near, p, ix) && ix[0] >= 0.0f && ix[0] < 256.0f) {
+			int i = (int)ix[0];
+			if (n->pal_filter && !isnan(n->pal_filter[i]))
+				out[3] = n->pal_filter[i];
+			if (n->pal_transmit && !isnan(n->pal_transmit[i]))
+				out[4] = n->pal_transmit[i];
+		}
+	}
 }
 
 void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5])
 {
-	map_lookup(pg, n, v, p, POV_EPSILON, depth, out);
+	map_lookup(pg, n, v, p, NULL, POV_EPSILON, depth, out);
 }
 
 /* A layered texture's pigment (POV-Ray's texture { } texture { }, bottom first): each upper layer
  * shows its own colour where it is opaque, 1 - filter - transmit, and lets the layers below
  * through by transmit, tinted by its colour by filter (trace.cpp's layering of textures, on
  * pigments alone). What the whole lets through is the layers' product. */
-static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps,
+		   int depth, float out[5])
 {
 	for (int i = 0; i < 5; i++)
 		out[i] = 0.0f;
 	for (uint32_t j = 0; j < n->n_entries; j++) {
 		float c[5];
-		entry_color(pg, &pg->entries[n->entry0 + j], p, eps, depth, c);
+		entry_color(pg, &pg->entries[n->entry0 + j], p, sf, eps, depth, c);
 		if (j == 0) {
 			memcpy(out, c, sizeof c);
 			continue;
@@ -707,13 +1013,14 @@ static void layers(const pattern_prog *pg, const pattern_node *n, dvec3 p, doubl
 
 /* POV-Ray's average (pigment.cpp ColourBlendMap/PigmentBlendMap::ComputeAverage): the entries'
  * colours at p, each weighted by its value, divided by the weights' sum (the parser makes it > 0). */
-static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, double eps, int depth, float out[5])
+static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, const pattern_surface *sf, double eps,
+		    int depth, float out[5])
 {
 	double sum[5] = {0}, total = 0.0;
 	for (uint32_t j = 0; j < n->n_entries; j++) {
 		const pattern_entry *e = &pg->entries[n->entry0 + j];
 		float c[5];
-		entry_color(pg, e, p, eps, depth, c);
+		entry_color(pg, e, p, sf, eps, depth, c);
 		for (int i = 0; i < 5; i++)
 			sum[i] += e->value * c[i];
 		total += e->value;
@@ -722,7 +1029,8 @@ static void average(const pattern_prog *pg, const pattern_node *n, dvec3 p, doub
 		out[i] = total != 0.0 ? (float)(sum[i] / total) : 0.0f;
 }
 
-static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double eps, int depth, float out[5])
+static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double eps, int depth,
+		       float out[5])
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (n->kind == PATTERN_PLAIN) {
@@ -731,7 +1039,7 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 		return;
 	}
 	if (n->kind == PATTERN_LAYERS) {
-		layers(pg, n, p, eps, depth, out);
+		layers(pg, n, p, sf, eps, depth, out);
 		finite5(out);
 		return;
 	}
@@ -739,23 +1047,29 @@ static void eval_depth(const pattern_prog *pg, uint32_t node, dvec3 p, double ep
 	if (n->kind == PATTERN_IMAGE) {
 		image_color(n, q, out);
 	} else if (n->kind == PATTERN_AVERAGE) {
-		average(pg, n, q, eps, depth, out);
+		average(pg, n, q, sf, eps, depth, out);
 	} else if (is_block(n->kind)) {
-		uint32_t i = (uint32_t)raw_eps(pg, n, q, eps);
+		uint32_t i = (uint32_t)raw_eps(pg, n, q, sf, eps);
 		if (i < n->n_entries)
-			entry_color(pg, &pg->entries[n->entry0 + i], q, eps, depth, out);
+			entry_color(pg, &pg->entries[n->entry0 + i], q, sf, eps, depth, out);
 		else
 			out[0] = out[1] = out[2] = out[3] = out[4] = 0.0f;
 	} else {
-		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, eps), n->frequency, n->phase, n->exponent);
-		map_lookup(pg, n, v, q, eps, depth, out);
+		double v = pattern_wave_apply(n->wave, raw_eps(pg, n, q, sf, eps), n->frequency, n->phase, n->exponent);
+		map_lookup(pg, n, v, q, sf, eps, depth, out);
 	}
 	finite5(out);
 }
 
+void pattern_eval_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double tol,
+		     float out[5])
+{
+	eval_depth(pg, node, p, sf, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+}
+
 void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5])
 {
-	eval_depth(pg, node, p, tol > POV_EPSILON ? tol : POV_EPSILON, 0, out);
+	pattern_eval_at(pg, node, p, NULL, tol, out);
 }
 
 pattern_node pattern_node_default(pattern_kind kind)
@@ -875,7 +1189,7 @@ static double slope_lookup(const pattern_prog *pg, const pattern_node *n, double
 	return t * t * t * (s1 + s2 + 2.0 * (h1 - h2)) - t * t * (2.0 * s1 + s2 + 3.0 * (h1 - h2)) + t * s1 + h1;
 }
 
-static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps)
+static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q, const pattern_surface *sf, double eps)
 {
 	static const double pyramid[4][3] = {{0.942809041, -0.333333333, 0.0},
 					     {-0.471404521, -0.333333333, 0.816496581},
@@ -887,7 +1201,7 @@ static dvec3 slope_normal(const pattern_prog *pg, const pattern_node *n, dvec3 q
 	for (int i = 0; i < 4; i++) {
 		dvec3 v = d3(pyramid[i][0], pyramid[i][1], pyramid[i][2]);
 		dvec3 at = d3_add(q, d3_scale(v, delta));
-		double value = raw_eps(pg, n, at, eps);
+		double value = raw_eps(pg, n, at, sf, eps);
 		if (!is_block(n->kind))
 			value = pattern_wave_apply(n->wave, value, n->frequency, n->phase, n->exponent);
 		if (n->slope_map)
@@ -937,13 +1251,49 @@ static dvec3 bump_map_normal(const pattern_node *n, dvec3 q, dvec3 nrm)
 	return d3_sub(d3_add(d3_scale(xp, bump.x), d3_scale(yp, bump.y)), d3_scale(zp, bump.z));
 }
 
-static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm);
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, int depth,
+			  dvec3 *nrm);
+
+/* POV-Ray 3.7's facets (normal.cpp): the point (coords) or the unit normal, scaled by 1 / size,
+ * finds the nearest of the cells' feature points (crackle's, of the 81 cubes about it) under the
+ * metric (2: squared distance; 1: POV-Ray's dx + dy + dz, signed as it writes it; else the sum of
+ * |d|^metric). Without coords that point is the new normal (so the normal is quantised into
+ * facets); with coords F the normal is pushed by F times the vector noise at that point, less
+ * its part along the normal. */
+static dvec3 facets_normal(const pattern_node *n, dvec3 q, dvec3 v)
+{
+	double len = d3_length(v);
+	if (!(len > 0.0))
+		return v;
+	v = d3_scale(v, 1.0 / len);
+	double scale = n->facets_size < 1e-6 ? 1e6 : 1.0 / n->facets_size, m = n->crackle_metric;
+	dvec3 t = d3_scale(n->facets_coords != 0.0 ? q : v, scale);
+	int cx = cell_of(t.x), cy = cell_of(t.y), cz = cell_of(t.z);
+	double best = INFINITY;
+	dvec3 nearest = t;
+	for (int i = -2; i <= 2; i++)
+		for (int j = -2; j <= 2; j++)
+			for (int k = -2; k <= 2; k++) {
+				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
+					continue;
+				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k), d = d3_sub(f, t);
+				double s = m == 2.0 ? d3_dot(d, d) : m == 1.0 ? d.x + d.y + d.z : metric_sum(d, m);
+				if (s < best)
+					best = s, nearest = f;
+			}
+	if (n->facets_coords == 0.0)
+		return nearest;
+	dvec3 pert = pattern_dnoise(nearest);
+	pert = d3_sub(pert, d3_scale(v, d3_dot(pert, v)));
+	return d3_add(v, d3_scale(pert, n->facets_coords));
+}
 
 /* A normal's normal_map (normal.cpp Perturb_Normal): the entries are normals, each perturbing v at
  * q in turn. average: their results weighted by the entries' values over the weights' sum
  * (NormalBlendMap::ComputeAverage); another pattern: the two entries around its value, blended
  * by the map's weights, then normalised, as POV-Ray's. */
-static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, double eps, int depth, dvec3 v)
+static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, const pattern_surface *sf, double eps,
+			int depth, dvec3 v)
 {
 	const pattern_entry *e = pg->entries + n->entry0;
 	uint32_t k = n->n_entries;
@@ -953,13 +1303,13 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 		for (uint32_t j = 0; j < k; j++) {
 			dvec3 vj = v;
 			if (e[j].node >= 0)
-				perturb_depth(pg, (uint32_t)e[j].node, q, depth + 1, &vj);
+				perturb_depth(pg, (uint32_t)e[j].node, q, sf, depth + 1, &vj);
 			sum = d3_add(sum, d3_scale(vj, e[j].value));
 			total += e[j].value;
 		}
 		return total != 0.0 ? d3_scale(sum, 1.0 / total) : v;
 	}
-	double raw = raw_eps(pg, n, q, eps);
+	double raw = raw_eps(pg, n, q, sf, eps);
 	double val = is_block(n->kind) ? raw : pattern_wave_apply(n->wave, raw, n->frequency, n->phase, n->exponent);
 	uint32_t lo = 0, hi = 0;
 	double t = 0.0;
@@ -975,22 +1325,28 @@ static dvec3 normal_map(const pattern_prog *pg, const pattern_node *n, dvec3 q, 
 	}
 	dvec3 a = v, b = v;
 	if (e[hi].node >= 0) /* an entry the build filled with a colour (a block list's default) is flat */
-		perturb_depth(pg, (uint32_t)e[hi].node, q, depth + 1, &b);
+		perturb_depth(pg, (uint32_t)e[hi].node, q, sf, depth + 1, &b);
 	if (lo != hi) {
 		if (e[lo].node >= 0)
-			perturb_depth(pg, (uint32_t)e[lo].node, q, depth + 1, &a);
+			perturb_depth(pg, (uint32_t)e[lo].node, q, sf, depth + 1, &a);
 		b = d3_add(d3_scale(a, 1.0 - t), d3_scale(b, t));
 	}
 	double len = d3_length(b);
 	return len > 0.0 ? d3_scale(b, 1.0 / len) : v;
 }
 
-void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+void pattern_perturb_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, dvec3 *nrm)
 {
-	perturb_depth(pg, node, p, 0, nrm);
+	perturb_depth(pg, node, p, sf, 0, nrm);
 }
 
-static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int depth, dvec3 *nrm)
+void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *nrm)
+{
+	pattern_perturb_at(pg, node, p, NULL, nrm);
+}
+
+static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, int depth,
+			  dvec3 *nrm)
 {
 	const pattern_node *n = &pg->nodes[node];
 	if (depth > PATTERN_MAX_DEPTH)
@@ -1007,7 +1363,7 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 	dvec3 q = warped(pg, n, p, &eps);
 	bool has_map = n->n_entries > 0 && pg->entries[n->entry0].node >= 0; /* a normal_map's entries */
 	if (has_map) {
-		v = normal_map(pg, n, q, eps, depth, v);
+		v = normal_map(pg, n, q, sf, eps, depth, v);
 	} else {
 		switch (n->kind) {
 		case PATTERN_BUMPS: v = d3_add(v, d3_scale(pattern_dnoise(q), n->bump_amount)); break;
@@ -1020,8 +1376,9 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, int de
 		case PATTERN_RIPPLES: v = d3_add(v, wave_normal(n, q, false)); break;
 		case PATTERN_WAVES: v = d3_add(v, wave_normal(n, q, true)); break;
 		case PATTERN_IMAGE: v = bump_map_normal(n, q, d3_normalize(v)); break;
+		case PATTERN_FACETS: v = facets_normal(n, q, v); break;
 		case PATTERN_PLAIN: break;
-		default: v = d3_add(v, slope_normal(pg, n, q, eps)); break;
+		default: v = d3_add(v, slope_normal(pg, n, q, sf, eps)); break;
 		}
 	}
 	for (uint32_t i = n->n_warps; i-- > 0;)

@@ -43,6 +43,12 @@ typedef enum pattern_kind {
 	PATTERN_AVERAGE, /* its entries' colours (or normals) averaged, each weighted by its value */
 	PATTERN_MANDEL, PATTERN_JULIA, /* POV-Ray's fractals of z^2 + c in the x-y plane */
 	PATTERN_MAGNET, /* POV-Ray's magnet fractals, types 1 and 2, mandel's or julia's form */
+	PATTERN_SLOPE,	/* the surface normal's angle to a direction (and an altitude): pattern_surface */
+	PATTERN_DENSITY_FILE, /* a df3 file's voxels on the unit cube */
+	PATTERN_IMAGE_PATTERN, /* an image's grey (or alpha), mapped as an image_map */
+	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
+	PATTERN_TILING, /* POV-Ray's tilings of the x-z plane (1 to 6) */
+	PATTERN_MATERIAL_MAP, /* a block pattern: an image's palette index (or red) picks the entry */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -87,7 +93,7 @@ enum {
 typedef struct pattern_node {
 	pattern_kind kind;
 	float color[5];	  /* PATTERN_PLAIN */
-	const image *img; /* PATTERN_IMAGE: map_type 0 planar, 1 spherical, 2 cylindrical */
+	const image *img; /* PATTERN_IMAGE, _IMAGE_PATTERN, _MATERIAL_MAP: map_type 0 planar, 1 spherical, 2 cylindrical */
 	int map_type;
 	bool once, interpolate;
 	float filter_all, transmit_all;
@@ -113,6 +119,19 @@ typedef struct pattern_node {
 	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
 	int32_t child;	   /* PATTERN_PIGMENT_PATTERN: its pigment's node (-1: none, value 0) */
 	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0) */
+	/* slope: its unit direction (point_at: the point) and weight, the altitude's unit direction
+	 * and weight, each one's low and width (0: none given) */
+	dvec3 slope_dir, altit_dir;
+	double slope_len, altit_len, slope_lo, slope_width, altit_lo, altit_width;
+	bool slope_point_at;
+	const float *voxels; /* density_file: x fastest, each in [0, 1]; its size; 0 none, 1 trilinear, 2 tricubic */
+	uint32_t vox_n[3];
+	int vox_interp;
+	bool use_alpha, img_alpha; /* image_pattern: its alpha as the value; whether the image has any */
+	double facets_coords, facets_size; /* facets: coords' amount (0: the normal's facets), cell size */
+	int tiling; /* tiling: its number */
+	const image *img_index; /* image_map with palette filter/transmit: its indices (IMAGE_INDEX) */
+	const float *pal_filter, *pal_transmit; /* per palette index, NaN: filter_all / transmit_all */
 	uint32_t warp0, n_warps;   /* into pattern_prog.warps, in the order applied to a point */
 	uint32_t entry0, n_entries; /* into pattern_prog.entries, by increasing value */
 } pattern_node;
@@ -137,16 +156,28 @@ bool pattern_compile(pattern_prog *pp, const scene_pigment *pg, pattern_image_lo
 		     diag *d);
 void pattern_prog_free(pattern_prog *pp);
 
+/* The surface a pattern is evaluated on, for the patterns that need more than the point (slope):
+ * its unit normal, facing the viewer, and the point, in world space (POV-Ray's Intersection's
+ * PNormal and IPoint). NULL where there is none (a function, a medium, a sky). */
+typedef struct pattern_surface {
+	dvec3 normal, point;
+} pattern_surface;
+
 /* The pigment of node `node` at point p (the pigment's space before its own warps): red, green,
  * blue, filter, transmit, each finite. tol: how far p may be from the true point (a float hit's
  * rounding; 0 for an exact point): a point that close to a cell's boundary (checker, brick,
  * cells) takes the side POV-Ray's EPSILON gives it, so a face lying on a boundary is one colour. */
 void pattern_eval(const pattern_prog *pg, uint32_t node, dvec3 p, double tol, float out[5]);
+/* pattern_eval on surface sf (NULL: none). */
+void pattern_eval_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double tol,
+		     float out[5]);
 /* A normal pattern (POV-Ray's Perturb_Normal) at p: *n, a normal in p's space, moved by the
  * pattern's perturbation (bumps, dents, wrinkles, ripples and waves their own way; any other
  * pattern by its slope, sampled at four points `accuracy` apart), through the pattern's
  * transforms and back. Not normalised. */
 void pattern_perturb(const pattern_prog *pg, uint32_t node, dvec3 p, dvec3 *n);
+/* pattern_perturb on surface sf (NULL: none). */
+void pattern_perturb_at(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, dvec3 *n);
 /* A normal seen through a transform t whose inverse takes points into a pattern's space: into it
  * (t's transpose), or back out (its inverse transpose). Not normalised. */
 dvec3 pattern_normal_through(const xform *t, dvec3 n, bool into);

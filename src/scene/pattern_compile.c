@@ -63,6 +63,12 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.wave = (pattern_wave)pg->wave, n.frequency = pg->frequency, n.phase = pg->phase, n.exponent = pg->exponent;
 	n.turb = (pattern_turb){pg->turb.amount, pg->turb.octaves, pg->turb.omega, pg->turb.lambda};
 	n.fn = pg->fn;
+	n.slope_dir = pg->slope_dir, n.altit_dir = pg->altit_dir, n.slope_len = pg->slope_len, n.altit_len = pg->altit_len;
+	n.slope_lo = pg->slope_lo, n.slope_width = pg->slope_width, n.altit_lo = pg->altit_lo;
+	n.altit_width = pg->altit_width, n.slope_point_at = pg->slope_point_at;
+	n.voxels = pg->voxels, n.vox_interp = pg->vox_interp, n.use_alpha = pg->use_alpha;
+	n.facets_coords = pg->facets_coords, n.facets_size = pg->facets_size, n.tiling = pg->tiling;
+	memcpy(n.vox_n, pg->vox_n, sizeof n.vox_n);
 	return n;
 }
 
@@ -115,13 +121,36 @@ static bool compile(compiler *c, const scene_pigment *pg, int depth, uint32_t *o
 	n.warp0 = w0, n.n_warps = pg->n_warps;
 	for (uint32_t i = 0; i < pg->n_warps; i++)
 		pp->warps[w0 + i] = warp_of(&pg->warps[pg->n_warps - 1 - i]);
-	if (pg->kind == SCENE_PAT_IMAGE) {
+	if (pg->kind == SCENE_PAT_IMAGE || pg->kind == SCENE_PAT_IMAGE_PATTERN || pg->kind == SCENE_PAT_MATERIAL_MAP) {
 		if (!c->load) {
-			diag_error(c->d, pg->loc, "an image_map in a function's pigment is not supported by circe");
+			diag_error(c->d, pg->loc, "an %s in a function's pigment is not supported by circe",
+				   scene_pattern_name(pg->kind));
 			return false;
 		}
 		if (!(n.img = c->load(c->ctx, pg, c->d)))
 			return false;
+		if (pg->kind == SCENE_PAT_IMAGE && (pg->pal_filter || pg->pal_transmit)) {
+			scene_pigment ix = *pg; /* the same file's palette indices: the loader reads a material_map so */
+			ix.kind = SCENE_PAT_MATERIAL_MAP;
+			if (!(n.img_index = c->load(c->ctx, &ix, c->d)))
+				return false;
+			if (!n.img_index->indexed) {
+				diag_error(c->d, pg->loc, "'filter' or 'transmit' of a palette index needs a palette image, and "
+							  "'%s' is not one (POV-Ray: not with a non color-mapped image)",
+					   pg->image);
+				return false;
+			}
+			if (pg->pal_max >= n.img_index->palette) {
+				diag_error(c->d, pg->loc, "palette index %d of 'filter' or 'transmit' is out of range: '%s' has %d "
+							  "colours (POV-Ray: color register value out of range)",
+					   pg->pal_max, pg->image, n.img_index->palette);
+				return false;
+			}
+			n.pal_filter = pg->pal_filter, n.pal_transmit = pg->pal_transmit;
+		}
+		size_t texels = (size_t)n.img->width * (size_t)n.img->height;
+		for (size_t i = 0; i < texels && !n.img_alpha; i++) /* POV-Ray's HasTransparency */
+			n.img_alpha = n.img->rgba[4 * i + 3] != 1.0f;
 	}
 	if (pg->kind == SCENE_PAT_PIGMENT_PATTERN && pg->child) {
 		uint32_t child;

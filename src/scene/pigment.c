@@ -44,6 +44,10 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 		p.vector = d3(8.0, 3.0, 4.5);
 	if (k == SCENE_PAT_IMAGE)
 		p.interpolate = false;
+	if (k == SCENE_PAT_IMAGE_PATTERN)
+		p.frequency = 0.0; /* Parse_Pattern's IMAGE_PATTERN_TOKEN */
+	if (k == SCENE_PAT_FACETS)
+		p.facets_size = 0.1; /* Parse_Pattern's FACETS_TOKEN: size 0.1, coords 0, metric 2 */
 	return p;
 }
 
@@ -52,6 +56,10 @@ static const char *const wave_names[] = {"ramp_wave", "triangle_wave", "sine_wav
 
 void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 {
+	if (pg->kind == SCENE_PAT_PLAIN && pg->is_normal) { /* #default's normal without a pattern */
+		fprintf(o, "normal none %g", pg->bump_amount);
+		return;
+	}
 	if (pg->kind == SCENE_PAT_PLAIN) {
 		fprintf(o, "pigment rgbft <%g, %g, %g, %g, %g>", pg->color[0], pg->color[1], pg->color[2], pg->color[3],
 			pg->color[4]);
@@ -60,6 +68,12 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 	if (pg->kind == SCENE_PAT_IMAGE) {
 		fprintf(o, "pigment image_map \"%s\" map_type %d%s%s", pg->image ? pg->image : "", pg->map_type,
 			pg->once ? " once" : "", pg->interpolate ? " interpolate" : "");
+		for (int i = 0; i < 256; i++) {
+			if (pg->pal_filter && pg->pal_filter[i] == pg->pal_filter[i])
+				fprintf(o, " filter %d, %g", i, pg->pal_filter[i]);
+			if (pg->pal_transmit && pg->pal_transmit[i] == pg->pal_transmit[i])
+				fprintf(o, " transmit %d, %g", i, pg->pal_transmit[i]);
+		}
 	} else {
 		fprintf(o, "pigment %s %s", scene_pattern_name(pg->kind), wave_names[pg->wave]);
 		if (pg->frequency != 1.0 || pg->phase != 0.0)
@@ -78,6 +92,24 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 				pg->crackle_offset);
 		if (pg->solid)
 			fprintf(o, " solid");
+		if (pg->kind == SCENE_PAT_TILING)
+			fprintf(o, " %d", pg->tiling);
+		if (pg->kind == SCENE_PAT_FACETS)
+			fprintf(o, " coords %g size %g metric %g", pg->facets_coords, pg->facets_size, pg->crackle_metric);
+		if (pg->kind == SCENE_PAT_IMAGE_PATTERN || pg->kind == SCENE_PAT_MATERIAL_MAP)
+			fprintf(o, " \"%s\" map_type %d%s%s%s", pg->image ? pg->image : "", pg->map_type, pg->once ? " once" : "",
+				pg->interpolate ? " interpolate" : "", pg->use_alpha ? " use_alpha" : "");
+		if (pg->kind == SCENE_PAT_DENSITY_FILE)
+			fprintf(o, " df3 \"%s\" <%u, %u, %u> interpolate %d", pg->vox_file ? pg->vox_file : "", pg->vox_n[0],
+				pg->vox_n[1], pg->vox_n[2], pg->vox_interp);
+		if (pg->kind == SCENE_PAT_SLOPE) {
+			const dvec3 d = d3_add(pg->slope_dir, d3(0, 0, 0)), a = d3_add(pg->altit_dir, d3(0, 0, 0)); /* no -0 */
+			fprintf(o, " %s <%g, %g, %g> weight %g low %g width %g", pg->slope_point_at ? "point_at" : "direction", d.x,
+				d.y, d.z, pg->slope_len, pg->slope_lo, pg->slope_width);
+			if (pg->altit_len != 0.0)
+				fprintf(o, " altitude <%g, %g, %g> weight %g low %g width %g", a.x, a.y, a.z, pg->altit_len,
+					pg->altit_lo, pg->altit_width);
+		}
 		if (pg->kind == SCENE_PAT_MAGNET)
 			fprintf(o, " type %d %s", pg->magnet_type, pg->magnet_julia ? "julia" : "mandel");
 		if (pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA || pg->kind == SCENE_PAT_MAGNET)

@@ -26,7 +26,9 @@
 	X(QUILTED, "quilted") X(PLANAR, "planar") X(BOXED, "boxed") X(CYLINDRICAL, "cylindrical")   \
 	X(SPHERICAL, "spherical") X(PIGMENT_PATTERN, "pigment_pattern") X(FUNCTION, "function")   \
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
-	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet")
+	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
+	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
+	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -122,6 +124,25 @@ typedef struct scene_pigment {
 	bool block_list;  /* entries are a block pattern's list */
 	scene_fn fn;	  /* FUNCTION: its function */
 	bool slope_map;	  /* a normal's slope_map: each entry's color[0] a height, color[1] its slope */
+	/* SLOPE, as POV-Ray's parser leaves it: the unit direction (point_at: the point) and its
+	 * weight, the altitude's unit direction and weight (the weights add to 1), each one's low and
+	 * width (hi - lo; 0: not given) */
+	dvec3 slope_dir, altit_dir;
+	double slope_len, altit_len, slope_lo, slope_width, altit_lo, altit_width;
+	bool slope_point_at;
+	/* DENSITY_FILE: the df3 file's voxels (x fastest, then y, then z), each its integer over its
+	 * type's largest, its size in voxels, and interpolate (0 none, 1 trilinear, 2 tricubic) */
+	const float *voxels;
+	uint32_t vox_n[3];
+	int vox_interp;
+	const char *vox_file; /* for the dump */
+	bool use_alpha; /* IMAGE_PATTERN (its file in image): the value is the image's transparency */
+	double facets_coords, facets_size; /* FACETS (a normal's only; its metric: crackle_metric): 0, 0.1 */
+	int tiling; /* TILING: POV-Ray's tiling number (circe has 1 to 6; 0 and above 27 are 1, as POV-Ray) */
+	/* IMAGE: `filter I, F` / `transmit I, F` of a palette image: 256 entries each, NaN where not
+	 * given (NULL: none given); the largest index given, for the check against the palette */
+	const float *pal_filter, *pal_transmit;
+	int pal_max;
 } scene_pigment;
 
 /* POV-Ray's word of a pattern kind ("checker"). */

@@ -199,3 +199,12 @@ sphere { 0, 1 pigment { julia <0, 1>, 10 exterior 2, 1 interior 1, 0.5 exponent 
 // rule: texture_body, pattern_texture, texture_map
 sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } normal { bumps 0.2 } } scale 2 } }
 sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }
+// rule: tiles, quick_colour, slope_range
+sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 quick_color rgb 0.5 } } tile2 texture { pigment { rgb 0 } } } scale 2 } }
+sphere { 0, 1 pigment { slope { -y, 0, 0.5 altitude y, -1, 1 } } }
+// rule: rainbow
+rainbow { angle 42 width 5 direction z up y arc_angle 100 colour_map { [0 rgbf 1] [1 rgbf <1, 0, 0, 0.8>] } }
+// rule: texture_list
+mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { pigment { rgb 0.5 } } } face_indices { 1, <0, 1, 2>, 0 } }
+// rule: material_map
+sphere { 0, 1 texture { material_map { png "t.png" once texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } } }

@@ -6,6 +6,7 @@
 #include "io/image.h"
 
 #include <jpeglib.h>
+#include <png.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -100,7 +101,7 @@ int main(void)
 
 	/* Bilinear lookup: texel centres give the texel, midpoints the mean, u and v repeat, v = 1 is
 	 * the top row. A 2x2 image: top row 0 and 1, bottom row 2 and 3 (in R). */
-	image tex = {2, 2, (float[]){0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1}};
+	image tex = {2, 2, (float[]){0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1}, false, 0};
 	float px[4];
 	image_bilinear(&tex, 0.25f, 0.75f, px);
 	CHECK_NEAR(px[0], 0.0, 1e-6);
@@ -140,8 +141,26 @@ int main(void)
 	      "messages:\n%s", buf);
 	free(buf);
 	diag_free(&e);
-	const char *names[] = {"a.png", "b.png", "c.jpg", "d.exr", "bad.png", "bad.jpg", "x.txt"};
-	for (int i = 0; i < 7; i++)
+	/* A palette PNG read as IMAGE_INDEX gives its palette indices in red, not its colours (entries
+	 * 0 and 2 are the same black, 0 transparent): POV-Ray's material_map picks textures by them. */
+	png_image pw;
+	memset(&pw, 0, sizeof pw);
+	pw.version = PNG_IMAGE_VERSION, pw.width = 4, pw.height = 1, pw.format = PNG_FORMAT_RGBA_COLORMAP;
+	pw.colormap_entries = 4;
+	const unsigned char cmap[16] = {0, 0, 0, 0, 255, 0, 0, 255, 0, 0, 0, 255, 0, 0, 255, 255}, idx[4] = {2, 1, 3, 0};
+	CHECK(png_image_write_to_file(&pw, path("p.png"), 0, idx, 4, cmap), "palette png write: %s", pw.message);
+	CHECK(image_load(path("p.png"), IMAGE_INDEX, &img, &d) && img.indexed && img.palette == 4, "palette png read as indices");
+	for (int i = 0; i < 4; i++)
+		CHECK(img.rgba[4 * i] == (float)idx[i], "palette index %d: %g, want %d", i, img.rgba[4 * i], idx[i]);
+	image_free(&img);
+	CHECK(image_load(path("p.png"), IMAGE_RAW, &img, &d) && !img.indexed && img.rgba[0] == 0.0f && img.rgba[4] == 1.0f &&
+		      img.rgba[11] == 1.0f && img.rgba[15] == 0.0f,
+	      "the same png as colours: black, red, blue, clear black");
+	image_free(&img);
+	CHECK(image_load(path("a.png"), IMAGE_INDEX, &img, &d) && !img.indexed, "an RGB png has no indices");
+	image_free(&img);
+	const char *names[] = {"a.png", "b.png", "c.jpg", "d.exr", "bad.png", "bad.jpg", "x.txt", "p.png"};
+	for (int i = 0; i < 8; i++)
 		unlink(path(names[i]));
 	CHECK(rmdir(dir) == 0, "no temporaries left in %s", dir);
 	diag_free(&d);

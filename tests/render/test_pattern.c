@@ -251,7 +251,7 @@ static void check_warps(void)
 
 static void check_noise(void)
 {
-	bool perm_ok = true, seen[256] = {0};
+	bool perm_ok = true, seen[256] = {0, 0, 0};
 	for (int i = 0; i < 256; i++) {
 		perm_ok &= !seen[pattern_perm(i)];
 		seen[pattern_perm(i)] = true;
@@ -323,9 +323,36 @@ static void check_image(void)
 	n.map_type = 2; /* cylindrical: v = y */
 	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c); /* theta = pi / 2: u = 0.25, lower row */
 	check5("cylindrical +z, low", c, 0, 0, 1);
+	/* torus (5, imageutil.cpp's torus_image_map, major radius 1): u the angle about y, v the angle
+	 * about the ring from its inside (0), through the outer equator (1/2), the top (3/4) */
+	n.map_type = 5;
+	pattern_eval(&pg, 0, d3(1.5, 0, 0), 0, c); /* u 0, v 1/2: the lower row's first */
+	check5("torus outer equator", c, 0, 0, 1);
+	pattern_eval(&pg, 0, d3(1, 0.5, 0), 0, c); /* u 0, v 3/4: the top row */
+	check5("torus top", c, 1, 0, 0);
+	pattern_eval(&pg, 0, d3(0, 0, -1.5), 0, c); /* u 3/4, v 1/2 */
+	check5("torus at -z", c, 1, 1, 1);
+	pattern_eval(&pg, 0, d3(0, 0.3, 0), 0, c);
+	CHECK(c[4] == 1.0f, "torus on the y axis: off the image");
+	n.map_type = 2;
 	n.filter_all = 0.5f, n.transmit_all = 0.25f;
 	pattern_eval(&pg, 0, d3(0, 0.25, 1), 0, c);
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "filter all, transmit all: %g %g", c[3], c[4]);
+	/* a palette image's `transmit 1, 0.9` and `filter 3, 0.4`: the texels of those indices; the
+	 * others keep transmit all and filter all */
+	float ix[16] = {1, 0, 0, 1, 3, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1}; /* top: 1 3; bottom: 0 1 */
+	image idx = {.width = 2, .height = 2, .rgba = ix, .indexed = true, .palette = 4};
+	float ft[256], tt[256];
+	for (int i = 0; i < 256; i++)
+		ft[i] = tt[i] = NAN;
+	tt[1] = 0.9f, ft[3] = 0.4f;
+	n.map_type = 0, n.img_index = &idx, n.pal_filter = ft, n.pal_transmit = tt;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c); /* top left: index 1 */
+	CHECK(c[0] == 1 && c[3] == 0.5f && c[4] == 0.9f, "palette index 1: transmit %g filter %g", c[4], c[3]);
+	pattern_eval(&pg, 0, d3(0.75, 0.75, 0), 0, c); /* top right: index 3 */
+	CHECK(c[3] == 0.4f && c[4] == 0.25f, "palette index 3: filter %g transmit %g", c[3], c[4]);
+	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: index 0, none given */
+	CHECK(c[3] == 0.5f && c[4] == 0.25f, "palette index 0: filter %g transmit %g", c[3], c[4]);
 }
 
 static void check_defaults(void)
@@ -569,8 +596,249 @@ static void check_slope_map(void)
 	}
 }
 
+/* POV-Ray 3.7.0's slope_pattern worked by hand: v1 = (asin(n . d) / (pi / 2) + 1) / 2, through
+ * (v1 - lo) / width, blended with the altitude's (p . a - lo) / width by the weights, wrapped
+ * into [0, 1) (1 itself just below 1). The normal is the surface's, not the point's. */
+static void check_slope(void)
+{
+	const double r = sqrt(0.5);
+	struct {
+		dvec3 dir, normal, point, p;
+		double lo, width, alen, alo, awidth;
+		bool point_at;
+		double want;
+	} rows[] = {
+		{{0, 1, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 1.0 - 1e-10}, /* along: 1, kept below 1 */
+		{{0, 1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.5},	     /* across */
+		{{0, 1, 0}, {0, -1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.0},	     /* facing away */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, 0.75},	     /* 45 degrees: asin = pi/4 */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0.5, 0.5, 0, 0, 0, false, 0.5},    /* slope 0.5 to 1 stretched */
+		{{0, 1, 0}, {r, r, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0.5, 0, 0, 0, false, 0.5},	     /* 1.5 wraps to 0.5 */
+		{{0, -1, 0}, {0.6, -0.8, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, false, (asin(0.8) / M_PI * 2 + 1) / 2},
+		/* weights 1/4 and 3/4 (|<0,-1,0>| and |3y|): 0.25 * 0.5 + 0.75 * (0.4 + 1) / 2 */
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0.4, 0}, 0, 0, 0.75, -1, 2, false, 0.65},
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0.4, 5}, 0, 0, 0.75, 0, 0, false, 0.125 + 0.3}, /* no range: p . y */
+		{{0, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 5.4, 0}, 0, 0, 0.75, 0, 0, false, 0.175}, /* 4.175 wraps */
+		/* point_at <10, 10, 0> seen from the origin with normal x: cos 45 degrees */
+		{{10, 10, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 0.75},
+		{{0, 10, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 1.0 - 1e-10},
+		{{0, -10, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0, 0, 0, true, 0.0},
+	};
+	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+		pattern_node n = pattern_node_default(PATTERN_SLOPE);
+		n.slope_dir = rows[i].dir, n.slope_point_at = rows[i].point_at;
+		n.slope_lo = rows[i].lo, n.slope_width = rows[i].width;
+		n.altit_len = rows[i].alen, n.slope_len = 1.0 - rows[i].alen, n.altit_dir = d3(0, 1, 0);
+		n.altit_lo = rows[i].alo, n.altit_width = rows[i].awidth;
+		pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+		pattern_surface sf = {rows[i].normal, rows[i].point};
+		double v = pattern_value(&pg, &n, rows[i].p);
+		CHECK(v == 0.0, "slope %zu without a surface gives 0 (POV-Ray's), got %g", i, v);
+		float c[5];
+		pattern_entry e[2] = {{.value = 0, .color = {0, 0, 0}, .node = -1}, {.value = 1, .color = {1, 1, 1}, .node = -1}};
+		pg.entries = e, pg.n_entries = 2, n.entry0 = 0, n.n_entries = 2;
+		pattern_eval_at(&pg, 0, rows[i].p, &sf, 0.0, c);
+		CHECK(fabs(c[0] - rows[i].want) < 1e-6, "slope row %zu: %.9g, want %.9g", i, c[0], rows[i].want);
+	}
+	/* In a normal, the slope part is the same at the four samples: only the altitude tilts it,
+	 * as a gradient of weight 3/4 along y would (amount 0.5, the four-point scheme's -5 factor). */
+	pattern_node n = pattern_node_default(PATTERN_SLOPE);
+	n.slope_dir = d3(0, -1, 0), n.slope_len = 0.25, n.altit_len = 0.75, n.altit_dir = d3(1, 0, 0);
+	pattern_node g = pattern_node_default(PATTERN_GRADIENT);
+	g.vector = d3(0.75, 0, 0);
+	pattern_prog ps = {.nodes = &n, .n_nodes = 1}, pgr = {.nodes = &g, .n_nodes = 1};
+	pattern_surface sf = {d3(0, 1, 0), d3(0, 0, 0)};
+	dvec3 a = d3(0, 1, 0), b = d3(0, 1, 0);
+	pattern_perturb_at(&ps, 0, d3(0.3, 0, 0), &sf, &a);
+	pattern_perturb(&pgr, 0, d3(0.3, 0, 0), &b);
+	CHECK(fabs(a.x - b.x) < 1e-9 && fabs(a.y - b.y) < 1e-9 && fabs(a.z - b.z) < 1e-9 && fabs(a.x) > 0.01,
+	      "a slope normal tilts as its altitude's gradient: <%g, %g, %g> against <%g, %g, %g>", a.x, a.y, a.z, b.x, b.y,
+	      b.z);
+}
+
+/* POV-Ray 3.7's density_pattern on small grids worked by hand: the voxel a point is in; trilinear
+ * (wrapping at the far face); tricubic (Catmull-Rom: the midpoint of 0 0 1 0 is 9/16, a line is
+ * kept); 0 outside the unit cube. */
+static double density_at(const float *v, uint32_t nx, uint32_t ny, uint32_t nz, int interp, dvec3 p)
+{
+	pattern_node n = pattern_node_default(PATTERN_DENSITY_FILE);
+	n.voxels = v, n.vox_n[0] = nx, n.vox_n[1] = ny, n.vox_n[2] = nz, n.vox_interp = interp;
+	return pattern_raw(&n, p);
+}
+
+static void check_density_file(void)
+{
+	float g[8]; /* x + 2y + 4z over 7, on 2 x 2 x 2 */
+	for (int i = 0; i < 8; i++)
+		g[i] = (float)((i & 1) + 2 * (i >> 1 & 1) + 4 * (i >> 2)) / 7.0f;
+	CHECK_NEAR(density_at(g, 2, 2, 2, 0, d3(0.3, 0.6, 0.1)), 2.0 / 7.0, 1e-7);
+	CHECK_NEAR(density_at(g, 2, 2, 2, 0, d3(0.9, 0.9, 0.9)), 1.0, 1e-7);
+	/* trilinear at <0.6, 1.2, 0.2> voxels: x 0.6, y from 1 towards 0 (wrapped) by 0.2: 0.8, z 0.2 */
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(0.3, 0.6, 0.1)), (0.6 + 2 * 0.8 + 4 * 0.2) / 7.0, 1e-7);
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(1.0, 0.5, 0.5)), 0.0, 0.0);  /* outside: x = 1 */
+	CHECK_NEAR(density_at(g, 2, 2, 2, 1, d3(0.5, -1e-9, 0.5)), 0.0, 0.0); /* outside: y < 0 */
+	const float spike[4] = {0, 0, 1, 0}, line[4] = {0, 1.0f / 3, 2.0f / 3, 1};
+	CHECK_NEAR(density_at(spike, 4, 1, 1, 2, d3(0.375, 0.5, 0.5)), 9.0 / 16.0, 1e-7);
+	CHECK_NEAR(density_at(line, 4, 1, 1, 2, d3(0.3, 0.2, 0.7)), 0.4, 1e-7);
+	CHECK_NEAR(density_at(line, 4, 1, 1, 1, d3(0.3, 0.2, 0.7)), 0.4, 1e-7);
+	CHECK_NEAR(density_at(spike, 4, 1, 1, 12, d3(0.375, 0.5, 0.5)), 9.0 / 16.0, 1e-7); /* interpolate mod 10 */
+	CHECK_NEAR(density_at(NULL, 4, 1, 1, 1, d3(0.3, 0.2, 0.7)), 0.0, 0.0);
+}
+
+/* image_pattern (imageutil.cpp): the texel's grey 0.297 r + 0.589 g + 0.114 b, with use_alpha
+ * 1 - alpha (an image without alpha: its red), 0 outside a once image; mapped as image_map. */
+static void check_image_pattern(void)
+{
+	float px[8] = {1, 0.5f, 0, 1, 0, 0, 1, 0.25f}; /* left: orange, opaque; right: blue, alpha 0.25 */
+	image img = {.width = 2, .height = 1, .rgba = px};
+	pattern_node n = pattern_node_default(PATTERN_IMAGE_PATTERN);
+	n.img = &img, n.img_alpha = true, n.frequency = 0;
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 3)), 0.297 + 0.589 * 0.5, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(0.75, 0.5, 3)), 0.114, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(-0.25, 7.5, 0)), 0.114, 1e-7); /* repeated */
+	n.use_alpha = true;
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 0)), 0.0, 1e-7);
+	CHECK_NEAR(pattern_raw(&n, d3(0.75, 0.5, 0)), 0.75, 1e-7);
+	n.img_alpha = false; /* no transparency in the image: the red channel */
+	CHECK_NEAR(pattern_raw(&n, d3(0.25, 0.5, 0)), 1.0, 1e-7);
+	n.use_alpha = false, n.once = true;
+	CHECK_NEAR(pattern_raw(&n, d3(1.25, 0.5, 0)), 0.0, 0.0);
+	n.once = false, n.map_type = 2; /* cylindrical: u the angle about y from +x towards +z */
+	CHECK_NEAR(pattern_raw(&n, d3(0, 0.3, -1)), 0.114, 1e-7); /* 3 pi / 2: u = 0.75 */
+	CHECK_NEAR(pattern_raw(&n, d3(0, 0.3, 1)), 0.297 + 0.589 * 0.5, 1e-7);
+}
+
+/* facets (normal.cpp): without coords the new normal is the feature point nearest the unit normal
+ * over size (brute force over 7^3 cells here); normals in one facet get the same one; with coords
+ * the push is tangent to the normal. */
+static void check_facets(void)
+{
+	pattern_node n = pattern_node_default(PATTERN_FACETS);
+	n.facets_size = 0.1;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1};
+	const dvec3 dirs[3] = {{0, 1, 0}, {0.6, 0, 0.8}, {-0.48, 0.6, -0.64}};
+	for (int d = 0; d < 3; d++) {
+		dvec3 v = d3_scale(dirs[d], 2.0), t = d3_scale(dirs[d], 10.0); /* not unit: facets normalises */
+		pattern_perturb(&pg, 0, d3(5, 6, 7), &v);
+		dvec3 best = t;
+		double bd = 1e300;
+		for (int i = -3; i <= 3; i++)
+			for (int j = -3; j <= 3; j++)
+				for (int k = -3; k <= 3; k++) {
+					dvec3 f = pattern_crackle_point((int)floor(t.x) + i, (int)floor(t.y) + j, (int)floor(t.z) + k);
+					double e = d3_dot(d3_sub(f, t), d3_sub(f, t));
+					if (e < bd)
+						bd = e, best = f;
+				}
+		CHECK(d3_length(d3_sub(v, best)) < 1e-12, "facets %d: <%g, %g, %g>, the nearest point <%g, %g, %g>", d, v.x,
+		      v.y, v.z, best.x, best.y, best.z);
+		dvec3 w = d3_add(dirs[d], d3(1e-7, -1e-7, 1e-7)); /* a normal next to it: the same facet */
+		pattern_perturb(&pg, 0, d3(-3, 1, 2), &w);
+		CHECK(d3_length(d3_sub(w, best)) < 1e-12, "facets are flat: <%g, %g, %g>", w.x, w.y, w.z);
+	}
+	n.facets_coords = 0.5;
+	dvec3 v = d3(0, 0, 1);
+	pattern_perturb(&pg, 0, d3(0.33, 0.77, 1.5), &v);
+	CHECK(fabs(v.z - 1.0) < 1e-12 && (v.x != 0.0 || v.y != 0.0), "facets coords pushes the normal sideways: <%g, %g, %g>",
+	      v.x, v.y, v.z);
+}
+
+/* POV-Ray's tilings 1 to 6, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+ * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
+ * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
+ * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
+ * six of each.) */
+static void check_tiling(void)
+{
+	static const struct {
+		int tiling;
+		double x, z;
+		int pov16;
+	} rows[] = {
+		{1, 3.375, 3.875, 49151},
+		{1, 3.625, 3.125, 49151},
+		{1, 2.875, 2.375, 49151},
+		{1, 1.625, 1.375, 16384},
+		{1, 0.625, 0.625, 16384},
+		{1, 2.375, 0.125, 49151},
+		{2, 3.375, 3.875, 34441},
+		{2, 3.625, 3.125, 39874},
+		{2, 2.875, 2.375, 49400},
+		{2, 1.625, 1.375, 38085},
+		{2, 0.625, 0.625, 18239},
+		{2, 2.375, 0.125, 29305},
+		{3, 3.375, 3.875, 19225},
+		{3, 3.625, 3.125, 47917},
+		{3, 2.875, 2.375, 41332},
+		{3, 1.625, 1.375, 48936},
+		{3, 0.625, 0.625, 31376},
+		{3, 2.375, 0.125, 18579},
+		{4, 3.375, 3.875, 47478},
+		{4, 3.625, 3.125, 42045},
+		{4, 2.875, 2.375, 31773},
+		{4, 1.625, 1.375, 43403},
+		{4, 0.625, 0.625, 30912},
+		{4, 2.375, 0.125, 46617},
+		{5, 3.375, 3.875, 15826},
+		{5, 3.625, 3.125, 48428},
+		{5, 2.875, 2.375, 32933},
+		{5, 1.625, 1.375, 36313},
+		{5, 0.625, 0.625, 10304},
+		{5, 2.375, 0.125, 59229},
+		{6, 3.375, 3.875, 40959},
+		{6, 3.625, 3.125, 57343},
+		{6, 2.875, 2.375, 57343},
+		{6, 1.625, 1.375, 40959},
+		{6, 0.625, 0.625, 40959},
+		{6, 2.375, 0.125, 24576},
+	};
+	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
+		pattern_node n = pattern_node_default(PATTERN_TILING);
+		n.tiling = rows[i].tiling;
+		double v = pattern_raw(&n, d3(rows[i].x, 0.0, rows[i].z)), want = rows[i].pov16 / 65535.0;
+		CHECK(fabs(v - want) <= 1.0 / 65535.0, "tiling %d at <%g, 0, %g>: %.6f, povray %.6f", rows[i].tiling, rows[i].x,
+		      rows[i].z, v, want);
+	}
+	pattern_node n = pattern_node_default(PATTERN_TILING);
+	n.tiling = 0; /* 0 (and POV-Ray's numbers past 27): squares */
+	CHECK_NEAR(pattern_raw(&n, d3(-1.25, 3, 0.5)), 0.5, 1e-12);
+}
+
+/* material_map (imageutil.cpp): the entry a palette image's index names (or another image's red
+ * times 255), past the count n wrapped mod n, n itself the last entry; the first outside a once
+ * image. Entries: three colours. */
+static void check_material_map(void)
+{
+	float px[16] = {0, 0, 0, 1, 2, 0, 0, 1, 4, 0, 0, 1, 3, 0, 0, 1}; /* indices 0, 2, 4, 3 in a row */
+	image img = {.width = 4, .height = 1, .rgba = px, .indexed = true};
+	pattern_node n = pattern_node_default(PATTERN_MATERIAL_MAP);
+	pattern_entry e[3] = {{.value = 0, .color = {1, 0, 0}, .node = -1},
+			      {.value = 1, .color = {0, 1, 0}, .node = -1},
+			      {.value = 2, .color = {0, 0, 1}, .node = -1}};
+	n.img = &img, n.n_entries = 3;
+	pattern_prog pg = {.nodes = &n, .n_nodes = 1, .entries = e, .n_entries = 3};
+	const double want[4] = {0, 2, 1, 2}; /* 4 > 3: 4 mod 3 = 1; 3 = n: the last */
+	for (int i = 0; i < 4; i++) {
+		float c[5];
+		pattern_eval(&pg, 0, d3(0.125 + 0.25 * i, 0.5, 0), 0, c);
+		int got = c[0] == 1 ? 0 : c[1] == 1 ? 1 : c[2] == 1 ? 2 : -1;
+		CHECK(got == (int)want[i], "material_map texel %d: entry %d, want %g", i, got, want[i]);
+	}
+	n.once = true;
+	CHECK_NEAR(pattern_raw(&n, d3(1.5, 0.5, 0)), 0.0, 0.0);
+	n.once = false, img.indexed = false; /* a colour image: red times 255 (2/255 is entry 2) */
+	px[4] = 2.0f / 255.0f;
+	CHECK_NEAR(pattern_raw(&n, d3(0.375, 0.5, 0)), 2.0, 0.0);
+}
+
 int main(void)
 {
+	check_slope();
+	check_material_map();
+	check_tiling();
+	check_facets();
+	check_image_pattern();
+	check_density_file();
 	check_normals();
 	check_crackle();
 	check_fractals();
