@@ -156,6 +156,11 @@ vec3 bsdf_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 	return b->kind == BSDF_POV ? bsdf_pov_highlights(b, wo, wi) : v3s(0.0f);
 }
 
+vec3 bsdf_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return b->kind == BSDF_POV ? bsdf_pov_eval_delta_light(b, wo, wi) : bsdf_eval(b, wo, wi);
+}
+
 bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, vec3 *f, float *pdf)
 {
 	if (wo.z <= 0.0f)

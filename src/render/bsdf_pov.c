@@ -137,6 +137,14 @@ vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)
 	return v3_add(bsdf_pov_eval_paths(b, wo, wi), bsdf_pov_highlights(b, wo, wi));
 }
 
+vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	if (wo.z <= 0.0f || wi.z <= 0.0f)
+		return v3s(0.0f);
+	vec3 r = v3_scale(b->pigment, b->pov.diffuse * RENDER_INV_PI * b->pov_scale);
+	return v3_add(r, bsdf_pov_highlights(b, wo, wi));
+}
+
 float bsdf_pov_pdf(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	if (wo.z <= 0.0f || wi.z <= 0.0f)

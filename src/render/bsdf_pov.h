@@ -11,7 +11,11 @@
  *   phong      The same for ComputePhongColour: Kp (R.L)^phong_size, R the mirror of the eye.
  *   metallic   Both highlights tinted 1 + m (1 - F(c)) (pigment - 1), F POV-Ray's empirical
  *              Fresnel curve (trace.cpp ComputeMetallic), c = wi.h (phong: c = wi.n, as POV-Ray).
- *   reflection A near-mirror GGX lobe (alpha BSDF_POV_MIRROR_ALPHA) of weight
+ *   reflection A near-mirror GGX lobe (alpha BSDF_POV_MIRROR_ALPHA), which paths sample and carry
+ *              but a point, spot, parallel or POV-Ray area light (a delta light, found by light
+ *              samples only) never shows in: POV-Ray's reflection rays see no light source, its
+ *              highlights stand for them (bsdf_pov_eval_delta_light; else each such light made
+ *              a caustic of fireflies through every mirror and floor reflection). Its weight is
  *              R(c) = f max + (1 - f) min, f = (1 - c)^falloff, or f = Fresnel(c, ior) with
  *              `fresnel` (trace.cpp ComputeReflectivity), tinted like metallic by its own amount.
  *   ambient, emission: no lobe: the radiance b->emit, seen by every ray that hits the surface.
@@ -44,6 +48,8 @@ float bsdf_pov_metallic_fresnel(float cos_angle);
 vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi);
 vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi);
 vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi);
+/* What a delta light shows in: eval without the reflection lobe. */
+vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi);
 float bsdf_pov_pdf(const bsdf_params *b, vec3 wo, vec3 wi);
 bool bsdf_pov_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi);
 

@@ -257,7 +257,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	if (v3_dot(ls_out.wi, ng_out) <= 0.0f)
 		return v3s(0.0f);
 	vec3 wi_local = to_local(f, ls_out.wi);
-	vec3 fval = bsdf_eval(b, wo_local, wi_local);
+	vec3 fval = ls_out.delta ? bsdf_eval_delta_light(b, wo_local, wi_local) : bsdf_eval(b, wo_local, wi_local);
 	if (v3_max_comp(fval) <= 0.0f)
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};

@@ -162,6 +162,18 @@ static void test_pov_finish(long n)
 	bsdf_pov_set_pigment(&glow, v3(0.5f, 0.5f, 1.0f));
 	CHECK_NEAR(glow.emit.z, 0.4, 1e-6);
 	CHECK_NEAR(glow.diffuse.x, 0.5, 1e-6);
+	/* A delta light shows in the diffuse lobe and the highlights, never in the near-mirror
+	 * reflection (POV-Ray's reflection rays see no light source): at the mirror direction the
+	 * reflection alone is thousands of times the rest, and the delta light's value is the rest. */
+	f = pov_spec(0.5f, 0.4f, 0.05f, 0.0f, 40.0f);
+	f.refl_min = f.refl_max = v3s(0.5f);
+	bsdf_params dm = bsdf_pov(&f, v3(0.8f, 0.6f, 0.4f));
+	vec3 wo35 = dir_at(35), wm = dir_at(35);
+	wm.x = -wm.x;
+	vec3 full = bsdf_eval(&dm, wo35, wm), dl = bsdf_eval_delta_light(&dm, wo35, wm);
+	double rest = 0.8 * 0.5 * dm.pov_scale / M_PI + bsdf_highlights(&dm, wo35, wm).x;
+	CHECK(full.x > 1000 * rest, "the mirror direction: %g against the rest %g", full.x, rest);
+	CHECK_NEAR(dl.x, rest, 1e-6 * rest);
 	/* Reciprocity of what paths carry (metallic tint and reflection weigh at wi.h); POV-Ray's
 	 * highlights are not reciprocal and light sources alone show in them. */
 	f = pov_spec(0.4f, 0.5f, 0.1f, 0.5f, 8.0f);
