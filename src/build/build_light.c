@@ -115,6 +115,7 @@ bool build_lights(world *w, const scene *sc, diag *d)
 	}
 	if (sc->has_background) {
 		light l = light_background(sc->background);
+		l.seen_only = !scene_background_lights(sc);
 		if (!light_set_add(&w->lights, &l)) {
 			diag_error(d, sc->background_loc, "out of memory");
 			return false;
@@ -126,8 +127,9 @@ bool build_lights(world *w, const scene *sc, diag *d)
 		light l;
 		if (!build_sky_pigments(w, sky, d))
 			return false;
-		if (!light_envmap_init(&l, w->env_rgb, WORLD_SKY_WIDTH, WORLD_SKY_HEIGHT, (float)sky->intensity, &rot) ||
-		    !light_set_add(&w->lights, &l)) {
+		bool ok = light_envmap_init(&l, w->env_rgb, WORLD_SKY_WIDTH, WORLD_SKY_HEIGHT, (float)sky->intensity, &rot);
+		l.seen_only = !scene_sky_sphere_lights(sc);
+		if (!ok || !light_set_add(&w->lights, &l)) {
 			diag_error(d, sky->loc, "out of memory");
 			return false;
 		}

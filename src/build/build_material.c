@@ -89,8 +89,13 @@ void warn_reflectance_image(const image *img, diag_loc loc, const char *path, di
  * ("fresnel reflection used with no interior"); circe warns and takes glass's. */
 #define BUILD_FRESNEL_DEFAULT_IOR 1.5f
 
-/* A texture's POV-Ray finish as BSDF_POV's spec (the mapping: bsdf_pov.h). POV-Ray's implicit
- * ambient 0.1 glows not: circe's global illumination is what it stood for; an explicit one does. */
+/* POV-Ray 3.7's default ambient (texture.cpp Create_Finish). */
+#define BUILD_POV_DEFAULT_AMBIENT 0.1f
+
+/* A texture's POV-Ray finish as BSDF_POV's spec (the mapping: bsdf_pov.h). The ambient, the
+ * implicit 0.1 too, glows ambient * ambient_light * pigment as POV-Ray adds it, unless the scene
+ * has radiosity, under which POV-Ray 3.7 drops it (trace.cpp ComputeLightedTexture); the implicit
+ * one not under circe's own environment either (scene_ambient_glows). */
 static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_finish_spec *out, diag *d)
 {
 	const scene_finish *f = &sm->finish;
@@ -111,8 +116,9 @@ static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_
 				      .refl_falloff = f->refl_falloff,
 				      .refl_metallic = f->refl_metallic,
 				      .glow = f->emission};
-	if (f->has_ambient)
-		out->glow = v3_add(out->glow, v3_mul(f->ambient, sc->global.ambient_light));
+	if (scene_ambient_glows(sc, f->has_ambient))
+		out->glow = v3_add(out->glow, v3_mul(f->has_ambient ? f->ambient : v3s(BUILD_POV_DEFAULT_AMBIENT),
+						     sc->global.ambient_light));
 	if (f->refl_fresnel) {
 		out->refl_ior = sm->ior > 0.0f ? sm->ior : BUILD_FRESNEL_DEFAULT_IOR;
 		if (!(sm->ior > 0.0f))

@@ -2727,7 +2727,9 @@ static const struct ignored_setting {
 	ignored_arg arg;
 	const char *why;
 } ignored_settings[] = {
-	{"radiosity", IGNORED_BLOCK, "circe always computes global illumination"},
+	{"radiosity", IGNORED_BLOCK,
+	 "circe always computes global illumination; the block lets POV-Ray's background and sky_sphere "
+	 "light the scene and turns the finishes' ambient off, as in POV-Ray"},
 	{"photons", IGNORED_BLOCK, "circe always computes global illumination, caustics included"},
 	{"noise_generator", IGNORED_FLOAT, "circe has one noise, Perlin's improved noise in POV-Ray's range"},
 	{"number_of_waves", IGNORED_FLOAT, "circe has no wave patterns"},
@@ -2779,7 +2781,13 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 	double x;
 	vec3 c;
 	switch (s->arg) {
-	case IGNORED_BLOCK: TRY(lang_skip_block(p, s->name)); break;
+	case IGNORED_BLOCK:
+		TRY(lang_skip_block(p, s->name));
+		if (!strcmp(s->name, "radiosity")) {
+			p->sc->global.radiosity = true;
+			p->sc->global.radiosity_legacy = p->version < 3.7 - 1e-9;
+		}
+		break;
 	case IGNORED_COLOR: TRY(lang_color(p, ctx, &c)); break;
 	case IGNORED_FLOAT: TRY(lang_float(p, ctx, &x)); break;
 	case IGNORED_OPT_BOOL:
@@ -2796,7 +2804,10 @@ static bool ignored_item(parser *p, const struct ignored_setting *s)
 		break;
 	}
 	}
-	diag_warning(p->d, kw.loc, "'%s' is ignored: %s", s->name, s->why);
+	if (s->arg == IGNORED_BLOCK && !strcmp(s->name, "radiosity")) /* recorded: its settings are what goes */
+		diag_warning(p->d, kw.loc, "'%s' settings are ignored: %s", s->name, s->why);
+	else
+		diag_warning(p->d, kw.loc, "'%s' is ignored: %s", s->name, s->why);
 	return true;
 }
 
@@ -3545,6 +3556,7 @@ static bool background(parser *p)
 		p->sc->background = c;
 		p->sc->has_background = true;
 		p->sc->background_loc = kw.loc;
+		p->sc->background_circe = false;
 	}
 	return lang_expect_close(p, open, "background");
 }
@@ -3568,6 +3580,7 @@ static bool sky_pigments(parser *p, diag_loc kw, scene_material *const *pg, int 
 		p->sc->background = c;
 		p->sc->has_background = true;
 		p->sc->background_loc = kw;
+		p->sc->background_circe = s->has_intensity;
 		p->sky_colour = true;
 		return true;
 	}
@@ -3629,6 +3642,7 @@ static bool sky_item(parser *p, diag_loc open, struct lang_sky *k)
 		if (x < 0)
 			return lang_error(p, t.loc, "sky_sphere intensity must be >= 0, found %g", x);
 		k->s.intensity = x;
+		k->s.has_intensity = true;
 		return true;
 	case LTK_KW_ROTATE:
 		lang_advance(p);

@@ -151,6 +151,16 @@ float bsdf_pdf(const bsdf_params *b, vec3 wo, vec3 wi)
 	return ps > 0.0f ? ps * ggx_pdf(wo, wi, b->alpha) + (1.0f - ps) * pd : pd;
 }
 
+vec3 bsdf_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return b->kind == BSDF_POV ? bsdf_pov_highlights(b, wo, wi) : v3s(0.0f);
+}
+
+vec3 bsdf_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return b->kind == BSDF_POV ? bsdf_pov_eval_delta_light(b, wo, wi) : bsdf_eval(b, wo, wi);
+}
+
 bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, vec3 *f, float *pdf)
 {
 	if (wo.z <= 0.0f)
@@ -167,7 +177,7 @@ bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, 
 	if (wi->z <= 0.0f)
 		return false;
 	*pdf = bsdf_pdf(b, wo, *wi);
-	*f = bsdf_eval(b, wo, *wi);
+	*f = b->kind == BSDF_POV ? bsdf_pov_eval_paths(b, wo, *wi) : bsdf_eval(b, wo, *wi);
 	return *pdf > 0.0f && isfinite(*pdf);
 }
 

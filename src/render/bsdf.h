@@ -89,12 +89,19 @@ bsdf_params bsdf_pov_finish(vec3 pigment, float kd, float ks, float roughness);
 /* The coat: interior albedo, ior, roughness used as GGX alpha directly. */
 bsdf_params bsdf_coat(vec3 albedo, float ior, float roughness);
 
-/* f(wo, wi) without the cosine; zero unless both directions are above the surface (z > 0). */
+/* f(wo, wi) without the cosine; zero unless both directions are above the surface (z > 0).
+ * BSDF_POV's includes its highlights of light sources (bsdf_highlights). */
 vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi);
+/* The part of bsdf_eval only light sources show in (POV-Ray's highlights; zero for other kinds):
+ * next-event estimation weighs it fully, as no BSDF sample ever finds it. */
+vec3 bsdf_highlights(const bsdf_params *b, vec3 wo, vec3 wi);
+/* bsdf_eval as a delta light (point, spot, parallel; found by light samples only) sees it:
+ * BSDF_POV's without its near-mirror reflection, which in POV-Ray sees no light source. */
+vec3 bsdf_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi);
 /* Solid-angle density of bsdf_sample returning wi. */
 float bsdf_pdf(const bsdf_params *b, vec3 wo, vec3 wi);
 /* Samples wi given wo (u_lobe chooses the lobe, u the direction). On success *f is the BSDF value
- * and *pdf its density; false when the sample falls below the surface or has zero pdf (the pdf
+ * (BSDF_POV's without its highlights, which paths never carry: bsdf_pov.h) and *pdf its density; false when the sample falls below the surface or has zero pdf (the pdf
  * then integrates to less than one over the hemisphere: that mass is the failure probability). */
 bool bsdf_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *wi, vec3 *f, float *pdf);
 /* The colour the albedo AOV records: the diffuse reflectance (plus Ks for plastic), clamped to 1. */

@@ -1,25 +1,25 @@
 /* bsdf_pov.c - POV-Ray's finish as four lobes (diffuse, specular, phong, reflection) that add,
- * scaled together when they could reflect more than comes in. The mixture picks one lobe with
- * probability proportional to its weight at wo and reports the pdf of the whole mixture. */
+ * scaled together when they could reflect more than comes in. Paths sample the diffuse and
+ * reflection lobes (one picked with probability proportional to its weight at wo, the pdf that of
+ * the mixture); the highlights are POV-Ray's own formulas, seen by next-event estimation only. */
 #include "render/bsdf_pov.h"
 
 #include "render/sampling.h"
 
-enum { LOBE_DIFFUSE, LOBE_SPECULAR, LOBE_PHONG, LOBE_REFLECTION, LOBE_COUNT };
+enum { LOBE_DIFFUSE, LOBE_REFLECTION, LOBE_COUNT };
 
-float bsdf_pov_blinn_alpha(float n)
+float bsdf_pov_specular_albedo(float n)
 {
-	/* Walter et al. 2007, sec. 5.2: Blinn-Phong exponent n ~ 2 / alpha^2 - 2. */
-	float a = sqrtf(2.0f / (fmaxf(n, 0.0f) + 2.0f));
-	return fminf(fmaxf(a, BSDF_MIN_ALPHA), 1.0f);
+	/* Ks (N.H)^n / (pi cos_i) times cos_i over the hemisphere at normal incidence (H halves the
+	 * angle of wi): 8 (1 - 2^(-(n + 2) / 2)) / (n + 2) per unit Ks; less towards grazing. */
+	n = fmaxf(n, 0.0f);
+	return fminf(8.0f * (1.0f - powf(2.0f, -0.5f * (n + 2.0f))) / (n + 2.0f), 1.0f);
 }
 
-float bsdf_pov_blinn_weight(float n)
+float bsdf_pov_phong_albedo(float p)
 {
-	/* GGX's peak D(n) / (4 cos_o cos_i) = 1 / (4 pi alpha^2) at normal incidence against POV-Ray's
-	 * (N.H)^n / pi there (per unit Ks, the light scaled by pi): weight 4 alpha^2, at most 1. */
-	float a = bsdf_pov_blinn_alpha(n);
-	return fminf(4.0f * a * a, 1.0f);
+	/* Kp (R.L)^p / (pi cos_i) times cos_i over the hemisphere about R: at most 2 / (p + 1). */
+	return fminf(2.0f / (fmaxf(p, 0.0f) + 1.0f), 1.0f);
 }
 
 float bsdf_pov_metallic_fresnel(float c)
@@ -58,14 +58,13 @@ static bool has_reflection(const bsdf_pov_finish_spec *f)
 }
 
 static float spec_n(const bsdf_pov_finish_spec *f) { return 1.0f / fmaxf(f->roughness, 1e-6f); }
-static float phong_n(const bsdf_pov_finish_spec *f) { return 4.0f * f->phong_size; }
 
 void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 {
 	const bsdf_pov_finish_spec *f = &b->pov;
 	b->pigment = v3_min(v3_max(pigment, v3s(0.0f)), v3s(1.0f));
 	/* The largest the lobes can reflect in any channel: every tint is at most 1. */
-	float hl = f->specular * bsdf_pov_blinn_weight(spec_n(f)) + f->phong * bsdf_pov_blinn_weight(phong_n(f));
+	float hl = f->specular * bsdf_pov_specular_albedo(spec_n(f)) + f->phong * bsdf_pov_phong_albedo(f->phong_size);
 	/* The diffuse term: the Lambert lobe's Kd, or a subsurface texture's (its BSSRDF's albedo,
 	 * scaled with the lobes so that the whole still reflects at most 1). */
 	float kd = f->sss_diffuse > 0.0f ? f->sss_diffuse : f->diffuse;
@@ -90,19 +89,15 @@ static void lobe_probs(const bsdf_params *b, vec3 wo, float p[LOBE_COUNT])
 	const bsdf_pov_finish_spec *f = &b->pov;
 	/* A subsurface texture's b->diffuse is the BSSRDF's albedo: it has no Lambert lobe. */
 	p[LOBE_DIFFUSE] = f->sss_diffuse > 0.0f ? 0.0f : v3_luminance(b->diffuse);
-	p[LOBE_SPECULAR] = f->specular * bsdf_pov_blinn_weight(spec_n(f)) *
-			   v3_luminance(metallic_tint(f->metallic, b->pigment, wo.z));
-	p[LOBE_PHONG] = f->phong * bsdf_pov_blinn_weight(phong_n(f)) *
-			v3_luminance(metallic_tint(f->metallic, b->pigment, wo.z));
 	p[LOBE_REFLECTION] = has_reflection(f) ? v3_luminance(reflectivity(f, b->pigment, wo.z)) : 0.0f;
 	float sum = 0.0f;
 	for (int k = 0; k < LOBE_COUNT; k++)
 		sum += p[k] = fmaxf(p[k], 0.0f);
 	for (int k = 0; k < LOBE_COUNT; k++)
-		p[k] = sum > 0.0f ? p[k] / sum : (k == LOBE_DIFFUSE);
+		p[k] = sum > 0.0f ? p[k] / sum : 0.0f; /* nothing paths carry: the path ends */
 }
 
-vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)
+vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	if (wo.z <= 0.0f || wi.z <= 0.0f)
 		return v3s(0.0f);
@@ -110,20 +105,44 @@ vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)
 	vec3 h = v3_normalize(v3_add(wo, wi));
 	float c = fminf(fmaxf(v3_dot(wi, h), 0.0f), 1.0f);
 	vec3 r = v3_scale(b->pigment, f->diffuse * RENDER_INV_PI);
-	vec3 tint = metallic_tint(f->metallic, b->pigment, c);
-	if (f->specular > 0.0f) {
-		float n = spec_n(f);
-		float g = f->specular * bsdf_pov_blinn_weight(n) * bsdf_ggx_reflection(wo, wi, bsdf_pov_blinn_alpha(n));
-		r = v3_madd(r, tint, g);
-	}
-	if (f->phong > 0.0f) {
-		float n = phong_n(f);
-		float g = f->phong * bsdf_pov_blinn_weight(n) * bsdf_ggx_reflection(wo, wi, bsdf_pov_blinn_alpha(n));
-		r = v3_madd(r, tint, g);
-	}
 	if (has_reflection(f))
 		r = v3_madd(r, reflectivity(f, b->pigment, c), bsdf_ggx_reflection(wo, wi, BSDF_POV_MIRROR_ALPHA));
 	return v3_scale(r, b->pov_scale);
+}
+
+vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	const bsdf_pov_finish_spec *f = &b->pov;
+	if (wo.z <= 0.0f || wi.z <= 0.0f || (f->specular <= 0.0f && f->phong <= 0.0f))
+		return v3s(0.0f);
+	vec3 r = v3s(0.0f);
+	if (f->specular > 0.0f) { /* trace.cpp ComputeSpecularColour: Ks (N.H)^(1/roughness) */
+		vec3 h = v3_normalize(v3_add(wo, wi));
+		if (h.z > 0.0f)
+			r = v3_madd(r, metallic_tint(f->metallic, b->pigment, fminf(fmaxf(v3_dot(wi, h), 0.0f), 1.0f)),
+				    f->specular * powf(h.z, spec_n(f)));
+	}
+	if (f->phong > 0.0f) { /* ComputePhongColour: Kp (R.L)^phong_size, R the mirror of the eye */
+		float rl = 2.0f * wo.z * wi.z - v3_dot(wo, wi);
+		if (rl > 0.0f)
+			r = v3_madd(r, metallic_tint(f->metallic, b->pigment, wi.z), f->phong * powf(rl, f->phong_size));
+	}
+	/* POV-Ray adds this to the colour without the cosine its diffuse has; under a light scaled by
+	 * pi (build_light.c) the BSDF that gives it is this / (pi cos_i). */
+	return v3_scale(r, b->pov_scale * RENDER_INV_PI / wi.z);
+}
+
+vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return v3_add(bsdf_pov_eval_paths(b, wo, wi), bsdf_pov_highlights(b, wo, wi));
+}
+
+vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	if (wo.z <= 0.0f || wi.z <= 0.0f)
+		return v3s(0.0f);
+	vec3 r = v3_scale(b->pigment, b->pov.diffuse * RENDER_INV_PI * b->pov_scale);
+	return v3_add(r, bsdf_pov_highlights(b, wo, wi));
 }
 
 float bsdf_pov_pdf(const bsdf_params *b, vec3 wo, vec3 wi)
@@ -132,12 +151,7 @@ float bsdf_pov_pdf(const bsdf_params *b, vec3 wo, vec3 wi)
 		return 0.0f;
 	float p[LOBE_COUNT];
 	lobe_probs(b, wo, p);
-	const bsdf_pov_finish_spec *f = &b->pov;
 	float pdf = p[LOBE_DIFFUSE] * render_cosine_hemisphere_pdf(wi.z);
-	if (p[LOBE_SPECULAR] > 0.0f)
-		pdf += p[LOBE_SPECULAR] * bsdf_ggx_pdf(wo, wi, bsdf_pov_blinn_alpha(spec_n(f)));
-	if (p[LOBE_PHONG] > 0.0f)
-		pdf += p[LOBE_PHONG] * bsdf_ggx_pdf(wo, wi, bsdf_pov_blinn_alpha(phong_n(f)));
 	if (p[LOBE_REFLECTION] > 0.0f)
 		pdf += p[LOBE_REFLECTION] * bsdf_ggx_pdf(wo, wi, BSDF_POV_MIRROR_ALPHA);
 	return pdf;
@@ -160,11 +174,7 @@ bool bsdf_pov_sample(const bsdf_params *b, vec3 wo, float u_lobe, vec2 u, vec3 *
 		*wi = render_cosine_hemisphere(u);
 		return true;
 	}
-	const bsdf_pov_finish_spec *f = &b->pov;
-	float alpha = k == LOBE_SPECULAR ? bsdf_pov_blinn_alpha(spec_n(f))
-		      : k == LOBE_PHONG  ? bsdf_pov_blinn_alpha(phong_n(f))
-					 : BSDF_POV_MIRROR_ALPHA;
-	vec3 h = bsdf_ggx_sample_vndf(wo, alpha, u);
+	vec3 h = bsdf_ggx_sample_vndf(wo, BSDF_POV_MIRROR_ALPHA, u);
 	*wi = v3_sub(v3_scale(h, 2.0f * v3_dot(wo, h)), wo);
 	return true;
 }

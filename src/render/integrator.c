@@ -259,12 +259,12 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
 	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
-	if (!(pick > 0.0f) || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
+	if (!(pick > 0.0f) || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
 	if (v3_dot(ls_out.wi, ng_out) <= 0.0f)
 		return v3s(0.0f);
 	vec3 wi_local = to_local(f, ls_out.wi);
-	vec3 fval = bsdf_eval(b, wo_local, wi_local);
+	vec3 fval = ls_out.delta ? bsdf_eval_delta_light(b, wo_local, wi_local) : bsdf_eval(b, wo_local, wi_local);
 	if (v3_max_comp(fval) <= 0.0f)
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
@@ -276,6 +276,11 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY)
 		      ? 1.0f
 		      : render_power_heuristic(light_pdf, lobe_prob * bsdf_pdf(b, wo_local, wi_local));
+	if (w < 1.0f) { /* highlights only light sources show in: no BSDF sample shares them */
+		vec3 hl = bsdf_highlights(b, wo_local, wi_local);
+		fval = v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl);
+		w = 1.0f;
+	}
 	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
 }
 
@@ -293,7 +298,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
 	vec2 u = render_sampler_2d(g, dim + 1);
 	light_sample ls_out;
-	if (!(pick > 0.0f) || ls->lights[li].no_media || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
+	if (!(pick > 0.0f) || ls->lights[li].no_media || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
 		return v3s(0.0f);
 	float phase_pdf;
 	vec3 fval = render_media_phase_eval(md, c, d_in, ls_out.wi, &phase_pdf);
@@ -492,6 +497,8 @@ static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
 		return 0.0;
 	for (size_t i = 0; i < s->lights->count; i++) {
 		const light *l = &s->lights->lights[i];
+		if (l->seen_only)
+			continue;
 		if (light_is_infinite(l)) {
 			e += RENDER_PI * (double)v3_luminance(light_radiance_dir(l, n));
 			continue;
@@ -592,6 +599,8 @@ typedef struct path {
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
 	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
+	bool sky_view;	     /* the same, by RENDER_SKY_MIRROR_PDF: sees a light that is only seen
+			      * (light.h's seen_only) */
 	bool passed;	     /* thin transparent surfaces were passed since prev_p (same direction) */
 	bool stood_for;	     /* refracted through glass since the last non-delta vertex, whose
 			      * shadow rays passed that glass: emitters found now were counted there */
@@ -637,12 +646,19 @@ typedef struct vertex {
 	vec3 wo_local; /* the outgoing direction in f */
 } vertex;
 
-/* A path that escapes the scene sees every infinite light, weighed against the BSDF sample. */
+/* A path that escapes the scene sees every infinite light, weighed against the BSDF sample; one
+ * that is only seen (POV-Ray's sky without radiosity) only by the camera's ray and its mirror
+ * continuations, in full (next-event estimation never takes it). */
 static inline void add_escaped(const render_scene *s, const render_settings *set, int bounce, vec3 d, path *pa)
 {
 	const light_set *ls = s->lights;
 	for (size_t k = 0; ls && k < ls->infinite_count; k++) {
 		const light *l = &ls->lights[ls->infinite[k]];
+		if (l->seen_only) {
+			if (pa->sky_view)
+				gather(set, pa, v3_mul(pa->beta, light_radiance_dir(l, d)));
+			continue;
+		}
 		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
 		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 		gather(set, pa, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
@@ -878,7 +894,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
 	pa->prev_p = x, pa->prev_n = v3s(0.0f);
-	pa->fog_view = false;
+	pa->fog_view = pa->sky_view = false;
 	if (!roulette(bounce, g, pa))
 		return -1;
 	*ray = (render_ray){x, wi};
@@ -891,7 +907,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
-		   .fog_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
+		   .fog_view = true, .sky_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
 	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
@@ -959,6 +975,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			break;
 		} else {
 			pa.fog_view = pa.fog_view && pa.prev_pdf >= RENDER_FOG_MIRROR_PDF;
+			pa.sky_view = pa.sky_view && pa.prev_pdf >= RENDER_SKY_MIRROR_PDF;
 		}
 	}
 	out.radiance = pa.radiance;

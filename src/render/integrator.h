@@ -161,6 +161,11 @@ const char *render_part_name(render_part part);
 /* A BSDF sample at least this dense (per steradian) continues a mirror's view: its lobe is
  * narrower than 1 / 100 sr (GGX alpha < ~0.06), as POV-Ray's reflection rays. */
 #define RENDER_FOG_MIRROR_PDF 100.0f
+/* A BSDF sample at least this dense continues a mirror's view of POV-Ray's sky (light.h's
+ * seen_only): above any Lambert lobe's (1 / pi) and a rough GGX's (alpha above ~0.3); the tails of
+ * POV-Ray's reflection lobe (GGX alpha 0.001) fall below it for under 1 % of its samples (below
+ * RENDER_FOG_MIRROR_PDF for 2.6 %: a mirror would darken so much). */
+#define RENDER_SKY_MIRROR_PDF 1.0f
 #define RENDER_DEFAULT_MAX_TRACE_LEVEL 5 /* POV-Ray's default */
 
 typedef struct render_settings {

@@ -530,7 +530,7 @@ bool light_set_finish(light_set *s, float scene_radius)
 	}
 	s->infinite_count = 0;
 	for (size_t i = 0; i < s->count; i++) {
-		power[i] = light_power(&s->lights[i], scene_radius);
+		power[i] = s->lights[i].seen_only ? 0.0f : light_power(&s->lights[i], scene_radius);
 		if (light_is_infinite(&s->lights[i]))
 			s->infinite[s->infinite_count++] = i;
 	}

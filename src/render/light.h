@@ -80,6 +80,10 @@ typedef struct light {
 	float fade_distance, fade_power; /* LIGHT_FALLOFF_FADE */
 	bool shadowless;	 /* POV-Ray's `shadowless`: its samples skip the shadow ray */
 	bool no_media;		 /* POV-Ray's `media_interaction off`: lights no medium (its scattering) */
+	/* An infinite light that lights nothing: POV-Ray's background or sky_sphere without radiosity,
+	 * seen only by camera rays and their mirror reflections and refractions (integrator.c). Its
+	 * selection weight is 0: next-event estimation never takes it. */
+	bool seen_only;
 	light_area area_shape;	 /* point, spot */
 	bool area_orient;	 /* the area turned to face each receiver, both axes |axis1| long */
 	vec3 axis1, axis2;	 /* the area's full edge vectors (an ellipse's diameters) */

@@ -635,6 +635,8 @@ void scene_dump(const scene *s, FILE *o)
 	if (s->global.subsurface)
 		fprintf(o, "global subsurface samples %d %d radiosity %d\n", s->global.subsurface_samples[0],
 			s->global.subsurface_samples[1], s->global.subsurface_radiosity);
+	if (s->global.radiosity)
+		fprintf(o, "global radiosity%s\n", s->global.radiosity_legacy ? " legacy" : "");
 	for (const scene_fog *f = s->fogs; f; f = f->next) {
 		fprintf(o, "fog type %d", (int)f->type);
 		dump_loc(o, f->loc);
@@ -664,10 +666,14 @@ void scene_dump(const scene *s, FILE *o)
 	if (s->has_background) {
 		fprintf(o, "background");
 		dump_v3(o, "color", s->background);
+		if (s->background_circe) /* only then: older dumps stay as they were */
+			fprintf(o, " circe");
 		fputc('\n', o);
 	}
 	if (s->has_sky_sphere && s->sky_sphere.n_pigments) {
 		fprintf(o, "sky_sphere pigments %d intensity %g", s->sky_sphere.n_pigments, s->sky_sphere.intensity);
+		if (s->sky_sphere.has_intensity)
+			fprintf(o, " circe");
 		dump_d3(o, "rotate", s->sky_sphere.rotate_deg);
 		fputc('\n', o);
 		for (int i = 0; i < s->sky_sphere.n_pigments; i++) {

@@ -298,6 +298,11 @@ typedef struct scene_global {
 	bool subsurface;
 	int subsurface_samples[2]; /* POV-Ray's defaults 50, 50 */
 	bool subsurface_radiosity;
+	/* global_settings { radiosity {...} }: its settings are ignored (circe always computes global
+	 * illumination), its presence is POV-Ray's switch: POV-Ray's background and sky_sphere light
+	 * the scene only under it, and finishes' ambient gives way to it (doc/language.md "Finishes").
+	 * radiosity_legacy: it came under a #version below 3.7, where POV-Ray keeps the ambient. */
+	bool radiosity, radiosity_legacy;
 } scene_global;
 
 /* Pigment layers of a sky_sphere (POV-Ray's are unlimited; circe's sky is baked from these). */
@@ -307,6 +312,7 @@ typedef struct scene_sky_sphere {
 	diag_loc loc;
 	const char *image;
 	double intensity;
+	bool has_intensity; /* circe's `intensity` was given: the sky lights the scene always */
 	dvec3 rotate_deg;
 	/* Or POV-Ray pigments, bottom first, evaluated at the unit direction (the build bakes them
 	 * into a lat-long image): each layer's filter and transmit show the ones below. */
@@ -333,6 +339,10 @@ typedef struct scene {
 	bool has_background;
 	vec3 background;
 	diag_loc background_loc;
+	/* The background is circe's environment light (a one-colour sky_sphere with `intensity`), which
+	 * lights every surface; POV-Ray's `background` or sky_sphere without it lights diffuse and
+	 * glossy surfaces only under global_settings' radiosity (scene_sky_lights). */
+	bool background_circe;
 	bool has_sky_sphere;
 	scene_sky_sphere sky_sphere;
 	scene_fog *fogs; /* every fog, newest first (they combine in any order) */
@@ -365,6 +375,33 @@ static inline size_t scene_n_lights(const scene *s) { return s->lights.len; }
 static inline const scene_light *scene_light_at(const scene *s, size_t i)
 {
 	return &VECBUF_AT(&s->lights, scene_light, i);
+}
+
+/* Whether the scene's environment is circe's own (a sky_sphere `image`, or one with `intensity`):
+ * then it lights every surface, as under POV-Ray's radiosity. */
+static inline bool scene_env_circe(const scene *s)
+{
+	return (s->has_sky_sphere && (s->sky_sphere.image || s->sky_sphere.has_intensity)) ||
+	       (s->has_background && s->background_circe);
+}
+/* Whether the background and the sky_sphere light surfaces, or are only seen (by camera rays and
+ * their mirror reflections and refractions): POV-Ray's sky lights only under radiosity. */
+static inline bool scene_background_lights(const scene *s)
+{
+	return s->background_circe || s->global.radiosity;
+}
+static inline bool scene_sky_sphere_lights(const scene *s)
+{
+	return s->sky_sphere.image || s->sky_sphere.has_intensity || s->global.radiosity;
+}
+/* Whether POV-Ray finishes glow by their ambient: POV-Ray 3.7 adds it only without radiosity (or
+ * under radiosity in a scene of #version below 3.7; trace.cpp). The implicit 0.1 (no `ambient`
+ * written) stands for the light POV-Ray does not compute: it glows only where neither radiosity
+ * nor circe's own environment computes that light. */
+static inline bool scene_ambient_glows(const scene *s, bool explicit_ambient)
+{
+	bool radiosity = s->global.radiosity && !s->global.radiosity_legacy;
+	return !radiosity && (explicit_ambient || !scene_env_circe(s));
 }
 
 /* A colour written at loc becomes a physical quantity of the given use: clamps it into its range

@@ -26,7 +26,7 @@ scene() { # scene NAME OBJECTS: a skin scene holding OBJECTS, traced by circles
 global_settings { mm_per_unit 2 }
 camera { location <2.2, 2.5, -3> look_at <0.5, 0.5, 0.5> angle 40 }
 light_source { <-3, 5, -4> color rgb 1 intensity 40 }
-background { color rgb 0.1 }
+sky_sphere { pigment { color rgb 0.1 } intensity 1 }
 $2
 EOS
 }

@@ -109,7 +109,10 @@ expect 0 "#fopen read searches the -I folders" -- "$CIRCE" check -I "$tmp/lib" "
 expect 0 "ignored global_settings" -- sh -c 'cd "$1" && "$2" check --dump ignored_settings.pov' sh "$good" "$CIRCE"
 cmp -s "$tmp/err" "$good/ignored_settings.stderr" ||
 	{ echo "FAIL ignored settings' warnings differ (expected, then got):"; cat "$good/ignored_settings.stderr" "$tmp/err"; fail=1; }
-sed 's/@[^ ]*//g' "$tmp/out" >"$tmp/ignored.ir"
+# radiosity's settings are ignored but its presence is recorded (POV-Ray's sky lights under it):
+# the IR says so in one line, the only difference.
+grep -qx 'global radiosity' "$tmp/out" || { echo "FAIL the IR does not record radiosity"; fail=1; }
+sed 's/@[^ ]*//g; /^global radiosity$/d' "$tmp/out" >"$tmp/ignored.ir"
 sed '/ignored: begin/,/ignored: end/d' "$good/ignored_settings.pov" >"$tmp/plain.pov"
 expect 0 "global_settings without the ignored items" -- "$CIRCE" check --dump "$tmp/plain.pov"
 sed 's/@[^ ]*//g' "$tmp/out" | cmp -s - "$tmp/ignored.ir" ||

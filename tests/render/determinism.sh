@@ -42,7 +42,7 @@ expect_status 1 "$CIRCE" merge -o mixed.exr qr.exr "q20,0,40,15.exr" "q0,15,20,3
 grep -q 'circe.sampler is' err || fail "merge took tiles of two samplers: $(cat err)"
 cat >sss.pov <<'EOS'
 camera { location <0, 1.2, -4> look_at <0, 0.5, 0> angle 50 }
-background { color rgb <0.6, 0.7, 0.8> }
+sky_sphere { pigment { color rgb <0.6, 0.7, 0.8> } intensity 1 }
 light_source { <-3, 5, -4> color rgb 2 parallel point_at <0, 0, 0> }
 sphere { <0, 0.6, 0>, 0.6 material { wax { } } }
 box { <0.7, 0, -0.3>, <1.3, 0.6, 0.3> material { skin { } } }

@@ -19,7 +19,7 @@ scales="1 1e-8 1e-6 0.001 1000 1e6 1e8"
 for s in $scales; do
 	cat >s$s.pov <<EOS
 camera { location <0, 1.2, -4> * $s look_at <0, 0.5, 0> * $s angle 50 }
-background { color rgb <0.3, 0.35, 0.4> }
+sky_sphere { pigment { color rgb <0.3, 0.35, 0.4> } intensity 1 }
 light_source { <-3, 5, -4> * $s color rgb 1 intensity 30 * $s * $s }
 light_source { <3, 4, -2> * $s color rgb 20 * $s * $s radius 0.3 * $s }
 light_source { <1, 5, -3> * $s color rgb 1 intensity 20 * $s * $s spotlight point_at <0, 0, 0> * $s radius 15 falloff 25 }

@@ -13,7 +13,7 @@ for s in 1 1e-8 1e-6 0.001 1000 1e6 1e8; do
 	cat >s$s.pov <<EOS
 global_settings { mm_per_unit 10 / $s }
 camera { location <0, 1.2, -4> * $s look_at <0, 0.5, 0> * $s angle 50 }
-background { color rgb <0.6, 0.7, 0.8> }
+sky_sphere { pigment { color rgb <0.6, 0.7, 0.8> } intensity 1 }
 light_source { <-3, 5, -4> color rgb 2 parallel point_at <0, 0, 0> }
 union {
   sphere { <0, 0.6, 0>, 0.6 material { wax { radius <20, 12, 6> } } }

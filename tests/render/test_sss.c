@@ -157,7 +157,7 @@ static void test_slab_zero_variance(void)
 static void test_small_radius(void)
 {
 	const char *scene = "camera { location <0, 0, -4> look_at <0, 0, 0> angle 40 }\n"
-			    "background { color rgb <0.5, 0.6, 0.7> }\n"
+			    "sky_sphere { pigment { color rgb <0.5, 0.6, 0.7> } intensity 1 }\n"
 			    "light_source { <-3, 4, -5> color rgb 1 }\n"
 			    "sphere { <0, 0, 0>, 1 material { %s } }\n";
 	char a[512], b[512];
@@ -185,7 +185,7 @@ static void test_small_radius(void)
 static void test_furnace(void)
 {
 	const char *scene = "camera { location <0, 3, -3> look_at <0, 0, 0> angle 30 }\n"
-			    "background { color rgb 1 }\n"
+			    "sky_sphere { pigment { color rgb 1 } intensity 1 }\n"
 			    "box { <-10, -1, -10>, <10, 0, 10> material { wax { color rgb 1 radius %s ior 1.0 } } }\n";
 	const char *radii[] = {"2", "10000"};
 	for (int i = 0; i < 2; i++) {
@@ -230,7 +230,7 @@ static void test_extremes(void)
 		snprintf(text, sizeof text,
 			 "camera { location <0, 0.5, -4> look_at <0, 0, 0> angle 40 }\n"
 			 "light_source { <-100, 0.01, 0> color rgb 1 parallel point_at <0, 0, 0> }\n"
-			 "background { color rgb 0.2 }\n"
+			 "sky_sphere { pigment { color rgb 0.2 } intensity 1 }\n"
 			 "sphere { <-0.6, 0, 0>, 0.5 material { %s } }\n"
 			 "box { <0.2, -0.5, -0.02>, <1.2, 0.5, 0.02> material { %s } }\n",
 			 mats[m], mats[m]);
@@ -255,7 +255,7 @@ static void test_talk_weight(void)
 	char text[16384];
 	int n = snprintf(text, sizeof text,
 			 "camera { location <0, 0, -5> look_at <0, 0, 0> angle 30 }\n"
-			 "background { color rgb 1 }\n"
+			 "sky_sphere { pigment { color rgb 1 } intensity 1 }\n"
 			 "mesh2 { vertex_vectors { 128");
 	for (int i = 0; i < 64; i++)
 		for (int e = 0; e < 2; e++) {
@@ -337,7 +337,7 @@ static void test_circle_vs_disk(void)
 	snprintf(text, sizeof text,
 		 "global_settings { mm_per_unit 4 }\n"
 		 "camera { location <0, 5, -22> look_at <0, 4.5, 0> angle 30 }\n"
-		 "background { color rgb 0.3 }\n"
+		 "sky_sphere { pigment { color rgb 0.3 } intensity 1 }\n"
 		 "light_source { <8, 10, 10> color rgb 1 intensity 300 radius 1 }\n"
 		 "mesh { file \"%s\" material { wax { } } }\n",
 		 asset("bunny/bunny_npm.obj"));
@@ -345,7 +345,7 @@ static void test_circle_vs_disk(void)
 	snprintf(text, sizeof text,
 		 "global_settings { mm_per_unit 22 }\n"
 		 "camera { location <4.5, 1.5, 17> look_at <0, 0.6, 0> angle 34 }\n"
-		 "background { color rgb 0.3 }\n"
+		 "sky_sphere { pigment { color rgb 0.3 } intensity 1 }\n"
 		 "light_source { <-10, 12, 16> color rgb 1 intensity 450 radius 1.5 }\n"
 		 "mesh { file \"%s\" material { skin { } } }\n",
 		 asset("lee_perry_smith_head/LeePerrySmith.obj"));
@@ -362,7 +362,7 @@ static void test_volume(void)
 {
 	image_stats st;
 	render("camera { location <0, 3, -3> look_at <0, 0, 0> angle 30 }\n"
-	       "background { color rgb 1 }\n"
+	       "sky_sphere { pigment { color rgb 1 } intensity 1 }\n"
 	       "box { <-1, -1, -1>, <1, 0, 1> material { wax { sigma_s 1 sigma_a 1e-6 ior 1.0 } } }\n",
 	       32, 8, SSS_CIRCLE_EXACT, SSS_METHOD_VOLUME, &st);
 	double var = 0.0;
@@ -393,7 +393,7 @@ static void test_volume(void)
 		snprintf(text, sizeof text,
 			 "global_settings { mm_per_unit 1 }\n"
 			 "camera { location <0, 0, -5> look_at <0, 0, 0> angle 20 }\n"
-			 "background { color rgb 1 }\n"
+			 "sky_sphere { pigment { color rgb 1 } intensity 1 }\n"
 			 "box { <-200, -200, 0>, <200, 200, 200> material { %s } }\n",
 			 mats[m]);
 		image_stats prof, vol;
@@ -417,7 +417,7 @@ static void test_volume(void)
  * same mean (the diffusion's albedo is POV-Ray's R_d = pigment * diffuse). */
 static void test_pov_subsurface(void)
 {
-	const char *tex = "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { rgb 0.75 } finish { diffuse 0.8 "
+	const char *tex = "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { rgb 0.75 } finish { ambient 0 diffuse 0.8 "
 			  "subsurface { translucency 1.5 } } } interior { ior 1 } }\n";
 	char on[1024], off[1024];
 	snprintf(on, sizeof on, "global_settings { subsurface { } }\n" SLAB_LIGHT "%s", tex);
@@ -438,7 +438,7 @@ static void test_pov_subsurface(void)
 	snprintf(on, sizeof on,
 		 "global_settings { subsurface { } }\n" SLAB_LIGHT
 		 "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { checker rgb 0.75 rgb 0.25 scale 3 translate "
-		 "<1.5, 0, 1.5> } finish { diffuse 0.8 subsurface { translucency 1.5 } } } interior { ior 1 } }\n");
+		 "<1.5, 0, 1.5> } finish { ambient 0 diffuse 0.8 subsurface { translucency 1.5 } } } interior { ior 1 } }\n");
 	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
 	double hi = expect, lo = expect / 3.0;
 	int n_hi = 0, n_lo = 0, outside = 0;
@@ -704,7 +704,7 @@ static void test_parts(void)
 	world *w;
 	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_CIRCLE};
 	bool ok = build("camera { location <0, 1.2, -4> look_at <0, 0.5, 0> angle 50 }\n"
-			"background { color rgb <0.3, 0.35, 0.4> }\n"
+			"sky_sphere { pigment { color rgb <0.3, 0.35, 0.4> } intensity 1 }\n"
 			"light_source { <-3, 5, -4> color rgb 2 }\n"
 			"sphere { <0, 0.6, 0>, 0.6 material { skin { } } }\n"
 			"plane { y, 0 pigment { color rgb 0.7 } }\n",

@@ -5,7 +5,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 2.2, -5> look_at <0, 0.6, 0> angle 50 }
 light_source { <-3, 5, -4> color rgb 1 intensity 40 }
-background { color rgb 0.2 }
+sky_sphere { pigment { color rgb 0.2 } intensity 1 }
 // The shapes are z-up: stand the pawn on its base, centred, twice as tall as the torus.
 subdivision_surface {
   file "../../scenes/assets/opensubdiv_shapes/catmark_pawn.obj"

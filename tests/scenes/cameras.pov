@@ -11,7 +11,7 @@ camera {
   rotate <0, -20, 0>
 }
 light_source { <-3, 5, -4> color rgb 1 intensity 40 }
-background { color rgb 0.3 }
+sky_sphere { pigment { color rgb 0.3 } intensity 1 }
 plane { y, 0 material { diffuse { color rgb 0.7 } } }
 #declare Ball = sphere { <0, 0.5, 0>, 0.5 }
 object { Ball translate <-1.8, 0, -2.5> material { diffuse { color rgb <0.8, 0.3, 0.2> } } }

@@ -6,7 +6,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 3, -7> look_at <0, 0.3, 0> angle 50 }
 light_source { <4, 8, -6> color rgb 1 }
-background { color rgb <0.25, 0.35, 0.5> }
+sky_sphere { pigment { color rgb <0.25, 0.35, 0.5> } intensity 1 }
 plane { y, -1 pigment { checker color rgb 0.8 color rgb 0.3 } }
 difference {
   intersection { sphere { 0, 1 } box { -0.78, 0.78 } }

@@ -4,7 +4,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 1.5, -6> look_at <0, 0.6, 0> angle 50 }
 light_source { <-4, 6, -5> color rgb 1 intensity 60 }
-background { color rgb <0.25, 0.27, 0.3> }
+sky_sphere { pigment { color rgb <0.25, 0.27, 0.3> } intensity 1 }
 #declare Ball = sphere { <0, 0.6, 0>, 0.6 }
 object { Ball translate <-1.4, 0, 0> material { skin {} } }
 object { Ball material { wax {} } }

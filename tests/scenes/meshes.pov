@@ -4,7 +4,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 1, -4> look_at <0, 0.5, 0> angle 50 aperture 0.15 focal_point <0, 0.5, 0> }
 light_source { <-3, 5, -4> color rgb 1 intensity 40 }
-background { color rgb 0.3 }
+sky_sphere { pigment { color rgb 0.3 } intensity 1 }
 #declare Bunny = mesh { file "../../scenes/assets/bunny/bunny_npm.obj" }
 object { Bunny scale 0.1 translate <-1.5, 0, 1> material { diffuse { color rgb 0.8 } } }
 object { Bunny scale 0.1 translate <0, 0, 0> material { diffuse { color rgb <0.9, 0.6, 0.5> } } }

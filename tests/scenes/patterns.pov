@@ -10,7 +10,7 @@ global_settings { assumed_gamma 1.0 ambient_light 0 }
 camera { location <0, 0, -12> look_at <0, 0, 0> angle 30 }
 light_source { <-6, 8, -10> color rgb 1.1 }
 light_source { <6, 2, -10> color rgb 0.4 shadowless }
-background { color rgb 0.05 }
+sky_sphere { pigment { color rgb 0.05 } intensity 1 }
 sphere { 0, 0.45 pigment { checker rgb <1,0.9,0.2>, rgb <0.1,0.2,0.6> scale 0.3 } translate <-2.5, 2, 0> } // checker
 sphere { 0, 0.45 pigment { hexagon rgb <0.9,0.1,0.1>, rgb <0.1,0.7,0.1>, rgb <0.1,0.1,0.8> scale 0.12 rotate x*90 } translate <-1.5, 2, 0> } // hexagon
 sphere { 0, 0.45 pigment { brick rgb 0.8, rgb <0.6,0.15,0.1> scale 0.03 } translate <-0.5, 2, 0> } // brick

@@ -5,7 +5,7 @@
 global_settings { mm_per_unit 10 }
 camera { location <0, 1.2, -6.5> look_at <0, 0.5, 0> angle 45 }
 light_source { <-5, 4, -2> color rgb 1 intensity 40 }
-background { color rgb <0.2, 0.22, 0.25> }
+sky_sphere { pigment { color rgb <0.2, 0.22, 0.25> } intensity 1 }
 #declare Ball = sphere { <0, 0.55, 0>, 0.55 }
 object { Ball translate <-1.8, 0, 0> material { wax { method circle } } }
 object { Ball translate <-0.6, 0, 0> material { wax { method fullcircle } } }

@@ -4,7 +4,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 2, -5> look_at <0, 0.3, 0> angle 50 }
 light_source { <-3, 5, -4> color rgb 1 intensity 40 }
-background { color rgb 0.2 }
+sky_sphere { pigment { color rgb 0.2 } intensity 1 }
 subdivision_surface {
   vertex_vectors { 8, <-0.5,-0.5,0.5>, <0.5,-0.5,0.5>, <-0.5,0.5,0.5>, <0.5,0.5,0.5>,
                       <-0.5,0.5,-0.5>, <0.5,0.5,-0.5>, <-0.5,-0.5,-0.5>, <0.5,-0.5,-0.5> }
