@@ -393,10 +393,11 @@ static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out,
 		       render_sampler *g, sss_entry *e, render_sample *out)
 {
-	double u[4];
-	for (uint32_t k = 0; k < 4; k++)
-		u[k] = render_sampler_1d_double(g, DIM_SSS_SEARCH + k);
-	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 4);
+	/* The axis with phi, and the radius, as one 2-D point (sss_disk_probe_make): stratified
+	 * together on each axis. */
+	vec2 u_ar = render_sampler_2d(g, DIM_SSS_SEARCH + 1);
+	double u[3] = {u_ar.x, render_sampler_1d_double(g, DIM_SSS_SEARCH), u_ar.y};
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 2);
 	double mm_per_unit = 1.0 / m->units_per_mm;
 	sss_disk_frame f = sss_disk_frame_make(exit->p, n_out);
 	sss_disk_probe q = sss_disk_probe_make(&m->profile, mm_per_unit, &f, u);
