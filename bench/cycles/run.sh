@@ -17,7 +17,10 @@
 # OUTDIR/*.png of the references (side by side: OUTDIR/SCENE.sides.png, circe left).
 # Exit 77 without blender. Run from the source folder, circe in build/.
 # Environment: W, H (160x120), THREADS (2), REF_SPP (2048), SPPS ("32 64 128"),
-# SCENES ("head textured lights"), DISK_SCENES ("head"), DISK_REF_SPP (1024), DISK_SPPS ("32 128").
+# SCENES ("head textured lights"), DISK_SCENES ("head"), DISK_REF_SPP (1024), DISK_SPPS ("32 128"),
+# BEFORE (another circe, e.g. a build of an older commit: its Sobol circle rows at each of SPPS
+# and its disk rows, labelled circe-before:..., against this circe's references, which estimate
+# the same image: a before/after in one run).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 circe=${1:-$here/../../build/circe}
@@ -25,14 +28,16 @@ out=${2:-${TMPDIR:-/tmp}/cycles}
 W=${W:-160} H=${H:-120} THREADS=${THREADS:-2} REF_SPP=${REF_SPP:-2048}
 SPPS=${SPPS:-32 64 128} SCENES=${SCENES:-head textured lights}
 DISK_SCENES=${DISK_SCENES-head} DISK_REF_SPP=${DISK_REF_SPP:-1024} DISK_SPPS=${DISK_SPPS:-32 128}
+BEFORE=${BEFORE:-}
 command -v blender >/dev/null 2>&1 || { echo "cycles/run.sh: no blender, skipped"; exit 77; }
 [ -x "$circe" ] || { echo "cycles/run.sh: no circe at $circe" >&2; exit 2; }
 mkdir -p "$out" || exit 1
 obj=$here/../../scenes/assets/lee_perry_smith_head/LeePerrySmith.obj
 
-# circe_render SCENE SSS SAMPLER SPP SEED OUT: prints "cpu wall" (whole process).
+# circe_render SCENE SSS SAMPLER SPP SEED OUT: prints "cpu wall" (whole process); $bin instead of
+# $circe when set.
 circe_render() {
-	/usr/bin/time -f "%U %S %e" -o "$6.time" "$circe" render "$here/$1.pov" -W "$W" -H "$H" \
+	/usr/bin/time -f "%U %S %e" -o "$6.time" "${bin:-$circe}" render "$here/$1.pov" -W "$W" -H "$H" \
 		--threads "$THREADS" --sss "$2" --sampler "$3" --spp "$4" --seed "$5" -o "$6" 2>"$6.log" ||
 		{ cat "$6.log" >&2; return 1; }
 	tail -1 "$6.time" | awk '{ printf "%.3f %.3f\n", $1 + $2, $3 }'
@@ -67,6 +72,10 @@ for sc in $SCENES; do
 	for s in $SPPS; do
 		set -- $(circe_render "$sc" circle sobol "$s" 1 "$o.sobol.$s.exr") || exit 1
 		row "$sc" circe:circle:sobol "$s" "$o.sobol.$s.exr" "$o.circe.ref.exr" "$1" "$2"
+		if [ -n "$BEFORE" ]; then
+			set -- $(bin=$BEFORE circe_render "$sc" circle sobol "$s" 1 "$o.before.$s.exr") || exit 1
+			row "$sc" circe-before:circle:sobol "$s" "$o.before.$s.exr" "$o.circe.ref.exr" "$1" "$2"
+		fi
 		set -- $(cycles_render "$sc" BURLEY "$s" 1 "$o.burley.$s.exr") || exit 1
 		row "$sc" cycles:BURLEY "$s" "$o.burley.$s.exr" "$o.cycles.ref.exr" "$1" "$2"
 		set -- $(circe_render "$sc" circle random "$s" 1 "$o.random.$s.exr") || exit 1
@@ -89,6 +98,9 @@ for sc in $SCENES; do
 		for s in $DISK_SPPS; do
 			set -- $(circe_render "$sc" disk sobol "$s" 1 "$o.disk.$s.exr") || exit 1
 			row "$sc" circe:disk:sobol "$s" "$o.disk.$s.exr" "$o.disk.ref.exr" "$1" "$2"
+			[ -n "$BEFORE" ] || continue
+			set -- $(bin=$BEFORE circe_render "$sc" disk sobol "$s" 1 "$o.disk.before.$s.exr") || exit 1
+			row "$sc" circe-before:disk:sobol "$s" "$o.disk.before.$s.exr" "$o.disk.ref.exr" "$1" "$2"
 		done
 		;;
 	esac

@@ -43,8 +43,9 @@ const char *render_part_name(render_part part)
 /* The sampler's dimensions of a path vertex (sampler.h), counted from the vertex's block
  * (render_sampler_vertex, once per loop of render_path): each purpose keeps its label, so it is
  * the same dimension in every sample of a pixel whichever others a path skipped. A next-event
- * estimation takes three from its base: the light's pick, the point on it (2-D), the stream of
- * its shadow ray's media. */
+ * estimation takes three from its base: the light's pick (unused: the pick takes the point's
+ * first coordinate, light_set_pick_at), the point on it (2-D), the stream of its shadow ray's
+ * media. */
 enum {
 	DIM_NEE = 0,	    /* at the surface or the medium's scattering point: 0-2 */
 	DIM_SSS_BRANCH = 3, /* coat or BSSRDF */
@@ -246,7 +247,7 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 	return v3s(0.0f);
 }
 
-/* Next-event estimation from hit point p: one light picked by power, one sample of it. lobe_prob:
+/* Next-event estimation from hit point p: one light picked by its importance at p, one sample of it. lobe_prob:
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
@@ -255,9 +256,11 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
 		return v3s(0.0f);
+	/* The light by its importance at p, its point from the same 2-D point: x picks, what is
+	 * left of it is the point's first coordinate (light_set_pick_at). */
 	float pick;
-	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
 	vec2 u = render_sampler_2d(g, dim + 1);
+	size_t li = light_set_pick_at(ls, p, ng_out, u.x, &pick, &u.x);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
@@ -285,7 +288,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 }
 
 /* Next-event estimation at a scattering point x of a medium (coefficients c, reached along
- * d_in): one light picked by power, the media's phase functions towards it, the shadow ray
+ * d_in): one light picked by its importance at x, the media's phase functions towards it, the shadow ray
  * starting inside the container. A light marked no_media lights no medium. */
 static vec3 sample_direct_medium(const render_scene *s, const render_settings *set, const render_media *md,
 				 const render_media_coef *c, vec3 d_in, vec3 x, const nest *in, render_sampler *g,
@@ -295,8 +298,8 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 	if (!ls || ls->count == 0 || set->mode == RENDER_BSDF_ONLY)
 		return v3s(0.0f);
 	float pick;
-	size_t li = light_set_pick(ls, render_sampler_1d(g, dim), &pick);
 	vec2 u = render_sampler_2d(g, dim + 1);
+	size_t li = light_set_pick_at(ls, x, v3s(0.0f), u.x, &pick, &u.x);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].no_media || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
 		return v3s(0.0f);
@@ -405,10 +408,11 @@ static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 static bool disk_entry(const render_scene *s, const render_sss *m, const render_hit *exit, vec3 n_out,
 		       render_sampler *g, sss_entry *e, render_sample *out)
 {
-	double u[4];
-	for (uint32_t k = 0; k < 4; k++)
-		u[k] = render_sampler_1d_double(g, DIM_SSS_SEARCH + k);
-	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 4);
+	/* The axis with phi, and the radius, as one 2-D point (sss_disk_probe_make): stratified
+	 * together on each axis. */
+	vec2 u_ar = render_sampler_2d(g, DIM_SSS_SEARCH + 1);
+	double u[3] = {u_ar.x, render_sampler_1d_double(g, DIM_SSS_SEARCH), u_ar.y};
+	float u_pick = render_sampler_1d(g, DIM_SSS_SEARCH + 2);
 	double mm_per_unit = 1.0 / m->units_per_mm;
 	sss_disk_frame f = sss_disk_frame_make(exit->p, n_out);
 	sss_disk_probe q = sss_disk_probe_make(&m->profile, mm_per_unit, &f, u);
@@ -659,7 +663,7 @@ static inline void add_escaped(const render_scene *s, const render_settings *set
 				gather(set, pa, v3_mul(pa->beta, light_radiance_dir(l, d)));
 			continue;
 		}
-		float lp = light_set_prob(ls, ls->infinite[k]) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
+		float lp = light_set_prob_at(ls, ls->infinite[k], pa->prev_p, pa->prev_n) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
 		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 		gather(set, pa, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
 	}
@@ -674,7 +678,7 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 		return;
 	const light *l = &ls->lights[hit->light];
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
-	float lp = light_set_prob(ls, (size_t)hit->light) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
+	float lp = light_set_prob_at(ls, (size_t)hit->light, pa->prev_p, pa->prev_n) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
 	float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 	gather(set, pa, v3_scale(v3_mul(pa->beta, l->color), w));
 }

@@ -166,6 +166,8 @@ void light_free(light *l)
 	render_distrib1d_free(&l->tri_select);
 	if (l->kind == LIGHT_ENVMAP)
 		render_distrib2d_free(&l->env_dist);
+	mem_free(l->imp_env);
+	l->imp_env = NULL;
 }
 
 static vec3 rot_apply(const float r[3][3], vec3 v)
@@ -499,6 +501,148 @@ float light_power(const light *l, float scene_radius)
 	return 0.0f;
 }
 
+/* The largest cos(n, w) over the directions w from p into the sphere of radius r about c, d the
+ * distance to c: cos(max(0, theta - theta_s)), theta the angle between n and c - p and
+ * sin theta_s = r / d; 1 when p is inside the sphere. Clamped at 0. */
+static float cos_bound(vec3 n, vec3 to_c, float d, float r)
+{
+	if (!(d > r))
+		return 1.0f;
+	float c = v3_dot(n, to_c) / d;
+	if (r <= 0.0f)
+		return fmaxf(c, 0.0f);
+	float sin_s = r / d, cos_s = sqrtf(fmaxf(0.0f, 1.0f - sin_s * sin_s));
+	if (c >= cos_s)
+		return 1.0f;
+	float sin_t = sqrtf(fmaxf(0.0f, 1.0f - c * c));
+	return fmaxf(0.0f, c * cos_s + sin_t * sin_s);
+}
+
+float light_importance(const light *l, vec3 p, vec3 n)
+{
+	bool normal = has_normal(n);
+	switch (l->kind) {
+	case LIGHT_BACKGROUND:
+	case LIGHT_ENVMAP:
+		if (!normal)
+			return 4.0f * RENDER_PI * l->imp_lum;
+		if (l->kind == LIGHT_BACKGROUND)
+			return LIGHT_IMP_BACKGROUND * RENDER_PI * l->imp_lum;
+		if (l->imp_env) {
+			vec2 uv = light_env_uv(rot_apply_inverse(l->rot, n));
+			int x = (int)(uv.x * LIGHT_IMP_NU), y = (int)(uv.y * LIGHT_IMP_NV);
+			x = x < 0 ? 0 : x >= LIGHT_IMP_NU ? LIGHT_IMP_NU - 1 : x;
+			y = y < 0 ? 0 : y >= LIGHT_IMP_NV ? LIGHT_IMP_NV - 1 : y;
+			return l->imp_env[y * LIGHT_IMP_NU + x];
+		}
+		return RENDER_PI * l->imp_lum;
+	case LIGHT_PARALLEL:
+	case LIGHT_CYLINDER:
+		return l->imp_lum * (normal ? fmaxf(0.0f, -v3_dot(n, l->dir)) : 1.0f);
+	default:
+		break;
+	}
+	vec3 to_c = v3_sub(l->imp_c, p);
+	float d2 = v3_length2(to_c), d = sqrtf(d2), r = l->imp_r;
+	float cosb = normal ? cos_bound(n, to_c, d, r) : 1.0f;
+	if (!(cosb > 0.0f))
+		return 0.0f;
+	float law;
+	if ((l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT) && l->falloff == LIGHT_FALLOFF_NONE)
+		law = 1.0f;
+	else if ((l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT) && l->falloff == LIGHT_FALLOFF_FADE)
+		law = light_fade(fmaxf(d - r, 0.0f), l->fade_distance, l->fade_power);
+	else /* the inverse square, from no nearer than the bounding sphere's radius */
+		law = 1.0f / fmaxf(d2, fmaxf(r * r, 1e-30f));
+	return l->imp_lum * law * cosb;
+}
+
+/* The environment's irradiance E(n) = integral L max(0, n . w) dw at the centres of the
+ * LIGHT_IMP_NU x LIGHT_IMP_NV grid of normals (map frame), times scale; from the map averaged
+ * over blocks of at most ENV_IMP_W x ENV_IMP_H (each block's radiance at its centre's direction,
+ * its solid angle the sum of its texels'). Left NULL when memory runs out (importance then
+ * takes the mean). */
+#define ENV_IMP_W 64
+#define ENV_IMP_H 32
+static void env_irradiance_table(light *l, float scale)
+{
+	int bw = l->width < ENV_IMP_W ? l->width : ENV_IMP_W, bh = l->height < ENV_IMP_H ? l->height : ENV_IMP_H;
+	double *rad = mem_calloc((size_t)bw * (size_t)bh, sizeof *rad), *omega = mem_calloc((size_t)bw * (size_t)bh, sizeof *omega);
+	l->imp_env = mem_alloc(LIGHT_IMP_NU * LIGHT_IMP_NV, sizeof *l->imp_env);
+	if (!rad || !omega || !l->imp_env) {
+		mem_free(rad), mem_free(omega), mem_free(l->imp_env);
+		l->imp_env = NULL;
+		return;
+	}
+	double texel = (2.0 * RENDER_PI / l->width) * (RENDER_PI / l->height);
+	for (int y = 0; y < l->height; y++) {
+		double dw = sin(RENDER_PI * ((double)y + 0.5) / (double)l->height) * texel;
+		int by = (int)((long)y * bh / l->height);
+		for (int x = 0; x < l->width; x++) {
+			size_t b = (size_t)by * (size_t)bw + (size_t)((long)x * bw / l->width);
+			rad[b] += dw * v3_luminance(env_texel(l, (size_t)y * (size_t)l->width + (size_t)x));
+			omega[b] += dw;
+		}
+	}
+	for (int j = 0; j < LIGHT_IMP_NV; j++)
+		for (int i = 0; i < LIGHT_IMP_NU; i++) {
+			vec3 n = light_env_dir(v2((i + 0.5f) / LIGHT_IMP_NU, (j + 0.5f) / LIGHT_IMP_NV));
+			double e = 0.0;
+			for (int by = 0; by < bh; by++)
+				for (int bx = 0; bx < bw; bx++) {
+					vec3 w = light_env_dir(v2((bx + 0.5f) / bw, (by + 0.5f) / bh));
+					double c = v3_dot(n, w);
+					if (c > 0.0)
+						e += c * rad[(size_t)by * (size_t)bw + (size_t)bx];
+				}
+			l->imp_env[j * LIGHT_IMP_NU + i] = (float)(scale * e);
+		}
+	mem_free(rad), mem_free(omega);
+}
+
+/* light_importance's constants of one light (light.h's imp_* fields). */
+static void light_importance_init(light *l)
+{
+	float lum = v3_luminance(l->color);
+	l->imp_lum = lum, l->imp_c = l->pos, l->imp_r = 0.0f;
+	switch (l->kind) {
+	case LIGHT_POINT:
+	case LIGHT_SPOT:
+		/* every point of the area: within half its diagonal, |a1 + a2| / 2, of pos (a turned
+		 * one is a square of side |axis1|) */
+		if (l->area_shape != LIGHT_AREA_NONE)
+			l->imp_r = l->area_orient ? v3_length(l->axis1)
+						  : 0.5f * (v3_length(l->axis1) + v3_length(l->axis2));
+		break;
+	case LIGHT_SPHERE: /* radiance Le: pi R^2 Le / d^2 from afar */
+		l->imp_lum = lum * RENDER_PI * l->radius * l->radius, l->imp_r = l->radius;
+		break;
+	case LIGHT_MESH: {
+		vec3 lo = l->tri[0], hi = l->tri[0];
+		for (size_t i = 1; i < 3 * l->tri_count; i++)
+			lo = v3_min(lo, l->tri[i]), hi = v3_max(hi, l->tri[i]);
+		l->imp_c = v3_scale(v3_add(lo, hi), 0.5f);
+		l->imp_r = 0.5f * v3_length(v3_sub(hi, lo));
+		l->imp_lum = lum * l->area;
+		break;
+	}
+	case LIGHT_ENVMAP: { /* the mean radiance over the sphere: texels weighed by sin theta */
+		double sum = 0.0, wsum = 0.0;
+		for (int y = 0; y < l->height; y++) {
+			double w = sin(RENDER_PI * ((double)y + 0.5) / (double)l->height);
+			for (int x = 0; x < l->width; x++)
+				sum += w * v3_luminance(env_texel(l, (size_t)y * (size_t)l->width + (size_t)x));
+			wsum += w * l->width;
+		}
+		l->imp_lum = lum * (float)(wsum > 0.0 ? sum / wsum : 0.0);
+		env_irradiance_table(l, lum);
+		break;
+	}
+	default:
+		break;
+	}
+}
+
 void light_set_init(light_set *s)
 {
 	memset(s, 0, sizeof *s);
@@ -530,6 +674,7 @@ bool light_set_finish(light_set *s, float scene_radius)
 	}
 	s->infinite_count = 0;
 	for (size_t i = 0; i < s->count; i++) {
+		light_importance_init(&s->lights[i]);
 		power[i] = s->lights[i].seen_only ? 0.0f : light_power(&s->lights[i], scene_radius);
 		if (light_is_infinite(&s->lights[i]))
 			s->infinite[s->infinite_count++] = i;
@@ -557,4 +702,59 @@ size_t light_set_pick(const light_set *s, float u, float *prob)
 float light_set_prob(const light_set *s, size_t i)
 {
 	return render_distrib1d_discrete_prob(&s->select, i);
+}
+
+/* The weights light_set_pick_at chooses by at (p, n), and their sum; false when the set is too
+ * large or no weight is positive (then the choice is by power). One function for the pick and
+ * its probability: the same operations, the same bits. */
+static bool local_weights(const light_set *s, vec3 p, vec3 n, float w[LIGHT_SET_LOCAL_MAX], float *total)
+{
+	if (s->count > LIGHT_SET_LOCAL_MAX || s->count < 2)
+		return false;
+	float t = 0.0f;
+	for (size_t i = 0; i < s->count; i++) {
+		float x = s->lights[i].seen_only ? 0.0f : light_importance(&s->lights[i], p, n);
+		w[i] = x > 0.0f && isfinite(x) ? x : 0.0f;
+		t += w[i];
+	}
+	*total = t;
+	return t > 0.0f && isfinite(t);
+}
+
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest)
+{
+	float w[LIGHT_SET_LOCAL_MAX], total;
+	size_t i = 0;
+	float lo, share;
+	if (local_weights(s, p, n, w, &total)) {
+		float x = u * total, acc = 0.0f;
+		i = s->count; /* the last light of positive weight when rounding leaves x over */
+		lo = 0.0f;
+		for (size_t k = 0; k < s->count; k++) {
+			if (!(w[k] > 0.0f))
+				continue;
+			i = k, lo = acc;
+			if (x < acc + w[k])
+				break;
+			acc += w[k];
+		}
+		*prob = w[i] / total;
+		lo /= total, share = *prob;
+	} else {
+		i = light_set_pick(s, u, prob);
+		lo = s->count ? (float)s->select.cdf[i] : 0.0f, share = *prob;
+	}
+	float r = share > 0.0f ? (u - lo) / share : 0.0f;
+	*u_rest = fminf(fmaxf(r, 0.0f), 0x1.fffffep-1f);
+	return i;
+}
+
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n)
+{
+	float w[LIGHT_SET_LOCAL_MAX], total;
+	if (i >= s->count)
+		return 0.0f;
+	if (local_weights(s, p, n, w, &total))
+		return w[i] / total;
+	return light_set_prob(s, i);
 }

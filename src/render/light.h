@@ -30,11 +30,15 @@
  * -y; column u in [0,1) is the longitude phi = 2 pi (u - 0.5) measured from +z towards +x, so the
  * image centre lies straight ahead of POV-Ray's default camera and +x (right) is at u = 0.75.
  * Radiance is looked up at the nearest pixel (matching the sampling density exactly).
- * Light selection: each light is chosen with probability proportional to its power estimate
- * (luminance of its flux; infinite and parallel lights count over a disk or sphere of the scene's
- * bounding radius, as PBRT does; a light without the inverse square as what it gives at that
- * radius, a POV-Ray spot as its point light) — see light_power. Lights are read-only once the set is finished,
- * so any number of threads may sample them. */
+ * Light selection: in a set of at most LIGHT_SET_LOCAL_MAX lights each light is chosen at the
+ * shading point with probability proportional to light_importance there (an estimate of its
+ * unshadowed contribution, 0 only where it cannot reach the point's side: lights below the
+ * horizon are never picked); in a larger set, or where no light reaches, with probability
+ * proportional to its power estimate (luminance of its flux; infinite and parallel lights count
+ * over a disk or sphere of the scene's bounding radius, as PBRT does; a light without the
+ * inverse square as what it gives at that radius, a POV-Ray spot as its point light) — see
+ * light_power. Lights are read-only once the set is finished, so any number of threads may
+ * sample them. */
 #ifndef CIRCE_RENDER_LIGHT_H
 #define CIRCE_RENDER_LIGHT_H
 
@@ -97,7 +101,20 @@ typedef struct light {
 	int width, height;
 	render_distrib2d env_dist;
 	float rot[3][3]; /* world = rot * map frame (an orthonormal matrix) */
+	/* Set by light_set_finish for light_importance: the luminance the estimate scales (the
+	 * colour's; a sphere's times pi R^2, a mesh's times its area, an environment's times its
+	 * mean over the sphere) and the sphere about the light that bounds where it emits from
+	 * (centre, radius; 0 for a point). */
+	float imp_lum;
+	vec3 imp_c;
+	float imp_r;
+	float *imp_env; /* LIGHT_ENVMAP: its irradiance at LIGHT_IMP_NU x LIGHT_IMP_NV normals (owned) */
 } light;
+
+/* The grid of normals (lat-long, in the map's frame) at which an environment's irradiance is
+ * tabulated for light_importance. */
+#define LIGHT_IMP_NU 16
+#define LIGHT_IMP_NV 8
 
 /* One light sample seen from point p: unit direction wi towards the light, the distance to the
  * emitting point (INFINITY for lights at infinity), the incident radiance (for delta lights the
@@ -163,6 +180,14 @@ bool light_sphere_hit(const light *l, const render_ray *ray, float tmin, float t
  * units with no floor: every weight then scales alike (as s^2 when the scene and its lights are
  * scaled by s), so the choice among lights does not depend on the scene's scale. */
 float light_power(const light *l, float scene_radius);
+/* An estimate of the light's unshadowed contribution at p, integral L_i max(0, n . w) dw over
+ * directions w (n the zero vector: integral L_i dw, a medium's point), in luminance: the light's
+ * distance law times the largest cosine over the sphere that bounds it (imp_c, imp_r), so it is 0
+ * only where no point of the light lies above p's horizon. The environment and background count
+ * as their irradiance at the normal nearest n of a grid (an environment's tabulated, a uniform
+ * background's pi L, scaled by LIGHT_IMP_BACKGROUND) or 4 pi times their mean radiance without a
+ * normal. Needs light_set_finish's imp_* fields. */
+float light_importance(const light *l, vec3 p, vec3 n);
 /* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
 vec2 light_env_uv(vec3 local_dir);
 vec3 light_env_dir(vec2 uv);
@@ -185,5 +210,21 @@ void light_set_free(light_set *s);
 /* Picks a light with probability proportional to its power: its index and that probability. */
 size_t light_set_pick(const light_set *s, float u, float *prob);
 float light_set_prob(const light_set *s, size_t i);
+
+/* A uniform background's importance is this share of its irradiance pi L: its light sample has
+ * the density of a diffuse surface's own (cosine) sample, which MIS weighs against it, so it
+ * adds little; the other lights gain its share (bench/README.md, "Several lights"). */
+#define LIGHT_IMP_BACKGROUND 0.05f
+/* Sets of at most this many lights choose by light_importance at the shading point. */
+#define LIGHT_SET_LOCAL_MAX 16
+/* Picks a light for the shading point p (normal n facing the receiving side, or zero): with
+ * probability proportional to light_importance(p, n) in a set of at most LIGHT_SET_LOCAL_MAX
+ * lights where any is positive, else by power. Its index, *prob that probability (0 when no
+ * light can be picked), and *u_rest what is left of u within the light's share, rescaled to
+ * [0, 1): uniform given the light, for the light's own sample (so a stratified u stays
+ * stratified among the samples of each light). */
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest);
+/* The probability that light_set_pick_at(p, n) picks light i (bit for bit the same). */
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n);
 
 #endif

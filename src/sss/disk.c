@@ -9,25 +9,24 @@
 
 #define DISK_PI 3.14159265358979323846
 
-static const double disk_axis_p[3] = {SSS_DISK_P_NORMAL, SSS_DISK_P_TANGENT, SSS_DISK_P_TANGENT};
-
 sss_disk_frame sss_disk_frame_make(vec3 x, vec3 n)
 {
 	sss_disk_frame f;
 	f.x = x;
 	f.axis[0] = n;
 	v3_basis(n, &f.axis[1], &f.axis[2]);
+	f.p[0] = SSS_DISK_P_NORMAL, f.p[1] = f.p[2] = SSS_DISK_P_TANGENT;
 	return f;
 }
 
-sss_disk_probe sss_disk_probe_make(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f,
-				   const double u[4])
+sss_disk_probe sss_disk_probe_axis(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f, int axis,
+				   double r_mm, double u_phi)
 {
 	sss_disk_probe q;
-	q.axis = u[0] < SSS_DISK_P_NORMAL ? 0 : u[0] < SSS_DISK_P_NORMAL + SSS_DISK_P_TANGENT ? 1 : 2;
-	q.r_mm = sss_profile_sample(p, u[1], u[2]);
+	q.axis = axis;
+	q.r_mm = r_mm;
 	double r_max = sss_profile_r_max(p) / mm_per_unit, r = q.r_mm / mm_per_unit;
-	double half = sqrt(fmax(0.0, r_max * r_max - r * r)), phi = 2.0 * DISK_PI * u[3];
+	double half = sqrt(fmax(0.0, r_max * r_max - r * r)), phi = 2.0 * DISK_PI * u_phi;
 	vec3 a = f->axis[q.axis], e1 = f->axis[(q.axis + 1) % 3], e2 = f->axis[(q.axis + 2) % 3];
 	/* the disk point x + r (cos phi e1 + sin phi e2), then up the axis to the sphere */
 	vec3 c = v3_add(f->x, v3_add(v3_scale(e1, (float)(r * cos(phi))), v3_scale(e2, (float)(r * sin(phi)))));
@@ -35,6 +34,19 @@ sss_disk_probe sss_disk_probe_make(const sss_profile *p, double mm_per_unit, con
 	q.dir = v3_neg(a);
 	q.tmax = (float)(2.0 * half);
 	return q;
+}
+
+sss_disk_probe sss_disk_probe_make(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f,
+				   const double u[3])
+{
+	/* u[0] picks the axis by f->p; what is left of it, rescaled, is phi (as Cycles'
+	 * subsurface_disk reuses its disk_u): a stratified set of (u[0], u[2]) stays stratified in
+	 * (phi, r) on each axis. */
+	assert(f->p[0] > 0.0 && f->p[1] > 0.0 && f->p[2] > 0.0);
+	int axis = u[0] < f->p[0] ? 0 : u[0] < f->p[0] + f->p[1] ? 1 : 2;
+	double lo = axis == 0 ? 0.0 : axis == 1 ? f->p[0] : f->p[0] + f->p[1];
+	double phi = fmin(fmax((u[0] - lo) / f->p[axis], 0.0), 1.0);
+	return sss_disk_probe_axis(p, mm_per_unit, f, axis, sss_profile_sample(p, u[1], u[2]), phi);
 }
 
 void sss_disk_axis_pdfs(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f, vec3 y, vec3 n_y,
@@ -63,7 +75,7 @@ double sss_disk_pdf_area(const sss_profile *p, double mm_per_unit, const sss_dis
 {
 	double pdf[3];
 	sss_disk_axis_pdfs(p, mm_per_unit, f, y, n_y, pdf);
-	return disk_axis_p[0] * pdf[0] + disk_axis_p[1] * pdf[1] + disk_axis_p[2] * pdf[2];
+	return f->p[0] * pdf[0] + f->p[1] * pdf[1] + f->p[2] * pdf[2];
 }
 
 int sss_disk_gather(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f, const sss_disk_probe *q,

@@ -491,6 +491,122 @@ static void test_area_irradiance(long n)
 	}
 }
 
+/* The choice among few lights by their importance at the shading point (light_set_pick_at): at
+ * several points (with a normal and without) the picks' frequencies are the probabilities the
+ * estimator uses (light_set_prob_at, bit for bit the pick's own), and the rest of u handed to
+ * the light is uniform given the light (one chi-square over point x light x 8 bins of it); a
+ * stratified u gives each light its share within one; a light of importance 0 sends no sample
+ * above the horizon; the importances follow the distance law and the environment's
+ * irradiance; a larger set chooses by power. */
+static void test_local_selection(long n)
+{
+	enum { W = 16, H = 8, RB = 8, NP = 4 };
+	float img[W * H * 3];
+	for (int i = 0; i < W * H; i++) {
+		float v = (i / W) < H / 2 ? 2.0f : 0.1f; /* a bright upper hemisphere */
+		img[3 * i] = img[3 * i + 1] = img[3 * i + 2] = v;
+	}
+	light_set s;
+	light_set_init(&s);
+	light l[8];
+	l[0] = light_point(v3(0, 3, 0), v3s(2));
+	l[1] = light_sphere(v3(2, 1, -1), 0.5f, v3s(5));
+	l[2] = light_spot(v3(-2, 2, 0), v3(0, 0, 0), v3s(3), 20, 30);
+	l[3] = light_parallel(v3(1, 1, 1), v3(0, 0, 0), v3s(0.7f));
+	vec3 tri[3] = {v3(-1, -1, 3), v3(1, -1, 3), v3(0, 1, 3)};
+	CHECK(light_mesh_init(&l[4], tri, 1, v3s(4)), "mesh init");
+	l[5] = light_background(v3s(0.3f));
+	CHECK(light_envmap_init(&l[6], img, W, H, 1.0f, NULL), "envmap init");
+	l[7] = light_point(v3(0, -2, 1), v3s(1));
+	light_set_area(&l[7], v3(1, 0, 0), v3(0, 0, 1), false, false);
+	for (int i = 0; i < 8; i++)
+		light_set_add(&s, &l[i]);
+	CHECK(light_set_finish(&s, 5.0f), "set finish");
+	const vec3 pts[NP] = {v3(0, 0, 0), v3(0.5f, 0.2f, -0.3f), v3(0, 0, 0), v3(-0.4f, 0.1f, 0.6f)};
+	const vec3 nrm[NP] = {v3(0, 1, 0), v3_normalize(v3(1, -1, 0.2f)), v3(0, 0, 0), v3(0, 0, -1)};
+	int nb = NP * 8 * RB;
+	double *obs = mem_calloc((size_t)nb, sizeof *obs), *ex = mem_calloc((size_t)nb, sizeof *ex);
+	rng g;
+	rng_seed(&g, 83, 5);
+	long per = n / NP;
+	for (int k = 0; k < NP; k++) {
+		double sum = 0.0;
+		float pr[8];
+		for (size_t i = 0; i < 8; i++) {
+			pr[i] = light_set_prob_at(&s, i, pts[k], nrm[k]);
+			sum += pr[i];
+			for (int b = 0; b < RB; b++)
+				ex[(k * 8 + i) * RB + b] = per * (double)pr[i] / RB;
+		}
+		CHECK(fabs(sum - 1.0) < 1e-5, "point %d: probabilities sum to %g", k, sum);
+		/* Zero importance: every sample of that light from here is below the horizon. */
+		for (size_t i = 0; i < 8 && v3_length2(nrm[k]) > 0.0f; i++) {
+			if (pr[i] > 0.0f)
+				continue;
+			for (int j = 0; j < 256; j++) {
+				light_sample ls;
+				if (light_sample_from(&s.lights[i], pts[k], nrm[k], v2(rng_float(&g), rng_float(&g)), &ls))
+					CHECK(v3_dot(ls.wi, nrm[k]) <= 1e-6f, "point %d light %zu: importance 0 but wi.n %g", k,
+					      i, v3_dot(ls.wi, nrm[k]));
+			}
+		}
+		long strat[8] = {0};
+		for (long j = 0; j < per; j++) {
+			float prob, rest;
+			size_t i = light_set_pick_at(&s, pts[k], nrm[k], rng_float(&g), &prob, &rest);
+			CHECK(i < 8 && prob == pr[i] && prob > 0.0f, "point %d: pick %zu with %g, prob_at %g", k, i, prob,
+			      i < 8 ? pr[i] : -1.0f);
+			CHECK(rest >= 0.0f && rest < 1.0f, "rest of u %g", rest);
+			int b = (int)(rest * RB);
+			obs[(k * 8 + i) * RB + (b < RB ? b : RB - 1)] += 1.0;
+			strat[light_set_pick_at(&s, pts[k], nrm[k], (float)((j + 0.5) / per), &prob, &rest)]++;
+		}
+		for (int i = 0; i < 8; i++)
+			CHECK(fabs(strat[i] - per * (double)pr[i]) <= 1.5, "point %d light %d: stratified %ld, want %g", k, i,
+			      strat[i], per * (double)pr[i]);
+	}
+	chi2_counts("light choice at a point, rest of u", obs, ex, nb);
+	mem_free(obs), mem_free(ex);
+
+	/* At p = 0 with n = +y: the point light 3 above gives 2 / 9; the spot (a point light for
+	 * the choice) at distance sqrt 8, cos 2 / sqrt 8; the parallel light 0.7 cos; the sphere
+	 * pi R^2 Le / d^2 = 5 / 6 times the cosine at the edge of its disk nearest the normal,
+	 * cos(theta - theta_s); the area light below, none, but around a receiver inside its
+	 * bounding sphere, some; the background LIGHT_IMP_BACKGROUND pi L, 4 pi L without a normal. */
+	const light *L = s.lights;
+	vec3 o = v3s(0), up = v3(0, 1, 0);
+	CHECK_NEAR(light_importance(&L[0], o, up), 2.0 / 9.0, 1e-6);
+	CHECK_NEAR(light_importance(&L[2], o, up), 3.0 / 8.0 * (2.0 / sqrt(8.0)), 1e-5);
+	CHECK_NEAR(light_importance(&L[3], o, up), 0.7 / sqrt(3.0), 1e-5);
+	CHECK_NEAR(light_importance(&L[0], o, v3s(0)), 2.0 / 9.0, 1e-6);
+	CHECK(light_importance(&L[0], o, v3(0, -1, 0)) == 0.0f, "a point light below the horizon");
+	CHECK(light_importance(&L[7], o, up) == 0.0f, "an area light below the horizon");
+	CHECK(light_importance(&L[7], v3(0, -1.9f, 1.0f), up) > 0.0f, "an area light around the receiver");
+	double d2 = 6.0, sin_s = 0.5 / sqrt(d2), c = 1.0 / sqrt(d2), theta = acos(c) - asin(sin_s);
+	CHECK_NEAR(light_importance(&L[1], o, up), 5.0 / d2 * cos(theta), 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, up), LIGHT_IMP_BACKGROUND * M_PI * 0.3, 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, v3s(0)), 4.0 * M_PI * 0.3, 1e-5);
+	/* E(+y) of a hemisphere of 2 above and 0.1 below: 2 pi (tabulated at a grid normal near +y,
+	 * from 64 x 32 blocks: within 5 %); E(-y) = 0.1 pi. */
+	double up_e = light_importance(&L[6], o, up), down_e = light_importance(&L[6], o, v3(0, -1, 0));
+	CHECK(fabs(up_e / (2.0 * M_PI) - 1.0) < 0.05, "environment E(+y) %g, want about %g", up_e, 2.0 * M_PI);
+	CHECK(fabs(down_e / (0.1 * M_PI) - 1.0) < 0.05, "environment E(-y) %g, want about %g", down_e, 0.1 * M_PI);
+	light_set_free(&s);
+
+	/* More than LIGHT_SET_LOCAL_MAX lights: by power, wherever. */
+	light_set big;
+	light_set_init(&big);
+	for (int i = 0; i <= LIGHT_SET_LOCAL_MAX; i++) {
+		light pl = light_point(v3((float)i, 1, 0), v3s(1.0f + (float)i));
+		light_set_add(&big, &pl);
+	}
+	CHECK(light_set_finish(&big, 1.0f), "set finish");
+	for (size_t i = 0; i <= LIGHT_SET_LOCAL_MAX; i++)
+		CHECK(light_set_prob_at(&big, i, v3(3, 0, 0), v3(0, -1, 0)) == light_set_prob(&big, i),
+		      "a large set chooses by power");
+	light_set_free(&big);
+}
+
 int main(void)
 {
 	long n = test_samples(1000000);
@@ -503,5 +619,6 @@ int main(void)
 	test_spot_tightness_and_cylinder();
 	test_area_sampling(n);
 	test_area_irradiance(n);
+	test_local_selection(n);
 	return check_done("test_light");
 }

@@ -1,7 +1,8 @@
 /* test_disk: the disk comparator (King et al. 2013) is unbiased: on a plane its mean is the albedo
  * (with variance, unlike circles); on a sphere and a cylinder it matches quadrature within 3
  * standard errors, each probe axis alone too; the MIS density is the sum of the axes'; the choice
- * among hits keeps the mean; weights do not depend on the scene's unit. */
+ * among hits keeps the mean; weights do not depend on the scene's unit; the probe picks its axis
+ * with the frame's probabilities and a uniform phi on it. */
 #include "accel/bvh.h"
 #include "base/rng.h"
 #include "check.h"
@@ -111,16 +112,15 @@ typedef struct estimate {
 static estimate run(const sss_profile *p, double mm_per_unit, const sss_disk_frame *f, const sss_probe *pr,
 		    long n, int force_axis, bool choose, uint64_t seed)
 {
-	static const double axis_u[3] = {0.25, 0.6, 0.9};
 	rng r;
 	rng_seed(&r, seed, 9);
 	estimate e = {0};
 	sss_disk_hit hits[SSS_DISK_MAX_HITS];
 	for (long i = 0; i < n; i++) {
-		double u[4] = {rng_double(&r), rng_double(&r), rng_double(&r), rng_double(&r)};
-		if (force_axis >= 0)
-			u[0] = axis_u[force_axis];
-		sss_disk_probe q = sss_disk_probe_make(p, mm_per_unit, f, u);
+		double u[3] = {rng_double(&r), rng_double(&r), rng_double(&r)};
+		sss_disk_probe q = force_axis >= 0 ? sss_disk_probe_axis(p, mm_per_unit, f, force_axis,
+									 sss_profile_sample(p, u[1], u[2]), u[0])
+						   : sss_disk_probe_make(p, mm_per_unit, f, u);
 		bool more;
 		int k = sss_disk_gather(p, mm_per_unit, f, &q, pr, hits, SSS_DISK_MAX_HITS, &more);
 		e.no_hit += k == 0;
@@ -167,6 +167,54 @@ static void compare(const char *name, const estimate *e, const double want[3], i
 
 /* ---- the tests ------------------------------------------------------------------------------- */
 
+/* The probe's axis and phi from u[0] (sss_disk_probe_make): each axis with its probability and a
+ * uniform phi on it (chi-square over 3 x 16 bins), for the default probabilities and others; a
+ * stratified u[0] gives each axis its exact share. */
+static void check_probe_choice(void)
+{
+	const double grey[3] = {0.8, 0.8, 0.8}, ld[3] = {2.0, 2.0, 2.0};
+	sss_profile p = profile(SSS_PROFILE_GAUSSIAN, grey, ld);
+	const double ps[2][3] = {{SSS_DISK_P_NORMAL, SSS_DISK_P_TANGENT, SSS_DISK_P_TANGENT}, {0.3, 0.5, 0.2}};
+	long n = test_scaled(200000);
+	for (int k = 0; k < 2; k++) {
+		sss_disk_frame f = sss_disk_frame_make(v3(0.2f, 0.1f, -0.3f), v3_normalize(v3(0.3f, 1.0f, 0.2f)));
+		if (k == 1)
+			memcpy(f.p, ps[1], sizeof f.p);
+		CHECK(f.p[0] == ps[k][0] && f.p[1] == ps[k][1] && f.p[2] == ps[k][2], "frame's probabilities");
+		enum { PHI_BINS = 16 };
+		double obs[3 * PHI_BINS] = {0}, want[3 * PHI_BINS];
+		long strat[3] = {0};
+		rng r;
+		rng_seed(&r, 71 + k, 3);
+		for (long i = 0; i < n; i++) {
+			double u[3] = {rng_double(&r), rng_double(&r), rng_double(&r)};
+			sss_disk_probe q = sss_disk_probe_make(&p, 1.0, &f, u);
+			/* phi from the probe's point on its disk */
+			vec3 d = v3_sub(q.org, f.x), e1 = f.axis[(q.axis + 1) % 3], e2 = f.axis[(q.axis + 2) % 3];
+			double phi = atan2(v3_dot(d, e2), v3_dot(d, e1));
+			if (phi < 0.0)
+				phi += 2.0 * 3.14159265358979323846;
+			int b = (int)(phi / (2.0 * 3.14159265358979323846) * PHI_BINS);
+			obs[q.axis * PHI_BINS + (b < PHI_BINS ? b : PHI_BINS - 1)] += 1.0;
+			u[0] = (i + 0.5) / n;
+			strat[sss_disk_probe_make(&p, 1.0, &f, u).axis]++;
+		}
+		for (int a = 0; a < 3; a++) {
+			for (int b = 0; b < PHI_BINS; b++)
+				want[a * PHI_BINS + b] = n * f.p[a] / PHI_BINS;
+			CHECK(fabs(strat[a] - n * f.p[a]) <= 1.0, "probabilities %d: axis %d stratified %ld of %ld, want %g",
+			      k, a, strat[a], n, n * f.p[a]);
+		}
+		double chi = 0.0;
+		for (int i = 0; i < 3 * PHI_BINS; i++)
+			chi += (obs[i] - want[i]) * (obs[i] - want[i]) / want[i];
+		double pv = chi2_pvalue(chi, 3 * PHI_BINS - 1);
+		printf("probe axis and phi, P = %.2f %.2f %.2f: chi-square %.1f (%d dof), p %.3f\n", f.p[0], f.p[1], f.p[2],
+		       chi, 3 * PHI_BINS - 1, pv);
+		CHECK(pv > 1e-3, "probabilities %d: axis and phi chi-square %g, p %g", k, chi, pv);
+	}
+}
+
 /* A plane (a mesh and its BVH through the probe): the mean is A, with variance. g = 1 there. */
 static void check_plane(void)
 {
@@ -187,7 +235,7 @@ static void check_plane(void)
 		rng_seed(&r, 3 + k, 1);
 		sss_disk_hit hits[SSS_DISK_MAX_HITS];
 		for (long i = 0; i < n; i++) {
-			double u[4] = {rng_double(&r), rng_double(&r), rng_double(&r), rng_double(&r)};
+			double u[3] = {rng_double(&r), rng_double(&r), rng_double(&r)};
 			sss_disk_probe q = sss_disk_probe_make(&profs[k], 1.0, &f, u);
 			int h = sss_disk_gather(&profs[k], 1.0, &f, &q, &pr, hits, SSS_DISK_MAX_HITS, NULL);
 			e.no_hit += h == 0;
@@ -305,6 +353,7 @@ int main(void)
 	for (int i = 0; i < GL_N; i++) /* nodes and weights on [0, 1] */
 		gl_x[i] = 0.5 * (gl_x[i] + 1.0), gl_w[i] *= 0.5;
 	check_density();
+	check_probe_choice();
 	check_plane();
 	check_curved();
 	return check_done("test_disk");
