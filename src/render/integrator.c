@@ -531,7 +531,7 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 			vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
 			double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
 			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
-			p *= sss_auto_light_prob(sss_auto_light_share(e_near, e_far, mfp));
+			p *= sss_auto_light_prob(sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
 		}
 		p_walk = (float)p;
 	}

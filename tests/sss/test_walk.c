@@ -1,11 +1,13 @@
 /* test_walk: the volume random walk against closed forms: Chandrasekhar's albedo of a semi-infinite
  * isotropic medium (grey and RGB, spectral MIS), energy conservation without absorption (box and
  * sphere, Fresnel boundary), Beer-Lambert through a pure absorber; the step bound and lost walks are
- * reported; the closed-mesh check on closed and open meshes. */
+ * reported; the closed-mesh check on closed and open meshes; auto's diffusion slab (sss/medium.h)
+ * against the walk's transmission and reflection of sheets of skin, wax and marble. */
 #include "accel/bvh.h"
 #include "base/rng.h"
 #include "check.h"
 #include "geom/prim.h"
+#include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
 #include "mean3.h"
@@ -415,6 +417,64 @@ static void check_failures(void)
 	object_free(&o);
 }
 
+/* auto's light factor weighs the far side's light by the diffusion slab's T / R (sss/medium.h):
+ * a sheet L mm thick of skin1, the wax block's default and marble, entered at normal incidence
+ * through the medium's own boundary (the walk's Fresnel), its light leaving through the far face
+ * (T) and the lit one (R). The slab's T / R of the channel auto uses (the largest, red in all
+ * three) must be within a factor 1.6 of the walk's; e^{-L/l_d}, the rule before, is printed beside
+ * (wax's is 9 times the walk's at 3 mm). */
+static void check_auto_slab(void)
+{
+	const char *names[] = {"skin1", "wax", "marble"};
+	const double etas[] = {1.4, 1.45, 1.5}, Ls[] = {3.0, 6.0};
+	for (int i = 0; i < 3; i++) {
+		sss_medium_spec spec = {0};
+		if (i == 1) {
+			spec.albedo = v3(0.95f, 0.78f, 0.45f), spec.radius_mm = v3(2.0f, 1.2f, 0.6f);
+			spec.has = SSS_HAS_ALBEDO | SSS_HAS_RADIUS;
+		} else {
+			spec.preset = names[i];
+		}
+		sss_medium md;
+		sss_medium_derive(&spec, etas[i], &md);
+		sss_auto_slab sl;
+		sss_walk_medium m;
+		CHECK(sss_auto_slab_make(&sl, md.sigma_s_per_mm, md.sigma_a_per_mm, etas[i]) &&
+			      sss_walk_medium_from_reduced(&m, md.sigma_s_per_mm, md.sigma_a_per_mm, 0.0, etas[i], 1.0),
+		      "%s: the slab and the walk's medium", names[i]);
+		for (int j = 0; j < 2; j++) {
+			double L = Ls[j];
+			object o;
+			object_box(&o, v3(-200.0f, -200.0f, (float)-L), v3(200.0f, 200.0f, 0.0f));
+			rng r;
+			rng_seed(&r, 21, (uint64_t)(2 * i + j));
+			test_mean3 t = {0}, rf = {0};
+			long n = test_scaled(i == 1 ? 20000 : 40000);
+			for (long k = 0; k < n; k++) {
+				sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r,
+							       SSS_WALK_MAX_STEPS);
+				bool out = res.status == SSS_WALK_EXITED;
+				bool top = out && res.p.z == 0.0f, bottom = out && res.p.z == (float)-L;
+				double wt[3] = {bottom ? res.weight.x : 0.0, bottom ? res.weight.y : 0.0, bottom ? res.weight.z : 0.0};
+				double wr[3] = {top ? res.weight.x : 0.0, top ? res.weight.y : 0.0, top ? res.weight.z : 0.0};
+				test_mean3_add(&t, wt);
+				test_mean3_add(&rf, wr);
+			}
+			double tm, rm;
+			sss_auto_slab_tr(&sl, 0, L, &tm, &rm);
+			double wt = test_mean3_mean(&t, 0), wr = test_mean3_mean(&rf, 0);
+			double ratio = (tm / rm) / (wt / wr), old = exp(-L / md.ld_mm[0]) / (wt / wr);
+			printf("auto slab %s %.0f mm (red): walk T %.4f +- %.4f, R %.4f; slab T %.4f, R %.4f; T/R slab / walk "
+			       "%.2f, e^-m / walk %.2f\n",
+			       names[i], L, wt, test_mean3_se(&t, 0), wr, tm, rm, ratio, old);
+			CHECK(wt > 5.0 * test_mean3_se(&t, 0), "%s %g mm: the walk's transmission is not resolved", names[i], L);
+			CHECK(ratio > 1.0 / 1.6 && ratio < 1.6, "%s %g mm: the slab's T/R is %.2f of the walk's", names[i], L,
+			      ratio);
+			object_free(&o);
+		}
+	}
+}
+
 int main(void)
 {
 	check_basics();
@@ -427,6 +487,7 @@ int main(void)
 	check_dwivedi_nu();
 	check_guided_vs_classic();
 	check_thin_slab();
+	check_auto_slab();
 
 	object box, sphere;
 	object_box(&box, v3(-1, -1, -1), v3(1, 1, 1));
