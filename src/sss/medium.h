@@ -42,8 +42,8 @@ bool sss_profile_from_name(const char *name, sss_profile_kind *k);
  * on, and in between 1 - smoothstep of log m across the band (continuous with a continuous slope:
  * no seam where the choice changes). m = +Inf (nothing below: an open surface) gives 0; NaN or
  * m <= 0 gives 1. */
-#define SSS_AUTO_WALK_BELOW 4.0
-#define SSS_AUTO_CIRCLE_ABOVE 8.0
+#define SSS_AUTO_WALK_BELOW 5.0
+#define SSS_AUTO_CIRCLE_ABOVE 10.0
 double sss_auto_walk_prob(double m);
 
 /* The light factor of `auto` (src/sss/README.md, "auto"): f is the share of the light leaving an

@@ -541,7 +541,7 @@ static void test_auto_front(void)
 }
 
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
- * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 8 l_d, and
+ * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 5 to 10 l_d, and
  * more either side), seen from above, lit strongly from below and weakly from above, so the
  * methods differ where auto blends them. Column by column, auto's mean must be the blend
  * p(T) volume + (1 - p(T)) circle of the two methods' own means, p the rule at the column's
@@ -550,10 +550,11 @@ static void test_auto_front(void)
  * with direct light only, each path has one exit point on the top, and the fraction of them that
  * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
  * the band (p = 1/2) must fail the same bound, so the test sees a seam. p is the geometric rule's
- * times the light factor, which is 1 up to 7 l_d and 0.87 at 8 (checked below), where the rule is
- * 0.004: the far side's share of the exit's light, 376 T / (0.96 R + 376 T) (the bottom's cosine
- * 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1; T and R the diffusion
- * slab's, sss/medium.h), is 0.14 at 7 l_d and 0.058 at 8. */
+ * (1 up to 5 l_d, 0 from 10) times the light factor, which is 1 up to 7 l_d, 0.86 at 8 and 0 from
+ * about 9.7 (checked below): the far side's share of the exit's light, 376 T / (0.96 R + 376 T)
+ * (the bottom's cosine 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1; T
+ * and R the diffusion slab's, sss/medium.h), is 0.14 at 7 l_d, 0.058 at 8 and 0.008 at 10; the
+ * product is smooth too, and the part of the band below 7 l_d is the geometric rule's alone. */
 static void test_auto_wedge(void)
 {
 	const char *text =
@@ -573,8 +574,9 @@ static void test_auto_wedge(void)
 		     e_far = 400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP);
 #define WEDGE_P(t) (sss_auto_walk_prob(t) * sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, (t) * 1.0)))
 	double light_7 = sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, 7.0));
-	double light_8 = sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, SSS_AUTO_CIRCLE_ABOVE));
-	printf("wedge: the light factor at 7 l_d %.4f, at 8 l_d %.4f\n", light_7, light_8);
+	double light_8 = sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, 8.0));
+	printf("wedge: the light factor at 7 l_d %.4f, at 8 l_d %.4f; the geometric rule there %.4f, %.4f\n", light_7,
+	       light_8, sss_auto_walk_prob(7.0), sss_auto_walk_prob(8.0));
 	CHECK(light_7 == 1.0 && light_8 > 0.5, "the wedge's light factor is not 1 across most of the band (%g, %g)", light_7,
 	      light_8);
 	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
