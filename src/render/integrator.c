@@ -459,6 +459,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, exit->scale, w_in, g, SSS_WALK_MAX_STEPS);
 	out->sss_walks++;
 	out->sss_walk_dropped += r.status == SSS_WALK_STEP_LIMIT;
+	out->sss_walk_steps += (uint32_t)r.steps;
 	if (r.status == SSS_WALK_ABSORBED)
 		return false; /* an outcome of the walk, not a failure */
 	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {

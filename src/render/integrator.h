@@ -189,6 +189,7 @@ typedef struct render_sample {
 	uint32_t sss_walks;    /* searches that were volume walks (volume; auto where it walked) */
 	uint32_t sss_walk_dropped; /* of them, walks that reached SSS_WALK_MAX_STEPS: dropped (weight 0,
 				    * also in sss_nohit), biased low, so counted and printed */
+	uint32_t sss_walk_steps;   /* the interactions (ray casts) of those walks: their cost */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number (its camera dimensions
