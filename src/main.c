@@ -855,10 +855,11 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 			(unsigned long long)stats->sss_searches, (unsigned long long)stats->sss_nohit,
 			(double)stats->sss_nohit / (double)stats->sss_searches, (unsigned long long)stats->sss_overflow);
 	if (!o->quiet && stats->sss_walks)
-		fprintf(stderr, "circe: sss: %llu volume walks (%.4g of the searches), %llu dropped at the step bound of %d "
-				"interactions\n",
+		fprintf(stderr, "circe: sss: %llu volume walks (%.4g of the searches), %.4g interactions each, %llu dropped "
+				"at the step bound of %d interactions\n",
 			(unsigned long long)stats->sss_walks, (double)stats->sss_walks / (double)stats->sss_searches,
-			(unsigned long long)stats->sss_walk_dropped, SSS_WALK_MAX_STEPS);
+			(double)stats->sss_walk_steps / (double)stats->sss_walks, (unsigned long long)stats->sss_walk_dropped,
+			SSS_WALK_MAX_STEPS);
 	if (!o->quiet)
 		report_noise(s, stats->seconds);
 }

@@ -126,6 +126,8 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	double ld = fmax(md.ld_mm[0], fmax(md.ld_mm[1], md.ld_mm[2]));
 	r->auto_ld = (float)(ld * r->units_per_mm);
 	r->auto_walk = r->method == SSS_METHOD_AUTO && !r->auto_open; /* check_volumes ran first */
+	if (r->method == SSS_METHOD_AUTO && !sss_auto_slab_make(&r->auto_slab, ss_mm, sa_mm, ss->ior))
+		r->auto_walk = false; /* no extinction: sss_walk_medium_from_reduced refused it above */
 	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */

@@ -475,6 +475,7 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, exit->scale, w_in, g, SSS_WALK_MAX_STEPS);
 	out->sss_walks++;
 	out->sss_walk_dropped += r.status == SSS_WALK_STEP_LIMIT;
+	out->sss_walk_steps += (uint32_t)r.steps;
 	if (r.status == SSS_WALK_ABSORBED)
 		return false; /* an outcome of the walk, not a failure */
 	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {
@@ -549,7 +550,7 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 			vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
 			double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
 			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
-			p *= sss_auto_light_prob(sss_auto_light_share(e_near, e_far, mfp));
+			p *= sss_auto_light_prob(sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
 		}
 		p_walk = (float)p;
 	}

@@ -66,6 +66,7 @@ typedef struct render_sss {
 	float entry_norm;    /* 1/c of f_t: makes the entry lobe (1 - F(w_i)) cos / (c pi) integrate to 1 */
 	sss_walk_medium medium; /* volume and auto: the medium's coefficients per scene unit */
 	float auto_ld;	     /* the largest channel's diffuse mean free path l_d, in scene units */
+	sss_auto_slab auto_slab; /* auto's light factor: the diffusion slab of the medium (sss/medium.h) */
 	bool auto_walk;	     /* auto may walk: every object of the material is closed */
 	bool auto_open;	     /* the build's: an object of this material under auto is open */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
@@ -193,6 +194,7 @@ typedef struct render_sample {
 	uint32_t sss_walks;    /* searches that were volume walks (volume; auto where it walked) */
 	uint32_t sss_walk_dropped; /* of them, walks that reached SSS_WALK_MAX_STEPS: dropped (weight 0,
 				    * also in sss_nohit), biased low, so counted and printed */
+	uint32_t sss_walk_steps;   /* the interactions (ray casts) of those walks: their cost */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number (its camera dimensions

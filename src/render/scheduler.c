@@ -32,7 +32,8 @@ typedef struct pool {
 	_Atomic int tiles_done;
 	_Atomic uint64_t samples_done; /* pixel samples of the current pass, for progress */
 	_Atomic uint64_t dropped;      /* samples dropped in the current pass */
-	_Atomic uint64_t sss_searches, sss_nohit, sss_overflow, sss_walks, sss_walk_dropped; /* of the current pass */
+	_Atomic uint64_t sss_searches, sss_nohit, sss_overflow, sss_walks, sss_walk_dropped,
+		sss_walk_steps; /* of the current pass */
 } pool;
 
 static double now_s(void)
@@ -70,6 +71,7 @@ static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[
 		counts[3] += smp.sss_overflow;
 		counts[4] += smp.sss_walks;
 		counts[5] += smp.sss_walk_dropped;
+		counts[6] += smp.sss_walk_steps;
 		if (!film_pixel_add(px, &smp)) {
 			render_sample zero = {0};
 			film_pixel_add(px, &zero);
@@ -88,7 +90,8 @@ static bool render_tile(pool *p, int tile)
 	int xa = f->ax0 + tx * p->tile, ya = f->ay0 + ty * p->tile;
 	int xb = xa + p->tile < f->ax1 ? xa + p->tile : f->ax1,
 	    yb = ya + p->tile < f->ay1 ? ya + p->tile : f->ay1;
-	uint64_t counts[6] = {0, 0, 0, 0, 0, 0}; /* dropped, SSS searches, no-hits, overflows, walks, walks dropped */
+	uint64_t counts[7] = {0, 0, 0, 0, 0, 0, 0}; /* dropped, SSS searches, no-hits, overflows, walks, walks
+						     * dropped, walk interactions */
 	for (int y = ya; y < yb; y++) {
 		if (interrupted(p->job))
 			return false;
@@ -111,6 +114,7 @@ static bool render_tile(pool *p, int tile)
 	atomic_fetch_add(&p->sss_overflow, counts[3]);
 	atomic_fetch_add(&p->sss_walks, counts[4]);
 	atomic_fetch_add(&p->sss_walk_dropped, counts[5]);
+	atomic_fetch_add(&p->sss_walk_steps, counts[6]);
 	return true;
 }
 
@@ -242,6 +246,7 @@ static bool run_pass(pool *p, int workers, uint32_t n, double t0, double npix)
 	atomic_store(&p->sss_overflow, 0);
 	atomic_store(&p->sss_walks, 0);
 	atomic_store(&p->sss_walk_dropped, 0);
+	atomic_store(&p->sss_walk_steps, 0);
 	p->active = workers;
 	p->generation++;
 	pthread_cond_broadcast(&p->start);
@@ -264,6 +269,7 @@ static size_t commit_pass(pool *p, render_stats *total, size_t active)
 	total->sss_overflow += atomic_load(&p->sss_overflow);
 	total->sss_walks += atomic_load(&p->sss_walks);
 	total->sss_walk_dropped += atomic_load(&p->sss_walk_dropped);
+	total->sss_walk_steps += atomic_load(&p->sss_walk_steps);
 	total->passes++;
 	if (ad->threshold > 0.0 && adaptive_is_check(ad, p->film->spp))
 		active = adaptive_check(p->film, ad, p->film->spp);

@@ -79,6 +79,7 @@ typedef struct render_stats {
 	uint64_t sss_overflow; /* of them, those with more hits than kept */
 	uint64_t sss_walks;    /* of them, volume walks (every search of volume, auto's walks) */
 	uint64_t sss_walk_dropped; /* of the walks, those that reached their step bound (dark, counted) */
+	uint64_t sss_walk_steps;   /* the walks' interactions (ray casts) */
 	double seconds;	      /* wall time of render_run */
 	double samples_per_s; /* pixel samples committed per second */
 	int passes;	      /* committed passes */

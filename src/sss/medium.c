@@ -54,13 +54,55 @@ double sss_auto_light_prob(double f)
 	return x * x * (3.0 - 2.0 * x);
 }
 
-double sss_auto_light_share(double e_near, double e_far, double m)
+bool sss_auto_slab_make(sss_auto_slab *s, const double sigma_s_prime_per_mm[3], const double sigma_a_per_mm[3],
+			double eta)
 {
-	double far = e_far > 0.0 ? e_far * exp(-fmax(m, 0.0)) : 0.0; /* NaN or <= 0: unlit */
-	double near = e_near > 0.0 ? e_near : 0.0;
+	/* the boundary term A = (1 + F_dr)/(1 - F_dr), F_dr = 2 FM1(1/eta) (profile.h) */
+	double fdr = 2.0 * sss_fresnel_moment1(1.0 / eta), a_f = (1.0 + fdr) / (1.0 - fdr);
+	for (int c = 0; c < 3; c++) {
+		double sa = fmax(0.0, sigma_a_per_mm[c]), st = fmax(0.0, sigma_s_prime_per_mm[c]) + sa;
+		if (!(st > 0.0) || !isfinite(st))
+			return false;
+		double d = 1.0 / (3.0 * st), zb = 2.0 * a_f * d;
+		s->sigma_tr[c] = sqrt(sa / d);
+		s->src[c] = 1.0 / st + zb;
+		s->ext[c] = 2.0 * zb;
+	}
+	return true;
+}
+
+void sss_auto_slab_tr(const sss_auto_slab *s, int c, double L_mm, double *t, double *r)
+{
+	double L = fmax(0.0, L_mm), src = fmin(s->src[c], L + s->ext[c]), d = L + s->ext[c];
+	double k = s->sigma_tr[c];
+	if (!(L < INFINITY)) {
+		*t = 0.0, *r = k > 0.0 ? exp(-k * src) : 1.0;
+		return;
+	}
+	if (!(k * d > 1e-6)) { /* (nearly) no absorption: the linear limit */
+		*t = src / d, *r = (d - src) / d;
+		return;
+	}
+	/* sinh(a)/sinh(b) = e^{a-b} (1 - e^{-2a})/(1 - e^{-2b}): no overflow at any thickness */
+	double den = -expm1(-2.0 * k * d);
+	*t = exp(k * (src - d)) * -expm1(-2.0 * k * src) / den;
+	*r = exp(-k * src) * -expm1(-2.0 * k * (d - src)) / den;
+}
+
+double sss_auto_light_share(const sss_auto_slab *s, double e_near, double e_far, double L_mm)
+{
+	double far = e_far > 0.0 ? e_far : 0.0, near = e_near > 0.0 ? e_near : 0.0; /* NaN or <= 0: unlit */
 	if (!(far > 0.0))
 		return 0.0;
-	return far / (near + far);
+	double f = 0.0;
+	for (int c = 0; c < 3; c++) {
+		double t, r;
+		sss_auto_slab_tr(s, c, L_mm, &t, &r);
+		double a = far * t, b = near * r + a;
+		if (b > 0.0)
+			f = fmax(f, a / b);
+	}
+	return f;
 }
 
 const char *sss_profile_name(sss_profile_kind k)

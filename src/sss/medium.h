@@ -42,14 +42,14 @@ bool sss_profile_from_name(const char *name, sss_profile_kind *k);
  * on, and in between 1 - smoothstep of log m across the band (continuous with a continuous slope:
  * no seam where the choice changes). m = +Inf (nothing below: an open surface) gives 0; NaN or
  * m <= 0 gives 1. */
-#define SSS_AUTO_WALK_BELOW 4.0
-#define SSS_AUTO_CIRCLE_ABOVE 8.0
+#define SSS_AUTO_WALK_BELOW 5.0
+#define SSS_AUTO_CIRCLE_ABOVE 10.0
 double sss_auto_walk_prob(double m);
 
 /* The light factor of `auto` (src/sss/README.md, "auto"): f is the share of the light leaving an
  * exit point that the profile misses, estimated from the unshadowed irradiance of the far side
  * (where the thickness ray leaves the object) and of the exit point's own side,
- * f = E_far e^-m / (E_near + E_far e^-m). The walk's probability is multiplied by 0 for
+ * f = E_far T / (E_near R + E_far T) with the diffusion slab's T and R below. The walk's probability is multiplied by 0 for
  * f <= SSS_AUTO_LIGHT_CIRCLE, 1 for f >= SSS_AUTO_LIGHT_WALK, and smoothstep of log f across the
  * band between (continuous with a continuous slope); NaN gives 1, the safe side. */
 #define SSS_AUTO_LIGHT_CIRCLE 0.01
@@ -60,8 +60,28 @@ double sss_auto_walk_prob(double m);
 #define SSS_AUTO_LIGHT_WRAP 0.5f
 #endif
 double sss_auto_light_prob(double f);
-/* f from the two irradiances (any common unit, >= 0) and m: 0 when neither side is lit. */
-double sss_auto_light_share(double e_near, double e_far, double m);
+/* What a slab of the medium sends out of each side (src/sss/README.md, "auto": the diffusion
+ * slab), per channel: the 1D diffusion solution between the extrapolated boundaries (zero
+ * fluence at z_b = 2 A D outside each face, D = 1/(3 sigma_t'), A = (1 + F_dr)/(1 - F_dr) from the
+ * exact FM1) of a source at z_0 = 1/sigma_t' below the lit face: of what scatters there, the
+ * far face's share is sinh(sigma_tr s)/sinh(sigma_tr d) (transmission, T) and the lit face's
+ * sinh(sigma_tr (d - s))/sinh(sigma_tr d) (reflection, R), s = z_0 + z_b, d = L + 2 z_b. Lengths in
+ * mm. The parameters of one material: */
+typedef struct sss_auto_slab {
+	double sigma_tr[3]; /* per mm; 0: no absorption (the linear limit s/d) */
+	double src[3];	    /* s - L-independent part: z_0 + z_b, mm */
+	double ext[3];	    /* 2 z_b, mm */
+} sss_auto_slab;
+/* From the physical form (sigma_s', sigma_a per mm) and the boundary's eta; false when a channel
+ * has no extinction. */
+bool sss_auto_slab_make(sss_auto_slab *s, const double sigma_s_prime_per_mm[3], const double sigma_a_per_mm[3],
+			double eta);
+/* T and R of channel c for a slab L mm thick (L >= 0; +Inf: T = 0). */
+void sss_auto_slab_tr(const sss_auto_slab *s, int c, double L_mm, double *t, double *r);
+/* f from the two irradiances (any common unit, >= 0) and the thickness in mm: the largest over
+ * the channels of E_far T_c / (E_near R_c + E_far T_c) (the channel that carries the most light
+ * through: the safe side); 0 when the far side is unlit. */
+double sss_auto_light_share(const sss_auto_slab *s, double e_near, double e_far, double L_mm);
 
 /* ---- the presets ---------------------------------------------------------------------------------- */
 

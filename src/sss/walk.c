@@ -8,7 +8,6 @@
 
 #include <assert.h>
 #include <math.h>
-#include <stdlib.h>
 
 #define WALK_PI 3.14159265358979323846
 
@@ -23,6 +22,10 @@
  * outside its face, lost). The skin only transmits (weight e^{-sigma_t d_skin}, sampled consistently): a bias of
  * the order sigma_t * 1e-6 * |coordinates|, negligible. */
 #define WALK_SKIN 1e-6
+/* A walk's ray reaches this much (of the same scale) past the free path: the skin ahead of a
+ * boundary hit at up to 1/8 of grazing still sees it (the skin is WALK_SKIN / cos). */
+#define WALK_REACH (8.0 * WALK_SKIN)
+#define WALK_WHOLE_EVERY 64
 
 
 bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
@@ -186,6 +189,8 @@ typedef struct walk_guide {
  * (1 - e^{-thickness / WALK_THIN_NU}). */
 #define WALK_THIN_NU 4.0
 #define WALK_NU_MIN (1.0 + 1e-6)
+/* Above this nu (albedo about 0.98) the classic strategy's share falls as WALK_FRAC_NU / (2 nu). */
+#define WALK_FRAC_NU 4.0
 static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t[3], vec3 x, vec3 n)
 {
 	walk_guide gd = {0};
@@ -205,8 +210,12 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	gd.x = x, gd.n = n;
 	gd.nu = nu;
 	gd.log_nu = log((nu + 1.0) / (nu - 1.0));
-	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic */
-	gd.frac = 1.0 - fmax(0.5, pow(fabs(m->g), 0.125));
+	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic.
+	 * The classic share of 1/2 shrinks as WALK_FRAC_NU / nu beyond nu = WALK_FRAC_NU (issue
+	 * 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
+	 * a stretch 1 - mu / nu), so the mixture's weights stay near 1 with little of the classic
+	 * strategy, and each step's pull to the surface, weak there, is not halved. */
+	gd.frac = 1.0 - fmax(0.5 * fmin(1.0, WALK_FRAC_NU / nu), pow(fabs(m->g), 0.125));
 	gd.sigma_ref = sigma_t[ref];
 	return gd;
 }
@@ -322,14 +331,35 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	walk_hero_probs(m, sigma_t, q);
 	int hero = walk_hero(q, rng_double(g));
 	double stretch = 1.0;
-	int stuck = 0; /* reentries in a row */
+	int stuck = 0;		  /* reentries in a row */
+	double last_scale = x_scale; /* the largest triangle scale met: the skin's scale ahead */
 	for (res.steps = 0; res.steps < max_steps;) {
-		bvh_ray ray = {org, w, 0.0f, INFINITY};
+		/* the hero's free path (stretched when the direction was guided); the densities of
+		 * every channel and strategy for the path so far are kept relative to the hero's */
+		double st = sigma_t[hero] * stretch;
+		double t = st > 0.0 ? -log1p(-rng_double(g)) / st : INFINITY;
+		/* The ray only needs to reach past the free path: a boundary beyond it is not met
+		 * (issue 21: a cast bounded by t visits the BVH's nodes along a segment a few mean
+		 * free paths long, not the whole chord to the far side; measured in
+		 * bench/sss/README.md). WALK_REACH of the coordinates' magnitude past t keeps the
+		 * skin below for boundaries within it. Every WALK_WHOLE_EVERY-th cast is whole,
+		 * the first among them (the guide wants the far side below the entry): a walk that
+		 * left through a crack of an open mesh ends LOST within that many steps instead of
+		 * wandering in the void. */
+		float reach = INFINITY;
+		if (res.steps % WALK_WHOLE_EVERY != 0 && t < INFINITY)
+			reach = (float)(t + WALK_REACH * fmax(last_scale, fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)))));
+		bvh_ray ray = {org, w, 0.0f, reach};
 		sss_probe_hit h;
-		if (!pr->closest(pr->ctx, &ray, &h)) {
+		bool hit = pr->closest(pr->ctx, &ray, &h);
+		if (!hit && !(reach < INFINITY)) {
 			res.status = SSS_WALK_LOST;
 			return res;
 		}
+		if (!hit) /* nothing within reach: the free path ends inside, a collision */
+			h.t = INFINITY, h.scale = 0.0f, h.p = org, h.ng = v3(0.0f, 0.0f, 1.0f);
+		else
+			last_scale = fmax(last_scale, (double)h.scale);
 		if (gd.on && res.steps == 0) { /* the far side below the entry (Cycles' opposite interface) */
 			gd.far = fmax(0.0, -(double)v3_dot(v3_sub(h.p, gd.x), gd.n));
 			/* guiding shortens walks that would wander deep; in a layer a few diffusion
@@ -338,10 +368,6 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			 * as efficient at a fraction of 1/2): fade the fraction with the thickness */
 			gd.frac *= -expm1(-gd.far * gd.sigma_ref / (WALK_THIN_NU * gd.nu));
 		}
-		/* the hero's free path (stretched when the direction was guided); the densities of
-		 * every channel and strategy for the path so far are kept relative to the hero's */
-		double st = sigma_t[hero] * stretch;
-		double t = st > 0.0 ? -log1p(-rng_double(g)) / st : INFINITY;
 		double scale = fmax(h.scale, fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z))));
 		double cos_n = fmax(1e-6, fabs((double)v3_dot(w, h.ng)));
 		double d = fmax(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */

@@ -52,6 +52,19 @@ typedef struct image_stats {
 	unsigned long px_searches[W * H], px_walks[W * H]; /* SSS searches and walks per pixel */
 } image_stats;
 
+/* The diffusion slab of auto's light factor for a wax { color rgb a radius r ior eta } (grey). */
+static sss_auto_slab grey_slab(double a, double radius_mm, double eta)
+{
+	sss_medium_spec spec = {0};
+	spec.albedo = v3s((float)a), spec.radius_mm = v3s((float)radius_mm);
+	spec.has = SSS_HAS_ALBEDO | SSS_HAS_RADIUS;
+	sss_medium md;
+	sss_medium_derive(&spec, eta, &md);
+	sss_auto_slab sl;
+	CHECK(sss_auto_slab_make(&sl, md.sigma_s_per_mm, md.sigma_a_per_mm, eta), "the slab of a grey wax");
+	return sl;
+}
+
 static void render_seed(const char *text, int spp, int max_level, sss_circle_weight weight,
 			sss_method method, uint64_t seed, image_stats *st)
 {
@@ -528,7 +541,7 @@ static void test_auto_front(void)
 }
 
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
- * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 4 to 8 l_d, and
+ * from 2.5 to 13.5 mm across x (the image sees 3.1 to 12.9: auto's band, 5 to 10 l_d, and
  * more either side), seen from above, lit strongly from below and weakly from above, so the
  * methods differ where auto blends them. Column by column, auto's mean must be the blend
  * p(T) volume + (1 - p(T)) circle of the two methods' own means, p the rule at the column's
@@ -536,10 +549,12 @@ static void test_auto_front(void)
  * here: its circles reach the lit bottom). The choice itself is measured without that noise:
  * with direct light only, each path has one exit point on the top, and the fraction of them that
  * walked must follow p(T) column by column (binomial chi-square); a hard switch in the middle of
- * the band (p = 1/2) must fail the same bound, so the test sees a seam. The light factor is 1 all
- * across: the far side's share of the exit's light, 376 e^-T / (0.96 + 376 e^-T) (the bottom's
- * cosine 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1), is 0.12 at
- * 8 l_d, above SSS_AUTO_LIGHT_WALK, so p is the geometric rule's alone. */
+ * the band (p = 1/2) must fail the same bound, so the test sees a seam. p is the geometric rule's
+ * (1 up to 5 l_d, 0 from 10) times the light factor, which is 1 up to 7 l_d, 0.86 at 8 and 0 from
+ * about 9.7 (checked below): the far side's share of the exit's light, 376 T / (0.96 R + 376 T)
+ * (the bottom's cosine 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1; T
+ * and R the diffusion slab's, sss/medium.h), is 0.14 at 7 l_d, 0.058 at 8 and 0.008 at 10; the
+ * product is smooth too, and the part of the band below 7 l_d is the geometric rule's alone. */
 static void test_auto_wedge(void)
 {
 	const char *text =
@@ -553,10 +568,17 @@ static void test_auto_wedge(void)
 		"<2,7,6>, <3,0,4>, <3,4,7> }\n"
 		"  material { wax { color rgb 0.8 radius 1 ior 1.0 profile burley } } }\n";
 	/* the light factor is 1 wherever the geometric rule is not 0 (the comment above) */
-	double share = sss_auto_light_share(100.0 / sqrt(100.0 * 100.0 + 30.0 * 30.0),
-					    400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP),
-					    SSS_AUTO_CIRCLE_ABOVE);
-	CHECK(sss_auto_light_prob(share) == 1.0, "the wedge's far-side share %g at the band's end is below 1", share);
+	/* the light factor (the comment above): 1 up to 7 l_d */
+	sss_auto_slab sl = grey_slab(0.8, 1.0, 1.0);
+	const double e_near = 100.0 / sqrt(100.0 * 100.0 + 30.0 * 30.0),
+		     e_far = 400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP);
+#define WEDGE_P(t) (sss_auto_walk_prob(t) * sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, (t) * 1.0)))
+	double light_7 = sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, 7.0));
+	double light_8 = sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, 8.0));
+	printf("wedge: the light factor at 7 l_d %.4f, at 8 l_d %.4f; the geometric rule there %.4f, %.4f\n", light_7,
+	       light_8, sss_auto_walk_prob(7.0), sss_auto_walk_prob(8.0));
+	CHECK(light_7 == 1.0 && light_8 > 0.5, "the wedge's light factor is not 1 across most of the band (%g, %g)", light_7,
+	      light_8);
 	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
 	double xs[W];
 	world *w;
@@ -584,7 +606,7 @@ static void test_auto_wedge(void)
 	}
 	double chi2 = 0.0, chi2_hard = 0.0;
 	for (int x = 0; x < W; x++) {
-		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = sss_auto_walk_prob(t);
+		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = WEDGE_P(t);
 		double ph = t < sqrt(SSS_AUTO_WALK_BELOW * SSS_AUTO_CIRCLE_ABOVE) ? 1.0 : 0.0;
 		double want = p * col[1][x] + (1.0 - p) * col[0][x], hard = ph * col[1][x] + (1.0 - ph) * col[0][x];
 		double e = sqrt(se[2][x] * se[2][x] + p * p * se[1][x] * se[1][x] + (1 - p) * (1 - p) * se[0][x] * se[0][x]);
@@ -606,7 +628,7 @@ static void test_auto_wedge(void)
 	double c2 = 0.0, c2_hard = 0.0;
 	int dof = 0;
 	for (int x = 0; x < W; x++) {
-		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = sss_auto_walk_prob(t);
+		double t = 2.5 + (xs[x] + 12.0) * 11.0 / 24.0, p = WEDGE_P(t);
 		double ph = t < sqrt(SSS_AUTO_WALK_BELOW * SSS_AUTO_CIRCLE_ABOVE) ? 1.0 : 0.0;
 		unsigned long n = 0, k = 0;
 		for (int y = 0; y < H; y++)
@@ -624,14 +646,16 @@ static void test_auto_wedge(void)
 	       c2_hard, b2);
 	CHECK(c2 <= b2, "auto's choice does not follow p(T): chi-square %g > %g", c2, b2);
 	CHECK(c2_hard > b2, "the wedge cannot tell a hard switch (chi-square %g) from the smooth rule", c2_hard);
+#undef WEDGE_P
 }
 
 /* The light factor across an image: a long wax cylinder 2 l_d across (radius 10 of l_d 10 mm),
- * its axis along z, seen from above, lit from above (10) and below (1.48): every exit is thin
+ * its axis along z, seen from above, lit from above (10) and below (3): every exit is thin
  * (m = 2, the geometric probability 1), and the far side's share of the light, with the near
  * cosine c = n.y and the far ones wrapped (the light from above counts there too where c < w),
- * f = (1.48 (c + w) + 10 (w - c)+) / (1 + w) e^-2 / (10 c + ...), runs from 2 % on the crest to
- * 100 % at the rims, across the factor's band (1 % to 10 %). With direct
+ * f = E_far T / (E_near R + E_far T), E_far = (3 (c + w) + 10 (w - c)+) / (1 + w), E_near = 10 c, T
+ * and R the diffusion slab's of 20 mm (sss/medium.h), runs from 2 % on the crest to 100 % at the
+ * rims, across the factor's band (1 % to 10 %). With direct
  * light only each path has one exit, where the camera's ray meets the cylinder: the walked
  * fraction, column by column, must follow the factor computed here from that point (binomial
  * chi-square), and must fail the geometric rule alone (p = 1). */
@@ -641,11 +665,12 @@ static void test_auto_light_band(void)
 		"global_settings { mm_per_unit 1 }\n"
 		"camera { location <0, 40, -0.5> look_at <0, 0, 0> angle 30 }\n"
 		"light_source { <0, 100, 0> color rgb 1 intensity 10 parallel point_at <0, 0, 0> }\n"
-		"light_source { <0, -100, 0> color rgb 1 intensity 1.48 parallel point_at <0, 0, 0> }\n"
+		"light_source { <0, -100, 0> color rgb 1 intensity 3 parallel point_at <0, 0, 0> }\n"
 		"cylinder { <0, 0, -40>, <0, 0, 40>, 10 material { wax { color rgb 0.8 radius 10 ior 1.0 profile burley } } }\n";
 	world *w;
 	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
 	CHECK(build(text, &o, &w) && last_warnings == 0, "the cylinder builds without warnings (%d)", last_warnings);
+	sss_auto_slab sl = grey_slab(0.8, 10.0, 1.0);
 	double pp[W * H];
 	for (int y = 0; y < H; y++)
 		for (int x = 0; x < W; x++) {
@@ -662,8 +687,8 @@ static void test_auto_light_band(void)
 			if (c < 0.4)
 				continue; /* near the silhouette p moves fast within a pixel, judged at its centre */
 			double e_near = 10.0 * fmax(c, 0.0), w = SSS_AUTO_LIGHT_WRAP; /* the far side: both lights */
-			double e_far = 1.48 * fmax((c + w) / (1.0 + w), 0.0) + 10.0 * fmax((w - c) / (1.0 + w), 0.0);
-			pp[y * W + x] = sss_auto_walk_prob(2.0) * sss_auto_light_prob(sss_auto_light_share(e_near, e_far, 2.0));
+			double e_far = 3.0 * fmax((c + w) / (1.0 + w), 0.0) + 10.0 * fmax((w - c) / (1.0 + w), 0.0);
+			pp[y * W + x] = sss_auto_walk_prob(2.0) * sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, 20.0));
 		}
 	world_free(w);
 	image_stats fr;

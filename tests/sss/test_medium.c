@@ -229,8 +229,9 @@ static void check_auto_rule(void)
 }
 
 /* auto's light factor: 0 up to a far-side share of SSS_AUTO_LIGHT_CIRCLE, 1 from SSS_AUTO_LIGHT_WALK,
- * continuous and monotone between with slope 0 at both ends; the share itself against its formula
- * E_far e^-m / (E_near + E_far e^-m), 0 when the far side is unlit, NaN walking. */
+ * continuous and monotone between with slope 0 at both ends; the share itself, E_far T / (E_near R +
+ * E_far T) of the largest channel, 0 when the far side is unlit; the diffusion slab's T and R against
+ * their sinh forms, monotone in the thickness, bounded, and without overflow. */
 static void check_auto_light(void)
 {
 	const double lo = SSS_AUTO_LIGHT_CIRCLE, hi = SSS_AUTO_LIGHT_WALK;
@@ -253,12 +254,49 @@ static void check_auto_light(void)
 	      slope * step);
 	CHECK(sss_auto_light_prob(lo * 1.0001) < 1e-6 && 1.0 - sss_auto_light_prob(hi / 1.0001) < 1e-6,
 	      "slope 0 at the ends of the band");
-	CHECK(sss_auto_light_share(1.0, 0.0, 2.0) == 0.0 && sss_auto_light_share(0.0, 0.0, 0.0) == 0.0 &&
-		  sss_auto_light_share(1.0, NAN, 1.0) == 0.0,
+	/* the diffusion slab of skin1 (eta 1.4) */
+	const sss_preset *sk = sss_preset_find("skin1");
+	double ss[3], sa[3];
+	for (int c = 0; c < 3; c++)
+		ss[c] = sk->sigma_s_per_mm[c], sa[c] = sk->sigma_a_per_mm[c];
+	sss_auto_slab sl;
+	CHECK(sss_auto_slab_make(&sl, ss, sa, 1.4), "the slab of skin1");
+	CHECK(sss_auto_light_share(&sl, 1.0, 0.0, 2.0) == 0.0 && sss_auto_light_share(&sl, 0.0, 0.0, 0.0) == 0.0 &&
+		  sss_auto_light_share(&sl, 1.0, NAN, 1.0) == 0.0,
 	      "an unlit far side has no share");
-	CHECK(sss_auto_light_share(0.0, 3.0, 5.0) == 1.0, "an unlit near side: all the light is the far side's");
-	CHECK_NEAR(sss_auto_light_share(1.0, 40.0, 4.0), 40.0 * exp(-4.0) / (1.0 + 40.0 * exp(-4.0)), 1e-15);
-	CHECK_NEAR(sss_auto_light_share(2.0, 5.0, -1.0), 5.0 / 7.0, 1e-15); /* m < 0 counts as 0 */
+	CHECK(sss_auto_light_share(&sl, 0.0, 3.0, 5.0) == 1.0, "an unlit near side: all the light is the far side's");
+	/* T and R against sinh(sigma_tr s)/sinh(sigma_tr d) and sinh(sigma_tr (d - s))/sinh(sigma_tr d) written
+	 * out from the coefficients (JMLH01's D, z_b = 2 A D with A = (1 + F_dr)/(1 - F_dr)) */
+	double fdr = 2.0 * sss_fresnel_moment1(1.0 / 1.4), af = (1.0 + fdr) / (1.0 - fdr);
+	double f_max = 0.0;
+	for (int c = 0; c < 3; c++) {
+		double st = ss[c] + sa[c], D = 1.0 / (3.0 * st), zb = 2.0 * af * D, k = sqrt(3.0 * sa[c] * st);
+		double L = 4.0, src = 1.0 / st + zb, d = L + 2.0 * zb, t, r;
+		sss_auto_slab_tr(&sl, c, L, &t, &r);
+		CHECK_NEAR(t, sinh(k * src) / sinh(k * d), 1e-12);
+		CHECK_NEAR(r, sinh(k * (d - src)) / sinh(k * d), 1e-12);
+		f_max = fmax(f_max, 40.0 * t / (1.0 * r + 40.0 * t));
+		/* less through and more back as the slab thickens; never more than the source */
+		double t2, r2, t0, r0, ti, ri;
+		sss_auto_slab_tr(&sl, c, 2.0 * L, &t2, &r2);
+		sss_auto_slab_tr(&sl, c, 0.0, &t0, &r0);
+		sss_auto_slab_tr(&sl, c, INFINITY, &ti, &ri);
+		CHECK(t2 < t && r2 > r && t + r <= 1.0 && t0 + r0 <= 1.0 && t0 > t, "channel %d: T %g %g, R %g %g", c, t, t2, r,
+		      r2);
+		CHECK(ti == 0.0 && fabs(ri - exp(-k * src)) < 1e-12 && r2 < ri, "channel %d: the half space", c);
+		sss_auto_slab_tr(&sl, c, 1e6, &t2, &r2); /* no overflow at any thickness */
+		CHECK(t2 == 0.0 && isfinite(r2), "channel %d: a slab 1 km thick: T %g R %g", c, t2, r2);
+	}
+	CHECK_NEAR(sss_auto_light_share(&sl, 1.0, 40.0, 4.0), f_max, 1e-15); /* the largest channel's */
+	CHECK(sss_auto_light_share(&sl, 2.0, 5.0, -1.0) == sss_auto_light_share(&sl, 2.0, 5.0, 0.0),
+	      "L < 0 counts as 0");
+	/* no absorption: everything leaves, T + R = 1, linear in L */
+	const double none[3] = {0.0, 0.0, 0.0};
+	CHECK(sss_auto_slab_make(&sl, ss, none, 1.4), "the slab without absorption");
+	double t, r;
+	sss_auto_slab_tr(&sl, 0, 3.0, &t, &r);
+	CHECK_NEAR(t + r, 1.0, 1e-12);
+	CHECK(!sss_auto_slab_make(&sl, none, none, 1.4), "no extinction: no slab");
 }
 
 int main(void)

@@ -1,11 +1,13 @@
 /* test_walk: the volume random walk against closed forms: Chandrasekhar's albedo of a semi-infinite
  * isotropic medium (grey and RGB, spectral MIS), energy conservation without absorption (box and
  * sphere, Fresnel boundary), Beer-Lambert through a pure absorber; the step bound and lost walks are
- * reported; the closed-mesh check on closed and open meshes. */
+ * reported; the closed-mesh check on closed and open meshes; auto's diffusion slab (sss/medium.h)
+ * against the walk's transmission and reflection of sheets of skin, wax and marble. */
 #include "accel/bvh.h"
 #include "base/rng.h"
 #include "check.h"
 #include "geom/prim.h"
+#include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
 #include "mean3.h"
@@ -221,15 +223,17 @@ static void check_semi_infinite(const char *name, const double albedo[3], const 
  * of a given noise in ray casts). */
 static void check_guided_vs_classic(void)
 {
-	const double albedos[] = {0.95, 0.99, 0.3}, mus[] = {1.0, 0.5, 1.0}, ones[3] = {1, 1, 1};
-	for (int i = 0; i < 3; i++) {
+	/* 0.999: marble's and wax's albedos, where the classic share of the mixture falls below 1/2
+	 * (issue 21, WALK_FRAC_NU) */
+	const double albedos[] = {0.95, 0.99, 0.3, 0.999}, mus[] = {1.0, 0.5, 1.0, 1.0}, ones[3] = {1, 1, 1};
+	for (int i = 0; i < 4; i++) {
 		double a[3] = {albedos[i], albedos[i], albedos[i]}, se_g[3], se_c[3], n_g, n_c;
 		char name[64];
-		snprintf(name, sizeof name, "grey %.2f", albedos[i]);
+		snprintf(name, sizeof name, "grey %g", albedos[i]);
 		check_semi_infinite_at(name, a, ones, mus[i], false, se_g, &n_g);
 		check_semi_infinite_at(name, a, ones, mus[i], true, se_c, &n_c);
 		double cost_g = se_g[0] * se_g[0] * n_g, cost_c = se_c[0] * se_c[0] * n_c;
-		printf("  albedo %.2f cos %.2f: variance x interactions, classic / guided = %.2f\n", albedos[i], mus[i],
+		printf("  albedo %g cos %.2f: variance x interactions, classic / guided = %.2f\n", albedos[i], mus[i],
 		       cost_c / cost_g);
 		CHECK(cost_g < 1.1 * cost_c, "albedo %g: guided costs %g, classic %g", albedos[i], cost_g, cost_c);
 	}
@@ -413,6 +417,64 @@ static void check_failures(void)
 	object_free(&o);
 }
 
+/* auto's light factor weighs the far side's light by the diffusion slab's T / R (sss/medium.h):
+ * a sheet L mm thick of skin1, the wax block's default and marble, entered at normal incidence
+ * through the medium's own boundary (the walk's Fresnel), its light leaving through the far face
+ * (T) and the lit one (R). The slab's T / R of the channel auto uses (the largest, red in all
+ * three) must be within a factor 1.6 of the walk's; e^{-L/l_d}, the rule before, is printed beside
+ * (wax's is 9 times the walk's at 3 mm). */
+static void check_auto_slab(void)
+{
+	const char *names[] = {"skin1", "wax", "marble"};
+	const double etas[] = {1.4, 1.45, 1.5}, Ls[] = {3.0, 6.0};
+	for (int i = 0; i < 3; i++) {
+		sss_medium_spec spec = {0};
+		if (i == 1) {
+			spec.albedo = v3(0.95f, 0.78f, 0.45f), spec.radius_mm = v3(2.0f, 1.2f, 0.6f);
+			spec.has = SSS_HAS_ALBEDO | SSS_HAS_RADIUS;
+		} else {
+			spec.preset = names[i];
+		}
+		sss_medium md;
+		sss_medium_derive(&spec, etas[i], &md);
+		sss_auto_slab sl;
+		sss_walk_medium m;
+		CHECK(sss_auto_slab_make(&sl, md.sigma_s_per_mm, md.sigma_a_per_mm, etas[i]) &&
+			      sss_walk_medium_from_reduced(&m, md.sigma_s_per_mm, md.sigma_a_per_mm, 0.0, etas[i], 1.0),
+		      "%s: the slab and the walk's medium", names[i]);
+		for (int j = 0; j < 2; j++) {
+			double L = Ls[j];
+			object o;
+			object_box(&o, v3(-200.0f, -200.0f, (float)-L), v3(200.0f, 200.0f, 0.0f));
+			rng r;
+			rng_seed(&r, 21, (uint64_t)(2 * i + j));
+			test_mean3 t = {0}, rf = {0};
+			long n = test_scaled(i == 1 ? 20000 : 40000);
+			for (long k = 0; k < n; k++) {
+				sss_walk_result res = sss_walk(&m, &o.pr, v3(0, 0, 0), v3(0, 0, 1), 0.0f, v3(0, 0, -1), &r,
+							       SSS_WALK_MAX_STEPS);
+				bool out = res.status == SSS_WALK_EXITED;
+				bool top = out && res.p.z == 0.0f, bottom = out && res.p.z == (float)-L;
+				double wt[3] = {bottom ? res.weight.x : 0.0, bottom ? res.weight.y : 0.0, bottom ? res.weight.z : 0.0};
+				double wr[3] = {top ? res.weight.x : 0.0, top ? res.weight.y : 0.0, top ? res.weight.z : 0.0};
+				test_mean3_add(&t, wt);
+				test_mean3_add(&rf, wr);
+			}
+			double tm, rm;
+			sss_auto_slab_tr(&sl, 0, L, &tm, &rm);
+			double wt = test_mean3_mean(&t, 0), wr = test_mean3_mean(&rf, 0);
+			double ratio = (tm / rm) / (wt / wr), old = exp(-L / md.ld_mm[0]) / (wt / wr);
+			printf("auto slab %s %.0f mm (red): walk T %.4f +- %.4f, R %.4f; slab T %.4f, R %.4f; T/R slab / walk "
+			       "%.2f, e^-m / walk %.2f\n",
+			       names[i], L, wt, test_mean3_se(&t, 0), wr, tm, rm, ratio, old);
+			CHECK(wt > 5.0 * test_mean3_se(&t, 0), "%s %g mm: the walk's transmission is not resolved", names[i], L);
+			CHECK(ratio > 1.0 / 1.6 && ratio < 1.6, "%s %g mm: the slab's T/R is %.2f of the walk's", names[i], L,
+			      ratio);
+			object_free(&o);
+		}
+	}
+}
+
 int main(void)
 {
 	check_basics();
@@ -425,6 +487,7 @@ int main(void)
 	check_dwivedi_nu();
 	check_guided_vs_classic();
 	check_thin_slab();
+	check_auto_slab();
 
 	object box, sphere;
 	object_box(&box, v3(-1, -1, -1), v3(1, 1, 1));
