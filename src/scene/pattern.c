@@ -51,13 +51,20 @@ dvec3 pattern_dnoise(dvec3 p)
 	return d3(fmax(-lim, fmin(lim, x)), fmax(-lim, fmin(lim, y)), fmax(-lim, fmin(lim, z)));
 }
 
-/* noise.cpp's Turbulence (its original-generator branch: circe's noise already spans [0, 1]):
- * noise(p) + sum over octaves 2..n of omega^(i-1) noise(lambda^(i-1) p). */
+/* circe's noise spreads as POV-Ray 3.7's noise_generator 2 (the default from #version 3.5 on):
+ * standard deviation 0.135 against its 0.126 (texture.cpp's Noise comment: its sum's 0.2568
+ * times 0.48985582), half of generator 1's. POV-Ray's generator-2 branches of Turbulence,
+ * granite and wrinkles therefore take 2 noise - 0.5 (or |1 - 2 noise|), so that their spread is
+ * generator 1's; circe takes those branches. */
+static double noise2(dvec3 p) { return 2.0 * pattern_noise(p) - 0.5; }
+
+/* texture.cpp's Turbulence (generator 2): clamp(2 noise(p) - 0.5, 0, 1) + sum over octaves 2..n
+ * of omega^(i-1) (2 noise(lambda^(i-1) p) - 0.5). */
 double pattern_turbulence(dvec3 p, const pattern_turb *t)
 {
-	double value = pattern_noise(p), l = t->lambda, o = t->omega;
+	double value = clamp01(noise2(p)), l = t->lambda, o = t->omega;
 	for (int i = 2; i <= t->octaves; i++) {
-		value += o * pattern_noise(d3_scale(p, l));
+		value += o * noise2(d3_scale(p, l));
 		l *= t->lambda, o *= t->omega;
 	}
 	return value;
@@ -383,16 +390,18 @@ static double raw_noisy(const pattern_node *n, dvec3 p)
 		double v = pattern_noise(p);
 		return v * v * v;
 	}
-	case PATTERN_WRINKLES: { /* nine octaves, lambda 2, omega 0.5, halved */
-		double v = pattern_noise(p), l = 2.0, o = 0.5;
+	case PATTERN_WRINKLES: { /* pattern.cpp wrinkles_pattern (generator 2): ten octaves of
+				  clamp(2 noise - 0.5, 0, 1), lambda 2, omega 0.5, halved */
+		double v = clamp01(noise2(p)), l = 2.0, o = 0.5;
 		for (int i = 1; i < 10; i++, l *= 2.0, o *= 0.5)
-			v += o * pattern_noise(d3_scale(p, l));
+			v += o * clamp01(noise2(d3_scale(p, l)));
 		return v / 2.0;
 	}
-	case PATTERN_GRANITE: { /* six octaves of |0.5 - noise| at 4 p */
+	case PATTERN_GRANITE: { /* pattern.cpp granite_pattern (generator 2): six octaves of
+				 min(|1 - 2 noise|, 0.5) at 4 p */
 		double v = 0.0, freq = 1.0;
 		for (int i = 0; i < 6; i++, freq *= 2.0)
-			v += fabs(0.5 - pattern_noise(d3_scale(p, 4.0 * freq))) / freq;
+			v += fmin(fabs(1.0 - 2.0 * pattern_noise(d3_scale(p, 4.0 * freq))), 0.5) / freq;
 		return v;
 	}
 	case PATTERN_AGATE: {

@@ -270,8 +270,21 @@ static void check_noise(void)
 	}
 	CHECK(lo >= 0 && hi <= 1 && lo < 0.2 && hi > 0.8, "noise range [%g, %g]", lo, hi);
 	CHECK(fabs(sum / n - 0.5) < 0.02, "noise mean %g", sum / n);
-	/* Turbulence: noise + 0.5 noise + ... + 1/32 noise, each in [0, 1]: within [0, 1.96875], about 0.98 on average. */
-	CHECK(tlo >= 0 && thi <= 1.96875 && thi - tlo > 0.8, "turbulence range [%g, %g]", tlo, thi);
+	/* Turbulence, POV-Ray's generator 2: clamp(2 N - 0.5, 0, 1) + 0.5 (2 N - 0.5) + ... +
+	 * 1/32 (2 N - 0.5), each 2 N - 0.5 in [-0.5, 1.5]: within [-0.484375, 2.453125]. */
+	CHECK(tlo >= -0.484375 && thi <= 2.453125 && thi - tlo > 1.6, "turbulence range [%g, %g]", tlo, thi);
+	{ /* its value at a point, term by term; granite's (min(|1 - 2 N|, 0.5) over six octaves at 4 p) */
+		dvec3 p = d3(0.37, -1.21, 2.83);
+		double want = fmin(1.0, fmax(0.0, 2 * pattern_noise(p) - 0.5)), l = 2, o = 0.5;
+		for (int i = 2; i <= 6; i++, l *= 2, o *= 0.5)
+			want += o * (2 * pattern_noise(d3_scale(p, l)) - 0.5);
+		CHECK_NEAR(pattern_turbulence(p, &t), want, 1e-12);
+		pattern_node g = pattern_node_default(PATTERN_GRANITE);
+		double gw = 0, f = 1;
+		for (int i = 0; i < 6; i++, f *= 2)
+			gw += fmin(fabs(1 - 2 * pattern_noise(d3_scale(p, 4 * f))), 0.5) / f;
+		CHECK_NEAR(pattern_raw(&g, p), gw, 1e-12);
+	}
 	/* Every noise-based pattern stays in [0, 1] and finite, whatever the point. */
 	const pattern_kind k[] = {PATTERN_BOZO,	   PATTERN_GRANITE, PATTERN_AGATE,   PATTERN_DENTS, PATTERN_WRINKLES,
 				  PATTERN_RIPPLES, PATTERN_WAVES,   PATTERN_CRACKLE, PATTERN_CELLS};
