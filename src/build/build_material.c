@@ -99,13 +99,15 @@ void warn_reflectance_image(const image *img, diag_loc loc, const char *path, di
 static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_finish_spec *out, diag *d)
 {
 	const scene_finish *f = &sm->finish;
-	/* POV-Ray's brilliance b lights by cos^b (trace.cpp ComputeDiffuseColour), which reflects
+	/* POV-Ray's brilliance b lights by Kd cos^b (trace.cpp ComputeDiffuseColour), which reflects
 	 * 2 / (b + 1) of a Lambert surface's energy, the factor its `diffuse albedo` undoes
-	 * (parstxtr.cpp Parse_Finish: Diffuse *= (b + 1) / 2): circe keeps Lambert's lobe (reciprocal,
-	 * energy-conserving) at that energy. */
+	 * (parstxtr.cpp Parse_Finish: Diffuse *= (b + 1) / 2): paths carry Lambert's lobe (reciprocal,
+	 * energy-conserving) at that energy, light sources see POV-Ray's cos^b (bsdf_pov.h). */
 	float b = f->brilliance;
-	float bril = b != 1.0f && b >= 0.0f && !f->diffuse_albedo ? 2.0f / (b + 1.0f) : 1.0f;
+	bool bright = b != 1.0f && b >= 0.0f;
+	float bril = bright && !f->diffuse_albedo ? 2.0f / (b + 1.0f) : 1.0f;
 	*out = (bsdf_pov_finish_spec){.diffuse = sm->diffuse * bril,
+				      .brilliance_less_1 = bright ? b - 1.0f : 0.0f,
 				      .specular = sm->specular,
 				      .roughness = sm->roughness,
 				      .phong = f->phong,

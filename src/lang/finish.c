@@ -275,8 +275,8 @@ bool lang_finish_item(parser *p, scene_material *m, lang_finish_state *st, bool 
 		f->brilliance = (float)x;
 		if (x != 1)
 			warn_once(p, WARN_BRILLIANCE, t.loc,
-				  "'brilliance' other than 1 keeps circe's Lambert lobe, of the energy POV-Ray's cos^b "
-				  "reflects: the diffuse times 2 / (b + 1)");
+				  "'brilliance' other than 1: light sources light the diffuse by POV-Ray's cos^b, "
+				  "light from other surfaces by a Lambert lobe of its energy (2 / (b + 1))");
 	} else if (accept_word(p, "reflection")) {
 		TRY(reflection(p, f));
 	} else if (accept_word(p, "fresnel")) {

@@ -26,7 +26,10 @@ typedef enum bsdf_kind { BSDF_DIFFUSE, BSDF_PLASTIC, BSDF_COAT, BSDF_SSS_ENTRY, 
 
 /* BSDF_POV's finish in POV-Ray's own terms (as scene/finish.h holds it), and what glows. */
 typedef struct bsdf_pov_finish_spec {
-	float diffuse;		   /* Kd */
+	float diffuse;		   /* Kd of the Lambert lobe paths carry */
+	/* POV-Ray's brilliance b less 1 (0: none, so that a zeroed spec has none). Under another b,
+	 * light sources light the diffuse by POV-Ray's Kd' cos^b (bsdf_pov.h), Kd' = diffuse (b + 1) / 2. */
+	float brilliance_less_1;
 	float specular, roughness; /* Ks, POV-Ray's roughness (the Blinn exponent is 1 / roughness) */
 	float phong, phong_size;   /* Kp, the Phong exponent */
 	float metallic;		   /* highlights tinted by the pigment */

@@ -113,9 +113,15 @@ vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi)
 vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	const bsdf_pov_finish_spec *f = &b->pov;
-	if (wo.z <= 0.0f || wi.z <= 0.0f || (f->specular <= 0.0f && f->phong <= 0.0f))
+	bool bright = f->brilliance_less_1 != 0.0f && f->diffuse > 0.0f && f->sss_diffuse <= 0.0f;
+	if (wo.z <= 0.0f || wi.z <= 0.0f || (f->specular <= 0.0f && f->phong <= 0.0f && !bright))
 		return v3s(0.0f);
 	vec3 r = v3s(0.0f);
+	if (bright) { /* POV-Ray's Kd' cos^b beside the Lambert lobe's Kd cos (bsdf_pov.h) */
+		float bm1 = f->brilliance_less_1, full = f->diffuse * 0.5f * (bm1 + 2.0f);
+		float d = (full * powf(wi.z, bm1) - f->diffuse) * wi.z; /* the cosine POV-Ray's term has */
+		r = v3_madd(r, b->pigment, d);
+	}
 	if (f->specular > 0.0f) { /* trace.cpp ComputeSpecularColour: Ks (N.H)^(1/roughness) */
 		vec3 h = v3_normalize(v3_add(wo, wi));
 		if (h.z > 0.0f)

@@ -2,6 +2,12 @@
  * reasons are doc/language.md's "Finishes" table):
  *   diffuse    Kd * pigment / pi (Lambert). With lights scaled by pi (build_light.c) a surface
  *              under a light of colour C at normal incidence shows Kd * pigment * C, as POV-Ray's.
+ *   brilliance POV-Ray lights the diffuse by Kd' cos^b (trace.cpp ComputeDiffuseColour), which
+ *              reflects Kd' 2 / (b + 1): paths carry the Lambert lobe of that energy, Kd =
+ *              Kd' 2 / (b + 1), and light sources see POV-Ray's Kd' cos^b, the difference
+ *              (Kd' cos^(b-1) - Kd) pigment / pi counted with the highlights (a signed part:
+ *              under POV-Ray's lights, delta lights, the sum is POV-Ray's term exactly; under
+ *              circe's own lights, weighed by MIS, integrator.c keeps the sum at least 0).
  *   specular   POV-Ray's own highlight of light sources (trace.cpp ComputeSpecularColour):
  *              Ks (N.H)^(1/roughness) added under a light without the cosine diffuse has, so the
  *              BSDF is that / (pi cos_i) under a light scaled by pi. As in POV-Ray it reflects light

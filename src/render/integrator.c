@@ -281,7 +281,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		      : render_power_heuristic(light_pdf, lobe_prob * bsdf_pdf(b, wo_local, wi_local));
 	if (w < 1.0f) { /* highlights only light sources show in: no BSDF sample shares them */
 		vec3 hl = bsdf_highlights(b, wo_local, wi_local);
-		fval = v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl);
+		/* at least 0: a brilliance's part of hl is signed (bsdf_pov.h), under a light MIS shares */
+		fval = v3_max(v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl), v3s(0.0f));
 		w = 1.0f;
 	}
 	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);

@@ -199,6 +199,22 @@ static void test_pov_finish(long n)
 		CHECK(fabs(bsdf_eval(&ss, wo, wi).x - want) <= 1e-5 * want + 1e-9, "sss texture's lobes at %g deg: %g, want %g",
 		      th, bsdf_eval(&ss, wo, wi).x, want);
 	}
+	/* brilliance 4 (Kd 0.3 = 0.75 * 2 / (4 + 1), as build_material.c gives POV-Ray's diffuse
+	 * 0.75): light sources see POV-Ray's 0.75 cos^4 pigment (the BSDF times cos pi under the
+	 * scaled light), paths carry the Lambert lobe of the same energy, and the whole, light
+	 * sources' view included, reflects 0.3 pigment: what POV-Ray's cos^4 reflects. */
+	f = pov_spec(0.3f, 0.0f, 0.05f, 0.0f, 40.0f);
+	f.brilliance_less_1 = 3.0f;
+	bsdf_params br = bsdf_pov(&f, v3(0.8f, 0.6f, 0.4f));
+	for (double th = 0; th < 90; th += 15) {
+		vec3 wi = dir_at(th), wo = dir_at(20);
+		wo.x = -wo.x;
+		double c = cos(th * M_PI / 180), want = 0.75 * pow(c, 4) * 0.8;
+		CHECK_NEAR(bsdf_eval_delta_light(&br, wo, wi).x * c * M_PI, want, 1e-5);
+		CHECK_NEAR(bsdf_eval(&br, wo, wi).x * c * M_PI, want, 1e-5);
+		CHECK_NEAR(bsdf_pov_eval_paths(&br, wo, wi).x * M_PI, 0.3 * 0.8, 1e-6);
+	}
+	CHECK_NEAR(albedo_of(&br, dir_at(30)), 0.3 * 0.8, 1e-3);
 }
 
 int main(void)
