@@ -874,7 +874,8 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 			    .sampler = render_sampler_name(o->sampler),
 			    .part = o->part != RENDER_PART_ALL ? render_part_name(o->part) : NULL,
 			    .sss_method = world_sss_method(s->w), .clock = o->clock, .tile = tile[0] ? tile : NULL,
-			    .aovs = o->aovs, .noise_threshold = s->noise_threshold};
+			    .aovs = o->aovs, .noise_threshold = s->noise_threshold,
+			    .working_gamma = s->sc->global.working_gamma};
 	checkpoint_ctx cp = {s->out, &info, &s->d, s->start};
 	int max_level = s->sc->global.max_trace_level;
 	render_job job = {
@@ -900,7 +901,7 @@ static int render_and_write(const render_cli *o, render_state *s, const char *ti
 	}
 	info.interrupted = rs == RENDER_INTERRUPTED;
 	info.render_seconds = seconds_since(&s->start);
-	bool ok = output_write_exr(s->out, &s->f, &info, &s->d) && (!s->png || output_write_png(s->png, &s->f, 0.0f, &s->d));
+	bool ok = output_write_exr(s->out, &s->f, &info, &s->d) && (!s->png || output_write_png(s->png, &s->f, 0.0f, info.working_gamma, &s->d));
 	report_render(o, s, &stats);
 	return !ok ? EXIT_RUNTIME : info.interrupted ? EXIT_INTERRUPTED : EXIT_OK;
 }

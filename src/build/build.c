@@ -17,6 +17,7 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 	if (!assets_open(sc, d)) /* every named file, at its string, before any work */
 		return false;
 	light_set_init(&w->lights);
+	w->working_gamma = sc->global.working_gamma;
 	world_options o = *opt;
 	if (!o.max_memory)
 		o.max_memory = SUBD_DEFAULT_MAX_BYTES;

@@ -55,6 +55,16 @@ const image *world_image(world *w, diag_loc loc, const char *path, image_encodin
 		mem_free(full);
 		return NULL;
 	}
+	/* Colour into POV-Ray's working space (scene/gamma.c): linear^(1/G), as its Parse_Image */
+	double g = w->working_gamma;
+	if (enc == IMAGE_SRGB && g > 0.0 && g != 1.0) {
+		size_t n = (size_t)img->width * (size_t)img->height;
+		for (size_t i = 0; i < n; i++)
+			for (int c = 0; c < 3; c++) {
+				float *v = &img->rgba[i * 4 + (size_t)c];
+				*v = *v > 0.0f ? (float)pow(*v, 1.0 / g) : *v;
+			}
+	}
 	w->images[w->n_images] = img;
 	w->image_paths[w->n_images++] = full;
 	return img;

@@ -244,7 +244,7 @@ static bool colour_operand(parser *p, const colour_form *f, const lang_token *kw
 				  lang_value_kind_name(&o));
 	}
 	if (f->srgb) { /* POV-Ray 3.7 decodes sRGB into its working space (express.cpp Parse_Express's
-			* workingGammaToSRGB): linear^(1/G), which the end of the parse raises back to linear */
+			* workingGammaToSRGB): linear^(1/G), which the written image's r^G makes light again */
 		double g = scene_working_gamma(&p->sc->global, p->version);
 		for (int i = 0; i < 3; i++) {
 			double l = srgb_decode(c->v[i]);

@@ -1905,11 +1905,6 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 				break;
 		if (!p->failed && !d->errors) {
 			sc->global.working_gamma = scene_working_gamma(&sc->global, p->version);
-			if (!scene_apply_working_gamma(sc, sc->global.working_gamma)) {
-				diag_error(d, diag_noloc(), "out of memory");
-				st = LANG_NO_MEMORY;
-				goto done;
-			}
 			scene_resolve_pov_sss(sc, d);
 		}
 		if (p->failed || d->errors)

@@ -8,7 +8,21 @@
 #include "io/image.h"
 
 #include <inttypes.h>
+#include <math.h>
 #include <stdio.h>
+
+/* POV-Ray's working space to light (scene/gamma.c): each of the n RGB triples r, stride floats
+ * apart, becomes r^g (odd in r: a negative light of POV-Ray's stays negative). */
+static void working_to_light(float *rgb, size_t n, size_t stride, double g)
+{
+	if (!(g > 0.0) || g == 1.0)
+		return;
+	for (size_t i = 0; i < n; i++)
+		for (int c = 0; c < 3; c++) {
+			float *v = &rgb[i * stride + (size_t)c];
+			*v = *v > 0.0f ? (float)pow(*v, g) : *v < 0.0f ? -(float)pow(-*v, g) : 0.0f;
+		}
+}
 
 /* Planar copies of the film's channels, freed together. */
 typedef struct planes {
@@ -33,6 +47,7 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 	if (ok) {
 		/* Beauty RGB is read three-wide, then spread to RGBA with A = 1. */
 		film_read(f, FILM_BEAUTY, beauty);
+		working_to_light(beauty, n, 3, info->working_gamma);
 		for (size_t i = n; i-- > 0;) {
 			float r = beauty[i * 3], g = beauty[i * 3 + 1], b = beauty[i * 3 + 2];
 			beauty[i * 4] = r, beauty[i * 4 + 1] = g, beauty[i * 4 + 2] = b, beauty[i * 4 + 3] = 1.0f;
@@ -57,7 +72,7 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 	} else {
 		char seed[32];
 		snprintf(seed, sizeof seed, "%" PRIu64, info->seed);
-		exrfile_attr at[15];
+		exrfile_attr at[16];
 		int na = 0;
 		at[na++] = (exrfile_attr){.name = "software", .kind = EXRFILE_ATTR_STRING, .s = "circe " PACKAGE_VERSION};
 		at[na++] = (exrfile_attr){.name = "circe.scene", .kind = EXRFILE_ATTR_STRING, .s = info->scene_path};
@@ -77,6 +92,9 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 		at[na++] = (exrfile_attr){.name = "circe.interrupted", .kind = EXRFILE_ATTR_INT, .i = info->interrupted};
 		if (info->tile)
 			at[na++] = (exrfile_attr){.name = "circe.tile", .kind = EXRFILE_ATTR_STRING, .s = info->tile};
+		if (info->working_gamma > 0.0 && info->working_gamma != 1.0)
+			at[na++] = (exrfile_attr){.name = "circe.working_gamma", .kind = EXRFILE_ATTR_DOUBLE,
+						  .d = info->working_gamma};
 		if (info->noise_threshold > 0.0)
 			at[na++] = (exrfile_attr){.name = "circe.noise_threshold", .kind = EXRFILE_ATTR_DOUBLE,
 						  .d = info->noise_threshold};
@@ -89,7 +107,7 @@ bool output_write_exr(const char *path, const film *f, const output_info *info, 
 	return ok;
 }
 
-bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d)
+bool output_write_png(const char *path, const film *f, float exposure_stops, double working_gamma, diag *d)
 {
 	int w = film_region_width(f), h = film_region_height(f);
 	float *rgb = mem_alloc((size_t)w * (size_t)h, 3 * sizeof(float));
@@ -98,6 +116,7 @@ bool output_write_png(const char *path, const film *f, float exposure_stops, dia
 		return false;
 	}
 	film_read(f, FILM_BEAUTY, rgb);
+	working_to_light(rgb, (size_t)w * (size_t)h, 3, working_gamma);
 	bool ok = png_write(path, w, h, rgb, 3, (size_t)w * 3, exposure_stops, d);
 	mem_free(rgb);
 	return ok;

@@ -33,6 +33,8 @@ typedef struct output_info {
 	const char *tile; /* "I/N" or NULL */
 	unsigned aovs;    /* OUTPUT_AOV_* */
 	double noise_threshold; /* adaptive sampling's; 0: off */
+	/* POV-Ray's working gamma G (scene/gamma.c): the beauty is written as r^G; 0 or 1: as it is */
+	double working_gamma;
 	bool interrupted;
 } output_info;
 
@@ -41,9 +43,10 @@ typedef struct output_info {
  * software, circe.scene, circe.scene_hash, circe.seed, circe.sampler, circe.spp (samples completed in every pixel
  * adaptive sampling did not stop), circe.sss, circe.clock, circe.render_time_s,
  * circe.dropped_samples, circe.interrupted, circe.tile when set, circe.noise_threshold when
- * adaptive and circe.part for a part of the light. */
+ * adaptive, circe.part for a part of the light and circe.working_gamma when it is not 1. */
 bool output_write_exr(const char *path, const film *f, const output_info *info, diag *d);
-/* Writes the beauty of f as an 8-bit sRGB PNG (atomically), exposure in stops. */
-bool output_write_png(const char *path, const film *f, float exposure_stops, diag *d);
+/* Writes the beauty of f as an 8-bit sRGB PNG (atomically), exposure in stops, working_gamma as
+ * output_info's. */
+bool output_write_png(const char *path, const film *f, float exposure_stops, double working_gamma, diag *d);
 
 #endif

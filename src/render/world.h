@@ -118,6 +118,7 @@ struct world {
 	world_material *materials;
 	size_t n_materials;
 	image **images;         /* every texture loaded, once per path (stable addresses) */
+	double working_gamma;   /* POV-Ray's G (scene/gamma.c): colour images are raised to 1/G */
 	char **image_paths;
 	size_t n_images;
 	pattern_prog patterns;  /* every material's pigment, compiled (build_pattern.c) */

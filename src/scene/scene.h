@@ -289,7 +289,8 @@ typedef struct scene_global {
 	int max_trace_level; /* default 5 */
 	double assumed_gamma; /* default 1 */
 	bool assumed_gamma_set; /* written: POV-Ray's explicit gamma mode (else its #version decides) */
-	double working_gamma; /* the gamma the parse raised the scene's colours by (scene_apply_working_gamma) */
+	double working_gamma; /* POV-Ray's working gamma G (scene/gamma.c): images read as colour are
+			       * raised to 1/G, the image written as r^G; 1 for circe's scenes */
 	double noise_threshold; /* adaptive sampling's (render --noise-threshold); 0: off, the default */
 	vec3 ambient_light; /* default 1: scales every explicit finish ambient (scene/finish.h) */
 	/* global_settings { subsurface { samples D, S  radiosity B } }: POV-Ray's switch for its
@@ -415,11 +416,6 @@ bool scene_color_finalise(scene *s, diag *d, diag_loc loc, const char *what, sce
  * gamma handling: the numbers go to the display as they are, a gamma of about 2.2), else 1. */
 #define SCENE_LEGACY_GAMMA 2.2
 double scene_working_gamma(const scene_global *g, double version);
-/* Raises every colour of the scene (lights, background, fog, sky, materials' pigments, finish
- * and interior colours, media emission) to c^g once the parse ends (scene/gamma.c; doc/language.md
- * "assumed_gamma"): circe's linear rendering of a scene written in POV-Ray's working space of gamma g.
- * Images, filter, transmit, normals and coefficients are left as they are. False when memory runs out. */
-bool scene_apply_working_gamma(scene *s, double g);
 
 /* POV-Ray's subsurface switch, once the whole scene is read: each texture whose finish has
  * subsurface { } becomes a pov_sss texture (its interior's ior, or 1 as POV-Ray's atmosphere,
