@@ -8,6 +8,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 
 #define WALK_PI 3.14159265358979323846
 
@@ -211,8 +212,8 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	gd.nu = nu;
 	gd.log_nu = log((nu + 1.0) / (nu - 1.0));
 	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic.
-	 * The classic share of 1/2 shrinks as WALK_FRAC_NU / nu beyond nu = WALK_FRAC_NU (issue
-	 * 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
+	 * The classic share of 1/2 shrinks by the factor WALK_FRAC_NU / nu beyond nu =
+	 * WALK_FRAC_NU (issue 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
 	 * a stretch 1 - mu / nu), so the mixture's weights stay near 1 with little of the classic
 	 * strategy, and each step's pull to the surface, weak there, is not halved. */
 	gd.frac = 1.0 - fmax(0.5 * fmin(1.0, WALK_FRAC_NU / nu), pow(fabs(m->g), 0.125));
