@@ -1,7 +1,8 @@
 /* walkbench: the volume walk's cost and noise, classic against Dwivedi-guided (src/sss/README.md,
  * "Guided sampling"), on circe's three SSS media (skin = skin1, wax = the wax block's artist
  * defaults, marble) in a box of mm: a deep slab (200 mm, semi-infinite for the walk: the light
- * reflected) and a 3 mm sheet (the light transmitted, what a back-lit ear shows), entered at
+ * reflected), a 3 mm sheet (the light transmitted, what a back-lit ear shows) and a 30 mm slab
+ * (reflected: bench/sss's marble slab), entered at
  * normal incidence in the middle of the top face. Per medium and geometry: walks per
  * second, interactions per walk, the walks that reached the step bound, the mean and standard
  * error of the light leaving (red, green, blue) and the efficiency ratio guided / classic,
@@ -76,14 +77,16 @@ int main(int argc, char **argv)
 		{"wax", {.albedo = {0.95f, 0.78f, 0.45f}, .radius_mm = {2.0f, 1.2f, 0.6f}, .has = SSS_HAS_ALBEDO | SSS_HAS_RADIUS}, 1.45},
 		{"marble", {.preset = "marble"}, 1.5},
 	};
-	const double depth[] = {200.0, 3.0};
+	/* the deep slab and the 30 mm one (the bench's marble slab) reflect, the sheet transmits */
+	const double depth[] = {200.0, 3.0, 30.0};
+	const char *geometry[] = {"slab 200 mm, reflected", "sheet 3 mm, transmitted", "slab 30 mm, reflected"};
 	printf("| medium | geometry | walk | walks/s | interactions | dropped | R | G | B | efficiency guided / classic: "
 	       "time | interactions |\n");
 	printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
 	for (int k = 0; k < 3; k++) {
 		sss_medium md;
 		sss_medium_derive(&media[k].spec, media[k].ior, &md);
-		for (int d = 0; d < 2; d++) {
+		for (int d = 0; d < 3; d++) {
 			mesh me;
 			if (!prim_box(v3(-400, -400, (float)-depth[d]), v3(400, 400, 0), &me))
 				return 1;
@@ -96,7 +99,7 @@ int main(int argc, char **argv)
 				if (!sss_walk_medium_from_reduced(&m, md.sigma_s_per_mm, md.sigma_a_per_mm, 0.0, media[k].ior, 1.0))
 					return 1;
 				m.classic = classic;
-				r[classic] = walk_many(&m, &pr, n, max_steps, d ? (float)-depth[d] : 0.0f);
+				r[classic] = walk_many(&m, &pr, n, max_steps, d == 1 ? (float)-depth[d] : 0.0f);
 			}
 			for (int classic = 1; classic >= 0; classic--) {
 				const run *x = &r[classic];
@@ -107,7 +110,7 @@ int main(int argc, char **argv)
 						 (r[1].lum_var * r[1].steps) / (r[0].lum_var * r[0].steps));
 				}
 				printf("| %s | %s | %s | %.0f | %.1f | %ld | %.4f ± %.4f | %.4f ± %.4f | %.4f ± %.4f | %s | %s |\n",
-				       media[k].name, d ? "sheet 3 mm, transmitted" : "slab 200 mm, reflected", classic ? "classic" : "guided",
+				       media[k].name, geometry[d], classic ? "classic" : "guided",
 				       x->n / x->seconds, x->steps, x->dropped, x->mean[0], x->se[0], x->mean[1], x->se[1],
 				       x->mean[2], x->se[2], eff, eff_steps);
 			}

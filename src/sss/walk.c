@@ -8,6 +8,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 
 #define WALK_PI 3.14159265358979323846
 
@@ -185,9 +186,6 @@ typedef struct walk_guide {
  * nothing (no scattering), no absorption at all (nu infinite: the guided densities become the
  * classic ones) or nearly none (nu > WALK_NU_MAX). */
 #define WALK_NU_MAX 1e4
-/* The thickness, in diffusion lengths nu / sigma_ref, over which the guided fraction fades in
- * (1 - e^{-thickness / WALK_THIN_NU}). */
-#define WALK_THIN_NU 4.0
 #define WALK_NU_MIN (1.0 + 1e-6)
 /* Above this nu (albedo about 0.98) the classic strategy's share falls as WALK_FRAC_NU / (2 nu). */
 #define WALK_FRAC_NU 4.0
@@ -211,8 +209,8 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	gd.nu = nu;
 	gd.log_nu = log((nu + 1.0) / (nu - 1.0));
 	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic.
-	 * The classic share of 1/2 shrinks as WALK_FRAC_NU / nu beyond nu = WALK_FRAC_NU (issue
-	 * 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
+	 * The classic share of 1/2 shrinks by the factor WALK_FRAC_NU / nu beyond nu =
+	 * WALK_FRAC_NU (issue 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
 	 * a stretch 1 - mu / nu), so the mixture's weights stay near 1 with little of the classic
 	 * strategy, and each step's pull to the surface, weak there, is not halved. */
 	gd.frac = 1.0 - fmax(0.5 * fmin(1.0, WALK_FRAC_NU / nu), pow(fabs(m->g), 0.125));
@@ -362,11 +360,10 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			last_scale = fmax(last_scale, (double)h.scale);
 		if (gd.on && res.steps == 0) { /* the far side below the entry (Cycles' opposite interface) */
 			gd.far = fmax(0.0, -(double)v3_dot(v3_sub(h.p, gd.x), gd.n));
-			/* guiding shortens walks that would wander deep; in a layer a few diffusion
-			 * lengths thick none can, and the forward guide only pulls walks away from
-			 * the far side (bench/sss walkbench: a 3 mm sheet's transmission 0.74-0.91x
-			 * as efficient at a fraction of 1/2): fade the fraction with the thickness */
-			gd.frac *= -expm1(-gd.far * gd.sigma_ref / (WALK_THIN_NU * gd.nu));
+			/* (the guided fraction faded with this thickness until issue 21's second pass,
+			 * 1 - e^{-far sigma_ref / (4 nu)}: with the backward guide and the higher
+			 * fraction of bright media the fade cost efficiency in every layer walkbench
+			 * measures, 3 and 30 mm of skin, wax and marble; src/sss/README.md) */
 		}
 		double scale = fmax(h.scale, fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z))));
 		double cos_n = fmax(1e-6, fabs((double)v3_dot(w, h.ng)));
