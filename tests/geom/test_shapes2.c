@@ -581,6 +581,42 @@ static bool fn_fails(const void *ctx, const double *q, double *out)
 
 static double sphere_dist(const void *ctx, dvec3 p) { return fabs(d3_length(p) - *(const double *)ctx); }
 
+/* fn_sphere counting its calls (the octree test). */
+static unsigned long sphere_calls;
+static bool fn_sphere_counted(const void *ctx, const double *q, double *out)
+{
+	sphere_calls++;
+	return fn_sphere(ctx, q, out);
+}
+
+/* field.c's octree: with max_gradient the grid's blocks far from the surface are not sampled, and
+ * the mesh is exactly the one of every point sampled (a max_gradient so large that no block is
+ * ever skipped), in fewer calls of the function. */
+static void test_isosurface_octree(void)
+{
+	double r = 0.6;
+	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere_counted, .fn_ctx = &r, .fn_name = "sphere",
+			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
+	shape_accuracy acc = {1e-3, 64};
+	mesh a = {0}, b = {0};
+	double ta, tb;
+	sphere_calls = 0;
+	CHECK(shape_tessellate(&s, &acc, &a, &ta, &d, diag_noloc()), "octree sphere");
+	unsigned long ca = sphere_calls;
+	s.max_gradient = 1e12;
+	sphere_calls = 0;
+	CHECK(shape_tessellate(&s, &acc, &b, &tb, &d, diag_noloc()), "every point");
+	unsigned long cb = sphere_calls;
+	CHECK(a.num_triangles == b.num_triangles && a.num_vertices == b.num_vertices, "octree %u triangles, every point %u",
+	      a.num_triangles, b.num_triangles);
+	bool same = a.num_vertices == b.num_vertices && a.num_triangles == b.num_triangles &&
+		    !memcmp(a.positions, b.positions, a.num_vertices * sizeof *a.positions) &&
+		    !memcmp(a.indices, b.indices, 3 * (size_t)a.num_triangles * sizeof *a.indices);
+	CHECK(same && ta == tb, "the octree's mesh is every point's (distance %g against %g)", ta, tb);
+	CHECK(ca < cb - cb / 20, "the octree called the function %lu times, every point %lu", ca, cb);
+	mesh_free(&a), mesh_free(&b);
+}
+
 /* The distance of p to the boundary of (ball of radius r) cut by the box [-1, 1]^3. */
 static double cut_ball_dist(const void *ctx, dvec3 p)
 {
@@ -784,6 +820,7 @@ int main(void)
 	test_text();
 	test_bicubic();
 	test_isosurface();
+	test_isosurface_octree();
 	test_parametric();
 	test_julia();
 	test_limit();
