@@ -55,6 +55,25 @@ static size_t open_edges(const mesh *m)
 	return bad;
 }
 
+/* The directed edges of m (by position) whose reverse is not in m as often as they are: a closed
+ * surface has none, even where it touches itself along an edge (four faces there). */
+static size_t unpaired_edges(const mesh *m)
+{
+	size_t n = 3 * (size_t)m->num_triangles, bad = 0;
+	edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
+	for (uint32_t t = 0; t < m->num_triangles; t++)
+		for (int k = 0; k < 3; k++) {
+			vec3 a = m->positions[m->indices[3 * t + k]], b = m->positions[m->indices[3 * t + (k + 1) % 3]];
+			a = v3_add(a, v3s(0)), b = v3_add(b, v3s(0));
+			e[3 * t + k] = (edge){a, b}, r[3 * t + k] = (edge){b, a};
+		}
+	qsort(e, n, sizeof *e, ecmp), qsort(r, n, sizeof *r, ecmp);
+	for (size_t i = 0; i < n; i++)
+		bad += ecmp(&e[i], &r[i]) != 0;
+	free(e), free(r);
+	return bad;
+}
+
 /* The connected pieces of the mesh, its vertices welded by position (union-find). */
 static int find(int *par, int x)
 {
@@ -308,6 +327,12 @@ static void test_prism(void)
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "crossing sub-polygons");
 	CHECK_NEAR(volume(&m), 2 * 6, 1e-4);
 	CHECK(flipped_normals(&m) == 0, "even-odd prism normals: %zu flipped", flipped_normals(&m));
+	/* closed: caps and walls share every vertex (no T-junction), every edge has its reverse; the
+	 * two vertical lines where the squares cross are the only edges of four faces (the region
+	 * touches itself there: 2 x 2 duplicates) */
+	CHECK(unpaired_edges(&m) == 0, "even-odd prism closed: %zu unpaired edges", unpaired_edges(&m));
+	CHECK(open_edges(&m) == 4, "even-odd prism: %zu edges of more than two faces, want the crossings' 4",
+	      open_edges(&m));
 	/* nothing of the mesh inside the hole [1, 2]^2 but its walls */
 	bool hole_empty = true;
 	for (uint32_t t = 0; t < m.num_triangles; t++) {
