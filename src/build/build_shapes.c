@@ -324,6 +324,8 @@ static image_format file_format(const char *path, int *depth, int *colour)
 static bool build_height_field(const scene_geom *g, const shape_accuracy *a, mesh *m, diag *d)
 {
 	const scene_height_field *h = &g->u.height_field;
+	if (h->heights) /* a function's field: its heights, computed by the parser */
+		return shape_height_field(h->heights, h->fn_w, h->fn_h, h->smooth, h->water_level, a, m, d, g->loc);
 	image img;
 	if (!image_load_limited(h->path, IMAGE_RAW, (size_t)a->max_triangles * 16, &img, d)) {
 		diag_note(d, h->path_loc, "the height field's image was named here");
