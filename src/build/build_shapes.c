@@ -117,6 +117,22 @@ static bbox box_map(const double m[3][4], bbox b)
 	return r;
 }
 
+/* A plane's solid n . p <= d (its inverse: n . p >= d), bounded on one side when n is along an
+ * axis; all of space otherwise. */
+static bbox plane_box(const scene_geom *g, bool inverse)
+{
+	dvec3 n = g->u.plane.normal;
+	double len = d3_length(n);
+	bbox b = box_all();
+	for (int a = 0; a < 3; a++) {
+		double na = comp(n, a);
+		if (len > 0.0 && fabs(na) >= (1.0 - 1e-12) * len)
+			b = (na > 0) != inverse ? (bbox){b.lo, with(b.hi, a, g->u.plane.offset * len / na)}
+						: (bbox){with(b.lo, a, g->u.plane.offset * len / na), b.hi};
+	}
+	return b;
+}
+
 /* The box of an object's solid in its own space (all of space where circe cannot tell). */
 static bbox own_box(const world *w, const scene_geom *g)
 {
@@ -129,18 +145,8 @@ static bbox own_box(const world *w, const scene_geom *g)
 		bbox b = {g->u.box.corner1, g->u.box.corner1};
 		return box_join(b, (bbox){g->u.box.corner2, g->u.box.corner2});
 	}
-	case SHAPE_PLANE: { /* n . p <= d: bounded on one side when n is along an axis */
-		dvec3 n = g->u.plane.normal;
-		double len = d3_length(n);
-		bbox b = box_all();
-		for (int a = 0; a < 3; a++) {
-			double na = comp(n, a);
-			if (len > 0.0 && fabs(na) >= (1.0 - 1e-12) * len)
-				b = na > 0 ? (bbox){b.lo, with(b.hi, a, g->u.plane.offset * len / na)}
-					   : (bbox){with(b.lo, a, g->u.plane.offset * len / na), b.hi};
-		}
-		return b;
-	}
+	case SHAPE_PLANE:
+		return plane_box(g, false);
 	case SHAPE_POLYGON: {
 		bbox b = box_none();
 		for (uint32_t i = 0; i < g->u.polygon.n; i++)
@@ -184,6 +190,18 @@ static bool inverted_below(const scene_object *q, uint32_t k)
 	return false;
 }
 
+/* Whether q is a plane turned inside out by its own `inverse` alone below CSG depth k (its solid
+ * is then the other half-space: `plane { x, -30 inverse }` bounds x from below). */
+static bool inverse_plane(const scene_object *q, uint32_t k)
+{
+	if (!q->inverse || q->geom->kind != SHAPE_PLANE)
+		return false;
+	for (uint32_t j = k + 1; j < q->csg_depth; j++)
+		if (q->csg[j].inverse)
+			return false;
+	return true;
+}
+
 /* The box (in o's shape's own space) that o's CSG solid confines o's surface to: at each
  * intersection on its path the boxes of the other operands, at each difference where o is
  * subtracted the first operand's (an operand's box: the join of its objects', all of space where
@@ -218,7 +236,9 @@ static bbox context_box(const world *w, const scene *sc, const scene_object *o)
 					continue;
 				any = true;
 				xform rel = xform_then(q->transform, back);
-				b = box_join(b, inverted_below(q, k) ? box_all() : box_map(rel.m, own_box(w, q->geom)));
+				b = box_join(b, !inverted_below(q, k)	 ? box_map(rel.m, own_box(w, q->geom))
+						: inverse_plane(q, k) ? box_map(rel.m, plane_box(q->geom, true))
+									: box_all());
 			}
 			if (any)
 				ctx = box_meet(ctx, b);
@@ -304,6 +324,8 @@ static image_format file_format(const char *path, int *depth, int *colour)
 static bool build_height_field(const scene_geom *g, const shape_accuracy *a, mesh *m, diag *d)
 {
 	const scene_height_field *h = &g->u.height_field;
+	if (h->heights) /* a function's field: its heights, computed by the parser */
+		return shape_height_field(h->heights, h->fn_w, h->fn_h, h->smooth, h->water_level, a, m, d, g->loc);
 	image img;
 	if (!image_load_limited(h->path, IMAGE_RAW, (size_t)a->max_triangles * 16, &img, d)) {
 		diag_note(d, h->path_loc, "the height field's image was named here");
@@ -328,22 +350,50 @@ static bool build_height_field(const scene_geom *g, const shape_accuracy *a, mes
 	return ok;
 }
 
-/* A polynomial surface (a poly, a quadric that is not an ellipsoid) inside its box: an error at
- * the first object that leaves it unbounded; nothing where the box is empty (its CSG keeps none
- * of it). */
-static bool boxed_tessellate(const scene_geom *g, bbox box, const scene_object *unbounded, const shape_accuracy *a,
-			     mesh *m, double *err, diag *d)
+/* How far the scene's box reaches (BUILD_SCENE_BOX_GROWTH times its diagonal beyond it on each
+ * side) where it bounds a polynomial surface nothing else bounds. */
+#define BUILD_SCENE_BOX_GROWTH 1.0
+
+/* The scene's box, world space: the camera, its look_at and every object circe can bound (planes and other
+ * unbounded solids left out), grown by BUILD_SCENE_BOX_GROWTH diagonals on each side (at least a
+ * unit). POV-Ray's unbounded quadric or poly is infinite; circe's mesh ends there. */
+static bbox scene_box(const world *w, const scene *sc)
+{
+	bbox b = box_none();
+	if (sc->has_camera) {
+		b = (bbox){sc->camera.location, sc->camera.location};
+		if (sc->camera.has_look_at)
+			b = box_join(b, (bbox){sc->camera.look_at, sc->camera.look_at});
+	}
+	for (size_t i = 0; i < scene_n_objects(sc); i++) {
+		const scene_object *o = scene_object_at(sc, i);
+		bbox ob = own_box(w, o->geom);
+		if (!box_empty(ob) && box_finite(ob))
+			b = box_join(b, box_map(o->transform.m, ob));
+	}
+	if (box_empty(b))
+		b = (bbox){d3(0, 0, 0), d3(0, 0, 0)};
+	double g = fmax(BUILD_SCENE_BOX_GROWTH * d3_length(d3_sub(b.hi, b.lo)), 1.0);
+	return (bbox){d3_sub(b.lo, d3(g, g, g)), d3_add(b.hi, d3(g, g, g))};
+}
+
+/* A polynomial surface (a poly, a quadric that is not an ellipsoid) inside its box; nothing where
+ * the box is empty (its CSG keeps none of it). Where an object leaves it unbounded (`unbounded`:
+ * the first), its box holds the scene's box there (build_shapes), and a warning says so. */
+static bool boxed_tessellate(const world *w, const scene *sc, const scene_geom *g, bbox box,
+			     const scene_object *unbounded, const shape_accuracy *a, mesh *m, double *err, diag *d)
 {
 	const char *what = g->kind == SHAPE_POLY ? g->u.poly.keyword : "quadric";
-	if (unbounded) {
-		diag_error(d, unbounded->loc,
-			   "an unbounded %s (nothing bounds it) is not supported by circe: it polygonises a quadric, cubic, "
-			   "quartic or poly inside its clipped_by or bounded_by, or the bounded objects it is intersected with",
-			   what);
-		if (unbounded->loc.line != g->loc.line || unbounded->loc.col != g->loc.col || unbounded->loc.src != g->loc.src)
-			diag_note(d, g->loc, "the %s was written here", what);
-		return false;
-	}
+	(void)w, (void)sc;
+	if (unbounded)
+		diag_warning(d, unbounded->loc,
+			     "an unbounded %s: circe polygonises it inside the scene's box (the camera and the bounded "
+			     "objects, grown by their size on each side), where POV-Ray's is infinite; bound it "
+			     "(clipped_by, bounded_by, an intersection) to choose",
+			     what);
+	if (unbounded && (unbounded->loc.line != g->loc.line || unbounded->loc.col != g->loc.col ||
+			  unbounded->loc.src != g->loc.src))
+		diag_note(d, g->loc, "the %s was written here", what);
 	memset(m, 0, sizeof *m);
 	if (box_empty(box))
 		return true;
@@ -361,8 +411,8 @@ static bool boxed_tessellate(const scene_geom *g, bbox box, const scene_object *
 
 /* Tessellates g at the accuracy a; *err receives the bound met (0: exact). A polynomial surface
  * is polygonised in box (unbounded: the first object that leaves it unbounded, or NULL). */
-static bool tessellate(const scene_geom *g, const shape_accuracy *a, bbox box, const scene_object *unbounded, mesh *m,
-		       double *err, diag *d, diag_loc use)
+static bool tessellate(const world *w, const scene *sc, const scene_geom *g, const shape_accuracy *a, bbox box,
+		       const scene_object *unbounded, mesh *m, double *err, diag *d, diag_loc use)
 {
 	*err = 0.0;
 	switch (g->kind) {
@@ -389,14 +439,14 @@ static bool tessellate(const scene_geom *g, const shape_accuracy *a, bbox box, c
 		if (kind == SHAPE_QUADRIC_ELLIPSOID)
 			return true;
 		if (kind == SHAPE_QUADRIC_UNBOUNDED)
-			return boxed_tessellate(g, box, unbounded, a, m, err, d);
+			return boxed_tessellate(w, sc, g, box, unbounded, a, m, err, d);
 		diag_error(d, use, "this quadric has no points: it is empty");
 		if (use.line != g->loc.line || use.col != g->loc.col || use.src != g->loc.src)
 			diag_note(d, g->loc, "the quadric was written here");
 		return false;
 	}
 	case SHAPE_POLY:
-		return boxed_tessellate(g, box, unbounded, a, m, err, d);
+		return boxed_tessellate(w, sc, g, box, unbounded, a, m, err, d);
 	default:
 		return true;
 	}
@@ -416,6 +466,7 @@ bool build_shapes(world *w, const scene *sc, const subd_camera *view, diag *d)
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
+	bbox world_box = scene_box(w, sc);
 	for (size_t i = 0; i < n; i++) {
 		const scene_object *o = scene_object_at(sc, i);
 		if (!is_shape(o->geom->kind))
@@ -426,12 +477,12 @@ bool build_shapes(world *w, const scene *sc, const subd_camera *view, diag *d)
 			if (!first[id])
 				boxes[id] = box_none();
 			b = surface_box(w, sc, o), bp = &b;
-			if (!box_empty(b) && !box_finite(b)) {
+			if (!box_empty(b) && !box_finite(b)) { /* within the scene's box, in the object's space */
 				if (!unbounded[id])
 					unbounded[id] = o;
-			} else {
-				boxes[id] = box_join(boxes[id], b);
+				b = box_meet(b, box_map(o->transform.inv, world_box));
 			}
+			boxes[id] = box_join(boxes[id], b);
 		}
 		double e, er = object_error(o, bp, view, &e);
 		if (!first[id] || er < need[id])
@@ -450,7 +501,7 @@ bool build_shapes(world *w, const scene *sc, const subd_camera *view, diag *d)
 		shape_accuracy a = {.max_error = er, .max_edge = ed, .max_triangles = SHAPE_MAX_TRIANGLES};
 		double err;
 		bbox b = boxed_surface(o->geom) ? boxes[id] : box_all();
-		ok = tessellate(o->geom, &a, b, unbounded[id], &w->geoms[id].m, &err, d, o->loc);
+		ok = tessellate(w, sc, o->geom, &a, b, unbounded[id], &w->geoms[id].m, &err, d, o->loc);
 		world_shape_stat st = {scene_shape_name(o->geom), o->geom->loc, w->geoms[id].m.num_triangles, err, -1};
 		ok = ok && note_shape(w, &st, d);
 	}

@@ -13,8 +13,10 @@
 
 /* Newton steps onto the zero set, each at most a fraction of a cell. */
 #define FIELD_NEWTON_STEPS 4
-/* Regula falsi (Illinois) steps along an edge. */
+/* Regula falsi (Illinois) steps along an edge, at most, and the bracket (a fraction of the edge)
+ * at which they stop. */
 #define FIELD_EDGE_STEPS 12
+#define FIELD_EDGE_TOL 1e-6
 
 typedef struct grid {
 	dvec3 lo;
@@ -84,7 +86,7 @@ static dvec3 edge_root(const shape_field *F, dvec3 pa, double fa, dvec3 pb, doub
 		if (!(t > ta && t < tb))
 			t = 0.5 * (ta + tb);
 		double ft = F->eval(F->ctx, d3_add(pa, d3_scale(ab, t)), NULL);
-		if (ft == 0 || !isfinite(ft))
+		if (ft == 0 || !isfinite(ft) || tb - ta < FIELD_EDGE_TOL)
 			break;
 		if ((ft > 0) == (fa > 0)) {
 			ta = t, fa = ft;
@@ -434,6 +436,80 @@ double shape_field_refine(const shape_field *F, shape_builder *b, double tol, in
 	return w;
 }
 
+/* The octree's blocks, cells a side, at the top. */
+#define FIELD_BLOCK 32
+
+/* One grid point's value (NaN: outside). */
+static float field_point(const shape_field *F, const grid *G, size_t id)
+{
+	double v = F->eval(F->ctx, gpos(G, id), NULL);
+	return isnan(v) ? -1.0f : (float)v;
+}
+
+/* The block of n cells a side from point (i0, j0, k0) (cut at the grid's end): its points not yet
+ * set (done) take the value at the block's centre when F's Lipschitz bound keeps the surface more
+ * than a cell's diagonal from all of them, else its eight halves are filled, down to blocks of
+ * two cells, whose points are evaluated. */
+static void fill_block(const shape_field *F, grid *G, uint8_t *done, uint32_t i0, uint32_t j0, uint32_t k0,
+		       uint32_t n)
+{
+	uint32_t i1 = i0 + n < G->nx - 1 ? i0 + n : G->nx - 1, j1 = j0 + n < G->ny - 1 ? j0 + n : G->ny - 1,
+		 k1 = k0 + n < G->nz - 1 ? k0 + n : G->nz - 1;
+	if (n > 2) {
+		double h = G->h, di = i1 - i0, dj = j1 - j0, dk = k1 - k0;
+		dvec3 c = d3(G->lo.x + h * (i0 + i1) / 2, G->lo.y + h * (j0 + j1) / 2, G->lo.z + h * (k0 + k1) / 2);
+		double r = 0.5 * h * sqrt(di * di + dj * dj + dk * dk), v = F->eval(F->ctx, c, NULL);
+		if (isfinite(v) && fabs(v) > F->lipschitz * (r + h * sqrt(3.0))) {
+			for (uint32_t k = k0; k <= k1; k++)
+				for (uint32_t j = j0; j <= j1; j++)
+					for (uint32_t i = i0; i <= i1; i++) {
+						size_t id = gidx(G, i, j, k);
+						if (!done[id])
+							G->f[id] = (float)v, done[id] = 1;
+					}
+			return;
+		}
+		uint32_t m = n / 2;
+		for (uint32_t q = 0; q < 8; q++) {
+			uint32_t a = i0 + (q & 1) * m, b = j0 + (q >> 1 & 1) * m, e = k0 + (q >> 2 & 1) * m;
+			if (a < i1 && b < j1 && e < k1)
+				fill_block(F, G, done, a, b, e, m);
+		}
+		return;
+	}
+	for (uint32_t k = k0; k <= k1; k++)
+		for (uint32_t j = j0; j <= j1; j++)
+			for (uint32_t i = i0; i <= i1; i++) {
+				size_t id = gidx(G, i, j, k);
+				if (!done[id])
+					G->f[id] = field_point(F, G, id), done[id] = 1;
+			}
+}
+
+/* The grid's values: F's fill, its octree (lipschitz), or every point. False: out of memory. */
+static bool fill_grid(const shape_field *F, grid *G)
+{
+	size_t np = (size_t)G->nx * G->ny * G->nz;
+	if (F->fill) {
+		F->fill(F->ctx, G->lo, G->h, G->nx, G->ny, G->nz, G->f);
+		return true;
+	}
+	if (!(F->lipschitz > 0)) {
+		for (size_t i = 0; i < np; i++)
+			G->f[i] = field_point(F, G, i);
+		return true;
+	}
+	uint8_t *done = mem_calloc(np, 1);
+	if (!done)
+		return false;
+	for (uint32_t k = 0; k + 1 < G->nz; k += FIELD_BLOCK)
+		for (uint32_t j = 0; j + 1 < G->ny; j += FIELD_BLOCK)
+			for (uint32_t i = 0; i + 1 < G->nx; i += FIELD_BLOCK)
+				fill_block(F, G, done, i, j, k, FIELD_BLOCK);
+	mem_free(done);
+	return true;
+}
+
 double shape_field_fit_step(dvec3 ext, double h, size_t max_points)
 {
 	while ((ext.x / h + 3) * (ext.y / h + 3) * (ext.z / h + 3) > (double)max_points)
@@ -454,13 +530,11 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
 		return false;
 	}
-	if (F->fill)
-		F->fill(F->ctx, G.lo, h, G.nx, G.ny, G.nz, G.f);
-	else
-		for (size_t i = 0; i < np; i++) {
-			double v = F->eval(F->ctx, gpos(&G, i), NULL);
-			G.f[i] = isnan(v) ? -1.0f : (float)v; /* NaN: outside */
-		}
+	if (!fill_grid(F, &G)) {
+		mem_free(G.f);
+		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
+		return false;
+	}
 	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
 	size_t crossed = 0;
 	for (uint32_t k = 0; k + 1 < G.nz; k++)

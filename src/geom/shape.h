@@ -170,6 +170,11 @@ typedef struct shape_field {
 	 * away by its CSG) */
 	bool has_region;
 	dvec3 region_lo, region_hi;
+	/* > 0: a bound on |grad eval| (a Lipschitz constant: an isosurface's max_gradient). The grid is
+	 * then filled by an octree: a block whose centre's |value| exceeds lipschitz times (its half
+	 * diagonal + a cell's diagonal) holds no surface within a cell of its points, so its points take
+	 * the centre's value (the right sign) unevaluated. 0: every grid point is evaluated. */
+	double lipschitz;
 } shape_field;
 /* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
  * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).

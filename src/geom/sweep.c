@@ -538,8 +538,50 @@ static int cmp_dbl(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
+/* Where two edges cross, computed once for both: walls and caps meet there at one point. */
+typedef struct pcross {
+	size_t i, j;
+	double x, y;
+} pcross;
+
+/* The x of non-horizontal edge k at height y: exactly its ends' and its crossings' x there, so that
+ * every wall and cap that meets at a point computes the same point. */
+static double edge_x_at(const pedge *e, size_t k, double y, const pcross *cr, size_t nc)
+{
+	if (y == e[k].ay)
+		return e[k].ax;
+	if (y == e[k].by)
+		return e[k].bx;
+	for (size_t c = 0; c < nc; c++)
+		if ((cr[c].i == k || cr[c].j == k) && cr[c].y == y)
+			return cr[c].x;
+	return e[k].ax + (y - e[k].ay) * (e[k].bx - e[k].ax) / (e[k].by - e[k].ay);
+}
+
+/* The points of the outline at height y: every edge's there (a horizontal edge's two ends),
+ * sorted and unique, into out (at most 2 ne); their count. */
+static size_t row_points(const pedge *e, size_t ne, double y, const pcross *cr, size_t nc, double *out)
+{
+	size_t n = 0;
+	for (size_t k = 0; k < ne; k++) {
+		if (e[k].ay == e[k].by) {
+			if (e[k].ay == y)
+				out[n++] = e[k].ax, out[n++] = e[k].bx;
+		} else if (fmin(e[k].ay, e[k].by) <= y && y <= fmax(e[k].ay, e[k].by)) {
+			out[n++] = edge_x_at(e, k, y, cr, nc);
+		}
+	}
+	qsort(out, n, sizeof *out, cmp_dbl);
+	size_t u = 0;
+	for (size_t k = 0; k < n; k++)
+		if (u == 0 || out[k] != out[u - 1])
+			out[u++] = out[k];
+	return u;
+}
+
 typedef struct slab_e {
-	double x0, x1, xm;
+	double xm;
+	size_t k;
 } slab_e;
 
 static int cmp_slab(const void *a, const void *b)
@@ -548,53 +590,108 @@ static int cmp_slab(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
-/* Walls: every edge split where others cross it, each piece facing away from the inside (which
- * side is inside changes at each crossing); caps: the even-odd region cut into trapezoids between
- * the heights of every vertex and crossing. Flat normals (the pieces are not smoothed). */
+/* The even-odd prism (POV-Ray's region of sub-polygons crossing each other) without T-junctions:
+ * every height of a vertex or a crossing cuts the outline into slabs; the walls are split at every
+ * point of the outline at those heights (crossings included), each piece facing away from the
+ * inside (which side is inside changes at each crossing); each slab's inside intervals are capped
+ * by zipping the points of the outline on its two bounding heights, so cap and wall share every
+ * vertex and the mesh is closed. Flat normals (the pieces are not smoothed). */
 static bool prism_evenodd(shape_builder *b, const shape_desc *s, const outline *o, const shape_accuracy *acc, diag *d,
 			  diag_loc loc)
 {
-	size_t ne = o->n_points;
+	size_t ne = o->n_points, nc = 0, cap_c = 0;
 	pedge *e = mem_alloc(ne ? ne : 1, sizeof *e);
-	double *ts = mem_alloc(ne + 2, sizeof *ts);
+	double *row = mem_alloc(2 * ne + 2, sizeof *row), *row2 = mem_alloc(2 * ne + 2, sizeof *row2);
+	slab_e *se = mem_alloc(ne ? ne : 1, sizeof *se);
+	pcross *cr = NULL;
 	vecbuf ys;
 	vecbuf_init(&ys, sizeof(double));
-	bool ok = e && ts;
+	bool ok = e && row && row2 && se;
 	for (uint32_t k = 0, a = 0, n = 0; ok && k < o->n_contours; a += o->counts[k], k++)
 		for (uint32_t i = 0; i < o->counts[k]; i++, n++) {
 			const double *p = &o->xy[2 * (a + i)], *q = &o->xy[2 * (a + (i + 1) % o->counts[k])];
 			e[n] = (pedge){p[0], p[1], q[0], q[1]};
 			ok = vecbuf_push(&ys, &p[1]);
 		}
-	/* the walls, and the heights where edges cross */
-	for (size_t i = 0; ok && i < ne; i++) {
-		size_t nt = 0;
-		ts[nt++] = 0;
-		for (size_t j = 0; j < ne; j++) {
+	/* the crossings, each once: its height from the lower edge (a horizontal edge's own), its x
+	 * from a non-horizontal one */
+	for (size_t i = 0; ok && i < ne; i++)
+		for (size_t j = i + 1; ok && j < ne; j++) {
 			double t, u;
-			if (j != i && seg_cross(&e[i], &e[j], &t, &u)) {
-				if (nt < ne + 1)
-					ts[nt++] = t;
-				if (j > i) {
-					double y = e[i].ay + t * (e[i].by - e[i].ay);
-					ok = ok && vecbuf_push(&ys, &y);
-				}
+			if (!seg_cross(&e[i], &e[j], &t, &u))
+				continue;
+			if (nc == cap_c) {
+				cap_c = cap_c ? 2 * cap_c : 16;
+				pcross *g = mem_realloc(cr, cap_c, sizeof *cr);
+				if (!(ok = g != NULL))
+					break;
+				cr = g;
 			}
+			bool hi = e[i].ay == e[i].by, hj = e[j].ay == e[j].by;
+			double y = hj ? e[j].ay : e[i].ay + t * (e[i].by - e[i].ay);
+			size_t k = hi ? j : i;
+			double x = e[k].ax + (y - e[k].ay) * (e[k].bx - e[k].ax) / (e[k].by - e[k].ay);
+			cr[nc++] = (pcross){i, j, x, y};
+			ok = vecbuf_push(&ys, &y);
 		}
-		ts[nt++] = 1;
-		qsort(ts, nt, sizeof *ts, cmp_dbl);
+	size_t ny = 0;
+	double *y = ok ? (double *)ys.data : NULL;
+	if (ok) {
+		qsort(y, ys.len, sizeof *y, cmp_dbl);
+		for (size_t k = 0; k < ys.len; k++)
+			if (ny == 0 || y[k] != y[ny - 1])
+				y[ny++] = y[k];
+	}
+	/* the triangles, counted first: two a wall piece, and per slab and side the two chains' */
+	size_t tris = 0;
+	for (size_t i = 0; ok && i < ne; i++)
+		for (size_t k = 0; k < ny; k++)
+			tris += 2 * (fmin(e[i].ay, e[i].by) <= y[k] && y[k] <= fmax(e[i].ay, e[i].by));
+	for (size_t k = 0; ok && k < ny; k++)
+		tris += 4 * row_points(e, ne, y[k], cr, nc, row);
+	if (ok && (size_t)b->nt + tris >= SHAPE_MAX_TRIANGLES) {
+		mem_free(e), mem_free(row), mem_free(row2), mem_free(se), mem_free(cr), vecbuf_free(&ys);
+		diag_error(d, loc, "the prism would make more than %u triangles (the limit of one shape)", SHAPE_MAX_TRIANGLES);
+		return false;
+	}
+	/* the walls: each edge through its points at every height it spans (a horizontal edge: the
+	 * outline's points on it), piece by piece */
+	for (size_t i = 0; ok && i < ne; i++) {
 		double dx = e[i].bx - e[i].ax, dy = e[i].by - e[i].ay, len = hypot(dx, dy);
 		if (!(len > 0))
 			continue;
-		for (size_t k = 0; k + 1 < nt; k++) {
-			double t0 = ts[k], t1 = ts[k + 1], tm = 0.5 * (t0 + t1);
-			if (!(t1 > t0))
-				continue;
-			double p0[2] = {e[i].ax + t0 * dx, e[i].ay + t0 * dy}, p1[2] = {e[i].ax + t1 * dx, e[i].ay + t1 * dy};
-			double mx = e[i].ax + tm * dx, my = e[i].ay + tm * dy, nx = dy / len, ny = -dx / len;
+		size_t n = 0;
+		if (dy == 0) {
+			size_t m = row_points(e, ne, e[i].ay, cr, nc, row2);
+			for (size_t k = 0; k < m; k++)
+				if (fmin(e[i].ax, e[i].bx) <= row2[k] && row2[k] <= fmax(e[i].ax, e[i].bx))
+					row[n++] = row2[k];
+			if (dx < 0)
+				for (size_t k = 0; k < n / 2; k++) {
+					double t = row[k];
+					row[k] = row[n - 1 - k], row[n - 1 - k] = t;
+				}
+		} else {
+			for (size_t k = 0; k < ny; k++)
+				if (fmin(e[i].ay, e[i].by) <= y[k] && y[k] <= fmax(e[i].ay, e[i].by))
+					row[n++] = y[k];
+			if (dy < 0)
+				for (size_t k = 0; k < n / 2; k++) {
+					double t = row[k];
+					row[k] = row[n - 1 - k], row[n - 1 - k] = t;
+				}
+		}
+		for (size_t k = 0; k + 1 < n; k++) {
+			double p0[2], p1[2];
+			if (dy == 0)
+				p0[0] = row[k], p0[1] = e[i].ay, p1[0] = row[k + 1], p1[1] = e[i].ay;
+			else
+				p0[0] = edge_x_at(e, i, row[k], cr, nc), p0[1] = row[k], p1[0] = edge_x_at(e, i, row[k + 1], cr, nc),
+				p1[1] = row[k + 1];
+			double mx = 0.5 * (p0[0] + p1[0]), my = 0.5 * (p0[1] + p1[1]), nx = dy / len, nyy = -dx / len;
 			double eps = 1e-7 * (1 + fabs(mx) + fabs(my));
-			bool right_in = evenodd_inside(e, ne, mx + eps * nx, my + eps * ny);
-			dvec3 want = right_in ? d3(-nx, 0, -ny) : d3(nx, 0, ny);
+			bool right_in = evenodd_inside(e, ne, mx + eps * nx, my + eps * nyy);
+			dvec3 want = right_in ? d3(-nx, 0, -nyy) : d3(nx, 0, nyy);
 			dvec3 P1 = prism_point(s, p0, s->h1), Q1 = prism_point(s, p1, s->h1);
 			dvec3 P2 = prism_point(s, p0, s->h2), Q2 = prism_point(s, p1, s->h2);
 			uint32_t v0 = sb_vertex(b, P1, want, 0, 0), v1 = sb_vertex(b, Q1, want, 0, 0);
@@ -605,58 +702,58 @@ static bool prism_evenodd(shape_builder *b, const shape_desc *s, const outline *
 				sb_tri(b, v0, v2, v3, want);
 		}
 	}
-	/* the caps: trapezoids of each slab between consecutive heights, counted first */
-	size_t ny = ys.len;
-	double *y = ok ? (double *)ys.data : NULL;
-	if (ok)
-		qsort(y, ny, sizeof *y, cmp_dbl);
-	size_t cap_tris = 0;
-	for (size_t k = 0; ok && k + 1 < ny; k++) {
-		if (!(y[k + 1] > y[k]))
-			continue;
-		double ym = 0.5 * (y[k] + y[k + 1]);
-		size_t c = 0;
-		for (size_t i = 0; i < ne; i++)
-			c += (e[i].ay > ym) != (e[i].by > ym);
-		cap_tris += 2 * c; /* each inside interval two triangles, two caps */
-	}
-	if (ok && (size_t)b->nt + cap_tris >= SHAPE_MAX_TRIANGLES) {
-		mem_free(e), mem_free(ts), vecbuf_free(&ys);
-		diag_error(d, loc, "the prism would make more than %u triangles (the limit of one shape)", SHAPE_MAX_TRIANGLES);
-		return false;
-	}
-	slab_e *se = ok ? mem_alloc(ne ? ne : 1, sizeof *se) : NULL;
-	ok = ok && se;
+	/* the caps: in each slab, between the crossing edges 2m and 2m + 1 (even-odd), the outline's
+	 * points on the slab's lower and upper heights zipped together */
 	for (size_t k = 0; ok && !s->open && k + 1 < ny; k++) {
 		double ya = y[k], yb = y[k + 1], ym = 0.5 * (ya + yb);
-		if (!(yb > ya))
-			continue;
 		size_t c = 0;
 		for (size_t i = 0; i < ne; i++)
-			if ((e[i].ay > ym) != (e[i].by > ym)) {
-				double sl = (e[i].bx - e[i].ax) / (e[i].by - e[i].ay);
-				se[c++] = (slab_e){e[i].ax + (ya - e[i].ay) * sl, e[i].ax + (yb - e[i].ay) * sl,
-						   e[i].ax + (ym - e[i].ay) * sl};
-			}
+			if ((e[i].ay > ym) != (e[i].by > ym))
+				se[c++] = (slab_e){e[i].ax + (ym - e[i].ay) * (e[i].bx - e[i].ax) / (e[i].by - e[i].ay), i};
 		qsort(se, c, sizeof *se, cmp_slab);
-		for (size_t i = 0; i + 1 < c; i += 2) /* even-odd: between crossings 2k and 2k + 1 */
+		size_t na = row_points(e, ne, ya, cr, nc, row), nb = row_points(e, ne, yb, cr, nc, row2);
+		for (size_t i = 0; i + 1 < c; i += 2) {
+			double a0 = edge_x_at(e, se[i].k, ya, cr, nc), a1 = edge_x_at(e, se[i + 1].k, ya, cr, nc);
+			double b0 = edge_x_at(e, se[i].k, yb, cr, nc), b1 = edge_x_at(e, se[i + 1].k, yb, cr, nc);
+			size_t lo_a = 0, lo_b = 0, hi_a, hi_b;
+			while (lo_a < na && row[lo_a] < a0)
+				lo_a++;
+			for (hi_a = lo_a; hi_a + 1 < na && row[hi_a + 1] <= a1;)
+				hi_a++;
+			while (lo_b < nb && row2[lo_b] < b0)
+				lo_b++;
+			for (hi_b = lo_b; hi_b + 1 < nb && row2[hi_b + 1] <= b1;)
+				hi_b++;
 			for (int side = 0; side < 2; side++) {
 				double h = side ? s->h2 : s->h1;
 				if (s->conic && h == 0)
 					continue;
 				dvec3 up = d3(0, side ? 1 : -1, 0);
-				double q[4][2] = {{se[i].x0, ya}, {se[i + 1].x0, ya}, {se[i + 1].x1, yb}, {se[i].x1, yb}};
-				uint32_t v[4];
-				for (int m = 0; m < 4; m++)
-					v[m] = sb_vertex(b, prism_point(s, q[m], h), up, 0, 0);
-				if (se[i + 1].x0 > se[i].x0)
-					sb_tri(b, v[0], v[1], v[2], up);
-				if (se[i + 1].x1 > se[i].x1)
-					sb_tri(b, v[0], v[2], v[3], up);
+				size_t ia = lo_a, ib = lo_b;
+				while (ia < hi_a || ib < hi_b) {
+					/* the chain whose next point lies less far along its side (any
+					 * monotone order tiles the trapezoid; this one keeps triangles fat) */
+					bool step_a = ib == hi_b || (ia < hi_a && (row[ia + 1] - a0) * (b1 - b0) <=
+										       (row2[ib + 1] - b0) * (a1 - a0));
+					double pa[2] = {row[ia], ya}, pb[2] = {row2[ib], yb}, pn[2];
+					if (step_a)
+						pn[0] = row[ia + 1], pn[1] = ya;
+					else
+						pn[0] = row2[ib + 1], pn[1] = yb;
+					uint32_t v0 = sb_vertex(b, prism_point(s, pa, h), up, 0, 0);
+					uint32_t v1 = sb_vertex(b, prism_point(s, pn, h), up, 0, 0);
+					uint32_t v2 = sb_vertex(b, prism_point(s, pb, h), up, 0, 0);
+					sb_tri(b, v0, v1, v2, up);
+					if (step_a)
+						ia++;
+					else
+						ib++;
+				}
 			}
+		}
 	}
 	(void)acc;
-	mem_free(se), mem_free(e), mem_free(ts), vecbuf_free(&ys);
+	mem_free(e), mem_free(row), mem_free(row2), mem_free(se), mem_free(cr), vecbuf_free(&ys);
 	if (!ok) {
 		diag_error(d, loc, "out of memory while tessellating the prism");
 		return false;

@@ -945,9 +945,21 @@ static bool spline_block(parser *p, const lang_spline **out)
 
 /* function = "function" [ params ] "{" ( expression | internal | "transform" "{" ... "}"
  *          | spline | "pattern" "{" ... "}" | "pigment" "{" ... "}" ) "}" */
+static bool function_rest(parser *p, const lang_token *self, lang_token kw, value *out);
+
 static bool function_value(parser *p, const lang_token *self, value *out)
 {
-	lang_token kw = *lang_advance(p);
+	return function_rest(p, self, *lang_advance(p), out);
+}
+
+bool lang_func_body(parser *p, lang_token kw, value *out)
+{
+	return function_rest(p, NULL, kw, out);
+}
+
+/* A function after its keyword kw (consumed): its parameters or none, its body in braces. */
+static bool function_rest(parser *p, const lang_token *self, lang_token kw, value *out)
+{
 	lang_function *f = new_function(p, self, LANG_FN_CODE);
 	if (!f)
 		return lang_error(p, kw.loc, "out of memory");

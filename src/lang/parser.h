@@ -279,6 +279,9 @@ void lang_forget(parser *p, const char *name, size_t len);
 /* The value of `function ...` or `spline { ... }` (the lookahead); name: the identifier being
  * declared (its use in the body is recursion, refused), or NULL. */
 bool lang_func_value(parser *p, const lang_token *name, value *out);
+/* A function's parameters and body after its `function` keyword kw, read by the caller (the
+ * height field's `function W, H { ... }`). */
+bool lang_func_body(parser *p, lang_token kw, value *out);
 /* A call NAME "(" args ")" of fv, a VAL_FUNCTION or VAL_SPLINE (the lookahead is '('). */
 bool lang_func_call(parser *p, const lang_token *name, const value *fv, value *out);
 /* The function pattern's `function { expression }` (the lookahead is `function`): a float

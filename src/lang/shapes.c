@@ -3,6 +3,7 @@
  * POV-Ray's syntax (Parse_Comma: commas between the parameters optional) and defaults. Each makes
  * one geometry record (scene.h) and its object, with the common modifiers (stmt.c). */
 #include "lang/parser.h"
+#include "lang/func.h"
 
 #include <math.h>
 #include <string.h>
@@ -207,8 +208,59 @@ static bool superellipsoid(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return lang_place_object(p, out, g, kw, open, "superellipsoid");
 }
 
-/* height_field = "height_field" "{" [ "png" | "exr" | "jpeg" ] string { "smooth" | "water_level" float }
- *                { modifier } "}"   (POV-Ray's other image types are not supported) */
+/* The most points a height field's function may have (its grid: two triangles a cell). */
+#define LANG_HF_FUNCTION_MAX_POINTS (1u << 22)
+
+/* A 16-bit image channel as POV-Ray stores a function image's value (clamped, rounded). */
+static double hf_channel(double v)
+{
+	return floor(fmin(fmax(v, 0.0), 1.0) * 65535.0 + 0.5) / 65535.0;
+}
+
+/* `function W, H { ... }` after its keyword kw: POV-Ray's function image (parser_materials.cpp
+ * Make_Pattern_Image: the function at <i / (W - 1), j / (H - 1), 0> for pixel column i and row j,
+ * 16-bit grey; a colour function (a pigment's) as a 16-bit colour image, whose height is its grey
+ * 0.297 r + 0.589 g + 0.114 b) read as the field reads an image: row z = 0 is the image's last. */
+static bool hf_function(parser *p, scene_height_field *h, lang_token kw)
+{
+	double w, hh;
+	diag_loc wl = lang_peek(p)->loc;
+	TRY(lang_float(p, "as the height field function's width", &w));
+	lang_accept(p, LTK_COMMA);
+	TRY(lang_float(p, "as the height field function's height", &hh));
+	long W = (long)(w + 0.5), H = (long)(hh + 0.5);
+	if (!(W >= 2 && H >= 2) || (double)W * (double)H > LANG_HF_FUNCTION_MAX_POINTS)
+		return lang_error(p, wl, "a height field function's size must be at least 2 x 2 and at most %u points, found %ld x %ld",
+				  LANG_HF_FUNCTION_MAX_POINTS, W, H);
+	value v;
+	diag_loc fl = lang_peek(p)->loc;
+	TRY(lang_func_body(p, kw, &v));
+	const lang_function *f = v.fn;
+	if (f->n_params != 3 || (f->n_out != 1 && f->n_out != 5))
+		return lang_error(p, fl, "a height field's function must give a float or a colour of x, y and z: '%s' takes %d "
+					 "parameter%s and gives %d value%s",
+				  f->name, f->n_params, f->n_params == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s");
+	float *z = arena_alloc(&p->sc->arena, (size_t)W * (size_t)H, sizeof *z, sizeof(float));
+	if (!z)
+		return lang_error(p, fl, "out of memory for the height field's %ld x %ld points", W, H);
+	for (long j = 0; j < H; j++)
+		for (long i = 0; i < W; i++) {
+			double a[3] = {(double)i / (double)(W - 1), (double)j / (double)(H - 1), 0}, r[5] = {0};
+			const lang_function *failed = NULL;
+			if (!lang_fn_eval(f, a, r, &failed))
+				return lang_fn_report(p, fl, failed);
+			double g = f->n_out == 1 ? hf_channel(r[0])
+						 : 0.297 * hf_channel(r[0]) + 0.589 * hf_channel(r[1]) + 0.114 * hf_channel(r[2]);
+			/* circe's field reads an image's grey as floor(g * 65535) / 65536 (build_shapes.c) */
+			z[(size_t)(H - 1 - j) * (size_t)W + (size_t)i] = (float)(floor(g * 65535.0 + 1e-6) / 65536.0);
+		}
+	h->heights = z, h->fn_w = (uint32_t)W, h->fn_h = (uint32_t)H;
+	return true;
+}
+
+/* height_field = "height_field" "{" ( [ "png" | "exr" | "jpeg" ] string | "function" float [","] float
+ *                "{" function body "}" ) { "smooth" | "water_level" float } { modifier } "}"
+ * (POV-Ray's other image types are not supported) */
 static bool height_field(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	scene_geom *g;
@@ -218,7 +270,10 @@ static bool height_field(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	if (k == LTK_KW_PNG || k == LTK_KW_EXR || k == LTK_KW_JPEG)
 		lang_advance(p);
 	h->path_loc = lang_peek(p)->loc;
-	TRY(lang_asset_path(p, "as the height field's image file", SCENE_ASSET_IMAGE, &h->path));
+	if (k == LTK_KW_FUNCTION)
+		TRY(hf_function(p, h, *lang_advance(p)));
+	else
+		TRY(lang_asset_path(p, "as the height field's image file", SCENE_ASSET_IMAGE, &h->path));
 	for (;;) {
 		diag_loc wl;
 		if (lang_accept(p, LTK_KW_SMOOTH)) {

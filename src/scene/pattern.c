@@ -130,14 +130,36 @@ dvec3 pattern_crackle_point(int x, int y, int z)
 	return d3(x + hash_unit(h), y + hash_unit(h * 0x9e3779b9u + 1u), z + hash_unit(h * 0x85ebca6bu + 2u));
 }
 
-/* A distance under crackle's metric m before its root: |d|^2 summed for 2, |d| for 1, |d|^m. */
-static double metric_sum(dvec3 d, double m)
+/* |a|^m for crackle's metric, without pow where m is 1, 1.5, 2 or 3. */
+static inline double metric_pow(double a, double m)
+{
+	a = fabs(a);
+	if (m == 2.0)
+		return a * a;
+	if (m == 1.0)
+		return a;
+	if (m == 3.0)
+		return a * a * a;
+	if (m == 1.5)
+		return a * sqrt(a);
+	return pow(a, m);
+}
+
+/* A distance under crackle's metric m before its root: |d|^2 summed for 2, |d| for 1, |d|^m; a
+ * sum known to be at least `above` (the third nearest so far) stops there: it is not among them. */
+static double metric_sum(dvec3 d, double m, double above)
 {
 	if (m == 2.0)
 		return d.x * d.x + d.y * d.y + d.z * d.z;
 	if (m == 1.0)
 		return fabs(d.x) + fabs(d.y) + fabs(d.z);
-	return pow(fabs(d.x), m) + pow(fabs(d.y), m) + pow(fabs(d.z), m);
+	double s = metric_pow(d.x, m);
+	if (s >= above)
+		return s;
+	s += metric_pow(d.y, m);
+	if (s >= above)
+		return s;
+	return s + metric_pow(d.z, m);
 }
 
 /* POV-Ray 3.7's CracklePattern::EvaluateRaw: one feature point per unit cube; the three nearest
@@ -150,20 +172,36 @@ static double crackle(dvec3 p, const pattern_node *n)
 	int cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
 	double m = n->crackle_metric, d[3] = {1e300, 1e300, 1e300};
 	dvec3 nearest = d3(0, 0, 0);
-	for (int i = -2; i <= 2; i++)
-		for (int j = -2; j <= 2; j++)
-			for (int k = -2; k <= 2; k++) {
-				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
-					continue;
-				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k);
-				double s = metric_sum(d3_sub(f, p), m);
-				if (s < d[0])
-					d[2] = d[1], d[1] = d[0], d[0] = s, nearest = f;
-				else if (s < d[1])
-					d[2] = d[1], d[1] = s;
-				else if (s < d[2])
-					d[2] = s;
-			}
+	/* The 27 nearest cubes first, then the 54 beyond; a cube whose gap to p along one axis is at
+	 * least the third distance so far (under the metric's root, reach) cannot hold one of the
+	 * three nearest points and is skipped unhashed (its point lies inside it). The three nearest
+	 * are those of every order but for exact ties. */
+	double reach = INFINITY;
+	for (int pass = 0; pass < 2; pass++)
+		for (int i = -2; i <= 2; i++)
+			for (int j = -2; j <= 2; j++)
+				for (int k = -2; k <= 2; k++) {
+					int twos = (abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2);
+					if (twos > 1 || (twos > 0) != (pass > 0))
+						continue;
+					double gi = i > 0 ? cx + i - p.x : i < 0 ? p.x - (cx + i + 1) : 0.0;
+					double gj = j > 0 ? cy + j - p.y : j < 0 ? p.y - (cy + j + 1) : 0.0;
+					double gk = k > 0 ? cz + k - p.z : k < 0 ? p.z - (cz + k + 1) : 0.0;
+					if (gi >= reach || gj >= reach || gk >= reach)
+						continue;
+					dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k);
+					double s = metric_sum(d3_sub(f, p), m, d[2]);
+					if (s >= d[2])
+						continue;
+					if (s < d[0])
+						d[2] = d[1], d[1] = d[0], d[0] = s, nearest = f;
+					else if (s < d[1])
+						d[2] = d[1], d[1] = s;
+					else
+						d[2] = s;
+					if (d[2] < 1e300)
+						reach = m == 2.0 ? sqrt(d[2]) : m == 1.0 ? d[2] : pow(d[2], 1.0 / m);
+				}
 	if (n->solid) /* POV-Ray: Noise(nucleus), so the cells' values cluster as its noise does */
 		return pattern_noise(nearest);
 	double o = n->crackle_offset, add = m == 2.0 ? o * o : m == 1.0 ? o : pow(o, m);

@@ -110,8 +110,13 @@ typedef struct scene_polygon {
 
 /* height_field { png|exr "file" [smooth] [water_level w] }. */
 typedef struct scene_height_field {
-	const char *path; /* resolved like scene_geom's file path */
+	const char *path; /* resolved like scene_geom's file path; NULL for a function's field */
 	diag_loc path_loc;
+	/* `function W, H { ... }`: the heights POV-Ray's function image holds (Make_Pattern_Image: the
+	 * function at <i / (W - 1), j / (H - 1), 0>, 16-bit grey), row z = 0 first as an image's
+	 * bottom row (owned by the scene's arena) */
+	const float *heights;
+	uint32_t fn_w, fn_h;
 	bool smooth;
 	double water_level; /* in the field's own height, 0 .. 1 */
 } scene_height_field;

@@ -45,8 +45,16 @@ void scene_dump_shape(FILE *o, const scene_geom *g)
 		fprintf(o, " e %g n %g\n", g->u.superellipsoid.e, g->u.superellipsoid.n);
 		break;
 	case SHAPE_HEIGHT_FIELD:
-		fprintf(o, " file \"%s\"%s water_level %g\n", g->u.height_field.path,
-			g->u.height_field.smooth ? " smooth" : "", g->u.height_field.water_level);
+		if (g->u.height_field.heights) /* a function's: its size and a checksum of its heights */
+		{
+			double sum = 0;
+			for (size_t i = 0; i < (size_t)g->u.height_field.fn_w * g->u.height_field.fn_h; i++)
+				sum += g->u.height_field.heights[i];
+			fprintf(o, " function %u x %u sum %.6g", g->u.height_field.fn_w, g->u.height_field.fn_h, sum);
+		} else {
+			fprintf(o, " file \"%s\"", g->u.height_field.path);
+		}
+		fprintf(o, "%s water_level %g\n", g->u.height_field.smooth ? " smooth" : "", g->u.height_field.water_level);
 		break;
 	case SHAPE_QUADRIC:
 		dump_v(o, "square", g->u.quadric.square);

@@ -4,8 +4,11 @@
 # bounded_by a sphere, a cubic clipped_by a box under a rotation the clip shares, two infinite
 # quadric cylinders intersected (each bounds the other's open axis), a paraboloid subtracted from
 # a box, a quadric cylinder cut by two planes, a quartic that bounds itself (x^4 + y^4 + z^4 = 1,
-# no bound given); `sturm` accepted. (The unbounded ones are in
-# tests/bad: quadric_plane_union, quadric_open_axis, poly_clip_halfspace, poly_use.)
+# no bound given); `sturm` accepted. Then the unbounded ones (nothing bounds them along some axis:
+# a quadric cylinder alone, one cut by a plane across it, a plane quadric in a union, a quartic
+# clipped by a half-space): each is polygonised inside the scene's box with a
+# warning at its use; and a cylinder along x between `plane { x, 3 }` and `plane { x, -3 inverse }`
+# is bounded (an inverted axis plane bounds its other side), without a warning.
 set -u
 : "${CIRCE:?}"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/circe-polysurf.XXXXXX") || exit 99
@@ -55,5 +58,41 @@ for at in "quartic at $tmp/s.pov:3:1" "cubic at $tmp/s.pov:9:1" "quadric at $tmp
 	grep -Eq "^  $at: [1-9][0-9]* triangles, within [0-9.e-]+ units of the surface" "$tmp/out" ||
 		{ echo "FAIL no tessellation line for $at"; fail=1; }
 done
-[ $fail -eq 0 ] || cat "$tmp/out"
+cat >"$tmp/u.pov" <<'POV'
+camera { location <0, 0, -20> look_at 0 }
+light_source { <10, 20, -20> color rgb 1 }
+quadric { <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -1 translate 5 * x }
+intersection {
+	quadric { <0, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+	plane { y, 0.5 }
+}
+union {
+	sphere { 0, 1 }
+	quadric { <0, 0, 0>, <0, 0, 0>, <0, 1, 0>, 0 translate -3 * y }
+}
+quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+           1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1>
+	clipped_by { plane { z, 1 } }
+}
+intersection {
+	quadric { <0, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+	plane { x, 3 }
+	plane { x, -3 inverse }
+	translate 4 * y
+}
+POV
+"$CIRCE" check "$tmp/u.pov" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+[ $rc -eq 0 ] || { echo "FAIL unbounded: check exit $rc"; cat "$tmp/err"; fail=1; }
+for at in 3:1 5:2 10:2 12:1; do
+	grep -q "^$tmp/u.pov:$at: warning: an unbounded [a-z]*: circe polygonises it inside the scene's box" "$tmp/err" ||
+		{ echo "FAIL no unbounded warning at $at"; fail=1; }
+done
+grep -q "^$tmp/u.pov:17:2: warning: an unbounded" "$tmp/err" &&
+	{ echo "FAIL the cylinder between two axis planes (one inverted) is bounded"; fail=1; }
+for at in 3:1 5:2 10:2 12:1 17:2; do
+	grep -Eq "^  [a-z]+ at $tmp/u.pov:$at: [1-9][0-9]* triangles, within [0-9.e-]+ units of the surface" "$tmp/out" ||
+		{ echo "FAIL no tessellation line for $at"; fail=1; }
+done
+[ $fail -eq 0 ] || { cat "$tmp/out" "$tmp/err"; }
 exit $fail

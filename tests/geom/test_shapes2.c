@@ -55,6 +55,25 @@ static size_t open_edges(const mesh *m)
 	return bad;
 }
 
+/* The directed edges of m (by position) whose reverse is not in m as often as they are: a closed
+ * surface has none, even where it touches itself along an edge (four faces there). */
+static size_t unpaired_edges(const mesh *m)
+{
+	size_t n = 3 * (size_t)m->num_triangles, bad = 0;
+	edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
+	for (uint32_t t = 0; t < m->num_triangles; t++)
+		for (int k = 0; k < 3; k++) {
+			vec3 a = m->positions[m->indices[3 * t + k]], b = m->positions[m->indices[3 * t + (k + 1) % 3]];
+			a = v3_add(a, v3s(0)), b = v3_add(b, v3s(0));
+			e[3 * t + k] = (edge){a, b}, r[3 * t + k] = (edge){b, a};
+		}
+	qsort(e, n, sizeof *e, ecmp), qsort(r, n, sizeof *r, ecmp);
+	for (size_t i = 0; i < n; i++)
+		bad += ecmp(&e[i], &r[i]) != 0;
+	free(e), free(r);
+	return bad;
+}
+
 /* The connected pieces of the mesh, its vertices welded by position (union-find). */
 static int find(int *par, int x)
 {
@@ -308,6 +327,12 @@ static void test_prism(void)
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "crossing sub-polygons");
 	CHECK_NEAR(volume(&m), 2 * 6, 1e-4);
 	CHECK(flipped_normals(&m) == 0, "even-odd prism normals: %zu flipped", flipped_normals(&m));
+	/* closed: caps and walls share every vertex (no T-junction), every edge has its reverse; the
+	 * two vertical lines where the squares cross are the only edges of four faces (the region
+	 * touches itself there: 2 x 2 duplicates) */
+	CHECK(unpaired_edges(&m) == 0, "even-odd prism closed: %zu unpaired edges", unpaired_edges(&m));
+	CHECK(open_edges(&m) == 4, "even-odd prism: %zu edges of more than two faces, want the crossings' 4",
+	      open_edges(&m));
 	/* nothing of the mesh inside the hole [1, 2]^2 but its walls */
 	bool hole_empty = true;
 	for (uint32_t t = 0; t < m.num_triangles; t++) {
@@ -581,6 +606,42 @@ static bool fn_fails(const void *ctx, const double *q, double *out)
 
 static double sphere_dist(const void *ctx, dvec3 p) { return fabs(d3_length(p) - *(const double *)ctx); }
 
+/* fn_sphere counting its calls (the octree test). */
+static unsigned long sphere_calls;
+static bool fn_sphere_counted(const void *ctx, const double *q, double *out)
+{
+	sphere_calls++;
+	return fn_sphere(ctx, q, out);
+}
+
+/* field.c's octree: with max_gradient the grid's blocks far from the surface are not sampled, and
+ * the mesh is exactly the one of every point sampled (a max_gradient so large that no block is
+ * ever skipped), in fewer calls of the function. */
+static void test_isosurface_octree(void)
+{
+	double r = 0.6;
+	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere_counted, .fn_ctx = &r, .fn_name = "sphere",
+			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
+	shape_accuracy acc = {1e-3, 64};
+	mesh a = {0}, b = {0};
+	double ta, tb;
+	sphere_calls = 0;
+	CHECK(shape_tessellate(&s, &acc, &a, &ta, &d, diag_noloc()), "octree sphere");
+	unsigned long ca = sphere_calls;
+	s.max_gradient = 1e12;
+	sphere_calls = 0;
+	CHECK(shape_tessellate(&s, &acc, &b, &tb, &d, diag_noloc()), "every point");
+	unsigned long cb = sphere_calls;
+	CHECK(a.num_triangles == b.num_triangles && a.num_vertices == b.num_vertices, "octree %u triangles, every point %u",
+	      a.num_triangles, b.num_triangles);
+	bool same = a.num_vertices == b.num_vertices && a.num_triangles == b.num_triangles &&
+		    !memcmp(a.positions, b.positions, a.num_vertices * sizeof *a.positions) &&
+		    !memcmp(a.indices, b.indices, 3 * (size_t)a.num_triangles * sizeof *a.indices);
+	CHECK(same && ta == tb, "the octree's mesh is every point's (distance %g against %g)", ta, tb);
+	CHECK(ca < cb - cb / 20, "the octree called the function %lu times, every point %lu", ca, cb);
+	mesh_free(&a), mesh_free(&b);
+}
+
 /* The distance of p to the boundary of (ball of radius r) cut by the box [-1, 1]^3. */
 static double cut_ball_dist(const void *ctx, dvec3 p)
 {
@@ -784,6 +845,7 @@ int main(void)
 	test_text();
 	test_bicubic();
 	test_isosurface();
+	test_isosurface_octree();
 	test_parametric();
 	test_julia();
 	test_limit();
