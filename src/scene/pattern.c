@@ -638,10 +638,121 @@ static double tiling_rectangle(dvec3 p)
 	return fabs(fmax(dx, dz) / 2.0 + (along_x ? 0.5 : 0.0));
 }
 
-/* TilingPattern::EvaluateRaw's choice; the parser refuses 7 to 27, POV-Ray's others are squares. */
+#define TILE_R2 1.4142135623730950488 /* sqrt 2 */
+#define TILE_H2 0.70710678118654752440 /* sqrt 2 / 2 */
+
+/* Octagons and squares (7): a cell of 1 + sqrt 2 folded onto its eighth; the square (kind 0, up
+ * to 1/2) where |x| + |z| < sqrt 2 / 2 about the cell's corner, the octagon (above 1/2) else. */
+static double tiling_octa_square(dvec3 p)
+{
+	const double cell = TILE_R2 + 1.0, mid = TILE_H2 + 0.5;
+	double x = fabs(mod_floor(p.x, cell) - mid), z = fabs(mod_floor(p.z, cell) - mid);
+	if (z > x) {
+		double t = x;
+		x = z, z = t;
+	}
+	if (x + z < TILE_H2)
+		return (x + z) / TILE_R2;
+	return fmax(0.500000000001, fmax(1.0 - z, (TILE_R2 + TILE_H2 - (x + z)) / TILE_R2)); /* POV-Ray's floor */
+}
+
+/* Squares and triangles in rows (8): a square row of height 1 and a triangle row of height
+ * sqrt 3 / 2, shifted by half a square; squares one kind (2/3 up), triangles two (0 and 1/3). */
+static double tiling_square_triangle(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, 2.0 + TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3 + 1.0)
+		z -= TILE_H3 + 1.0, x += x > 0.5 ? -0.5 : 0.5;
+	if (x > 0.5)
+		x = 1.0 - x;
+	z -= 1.0;
+	if (z > 0.0) { /* a triangle */
+		if (x == 0.0)
+			z = TILE_H3 - z, x = 0.5, kind ^= 1;
+		else if (z / x > TILE_S3)
+			z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+		return (kind + fmax(1.0 - 2.0 * z * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3)) / 3.0;
+	}
+	if (z < -0.5) /* a square */
+		z = -1.0 - z;
+	if (x > 0.5)
+		x = 1.0 - x;
+	double d1 = fmin(2.0 + 2.0 * TILE_S3 * fabs(x), 3.0), d2 = fmin(2.0 + 2.0 * TILE_S3 * fabs(z), 3.0);
+	return (5.0000001 - fmin(d1, d2)) / 3.0; /* POV-Ray's constant */
+}
+
+/* Hexagons and triangles (9, the trihexagonal tiling): triangles two kinds (0, 1/3), hexagons
+ * above 2/3. */
+static double tiling_hexa_triangle(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 2.0), z = mod_floor(p.z, 2.0 * TILE_S3);
+	int kind = 0;
+	if (z > TILE_S3)
+		z -= TILE_S3, x += x < 1.0 ? 1.0 : -1.0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 1.0)
+		x = 2.0 - x;
+	if (TILE_S3 * x + z < TILE_H3) /* a triangle */
+		return (kind + fmax(1.0 - z * 2.0 * TILE_S3, 1.0 + (TILE_S3 * x + z - TILE_H3) * TILE_S3)) / 3.0;
+	double d = 5.0 - fmin(2.0 + 2.0 * z * TILE_S3, 2.0 + 2.0 * (TILE_S3 * x + z - TILE_H3) * TILE_H3);
+	return fmax(d, 2.0000001) / 3.0; /* POV-Ray's floor */
+}
+
+/* Squares in rows offset by half a square (10). */
+static double tiling_square_offset(dvec3 p)
+{
+	double z = mod_floor(p.z, 2.0), x = p.x;
+	if (z > 1.0)
+		x += 0.5, z -= 1.0;
+	x -= floor(x);
+	return fmax(2.0 * fabs(x - 0.5), 2.0 * fabs(z - 0.5));
+}
+
+/* The pinwheel of a square and four 2 x 1 rectangles in a 3 x 3 cell, shared by tilings 11 and
+ * 12: the unit square (ix, iz) of the cell moved to its tile's frame; the square is kind 0, the
+ * rectangles along z kind 1, along x kind 2. */
+static double pinwheel(double x, double z)
+{
+	int kind = 2;
+	switch ((int)x + 3 * (int)z) {
+	case 0:
+	case 3: z -= 1.0; break;
+	case 1:
+	case 2: x -= 2.0, kind = 1; break;
+	case 4: x -= 1.0, z -= 1.0, kind = 0; break;
+	case 5:
+	case 8: x -= 2.0, z -= 2.0; break;
+	case 6:
+	case 7: x -= 1.0, z -= 2.0, kind = 1; break;
+	default: break; /* the cell's far edge (tiling 12's |x| = 3): as POV-Ray, unmoved */
+	}
+	double dx = kind == 1 ? 2.0 * (fmax(fabs(x), 0.5) - 0.5) : 2.0 * fabs(x - 0.5);
+	double dz = kind == 2 ? 2.0 * (fmax(fabs(z), 0.5) - 0.5) : 2.0 * fabs(z - 0.5);
+	return (fmax(dx, dz) + kind) / 3.0;
+}
+
+/* A square ringed by four rectangles turning one way (11), or both ways (12: a 6 x 6 cell folded
+ * in four about its centre). */
+static double tiling_square_rectangle(dvec3 p) { return pinwheel(mod_floor(p.x, 3.0), mod_floor(p.z, 3.0)); }
+
+static double tiling_rectangle_square(dvec3 p)
+{
+	return pinwheel(fabs(mod_floor(p.x, 6.0) - 3.0), fabs(mod_floor(p.z, 6.0) - 3.0));
+}
+
+/* TilingPattern::EvaluateRaw's choice; the parser refuses SCENE_TILINGS + 1 to 27, POV-Ray's others are
+ * squares. */
 static double tiling(int number, dvec3 p)
 {
 	switch (number) {
+	case 7: return tiling_octa_square(p);
+	case 8: return tiling_square_triangle(p);
+	case 9: return tiling_hexa_triangle(p);
+	case 10: return tiling_square_offset(p);
+	case 11: return tiling_square_rectangle(p);
+	case 12: return tiling_rectangle_square(p);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);
