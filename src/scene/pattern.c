@@ -742,6 +742,124 @@ static double tiling_rectangle_square(dvec3 p)
 	return pinwheel(fabs(mod_floor(p.x, 6.0) - 3.0), fabs(mod_floor(p.z, 6.0) - 3.0));
 }
 
+/* Squares cut by their diagonals into an inner square and four triangles, on a grid turned by
+ * 45 degrees (13: three kinds; 14: the four triangles each a kind of its own, five in all): the
+ * cell of 4 / sqrt 2 folded about its centre. */
+static double tiling_square_internal(dvec3 p, bool five)
+{
+	double x = mod_floor(p.x * TILE_R2, 4.0) - 2.0, z = mod_floor(p.z * TILE_R2, 4.0) - 2.0;
+	int mir_x = x < 0.0 ? 1 : 0, mir_z = z < 0.0 ? 2 : 3;
+	x = fabs(x), z = fabs(z);
+	double d;
+	int base;
+	switch ((int)x + 2 * (int)z) {
+	case 0: /* the inner square */
+		d = fmax(2.0 * fmax(x - 0.5, 0.0), 2.0 * fmax(z - 0.5, 0.0));
+		return five ? (4.000001 + d) / 5.0 : d / 3.0; /* POV-Ray's constant */
+	case 1:
+		d = fabs(1.5 - x) * 2.0;
+		if (z > 0.5)
+			d = fmax(d, 1.0 - TILE_R2 * fabs(x - z));
+		base = five ? mir_x : 2;
+		break;
+	case 2:
+		d = fabs(1.5 - z) * 2.0;
+		if (x > 0.5)
+			d = fmax(d, 1.0 - TILE_R2 * fabs(x - z));
+		base = five ? mir_z : 1;
+		break;
+	case 3:
+		if (x > z)
+			d = fmax(fabs(1.5 - x) * 2.0, 1.0 - TILE_R2 * fabs(z - x)), base = five ? mir_x : 2;
+		else
+			d = fmax(fabs(1.5 - z) * 2.0, 1.0 - TILE_R2 * fabs(x - z)), base = five ? mir_z : 1;
+		break;
+	default: return 0.0; /* the cell's far edge: POV-Ray's 0 */
+	}
+	return (base + d) / (five ? 5.0 : 3.0);
+}
+
+/* Squares of side 1 and 2 (15) in a 5 x 5 cell: each unit square moved to its square's frame. */
+static double tiling_square_double(dvec3 p)
+{
+	/* per unit square (x + 5 z): its shift in x and z, and whether it is a small square */
+	static const signed char shift[25][3] = {
+		{0, 0, 1}, {2, 0, 0}, {2, 0, 0}, {4, 1, 0}, {4, 1, 0}, {1, 2, 0}, {1, 2, 0}, {2, 1, 1}, {4, 1, 0},
+		{4, 1, 0}, {1, 2, 0}, {1, 2, 0}, {3, 3, 0}, {3, 3, 0}, {4, 2, 1}, {0, 4, 0}, {1, 3, 1}, {3, 3, 0},
+		{3, 3, 0}, {5, 4, 0}, {0, 4, 0}, {2, 5, 0}, {2, 5, 0}, {3, 4, 1}, {5, 4, 0}};
+	double x = mod_floor(p.x, 5.0), z = mod_floor(p.z, 5.0);
+	int cell = (int)x + 5 * (int)z;
+	cell = cell < 0 ? 0 : cell > 24 ? 24 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	if (shift[cell][2])
+		return fabs(fmax(2.0 * fabs(x - 0.5), 2.0 * fabs(z - 0.5)) / 2.0);
+	double dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	return fabs(fmax(dx, dz) / 2.0 + 0.50000001); /* POV-Ray's constant */
+}
+
+/* Hexagons, squares and triangles (16, the rhombitrihexagonal tiling: three kinds; 17: each
+ * square and triangle of its own orientation, six kinds). The cell of (3 + sqrt 3) x 2 (1 + sqrt 3)
+ * is folded to a quarter about a hexagon's centre; the part below the hexagon's edge turned by
+ * 60 degrees onto the square and the triangle beside it. */
+static double tiling_hexa_square_triangle(dvec3 p, bool six)
+{
+	const double half = TILE_H3 + 1.5, ring = TILE_S3 + 1.0;
+	double x = mod_floor(p.x + 0.5, 3.0 + TILE_S3), z = mod_floor(p.z, 2.0 * ring);
+	int mir_x = 0, mir_z = 0, rota = 0;
+	if (x > half)
+		x -= half, z += z < ring ? TILE_H3 + 0.5 : -(TILE_H3 + 0.5);
+	if (z > ring)
+		z -= ring;
+	if (z > 0.5 + TILE_H3)
+		z = ring - z, mir_z ^= 1;
+	if (x > 1.0 + TILE_H3)
+		x = TILE_S3 + 2.0 - x, mir_x ^= 1;
+	if (TILE_S3 * x + z < TILE_H3 + 2.0 && x < 0.5 + TILE_H3) { /* turn the lower part by 60 degrees */
+		double rz = z - (0.5 + TILE_H3), rx = x - (1.0 + TILE_H3);
+		x = rx / 2.0 - rz * TILE_H3 + 1.0 + TILE_H3;
+		z = rz / 2.0 + rx * TILE_H3 + 0.5 + TILE_H3;
+		rota ^= 1;
+		if (z < 0.0)
+			z = -z;
+		if (x > 1.0 + TILE_H3)
+			x = TILE_S3 + 2.0 - x, mir_x ^= 1, mir_z ^= 1;
+	}
+	if (!(TILE_S3 * x + z < TILE_H3 + 2.0) && !(z < 0.5)) { /* the hexagon */
+		double hz = fabs(z - 0.5), hx = fabs(x - TILE_H3);
+		double d = fmin(2.0 * hz * TILE_S3, (TILE_S3 * hx + hz) * TILE_S3 - 1.5);
+		return six ? fmax(6.0 - d, 5.000001) / 6.0 : fmax(3.0 - d, 2.0000001) / 3.0; /* POV-Ray's floors */
+	}
+	if (!(z < 0.5))
+		return 0.0;
+	if (x > TILE_H3 + 0.5) { /* a square */
+		double sx = x - (TILE_H3 + 0.5), sz = z - 0.5;
+		double d = fmax(fmax(1.0 + sz * 2.0 * TILE_S3, 0.0), fmax(1.0 - sx * 2.0 * TILE_S3, 0.0));
+		return six ? (d + rota * (1.000001 + ((mir_x + mir_z) % 2))) / 6.0 : d / 3.0;
+	}
+	double tx = fabs(x - (TILE_H3 + 0.5)); /* a triangle */
+	double d = fmax(2.0 - tx * 2.0 * TILE_S3, (TILE_S3 * z + tx) * TILE_S3 + 0.5);
+	return six ? (((rota + mir_x) % 2 ? 2.0 : 3.0) + d) / 6.0 : d / 3.0;
+}
+
+/* Pairs of 2 x 1 rectangles (18) in a 4 x 4 cell, two kinds (along x: 1/2 and up; along z: 0). */
+static double tiling_rectangle_pair(dvec3 p)
+{
+	static const signed char shift[16][3] = {
+		{0, 1, 1}, {1, 1, 1}, {3, 0, 0}, {3, 0, 0}, {0, 1, 1}, {1, 1, 1}, {3, 1, 0}, {3, 1, 0},
+		{1, 2, 0}, {1, 2, 0}, {2, 3, 1}, {3, 3, 1}, {1, 3, 0}, {1, 3, 0}, {2, 3, 1}, {3, 3, 1}};
+	double x = mod_floor(p.x, 4.0), z = mod_floor(p.z, 4.0);
+	int cell = (int)x + 4 * (int)z;
+	cell = cell < 0 ? 0 : cell > 15 ? 15 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	bool along_x = shift[cell][2];
+	double dx, dz;
+	if (along_x)
+		dx = 2.0 * fabs(x - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	else
+		dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * fabs(z - 0.5);
+	return fabs((fmax(dx, dz) + (along_x ? 1.0 : 0.0)) / 2.0);
+}
+
 /* TilingPattern::EvaluateRaw's choice; the parser refuses SCENE_TILINGS + 1 to 27, POV-Ray's others are
  * squares. */
 static double tiling(int number, dvec3 p)
@@ -753,6 +871,12 @@ static double tiling(int number, dvec3 p)
 	case 10: return tiling_square_offset(p);
 	case 11: return tiling_square_rectangle(p);
 	case 12: return tiling_rectangle_square(p);
+	case 13: return tiling_square_internal(p, false);
+	case 14: return tiling_square_internal(p, true);
+	case 15: return tiling_square_double(p);
+	case 16: return tiling_hexa_square_triangle(p, false);
+	case 17: return tiling_hexa_square_triangle(p, true);
+	case 18: return tiling_rectangle_pair(p);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);
