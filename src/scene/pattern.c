@@ -860,6 +860,60 @@ static double tiling_rectangle_pair(dvec3 p)
 	return fabs((fmax(dx, dz) + (along_x ? 1.0 : 0.0)) / 2.0);
 }
 
+/* The triangle fold of tilings 19 and 20: (x, z) in a cell of triangles to POV-Ray's triangle
+ * value with kind `kind` (0 or 1) carried in. */
+static double triangle_fold(double x, double z, int kind)
+{
+	x -= floor(x), z = mod_floor(z, TILE_S3);
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 0.5)
+		x = 1.0 - x;
+	if (x == 0.0)
+		z = TILE_H3 - z, x = 0.5, kind ^= 1;
+	else if (z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+	return (kind + fmax(1.0 - z * 2.0 * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3)) / 3.0;
+}
+
+/* Hexagons among triangles, the rows shifted to the right (19) or to the left (20), the snub
+ * hexagonal tiling's two hands: triangles two kinds (0, 1/3), hexagons above 2/3. */
+static double tiling_hexa_tri(dvec3 p, bool right)
+{
+	double x = p.x, z = p.z;
+	int rows = (int)fmax(-2.0e9, fmin(2.0e9, z / TILE_H3)) / 3; /* POV-Ray's integer steps, truncated to 0 */
+	if (z < 0.0)
+		rows -= 1;
+	x += right ? rows / 2.0 : -rows / 2.0;
+	z = mod_floor(z, 3.0 * TILE_H3);
+	x = mod_floor(x + 7.0, 7.0);
+	if (right) {
+		if (x > 4.5 && z > TILE_S3)
+			x -= 4.5, z -= TILE_H3;
+		if (x > 5.0 && z < TILE_H3)
+			x -= 5.0, z += TILE_S3;
+		if (x > 2.5 && z < TILE_S3)
+			x -= 2.5, z += TILE_H3;
+	} else {
+		if (x > 2.0 && z < TILE_H3)
+			x -= 2.0, z += TILE_S3;
+		if (x > 4.5 && z < TILE_S3)
+			x -= 4.5, z += TILE_H3;
+		if (x > 2.5 && z > TILE_S3)
+			x -= 2.5, z -= TILE_H3;
+	}
+	int kind = 0, row = (int)(z / TILE_H3);
+	if (row == 2)
+		row = 1, z = 2.0 * TILE_S3 - z, kind ^= 1;
+	if (!row || x > 2.0 || z + TILE_S3 * x < TILE_S3 || TILE_S3 * x - z > TILE_S3)
+		return triangle_fold(x, z, kind);
+	z -= TILE_H3; /* the hexagon */
+	if (x > 1.0)
+		x = 2.0 - x;
+	double d = 5.0 - fmin(2.0 + 2.0 * z * TILE_S3, 2.0 + 2.0 * (TILE_S3 * x + z - TILE_H3) * TILE_H3);
+	return fmax(d, 2.000001) / 3.0; /* POV-Ray's floor */
+}
+
 /* TilingPattern::EvaluateRaw's choice; the parser refuses SCENE_TILINGS + 1 to 27, POV-Ray's others are
  * squares. */
 static double tiling(int number, dvec3 p)
@@ -877,6 +931,8 @@ static double tiling(int number, dvec3 p)
 	case 16: return tiling_hexa_square_triangle(p, false);
 	case 17: return tiling_hexa_square_triangle(p, true);
 	case 18: return tiling_rectangle_pair(p);
+	case 19: return tiling_hexa_tri(p, true);
+	case 20: return tiling_hexa_tri(p, false);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);

@@ -732,7 +732,7 @@ static void check_facets(void)
 	      v.x, v.y, v.z);
 }
 
-/* POV-Ray's tilings 1 to 18, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+/* POV-Ray's tilings 1 to 20, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
  * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
  * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
  * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
@@ -780,7 +780,7 @@ static void check_tiling(void)
 		{6, 1.625, 1.375, 40959},
 		{6, 0.625, 0.625, 40959},
 		{6, 2.375, 0.125, 24576},
-		/* tilings 7 to 18, from a 64 x 64 render over [-6, 6]^2 (all 4096 pixels of each of 1 to 18 agree) */
+		/* tilings 7 to 20, from a 64 x 64 render over [-6, 6]^2 (all 4096 pixels of each of 1 to 20 agree) */
 		{7, -0.65625, 5.71875, 58096},
 		{7, 4.40625, 3.65625, 63246},
 		{7, 0.84375, 1.59375, 63547},
@@ -853,6 +853,18 @@ static void check_tiling(void)
 		{18, -2.53125, -0.46875, 2048},
 		{18, 1.96875, -2.90625, 63487},
 		{18, -5.15625, -5.34375, 55295},
+		{19, -0.65625, 5.71875, 19091},
+		{19, 4.40625, 3.65625, 7304},
+		{19, 0.84375, 1.59375, 43690},
+		{19, -2.53125, -0.46875, 30706},
+		{19, 1.96875, -2.90625, 43690},
+		{19, -5.15625, -5.34375, 39035},
+		{20, -0.65625, 5.71875, 43690},
+		{20, 4.40625, 3.65625, 7304},
+		{20, 0.84375, 1.59375, 43690},
+		{20, -2.53125, -0.46875, 30706},
+		{20, 1.96875, -2.90625, 46476},
+		{20, -5.15625, -5.34375, 43690},
 	};
 	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
 		pattern_node n = pattern_node_default(PATTERN_TILING);
