@@ -914,6 +914,115 @@ static double tiling_hexa_tri(dvec3 p, bool right)
 	return fmax(d, 2.000001) / 3.0; /* POV-Ray's floor */
 }
 
+/* Squares and triangles (21, the snub square tiling): a (1 + sqrt 3)^2 cell folded to a quarter
+ * and turned onto one square's corner; four kinds of triangle (0 to 4/6), two of square (4/6 up). */
+static double tiling_square_tri(dvec3 p)
+{
+	const double cell = 1.0 + TILE_S3, half = 0.5 + TILE_H3;
+	double x = mod_floor(p.x, cell), z = mod_floor(p.z, cell);
+	int delta = 0, gamma = 0, beta = 0;
+	if (z > half)
+		z = cell - z, delta ^= 1;
+	if (x > half)
+		x = cell - x, delta ^= 1, beta = 1;
+	int xflop = 2.0 * x + (TILE_S3 - 1.0) * 2.0 * z / (TILE_S3 + 1.0) > TILE_S3;
+	int zflop = 2.0 * z * TILE_S3 + (TILE_S3 - 3.0) * 2.0 * x / (TILE_S3 + 1.0) > TILE_S3;
+	double t;
+	switch (xflop + 2 * zflop) {
+	case 0: gamma = 2 * beta; break;
+	case 1: /* turned clockwise */
+		gamma = beta ? 1 + 2 * delta : 3 - 2 * delta;
+		t = x, x = z, z = half - t;
+		break;
+	case 2: /* turned the other way */
+		gamma = beta ? 3 - 2 * delta : 1 + 2 * delta;
+		t = z, z = x, x = half - t;
+		break;
+	default: /* mirrored through the corner */
+		gamma = beta ? 0 : 2;
+		x = half - x, z = half - z;
+		break;
+	}
+	if (x == 0.0)
+		z = 0.0;
+	double s = z * 2.0 * TILE_S3 - TILE_S3 + x * 2.0;
+	if (s < 0.0) /* a triangle */
+		return (gamma + 1.0 - fmin(-1.5 / TILE_S3 * s, 2.0 * x * TILE_S3)) / 6.0;
+	s = fmin(s * 1.5 / TILE_S3, 1.0); /* a square */
+	if (delta)
+		return fmin(fmax((6.0 - s) / 6.0, 5.000001 / 6.0), 1.0); /* POV-Ray's constants */
+	return fmax(fmin((5.0 - s) / 6.0, 5.0 / 6.0), 4.000001 / 6.0);
+}
+
+/* Dodecagons and triangles (22, the truncated hexagonal tiling): the cell folded to a twelfth
+ * of a dodecagon, a point beyond its slanted edge turned by 120 degrees; triangles two kinds (up
+ * to 1/3, 1/3 to 2/3), dodecagons above 2/3. */
+static double tiling_dodeca_tri(dvec3 p)
+{
+	const double wing = 1.0 + TILE_H3;
+	double x = mod_floor(p.x, 2.0 + TILE_S3), z = mod_floor(p.z, 3.0 + 2.0 * TILE_S3);
+	int toggle = 0;
+	if (z > TILE_S3 + 1.5)
+		z -= TILE_S3 + 1.5, x += (x < wing ? 1.0 : -1.0) * wing;
+	if (x > wing)
+		x = 2.0 + TILE_S3 - x;
+	if (z > wing)
+		z = 2.0 + TILE_S3 - z, toggle ^= 1;
+	double d2 = x - TILE_H3 - 0.5 + z * TILE_S3;
+	if (d2 < 0.0) {
+		double tx = x, tz = z;
+		x = (1.0 + TILE_S3) / 4.0 + 0.5 * tx - TILE_H3 * tz;
+		z = (3.0 + TILE_S3) / 4.0 - TILE_H3 * tx - 0.5 * tz;
+		d2 = -d2;
+	}
+	double d3 = (z - TILE_H3 - 0.5 + x * TILE_S3) * TILE_S3;
+	if (d3 < 0.0)
+		return (fmax(d3, -1.0) + 1.0 + toggle) / 3.0;
+	double r = fmin(fmin(fmin(z * 3.0, d2 * TILE_S3), d3), fmin(x * 3.0, 1.0));
+	return (3.0000001 - r) / 3.0; /* POV-Ray's constant */
+}
+
+/* Dodecagons, hexagons and squares (23, the truncated trihexagonal tiling: three kinds; 24: the
+ * squares of its two orientations apart, five kinds): the cell folded to a twelfth of a
+ * dodecagon and its neighbours. */
+static double tiling_dodeca_hex(dvec3 p, bool five)
+{
+	const double wing = 1.5 + TILE_H3;
+	double x = mod_floor(p.x, 3.0 + TILE_S3), z = mod_floor(p.z, 3.0 + 3.0 * TILE_S3);
+	int mir_x = 0, mir_z = 0;
+	if (z > 1.5 * TILE_S3 + 1.5)
+		z -= 1.5 * TILE_S3 + 1.5, x += (x < wing ? 1.0 : -1.0) * wing;
+	if (x > wing)
+		x = 3.0 + TILE_S3 - x, mir_x ^= 1;
+	if (z > 1.0 + TILE_S3)
+		z = 2.0 + 2.0 * TILE_S3 - z, mir_z ^= 1;
+	if (x - TILE_H3 - 1.5 + z * TILE_S3 < 0.0) {
+		double tx = x, tz = z;
+		x = (3.0 + TILE_S3) / 4.0 + 0.5 * tx - TILE_H3 * tz;
+		z = (3.0 + 3.0 * TILE_S3) / 4.0 - TILE_H3 * tx - 0.5 * tz;
+	}
+	double d2 = x - TILE_H3 - 2.5 + z * TILE_S3, d1 = z * 2.0 - TILE_S3;
+	double d3 = z - 1.5 * TILE_S3 - 0.5 + x * TILE_S3, d4 = (x - 0.5) * 2.0, r;
+	if (d2 >= 0.0 && d1 >= 0.0 && d3 >= 0.0 && d4 >= 0.0) { /* the dodecagon */
+		r = (five ? 5.000001 : 3.000001) - fmin(fmin(d1, d2), fmin(d3, fmin(d4, 1.0))); /* POV-Ray's */
+	} else {
+		double d5 = 2.0 * z - 2.0 * TILE_S3 - 1.0;
+		if (d5 >= 0.0) {
+			r = 2.0 - fmin(d5, -d4);
+		} else {
+			double d6 = TILE_S3 * x - z - TILE_H3 + 0.5, d7 = d6 - 2.0;
+			switch ((d6 >= 0.0 ? 0 : 1) + (d7 >= 0.0 ? 2 : 0)) {
+			case 1: r = 1.0 - fmin(fmin(-d6, -d3), fmin(-d5, 1.0)); break; /* the left hexagon */
+			case 2: r = 1.0 - fmin(fmin(d7, -d1), 1.0); break;		 /* the bottom hexagon */
+			default: /* a slanted square */
+				r = (five ? (mir_z + mir_x) % 2 + 3.0 : 2.0) - fmin(fmin(d6, -d2), -d7);
+				break;
+			}
+		}
+	}
+	return r / (five ? 5.0 : 3.0);
+}
+
 /* TilingPattern::EvaluateRaw's choice; the parser refuses SCENE_TILINGS + 1 to 27, POV-Ray's others are
  * squares. */
 static double tiling(int number, dvec3 p)
@@ -933,6 +1042,10 @@ static double tiling(int number, dvec3 p)
 	case 18: return tiling_rectangle_pair(p);
 	case 19: return tiling_hexa_tri(p, true);
 	case 20: return tiling_hexa_tri(p, false);
+	case 21: return tiling_square_tri(p);
+	case 22: return tiling_dodeca_tri(p);
+	case 23: return tiling_dodeca_hex(p, false);
+	case 24: return tiling_dodeca_hex(p, true);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);

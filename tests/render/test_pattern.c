@@ -732,7 +732,7 @@ static void check_facets(void)
 	      v.x, v.y, v.z);
 }
 
-/* POV-Ray's tilings 1 to 20, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+/* POV-Ray's tilings 1 to 24, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
  * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
  * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
  * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
@@ -780,7 +780,7 @@ static void check_tiling(void)
 		{6, 1.625, 1.375, 40959},
 		{6, 0.625, 0.625, 40959},
 		{6, 2.375, 0.125, 24576},
-		/* tilings 7 to 20, from a 64 x 64 render over [-6, 6]^2 (all 4096 pixels of each of 1 to 20 agree) */
+		/* tilings 7 to 24, from a 64 x 64 render over [-6, 6]^2 (all 4096 pixels of each of 1 to 24 agree) */
 		{7, -0.65625, 5.71875, 58096},
 		{7, 4.40625, 3.65625, 63246},
 		{7, 0.84375, 1.59375, 63547},
@@ -865,6 +865,30 @@ static void check_tiling(void)
 		{20, -2.53125, -0.46875, 30706},
 		{20, 1.96875, -2.90625, 46476},
 		{20, -5.15625, -5.34375, 43690},
+		{21, -0.65625, 5.71875, 61159},
+		{21, 4.40625, 3.65625, 61611},
+		{21, 0.84375, 1.59375, 64576},
+		{21, -2.53125, -0.46875, 62760},
+		{21, 1.96875, -2.90625, 50848},
+		{21, -5.15625, -5.34375, 4306},
+		{22, -0.65625, 5.71875, 43690},
+		{22, 4.40625, 3.65625, 44326},
+		{22, 0.84375, 1.59375, 43690},
+		{22, -2.53125, -0.46875, 43690},
+		{22, 1.96875, -2.90625, 52353},
+		{22, -5.15625, -5.34375, 43690},
+		{23, -0.65625, 5.71875, 43690},
+		{23, 4.40625, 3.65625, 5987},
+		{23, 0.84375, 1.59375, 20908},
+		{23, -2.53125, -0.46875, 4488},
+		{23, 1.96875, -2.90625, 2845},
+		{23, -5.15625, -5.34375, 40378},
+		{24, -0.65625, 5.71875, 52428},
+		{24, 4.40625, 3.65625, 3592},
+		{24, 0.84375, 1.59375, 12545},
+		{24, -2.53125, -0.46875, 2693},
+		{24, 1.96875, -2.90625, 1707},
+		{24, -5.15625, -5.34375, 24227},
 	};
 	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
 		pattern_node n = pattern_node_default(PATTERN_TILING);
