@@ -1023,7 +1023,106 @@ static double tiling_dodeca_hex(dvec3 p, bool five)
 	return r / (five ? 5.0 : 3.0);
 }
 
-/* TilingPattern::EvaluateRaw's choice; the parser refuses SCENE_TILINGS + 1 to 27, POV-Ray's others are
+/* ---- the Penrose tilings P2 (26, kites and darts) and P3 (27, rhombi): the plane folded by the
+ * decagon's symmetry, scaled down by phi^2 per step to the seed triangle, then subdivided back as
+ * the half-kite and half-dart Robinson triangles deflate, POV-Ray's tiling_penrose. The distance
+ * factors 5.55 and 4.46 are POV-Ray's own (its source calls them empirical). */
+
+#define PEN_PHI 1.6180339887498948482
+#define PEN_INVPHI 0.61803398874989484820
+#define PEN_SQRPHI 2.6180339887498948482
+#define PEN_INVSQRPHI 0.38196601125010515180
+#define PEN_SIN18 0.30901699437494742410
+#define PEN_SIN36 0.58778525229247312917
+#define PEN_SIN54 0.80901699437494742410
+#define PEN_SIN72 0.95105651629515357212
+#define PEN_TAN72 3.0776835371752534026
+#define PEN_TAN36 0.72654252800536088590
+#define PEN_COS18 PEN_SIN72
+#define PEN_COS36 PEN_SIN54
+#define PEN_COS72 PEN_SIN18
+#define PEN_SIN108 PEN_SIN72
+#define PEN_COS108 (-PEN_SIN18)
+#define PEN_SIN144 PEN_SIN36
+#define PEN_COS144 (-PEN_SIN54)
+#define PEN_TAN108 (-PEN_TAN72)
+#define PEN_TAN144 (-PEN_TAN36)
+#define PEN_EPS 1e-6 /* POV-Ray's TILING_EPSILON */
+
+static double max3(double a, double b, double c) { return fmax(a, fmax(b, c)); }
+
+static double penrose_halfdart(double x, double z, int depth, bool rhombs);
+
+static double penrose_halfkite(double x, double z, int depth, bool rhombs)
+{
+	z = fabs(z);
+	if (depth > 0) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN144)
+			return penrose_halfdart(x * PEN_PHI, z * PEN_PHI, depth - 1, rhombs);
+		x -= PEN_COS36, z -= PEN_SIN36;
+		double rx = x * PEN_COS108 - z * PEN_SIN108, rz = z * PEN_COS108 + x * PEN_SIN108;
+		return penrose_halfkite(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+	}
+	if (rhombs) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN72) {
+			double d1 = fabs(PEN_SIN72 * (x - PEN_INVPHI) - PEN_COS72 * z) * 5.55;
+			double d2 = fabs(PEN_SIN108 * (x - 1.0) - PEN_COS108 * z) * 5.55;
+			return max3(1.0 - d1 / 2.0, 1.0 - d2 / 2.0, 0.5 + PEN_EPS);
+		}
+		double d1 = fabs(z) * 5.55, d2 = fabs(PEN_SIN72 * (x - PEN_INVPHI) - PEN_COS72 * z) * 5.55;
+		return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+	}
+	double d1 = fabs(PEN_SIN36 * x - PEN_COS36 * z) * 4.46, d2 = fabs(PEN_SIN108 * (x - 1.0) - PEN_COS108 * z) * 4.46;
+	return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+}
+
+static double penrose_halfdart(double x, double z, int depth, bool rhombs)
+{
+	z = fabs(z);
+	if (depth > 0) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN108) {
+			double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+			return penrose_halfkite(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+		}
+		x -= 1.0;
+		double rx = x * PEN_COS144 + z * PEN_SIN144, rz = z * PEN_COS144 - x * PEN_SIN144;
+		return penrose_halfdart(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+	}
+	if (rhombs) {
+		double d1 = fabs(PEN_SIN36 * x - PEN_COS36 * z) * 5.55, d2 = fabs(PEN_SIN144 * (x - 1.0) - PEN_COS144 * z) * 5.55;
+		return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+	}
+	double d1 = fabs(z) * 4.46, d2 = fabs(PEN_SIN144 * (x - 1.0) - PEN_COS144 * z) * 4.46;
+	return max3(1.0 - d1 / 2.0, 1.0 - d2 / 2.0, 0.5 + PEN_EPS);
+}
+
+/* The decagon's fold and the depth of subdivision the point's distance needs (POV-Ray's
+ * tiling_penrose with its centre flag off: five darts at the centre, or five wide rhombi). */
+static double tiling_penrose(dvec3 p, bool rhombs)
+{
+	double x = p.x, z = p.z, r = sqrt(x * x + z * z);
+	if (r <= 1e-10) /* POV-Ray's EPSILON */
+		return 1.0;
+	z = fabs(z);
+	if (x < r * PEN_COS36) {
+		double rs = x < r * PEN_COS108 ? PEN_SIN144 : PEN_SIN72, rc = x < r * PEN_COS108 ? PEN_COS144 : PEN_COS72;
+		double rx = x * rc + z * rs, rz = z * rc - x * rs;
+		x = rx, z = fabs(rz);
+	}
+	if (rhombs)
+		x *= PEN_INVPHI, z *= PEN_INVPHI;
+	double dist = fabs(PEN_SIN108 * x - PEN_COS108 * z) / PEN_COS18;
+	double steps = ceil(log(dist) / log(PEN_SQRPHI));
+	int depth = steps > 0.0 ? (int)fmin(steps, 1000.0) : 0; /* bounded: a point 10^400 away never comes */
+	x *= pow(PEN_INVSQRPHI, depth), z *= pow(PEN_INVSQRPHI, depth);
+	if (depth % 2) {
+		double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+		x = rx, z = fabs(rz);
+	}
+	return penrose_halfkite(x, z, 2 * depth, rhombs);
+}
+
+/* TilingPattern::EvaluateRaw's choice; the parser refuses 25 (P1), POV-Ray's others are
  * squares. */
 static double tiling(int number, dvec3 p)
 {
@@ -1046,6 +1145,8 @@ static double tiling(int number, dvec3 p)
 	case 22: return tiling_dodeca_tri(p);
 	case 23: return tiling_dodeca_hex(p, false);
 	case 24: return tiling_dodeca_hex(p, true);
+	case 26: return tiling_penrose(p, false);
+	case 27: return tiling_penrose(p, true);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);

@@ -78,9 +78,6 @@ typedef struct scene_fn {
 	const char *name; /* for the dump */
 } scene_fn;
 
-/* POV-Ray's tilings circe has: 1 to this (of POV-Ray 3.7's 27). */
-enum { SCENE_TILINGS = 24 };
-
 /* Entries in one colour or pigment map (POV-Ray's limit); pigments nested in maps and lists. */
 enum { SCENE_PIGMENT_MAX_ENTRIES = 256, SCENE_PIGMENT_MAX_DEPTH = 16 };
 

@@ -1,2 +1,2 @@
-// POV-Ray's Penrose tilings 25 to 27 are not in circe
+// POV-Ray's P1 Penrose tiling (25) is not in circe
 plane { y, 0 pigment { tiling 25 } }

@@ -6,3 +6,5 @@
 plane { y, 0 pigment { tiling 0 } }
 plane { y, 0 pigment { tiling 300 } }
 sphere { 0, 1 pigment { rgb 1 } normal { tiling 2 0.5 } }
+plane { y, 0 pigment { tiling 26 } }
+plane { y, 0 pigment { tiling 27 } }

@@ -732,7 +732,7 @@ static void check_facets(void)
 	      v.x, v.y, v.z);
 }
 
-/* POV-Ray's tilings 1 to 24, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+/* POV-Ray's tilings 1 to 24, 26 and 27, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
  * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
  * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
  * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
@@ -889,6 +889,19 @@ static void check_tiling(void)
 		{24, -2.53125, -0.46875, 2693},
 		{24, 1.96875, -2.90625, 1707},
 		{24, -5.15625, -5.34375, 24227},
+		/* the Penrose tilings 26 and 27, from a 64 x 64 render over [-60, 60]^2 (all pixels agree) */
+		{26, -6.5625, 57.1875, 55622},
+		{26, 44.0625, 36.5625, 20552},
+		{26, 8.4375, 15.9375, 19939},
+		{26, -25.3125, -4.6875, 0},
+		{26, 19.6875, -29.0625, 32623},
+		{26, -51.5625, -53.4375, 55680},
+		{27, -6.5625, 57.1875, 25143},
+		{27, 44.0625, 36.5625, 4423},
+		{27, 8.4375, 15.9375, 10362},
+		{27, -25.3125, -4.6875, 64580},
+		{27, 19.6875, -29.0625, 65424},
+		{27, -51.5625, -53.4375, 0},
 	};
 	for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
 		pattern_node n = pattern_node_default(PATTERN_TILING);
