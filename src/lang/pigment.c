@@ -747,12 +747,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return density_file_args(p, &b->pg);
 	if (k == SCENE_PAT_TILING) { /* tiling N: POV-Ray reads an unsigned char */
 		double v;
-		diag_loc at = lang_peek(p)->loc;
 		TRY(lang_float(p, "after 'tiling'", &v));
 		int t = (int)(unsigned char)(long long)fmax(-1e18, fmin(1e18, v));
-		if (t == 25) /* POV-Ray's P1 Penrose tiling (pentagons, stars, boats, diamonds) */
-			return lang_error(p, at, "'tiling %d' is not supported by circe (POV-Ray's P1 Penrose tiling; %s)", t,
-					  "1 to 24, 26 and 27 are");
 		b->pg.tiling = t;
 		return true;
 	}

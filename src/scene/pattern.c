@@ -1122,8 +1122,149 @@ static double tiling_penrose(dvec3 p, bool rhombs)
 	return penrose_halfkite(x, z, 2 * depth, rhombs);
 }
 
-/* TilingPattern::EvaluateRaw's choice; the parser refuses 25 (P1), POV-Ray's others are
- * squares. */
+/* Penrose's P1 tiling (25: pentagons of three kinds, stars, boats and diamonds, 0 to 1 in sixths),
+ * POV-Ray's tiling_penrose1 with a pentagon at the centre: the plane folded by the pentagon's
+ * symmetry, scaled down by phi^4 per step, then subdivided back through the six tiles'
+ * deflations. The distance factor 5.55 / phi is POV-Ray's. */
+#define PEN_TAN18 0.32491969623290632616
+#define PEN_TAN54 1.3763819204711735382
+#define PEN_SIN162 PEN_SIN18
+#define PEN_COS162 (-PEN_SIN72)
+#define PEN_TAN162 (-PEN_TAN18)
+#define PEN_TAN126 (-PEN_TAN54)
+#define P1_SCALE (5.55 * PEN_INVPHI)
+
+/* The pentagon's tenfold fold of (x, z) about the origin (r its distance). */
+static void p1_fold(double *x, double *z, double r)
+{
+	*z = fabs(*z);
+	if (*x < r * PEN_COS36) {
+		double rs = *x < r * PEN_COS108 ? PEN_SIN144 : PEN_SIN72, rc = *x < r * PEN_COS108 ? PEN_COS144 : PEN_COS72;
+		double rx = *x * rc + *z * rs, rz = *z * rc - *x * rs;
+		*x = rx, *z = fabs(rz);
+	}
+}
+
+static double p1_pentagon_dist(double x) { return fabs(x - 0.5 / PEN_TAN36) * P1_SCALE; }
+
+/* A tile's leaf value: kind k of six (k/6 up to (k+1)/6) from the distance d to its edge. */
+static double p1_leaf(int k, double d)
+{
+	return fmin(fmax((k + 1.0) / 6.0 - d / 6.0, k ? k / 6.0 + PEN_EPS : 0.0), (k + 1.0) / 6.0 - PEN_EPS);
+}
+
+static double p1_pentagon2(double x, double z, int depth, bool inside_quad);
+static double p1_pentagon3(double x, double z, int depth, bool inside_wedge);
+static double p1_star(double x, double z, int depth);
+static double p1_boat(double x, double z, int depth, bool inside_wedge);
+static double p1_diamond(double x, double z, int depth, bool side_a);
+
+static double p1_pentagon1(double x, double z, int depth)
+{
+	z = fabs(z);
+	p1_fold(&x, &z, sqrt(x * x + z * z));
+	if (depth <= 0)
+		return p1_leaf(0, p1_pentagon_dist(x));
+	if (z < (x - 0.5 / PEN_TAN36) * PEN_TAN54 + 0.5)
+		return p1_pentagon2((x - 0.5 / PEN_TAN36 - PEN_INVPHI * 0.5 * PEN_COS72 / PEN_SIN36) * PEN_PHI, z * PEN_PHI,
+				    depth - 1, false);
+	double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+	return p1_star(rx * PEN_PHI, rz * PEN_PHI, depth - 1);
+}
+
+static double p1_pentagon2(double x, double z, int depth, bool inside_quad)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		return p1_leaf(1, p1_pentagon_dist(x));
+	}
+	if (inside_quad) {
+		if (z < (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN54)
+			return p1_pentagon1((x - 0.5 / PEN_SIN36) * PEN_PHI, z * PEN_PHI, depth - 1);
+		if (z < (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN162)
+			return p1_diamond(-x * PEN_PHI, z * PEN_PHI, depth - 1, true);
+		double rx = x * PEN_COS108 - z * PEN_SIN108 + PEN_INVPHI * 0.5 / PEN_SIN36, rz = z * PEN_COS108 + x * PEN_SIN108;
+		return p1_pentagon2(rx * PEN_PHI, rz * PEN_PHI, depth - 1, true);
+	}
+	if (z < (x + 0.5 / PEN_SIN36) * PEN_TAN18)
+		return p1_diamond((x + 0.5 / PEN_SIN36 - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_PHI, z * PEN_PHI, depth - 1, false);
+	double rx = -(x * PEN_COS36 + z * PEN_SIN36) - PEN_COS72 * 0.5 / PEN_SIN36;
+	double rz = (z * PEN_COS36 - x * PEN_SIN36) - PEN_SIN72 * 0.5 / PEN_SIN36;
+	return p1_pentagon3(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+}
+
+static double p1_pentagon3(double x, double z, int depth, bool inside_wedge)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		return p1_leaf(2, p1_pentagon_dist(x));
+	}
+	if (inside_wedge && x > PEN_INVSQRPHI * 0.5 * PEN_COS72 / PEN_SIN36)
+		return p1_pentagon2(-(x - PEN_INVSQRPHI * 0.5 * PEN_COS72 / PEN_SIN36 - PEN_INVPHI * 0.5 / PEN_TAN36) * PEN_PHI,
+				    z * PEN_PHI, depth - 1, true);
+	if (!inside_wedge && x < 0.5 * PEN_COS108 / PEN_SIN36) {
+		double rx = x * PEN_COS144 + z * PEN_SIN144 - 0.5 / PEN_SIN36, rz = z * PEN_COS144 - x * PEN_SIN144;
+		return p1_pentagon2(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+	}
+	if (!inside_wedge && z > (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN126) {
+		double rx = -(x * PEN_COS36 - z * PEN_SIN36) - PEN_COS72 * 0.5 / PEN_SIN36;
+		double rz = (z * PEN_COS36 + x * PEN_SIN36) - PEN_SIN72 * 0.5 / PEN_SIN36;
+		return p1_pentagon3(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+	}
+	return p1_boat(x * PEN_PHI, z * PEN_PHI, depth - 1, inside_wedge);
+}
+
+static double p1_star(double x, double z, int depth)
+{
+	z = fabs(z);
+	if (depth <= 0)
+		return p1_leaf(3, fabs(PEN_SIN162 * (x - PEN_PHI * 0.5 / PEN_SIN36) - PEN_COS162 * z) * P1_SCALE);
+	if (x < PEN_INVPHI * 0.5 / PEN_TAN36)
+		return p1_pentagon1(x * PEN_PHI, z * PEN_PHI, depth - 1);
+	return p1_pentagon3(-(x - PEN_INVPHI / PEN_TAN36) * PEN_PHI, z * PEN_PHI, depth - 1, true);
+}
+
+static double p1_boat(double x, double z, int depth, bool inside_wedge)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		double d1 = fabs(x - PEN_INVPHI * 0.5 * PEN_COS72 / PEN_SIN36) * P1_SCALE;
+		x = -x;
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		double d2 = fabs(PEN_SIN162 * (x - PEN_PHI * 0.5 / PEN_SIN36) - PEN_COS162 * z) * P1_SCALE;
+		return fmin(max3(5.0 / 6.0 - d1 / 6.0, 5.0 / 6.0 - d2 / 6.0, 4.0 / 6.0 + PEN_EPS), 5.0 / 6.0 - PEN_EPS);
+	}
+	if (inside_wedge && x > PEN_PHI * 0.5 * PEN_COS108 / PEN_SIN36)
+		return p1_pentagon1(-x * PEN_PHI, z * PEN_PHI, depth - 1);
+	double rx = x, rz = z;
+	if (!inside_wedge)
+		rx = x * PEN_COS72 - z * PEN_SIN72, rz = z * PEN_COS72 + x * PEN_SIN72;
+	return p1_pentagon3((rx + 0.5 / PEN_SIN36) * PEN_PHI, rz * PEN_PHI, depth - 1, true);
+}
+
+static double p1_diamond(double x, double z, int depth, bool side_a)
+{
+	z = fabs(z);
+	if (depth <= 0)
+		return p1_leaf(5, fabs(PEN_SIN18 * (x + PEN_INVPHI * 0.5 / PEN_SIN36) - PEN_COS18 * z) * P1_SCALE);
+	return side_a ? p1_pentagon1(x * PEN_PHI, z * PEN_PHI, depth - 1) : p1_pentagon3(x * PEN_PHI, z * PEN_PHI, depth - 1, true);
+}
+
+static double tiling_penrose1(dvec3 p)
+{
+	double x = p.x, z = p.z, r = sqrt(x * x + z * z);
+	if (r <= 1e-10) /* POV-Ray's EPSILON */
+		return 1.0;
+	p1_fold(&x, &z, r);
+	double steps = ceil(log(x * 2.0 * PEN_TAN36) / log(PEN_SQRPHI * PEN_SQRPHI));
+	int depth = steps > 0.0 ? (int)fmin(steps, 500.0) : 0;
+	double shrink = pow(PEN_INVSQRPHI * PEN_INVSQRPHI, depth);
+	return p1_pentagon1(x * shrink, z * shrink, 4 * depth);
+}
+
+/* TilingPattern::EvaluateRaw's choice: POV-Ray's 27; 0 and its numbers past 27 are squares. */
 static double tiling(int number, dvec3 p)
 {
 	switch (number) {
@@ -1145,6 +1286,7 @@ static double tiling(int number, dvec3 p)
 	case 22: return tiling_dodeca_tri(p);
 	case 23: return tiling_dodeca_hex(p, false);
 	case 24: return tiling_dodeca_hex(p, true);
+	case 25: return tiling_penrose1(p);
 	case 26: return tiling_penrose(p, false);
 	case 27: return tiling_penrose(p, true);
 	case 2: return tiling_hexagon(p);

@@ -1,6 +1,6 @@
-// POV-Ray's tiling pattern: tilings 1 to 24 (squares, hexagons, triangles, lozenges, rhombi,
-// rectangles); 0 and numbers past 27 are squares, as POV-Ray's unsigned char and default.
-#for (T, 1, 24)
+// POV-Ray's tiling pattern: its 27 tilings (squares and hexagons to Penrose's three); 0 and
+// numbers past 27 are squares, as POV-Ray's unsigned char and default.
+#for (T, 1, 27)
   plane { y, 0 pigment { tiling T color_map { [0 rgb 0] [1 rgb 1] } } }
 #end
 plane { y, 0 pigment { tiling 0 } }

@@ -732,7 +732,7 @@ static void check_facets(void)
 	      v.x, v.y, v.z);
 }
 
-/* POV-Ray's tilings 1 to 24, 26 and 27, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
+/* POV-Ray's 27 tilings, against povray 3.7.0 itself: a plane `pigment { tiling T color_map {
  * [0 rgb 0] [1 rgb 1] } }` seen from above by an orthographic camera (16 x 16 pixels over [0, 4]^2,
  * no antialiasing, ambient 1, assumed_gamma 1, File_Gamma 1, a 16-bit PNG): the pixel's value
  * over 65535 at its centre <x, 0, z>. (All 1536 pixels of the six agree to 1/65535; these are
@@ -889,7 +889,16 @@ static void check_tiling(void)
 		{24, -2.53125, -0.46875, 2693},
 		{24, 1.96875, -2.90625, 1707},
 		{24, -5.15625, -5.34375, 24227},
-		/* the Penrose tilings 26 and 27, from a 64 x 64 render over [-60, 60]^2 (all pixels agree) */
+		/* the Penrose tilings 25 to 27, from 64 x 64 renders over [-60, 60]^2 (all pixels agree; 25 also
+		 * over [-6, 6]^2: its last two rows here) */
+		{25, -6.5625, 57.1875, 24562},
+		{25, 44.0625, 36.5625, 28657},
+		{25, 8.4375, 15.9375, 54216},
+		{25, -25.3125, -4.6875, 30182},
+		{25, 19.6875, -29.0625, 38246},
+		{25, -51.5625, -53.4375, 21071},
+		{25, 4.59375, 3.28125, 28153},
+		{25, -0.09375, -4.78125, 25325},
 		{26, -6.5625, 57.1875, 55622},
 		{26, 44.0625, 36.5625, 20552},
 		{26, 8.4375, 15.9375, 19939},
