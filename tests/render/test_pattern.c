@@ -1,8 +1,11 @@
 /* test_pattern: POV-Ray's patterns against values worked out by hand from POV-Ray 3.7's
  * definitions (source/core/material/pattern.cpp: each table row is the formula evaluated at that
  * point), the wave functions, the colour map's interpolation, block lists, pigment maps, warps,
- * image_map's planar/spherical/cylindrical mappings, the noise's and turbulence's range, crackle's
- * form, metric and offset against a brute force, and average (pigments and normals). */
+ * image_map's planar/spherical/cylindrical/torus mappings and palette filter/transmit, the noise's
+ * and turbulence's range, crackle's form, metric and offset against a brute force, average
+ * (pigments and normals), slope, density_file's three interpolations, image_pattern, facets
+ * against a brute-force nearest point, material_map, and the 27 tilings against povray's own
+ * render. */
 #include "check.h"
 #include "scene/pattern.h"
 
