@@ -747,13 +747,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return density_file_args(p, &b->pg);
 	if (k == SCENE_PAT_TILING) { /* tiling N: POV-Ray reads an unsigned char */
 		double v;
-		diag_loc at = lang_peek(p)->loc;
 		TRY(lang_float(p, "after 'tiling'", &v));
 		int t = (int)(unsigned char)(long long)fmax(-1e18, fmin(1e18, v));
-		if (t >= 7 && t <= 27)
-			return lang_error(p, at, "'tiling %d' is not supported by circe (tilings 1 to 6 are: squares, hexagons, "
-						 "triangles, lozenges, rhombi, rectangles)",
-					  t);
 		b->pg.tiling = t;
 		return true;
 	}

@@ -693,10 +693,657 @@ static double tiling_rectangle(dvec3 p)
 	return fabs(fmax(dx, dz) / 2.0 + (along_x ? 0.5 : 0.0));
 }
 
-/* TilingPattern::EvaluateRaw's choice; the parser refuses 7 to 27, POV-Ray's others are squares. */
+#define TILE_R2 1.4142135623730950488 /* sqrt 2 */
+#define TILE_H2 0.70710678118654752440 /* sqrt 2 / 2 */
+
+/* Octagons and squares (7): a cell of 1 + sqrt 2 folded onto its eighth; the square (kind 0, up
+ * to 1/2) where |x| + |z| < sqrt 2 / 2 about the cell's corner, the octagon (above 1/2) else. */
+static double tiling_octa_square(dvec3 p)
+{
+	const double cell = TILE_R2 + 1.0, mid = TILE_H2 + 0.5;
+	double x = fabs(mod_floor(p.x, cell) - mid), z = fabs(mod_floor(p.z, cell) - mid);
+	if (z > x) {
+		double t = x;
+		x = z, z = t;
+	}
+	if (x + z < TILE_H2)
+		return (x + z) / TILE_R2;
+	return fmax(0.500000000001, fmax(1.0 - z, (TILE_R2 + TILE_H2 - (x + z)) / TILE_R2)); /* POV-Ray's floor */
+}
+
+/* Squares and triangles in rows (8): a square row of height 1 and a triangle row of height
+ * sqrt 3 / 2, shifted by half a square; squares one kind (2/3 up), triangles two (0 and 1/3). */
+static double tiling_square_triangle(dvec3 p)
+{
+	double x = p.x - floor(p.x), z = mod_floor(p.z, 2.0 + TILE_S3);
+	int kind = 0;
+	if (z > TILE_H3 + 1.0)
+		z -= TILE_H3 + 1.0, x += x > 0.5 ? -0.5 : 0.5;
+	if (x > 0.5)
+		x = 1.0 - x;
+	z -= 1.0;
+	if (z > 0.0) { /* a triangle */
+		if (x == 0.0)
+			z = TILE_H3 - z, x = 0.5, kind ^= 1;
+		else if (z / x > TILE_S3)
+			z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+		return (kind + fmax(1.0 - 2.0 * z * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3)) / 3.0;
+	}
+	if (z < -0.5) /* a square */
+		z = -1.0 - z;
+	if (x > 0.5)
+		x = 1.0 - x;
+	double d1 = fmin(2.0 + 2.0 * TILE_S3 * fabs(x), 3.0), d2 = fmin(2.0 + 2.0 * TILE_S3 * fabs(z), 3.0);
+	return (5.0000001 - fmin(d1, d2)) / 3.0; /* POV-Ray's constant */
+}
+
+/* Hexagons and triangles (9, the trihexagonal tiling): triangles two kinds (0, 1/3), hexagons
+ * above 2/3. */
+static double tiling_hexa_triangle(dvec3 p)
+{
+	double x = mod_floor(p.x + 0.5, 2.0), z = mod_floor(p.z, 2.0 * TILE_S3);
+	int kind = 0;
+	if (z > TILE_S3)
+		z -= TILE_S3, x += x < 1.0 ? 1.0 : -1.0;
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 1.0)
+		x = 2.0 - x;
+	if (TILE_S3 * x + z < TILE_H3) /* a triangle */
+		return (kind + fmax(1.0 - z * 2.0 * TILE_S3, 1.0 + (TILE_S3 * x + z - TILE_H3) * TILE_S3)) / 3.0;
+	double d = 5.0 - fmin(2.0 + 2.0 * z * TILE_S3, 2.0 + 2.0 * (TILE_S3 * x + z - TILE_H3) * TILE_H3);
+	return fmax(d, 2.0000001) / 3.0; /* POV-Ray's floor */
+}
+
+/* Squares in rows offset by half a square (10). */
+static double tiling_square_offset(dvec3 p)
+{
+	double z = mod_floor(p.z, 2.0), x = p.x;
+	if (z > 1.0)
+		x += 0.5, z -= 1.0;
+	x -= floor(x);
+	return fmax(2.0 * fabs(x - 0.5), 2.0 * fabs(z - 0.5));
+}
+
+/* The pinwheel of a square and four 2 x 1 rectangles in a 3 x 3 cell, shared by tilings 11 and
+ * 12: the unit square (ix, iz) of the cell moved to its tile's frame; the square is kind 0, the
+ * rectangles along z kind 1, along x kind 2. */
+static double pinwheel(double x, double z)
+{
+	int kind = 2;
+	switch ((int)x + 3 * (int)z) {
+	case 0:
+	case 3: z -= 1.0; break;
+	case 1:
+	case 2: x -= 2.0, kind = 1; break;
+	case 4: x -= 1.0, z -= 1.0, kind = 0; break;
+	case 5:
+	case 8: x -= 2.0, z -= 2.0; break;
+	case 6:
+	case 7: x -= 1.0, z -= 2.0, kind = 1; break;
+	default: break; /* the cell's far edge (tiling 12's |x| = 3): as POV-Ray, unmoved */
+	}
+	double dx = kind == 1 ? 2.0 * (fmax(fabs(x), 0.5) - 0.5) : 2.0 * fabs(x - 0.5);
+	double dz = kind == 2 ? 2.0 * (fmax(fabs(z), 0.5) - 0.5) : 2.0 * fabs(z - 0.5);
+	return (fmax(dx, dz) + kind) / 3.0;
+}
+
+/* A square ringed by four rectangles turning one way (11), or both ways (12: a 6 x 6 cell folded
+ * in four about its centre). */
+static double tiling_square_rectangle(dvec3 p) { return pinwheel(mod_floor(p.x, 3.0), mod_floor(p.z, 3.0)); }
+
+static double tiling_rectangle_square(dvec3 p)
+{
+	return pinwheel(fabs(mod_floor(p.x, 6.0) - 3.0), fabs(mod_floor(p.z, 6.0) - 3.0));
+}
+
+/* Squares cut by their diagonals into an inner square and four triangles, on a grid turned by
+ * 45 degrees (13: three kinds; 14: the four triangles each a kind of its own, five in all): the
+ * cell of 4 / sqrt 2 folded about its centre. */
+static double tiling_square_internal(dvec3 p, bool five)
+{
+	double x = mod_floor(p.x * TILE_R2, 4.0) - 2.0, z = mod_floor(p.z * TILE_R2, 4.0) - 2.0;
+	int mir_x = x < 0.0 ? 1 : 0, mir_z = z < 0.0 ? 2 : 3;
+	x = fabs(x), z = fabs(z);
+	double d;
+	int base;
+	switch ((int)x + 2 * (int)z) {
+	case 0: /* the inner square */
+		d = fmax(2.0 * fmax(x - 0.5, 0.0), 2.0 * fmax(z - 0.5, 0.0));
+		return five ? (4.000001 + d) / 5.0 : d / 3.0; /* POV-Ray's constant */
+	case 1:
+		d = fabs(1.5 - x) * 2.0;
+		if (z > 0.5)
+			d = fmax(d, 1.0 - TILE_R2 * fabs(x - z));
+		base = five ? mir_x : 2;
+		break;
+	case 2:
+		d = fabs(1.5 - z) * 2.0;
+		if (x > 0.5)
+			d = fmax(d, 1.0 - TILE_R2 * fabs(x - z));
+		base = five ? mir_z : 1;
+		break;
+	case 3:
+		if (x > z)
+			d = fmax(fabs(1.5 - x) * 2.0, 1.0 - TILE_R2 * fabs(z - x)), base = five ? mir_x : 2;
+		else
+			d = fmax(fabs(1.5 - z) * 2.0, 1.0 - TILE_R2 * fabs(x - z)), base = five ? mir_z : 1;
+		break;
+	default: return 0.0; /* the cell's far edge: POV-Ray's 0 */
+	}
+	return (base + d) / (five ? 5.0 : 3.0);
+}
+
+/* Squares of side 1 and 2 (15) in a 5 x 5 cell: each unit square moved to its square's frame. */
+static double tiling_square_double(dvec3 p)
+{
+	/* per unit square (x + 5 z): its shift in x and z, and whether it is a small square */
+	static const signed char shift[25][3] = {
+		{0, 0, 1}, {2, 0, 0}, {2, 0, 0}, {4, 1, 0}, {4, 1, 0}, {1, 2, 0}, {1, 2, 0}, {2, 1, 1}, {4, 1, 0},
+		{4, 1, 0}, {1, 2, 0}, {1, 2, 0}, {3, 3, 0}, {3, 3, 0}, {4, 2, 1}, {0, 4, 0}, {1, 3, 1}, {3, 3, 0},
+		{3, 3, 0}, {5, 4, 0}, {0, 4, 0}, {2, 5, 0}, {2, 5, 0}, {3, 4, 1}, {5, 4, 0}};
+	double x = mod_floor(p.x, 5.0), z = mod_floor(p.z, 5.0);
+	int cell = (int)x + 5 * (int)z;
+	cell = cell < 0 ? 0 : cell > 24 ? 24 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	if (shift[cell][2])
+		return fabs(fmax(2.0 * fabs(x - 0.5), 2.0 * fabs(z - 0.5)) / 2.0);
+	double dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	return fabs(fmax(dx, dz) / 2.0 + 0.50000001); /* POV-Ray's constant */
+}
+
+/* Hexagons, squares and triangles (16, the rhombitrihexagonal tiling: three kinds; 17: each
+ * square and triangle of its own orientation, six kinds). The cell of (3 + sqrt 3) x 2 (1 + sqrt 3)
+ * is folded to a quarter about a hexagon's centre; the part below the hexagon's edge turned by
+ * 60 degrees onto the square and the triangle beside it. */
+static double tiling_hexa_square_triangle(dvec3 p, bool six)
+{
+	const double half = TILE_H3 + 1.5, ring = TILE_S3 + 1.0;
+	double x = mod_floor(p.x + 0.5, 3.0 + TILE_S3), z = mod_floor(p.z, 2.0 * ring);
+	int mir_x = 0, mir_z = 0, rota = 0;
+	if (x > half)
+		x -= half, z += z < ring ? TILE_H3 + 0.5 : -(TILE_H3 + 0.5);
+	if (z > ring)
+		z -= ring;
+	if (z > 0.5 + TILE_H3)
+		z = ring - z, mir_z ^= 1;
+	if (x > 1.0 + TILE_H3)
+		x = TILE_S3 + 2.0 - x, mir_x ^= 1;
+	if (TILE_S3 * x + z < TILE_H3 + 2.0 && x < 0.5 + TILE_H3) { /* turn the lower part by 60 degrees */
+		double rz = z - (0.5 + TILE_H3), rx = x - (1.0 + TILE_H3);
+		x = rx / 2.0 - rz * TILE_H3 + 1.0 + TILE_H3;
+		z = rz / 2.0 + rx * TILE_H3 + 0.5 + TILE_H3;
+		rota ^= 1;
+		if (z < 0.0)
+			z = -z;
+		if (x > 1.0 + TILE_H3)
+			x = TILE_S3 + 2.0 - x, mir_x ^= 1, mir_z ^= 1;
+	}
+	if (!(TILE_S3 * x + z < TILE_H3 + 2.0) && !(z < 0.5)) { /* the hexagon */
+		double hz = fabs(z - 0.5), hx = fabs(x - TILE_H3);
+		double d = fmin(2.0 * hz * TILE_S3, (TILE_S3 * hx + hz) * TILE_S3 - 1.5);
+		return six ? fmax(6.0 - d, 5.000001) / 6.0 : fmax(3.0 - d, 2.0000001) / 3.0; /* POV-Ray's floors */
+	}
+	if (!(z < 0.5))
+		return 0.0;
+	if (x > TILE_H3 + 0.5) { /* a square */
+		double sx = x - (TILE_H3 + 0.5), sz = z - 0.5;
+		double d = fmax(fmax(1.0 + sz * 2.0 * TILE_S3, 0.0), fmax(1.0 - sx * 2.0 * TILE_S3, 0.0));
+		return six ? (d + rota * (1.000001 + ((mir_x + mir_z) % 2))) / 6.0 : d / 3.0;
+	}
+	double tx = fabs(x - (TILE_H3 + 0.5)); /* a triangle */
+	double d = fmax(2.0 - tx * 2.0 * TILE_S3, (TILE_S3 * z + tx) * TILE_S3 + 0.5);
+	return six ? (((rota + mir_x) % 2 ? 2.0 : 3.0) + d) / 6.0 : d / 3.0;
+}
+
+/* Pairs of 2 x 1 rectangles (18) in a 4 x 4 cell, two kinds (along x: 1/2 and up; along z: 0). */
+static double tiling_rectangle_pair(dvec3 p)
+{
+	static const signed char shift[16][3] = {
+		{0, 1, 1}, {1, 1, 1}, {3, 0, 0}, {3, 0, 0}, {0, 1, 1}, {1, 1, 1}, {3, 1, 0}, {3, 1, 0},
+		{1, 2, 0}, {1, 2, 0}, {2, 3, 1}, {3, 3, 1}, {1, 3, 0}, {1, 3, 0}, {2, 3, 1}, {3, 3, 1}};
+	double x = mod_floor(p.x, 4.0), z = mod_floor(p.z, 4.0);
+	int cell = (int)x + 4 * (int)z;
+	cell = cell < 0 ? 0 : cell > 15 ? 15 : cell;
+	x -= shift[cell][0], z -= shift[cell][1];
+	bool along_x = shift[cell][2];
+	double dx, dz;
+	if (along_x)
+		dx = 2.0 * fabs(x - 0.5), dz = 2.0 * (fmax(fabs(z), 0.5) - 0.5);
+	else
+		dx = 2.0 * (fmax(fabs(x), 0.5) - 0.5), dz = 2.0 * fabs(z - 0.5);
+	return fabs((fmax(dx, dz) + (along_x ? 1.0 : 0.0)) / 2.0);
+}
+
+/* The triangle fold of tilings 19 and 20: (x, z) in a cell of triangles to POV-Ray's triangle
+ * value with kind `kind` (0 or 1) carried in. */
+static double triangle_fold(double x, double z, int kind)
+{
+	x -= floor(x), z = mod_floor(z, TILE_S3);
+	if (z > TILE_H3)
+		z = TILE_S3 - z, kind ^= 1;
+	if (x > 0.5)
+		x = 1.0 - x;
+	if (x == 0.0)
+		z = TILE_H3 - z, x = 0.5, kind ^= 1;
+	else if (z / x > TILE_S3)
+		z = TILE_H3 - z, x = 0.5 - x, kind ^= 1;
+	return (kind + fmax(1.0 - z * 2.0 * TILE_S3, 1.0 - (TILE_S3 * x - z) * TILE_S3)) / 3.0;
+}
+
+/* Hexagons among triangles, the rows shifted to the right (19) or to the left (20), the snub
+ * hexagonal tiling's two hands: triangles two kinds (0, 1/3), hexagons above 2/3. */
+static double tiling_hexa_tri(dvec3 p, bool right)
+{
+	double x = p.x, z = p.z;
+	int rows = (int)fmax(-2.0e9, fmin(2.0e9, z / TILE_H3)) / 3; /* POV-Ray's integer steps, truncated to 0 */
+	if (z < 0.0)
+		rows -= 1;
+	x += right ? rows / 2.0 : -rows / 2.0;
+	z = mod_floor(z, 3.0 * TILE_H3);
+	x = mod_floor(x + 7.0, 7.0);
+	if (right) {
+		if (x > 4.5 && z > TILE_S3)
+			x -= 4.5, z -= TILE_H3;
+		if (x > 5.0 && z < TILE_H3)
+			x -= 5.0, z += TILE_S3;
+		if (x > 2.5 && z < TILE_S3)
+			x -= 2.5, z += TILE_H3;
+	} else {
+		if (x > 2.0 && z < TILE_H3)
+			x -= 2.0, z += TILE_S3;
+		if (x > 4.5 && z < TILE_S3)
+			x -= 4.5, z += TILE_H3;
+		if (x > 2.5 && z > TILE_S3)
+			x -= 2.5, z -= TILE_H3;
+	}
+	int kind = 0, row = (int)(z / TILE_H3);
+	if (row == 2)
+		row = 1, z = 2.0 * TILE_S3 - z, kind ^= 1;
+	if (!row || x > 2.0 || z + TILE_S3 * x < TILE_S3 || TILE_S3 * x - z > TILE_S3)
+		return triangle_fold(x, z, kind);
+	z -= TILE_H3; /* the hexagon */
+	if (x > 1.0)
+		x = 2.0 - x;
+	double d = 5.0 - fmin(2.0 + 2.0 * z * TILE_S3, 2.0 + 2.0 * (TILE_S3 * x + z - TILE_H3) * TILE_H3);
+	return fmax(d, 2.000001) / 3.0; /* POV-Ray's floor */
+}
+
+/* Squares and triangles (21, the snub square tiling): a (1 + sqrt 3)^2 cell folded to a quarter
+ * and turned onto one square's corner; four kinds of triangle (0 to 4/6), two of square (4/6 up). */
+static double tiling_square_tri(dvec3 p)
+{
+	const double cell = 1.0 + TILE_S3, half = 0.5 + TILE_H3;
+	double x = mod_floor(p.x, cell), z = mod_floor(p.z, cell);
+	int delta = 0, gamma = 0, beta = 0;
+	if (z > half)
+		z = cell - z, delta ^= 1;
+	if (x > half)
+		x = cell - x, delta ^= 1, beta = 1;
+	int xflop = 2.0 * x + (TILE_S3 - 1.0) * 2.0 * z / (TILE_S3 + 1.0) > TILE_S3;
+	int zflop = 2.0 * z * TILE_S3 + (TILE_S3 - 3.0) * 2.0 * x / (TILE_S3 + 1.0) > TILE_S3;
+	double t;
+	switch (xflop + 2 * zflop) {
+	case 0: gamma = 2 * beta; break;
+	case 1: /* turned clockwise */
+		gamma = beta ? 1 + 2 * delta : 3 - 2 * delta;
+		t = x, x = z, z = half - t;
+		break;
+	case 2: /* turned the other way */
+		gamma = beta ? 3 - 2 * delta : 1 + 2 * delta;
+		t = z, z = x, x = half - t;
+		break;
+	default: /* mirrored through the corner */
+		gamma = beta ? 0 : 2;
+		x = half - x, z = half - z;
+		break;
+	}
+	if (x == 0.0)
+		z = 0.0;
+	double s = z * 2.0 * TILE_S3 - TILE_S3 + x * 2.0;
+	if (s < 0.0) /* a triangle */
+		return (gamma + 1.0 - fmin(-1.5 / TILE_S3 * s, 2.0 * x * TILE_S3)) / 6.0;
+	s = fmin(s * 1.5 / TILE_S3, 1.0); /* a square */
+	if (delta)
+		return fmin(fmax((6.0 - s) / 6.0, 5.000001 / 6.0), 1.0); /* POV-Ray's constants */
+	return fmax(fmin((5.0 - s) / 6.0, 5.0 / 6.0), 4.000001 / 6.0);
+}
+
+/* Dodecagons and triangles (22, the truncated hexagonal tiling): the cell folded to a twelfth
+ * of a dodecagon, a point beyond its slanted edge turned by 120 degrees; triangles two kinds (up
+ * to 1/3, 1/3 to 2/3), dodecagons above 2/3. */
+static double tiling_dodeca_tri(dvec3 p)
+{
+	const double wing = 1.0 + TILE_H3;
+	double x = mod_floor(p.x, 2.0 + TILE_S3), z = mod_floor(p.z, 3.0 + 2.0 * TILE_S3);
+	int toggle = 0;
+	if (z > TILE_S3 + 1.5)
+		z -= TILE_S3 + 1.5, x += (x < wing ? 1.0 : -1.0) * wing;
+	if (x > wing)
+		x = 2.0 + TILE_S3 - x;
+	if (z > wing)
+		z = 2.0 + TILE_S3 - z, toggle ^= 1;
+	double d2 = x - TILE_H3 - 0.5 + z * TILE_S3;
+	if (d2 < 0.0) {
+		double tx = x, tz = z;
+		x = (1.0 + TILE_S3) / 4.0 + 0.5 * tx - TILE_H3 * tz;
+		z = (3.0 + TILE_S3) / 4.0 - TILE_H3 * tx - 0.5 * tz;
+		d2 = -d2;
+	}
+	double d3 = (z - TILE_H3 - 0.5 + x * TILE_S3) * TILE_S3;
+	if (d3 < 0.0)
+		return (fmax(d3, -1.0) + 1.0 + toggle) / 3.0;
+	double r = fmin(fmin(fmin(z * 3.0, d2 * TILE_S3), d3), fmin(x * 3.0, 1.0));
+	return (3.0000001 - r) / 3.0; /* POV-Ray's constant */
+}
+
+/* Dodecagons, hexagons and squares (23, the truncated trihexagonal tiling: three kinds; 24: the
+ * squares of its two orientations apart, five kinds): the cell folded to a twelfth of a
+ * dodecagon and its neighbours. */
+static double tiling_dodeca_hex(dvec3 p, bool five)
+{
+	const double wing = 1.5 + TILE_H3;
+	double x = mod_floor(p.x, 3.0 + TILE_S3), z = mod_floor(p.z, 3.0 + 3.0 * TILE_S3);
+	int mir_x = 0, mir_z = 0;
+	if (z > 1.5 * TILE_S3 + 1.5)
+		z -= 1.5 * TILE_S3 + 1.5, x += (x < wing ? 1.0 : -1.0) * wing;
+	if (x > wing)
+		x = 3.0 + TILE_S3 - x, mir_x ^= 1;
+	if (z > 1.0 + TILE_S3)
+		z = 2.0 + 2.0 * TILE_S3 - z, mir_z ^= 1;
+	if (x - TILE_H3 - 1.5 + z * TILE_S3 < 0.0) {
+		double tx = x, tz = z;
+		x = (3.0 + TILE_S3) / 4.0 + 0.5 * tx - TILE_H3 * tz;
+		z = (3.0 + 3.0 * TILE_S3) / 4.0 - TILE_H3 * tx - 0.5 * tz;
+	}
+	double d2 = x - TILE_H3 - 2.5 + z * TILE_S3, d1 = z * 2.0 - TILE_S3;
+	double d3 = z - 1.5 * TILE_S3 - 0.5 + x * TILE_S3, d4 = (x - 0.5) * 2.0, r;
+	if (d2 >= 0.0 && d1 >= 0.0 && d3 >= 0.0 && d4 >= 0.0) { /* the dodecagon */
+		r = (five ? 5.000001 : 3.000001) - fmin(fmin(d1, d2), fmin(d3, fmin(d4, 1.0))); /* POV-Ray's */
+	} else {
+		double d5 = 2.0 * z - 2.0 * TILE_S3 - 1.0;
+		if (d5 >= 0.0) {
+			r = 2.0 - fmin(d5, -d4);
+		} else {
+			double d6 = TILE_S3 * x - z - TILE_H3 + 0.5, d7 = d6 - 2.0;
+			switch ((d6 >= 0.0 ? 0 : 1) + (d7 >= 0.0 ? 2 : 0)) {
+			case 1: r = 1.0 - fmin(fmin(-d6, -d3), fmin(-d5, 1.0)); break; /* the left hexagon */
+			case 2: r = 1.0 - fmin(fmin(d7, -d1), 1.0); break;		 /* the bottom hexagon */
+			default: /* a slanted square */
+				r = (five ? (mir_z + mir_x) % 2 + 3.0 : 2.0) - fmin(fmin(d6, -d2), -d7);
+				break;
+			}
+		}
+	}
+	return r / (five ? 5.0 : 3.0);
+}
+
+/* ---- the Penrose tilings P2 (26, kites and darts) and P3 (27, rhombi): the plane folded by the
+ * decagon's symmetry, scaled down by phi^2 per step to the seed triangle, then subdivided back as
+ * the half-kite and half-dart Robinson triangles deflate, POV-Ray's tiling_penrose. The distance
+ * factors 5.55 and 4.46 are POV-Ray's own (its source calls them empirical). */
+
+#define PEN_PHI 1.6180339887498948482
+#define PEN_INVPHI 0.61803398874989484820
+#define PEN_SQRPHI 2.6180339887498948482
+#define PEN_INVSQRPHI 0.38196601125010515180
+#define PEN_SIN18 0.30901699437494742410
+#define PEN_SIN36 0.58778525229247312917
+#define PEN_SIN54 0.80901699437494742410
+#define PEN_SIN72 0.95105651629515357212
+#define PEN_TAN72 3.0776835371752534026
+#define PEN_TAN36 0.72654252800536088590
+#define PEN_COS18 PEN_SIN72
+#define PEN_COS36 PEN_SIN54
+#define PEN_COS72 PEN_SIN18
+#define PEN_SIN108 PEN_SIN72
+#define PEN_COS108 (-PEN_SIN18)
+#define PEN_SIN144 PEN_SIN36
+#define PEN_COS144 (-PEN_SIN54)
+#define PEN_TAN108 (-PEN_TAN72)
+#define PEN_TAN144 (-PEN_TAN36)
+#define PEN_EPS 1e-6 /* POV-Ray's TILING_EPSILON */
+
+static double max3(double a, double b, double c) { return fmax(a, fmax(b, c)); }
+
+static double penrose_halfdart(double x, double z, int depth, bool rhombs);
+
+static double penrose_halfkite(double x, double z, int depth, bool rhombs)
+{
+	z = fabs(z);
+	if (depth > 0) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN144)
+			return penrose_halfdart(x * PEN_PHI, z * PEN_PHI, depth - 1, rhombs);
+		x -= PEN_COS36, z -= PEN_SIN36;
+		double rx = x * PEN_COS108 - z * PEN_SIN108, rz = z * PEN_COS108 + x * PEN_SIN108;
+		return penrose_halfkite(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+	}
+	if (rhombs) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN72) {
+			double d1 = fabs(PEN_SIN72 * (x - PEN_INVPHI) - PEN_COS72 * z) * 5.55;
+			double d2 = fabs(PEN_SIN108 * (x - 1.0) - PEN_COS108 * z) * 5.55;
+			return max3(1.0 - d1 / 2.0, 1.0 - d2 / 2.0, 0.5 + PEN_EPS);
+		}
+		double d1 = fabs(z) * 5.55, d2 = fabs(PEN_SIN72 * (x - PEN_INVPHI) - PEN_COS72 * z) * 5.55;
+		return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+	}
+	double d1 = fabs(PEN_SIN36 * x - PEN_COS36 * z) * 4.46, d2 = fabs(PEN_SIN108 * (x - 1.0) - PEN_COS108 * z) * 4.46;
+	return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+}
+
+static double penrose_halfdart(double x, double z, int depth, bool rhombs)
+{
+	z = fabs(z);
+	if (depth > 0) {
+		if (z < (x - PEN_INVPHI) * PEN_TAN108) {
+			double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+			return penrose_halfkite(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+		}
+		x -= 1.0;
+		double rx = x * PEN_COS144 + z * PEN_SIN144, rz = z * PEN_COS144 - x * PEN_SIN144;
+		return penrose_halfdart(rx * PEN_PHI, rz * PEN_PHI, depth - 1, rhombs);
+	}
+	if (rhombs) {
+		double d1 = fabs(PEN_SIN36 * x - PEN_COS36 * z) * 5.55, d2 = fabs(PEN_SIN144 * (x - 1.0) - PEN_COS144 * z) * 5.55;
+		return fmin(max3(0.5 - d1 / 2.0, 0.5 - d2 / 2.0, 0.0), 0.5 - PEN_EPS);
+	}
+	double d1 = fabs(z) * 4.46, d2 = fabs(PEN_SIN144 * (x - 1.0) - PEN_COS144 * z) * 4.46;
+	return max3(1.0 - d1 / 2.0, 1.0 - d2 / 2.0, 0.5 + PEN_EPS);
+}
+
+/* The decagon's fold and the depth of subdivision the point's distance needs (POV-Ray's
+ * tiling_penrose with its centre flag off: five darts at the centre, or five wide rhombi). */
+static double tiling_penrose(dvec3 p, bool rhombs)
+{
+	double x = p.x, z = p.z, r = sqrt(x * x + z * z);
+	if (r <= 1e-10) /* POV-Ray's EPSILON */
+		return 1.0;
+	z = fabs(z);
+	if (x < r * PEN_COS36) {
+		double rs = x < r * PEN_COS108 ? PEN_SIN144 : PEN_SIN72, rc = x < r * PEN_COS108 ? PEN_COS144 : PEN_COS72;
+		double rx = x * rc + z * rs, rz = z * rc - x * rs;
+		x = rx, z = fabs(rz);
+	}
+	if (rhombs)
+		x *= PEN_INVPHI, z *= PEN_INVPHI;
+	double dist = fabs(PEN_SIN108 * x - PEN_COS108 * z) / PEN_COS18;
+	double steps = ceil(log(dist) / log(PEN_SQRPHI));
+	int depth = steps > 0.0 ? (int)fmin(steps, 1000.0) : 0; /* bounded: a point 10^400 away never comes */
+	x *= pow(PEN_INVSQRPHI, depth), z *= pow(PEN_INVSQRPHI, depth);
+	if (depth % 2) {
+		double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+		x = rx, z = fabs(rz);
+	}
+	return penrose_halfkite(x, z, 2 * depth, rhombs);
+}
+
+/* Penrose's P1 tiling (25: pentagons of three kinds, stars, boats and diamonds, 0 to 1 in sixths),
+ * POV-Ray's tiling_penrose1 with a pentagon at the centre: the plane folded by the pentagon's
+ * symmetry, scaled down by phi^4 per step, then subdivided back through the six tiles'
+ * deflations. The distance factor 5.55 / phi is POV-Ray's. */
+#define PEN_TAN18 0.32491969623290632616
+#define PEN_TAN54 1.3763819204711735382
+#define PEN_SIN162 PEN_SIN18
+#define PEN_COS162 (-PEN_SIN72)
+#define PEN_TAN162 (-PEN_TAN18)
+#define PEN_TAN126 (-PEN_TAN54)
+#define P1_SCALE (5.55 * PEN_INVPHI)
+
+/* The pentagon's tenfold fold of (x, z) about the origin (r its distance). */
+static void p1_fold(double *x, double *z, double r)
+{
+	*z = fabs(*z);
+	if (*x < r * PEN_COS36) {
+		double rs = *x < r * PEN_COS108 ? PEN_SIN144 : PEN_SIN72, rc = *x < r * PEN_COS108 ? PEN_COS144 : PEN_COS72;
+		double rx = *x * rc + *z * rs, rz = *z * rc - *x * rs;
+		*x = rx, *z = fabs(rz);
+	}
+}
+
+static double p1_pentagon_dist(double x) { return fabs(x - 0.5 / PEN_TAN36) * P1_SCALE; }
+
+/* A tile's leaf value: kind k of six (k/6 up to (k+1)/6) from the distance d to its edge. */
+static double p1_leaf(int k, double d)
+{
+	return fmin(fmax((k + 1.0) / 6.0 - d / 6.0, k ? k / 6.0 + PEN_EPS : 0.0), (k + 1.0) / 6.0 - PEN_EPS);
+}
+
+static double p1_pentagon2(double x, double z, int depth, bool inside_quad);
+static double p1_pentagon3(double x, double z, int depth, bool inside_wedge);
+static double p1_star(double x, double z, int depth);
+static double p1_boat(double x, double z, int depth, bool inside_wedge);
+static double p1_diamond(double x, double z, int depth, bool side_a);
+
+static double p1_pentagon1(double x, double z, int depth)
+{
+	z = fabs(z);
+	p1_fold(&x, &z, sqrt(x * x + z * z));
+	if (depth <= 0)
+		return p1_leaf(0, p1_pentagon_dist(x));
+	if (z < (x - 0.5 / PEN_TAN36) * PEN_TAN54 + 0.5)
+		return p1_pentagon2((x - 0.5 / PEN_TAN36 - PEN_INVPHI * 0.5 * PEN_COS72 / PEN_SIN36) * PEN_PHI, z * PEN_PHI,
+				    depth - 1, false);
+	double rx = x * PEN_COS36 + z * PEN_SIN36, rz = z * PEN_COS36 - x * PEN_SIN36;
+	return p1_star(rx * PEN_PHI, rz * PEN_PHI, depth - 1);
+}
+
+static double p1_pentagon2(double x, double z, int depth, bool inside_quad)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		return p1_leaf(1, p1_pentagon_dist(x));
+	}
+	if (inside_quad) {
+		if (z < (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN54)
+			return p1_pentagon1((x - 0.5 / PEN_SIN36) * PEN_PHI, z * PEN_PHI, depth - 1);
+		if (z < (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN162)
+			return p1_diamond(-x * PEN_PHI, z * PEN_PHI, depth - 1, true);
+		double rx = x * PEN_COS108 - z * PEN_SIN108 + PEN_INVPHI * 0.5 / PEN_SIN36, rz = z * PEN_COS108 + x * PEN_SIN108;
+		return p1_pentagon2(rx * PEN_PHI, rz * PEN_PHI, depth - 1, true);
+	}
+	if (z < (x + 0.5 / PEN_SIN36) * PEN_TAN18)
+		return p1_diamond((x + 0.5 / PEN_SIN36 - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_PHI, z * PEN_PHI, depth - 1, false);
+	double rx = -(x * PEN_COS36 + z * PEN_SIN36) - PEN_COS72 * 0.5 / PEN_SIN36;
+	double rz = (z * PEN_COS36 - x * PEN_SIN36) - PEN_SIN72 * 0.5 / PEN_SIN36;
+	return p1_pentagon3(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+}
+
+static double p1_pentagon3(double x, double z, int depth, bool inside_wedge)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		return p1_leaf(2, p1_pentagon_dist(x));
+	}
+	if (inside_wedge && x > PEN_INVSQRPHI * 0.5 * PEN_COS72 / PEN_SIN36)
+		return p1_pentagon2(-(x - PEN_INVSQRPHI * 0.5 * PEN_COS72 / PEN_SIN36 - PEN_INVPHI * 0.5 / PEN_TAN36) * PEN_PHI,
+				    z * PEN_PHI, depth - 1, true);
+	if (!inside_wedge && x < 0.5 * PEN_COS108 / PEN_SIN36) {
+		double rx = x * PEN_COS144 + z * PEN_SIN144 - 0.5 / PEN_SIN36, rz = z * PEN_COS144 - x * PEN_SIN144;
+		return p1_pentagon2(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+	}
+	if (!inside_wedge && z > (x - PEN_INVSQRPHI * 0.5 / PEN_SIN36) * PEN_TAN126) {
+		double rx = -(x * PEN_COS36 - z * PEN_SIN36) - PEN_COS72 * 0.5 / PEN_SIN36;
+		double rz = (z * PEN_COS36 + x * PEN_SIN36) - PEN_SIN72 * 0.5 / PEN_SIN36;
+		return p1_pentagon3(rx * PEN_PHI, rz * PEN_PHI, depth - 1, false);
+	}
+	return p1_boat(x * PEN_PHI, z * PEN_PHI, depth - 1, inside_wedge);
+}
+
+static double p1_star(double x, double z, int depth)
+{
+	z = fabs(z);
+	if (depth <= 0)
+		return p1_leaf(3, fabs(PEN_SIN162 * (x - PEN_PHI * 0.5 / PEN_SIN36) - PEN_COS162 * z) * P1_SCALE);
+	if (x < PEN_INVPHI * 0.5 / PEN_TAN36)
+		return p1_pentagon1(x * PEN_PHI, z * PEN_PHI, depth - 1);
+	return p1_pentagon3(-(x - PEN_INVPHI / PEN_TAN36) * PEN_PHI, z * PEN_PHI, depth - 1, true);
+}
+
+static double p1_boat(double x, double z, int depth, bool inside_wedge)
+{
+	z = fabs(z);
+	if (depth <= 0) {
+		double d1 = fabs(x - PEN_INVPHI * 0.5 * PEN_COS72 / PEN_SIN36) * P1_SCALE;
+		x = -x;
+		p1_fold(&x, &z, sqrt(x * x + z * z));
+		double d2 = fabs(PEN_SIN162 * (x - PEN_PHI * 0.5 / PEN_SIN36) - PEN_COS162 * z) * P1_SCALE;
+		return fmin(max3(5.0 / 6.0 - d1 / 6.0, 5.0 / 6.0 - d2 / 6.0, 4.0 / 6.0 + PEN_EPS), 5.0 / 6.0 - PEN_EPS);
+	}
+	if (inside_wedge && x > PEN_PHI * 0.5 * PEN_COS108 / PEN_SIN36)
+		return p1_pentagon1(-x * PEN_PHI, z * PEN_PHI, depth - 1);
+	double rx = x, rz = z;
+	if (!inside_wedge)
+		rx = x * PEN_COS72 - z * PEN_SIN72, rz = z * PEN_COS72 + x * PEN_SIN72;
+	return p1_pentagon3((rx + 0.5 / PEN_SIN36) * PEN_PHI, rz * PEN_PHI, depth - 1, true);
+}
+
+static double p1_diamond(double x, double z, int depth, bool side_a)
+{
+	z = fabs(z);
+	if (depth <= 0)
+		return p1_leaf(5, fabs(PEN_SIN18 * (x + PEN_INVPHI * 0.5 / PEN_SIN36) - PEN_COS18 * z) * P1_SCALE);
+	return side_a ? p1_pentagon1(x * PEN_PHI, z * PEN_PHI, depth - 1) : p1_pentagon3(x * PEN_PHI, z * PEN_PHI, depth - 1, true);
+}
+
+static double tiling_penrose1(dvec3 p)
+{
+	double x = p.x, z = p.z, r = sqrt(x * x + z * z);
+	if (r <= 1e-10) /* POV-Ray's EPSILON */
+		return 1.0;
+	p1_fold(&x, &z, r);
+	double steps = ceil(log(x * 2.0 * PEN_TAN36) / log(PEN_SQRPHI * PEN_SQRPHI));
+	int depth = steps > 0.0 ? (int)fmin(steps, 500.0) : 0;
+	double shrink = pow(PEN_INVSQRPHI * PEN_INVSQRPHI, depth);
+	return p1_pentagon1(x * shrink, z * shrink, 4 * depth);
+}
+
+/* TilingPattern::EvaluateRaw's choice: POV-Ray's 27; 0 and its numbers past 27 are squares. */
 static double tiling(int number, dvec3 p)
 {
 	switch (number) {
+	case 7: return tiling_octa_square(p);
+	case 8: return tiling_square_triangle(p);
+	case 9: return tiling_hexa_triangle(p);
+	case 10: return tiling_square_offset(p);
+	case 11: return tiling_square_rectangle(p);
+	case 12: return tiling_rectangle_square(p);
+	case 13: return tiling_square_internal(p, false);
+	case 14: return tiling_square_internal(p, true);
+	case 15: return tiling_square_double(p);
+	case 16: return tiling_hexa_square_triangle(p, false);
+	case 17: return tiling_hexa_square_triangle(p, true);
+	case 18: return tiling_rectangle_pair(p);
+	case 19: return tiling_hexa_tri(p, true);
+	case 20: return tiling_hexa_tri(p, false);
+	case 21: return tiling_square_tri(p);
+	case 22: return tiling_dodeca_tri(p);
+	case 23: return tiling_dodeca_hex(p, false);
+	case 24: return tiling_dodeca_hex(p, true);
+	case 25: return tiling_penrose1(p);
+	case 26: return tiling_penrose(p, false);
+	case 27: return tiling_penrose(p, true);
 	case 2: return tiling_hexagon(p);
 	case 3: return tiling_triangle(p);
 	case 4: return tiling_lozenge(p);

@@ -47,7 +47,7 @@ typedef enum pattern_kind {
 	PATTERN_DENSITY_FILE, /* a df3 file's voxels on the unit cube */
 	PATTERN_IMAGE_PATTERN, /* an image's grey (or alpha), mapped as an image_map */
 	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
-	PATTERN_TILING, /* POV-Ray's tilings of the x-z plane (1 to 6) */
+	PATTERN_TILING, /* POV-Ray's 27 tilings of the x-z plane */
 	PATTERN_MATERIAL_MAP, /* a block pattern: an image's palette index (or red) picks the entry */
 	PATTERN_KIND_COUNT
 } pattern_kind;

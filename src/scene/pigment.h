@@ -138,7 +138,7 @@ typedef struct scene_pigment {
 	const char *vox_file; /* for the dump */
 	bool use_alpha; /* IMAGE_PATTERN (its file in image): the value is the image's transparency */
 	double facets_coords, facets_size; /* FACETS (a normal's only; its metric: crackle_metric): 0, 0.1 */
-	int tiling; /* TILING: POV-Ray's tiling number (circe has 1 to 6; 0 and above 27 are 1, as POV-Ray) */
+	int tiling; /* TILING: POV-Ray's tiling number, 1 to 27 (0 and above 27 are 1, as POV-Ray) */
 	/* IMAGE: `filter I, F` / `transmit I, F` of a palette image: 256 entries each, NaN where not
 	 * given (NULL: none given); the largest index given, for the check against the palette */
 	const float *pal_filter, *pal_transmit;

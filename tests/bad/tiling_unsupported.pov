@@ -1,2 +1,0 @@
-// POV-Ray's tilings 7 to 27 are not in circe
-plane { y, 0 pigment { tiling 12 } }
