@@ -519,7 +519,7 @@ static float cos_bound(vec3 n, vec3 to_c, float d, float r)
 	return fmaxf(0.0f, c * cos_s + sin_t * sin_s);
 }
 
-float light_importance(const light *l, vec3 p, vec3 n)
+float light_importance(const light *l, vec3 p, vec3 n, bool cosine)
 {
 	bool normal = has_normal(n);
 	switch (l->kind) {
@@ -538,8 +538,10 @@ float light_importance(const light *l, vec3 p, vec3 n)
 		}
 		return RENDER_PI * l->imp_lum;
 	case LIGHT_PARALLEL:
-	case LIGHT_CYLINDER:
-		return l->imp_lum * (normal ? fmaxf(0.0f, -v3_dot(n, l->dir)) : 1.0f);
+	case LIGHT_CYLINDER: {
+		float c = normal ? fmaxf(0.0f, -v3_dot(n, l->dir)) : 1.0f;
+		return l->imp_lum * (cosine || !(c > 0.0f) ? c : 1.0f);
+	}
 	default:
 		break;
 	}
@@ -548,6 +550,8 @@ float light_importance(const light *l, vec3 p, vec3 n)
 	float cosb = normal ? cos_bound(n, to_c, d, r) : 1.0f;
 	if (!(cosb > 0.0f))
 		return 0.0f;
+	if (!cosine)
+		cosb = 1.0f;
 	float law;
 	if ((l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT) && l->falloff == LIGHT_FALLOFF_NONE)
 		law = 1.0f;
@@ -764,15 +768,17 @@ static bool tree_build(light_set *s)
 }
 
 /* A tree node's importance at (p, n) (a leaf's: its light's own). */
-static float node_importance(const light_set *s, const light_node *nd, vec3 p, vec3 n)
+static float node_importance(const light_set *s, const light_node *nd, vec3 p, vec3 n, bool cosine)
 {
 	if (nd->light >= 0)
-		return light_importance(&s->lights[nd->light], p, n);
+		return light_importance(&s->lights[nd->light], p, n, cosine);
 	vec3 to_c = v3_sub(nd->c, p);
 	float d2 = v3_length2(to_c), d = sqrtf(d2);
 	float cosb = has_normal(n) ? cos_bound(n, to_c, d, nd->r) : 1.0f;
 	if (!(cosb > 0.0f))
 		return 0.0f;
+	if (!cosine)
+		cosb = 1.0f;
 	float x = nd->lum / fmaxf(d2, fmaxf(nd->r * nd->r, 1e-30f)) * cosb;
 	return x > 0.0f && isfinite(x) ? x : 0.0f;
 }
@@ -823,13 +829,13 @@ float light_set_prob(const light_set *s, size_t i)
 /* The weights light_set_pick_at chooses by at (p, n), and their sum; false when the set is too
  * large or no weight is positive (then the choice is by power). One function for the pick and
  * its probability: the same operations, the same bits. */
-static bool local_weights(const light_set *s, vec3 p, vec3 n, float w[LIGHT_SET_LOCAL_MAX], float *total)
+static bool local_weights(const light_set *s, vec3 p, vec3 n, bool cosine, float w[LIGHT_SET_LOCAL_MAX], float *total)
 {
 	if (s->count > LIGHT_SET_LOCAL_MAX || s->count < 2)
 		return false;
 	float t = 0.0f;
 	for (size_t i = 0; i < s->count; i++) {
-		float x = light_importance(&s->lights[i], p, n);
+		float x = light_importance(&s->lights[i], p, n, cosine);
 		w[i] = x > 0.0f && isfinite(x) ? x : 0.0f;
 		t += w[i];
 	}
@@ -839,15 +845,15 @@ static bool local_weights(const light_set *s, vec3 p, vec3 n, float w[LIGHT_SET_
 
 /* The tree's top choice at (p, n): the loose lights' importances and the root's (last), their
  * sum in *total; false when none is positive. w holds loose_count + 1 values. */
-static bool top_weights(const light_set *s, vec3 p, vec3 n, float *w, float *total)
+static bool top_weights(const light_set *s, vec3 p, vec3 n, bool cosine, float *w, float *total)
 {
 	float t = 0.0f;
 	for (size_t k = 0; k < s->loose_count; k++) {
-		float x = light_importance(&s->lights[s->loose[k]], p, n);
+		float x = light_importance(&s->lights[s->loose[k]], p, n, cosine);
 		w[k] = x > 0.0f && isfinite(x) ? x : 0.0f;
 		t += w[k];
 	}
-	w[s->loose_count] = s->node_count ? node_importance(s, &s->nodes[0], p, n) : 0.0f;
+	w[s->loose_count] = s->node_count ? node_importance(s, &s->nodes[0], p, n, cosine) : 0.0f;
 	t += w[s->loose_count];
 	*total = t;
 	return t > 0.0f && isfinite(t);
@@ -874,7 +880,7 @@ static size_t pick_weight(const float *w, size_t n, float total, float u, float 
 }
 
 /* The descent through the tree, from the top weights w (top_weights, of sum total > 0). */
-static size_t tree_pick(const light_set *s, vec3 p, vec3 n, const float *w, float total, float u, float *prob,
+static size_t tree_pick(const light_set *s, vec3 p, vec3 n, bool cosine, const float *w, float total, float u, float *prob,
 			float *u_rest)
 {
 	float pr;
@@ -885,8 +891,8 @@ static size_t tree_pick(const light_set *s, vec3 p, vec3 n, const float *w, floa
 	}
 	const light_node *nd = &s->nodes[0];
 	while (nd->light < 0) {
-		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n),
-			       node_importance(s, &s->nodes[nd->child[1]], p, n)};
+		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n, cosine),
+			       node_importance(s, &s->nodes[nd->child[1]], p, n, cosine)};
 		float t = wc[0] + wc[1], pc;
 		if (!(t > 0.0f)) {
 			*prob = 0.0f, *u_rest = u;
@@ -900,7 +906,7 @@ static size_t tree_pick(const light_set *s, vec3 p, vec3 n, const float *w, floa
 	return (size_t)nd->light;
 }
 
-static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, const float *w, float total)
+static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine, const float *w, float total)
 {
 	for (size_t k = 0; k < s->loose_count; k++)
 		if (s->loose[k] == i)
@@ -910,8 +916,8 @@ static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, const float
 	int depth = (int)(trail >> 58);
 	const light_node *nd = &s->nodes[0];
 	for (int d = 0; d < depth; d++) {
-		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n),
-			       node_importance(s, &s->nodes[nd->child[1]], p, n)};
+		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n, cosine),
+			       node_importance(s, &s->nodes[nd->child[1]], p, n, cosine)};
 		float t = wc[0] + wc[1];
 		int c = (int)((trail >> d) & 1u);
 		if (!(t > 0.0f))
@@ -922,15 +928,15 @@ static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, const float
 	return pr;
 }
 
-size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest)
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest)
 {
 	float w[LIGHT_SET_LOCAL_MAX], total;
 	size_t i = 0;
 	float lo, share;
 	float tw[LIGHT_SET_LOCAL_MAX + 1];
-	if (s->nodes && top_weights(s, p, n, tw, &total))
-		return tree_pick(s, p, n, tw, total, u, prob, u_rest);
-	if (local_weights(s, p, n, w, &total)) {
+	if (s->nodes && top_weights(s, p, n, cosine, tw, &total))
+		return tree_pick(s, p, n, cosine, tw, total, u, prob, u_rest);
+	if (local_weights(s, p, n, cosine, w, &total)) {
 		float x = u * total, acc = 0.0f;
 		i = s->count; /* the last light of positive weight when rounding leaves x over */
 		lo = 0.0f;
@@ -953,15 +959,15 @@ size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *pro
 	return i;
 }
 
-float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n)
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine)
 {
 	float w[LIGHT_SET_LOCAL_MAX], total;
 	if (i >= s->count)
 		return 0.0f;
 	float tw[LIGHT_SET_LOCAL_MAX + 1];
-	if (s->nodes && top_weights(s, p, n, tw, &total))
-		return tree_prob(s, i, p, n, tw, total);
-	if (local_weights(s, p, n, w, &total))
+	if (s->nodes && top_weights(s, p, n, cosine, tw, &total))
+		return tree_prob(s, i, p, n, cosine, tw, total);
+	if (local_weights(s, p, n, cosine, w, &total))
 		return w[i] / total;
 	return light_set_prob(s, i);
 }

@@ -184,7 +184,7 @@ float light_power(const light *l, float scene_radius);
  * as their irradiance at the normal nearest n of a grid (an environment's tabulated, a uniform
  * background's pi L, scaled by LIGHT_IMP_BACKGROUND) or 4 pi times their mean radiance without a
  * normal. Needs light_set_finish's imp_* fields. */
-float light_importance(const light *l, vec3 p, vec3 n);
+float light_importance(const light *l, vec3 p, vec3 n, bool cosine);
 /* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
 vec2 light_env_uv(vec3 local_dir);
 vec3 light_env_dir(vec2 uv);
@@ -242,8 +242,8 @@ float light_set_prob(const light_set *s, size_t i);
  * light can be picked), and *u_rest what is left of u within the light's share, rescaled to
  * [0, 1): uniform given the light, for the light's own sample (so a stratified u stays
  * stratified among the samples of each light). */
-size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest);
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest);
 /* The probability that light_set_pick_at(p, n) picks light i (bit for bit the same). */
-float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n);
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine);
 
 #endif

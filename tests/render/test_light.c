@@ -497,7 +497,7 @@ static void test_area_irradiance(long n)
  * (within 1.5, plus the float rounding of a long descent), and a light of probability 0 sends
  * no sample above the horizon. */
 static void check_set_choice(const char *name, const light_set *s, const vec3 *pts, const vec3 *nrm, int np, long n,
-			     bool tree)
+			     bool tree, bool cosine)
 {
 	enum { RB = 8 };
 	size_t L = s->count;
@@ -511,7 +511,7 @@ static void check_set_choice(const char *name, const light_set *s, const vec3 *p
 		float *pr = mem_alloc(L, sizeof *pr);
 		long *strat = mem_calloc(L, sizeof *strat);
 		for (size_t i = 0; i < L; i++) {
-			pr[i] = light_set_prob_at(s, i, pts[k], nrm[k]);
+			pr[i] = light_set_prob_at(s, i, pts[k], nrm[k], cosine);
 			sum += pr[i];
 			for (int b = 0; b < RB; b++)
 				ex[(k * L + i) * RB + b] = per * (double)pr[i] / RB;
@@ -535,9 +535,9 @@ static void check_set_choice(const char *name, const light_set *s, const vec3 *p
 		}
 		for (long j = 0; j < per; j++) {
 			float prob, rest;
-			size_t si = light_set_pick_at(s, pts[k], nrm[k], (float)((j + 0.5) / per), &prob, &rest);
+			size_t si = light_set_pick_at(s, pts[k], nrm[k], cosine, (float)((j + 0.5) / per), &prob, &rest);
 			strat[si] += prob > 0.0f;
-			size_t i = light_set_pick_at(s, pts[k], nrm[k], rng_float(&g), &prob, &rest);
+			size_t i = light_set_pick_at(s, pts[k], nrm[k], cosine, rng_float(&g), &prob, &rest);
 			if (tree && prob == 0.0f) {
 				obs[np * L * RB + k] += 1.0;
 				continue;
@@ -590,7 +590,8 @@ static void test_local_selection(long n)
 	CHECK(light_set_finish(&s, 5.0f), "set finish");
 	const vec3 pts[NP] = {v3(0, 0, 0), v3(0.5f, 0.2f, -0.3f), v3(0, 0, 0), v3(-0.4f, 0.1f, 0.6f)};
 	const vec3 nrm[NP] = {v3(0, 1, 0), v3_normalize(v3(1, -1, 0.2f)), v3(0, 0, 0), v3(0, 0, -1)};
-	check_set_choice("light choice at a point, rest of u", &s, pts, nrm, NP, n, false);
+	check_set_choice("light choice at a point, rest of u", &s, pts, nrm, NP, n / 2, false, true);
+	check_set_choice("light choice without the cosine", &s, pts, nrm, NP, n / 2, false, false);
 
 	/* At p = 0 with n = +y: the point light 3 above gives 2 / 9; the spot (a point light for
 	 * the choice) at distance sqrt 8, cos 2 / sqrt 8; the parallel light 0.7 cos; the sphere
@@ -599,20 +600,24 @@ static void test_local_selection(long n)
 	 * bounding sphere, some; the background LIGHT_IMP_BACKGROUND pi L, 4 pi L without a normal. */
 	const light *L = s.lights;
 	vec3 o = v3s(0), up = v3(0, 1, 0);
-	CHECK_NEAR(light_importance(&L[0], o, up), 2.0 / 9.0, 1e-6);
-	CHECK_NEAR(light_importance(&L[2], o, up), 3.0 / 8.0 * (2.0 / sqrt(8.0)), 1e-5);
-	CHECK_NEAR(light_importance(&L[3], o, up), 0.7 / sqrt(3.0), 1e-5);
-	CHECK_NEAR(light_importance(&L[0], o, v3s(0)), 2.0 / 9.0, 1e-6);
-	CHECK(light_importance(&L[0], o, v3(0, -1, 0)) == 0.0f, "a point light below the horizon");
-	CHECK(light_importance(&L[7], o, up) == 0.0f, "an area light below the horizon");
-	CHECK(light_importance(&L[7], v3(0, -1.9f, 1.0f), up) > 0.0f, "an area light around the receiver");
+	CHECK_NEAR(light_importance(&L[0], o, up, true), 2.0 / 9.0, 1e-6);
+	CHECK_NEAR(light_importance(&L[2], o, up, true), 3.0 / 8.0 * (2.0 / sqrt(8.0)), 1e-5);
+	CHECK_NEAR(light_importance(&L[3], o, up, true), 0.7 / sqrt(3.0), 1e-5);
+	CHECK_NEAR(light_importance(&L[0], o, v3s(0), true), 2.0 / 9.0, 1e-6);
+	CHECK(light_importance(&L[0], o, v3(0, -1, 0), true) == 0.0f, "a point light below the horizon");
+	CHECK(light_importance(&L[7], o, up, true) == 0.0f, "an area light below the horizon");
+	/* Without the cosine (a glossy lobe's choice): the distance law alone above the horizon. */
+	CHECK_NEAR(light_importance(&L[2], o, up, false), 3.0 / 8.0, 1e-5);
+	CHECK_NEAR(light_importance(&L[3], o, up, false), 0.7, 1e-5);
+	CHECK(light_importance(&L[0], o, v3(0, -1, 0), false) == 0.0f, "below the horizon without the cosine");
+	CHECK(light_importance(&L[7], v3(0, -1.9f, 1.0f), up, true) > 0.0f, "an area light around the receiver");
 	double d2 = 6.0, sin_s = 0.5 / sqrt(d2), c = 1.0 / sqrt(d2), theta = acos(c) - asin(sin_s);
-	CHECK_NEAR(light_importance(&L[1], o, up), 5.0 / d2 * cos(theta), 1e-5);
-	CHECK_NEAR(light_importance(&L[5], o, up), LIGHT_IMP_BACKGROUND * M_PI * 0.3, 1e-5);
-	CHECK_NEAR(light_importance(&L[5], o, v3s(0)), 4.0 * M_PI * 0.3, 1e-5);
+	CHECK_NEAR(light_importance(&L[1], o, up, true), 5.0 / d2 * cos(theta), 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, up, true), LIGHT_IMP_BACKGROUND * M_PI * 0.3, 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, v3s(0), true), 4.0 * M_PI * 0.3, 1e-5);
 	/* E(+y) of a hemisphere of 2 above and 0.1 below: 2 pi (tabulated at a grid normal near +y,
 	 * from 64 x 32 blocks: within 5 %); E(-y) = 0.1 pi. */
-	double up_e = light_importance(&L[6], o, up), down_e = light_importance(&L[6], o, v3(0, -1, 0));
+	double up_e = light_importance(&L[6], o, up, true), down_e = light_importance(&L[6], o, v3(0, -1, 0), true);
 	CHECK(fabs(up_e / (2.0 * M_PI) - 1.0) < 0.05, "environment E(+y) %g, want about %g", up_e, 2.0 * M_PI);
 	CHECK(fabs(down_e / (0.1 * M_PI) - 1.0) < 0.05, "environment E(-y) %g, want about %g", down_e, 0.1 * M_PI);
 	light_set_free(&s);
@@ -650,9 +655,10 @@ static void test_local_selection(long n)
 	      big.node_count, big.loose_count);
 	const vec3 bp[NP] = {v3(0, 0, 0), v3(1.5f, -0.5f, 2.0f), v3(-3, 3, 0), v3(0, -2.0f, 0)};
 	const vec3 bn[NP] = {v3(0, 1, 0), v3_normalize(v3(-1, 0.3f, -1)), v3(0, 0, 0), v3(0, 1, 0)};
-	check_set_choice("light tree choice, rest of u", &big, bp, bn, NP, n, true);
+	check_set_choice("light tree choice, rest of u", &big, bp, bn, NP, n / 2, true, true);
+	check_set_choice("light tree choice without the cosine", &big, bp, bn, NP, n / 2, true, false);
 	/* The light just below (0, -2, 0) facing up: never picked from there. */
-	CHECK(light_set_prob_at(&big, 39, v3(0, -2.0f, 0), v3(0, 1, 0)) == 0.0f, "a light below the horizon");
+	CHECK(light_set_prob_at(&big, 39, v3(0, -2.0f, 0), v3(0, 1, 0), true) == 0.0f, "a light below the horizon");
 	light_set_free(&big);
 }
 
