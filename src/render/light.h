@@ -183,7 +183,8 @@ float light_power(const light *l, float scene_radius);
  * only where no point of the light lies above p's horizon. The environment and background count
  * as their irradiance at the normal nearest n of a grid (an environment's tabulated, a uniform
  * background's pi L, scaled by LIGHT_IMP_BACKGROUND) or 4 pi times their mean radiance without a
- * normal. Needs light_set_finish's imp_* fields. */
+ * normal. With cosine false (a glossy lobe's choice) the cosine bound only tests the horizon:
+ * 1 above it, 0 below. Needs light_set_finish's imp_* fields. */
 float light_importance(const light *l, vec3 p, vec3 n, bool cosine);
 /* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
 vec2 light_env_uv(vec3 local_dir);
@@ -238,12 +239,13 @@ float light_set_prob(const light_set *s, size_t i);
  * their importance, then at each node one child by its importance, the node's lights' summed
  * imp_lum over the squared distance to its bounding sphere times the cosine bound over it, as
  * pbrt-v4's BVHLightSampler without its emission cones; Conty Estevez & Kulla 2018, "Importance
- * Sampling of Many Lights with Adaptive Tree Splitting"); by power where no weight is positive. Its index, *prob that probability (0 when no
- * light can be picked), and *u_rest what is left of u within the light's share, rescaled to
+ * Sampling of Many Lights with Adaptive Tree Splitting"); by power where no weight is positive.
+ * cosine: light_importance's. Its index, *prob that probability (0 when no light can be picked:
+ * the tree's descent can end at a node whose children both weigh 0), and *u_rest what is left of u within the light's share, rescaled to
  * [0, 1): uniform given the light, for the light's own sample (so a stratified u stays
  * stratified among the samples of each light). */
 size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest);
-/* The probability that light_set_pick_at(p, n) picks light i (bit for bit the same). */
+/* The probability that light_set_pick_at(p, n, cosine) picks light i (bit for bit the same). */
 float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine);
 
 #endif
