@@ -249,6 +249,14 @@ static vec3 shadow_transmittance(const render_scene *s, const render_settings *s
 
 /* Next-event estimation from hit point p: one light picked by its importance at p, one sample of it. lobe_prob:
  * the probability that the path's own sample uses b (the rest goes to delta lobes), for MIS. */
+/* Whether the light choice at a vertex of BSDF b weighs the cosine at the receiver: not for the
+ * coat's reflection alone (a glossy lobe's highlight from a light low over the horizon does not
+ * fade with the cosine). */
+static bool pick_by_cosine(const bsdf_params *b)
+{
+	return !(b->kind == BSDF_COAT && !(v3_max_comp(b->diffuse) > 0.0f));
+}
+
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
 			  render_sampler *g, uint32_t dim)
@@ -260,7 +268,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	 * left of it is the point's first coordinate (light_set_pick_at). */
 	float pick;
 	vec2 u = render_sampler_2d(g, dim + 1);
-	size_t li = light_set_pick_at(ls, p, ng_out, u.x, &pick, &u.x);
+	size_t li = light_set_pick_at(ls, p, ng_out, pick_by_cosine(b), u.x, &pick, &u.x);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], p, ng_out, u, &ls_out))
 		return v3s(0.0f);
@@ -300,7 +308,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	float pick;
 	vec2 u = render_sampler_2d(g, dim + 1);
-	size_t li = light_set_pick_at(ls, x, v3s(0.0f), u.x, &pick, &u.x);
+	size_t li = light_set_pick_at(ls, x, v3s(0.0f), true, u.x, &pick, &u.x);
 	light_sample ls_out;
 	if (!(pick > 0.0f) || ls->lights[li].no_media || ls->lights[li].seen_only || !light_sample_from(&ls->lights[li], x, v3s(0.0f), u, &ls_out))
 		return v3s(0.0f);
@@ -604,6 +612,7 @@ typedef struct path {
 	float prev_pdf;	     /* of the BSDF sample that left prev_p */
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
+	bool prev_cosine;    /* its light choice weighed the cosine (pick_by_cosine) */
 	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
 	bool sky_view;	     /* the same, by RENDER_SKY_MIRROR_PDF: sees a light that is only seen
 			      * (light.h's seen_only) */
@@ -665,7 +674,7 @@ static inline void add_escaped(const render_scene *s, const render_settings *set
 				gather(set, pa, v3_mul(pa->beta, light_radiance_dir(l, d)));
 			continue;
 		}
-		float lp = light_set_prob_at(ls, ls->infinite[k], pa->prev_p, pa->prev_n) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
+		float lp = light_set_prob_at(ls, ls->infinite[k], pa->prev_p, pa->prev_n, pa->prev_cosine) * light_pdf(l, pa->prev_p, pa->prev_n, d, INFINITY, v3s(0));
 		float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 		gather(set, pa, v3_scale(v3_mul(pa->beta, light_radiance_dir(l, d)), w));
 	}
@@ -680,7 +689,7 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 		return;
 	const light *l = &ls->lights[hit->light];
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
-	float lp = light_set_prob_at(ls, (size_t)hit->light, pa->prev_p, pa->prev_n) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
+	float lp = light_set_prob_at(ls, (size_t)hit->light, pa->prev_p, pa->prev_n, pa->prev_cosine) * light_pdf(l, pa->prev_p, pa->prev_n, d, dist, hit->ng);
 	float w = pa->stood_for ? 0.0f : emitter_weight(set, bounce, pa->prev_delta, pa->prev_pdf, lp);
 	gather(set, pa, v3_scale(v3_mul(pa->beta, l->color), w));
 }
@@ -801,7 +810,7 @@ static inline bool continue_path(const vertex *v, int bounce, render_sampler *g,
 	pa->prev_delta = false;
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
-	pa->prev_p = v->p, pa->prev_n = v->ng_out;
+	pa->prev_p = v->p, pa->prev_n = v->ng_out, pa->prev_cosine = pick_by_cosine(&v->b);
 	if (!roulette(bounce, g, pa))
 		return false;
 	*ray = (render_ray){offset_origin(v->p, v->p_scale, v->ng_out), v3_normalize(wi)};
@@ -899,7 +908,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	pa->prev_delta = false;
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
-	pa->prev_p = x, pa->prev_n = v3s(0.0f);
+	pa->prev_p = x, pa->prev_n = v3s(0.0f), pa->prev_cosine = true;
 	pa->fog_view = pa->sky_view = false;
 	if (!roulette(bounce, g, pa))
 		return -1;
@@ -912,7 +921,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
-	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f),
+	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true,
 		   .fog_view = true, .sky_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */

@@ -4,6 +4,7 @@
 
 #include "base/mem.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 /* Below this |cos| at the light, a mesh sample is grazing: its solid-angle pdf would overflow. */
@@ -518,8 +519,10 @@ static float cos_bound(vec3 n, vec3 to_c, float d, float r)
 	return fmaxf(0.0f, c * cos_s + sin_t * sin_s);
 }
 
-float light_importance(const light *l, vec3 p, vec3 n)
+float light_importance(const light *l, vec3 p, vec3 n, bool cosine)
 {
+	if (l->seen_only) /* a sky only seen (light.h): never picked */
+		return 0.0f;
 	bool normal = has_normal(n);
 	switch (l->kind) {
 	case LIGHT_BACKGROUND:
@@ -537,8 +540,10 @@ float light_importance(const light *l, vec3 p, vec3 n)
 		}
 		return RENDER_PI * l->imp_lum;
 	case LIGHT_PARALLEL:
-	case LIGHT_CYLINDER:
-		return l->imp_lum * (normal ? fmaxf(0.0f, -v3_dot(n, l->dir)) : 1.0f);
+	case LIGHT_CYLINDER: {
+		float c = normal ? fmaxf(0.0f, -v3_dot(n, l->dir)) : 1.0f;
+		return l->imp_lum * (cosine || !(c > 0.0f) ? c : 1.0f);
+	}
 	default:
 		break;
 	}
@@ -547,6 +552,8 @@ float light_importance(const light *l, vec3 p, vec3 n)
 	float cosb = normal ? cos_bound(n, to_c, d, r) : 1.0f;
 	if (!(cosb > 0.0f))
 		return 0.0f;
+	if (!cosine)
+		cosb = 1.0f;
 	float law;
 	if ((l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT) && l->falloff == LIGHT_FALLOFF_NONE)
 		law = 1.0f;
@@ -662,6 +669,122 @@ light *light_set_add(light_set *s, const light *l)
 	return &s->lights[s->count++];
 }
 
+/* ---- the light tree ---------------------------------------------------------------------- */
+
+static bool in_tree(const light *l)
+{
+	return ((l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT) && l->falloff == LIGHT_FALLOFF_INVERSE_SQUARE) ||
+	       l->kind == LIGHT_SPHERE || l->kind == LIGHT_MESH;
+}
+
+static const light *sort_lights; /* qsort's context (the build runs once, single-threaded) */
+static int sort_axis;
+static int tree_cmp(const void *a, const void *b)
+{
+	size_t i = *(const size_t *)a, j = *(const size_t *)b;
+	float x = v3_get(sort_lights[i].imp_c, sort_axis), y = v3_get(sort_lights[j].imp_c, sort_axis);
+	return x < y ? -1 : x > y ? 1 : (i > j) - (i < j); /* ties by index: a deterministic tree */
+}
+
+/* The node over idx[0..n) and its subtree; returns its index. Splits at the median
+ * along the longest axis of the lights' centres. */
+static int32_t tree_node(light_set *s, size_t *idx, size_t n)
+{
+	int32_t k = (int32_t)s->node_count++;
+	light_node *nd = &s->nodes[k];
+	if (n == 1) {
+		const light *l = &s->lights[idx[0]];
+		*nd = (light_node){l->imp_c, l->imp_r, l->imp_lum, (int32_t)idx[0], {-1, -1}};
+		return k;
+	}
+	vec3 lo = s->lights[idx[0]].imp_c, hi = lo;
+	for (size_t i = 1; i < n; i++)
+		lo = v3_min(lo, s->lights[idx[i]].imp_c), hi = v3_max(hi, s->lights[idx[i]].imp_c);
+	vec3 e = v3_sub(hi, lo);
+	sort_lights = s->lights;
+	sort_axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+	qsort(idx, n, sizeof *idx, tree_cmp);
+	size_t h = n / 2;
+	int32_t a = tree_node(s, idx, h), b = tree_node(s, idx + h, n - h);
+	nd = &s->nodes[k]; /* (the array does not move: it was allocated for every node) */
+	const light_node *na = &s->nodes[a], *nb = &s->nodes[b];
+	/* the sphere about both children's spheres */
+	vec3 dv = v3_sub(nb->c, na->c);
+	float dist = v3_length(dv);
+	vec3 c;
+	float r;
+	if (dist + nb->r <= na->r)
+		c = na->c, r = na->r;
+	else if (dist + na->r <= nb->r)
+		c = nb->c, r = nb->r;
+	else {
+		r = 0.5f * (dist + na->r + nb->r);
+		c = dist > 0.0f ? v3_madd(na->c, dv, (r - na->r) / dist) : na->c;
+	}
+	*nd = (light_node){c, r * 1.0001f, na->lum + nb->lum, -1, {a, b}};
+	return k;
+}
+
+/* The trail of every light under node k reached by bits `trail` at depth d. */
+static void tree_trails(light_set *s, int32_t k, uint64_t trail, int d)
+{
+	const light_node *nd = &s->nodes[k];
+	if (nd->light >= 0) {
+		s->trail[nd->light] = trail | ((uint64_t)d << 58);
+		return;
+	}
+	tree_trails(s, nd->child[0], trail, d + 1);
+	tree_trails(s, nd->child[1], trail | (1ull << d), d + 1);
+}
+
+static bool tree_build(light_set *s)
+{
+	size_t *idx = mem_alloc(s->count, sizeof *idx);
+	s->loose = mem_alloc(s->count, sizeof *s->loose);
+	s->trail = mem_calloc(s->count, sizeof *s->trail);
+	s->nodes = mem_alloc(2 * s->count, sizeof *s->nodes);
+	if (!idx || !s->loose || !s->trail || !s->nodes) {
+		mem_free(idx);
+		return false;
+	}
+	size_t n = 0;
+	s->loose_count = 0, s->node_count = 0;
+	for (size_t i = 0; i < s->count; i++) {
+		if (in_tree(&s->lights[i]))
+			idx[n++] = i;
+		else
+			s->loose[s->loose_count++] = i;
+	}
+	if (n > 0) {
+		tree_node(s, idx, n);
+		tree_trails(s, 0, 0, 0);
+	}
+	mem_free(idx);
+	/* a median split halves the lights: the depth stays below the trail's 58 bits. More loose
+	 * lights than LIGHT_SET_LOCAL_MAX: no tree (the choice is by power). */
+	if (s->loose_count > LIGHT_SET_LOCAL_MAX) {
+		mem_free(s->nodes);
+		s->nodes = NULL, s->node_count = 0;
+	}
+	return true;
+}
+
+/* A tree node's importance at (p, n) (a leaf's: its light's own). */
+static float node_importance(const light_set *s, const light_node *nd, vec3 p, vec3 n, bool cosine)
+{
+	if (nd->light >= 0)
+		return light_importance(&s->lights[nd->light], p, n, cosine);
+	vec3 to_c = v3_sub(nd->c, p);
+	float d2 = v3_length2(to_c), d = sqrtf(d2);
+	float cosb = has_normal(n) ? cos_bound(n, to_c, d, nd->r) : 1.0f;
+	if (!(cosb > 0.0f))
+		return 0.0f;
+	if (!cosine)
+		cosb = 1.0f;
+	float x = nd->lum / fmaxf(d2, fmaxf(nd->r * nd->r, 1e-30f)) * cosb;
+	return x > 0.0f && isfinite(x) ? x : 0.0f;
+}
+
 bool light_set_finish(light_set *s, float scene_radius)
 {
 	if (s->count == 0)
@@ -681,11 +804,12 @@ bool light_set_finish(light_set *s, float scene_radius)
 	}
 	bool ok = render_distrib1d_init(&s->select, power, s->count);
 	mem_free(power);
-	return ok;
+	return ok && (s->count <= LIGHT_SET_LOCAL_MAX || tree_build(s));
 }
 
 void light_set_free(light_set *s)
 {
+	mem_free(s->nodes), mem_free(s->loose), mem_free(s->trail);
 	for (size_t i = 0; i < s->count; i++)
 		light_free(&s->lights[i]);
 	mem_free(s->lights);
@@ -707,13 +831,13 @@ float light_set_prob(const light_set *s, size_t i)
 /* The weights light_set_pick_at chooses by at (p, n), and their sum; false when the set is too
  * large or no weight is positive (then the choice is by power). One function for the pick and
  * its probability: the same operations, the same bits. */
-static bool local_weights(const light_set *s, vec3 p, vec3 n, float w[LIGHT_SET_LOCAL_MAX], float *total)
+static bool local_weights(const light_set *s, vec3 p, vec3 n, bool cosine, float w[LIGHT_SET_LOCAL_MAX], float *total)
 {
 	if (s->count > LIGHT_SET_LOCAL_MAX || s->count < 2)
 		return false;
 	float t = 0.0f;
 	for (size_t i = 0; i < s->count; i++) {
-		float x = s->lights[i].seen_only ? 0.0f : light_importance(&s->lights[i], p, n);
+		float x = light_importance(&s->lights[i], p, n, cosine);
 		w[i] = x > 0.0f && isfinite(x) ? x : 0.0f;
 		t += w[i];
 	}
@@ -721,12 +845,100 @@ static bool local_weights(const light_set *s, vec3 p, vec3 n, float w[LIGHT_SET_
 	return t > 0.0f && isfinite(t);
 }
 
-size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest)
+/* The tree's top choice at (p, n): the loose lights' importances and the root's (last), their
+ * sum in *total; false when none is positive. w holds loose_count + 1 values. */
+static bool top_weights(const light_set *s, vec3 p, vec3 n, bool cosine, float *w, float *total)
+{
+	float t = 0.0f;
+	for (size_t k = 0; k < s->loose_count; k++) {
+		float x = light_importance(&s->lights[s->loose[k]], p, n, cosine);
+		w[k] = x > 0.0f && isfinite(x) ? x : 0.0f;
+		t += w[k];
+	}
+	w[s->loose_count] = s->node_count ? node_importance(s, &s->nodes[0], p, n, cosine) : 0.0f;
+	t += w[s->loose_count];
+	*total = t;
+	return t > 0.0f && isfinite(t);
+}
+
+/* Picks among n weights of sum total with u: the index (the last positive one when rounding
+ * leaves u over), its probability and the rest of u. */
+static size_t pick_weight(const float *w, size_t n, float total, float u, float *prob, float *u_rest)
+{
+	float x = u * total, acc = 0.0f, lo = 0.0f;
+	size_t i = 0;
+	for (size_t k = 0; k < n; k++) {
+		if (!(w[k] > 0.0f))
+			continue;
+		i = k, lo = acc;
+		if (x < acc + w[k])
+			break;
+		acc += w[k];
+	}
+	*prob = w[i] / total;
+	float r = *prob > 0.0f ? (u - lo / total) / *prob : 0.0f;
+	*u_rest = fminf(fmaxf(r, 0.0f), 0x1.fffffep-1f);
+	return i;
+}
+
+/* The descent through the tree, from the top weights w (top_weights, of sum total > 0). */
+static size_t tree_pick(const light_set *s, vec3 p, vec3 n, bool cosine, const float *w, float total, float u, float *prob,
+			float *u_rest)
+{
+	float pr;
+	size_t k = pick_weight(w, s->loose_count + 1, total, u, &pr, &u);
+	if (k < s->loose_count) {
+		*prob = pr, *u_rest = u;
+		return s->loose[k];
+	}
+	const light_node *nd = &s->nodes[0];
+	while (nd->light < 0) {
+		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n, cosine),
+			       node_importance(s, &s->nodes[nd->child[1]], p, n, cosine)};
+		float t = wc[0] + wc[1], pc;
+		if (!(t > 0.0f)) {
+			*prob = 0.0f, *u_rest = u;
+			return 0;
+		}
+		size_t c = pick_weight(wc, 2, t, u, &pc, &u);
+		pr *= pc;
+		nd = &s->nodes[nd->child[c]];
+	}
+	*prob = pr, *u_rest = u;
+	return (size_t)nd->light;
+}
+
+static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine, const float *w, float total)
+{
+	for (size_t k = 0; k < s->loose_count; k++)
+		if (s->loose[k] == i)
+			return w[k] / total;
+	float pr = w[s->loose_count] / total;
+	uint64_t trail = s->trail[i];
+	int depth = (int)(trail >> 58);
+	const light_node *nd = &s->nodes[0];
+	for (int d = 0; d < depth; d++) {
+		float wc[2] = {node_importance(s, &s->nodes[nd->child[0]], p, n, cosine),
+			       node_importance(s, &s->nodes[nd->child[1]], p, n, cosine)};
+		float t = wc[0] + wc[1];
+		int c = (int)((trail >> d) & 1u);
+		if (!(t > 0.0f))
+			return 0.0f;
+		pr *= wc[c] / t;
+		nd = &s->nodes[nd->child[c]];
+	}
+	return pr;
+}
+
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest)
 {
 	float w[LIGHT_SET_LOCAL_MAX], total;
 	size_t i = 0;
 	float lo, share;
-	if (local_weights(s, p, n, w, &total)) {
+	float tw[LIGHT_SET_LOCAL_MAX + 1];
+	if (s->nodes && top_weights(s, p, n, cosine, tw, &total))
+		return tree_pick(s, p, n, cosine, tw, total, u, prob, u_rest);
+	if (local_weights(s, p, n, cosine, w, &total)) {
 		float x = u * total, acc = 0.0f;
 		i = s->count; /* the last light of positive weight when rounding leaves x over */
 		lo = 0.0f;
@@ -749,12 +961,15 @@ size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *pro
 	return i;
 }
 
-float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n)
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine)
 {
 	float w[LIGHT_SET_LOCAL_MAX], total;
 	if (i >= s->count)
 		return 0.0f;
-	if (local_weights(s, p, n, w, &total))
+	float tw[LIGHT_SET_LOCAL_MAX + 1];
+	if (s->nodes && top_weights(s, p, n, cosine, tw, &total))
+		return tree_prob(s, i, p, n, cosine, tw, total);
+	if (local_weights(s, p, n, cosine, w, &total))
 		return w[i] / total;
 	return light_set_prob(s, i);
 }

@@ -33,8 +33,9 @@
  * Light selection: in a set of at most LIGHT_SET_LOCAL_MAX lights each light is chosen at the
  * shading point with probability proportional to light_importance there (an estimate of its
  * unshadowed contribution, 0 only where it cannot reach the point's side: lights below the
- * horizon are never picked); in a larger set, or where no light reaches, with probability
- * proportional to its power estimate (luminance of its flux; infinite and parallel lights count
+ * horizon are never picked); in a larger set through a light tree (light_set_pick_at); with
+ * more than LIGHT_SET_LOCAL_MAX lights outside the tree, or where no light reaches, with
+ * probability proportional to its power estimate (luminance of its flux; infinite and parallel lights count
  * over a disk or sphere of the scene's bounding radius, as PBRT does; a light without the
  * inverse square as what it gives at that radius, a POV-Ray spot as its point light) — see
  * light_power. Lights are read-only once the set is finished, so any number of threads may
@@ -186,11 +187,21 @@ float light_power(const light *l, float scene_radius);
  * only where no point of the light lies above p's horizon. The environment and background count
  * as their irradiance at the normal nearest n of a grid (an environment's tabulated, a uniform
  * background's pi L, scaled by LIGHT_IMP_BACKGROUND) or 4 pi times their mean radiance without a
- * normal. Needs light_set_finish's imp_* fields. */
-float light_importance(const light *l, vec3 p, vec3 n);
+ * normal. With cosine false (a glossy lobe's choice) the cosine bound only tests the horizon:
+ * 1 above it, 0 below. Needs light_set_finish's imp_* fields. */
+float light_importance(const light *l, vec3 p, vec3 n, bool cosine);
 /* Map-frame direction to lat-long (u, v) in [0,1)^2 and back (exposed for tests). */
 vec2 light_env_uv(vec3 local_dir);
 vec3 light_env_dir(vec2 uv);
+
+/* A node of the light tree (sets of more than LIGHT_SET_LOCAL_MAX lights): the sphere that bounds
+ * its lights' bounding spheres and the sum of their imp_lum; a leaf (light >= 0) holds one light,
+ * an inner node its two children. */
+typedef struct light_node {
+	vec3 c;
+	float r, lum;
+	int32_t light, child[2];
+} light_node;
 
 /* All the scene's lights with the selection distribution. */
 typedef struct light_set {
@@ -199,6 +210,15 @@ typedef struct light_set {
 	render_distrib1d select;
 	size_t *infinite; /* indices of the background and environment lights */
 	size_t infinite_count;
+	/* The light tree (only when count > LIGHT_SET_LOCAL_MAX): the lights with the inverse square
+	 * (point, spot, sphere, mesh) in nodes[0] and below; the others (parallel, cylinder, no
+	 * falloff or POV-Ray's fade, background, environment) weighed one by one beside it. */
+	light_node *nodes;
+	size_t node_count;
+	size_t *loose; /* the lights outside the tree */
+	size_t loose_count;
+	uint64_t *trail; /* per light in the tree: its path from the root, bit k = the child taken at
+			  * depth k, and the depth in the top 6 bits */
 } light_set;
 
 void light_set_init(light_set *s);
@@ -219,12 +239,17 @@ float light_set_prob(const light_set *s, size_t i);
 #define LIGHT_SET_LOCAL_MAX 16
 /* Picks a light for the shading point p (normal n facing the receiving side, or zero): with
  * probability proportional to light_importance(p, n) in a set of at most LIGHT_SET_LOCAL_MAX
- * lights where any is positive, else by power. Its index, *prob that probability (0 when no
- * light can be picked), and *u_rest what is left of u within the light's share, rescaled to
+ * lights; in a larger set through the light tree (each loose light and the tree's root weighed by
+ * their importance, then at each node one child by its importance, the node's lights' summed
+ * imp_lum over the squared distance to its bounding sphere times the cosine bound over it, as
+ * pbrt-v4's BVHLightSampler without its emission cones; Conty Estevez & Kulla 2018, "Importance
+ * Sampling of Many Lights with Adaptive Tree Splitting"); by power where no weight is positive.
+ * cosine: light_importance's. Its index, *prob that probability (0 when no light can be picked:
+ * the tree's descent can end at a node whose children both weigh 0), and *u_rest what is left of u within the light's share, rescaled to
  * [0, 1): uniform given the light, for the light's own sample (so a stratified u stays
  * stratified among the samples of each light). */
-size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, float u, float *prob, float *u_rest);
-/* The probability that light_set_pick_at(p, n) picks light i (bit for bit the same). */
-float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n);
+size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest);
+/* The probability that light_set_pick_at(p, n, cosine) picks light i (bit for bit the same). */
+float light_set_prob_at(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine);
 
 #endif

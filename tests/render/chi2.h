@@ -20,7 +20,7 @@
 
 #define CHI2_SUITE_ALPHA 0.01
 /* The number of chi-square tests in tests/render (test_sampling, test_bsdf, test_light, test_sobol). */
-#define CHI2_SUITE_TESTS 24
+#define CHI2_SUITE_TESTS 27
 /* A pooled bin must expect at least this many samples for the chi-square approximation. */
 #define CHI2_MIN_EXPECTED 5.0
 

@@ -491,16 +491,82 @@ static void test_area_irradiance(long n)
 	}
 }
 
+/* At each of the np points (p, normal or zero): the probabilities light_set_prob_at gives sum to
+ * 1, each pick's own probability is the same bits, the picks' frequencies and the rest of u (8
+ * bins, uniform given the light) pass one chi-square, a stratified u gives each light its share
+ * (within 1.5, plus the float rounding of a long descent), and a light of probability 0 sends
+ * no sample above the horizon. */
+static void check_set_choice(const char *name, const light_set *s, const vec3 *pts, const vec3 *nrm, int np, long n,
+			     bool tree, bool cosine)
+{
+	enum { RB = 8 };
+	size_t L = s->count;
+	int nb = np * (int)L * RB + np; /* and per point a bin for picks of none (the tree's) */
+	double *obs = mem_calloc((size_t)nb, sizeof *obs), *ex = mem_calloc((size_t)nb, sizeof *ex);
+	rng g;
+	rng_seed(&g, 83 + L, 5);
+	long per = n / np;
+	for (int k = 0; k < np; k++) {
+		double sum = 0.0;
+		float *pr = mem_alloc(L, sizeof *pr);
+		long *strat = mem_calloc(L, sizeof *strat);
+		for (size_t i = 0; i < L; i++) {
+			pr[i] = light_set_prob_at(s, i, pts[k], nrm[k], cosine);
+			sum += pr[i];
+			for (int b = 0; b < RB; b++)
+				ex[(k * L + i) * RB + b] = per * (double)pr[i] / RB;
+		}
+		/* A descent through the tree can end at a node whose children are both 0 (its sphere
+		 * reaches above the horizon, theirs do not): no light, as pbrt-v4's; so the sum can be
+		 * below 1 there, and such picks say probability 0. */
+		CHECK(tree ? sum < 1.0 + 1e-5 && sum > 0.5 : fabs(sum - 1.0) < 1e-5, "point %d: probabilities sum to %g", k,
+		      sum);
+		ex[np * L * RB + k] = per * fmax(0.0, 1.0 - sum);
+		/* Zero importance: every sample of that light from here is below the horizon. */
+		for (size_t i = 0; i < L && v3_length2(nrm[k]) > 0.0f; i++) {
+			if (pr[i] > 0.0f)
+				continue;
+			for (int j = 0; j < 256; j++) {
+				light_sample ls;
+				if (light_sample_from(&s->lights[i], pts[k], nrm[k], v2(rng_float(&g), rng_float(&g)), &ls))
+					CHECK(v3_dot(ls.wi, nrm[k]) <= 1e-6f, "point %d light %zu: importance 0 but wi.n %g", k,
+					      i, v3_dot(ls.wi, nrm[k]));
+			}
+		}
+		for (long j = 0; j < per; j++) {
+			float prob, rest;
+			size_t si = light_set_pick_at(s, pts[k], nrm[k], cosine, (float)((j + 0.5) / per), &prob, &rest);
+			strat[si] += prob > 0.0f;
+			size_t i = light_set_pick_at(s, pts[k], nrm[k], cosine, rng_float(&g), &prob, &rest);
+			if (tree && prob == 0.0f) {
+				obs[np * L * RB + k] += 1.0;
+				continue;
+			}
+			CHECK(i < L && prob == pr[i] && prob > 0.0f, "point %d: pick %zu with %g, prob_at %g", k, i, prob,
+			      i < L ? pr[i] : -1.0f);
+			CHECK(rest >= 0.0f && rest < 1.0f, "rest of u %g", rest);
+			int b = (int)(rest * RB);
+			obs[(k * L + i) * RB + (b < RB ? b : RB - 1)] += 1.0;
+		}
+		for (size_t i = 0; i < L; i++)
+			CHECK(fabs(strat[i] - per * (double)pr[i]) <= 1.5 + 1e-4 * per, "point %d light %zu: stratified %ld, want %g", k, i,
+			      strat[i], per * (double)pr[i]);
+		mem_free(pr), mem_free(strat);
+	}
+	chi2_counts(name, obs, ex, nb);
+	mem_free(obs), mem_free(ex);
+}
+
 /* The choice among few lights by their importance at the shading point (light_set_pick_at): at
  * several points (with a normal and without) the picks' frequencies are the probabilities the
  * estimator uses (light_set_prob_at, bit for bit the pick's own), and the rest of u handed to
  * the light is uniform given the light (one chi-square over point x light x 8 bins of it); a
  * stratified u gives each light its share within one; a light of importance 0 sends no sample
  * above the horizon; the importances follow the distance law and the environment's
- * irradiance; a larger set chooses by power. */
+ * irradiance; a larger set chooses through its light tree, checked the same way. */
 static void test_local_selection(long n)
 {
-	enum { W = 16, H = 8, RB = 8, NP = 4 };
+	enum { W = 16, H = 8, NP = 4 };
 	float img[W * H * 3];
 	for (int i = 0; i < W * H; i++) {
 		float v = (i / W) < H / 2 ? 2.0f : 0.1f; /* a bright upper hemisphere */
@@ -524,49 +590,8 @@ static void test_local_selection(long n)
 	CHECK(light_set_finish(&s, 5.0f), "set finish");
 	const vec3 pts[NP] = {v3(0, 0, 0), v3(0.5f, 0.2f, -0.3f), v3(0, 0, 0), v3(-0.4f, 0.1f, 0.6f)};
 	const vec3 nrm[NP] = {v3(0, 1, 0), v3_normalize(v3(1, -1, 0.2f)), v3(0, 0, 0), v3(0, 0, -1)};
-	int nb = NP * 8 * RB;
-	double *obs = mem_calloc((size_t)nb, sizeof *obs), *ex = mem_calloc((size_t)nb, sizeof *ex);
-	rng g;
-	rng_seed(&g, 83, 5);
-	long per = n / NP;
-	for (int k = 0; k < NP; k++) {
-		double sum = 0.0;
-		float pr[8];
-		for (size_t i = 0; i < 8; i++) {
-			pr[i] = light_set_prob_at(&s, i, pts[k], nrm[k]);
-			sum += pr[i];
-			for (int b = 0; b < RB; b++)
-				ex[(k * 8 + i) * RB + b] = per * (double)pr[i] / RB;
-		}
-		CHECK(fabs(sum - 1.0) < 1e-5, "point %d: probabilities sum to %g", k, sum);
-		/* Zero importance: every sample of that light from here is below the horizon. */
-		for (size_t i = 0; i < 8 && v3_length2(nrm[k]) > 0.0f; i++) {
-			if (pr[i] > 0.0f)
-				continue;
-			for (int j = 0; j < 256; j++) {
-				light_sample ls;
-				if (light_sample_from(&s.lights[i], pts[k], nrm[k], v2(rng_float(&g), rng_float(&g)), &ls))
-					CHECK(v3_dot(ls.wi, nrm[k]) <= 1e-6f, "point %d light %zu: importance 0 but wi.n %g", k,
-					      i, v3_dot(ls.wi, nrm[k]));
-			}
-		}
-		long strat[8] = {0};
-		for (long j = 0; j < per; j++) {
-			float prob, rest;
-			size_t i = light_set_pick_at(&s, pts[k], nrm[k], rng_float(&g), &prob, &rest);
-			CHECK(i < 8 && prob == pr[i] && prob > 0.0f, "point %d: pick %zu with %g, prob_at %g", k, i, prob,
-			      i < 8 ? pr[i] : -1.0f);
-			CHECK(rest >= 0.0f && rest < 1.0f, "rest of u %g", rest);
-			int b = (int)(rest * RB);
-			obs[(k * 8 + i) * RB + (b < RB ? b : RB - 1)] += 1.0;
-			strat[light_set_pick_at(&s, pts[k], nrm[k], (float)((j + 0.5) / per), &prob, &rest)]++;
-		}
-		for (int i = 0; i < 8; i++)
-			CHECK(fabs(strat[i] - per * (double)pr[i]) <= 1.5, "point %d light %d: stratified %ld, want %g", k, i,
-			      strat[i], per * (double)pr[i]);
-	}
-	chi2_counts("light choice at a point, rest of u", obs, ex, nb);
-	mem_free(obs), mem_free(ex);
+	check_set_choice("light choice at a point, rest of u", &s, pts, nrm, NP, n / 2, false, true);
+	check_set_choice("light choice without the cosine", &s, pts, nrm, NP, n / 2, false, false);
 
 	/* At p = 0 with n = +y: the point light 3 above gives 2 / 9; the spot (a point light for
 	 * the choice) at distance sqrt 8, cos 2 / sqrt 8; the parallel light 0.7 cos; the sphere
@@ -575,35 +600,65 @@ static void test_local_selection(long n)
 	 * bounding sphere, some; the background LIGHT_IMP_BACKGROUND pi L, 4 pi L without a normal. */
 	const light *L = s.lights;
 	vec3 o = v3s(0), up = v3(0, 1, 0);
-	CHECK_NEAR(light_importance(&L[0], o, up), 2.0 / 9.0, 1e-6);
-	CHECK_NEAR(light_importance(&L[2], o, up), 3.0 / 8.0 * (2.0 / sqrt(8.0)), 1e-5);
-	CHECK_NEAR(light_importance(&L[3], o, up), 0.7 / sqrt(3.0), 1e-5);
-	CHECK_NEAR(light_importance(&L[0], o, v3s(0)), 2.0 / 9.0, 1e-6);
-	CHECK(light_importance(&L[0], o, v3(0, -1, 0)) == 0.0f, "a point light below the horizon");
-	CHECK(light_importance(&L[7], o, up) == 0.0f, "an area light below the horizon");
-	CHECK(light_importance(&L[7], v3(0, -1.9f, 1.0f), up) > 0.0f, "an area light around the receiver");
+	CHECK_NEAR(light_importance(&L[0], o, up, true), 2.0 / 9.0, 1e-6);
+	CHECK_NEAR(light_importance(&L[2], o, up, true), 3.0 / 8.0 * (2.0 / sqrt(8.0)), 1e-5);
+	CHECK_NEAR(light_importance(&L[3], o, up, true), 0.7 / sqrt(3.0), 1e-5);
+	CHECK_NEAR(light_importance(&L[0], o, v3s(0), true), 2.0 / 9.0, 1e-6);
+	CHECK(light_importance(&L[0], o, v3(0, -1, 0), true) == 0.0f, "a point light below the horizon");
+	CHECK(light_importance(&L[7], o, up, true) == 0.0f, "an area light below the horizon");
+	/* Without the cosine (a glossy lobe's choice): the distance law alone above the horizon. */
+	CHECK_NEAR(light_importance(&L[2], o, up, false), 3.0 / 8.0, 1e-5);
+	CHECK_NEAR(light_importance(&L[3], o, up, false), 0.7, 1e-5);
+	CHECK(light_importance(&L[0], o, v3(0, -1, 0), false) == 0.0f, "below the horizon without the cosine");
+	CHECK(light_importance(&L[7], v3(0, -1.9f, 1.0f), up, true) > 0.0f, "an area light around the receiver");
 	double d2 = 6.0, sin_s = 0.5 / sqrt(d2), c = 1.0 / sqrt(d2), theta = acos(c) - asin(sin_s);
-	CHECK_NEAR(light_importance(&L[1], o, up), 5.0 / d2 * cos(theta), 1e-5);
-	CHECK_NEAR(light_importance(&L[5], o, up), LIGHT_IMP_BACKGROUND * M_PI * 0.3, 1e-5);
-	CHECK_NEAR(light_importance(&L[5], o, v3s(0)), 4.0 * M_PI * 0.3, 1e-5);
+	CHECK_NEAR(light_importance(&L[1], o, up, true), 5.0 / d2 * cos(theta), 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, up, true), LIGHT_IMP_BACKGROUND * M_PI * 0.3, 1e-5);
+	CHECK_NEAR(light_importance(&L[5], o, v3s(0), true), 4.0 * M_PI * 0.3, 1e-5);
 	/* E(+y) of a hemisphere of 2 above and 0.1 below: 2 pi (tabulated at a grid normal near +y,
 	 * from 64 x 32 blocks: within 5 %); E(-y) = 0.1 pi. */
-	double up_e = light_importance(&L[6], o, up), down_e = light_importance(&L[6], o, v3(0, -1, 0));
+	double up_e = light_importance(&L[6], o, up, true), down_e = light_importance(&L[6], o, v3(0, -1, 0), true);
 	CHECK(fabs(up_e / (2.0 * M_PI) - 1.0) < 0.05, "environment E(+y) %g, want about %g", up_e, 2.0 * M_PI);
 	CHECK(fabs(down_e / (0.1 * M_PI) - 1.0) < 0.05, "environment E(-y) %g, want about %g", down_e, 0.1 * M_PI);
 	light_set_free(&s);
 
-	/* More than LIGHT_SET_LOCAL_MAX lights: by power, wherever. */
+	/* More than LIGHT_SET_LOCAL_MAX lights: the tree (40 lights: points of the inverse square,
+	 * spheres, a mesh in it; parallel lights, a POV-Ray point light without falloff and the
+	 * background beside it), checked as the small set. */
 	light_set big;
 	light_set_init(&big);
-	for (int i = 0; i <= LIGHT_SET_LOCAL_MAX; i++) {
-		light pl = light_point(v3((float)i, 1, 0), v3s(1.0f + (float)i));
-		light_set_add(&big, &pl);
+	rng g;
+	rng_seed(&g, 97, 1);
+	for (int i = 0; i < 40; i++) {
+		vec3 pos = v3(8.0f * rng_float(&g) - 4.0f, 8.0f * rng_float(&g) - 4.0f, 8.0f * rng_float(&g) - 4.0f);
+		light x;
+		if (i < 30)
+			x = light_point(pos, v3s(0.5f + 3.0f * rng_float(&g)));
+		else if (i < 34)
+			x = light_sphere(pos, 0.3f + 0.5f * rng_float(&g), v3s(4));
+		else if (i == 34) {
+			vec3 t[3] = {pos, v3_add(pos, v3(1, 0, 0)), v3_add(pos, v3(0, 1, 0.5f))};
+			CHECK(light_mesh_init(&x, t, 1, v3s(2)), "mesh init");
+		} else if (i < 37)
+			x = light_parallel(pos, v3s(0), v3s(0.3f));
+		else if (i == 37) {
+			x = light_point(pos, v3s(0.2f));
+			x.falloff = LIGHT_FALLOFF_NONE;
+		} else if (i == 38)
+			x = light_background(v3s(0.1f));
+		else
+			x = light_point(v3(0, -3, 0), v3s(1));
+		light_set_add(&big, &x);
 	}
-	CHECK(light_set_finish(&big, 1.0f), "set finish");
-	for (size_t i = 0; i <= LIGHT_SET_LOCAL_MAX; i++)
-		CHECK(light_set_prob_at(&big, i, v3(3, 0, 0), v3(0, -1, 0)) == light_set_prob(&big, i),
-		      "a large set chooses by power");
+	CHECK(light_set_finish(&big, 8.0f), "set finish");
+	CHECK(big.nodes && big.node_count == 2 * 36 - 1 && big.loose_count == 4, "the tree: %zu nodes, %zu loose",
+	      big.node_count, big.loose_count);
+	const vec3 bp[NP] = {v3(0, 0, 0), v3(1.5f, -0.5f, 2.0f), v3(-3, 3, 0), v3(0, -2.0f, 0)};
+	const vec3 bn[NP] = {v3(0, 1, 0), v3_normalize(v3(-1, 0.3f, -1)), v3(0, 0, 0), v3(0, 1, 0)};
+	check_set_choice("light tree choice, rest of u", &big, bp, bn, NP, n / 2, true, true);
+	check_set_choice("light tree choice without the cosine", &big, bp, bn, NP, n / 2, true, false);
+	/* The light just below (0, -2, 0) facing up: never picked from there. */
+	CHECK(light_set_prob_at(&big, 39, v3(0, -2.0f, 0), v3(0, 1, 0), true) == 0.0f, "a light below the horizon");
 	light_set_free(&big);
 }
 
