@@ -1971,7 +1971,7 @@ static dvec3 facets_normal(const pattern_node *n, dvec3 q, dvec3 v)
 				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
 					continue;
 				dvec3 f = pattern_crackle_point(cx + i, cy + j, cz + k), d = d3_sub(f, t);
-				double s = m == 2.0 ? d3_dot(d, d) : m == 1.0 ? d.x + d.y + d.z : metric_sum(d, m);
+				double s = m == 2.0 ? d3_dot(d, d) : m == 1.0 ? d.x + d.y + d.z : metric_sum(d, m, INFINITY);
 				if (s < best)
 					best = s, nearest = f;
 			}
