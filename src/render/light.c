@@ -933,29 +933,13 @@ static float tree_prob(const light_set *s, size_t i, vec3 p, vec3 n, bool cosine
 size_t light_set_pick_at(const light_set *s, vec3 p, vec3 n, bool cosine, float u, float *prob, float *u_rest)
 {
 	float w[LIGHT_SET_LOCAL_MAX], total;
-	size_t i = 0;
-	float lo, share;
 	float tw[LIGHT_SET_LOCAL_MAX + 1];
 	if (s->nodes && top_weights(s, p, n, cosine, tw, &total))
 		return tree_pick(s, p, n, cosine, tw, total, u, prob, u_rest);
-	if (local_weights(s, p, n, cosine, w, &total)) {
-		float x = u * total, acc = 0.0f;
-		i = s->count; /* the last light of positive weight when rounding leaves x over */
-		lo = 0.0f;
-		for (size_t k = 0; k < s->count; k++) {
-			if (!(w[k] > 0.0f))
-				continue;
-			i = k, lo = acc;
-			if (x < acc + w[k])
-				break;
-			acc += w[k];
-		}
-		*prob = w[i] / total;
-		lo /= total, share = *prob;
-	} else {
-		i = light_set_pick(s, u, prob);
-		lo = s->count ? (float)s->select.cdf[i] : 0.0f, share = *prob;
-	}
+	if (local_weights(s, p, n, cosine, w, &total))
+		return pick_weight(w, s->count, total, u, prob, u_rest);
+	size_t i = light_set_pick(s, u, prob);
+	float lo = s->count ? (float)s->select.cdf[i] : 0.0f, share = *prob;
 	float r = share > 0.0f ? (u - lo) / share : 0.0f;
 	*u_rest = fminf(fmaxf(r, 0.0f), 0x1.fffffep-1f);
 	return i;

@@ -5,7 +5,7 @@
 // compare: --fail 0.05 --fail-percent 1
 camera { location <0, 3, -9> look_at <0, 1.2, 0> angle 50 }
 light_source { <-4, 8, -6> color rgb 1 intensity 60 }
-background { color rgb 0.25 }
+sky_sphere { pigment { color rgb 0.25 } intensity 1 } // circe's sky: it lights (a POV-Ray background would not, without radiosity)
 plane { y, 0 material { diffuse { color rgb 0.5 } } }
 lathe { cubic_spline 7, <0, -0.5>, <0, 0>, <0.9, 0.1>, <0.5, 1>, <0.7, 2>, <0, 2.2>, <0, 2.5>
 	translate <-3, 0, 0> material { diffuse { color rgb <0.8, 0.3, 0.2> } } }
