@@ -593,28 +593,43 @@ static bool slope_range(parser *p, const char *what, double *lo, double *width)
 	return true;
 }
 
-const char *lang_data_path(parser *p, const char *name, diag_loc at)
+bool lang_find_data(parser *p, const char *name, const char *const *ext, int n_ext, diag_loc at, const char **out)
 {
 	const char *from = at.src ? at.src->name : "";
 	const char *slash = strrchr(from, '/');
-	size_t nl = strlen(name);
+	size_t nl = strlen(name), el = 0;
+	for (int e = 0; e < n_ext; e++)
+		el = strlen(ext[e]) > el ? strlen(ext[e]) : el;
+	*out = NULL;
 	for (size_t i = 0; i <= p->opt.n_include_dirs; i++) {
 		const char *dir = i == 0 ? from : p->opt.include_dirs[i - 1];
 		size_t dl = name[0] == '/' ? 0 : i == 0 ? (slash ? (size_t)(slash - from) : 0) : strlen(dir);
-		char *path = arena_alloc(&p->sc->arena, dl + nl + 2, 1, 1);
-		if (!path)
-			return NULL;
-		memcpy(path, dir, dl);
-		size_t k = dl;
-		if (dl && dir[dl - 1] != '/')
-			path[k++] = '/';
-		memcpy(path + k, name, nl + 1);
-		if (access(path, R_OK) == 0)
-			return path;
+		for (int e = 0; e < n_ext; e++) {
+			char *path = arena_alloc(&p->sc->arena, dl + nl + el + 2, 1, 1);
+			if (!path)
+				return false;
+			memcpy(path, dir, dl);
+			size_t k = dl;
+			if (dl && dir[dl - 1] != '/')
+				path[k++] = '/';
+			memcpy(path + k, name, nl);
+			strcpy(path + k + nl, ext[e]);
+			if (access(path, R_OK) == 0) {
+				*out = path;
+				return true;
+			}
+		}
 		if (name[0] == '/')
 			break;
 	}
-	return NULL;
+	return true;
+}
+
+const char *lang_data_path(parser *p, const char *name, diag_loc at)
+{
+	static const char *const as_written[] = {""};
+	const char *path;
+	return lang_find_data(p, name, as_written, 1, at, &path) ? path : NULL;
 }
 
 /* POV-Ray 3.7's Read_Density_File: three big-endian 16-bit sizes, then the voxels, x fastest, of

@@ -17,6 +17,10 @@ bool lang_rainbow(parser *p);
 /* A data file the scene names (an image, a df3), as POV-Ray's Locate_File finds it: beside the
  * file that names it at `at`, then in each -I folder; the readable path (in the arena), or NULL. */
 const char *lang_data_path(parser *p, const char *name, diag_loc at);
+/* The same search trying, in each folder, the name with each of the n_ext endings appended (""
+ * for the name as written): *out the first readable path, or NULL when none is; false only when
+ * memory runs out. */
+bool lang_find_data(parser *p, const char *name, const char *const *ext, int n_ext, diag_loc at, const char **out);
 /* "quick_color" colour (or quick_colour) when the lookahead is one: POV-Ray's preview colour,
  * read and ignored (circe has no quick preview). *matched says whether it was. */
 bool lang_pigment_quick_colour(parser *p, bool *matched);

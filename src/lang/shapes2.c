@@ -8,11 +8,11 @@
 
 #include "geom/shape.h"
 #include "lang/func.h"
+#include "lang/pigment.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 /* The most points or components one shape may list (POV-Ray has no limit; this keeps a typo's
  * count from asking for gigabytes before the points are read). */
@@ -386,30 +386,10 @@ static bool blob(parser *p, shape_desc *s, diag_loc kw, lang_xform_item_fn xf_it
 static bool font_path(parser *p, const char *name, diag_loc at, const char **out)
 {
 	static const char *const ext[] = {"", ".ttf", ".TTF"};
-	const char *from = at.src ? at.src->name : "";
-	const char *slash = strrchr(from, '/');
-	size_t nl = strlen(name);
-	for (size_t i = 0; i <= p->opt.n_include_dirs; i++) {
-		const char *dir = i == 0 ? from : p->opt.include_dirs[i - 1];
-		size_t dl = name[0] == '/' ? 0 : i == 0 ? (slash ? (size_t)(slash - from) : 0) : strlen(dir);
-		for (int e = 0; e < 3; e++) {
-			char *path = arena_alloc(&p->sc->arena, dl + nl + 6, 1, 1);
-			if (!path)
-				return lang_error(p, at, "out of memory");
-			memcpy(path, dir, dl);
-			size_t k = dl;
-			if (dl && dir[dl - 1] != '/')
-				path[k++] = '/';
-			memcpy(path + k, name, nl);
-			strcpy(path + k + nl, ext[e]);
-			if (access(path, R_OK) == 0) {
-				*out = path;
-				return scene_add_asset(p->sc, SCENE_ASSET_FONT, path, at) || lang_error(p, at, "out of memory");
-			}
-		}
-		if (name[0] == '/')
-			break;
-	}
+	if (!lang_find_data(p, name, ext, 3, at, out))
+		return lang_error(p, at, "out of memory");
+	if (*out)
+		return scene_add_asset(p->sc, SCENE_ASSET_FONT, *out, at) || lang_error(p, at, "out of memory");
 	return lang_error(p, at, "cannot find font file '%s' (searched the including file's folder%s)", name,
 			  p->opt.n_include_dirs ? " and the -I folders" : "");
 }

@@ -36,18 +36,27 @@ static int ecmp(const void *x, const void *y)
 	return c ? c : vcmp(a->b, b->b);
 }
 
-/* Edges by position (-0 as +0): each directed edge a->b must meet its reverse b->a exactly once. */
-static size_t open_edges(const mesh *m)
+/* m's directed edges by position (-0 as +0) into *e and their reverses into *r, both sorted;
+ * their count. */
+static size_t sorted_edges(const mesh *m, edge **e, edge **r)
 {
-	size_t n = 3 * (size_t)m->num_triangles, bad = 0;
-	edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
+	size_t n = 3 * (size_t)m->num_triangles;
+	*e = malloc(n * sizeof **e), *r = malloc(n * sizeof **r);
 	for (uint32_t t = 0; t < m->num_triangles; t++)
 		for (int k = 0; k < 3; k++) {
 			vec3 a = m->positions[m->indices[3 * t + k]], b = m->positions[m->indices[3 * t + (k + 1) % 3]];
 			a = v3_add(a, v3s(0)), b = v3_add(b, v3s(0));
-			e[3 * t + k] = (edge){a, b}, r[3 * t + k] = (edge){b, a};
+			(*e)[3 * t + k] = (edge){a, b}, (*r)[3 * t + k] = (edge){b, a};
 		}
-	qsort(e, n, sizeof *e, ecmp), qsort(r, n, sizeof *r, ecmp);
+	qsort(*e, n, sizeof **e, ecmp), qsort(*r, n, sizeof **r, ecmp);
+	return n;
+}
+
+/* Edges by position (-0 as +0): each directed edge a->b must meet its reverse b->a exactly once. */
+static size_t open_edges(const mesh *m)
+{
+	edge *e, *r;
+	size_t n = sorted_edges(m, &e, &r), bad = 0;
 	for (size_t i = 0; i < n; i++)
 		if (ecmp(&e[i], &r[i]) != 0 || (i + 1 < n && ecmp(&e[i], &e[i + 1]) == 0))
 			bad++;
@@ -59,15 +68,8 @@ static size_t open_edges(const mesh *m)
  * surface has none, even where it touches itself along an edge (four faces there). */
 static size_t unpaired_edges(const mesh *m)
 {
-	size_t n = 3 * (size_t)m->num_triangles, bad = 0;
-	edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
-	for (uint32_t t = 0; t < m->num_triangles; t++)
-		for (int k = 0; k < 3; k++) {
-			vec3 a = m->positions[m->indices[3 * t + k]], b = m->positions[m->indices[3 * t + (k + 1) % 3]];
-			a = v3_add(a, v3s(0)), b = v3_add(b, v3s(0));
-			e[3 * t + k] = (edge){a, b}, r[3 * t + k] = (edge){b, a};
-		}
-	qsort(e, n, sizeof *e, ecmp), qsort(r, n, sizeof *r, ecmp);
+	edge *e, *r;
+	size_t n = sorted_edges(m, &e, &r), bad = 0;
 	for (size_t i = 0; i < n; i++)
 		bad += ecmp(&e[i], &r[i]) != 0;
 	free(e), free(r);
