@@ -86,6 +86,8 @@ static void world_release(world *w)
 		mem_free(w->images[i]);
 		mem_free(w->image_paths[i]);
 	}
+	for (size_t i = 0; w->materials && i < w->n_materials; i++)
+		mem_free(w->materials[i].layers);
 	light_set_free(&w->lights);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);

@@ -195,6 +195,44 @@ static void build_clear(bsdf_params *b, world_material *wm, const scene_material
 	c->fade = (bsdf_fade){.distance = sm->fade_distance, .power = sm->fade_power, .color = sm->fade_color};
 }
 
+/* A layered texture's layers (world_layer): each with its own finish (its diffuse before the
+ * point's opacity), pigment and normal; the top one with the material's finish and normal (what
+ * later modifiers changed) and, when the material's pigment was replaced since, its pigment. */
+static bool build_layers(world *w, size_t k, const scene *sc, const scene_material *sm, diag *d)
+{
+	world_material *wm = &w->materials[k];
+	uint32_t n = sm->n_layers;
+	if (!(wm->layers = mem_calloc(n, sizeof *wm->layers))) {
+		diag_error(d, sm->loc, "out of memory");
+		return false;
+	}
+	wm->n_layers = n;
+	bool replaced = !sm->pigment || sm->pigment->kind != SCENE_PAT_LAYERS;
+	for (uint32_t i = 0; i < n; i++) {
+		world_layer *l = &wm->layers[i];
+		bool top = i + 1 == n;
+		scene_material fin = top ? *sm : *sm->layers[i]; /* the interior is the object's */
+		fin.ior = sm->ior;
+		pov_finish_spec(sc, &fin, &l->finish, d);
+		const scene_material *pig = top && replaced ? sm : sm->layers[i];
+		const scene_pigment *nrm = top ? sm->normal : sm->layers[i]->normal;
+		if (pig->pigment) {
+			if (!build_pattern(w, pig->pigment, &l->pattern, d))
+				return false;
+			l->has_pattern = true, l->pattern_uv = pig->pigment->uv_mapping;
+		}
+		l->color[0] = pig->color.x, l->color[1] = pig->color.y, l->color[2] = pig->color.z;
+		l->color[3] = pig->filter, l->color[4] = pig->transmit;
+		if (nrm) {
+			if (!build_pattern(w, nrm, &l->normal, d))
+				return false;
+			l->has_normal = true, l->normal_uv = nrm->uv_mapping;
+		}
+	}
+	w->bsdfs[k].layered = true;
+	return true;
+}
+
 /* A bound of every colour density pg can give (a map interpolates between its entries). */
 static vec3 density_bound(const scene_pigment *pg, int depth)
 {
@@ -288,6 +326,8 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		wm->pattern_uv = pig->uv_mapping;
 		wm->pattern_kd = sm->kind == MAT_TEXTURE ? sm->diffuse : 1.0f;
 	}
+	if (sm->kind == MAT_TEXTURE && sm->n_layers && !sm->pov_sss && !build_layers(w, k, sc, sm, d))
+		return false;
 	/* A POV-Ray subsurface texture's medium is derived from its pigment (its pattern's mean). */
 	if (sm->pov_sss && !build_sss(w, k, sc, opt, sm, d))
 		return false;

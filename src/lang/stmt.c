@@ -301,6 +301,18 @@ static bool pattern_transform(parser *p, const scene_material *m, diag_loc at, c
 			  what);
 }
 
+/* A copy of a layer's record for a layered texture's list (in the arena, not in the scene's list
+ * of materials: the layered texture is the material, its layers are its parts). */
+static scene_material *layer_copy(parser *p, const scene_material *t)
+{
+	scene_material *c = arena_alloc(&p->sc->arena, 1, sizeof *c, 16);
+	if (!c)
+		return NULL;
+	*c = *t;
+	c->next = NULL, c->name = NULL, c->layers = NULL, c->n_layers = 0;
+	return c;
+}
+
 /* transform_item in a pigment, texture or material: read, recorded in *at when first; it moves
  * m's POV-Ray pigment (a copy: the tree may be shared), and nothing else has a pattern to move. */
 static bool pattern_transform_item(parser *p, scene_material *m, diag_loc *at, bool *matched)
@@ -316,6 +328,22 @@ static bool pattern_transform_item(parser *p, scene_material *m, diag_loc *at, b
 		TRY(m->sss.pigment = lang_pigment_moved(p, m->sss.pigment, &moved, loc));
 	if (*matched && m->normal)
 		TRY(m->normal = lang_pigment_moved(p, m->normal, &moved, loc));
+	if (*matched && m->n_layers) { /* a layered texture's transform moves every layer */
+		const scene_material **layers = arena_alloc(&p->sc->arena, m->n_layers, sizeof *layers, 16);
+		if (!layers)
+			return lang_error(p, loc, "out of memory");
+		for (uint32_t i = 0; i < m->n_layers; i++) {
+			scene_material *c = layer_copy(p, m->layers[i]);
+			if (!c)
+				return lang_error(p, loc, "out of memory");
+			if (c->pigment)
+				TRY(c->pigment = lang_pigment_moved(p, c->pigment, &moved, loc));
+			if (c->normal)
+				TRY(c->normal = lang_pigment_moved(p, c->normal, &moved, loc));
+			layers[i] = c;
+		}
+		m->layers = layers;
+	}
 	return true;
 }
 
@@ -425,11 +453,32 @@ static scene_map_entry layer_entry(const scene_material *m, uint32_t index)
 	return e;
 }
 
+/* The records of t's layers, bottom first, written to out (NULL: counted only): t itself, or a
+ * layered texture's layers with its top one replaced by t with that layer's own pigment (t holds
+ * the top layer's finish and normal as modified since, over the composite pigment). */
+static uint32_t layer_records(parser *p, const scene_material *t, const scene_material **out)
+{
+	if (!t->n_layers) {
+		if (out)
+			out[0] = t;
+		return 1;
+	}
+	if (out) {
+		memcpy(out, t->layers, (t->n_layers - 1) * sizeof *out);
+		scene_material *top = layer_copy(p, t);
+		if (top)
+			copy_pigment(top, t->layers[t->n_layers - 1]);
+		out[t->n_layers - 1] = top;
+	}
+	return t->n_layers;
+}
+
 /* POV-Ray's layered texture: top over below (a texture written after a texture). The pigments
- * composite by the upper layers' filter and transmit (scene/pattern.c's PATTERN_LAYERS); the
- * finish is the top layer's (POV-Ray lights each layer with its own finish: circe keeps one set
- * of lobes, doc/language.md "Layered textures"). The layers' transparency shows the layers
- * below, not what lies behind the object. */
+ * composite by the upper layers' filter and transmit (scene/pattern.c's PATTERN_LAYERS: the
+ * material's colour, for what sees one pigment); the layers keep their own records
+ * (scene_material.layers), each lit with its own finish (render/world.c shade_layers,
+ * doc/language.md "Layered textures"). The layers' transparency shows the layers below, and
+ * what lies behind the object where every layer lets light through. */
 static bool layer_texture(parser *p, const scene_material *below, const scene_material *top, diag_loc at,
 			  const scene_material **out)
 {
@@ -439,13 +488,20 @@ static bool layer_texture(parser *p, const scene_material *below, const scene_ma
 	const scene_pigment *bp = below->pigment;
 	bool stacked = bp && bp->kind == SCENE_PAT_LAYERS;
 	uint32_t n = (stacked ? bp->n_entries : 1) + 1;
-	if (n > SCENE_PIGMENT_MAX_ENTRIES)
+	uint32_t nb = layer_records(p, below, NULL), nl = nb + layer_records(p, top, NULL);
+	if (n > SCENE_PIGMENT_MAX_ENTRIES || nl > SCENE_PIGMENT_MAX_ENTRIES)
 		return lang_error(p, at, "too many layers in a texture (limit is %d)", SCENE_PIGMENT_MAX_ENTRIES);
 	scene_map_entry *e = arena_alloc(&p->sc->arena, n, sizeof *e, 16);
+	const scene_material **layers = arena_alloc(&p->sc->arena, nl, sizeof *layers, 16);
 	scene_pigment *lay = arena_zalloc(&p->sc->arena, 1, sizeof *lay);
-	scene_material *m = e && lay ? copy_material(p, top, at) : NULL;
+	scene_material *m = e && layers && lay ? copy_material(p, top, at) : NULL;
 	if (!m)
 		return lang_error(p, at, "out of memory");
+	layer_records(p, below, layers);
+	layer_records(p, top, layers + nb);
+	for (uint32_t i = 0; i < nl; i++)
+		if (!layers[i])
+			return lang_error(p, at, "out of memory");
 	if (stacked)
 		memcpy(e, bp->entries, (n - 1) * sizeof *e);
 	else
@@ -455,6 +511,7 @@ static bool layer_texture(parser *p, const scene_material *below, const scene_ma
 	lay->entries = e, lay->n_entries = n, lay->pigment_map = true;
 	m->pigment = lay, m->image = NULL;
 	m->filter = m->transmit = 0.0f;
+	m->layers = layers, m->n_layers = nl;
 	*out = m;
 	return true;
 }
@@ -885,6 +942,7 @@ static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok clos
 	scene_material *m = copy_material(p, mats[0], kw);
 	TRY(m);
 	m->pigment = pig, m->image = NULL, m->filter = m->transmit = 0.0f;
+	m->layers = NULL, m->n_layers = 0; /* an entry's layers: its composite pigment only */
 	TRY(pattern_texture_normal(p, pig, mats, n, &m->normal));
 	for (uint32_t i = 1; i < n; i++)
 		if (!same_finish(mats[0], mats[i])) {

@@ -80,6 +80,12 @@ typedef struct bsdf_params {
 	bsdf_pov_finish_spec pov; /* BSDF_POV: the finish */
 	vec3 pigment;		  /* BSDF_POV: the pigment at the shading point */
 	float pov_scale;	  /* BSDF_POV: <= 1, keeps the lobes' sum at most 1 */
+	/* BSDF_POV: multiplies every lobe (1; at a layered texture, the one layer shade() picked:
+	 * that layer's weight over the probability of picking it, render/world.c shade_layers) */
+	vec3 pov_weight;
+	/* A layered texture's material: shade() picks one of its layers by render_hit.u_layer, a
+	 * number the integrator draws for it */
+	bool layered;
 	bsdf_clear clear; /* zero: opaque */
 } bsdf_params;
 

@@ -59,18 +59,30 @@ static bool has_reflection(const bsdf_pov_finish_spec *f)
 
 static float spec_n(const bsdf_pov_finish_spec *f) { return 1.0f / fmaxf(f->roughness, 1e-6f); }
 
+/* The largest the lobes over b->pigment can reflect in each channel, before pov_scale (every
+ * tint is at most 1): the diffuse term (the Lambert lobe's Kd, or a subsurface texture's: its
+ * BSSRDF's albedo, scaled with the lobes so that the whole still reflects at most 1), the
+ * highlights' albedos, the reflection's largest. */
+static vec3 lobes_bound(const bsdf_params *b)
+{
+	const bsdf_pov_finish_spec *f = &b->pov;
+	float hl = f->specular * bsdf_pov_specular_albedo(spec_n(f)) + f->phong * bsdf_pov_phong_albedo(f->phong_size);
+	float kd = f->sss_diffuse > 0.0f ? f->sss_diffuse : f->diffuse;
+	vec3 sum = v3_add(v3_scale(b->pigment, kd), v3s(hl));
+	return v3_add(sum, v3_max(f->refl_min, f->refl_max));
+}
+
+vec3 bsdf_pov_albedo_bound(const bsdf_params *b)
+{
+	return v3_mul(v3_scale(lobes_bound(b), b->pov_scale), b->pov_weight);
+}
+
 void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 {
 	const bsdf_pov_finish_spec *f = &b->pov;
 	b->pigment = v3_min(v3_max(pigment, v3s(0.0f)), v3s(1.0f));
-	/* The largest the lobes can reflect in any channel: every tint is at most 1. */
-	float hl = f->specular * bsdf_pov_specular_albedo(spec_n(f)) + f->phong * bsdf_pov_phong_albedo(f->phong_size);
-	/* The diffuse term: the Lambert lobe's Kd, or a subsurface texture's (its BSSRDF's albedo,
-	 * scaled with the lobes so that the whole still reflects at most 1). */
 	float kd = f->sss_diffuse > 0.0f ? f->sss_diffuse : f->diffuse;
-	vec3 sum = v3_add(v3_scale(b->pigment, kd), v3s(hl));
-	sum = v3_add(sum, v3_max(f->refl_min, f->refl_max));
-	float m = v3_max_comp(sum);
+	float m = v3_max_comp(lobes_bound(b));
 	b->pov_scale = m > 1.0f ? 1.0f / m : 1.0f;
 	b->diffuse = v3_scale(b->pigment, kd * b->pov_scale);
 	b->emit = v3_mul(f->glow, b->pigment);
@@ -78,7 +90,7 @@ void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 
 bsdf_params bsdf_pov(const bsdf_pov_finish_spec *f, vec3 pigment)
 {
-	bsdf_params b = {.kind = BSDF_POV, .alpha = 1.0f, .ior = 1.0f, .pov = *f};
+	bsdf_params b = {.kind = BSDF_POV, .alpha = 1.0f, .ior = 1.0f, .pov = *f, .pov_weight = v3s(1.0f)};
 	bsdf_pov_set_pigment(&b, pigment);
 	return b;
 }
@@ -107,7 +119,7 @@ vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi)
 	vec3 r = v3_scale(b->pigment, f->diffuse * RENDER_INV_PI);
 	if (has_reflection(f))
 		r = v3_madd(r, reflectivity(f, b->pigment, c), bsdf_ggx_reflection(wo, wi, BSDF_POV_MIRROR_ALPHA));
-	return v3_scale(r, b->pov_scale);
+	return v3_mul(v3_scale(r, b->pov_scale), b->pov_weight);
 }
 
 vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
@@ -135,7 +147,7 @@ vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 	}
 	/* POV-Ray adds this to the colour without the cosine its diffuse has; under a light scaled by
 	 * pi (build_light.c) the BSDF that gives it is this / (pi cos_i). */
-	return v3_scale(r, b->pov_scale * RENDER_INV_PI / wi.z);
+	return v3_mul(v3_scale(r, b->pov_scale * RENDER_INV_PI / wi.z), b->pov_weight);
 }
 
 vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)
@@ -147,7 +159,7 @@ vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	if (wo.z <= 0.0f || wi.z <= 0.0f)
 		return v3s(0.0f);
-	vec3 r = v3_scale(b->pigment, b->pov.diffuse * RENDER_INV_PI * b->pov_scale);
+	vec3 r = v3_mul(v3_scale(b->pigment, b->pov.diffuse * RENDER_INV_PI * b->pov_scale), b->pov_weight);
 	return v3_add(r, bsdf_pov_highlights(b, wo, wi));
 }
 

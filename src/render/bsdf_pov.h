@@ -42,6 +42,10 @@ bsdf_params bsdf_pov(const bsdf_pov_finish_spec *f, vec3 pigment);
 /* The same BSDF over another pigment (a texture's texel at the shading point). */
 void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment);
 
+/* A bound of what b's lobes reflect in each channel (at most 1 times pov_weight): its diffuse
+ * reflectance, the highlights' albedos at normal incidence, the reflection's largest. */
+vec3 bsdf_pov_albedo_bound(const bsdf_params *b);
+
 /* The highlights' albedo per unit Ks or Kp at normal incidence (at most 1): specular of Blinn
  * exponent n = 1 / roughness, phong of exponent phong_size (exposed for tests). */
 float bsdf_pov_specular_albedo(float n);

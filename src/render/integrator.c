@@ -57,7 +57,8 @@ enum {
 	DIM_BSDF_DIR = 15,  /* its direction (2-D) */
 	DIM_RR = 16,	    /* Russian roulette */
 	DIM_MEDIA = 17,	    /* the stream of the media's tracking along the segment before the vertex */
-	DIM_COUNT = 18
+	DIM_LAYER = 18,	    /* a layered texture's layer (render_hit.u_layer) */
+	DIM_COUNT = 19
 };
 _Static_assert(DIM_COUNT <= RENDER_VERTEX_DIMS, "a vertex's dimensions fit its block");
 
@@ -961,6 +962,8 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 			break;
 		vec3 wo = v3_neg(ray.d);
 		vertex v;
+		if (s->materials[hit.material].layered) /* drawn only there: the random sampler's stream */
+			hit.u_layer = render_sampler_1d(g, DIM_LAYER);
 		make_vertex(s, &hit, wo, &v);
 		/* A POV-Ray finish's ambient and emission: seen by every ray, never sampled as a light. */
 		gather(set, &pa, v3_mul(pa.beta, v.b.emit));

@@ -55,6 +55,8 @@ typedef struct render_hit {
 	vec2 bary;     /* barycentrics of the triangle's second and third vertex, for shade() */
 	float scale;   /* largest |coordinate| of the triangle's world vertices: rays leaving p start
 			  bvh_offset_scaled(p, n, scale) (accel/offset.h); 0: unknown */
+	float u_layer; /* in [0, 1): where the material is layered (bsdf_params.layered), the number
+			  by which shade() picks a layer; drawn by the integrator, 0 elsewhere */
 } render_hit;
 
 /* The BSSRDF of one material (plain data, built once per material). */

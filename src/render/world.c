@@ -9,6 +9,7 @@
 
 #include <float.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* How many float ulps of its triangle's scale a hit position may be off (the interpolation of
  * three rounded vertices and a transform): the tolerance of a pattern's cell boundaries. */
@@ -202,23 +203,30 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
 	return false;
 }
 
-/* A POV-Ray pigment at the hit, in its object's space (the scene's placement undone, whatever
- * the instance's mesh transform) or at <u, v, 0> with uv_mapping: the diffuse colour, clamped to
- * a reflectance. A texture whose pattern carries filter or transmit (bsdf_clear.patterned) takes
- * the point's: its transparent part lets pigment * filter + transmit through and its diffuse is
- * scaled by the opacity 1 - filter - transmit, as a plain colour's (build_material.c build_clear). */
+/* The five channels of pattern node `node` at the hit, in its object's space (the scene's
+ * placement undone, whatever the instance's mesh transform) or at <u, v, 0> with uv_mapping; ns
+ * the normal slope sees. */
+static void pattern_at_hit(const world *w, const render_hit *hit, uint32_t node, bool uv, vec3 ns, float c[5])
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	/* The hit is a float position: rounding of a few ulps of the triangle's scale, through the
+	 * object's inverse placement. uv coordinates are floats of their own size (at most ~1). */
+	double tol = uv ? PATTERN_HIT_ULPS * FLT_EPSILON
+			: PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
+	pattern_surface sf = {v3_to_d3(ns), v3_to_d3(hit->p)}; /* slope's: the world normal, perturbed */
+	pattern_eval_at(&w->patterns, node, p, &sf, tol, c);
+}
+
+/* A POV-Ray pigment at the hit: the diffuse colour, clamped to a reflectance. A texture whose
+ * pattern carries filter or transmit (bsdf_clear.patterned) takes the point's: its transparent
+ * part lets pigment * filter + transmit through and its diffuse is scaled by the opacity
+ * 1 - filter - transmit, as a plain colour's (build_material.c build_clear). */
 static void shade_pattern(const world *w, const world_material *wm, const render_hit *hit, vec3 ns,
 			  bsdf_params *params)
 {
-	const world_inst *in = &w->insts[hit->object];
-	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
-	/* The hit is a float position: rounding of a few ulps of the triangle's scale, through the
-	 * object's inverse placement. uv coordinates are floats of their own size (at most ~1). */
-	double tol = wm->pattern_uv ? PATTERN_HIT_ULPS * FLT_EPSILON
-				    : PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
 	float c[5];
-	pattern_surface sf = {v3_to_d3(ns), v3_to_d3(hit->p)}; /* slope's: the world normal, perturbed */
-	pattern_eval_at(&w->patterns, wm->pattern, p, &sf, tol, c);
+	pattern_at_hit(w, hit, wm->pattern, wm->pattern_uv, ns, c);
 	vec3 rgb = v3(c[0], c[1], c[2]);
 	scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
 	if (params->kind == BSDF_POV && params->clear.patterned) {
@@ -233,18 +241,98 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 		params->diffuse = v3_scale(rgb, wm->pattern_kd); /* a finish's diffuse scales its pigment */
 }
 
-/* A POV-Ray normal { } at the hit: the shading normal taken into the object's space (the
- * transpose of its placement), perturbed there by the pattern, and brought back. */
-static void shade_normal(const world *w, const world_material *wm, const render_hit *hit, vec3 *ns)
+/* A POV-Ray normal { } (node `node`) at the hit: the shading normal taken into the object's space
+ * (the transpose of its placement), perturbed there by the pattern, and brought back. */
+static void shade_normal(const world *w, uint32_t node, bool uv, const render_hit *hit, vec3 *ns)
 {
 	const world_inst *in = &w->insts[hit->object];
-	dvec3 p = wm->normal_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	dvec3 p = uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
 	dvec3 n = pattern_normal_through(&in->pattern_xf, v3_to_d3(*ns), true);
 	pattern_surface sf = {v3_to_d3(*ns), v3_to_d3(hit->p)};
-	pattern_perturb_at(&w->patterns, wm->normal, p, &sf, &n);
+	pattern_perturb_at(&w->patterns, node, p, &sf, &n);
 	vec3 out = v3_normalize(d3v(pattern_normal_through(&in->pattern_xf, n, false)));
 	if (v3_is_finite(out) && v3_length2(out) > 0.5f)
 		*ns = out;
+}
+
+/* A layered texture at the hit, as POV-Ray 3.7 lights one (trace.cpp ComputeLightedTexture): from
+ * the top layer down, each layer is lit with its own pigment, finish and normal, its diffuse
+ * and ambient scaled by its opacity 1 - filter - transmit, and all of it by W, what the layers
+ * above let through (the product of their pigment * filter + transmit); the light that passes
+ * every layer is the surface's transparent part (bsdf_clear). The BSDF is the sum of the layers'
+ * W-weighted lobes: shade picks one layer by hit->u_layer, with probability proportional to the
+ * luminance of its weighted albedo, and returns its lobes times W over that probability
+ * (bsdf_params.pov_weight): their expectation is the sum. The emission (ambient) is the sum itself.
+ * Where the sum of the layers' albedos and the transparent part could pass 1 in a channel (upper
+ * layers' highlights over the light they let through), the layers' weights are scaled so that
+ * it is 1 (doc/language.md "Layered textures"). */
+static void shade_layers(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params,
+			 vec3 *ns)
+{
+	const vec3 raw = *ns;
+	vec3 through = v3s(1.0f), emit = v3s(0.0f), sum = v3s(0.0f);
+	float clear = 1.0f, total = 0.0f;
+	double u = hit->u_layer;
+	bsdf_params pick = *params;
+	vec3 pick_w = v3s(0.0f), pick_n = raw;
+	float pick_a = 0.0f;
+	for (uint32_t i = wm->n_layers; i-- > 0;) {
+		const world_layer *l = &wm->layers[i];
+		vec3 n = raw;
+		if (l->has_normal)
+			shade_normal(w, l->normal, l->normal_uv, hit, &n);
+		float c[5];
+		if (l->has_pattern)
+			pattern_at_hit(w, hit, l->pattern, l->pattern_uv, n, c);
+		else
+			memcpy(c, l->color, sizeof c);
+		vec3 rgb = v3(c[0], c[1], c[2]);
+		scene_color_clamp(&rgb, SCENE_COLOR_REFLECTANCE);
+		float f = fminf(fmaxf(c[3], 0.0f), 1.0f), t = fminf(fmaxf(c[4], 0.0f), 1.0f);
+		float opacity = fmaxf(0.0f, 1.0f - f - t);
+		bsdf_params b = *params;
+		b.pov = l->finish;
+		b.pov.diffuse *= opacity;
+		bsdf_pov_set_pigment(&b, rgb);
+		emit = v3_add(emit, v3_mul(through, v3_scale(b.emit, opacity)));
+		vec3 wa = v3_mul(through, bsdf_pov_albedo_bound(&b));
+		sum = v3_add(sum, wa);
+		float a = v3_luminance(wa);
+		if (a > 0.0f) { /* a one-number weighted reservoir: u rescaled at each choice */
+			total += a;
+			double p = a / total;
+			if (u < p) {
+				pick = b, pick_w = through, pick_n = n, pick_a = a;
+				u = u / p;
+			} else {
+				u = (u - p) / (1.0 - p);
+			}
+			u = fmin(fmax(u, 0.0), 1.0 - DBL_EPSILON);
+		}
+		through = v3_mul(through, v3_min(v3_add(v3_scale(rgb, f), v3s(t)), v3s(1.0f)));
+		clear *= fminf(1.0f, f + t);
+		if (!(v3_max_comp(through) > 0.0f))
+			break; /* the layers below are hidden */
+	}
+	/* The energy bound: sum + through <= 1 in every channel */
+	float k = 1.0f;
+	const float *sc = &sum.x, *tc = &through.x;
+	for (int j = 0; j < 3; j++)
+		if (sc[j] + tc[j] > 1.0f && sc[j] > 0.0f)
+			k = fminf(k, fmaxf(0.0f, 1.0f - tc[j]) / sc[j]);
+	vec3 e = emit;
+	if (pick_a > 0.0f) {
+		*params = pick;
+		params->pov_weight = v3_scale(pick_w, k * total / pick_a);
+	} else { /* no layer reflects anything: the top one's lobes at weight 0 */
+		params->pov_weight = v3s(0.0f);
+	}
+	params->emit = e;
+	*ns = pick_n;
+	if (params->clear.patterned) {
+		params->clear.tint = v3_min(through, v3s(1.0f));
+		params->clear.reflect *= fminf(1.0f, clear);
+	}
 }
 
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
@@ -257,8 +345,12 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	const world_material *wm = &w->materials[hit->material];
 	/* The normal first: a slope pigment sees the perturbed normal, as POV-Ray's (trace.cpp's
 	 * ComputeLightedTexture perturbs a layer's normal before its pigment). */
+	if (wm->n_layers) {
+		shade_layers(w, wm, hit, params, ns);
+		return;
+	}
 	if (wm->has_normal)
-		shade_normal(w, wm, hit, ns);
+		shade_normal(w, wm->normal, wm->normal_uv, hit, ns);
 	if (wm->has_pattern)
 		shade_pattern(w, wm, hit, *ns, params);
 	if (wm->albedo) {

@@ -87,6 +87,18 @@ typedef struct world_csg_kid {
 	uint32_t operand;
 } world_csg_kid;
 
+/* One layer of a layered texture (render/world.c shade_layers): its finish (diffuse before the
+ * point's opacity scales it), its pigment (a node of world.patterns, or a plain colour with its
+ * filter and transmit) and its normal. */
+typedef struct world_layer {
+	bsdf_pov_finish_spec finish;
+	bool has_pattern, pattern_uv;
+	uint32_t pattern;
+	float color[5];
+	bool has_normal, normal_uv;
+	uint32_t normal;
+} world_layer;
+
 /* What a material adds to its BSDF parameters at a hit. */
 typedef struct world_material {
 	const image *albedo; /* NULL: the constant colour of the BSDF */
@@ -101,6 +113,10 @@ typedef struct world_material {
 	bool has_normal;  /* a POV-Ray normal { }: node `normal` of world.patterns perturbs the normal */
 	bool normal_uv;
 	uint32_t normal;
+	/* A layered texture: its layers, bottom first (n_layers >= 2, owned), each lit with its own
+	 * finish; has_pattern and has_normal are then unused. NULL otherwise. */
+	world_layer *layers;
+	uint32_t n_layers;
 } world_material;
 
 

@@ -77,6 +77,13 @@ typedef struct scene_material {
 	 * (scene_resolve_pov_sss): its diffuse is the BSSRDF, sss holds ior, profile and method; the
 	 * build derives the medium from the pigment and the translucency (sss/medium.h). */
 	bool pov_sss;
+	/* A layered texture (POV-Ray's texture after a texture): its layers' own records, bottom
+	 * first, n_layers >= 2, in the scene's arena; NULL otherwise. The material itself is the top
+	 * layer (its finish, normal and interior, which later modifiers change) over the composite
+	 * pigment; each layer is lit with its own pigment, finish and normal (doc/language.md
+	 * "Layered textures"), the top one with the material's finish and normal. */
+	const struct scene_material *const *layers;
+	uint32_t n_layers;
 	struct scene_material *next;
 } scene_material;
 

@@ -5,6 +5,7 @@
 #include "check.h"
 #include "lang/lang.h"
 #include "geom/prim.h"
+#include "render/bsdf_pov.h"
 #include "render/world.h"
 
 #include <math.h>
@@ -208,6 +209,112 @@ static void check_tangents(void)
 /* Bit for bit. */
 static bool same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
+static bool near_vec(vec3 a, vec3 b, float tol)
+{
+	return fabsf(a.x - b.x) <= tol && fabsf(a.y - b.y) <= tol && fabsf(a.z - b.z) <= tol;
+}
+
+/* A layered texture's BSDF at a hit, shaded for LAYER_STEPS evenly spaced u_layer: the mean of
+ * the picked layer's diffuse reflectance and of its albedo bound, each times its pov_weight (the
+ * sum over the layers the picks estimate); *last the shading of the last step. */
+#define LAYER_STEPS 8192
+static void layer_means(const world *w, render_hit h, vec3 *diffuse, vec3 *bound, bsdf_params *last)
+{
+	*diffuse = *bound = v3s(0.0f);
+	for (int i = 0; i < LAYER_STEPS; i++) {
+		h.u_layer = ((float)i + 0.5f) / LAYER_STEPS;
+		bsdf_params at = w->bsdfs[h.material];
+		vec3 ns = h.ns;
+		w->rs.shade(w->rs.user, &h, &at, &ns);
+		*diffuse = v3_add(*diffuse, v3_scale(bsdf_albedo(&at), 1.0f / LAYER_STEPS));
+		*bound = v3_add(*bound, v3_scale(bsdf_pov_albedo_bound(&at), 1.0f / LAYER_STEPS));
+		*last = at;
+	}
+}
+
+/* Layered textures light each layer with its own finish (render/world.c shade_layers): the
+ * weights of the layers against sums computed by hand from POV-Ray's rule (trace.cpp
+ * ComputeLightedTexture): layer i's diffuse Kd_i * opacity_i * pigment_i, its ambient likewise,
+ * each times the product of the upper layers' pigment * filter + transmit. */
+static void check_layers(void)
+{
+	world *w;
+	char *err = NULL;
+	/* x < 0: top rgbft <0.8, 0.4, 0.2, 0.5, 0.2> (opacity 0.3, lets <0.6, 0.4, 0.3> through) over
+	 * an opaque rgb <0.5, 0.5, 1>; x > 0: the same over rgbt <0.5, 0.5, 1, 0.5>; z > 0: a
+	 * highlight of albedo 1 (phong 1, phong_size 1) on a clear top over a white diffuse 1. */
+	bool ok = build("#declare Top = texture { pigment { rgbft <0.8, 0.4, 0.2, 0.5, 0.2> } finish { diffuse 0.5 ambient 0 } }\n"
+			"box { <-2, -1, -2>, <0, 0, 0> texture { pigment { rgb <0.5, 0.5, 1> } finish { diffuse 0.7 ambient 0.2 } }\n"
+			"  texture { Top } }\n"
+			"box { <0, -1, -2>, <2, 0, 0> texture { pigment { rgbt <0.5, 0.5, 1, 0.5> } finish { diffuse 0.7 ambient 0.2 } }\n"
+			"  texture { Top } }\n"
+			"box { <-2, -1, 0>, <2, 0, 2> texture { pigment { rgb 1 } finish { diffuse 1 ambient 0 } }\n"
+			"  texture { pigment { rgbf 1 } finish { phong 1 phong_size 1 diffuse 0.6 ambient 0 } } }\n",
+			&w, &err);
+	CHECK(ok, "layered textures: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	render_hit h;
+	vec3 dif, bound;
+	bsdf_params at;
+	CHECK(trace(w, v3(-1, 1, -1), v3(0, -1, 0), &h) && w->bsdfs[h.material].layered, "a layered texture");
+	layer_means(w, h, &dif, &bound, &at);
+	/* 0.3 * 0.5 * <0.8, 0.4, 0.2> + <0.6, 0.4, 0.3> * 0.7 * <0.5, 0.5, 1> */
+	CHECK(near_vec(dif, v3(0.33f, 0.20f, 0.24f), 2e-3f), "opaque base: diffuse (%g %g %g)", dif.x, dif.y, dif.z);
+	/* the ambient: <0.6, 0.4, 0.3> * 0.2 * <0.5, 0.5, 1>, the same at every u */
+	CHECK(near_vec(at.emit, v3(0.06f, 0.04f, 0.06f), 1e-6f), "opaque base: emit (%g %g %g)", at.emit.x, at.emit.y,
+	      at.emit.z);
+	CHECK(at.clear.kind == BSDF_CLEAR_THIN && v3_max_comp(at.clear.tint) == 0.0f, "an opaque base: nothing through");
+
+	CHECK(trace(w, v3(1, 1, -1), v3(0, -1, 0), &h) && w->bsdfs[h.material].layered, "the second layered texture");
+	layer_means(w, h, &dif, &bound, &at);
+	/* <0.12, 0.06, 0.03> + <0.6, 0.4, 0.3> * 0.7 * 0.5 * <0.5, 0.5, 1> */
+	CHECK(near_vec(dif, v3(0.225f, 0.13f, 0.135f), 2e-3f), "half-clear base: diffuse (%g %g %g)", dif.x, dif.y,
+	      dif.z);
+	CHECK(near_vec(at.emit, v3(0.03f, 0.02f, 0.03f), 1e-6f), "half-clear base: emit (%g %g %g)", at.emit.x,
+	      at.emit.y, at.emit.z);
+	/* through both: <0.6, 0.4, 0.3> * 0.5 */
+	CHECK(at.clear.kind == BSDF_CLEAR_THIN && near_vec(at.clear.tint, v3(0.3f, 0.2f, 0.15f), 1e-6f),
+	      "half-clear base: tint (%g %g %g)", at.clear.tint.x, at.clear.tint.y, at.clear.tint.z);
+
+	/* The highlight (albedo 1) and the base (1) would reflect 2: both weights halve. */
+	CHECK(trace(w, v3(0, 1, 1), v3(0, -1, 0), &h) && w->bsdfs[h.material].layered, "the third layered texture");
+	layer_means(w, h, &dif, &bound, &at);
+	CHECK(near_vec(bound, v3s(1.0f), 2e-3f), "energy bound: (%g %g %g)", bound.x, bound.y, bound.z);
+	CHECK(near_vec(dif, v3s(0.5f), 2e-3f), "the base at half weight: (%g %g %g)", dif.x, dif.y, dif.z);
+	world_free(w);
+
+	/* An opaque top layer hides the layers below: its own finish at weight 1, at every u; a
+	 * transform of a declared layered texture moves every layer (the base's checker here). */
+	ok = build("#declare T = texture { pigment { checker rgb 1 rgb 0 } finish { diffuse 1 ambient 0 } }\n"
+		   "  texture { pigment { rgbt 1 } finish { diffuse 0 ambient 0 } }\n"
+		   "plane { y, 0.5 texture { T scale 2 } }\n"
+		   "sphere { <0, 5, 0>, 1 texture { T } texture { pigment { rgb 0.5 } finish { phong 0.7 ambient 0 } } }\n",
+		   &w, &err);
+	CHECK(ok, "layered textures: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	/* (1.5, 0.5, 0.5) / 2: the checker's first colour; unscaled it would be the second */
+	CHECK(trace(w, v3(1.5f, 3, 0.5f), v3(0, -1, 0), &h), "hit the plane");
+	layer_means(w, h, &dif, &bound, &at);
+	CHECK(same_vec(at.pigment, v3s(1.0f)) && same_vec(at.pov_weight, v3s(1.0f)) && at.pov.diffuse == 1.0f,
+	      "the scaled base: pigment (%g %g %g), weight (%g %g %g)", at.pigment.x, at.pigment.y, at.pigment.z,
+	      at.pov_weight.x, at.pov_weight.y, at.pov_weight.z);
+	CHECK(trace(w, v3(0, 10, 0), v3(0, -1, 0), &h), "hit the sphere");
+	bool top = true;
+	for (int i = 0; i < 16; i++) {
+		h.u_layer = ((float)i + 0.5f) / 16;
+		at = w->bsdfs[h.material];
+		vec3 ns = h.ns;
+		w->rs.shade(w->rs.user, &h, &at, &ns);
+		top &= same_vec(at.pov_weight, v3s(1.0f)) && at.pov.phong == 0.7f && same_vec(at.pigment, v3s(0.5f));
+	}
+	CHECK(top, "an opaque top layer: its own lobes at weight 1");
+	world_free(w);
+}
+
 int main(void)
 {
 	if (!mkdtemp(dir))
@@ -318,6 +425,8 @@ int main(void)
 			world_free(w);
 		}
 	}
+
+	check_layers();
 
 	/* A checker of an opaque colour and POV-Ray's Clear-like rgbf: the texture is transparent
 	 * where the pattern says (thin: no interior), its tint pigment * filter + transmit and its
