@@ -214,11 +214,14 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 			return lang_error_found(p, "expected a texture in the patterned texture's list");
 		return texture_entry(p, b, pigment_body ? close : LTK_RBRACE, e);
 	}
+	/* A normal's entry starts from #default's normal (its pattern, amount and transforms), as
+	 * POV-Ray's Parse_BlendMapData and Parse_BlendListData copy Default_Texture->Tnormal. */
+	const scene_pigment *normal_base = b->normal && p->default_tex ? p->default_tex->normal : NULL;
 	if (!pigment_body && b->normal && peek_word(p, "normal")) { /* a normal's block list: normal { body } */
 		lang_advance(p);
 		diag_loc open = lang_peek(p)->loc;
 		TRY(lang_expect(p, LTK_LBRACE, "after 'normal'"));
-		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, true, &e->pigment);
+		return body(p, normal_base, LTK_RBRACE, open, b->depth + 1, true, &e->pigment);
 	}
 	if (!pigment_body && lang_peek(p)->kind == LTK_KW_PIGMENT) {
 		diag_loc open;
@@ -228,7 +231,7 @@ static bool entry_item(parser *p, pig_build *b, bool pigment_body, lang_tok clos
 		return body(p, NULL, LTK_RBRACE, open, b->depth + 1, false, &e->pigment);
 	}
 	if (pigment_body) /* a pigment_map's pigment, or a normal_map's normal */
-		return body(p, NULL, close, at, b->depth + 1, b->normal, &e->pigment);
+		return body(p, normal_base, close, at, b->depth + 1, b->normal, &e->pigment);
 	double c[5];
 	TRY(lang_color5(p, "in the map", c));
 	set5(e->color, c);

@@ -3,6 +3,7 @@
 #include "base/mem.h"
 #include "check.h"
 #include "lang/lang.h"
+#include "scene/pigment.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -27,6 +28,13 @@ static const memfile files[] = {
 	{"l3.inc", "#declare I = 0; #while (I < 3) #declare I = I + 1; #end"},
 	{"loop4.pov", "#declare I = 0;\n#while (I < 4) #declare I = I + 1; #end sphere { 0, 1 }"},
 	/* the values the caller gives: a box of the image size, spheres of the animation's values */
+	/* normal_map and block-list entries start from #default's normal (its amount, 0.3 here), as
+	 * POV-Ray's Parse_BlendMapData copies Default_Texture->Tnormal; one's own amount wins */
+	{"normals.pov", "#default { normal { bumps 0.3 } }\n"
+			"sphere { 0, 1 normal { gradient x normal_map { [0 dents] [1 wrinkles 0.7] } } }\n"
+			"sphere { 0, 1 normal { checker normal { ripples } normal { bumps 0.1 } } }\n"
+			"sphere { 0, 1 normal { gradient x normal_map { [0 dents] [1 ripples] } } }\n"},
+	{"normals_none.pov", "sphere { 0, 1 normal { gradient x normal_map { [0 dents] [1 wrinkles 0.7] } } }\n"},
 	{"values.pov", "box { -1, <image_width, image_height, clock_on> }\n"
 		       "sphere { <frame_number, initial_frame, final_frame>, clock + 1 }\n"
 		       "sphere { <clock_delta, initial_clock, final_clock>, 1 }\n"},
@@ -107,6 +115,36 @@ int main(void)
 	CHECK(strstr(buf, "bad.pov:2:15: error: expected a transform, a material, no_shadow or '}' to close 'sphere' (opened at line 2), found ']'"), "got: %s", buf);
 	st = lang_parse_file("missing.pov", &opt, &d, &sc);
 	CHECK(st == LANG_IO_ERROR && sc == NULL, "missing file: status %d", (int)st);
+
+	/* normal_map entries: #default's bump_size, else POV-Ray's 0.5 */
+	{
+		char nmsg[512];
+		st = parse_quiet("normals.pov", &opt, &sc, nmsg, sizeof nmsg);
+		CHECK(st == LANG_OK && sc && scene_n_objects(sc) == 3, "normals.pov: status %d: %s", (int)st, nmsg);
+		if (st == LANG_OK && sc && scene_n_objects(sc) == 3) {
+			const double want[3][2] = {{0.3, 0.7}, {0.3, 0.1}, {0.3, 0.3}};
+			const scene_pattern_kind kinds[3][2] = {{SCENE_PAT_DENTS, SCENE_PAT_WRINKLES},
+								{SCENE_PAT_RIPPLES, SCENE_PAT_BUMPS},
+								{SCENE_PAT_DENTS, SCENE_PAT_RIPPLES}};
+			for (size_t i = 0; i < 3; i++) {
+				const scene_pigment *n = scene_object_at(sc, i)->material->normal;
+				CHECK(n && n->n_entries == 2, "object %zu: a normal of two entries", i);
+				for (uint32_t j = 0; n && j < 2 && j < n->n_entries; j++) {
+					const scene_pigment *e = n->entries[j].pigment;
+					CHECK(e && e->kind == kinds[i][j] && e->bump_amount == want[i][j],
+					      "object %zu entry %u: kind %d amount %g, want %d %g", i, j, e ? (int)e->kind : -1,
+					      e ? e->bump_amount : -1, (int)kinds[i][j], want[i][j]);
+				}
+			}
+		}
+		scene_free(sc);
+		st = parse_quiet("normals_none.pov", &opt, &sc, nmsg, sizeof nmsg);
+		const scene_pigment *n = st == LANG_OK && sc ? scene_object_at(sc, 0)->material->normal : NULL;
+		CHECK(n && n->n_entries == 2 && n->entries[0].pigment->bump_amount == 0.5 &&
+			      n->entries[1].pigment->bump_amount == 0.7,
+		      "without #default: POV-Ray's 0.5: %s", nmsg);
+		scene_free(sc);
+	}
 
 	/* The loop limits count iterations begun: exactly the limit runs, one more is refused. */
 	opt.max_loop_iterations = 3;
