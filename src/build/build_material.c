@@ -143,17 +143,42 @@ static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_
  * surface lets pigment * filter + transmit through, a smooth dielectric where the object has an
  * interior, straight through where it has none; its diffuse is scaled by POV-Ray's opacity
  * 1 - filter - transmit (core/render/trace.cpp: att = Opacity(), highlights unscaled). */
-static bool pigment_can_clear(const scene_pigment *pg, int depth)
+static bool palette_clears(const float *tab)
+{
+	for (int i = 0; tab && i < 256; i++)
+		if (tab[i] > 0.0f) /* NaN: not given */
+			return true;
+	return false;
+}
+
+/* Whether an image_map can let light through: outside a `once` image POV-Ray's pigment is clear,
+ * `filter all`, `transmit all`, a palette index's filter or transmit, and an alpha channel below 1
+ * somewhere (scene/pattern.c image_color) make texels clear. The image is the world's (loaded once:
+ * the pattern's compile finds it so). */
+static bool image_can_clear(world *w, const scene_pigment *pg, diag *d)
+{
+	if (pg->filter_all + pg->transmit_all > 0.0f || pg->once || palette_clears(pg->pal_filter) ||
+	    palette_clears(pg->pal_transmit))
+		return true;
+	const image *img = world_image(w, pg->loc, pg->image, IMAGE_SRGB, d);
+	size_t n = img ? (size_t)img->width * (size_t)img->height : 0;
+	for (size_t i = 0; i < n; i++)
+		if (img->rgba[4 * i + 3] < 1.0f)
+			return true;
+	return false;
+}
+
+static bool pigment_can_clear(world *w, const scene_pigment *pg, int depth, diag *d)
 {
 	if (!pg || depth > SCENE_PIGMENT_MAX_DEPTH || pg->is_normal)
 		return false;
 	if (pg->kind == SCENE_PAT_PLAIN)
 		return pg->color[3] + pg->color[4] > 0.0f;
-	if (pg->kind == SCENE_PAT_IMAGE) /* outside a `once` image POV-Ray's pigment is clear */
-		return pg->filter_all + pg->transmit_all > 0.0f || pg->once;
+	if (pg->kind == SCENE_PAT_IMAGE)
+		return image_can_clear(w, pg, d);
 	for (uint32_t i = 0; i < pg->n_entries; i++) {
 		const scene_map_entry *e = &pg->entries[i];
-		if (e->pigment ? pigment_can_clear(e->pigment, depth + 1) : e->color[3] + e->color[4] > 0.0f)
+		if (e->pigment ? pigment_can_clear(w, e->pigment, depth + 1, d) : e->color[3] + e->color[4] > 0.0f)
 			return true;
 	}
 	return false;
@@ -162,15 +187,15 @@ static bool pigment_can_clear(const scene_pigment *pg, int depth)
 /* A texture whose pattern pigment can let light through somewhere: its transparency is the
  * point's (bsdf_clear.patterned, set at each hit by render/world.c's shade_pattern), the
  * material's own filter and transmit unused (POV-Ray's pigment gives all five channels). */
-static bool pattern_clear(const scene_material *sm)
+static bool pattern_clear(world *w, const scene_material *sm, diag *d)
 {
-	return sm->kind == MAT_TEXTURE && !sm->pov_sss && sm->pigment && pigment_can_clear(sm->pigment, 0);
+	return sm->kind == MAT_TEXTURE && !sm->pov_sss && sm->pigment && pigment_can_clear(w, sm->pigment, 0, d);
 }
 
-static void build_clear(bsdf_params *b, world_material *wm, const scene_material *sm)
+static void build_clear(world *w, bsdf_params *b, world_material *wm, const scene_material *sm, diag *d)
 {
 	float f = sm->filter, t = sm->transmit;
-	bool patterned = pattern_clear(sm);
+	bool patterned = pattern_clear(w, sm, d);
 	if (!(f + t > 0.0f) && !patterned)
 		return;
 	bsdf_clear *c = &b->clear;
@@ -298,9 +323,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 			w->bsdfs[k].pov.sss_diffuse = w->bsdfs[k].pov.diffuse;
 			w->bsdfs[k].pov.diffuse = 0.0f;
 		}
-		build_clear(&w->bsdfs[k], wm, sm);
-		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
-		break;
+		break; /* its transparency once its pigment is built (below) */
 	case MAT_EMISSION:
 		w->bsdfs[k] = bsdf_diffuse(v3s(0.0f));
 		break;
@@ -325,6 +348,10 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		wm->has_pattern = true;
 		wm->pattern_uv = pig->uv_mapping;
 		wm->pattern_kd = sm->kind == MAT_TEXTURE ? sm->diffuse : 1.0f;
+	}
+	if (sm->kind == MAT_TEXTURE) { /* after the pigment: its images are the world's (image_can_clear) */
+		build_clear(w, &w->bsdfs[k], wm, sm, d);
+		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 	}
 	if (sm->kind == MAT_TEXTURE && sm->n_layers && !sm->pov_sss && !build_layers(w, k, sc, sm, d))
 		return false;

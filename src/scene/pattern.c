@@ -1651,9 +1651,12 @@ static void map_lookup(const pattern_prog *pg, const pattern_node *n, double v, 
 		out[i] = (float)((1.0 - t) * a[i] + t * b[i]);
 }
 
-/* An image_map's colour at p (image_texel maps it): clear outside the image. A palette image's
- * `filter I, F` and `transmit I, F` give the texels of index I their filter and transmit (the
- * nearest texel's index: POV-Ray blends interpolated texels' values, circe takes the nearest's). */
+/* An image_map's colour at p (image_texel maps it): clear outside the image. An image with an
+ * alpha channel transmits 1 - alpha (POV-Ray's GetRGBFTValue), `filter all F` and `transmit all T`
+ * add to each texel's filter and transmit (POV-Ray 3.7's AllTransmitLegacyMode: a scene of
+ * #version below 3.8 adds them whatever the alpha). A palette image's `filter I, F` and
+ * `transmit I, F` give the texels of index I their filter and transmit (the nearest texel's
+ * index: POV-Ray blends interpolated texels' values, circe takes the nearest's). */
 static void image_color(const pattern_node *n, dvec3 p, float out[5])
 {
 	float c[4];
@@ -1662,7 +1665,8 @@ static void image_color(const pattern_node *n, dvec3 p, float out[5])
 		return;
 	}
 	out[0] = c[0], out[1] = c[1], out[2] = c[2];
-	out[3] = n->filter_all, out[4] = n->transmit_all;
+	float clear = n->img_alpha ? fminf(fmaxf(1.0f - c[3], 0.0f), 1.0f) : 0.0f;
+	out[3] = n->filter_all, out[4] = n->transmit_all + clear;
 	if (n->img_index) {
 		pattern_node near = *n;
 		near.img = n->img_index, near.interpolate = false;

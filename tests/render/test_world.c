@@ -232,6 +232,49 @@ static void layer_means(const world *w, render_hit h, vec3 *diffuse, vec3 *bound
 	}
 }
 
+/* An image_map's transparency per texel (scene/pattern.c image_color): an alpha channel
+ * transmits 1 - alpha, as POV-Ray's GetRGBFTValue (alpha2.png: an opaque texel, and one of
+ * alpha 64/255; palette2.png: two texels of palette indices 0 and 1); a palette index's `transmit I, F` makes a texture transparent there, the
+ * image not `once` (build_material.c image_can_clear). */
+static void check_image_clear(void)
+{
+	const char *top = getenv("top_srcdir");
+	char text[1024];
+	snprintf(text, sizeof text,
+		 "polygon { 5, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0>, <0, 0, 0>\n"
+		 "  pigment { image_map { png \"%s/tests/render/alpha2.png\" } } finish { diffuse 0.6 } }\n"
+		 "sphere { <0, 0, 5>, 1 pigment { image_map { png \"%s/tests/render/palette2.png\" transmit 1, 0.5 } } }\n"
+		 "sphere { <0, 0, 9>, 1 pigment { image_map { png \"%s/tests/render/palette2.png\" } } }\n",
+		 top ? top : "..", top ? top : "..", top ? top : "..");
+	world *w;
+	char *err = NULL;
+	bool ok = build(text, &w, &err);
+	CHECK(ok, "image_map transparency: %s", err);
+	free(err);
+	if (!ok)
+		return;
+	render_hit h;
+	CHECK(trace(w, v3(0.25f, 0.5f, -1), v3(0, 0, 1), &h), "hit the opaque texel");
+	bsdf_params at = w->bsdfs[h.material];
+	CHECK(at.clear.kind == BSDF_CLEAR_THIN && at.clear.patterned, "an image with alpha: a patterned clear surface");
+	vec3 ns = h.ns;
+	w->rs.shade(w->rs.user, &h, &at, &ns);
+	CHECK(v3_max_comp(at.clear.tint) == 0.0f && fabsf(at.pov.diffuse - 0.6f) < 1e-6f,
+	      "alpha 1: opaque (tint %g, diffuse %g)", v3_max_comp(at.clear.tint), at.pov.diffuse);
+	CHECK(trace(w, v3(0.75f, 0.5f, -1), v3(0, 0, 1), &h), "hit the clear texel");
+	at = w->bsdfs[h.material];
+	w->rs.shade(w->rs.user, &h, &at, &ns);
+	float t = 1.0f - 64.0f / 255.0f;
+	CHECK(near_vec(at.clear.tint, v3s(t), 1e-6f) && fabsf(at.pov.diffuse - 0.6f * (1.0f - t)) < 1e-6f,
+	      "alpha 64/255: tint (%g %g %g) want %g, diffuse %g", at.clear.tint.x, at.clear.tint.y, at.clear.tint.z, t,
+	      at.pov.diffuse);
+	CHECK(trace(w, v3(0, 0, 0.5f), v3(0, 0, 1), &h) && w->bsdfs[h.material].clear.patterned,
+	      "a palette index's transmit: a patterned clear surface");
+	CHECK(trace(w, v3(0, 0, 7.5f), v3(0, 0, 1), &h) && w->bsdfs[h.material].clear.kind == BSDF_CLEAR_NONE,
+	      "the same palette image without transmit: opaque");
+	world_free(w);
+}
+
 /* Layered textures light each layer with its own finish (render/world.c shade_layers): the
  * weights of the layers against sums computed by hand from POV-Ray's rule (trace.cpp
  * ComputeLightedTexture): layer i's diffuse Kd_i * opacity_i * pigment_i, its ambient likewise,
@@ -427,6 +470,7 @@ int main(void)
 	}
 
 	check_layers();
+	check_image_clear();
 
 	/* A checker of an opaque colour and POV-Ray's Clear-like rgbf: the texture is transparent
 	 * where the pattern says (thin: no interior), its tint pigment * filter + transmit and its
