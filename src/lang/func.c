@@ -827,9 +827,9 @@ static bool pattern_block(parser *p, lang_function *f, bool pigment)
 		diag_loc open = lang_peek(p)->loc;
 		if (!lang_expect(p, LTK_LBRACE, "after 'pattern'"))
 			return false;
-		/* functions.inc's f_mandel: an error only when called; slope too, which needs a surface
-		 * normal a function has not (POV-Ray's slope gives 0 there) */
-		if (!lang_pigment_starts(p, false) || lang_word_is(lang_peek(p), "slope")) {
+		/* functions.inc's f_mandel: an error only when called. slope evaluates as POV-Ray's,
+		 * whose SlopePattern gives 0 without a surface (scene/pattern.c slope), then its wave */
+		if (!lang_pigment_starts(p, false)) {
 			lang_token *t = lang_peek(p);
 			if (t->kind != LTK_UNSUPPORTED)
 				return lang_error_found(p, "expected a pattern (bozo, checker, gradient, ...) in 'pattern { }'");

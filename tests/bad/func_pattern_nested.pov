@@ -1,3 +1,3 @@
-#declare F = function { pattern { slope y } }
+#declare F = function { pattern { aoi } }
 #declare F2 = function { 2*F(x, y, z) - 1 }
 #declare X = F2(1, 2, 3);

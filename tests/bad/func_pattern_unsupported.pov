@@ -1,4 +1,4 @@
-// A pattern circe lacks in a pattern function (slope, a normal's pattern of the surface's
-// direction) is declared without complaint and refused, by its name, where the function is called.
-#declare M = function { pattern { slope y } }
+// A pattern circe lacks in a pattern function (aoi, the angle of the ray to the surface, which
+// a function has not) is declared without complaint and refused, by its name, where it is called.
+#declare M = function { pattern { aoi } }
 #declare X = M(1, 2, 3);

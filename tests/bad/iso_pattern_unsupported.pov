@@ -1,2 +1,2 @@
-#declare F = function { pattern { slope y } }
+#declare F = function { pattern { aoi } }
 isosurface { function { F(x, y, z) - 0.5 } contained_by { sphere { 0, 1 } } }

@@ -213,6 +213,28 @@ static void check_closed_forms(void)
 	CHECK_NEAR(v[9], 0.3, 1e-12);
 }
 
+/* function { pattern { slope ... } }: POV-Ray's SlopePattern::EvaluateRaw gives 0 without a
+ * surface (a function has none), whatever the point, the direction or an altitude; the wave
+ * then applies (ramp: (0 * frequency + phase) mod 1). */
+static void check_slope_function(void)
+{
+	double v[8];
+	int n = values("#declare F = function { pattern { slope y } }\n"
+		       "#declare G = function { pattern { slope { <0.3, 1, 0.2>, 0.2, 0.8 altitude y, 0, 4 } phase 0.25 } }\n"
+		       "#declare H = function { pattern { slope { point_at <1, 2, 3> } frequency 3 phase 0.6 } }\n"
+		       DBG("F(0.3, 0.4, 0.5)") DBG("F(-7, 11, 2)") DBG("G(0.3, 0.4, 0.5)") DBG("G(4, -9, 1)")
+		       DBG("H(0.1, 0.2, 0.3)"),
+		       v, 8);
+	CHECK(n == 5, "%d values", n);
+	if (n != 5)
+		return;
+	CHECK_NEAR(v[0], 0.0, 0);
+	CHECK_NEAR(v[1], 0.0, 0);
+	CHECK_NEAR(v[2], 0.25, 1e-12);
+	CHECK_NEAR(v[3], 0.25, 1e-12);
+	CHECK_NEAR(v[4], 0.6, 1e-12);
+}
+
 /* f_noise3d is the bozo pattern (POV-Ray's Noise under both), in [0, 1], mean about 0.5. */
 static void check_noise(void)
 {
@@ -411,6 +433,7 @@ int main(void)
 	check_pigments();
 	check_function_pattern();
 	check_vturbulence();
+	check_slope_function();
 	if (have_includes) { /* functions.inc itself: skipped without povray-includes */
 		check_closed_forms();
 		check_noise();
