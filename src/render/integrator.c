@@ -4,6 +4,8 @@
  * geometric normal is rejected so shading normals cannot leak light through a surface. */
 #include "render/integrator.h"
 
+#include "render/bsdf_pov.h"
+
 #include "accel/bvh.h"
 #include "accel/offset.h"
 #include "sss/disk.h"
@@ -829,12 +831,17 @@ static inline void through_fog(const render_scene *s, const render_settings *set
 }
 
 /* The probability of the delta lobes of v's transparent part against its opaque lobes, by their
- * weights (0 at an opaque surface, 1 where the opaque part reflects nothing). */
+ * weights (0 at an opaque surface or where nothing passes, 1 where the opaque part reflects
+ * nothing). A POV-Ray finish's opaque weight counts its highlights and reflection with its
+ * diffuse (bsdf_pov_albedo_bound): a clear layer's or glass's phong alone is no "nothing". */
 static inline float delta_prob(const vertex *v, bool entering)
 {
 	if (v->b.clear.kind == BSDF_CLEAR_NONE)
 		return 0.0f;
-	float wd = bsdf_clear_weight(&v->b, v->wo_local, entering), wo = v3_luminance(bsdf_albedo(&v->b));
+	float wd = bsdf_clear_weight(&v->b, v->wo_local, entering);
+	float wo = v3_luminance(v->b.kind == BSDF_POV ? bsdf_pov_albedo_bound(&v->b) : bsdf_albedo(&v->b));
+	if (!(wd > 0.0f))
+		return 0.0f;
 	return wo > 0.0f ? wd / (wd + wo) : 1.0f;
 }
 

@@ -37,6 +37,22 @@ sed -i 's|finish { diffuse 1 }|finish { diffuse 1 phong 1 specular 1 reflection 
 expect_status 0 "$CIRCE" render p.pov -o h.exr -W 32 -H 32 --spp 1024 --quiet --region 10,10,22,22
 "$CIRCE" compare h.exr ref.exr >cmp.txt 2>&1
 awk '/^mean:/ { m = $3 } END { exit !(m > 0.9 && m < 1.003) }' cmp.txt || fail "the brightest POV-Ray finish reflects $(grep mean: cmp.txt)"
+# A layered texture (render/world.c shade_layers): a half-filtering white layer of diffuse 1 over
+# a white one reflects 0.5 + 0.5 * 1 = 1 (within 0.3 %: both layers' picks carry weight 1); a clear
+# layer with highlights over it asks for more and is capped at 1 (between 0.9 and 1.003).
+cat >l.pov <<'EOS'
+global_settings { radiosity { } }
+camera { location <0, 0, -3> look_at <0, 0, 0> angle 40 }
+background { color rgb 1 }
+sphere { <0, 0, 0>, 1 texture { pigment { color rgb 1 } finish { diffuse 1 } }
+  texture { pigment { color rgbf <1, 1, 1, 0.5> } finish { diffuse 1 } } }
+EOS
+expect_status 0 "$CIRCE" render l.pov -o l.exr -W 32 -H 32 --spp 1024 --quiet --region 10,10,22,22
+expect_status 0 "$CIRCE" compare l.exr ref.exr --fail 0.003
+sed -i 's|rgbf <1, 1, 1, 0.5> } finish { diffuse 1 }|rgbf 1 } finish { diffuse 1 phong 1 specular 1 reflection 0.5 }|' l.pov
+expect_status 0 "$CIRCE" render l.pov -o lh.exr -W 32 -H 32 --spp 1024 --quiet --region 10,10,22,22
+"$CIRCE" compare lh.exr ref.exr >cmp.txt 2>&1
+awk '/^mean:/ { m = $3 } END { exit !(m > 0.9 && m < 1.003) }' cmp.txt || fail "the brightest layered texture reflects $(grep mean: cmp.txt)"
 # The whole frame of albedo 1, silhouette included, at fewer samples: within 1 %.
 sed -i 's/rgb 0.5/rgb 1/' f.pov
 expect_status 0 "$CIRCE" render f.pov -o w.exr -W 32 -H 32 --spp 512 --quiet
