@@ -81,4 +81,27 @@ void world_stats_get(const world *w, world_stats *out);
  * SSS materials. */
 const char *world_sss_method(const world *w);
 
+/* POV-Ray's trace(object, start, direction [, normal]) at parse time (build_trace.c): an object's
+ * records (the objects of one object value, CSG paths and all) made a world of their own under the
+ * parent scene's camera, so tessellated as the render will tessellate them, and kept for later
+ * traces of the same key (WORLD_TRACER_SLOTS objects at once, the oldest built again when
+ * needed). */
+enum { WORLD_TRACER_SLOTS = 4 };
+typedef struct world_tracer world_tracer;
+/* The tessellation a trace sees is that of an image of this size (circe's default), whatever the
+ * render's: the values a scene computes with trace do not change with the image's size. */
+enum { WORLD_TRACE_WIDTH = 640, WORLD_TRACE_HEIGHT = 480 };
+/* max_memory: the tessellation limit, as world_options' (0: its default). NULL when memory runs out. */
+world_tracer *world_tracer_new(size_t max_memory);
+void world_tracer_free(world_tracer *t);
+/* The nearest hit past the start of the ray from org along dir on objs[0..n) (parent: the scene
+ * they belong to, as parsed so far; key: a name for the object that stays its own while t lives,
+ * NULL for none): 1 with *hit and the unit normal *normal there (outward of the solid), 0 for none
+ * (both zero vectors, as POV-Ray's), -1 after reporting at loc (a zero direction, an object that
+ * cannot be built). */
+int world_trace(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key, dvec3 org,
+		dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
+/* How many worlds t has built (each object once while it stays kept). */
+size_t world_tracer_builds(const world_tracer *t);
+
 #endif

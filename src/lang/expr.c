@@ -1260,6 +1260,8 @@ bool lang_primary(parser *p, value *out)
 			return colour_value(p, out);
 		if (t->kind == LTK_UNSUPPORTED && (lang_word_is(t, "min_extent") || lang_word_is(t, "max_extent")))
 			return lang_extent(p, out); /* extent.c */
+		if (t->kind == LTK_UNSUPPORTED && lang_word_is(t, "trace"))
+			return lang_trace(p, out); /* extent.c */
 		const builtin *b = builtin_of(t->kind);
 		if (!b && t->kind == LTK_UNSUPPORTED && lang_token_is(t, "vturbulence"))
 			b = &vturbulence_builtin;

@@ -31,6 +31,14 @@ enum { LANG_DEFAULT_WIDTH = 640, LANG_DEFAULT_HEIGHT = 480 };
  * does not exist, which makes the parser try the next folder of the search path). */
 typedef int (*lang_read_fn)(void *user, const char *path, char **text, size_t *len);
 
+/* POV-Ray's trace(object, start, direction [, normal]): the nearest hit past org along dir on the
+ * objects objs[0..n) of one object value (sc: the scene as parsed so far; key: the same pointer for
+ * the same declared object, for the callee's cache). Returns 1 with *hit and the unit outward normal
+ * *normal, 0 for no hit, -1 after reporting at loc. The language knows no meshes: main.c gives the
+ * build's world_trace; without one, trace() is an error. */
+typedef int (*lang_trace_fn)(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
+			     dvec3 org, dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
+
 typedef struct lang_options {
 	const char *const *include_dirs; /* the -I folders, searched after the including file's */
 	size_t n_include_dirs;
@@ -42,6 +50,8 @@ typedef struct lang_options {
 	void *read_user;
 	long max_loop_iterations; /* per #while (and 10x that in all); 0: LANG_MAX_LOOP_ITERATIONS and
 				     10,000,000 in all. A fuzzer lowers it to keep inputs fast. */
+	lang_trace_fn trace; /* NULL: trace() is refused with an error */
+	void *trace_user;
 } lang_options;
 
 typedef enum lang_status {

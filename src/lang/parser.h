@@ -269,6 +269,8 @@ bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi,
 const char *lang_value_kind_name(const value *v);
 /* extent.c: min_extent(object) or max_extent(object), the word at the current token. */
 bool lang_extent(parser *p, value *out);
+/* extent.c: trace(object, start, direction [, normal]), the word at the current token. */
+bool lang_trace(parser *p, value *out);
 
 /* Declares name (#declare, or #local with local) as v; false after reporting. */
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
