@@ -7,6 +7,7 @@
 #include "base/diag.h"
 #include "render/camera.h"
 #include "render/integrator.h"
+#include "scene/pigment.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -101,6 +102,12 @@ void world_tracer_free(world_tracer *t);
  * cannot be built). */
 int world_trace(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key, dvec3 org,
 		dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
+/* POV-Ray's object pattern and inside(object, point): the inside of objs[0..n) (their union; CSG
+ * by its trees, a mesh by the parity of its crossings) as a function of a world-space point, 1
+ * inside and 0 outside, valid while t lives (the scene's patterns call it during the render:
+ * free t after the render), thread-safe. False after reporting at loc. */
+bool world_inside_fn(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
+		     scene_fn *out, diag *d, diag_loc loc);
 /* How many worlds t has built (each object once while it stays kept). */
 size_t world_tracer_builds(const world_tracer *t);
 

@@ -23,6 +23,10 @@ struct world_tracer {
 	tracer_slot slot[WORLD_TRACER_SLOTS];
 	unsigned next; /* the slot the next new object takes (round robin) */
 	size_t builds; /* worlds built, for tests */
+	/* The worlds of object patterns and inside(): kept while the tracer lives (the scene's
+	 * patterns call them during the render), one per key. */
+	tracer_slot *pinned;
+	size_t n_pinned, cap_pinned;
 };
 
 world_tracer *world_tracer_new(size_t max_memory)
@@ -49,6 +53,9 @@ void world_tracer_free(world_tracer *t)
 		return;
 	for (int i = 0; i < WORLD_TRACER_SLOTS; i++)
 		slot_free(&t->slot[i]);
+	for (size_t i = 0; i < t->n_pinned; i++)
+		slot_free(&t->pinned[i]);
+	mem_free(t->pinned);
 	mem_free(t);
 }
 
@@ -100,20 +107,14 @@ static scene *object_scene(const scene *parent, const scene_object *objs, size_t
 	return sc;
 }
 
-/* The slot of key, built now when it is not kept; NULL after reporting at loc. */
-static tracer_slot *slot_of(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
-			    diag *d, diag_loc loc)
+/* Builds s (free) for objs as key's world; false after reporting at loc. */
+static bool build_slot(world_tracer *t, tracer_slot *s, const scene *parent, const scene_object *objs, size_t n,
+		       const void *key, diag *d, diag_loc loc)
 {
-	for (int i = 0; i < WORLD_TRACER_SLOTS; i++)
-		if (t->slot[i].key == key && key)
-			return &t->slot[i];
-	tracer_slot *s = &t->slot[t->next];
-	t->next = (t->next + 1) % WORLD_TRACER_SLOTS;
-	slot_free(s);
 	s->sc = object_scene(parent, objs, n);
 	if (!s->sc) {
 		diag_error(d, loc, "out of memory");
-		return NULL;
+		return false;
 	}
 	/* Quietly: the render builds (and warns about) the same records again. Only a failure is
 	 * built again aloud, for its messages. */
@@ -127,16 +128,81 @@ static tracer_slot *slot_of(world_tracer *t, const scene *parent, const scene_ob
 			world_free(world_build(s->sc, &t->opt, d));
 		else
 			scene_validate(s->sc, d);
-		diag_error(d, loc, "the object of 'trace' cannot be made ready to trace (above)");
+		diag_error(d, loc, "the object cannot be made ready to trace or test (above)");
 		slot_free(s);
-		return NULL;
+		return false;
 	}
 	world_stats st;
 	world_stats_get(s->w, &st);
 	s->triangles = st.instanced_triangles;
 	s->key = key;
 	t->builds++;
+	return true;
+}
+
+/* The slot of key, built now when it is not kept; NULL after reporting at loc. */
+static tracer_slot *slot_of(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
+			    diag *d, diag_loc loc)
+{
+	for (int i = 0; i < WORLD_TRACER_SLOTS; i++)
+		if (t->slot[i].key == key && key)
+			return &t->slot[i];
+	for (size_t i = 0; i < t->n_pinned; i++)
+		if (t->pinned[i].key == key && key)
+			return &t->pinned[i];
+	tracer_slot *s = &t->slot[t->next];
+	t->next = (t->next + 1) % WORLD_TRACER_SLOTS;
+	slot_free(s);
+	return build_slot(t, s, parent, objs, n, key, d, loc) ? s : NULL;
+}
+
+/* The pinned slot of key (kept while t lives), built now or taken from the round robin's. */
+static tracer_slot *pinned_of(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
+			      diag *d, diag_loc loc)
+{
+	for (size_t i = 0; i < t->n_pinned; i++)
+		if (t->pinned[i].key == key && key)
+			return &t->pinned[i];
+	if (t->n_pinned == t->cap_pinned) {
+		size_t cap = t->cap_pinned ? 2 * t->cap_pinned : 4;
+		tracer_slot *g = mem_realloc(t->pinned, cap, sizeof *g);
+		if (!g) {
+			diag_error(d, loc, "out of memory");
+			return NULL;
+		}
+		t->pinned = g, t->cap_pinned = cap;
+	}
+	tracer_slot *s = &t->pinned[t->n_pinned];
+	memset(s, 0, sizeof *s);
+	for (int i = 0; i < WORLD_TRACER_SLOTS; i++)
+		if (t->slot[i].key == key && key) { /* traced before: the same world moves */
+			*s = t->slot[i];
+			memset(&t->slot[i], 0, sizeof t->slot[i]);
+			t->n_pinned++;
+			return s;
+		}
+	if (!build_slot(t, s, parent, objs, n, key, d, loc))
+		return NULL;
+	t->n_pinned++;
 	return s;
+}
+
+/* scene_fn_eval of an object's inside: 1 inside, 0 outside (thread-safe: the world is read only). */
+static bool inside_eval(const void *ctx, const double xyz[3], double *out)
+{
+	const world *w = ctx;
+	*out = world_point_inside(w, v3((float)xyz[0], (float)xyz[1], (float)xyz[2])) ? 1.0 : 0.0;
+	return true;
+}
+
+bool world_inside_fn(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
+		     scene_fn *out, diag *d, diag_loc loc)
+{
+	tracer_slot *s = pinned_of(t, parent, objs, n, key, d, loc);
+	if (!s)
+		return false;
+	*out = (scene_fn){.eval = inside_eval, .ctx = s->w, .name = "(object)"};
+	return true;
 }
 
 int world_trace(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key, dvec3 org,

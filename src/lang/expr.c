@@ -1262,6 +1262,8 @@ bool lang_primary(parser *p, value *out)
 			return lang_extent(p, out); /* extent.c */
 		if (t->kind == LTK_UNSUPPORTED && lang_word_is(t, "trace"))
 			return lang_trace(p, out); /* extent.c */
+		if (t->kind == LTK_UNSUPPORTED && lang_word_is(t, "inside"))
+			return lang_inside(p, out); /* extent.c */
 		const builtin *b = builtin_of(t->kind);
 		if (!b && t->kind == LTK_UNSUPPORTED && lang_token_is(t, "vturbulence"))
 			b = &vturbulence_builtin;

@@ -279,3 +279,32 @@ bool lang_trace(parser *p, value *out)
 	}
 	return true;
 }
+
+/* inside = "inside" "(" expression "," vector ")"   POV-Ray's Inside_Object at parse time: 1 when
+ * the point is inside the object (its tessellated solid; CSG by its trees), else 0, by
+ * lang_options.inside (main.c gives the build's). */
+bool lang_inside(parser *p, value *out)
+{
+	lang_token name = *lang_advance(p);
+	TRY(lang_expect(p, LTK_LPAREN, "after 'inside'"));
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (v.kind != VAL_OBJECT || !v.obj)
+		return lang_error(p, at, "'inside' needs an object, found %s", lang_value_kind_name(&v));
+	TRY(lang_expect(p, LTK_COMMA, "after the object of 'inside'"));
+	dvec3 q;
+	TRY(lang_vec3(p, "(the point of 'inside')", &q));
+	TRY(lang_expect(p, LTK_RPAREN, "to close the arguments of 'inside'"));
+	if (!p->opt.inside)
+		return lang_error(p, name.loc, "'inside' is not supported by circe here (no inside test: it needs the build)");
+	scene_fn fn;
+	TRY(p->opt.inside(p->opt.trace_user, p->sc, v.obj->items, v.obj->n, v.obj, &fn, p->d, name.loc));
+	double xyz[3] = {q.x, q.y, q.z}, r = 0;
+	if (!fn.eval || !fn.eval(fn.ctx, xyz, &r))
+		r = 0;
+	memset(out, 0, sizeof *out);
+	out->kind = VAL_FLOAT, out->n = 1;
+	out->v[0] = r > 0.5 ? 1.0 : 0.0;
+	return true;
+}

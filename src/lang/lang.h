@@ -7,6 +7,7 @@
 #define CIRCE_LANG_LANG_H
 
 #include "base/diag.h"
+#include "scene/pigment.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -39,6 +40,12 @@ typedef int (*lang_read_fn)(void *user, const char *path, char **text, size_t *l
 typedef int (*lang_trace_fn)(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
 			     dvec3 org, dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
 
+/* POV-Ray's object pattern and inside(object, point): the inside of objs[0..n) as sc's function of
+ * a point (1 inside, 0 outside), valid while the callee's state lives (main.c keeps it until the
+ * scene is freed). False after reporting at loc. */
+typedef bool (*lang_inside_fn)(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
+			       scene_fn *out, diag *d, diag_loc loc);
+
 typedef struct lang_options {
 	const char *const *include_dirs; /* the -I folders, searched after the including file's */
 	size_t n_include_dirs;
@@ -51,7 +58,8 @@ typedef struct lang_options {
 	long max_loop_iterations; /* per #while (and 10x that in all); 0: LANG_MAX_LOOP_ITERATIONS and
 				     10,000,000 in all. A fuzzer lowers it to keep inputs fast. */
 	lang_trace_fn trace; /* NULL: trace() is refused with an error */
-	void *trace_user;
+	lang_inside_fn inside; /* NULL: the object pattern and inside() are refused with an error */
+	void *trace_user; /* both's */
 } lang_options;
 
 typedef enum lang_status {

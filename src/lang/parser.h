@@ -271,6 +271,8 @@ const char *lang_value_kind_name(const value *v);
 bool lang_extent(parser *p, value *out);
 /* extent.c: trace(object, start, direction [, normal]), the word at the current token. */
 bool lang_trace(parser *p, value *out);
+/* extent.c: inside(object, point), the word at the current token. */
+bool lang_inside(parser *p, value *out);
 
 /* Declares name (#declare, or #local with local) as v; false after reporting. */
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
@@ -324,6 +326,9 @@ bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* An object (a declared object's name, or an object item) as a list of placed objects; what: the
+ * error's context ("in the object pattern"). */
+bool lang_object_list(parser *p, const char *what, const objlist **out);
 /* "{" ... "}" after `what`, any tokens between, the braces balanced (directives still run). */
 bool lang_skip_block(parser *p, const char *what);
 /* For shapes.c: a new geometry record (NULL after reporting), and an object of g placed in out with

@@ -733,6 +733,24 @@ static bool slope_args(parser *p, scene_pigment *g, diag_loc kw)
 	return true;
 }
 
+/* object_pattern = "object" "{" object_ref block_list "}"   POV-Ray's object pattern: entry 0
+ * outside the object, 1 inside (the object in the pattern's space), by lang_options.inside (main.c
+ * gives the build's: the inside of the object's tessellated solid, as CSG classifies it). */
+static bool object_pattern(parser *p, pig_build *b, diag_loc kw)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'object' (the object pattern)"));
+	const objlist *l;
+	TRY(lang_object_list(p, "in the object pattern", &l));
+	TRY(block_list(p, b));
+	TRY(lang_expect_close(p, open, "object pattern"));
+	if (!p->opt.inside)
+		return lang_error(p, kw, "'object' as a pattern is not supported by circe here (no inside test: it needs "
+					 "the build)");
+	return p->opt.inside(p->opt.trace_user, p->sc, l->items, l->n, l, &b->pg.fn, p->d, kw);
+}
+
 /* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
  * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
  * object, which holds them), over a declared pigment or normal. */
@@ -747,6 +765,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_func_pattern(p, &b->pg.fn);
 	if (k == SCENE_PAT_IMAGE_PATTERN)
 		return image_block(p, b, k);
+	if (k == SCENE_PAT_OBJECT)
+		return object_pattern(p, b, kw);
 	if (k == SCENE_PAT_MATERIAL_MAP) /* a texture's (head() reads it there) */
 		return lang_error(p, kw, "'material_map' picks textures: it belongs in a texture, not in a %s",
 				  b->normal ? "normal" : b->density ? "density" : "pigment");

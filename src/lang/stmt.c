@@ -493,8 +493,6 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		}
 		return true;
 	}
-	if (lang_peek(p)->kind == LTK_KW_OBJECT) /* POV-Ray's object pattern */
-		return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(pigment_color(p, what, use, m));
@@ -964,8 +962,9 @@ static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, 
 			TRY(lang_normal(p, m));
 		else if (k == close)
 			break;
-		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern (a keyword of circe's for objects) */
-			return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
+		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern after a texture's items */
+			return lang_error(p, lang_peek(p)->loc, "the object pattern of a texture comes first in it, before "
+								"its pigment, normal and finish");
 		else if (lang_word_is(lang_peek(p), "uv_mapping")) /* POV-Ray's: the whole texture at <u, v, 0> */
 			lang_advance(p), uv = true;
 		else {
@@ -2711,6 +2710,42 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return lang_error(p, p->prev.loc, "out of memory");
 	out->kind = VAL_OBJECT;
 	out->obj = l;
+	return ok;
+}
+
+/* object_ref = identifier | object_item: an object as a value's list (the object pattern's
+ * object). A declared object's name is its own list, the same for every use. */
+bool lang_object_list(parser *p, const char *what, const objlist **out)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind == LTK_IDENT) {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		if (s && s->val.kind == VAL_OBJECT && s->val.obj) {
+			lang_advance(p);
+			*out = s->val.obj;
+			return true;
+		}
+	}
+	diag_loc at = t->loc;
+	vecbuf tmp;
+	vecbuf_init(&tmp, sizeof(scene_object));
+	bool matched;
+	bool ok = object_item(p, &tmp, &matched);
+	if (ok && !matched) {
+		vecbuf_free(&tmp);
+		return lang_error_found(p, "expected an object %s", what);
+	}
+	objlist *l = ok ? arena_zalloc(&p->sc->arena, 1, sizeof *l) : NULL;
+	if (l) {
+		l->n = tmp.len;
+		l->items = arena_alloc(&p->sc->arena, tmp.len ? tmp.len : 1, sizeof(scene_object), 16);
+		if (l->items && tmp.len)
+			memcpy(l->items, tmp.data, tmp.len * sizeof(scene_object));
+	}
+	vecbuf_free(&tmp);
+	if (ok && (!l || !l->items))
+		return lang_error(p, at, "out of memory");
+	*out = l;
 	return ok;
 }
 

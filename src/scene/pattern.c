@@ -1500,6 +1500,10 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
 	case PATTERN_TILING: return tiling(n->tiling, p);
 	case PATTERN_MATERIAL_MAP: return material_map(n, p);
+	case PATTERN_OBJECT: { /* ObjectPattern::Evaluate: Inside_Object, 1 inside */
+		double xyz[3] = {p.x, p.y, p.z}, v = 0.0;
+		return n->fn.eval && n->fn.eval(n->fn.ctx, xyz, &v) && v > 0.5 ? 1.0 : 0.0;
+	}
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
@@ -1515,7 +1519,8 @@ double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, 
 
 static bool is_block(pattern_kind k)
 {
-	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP;
+	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP ||
+	       k == PATTERN_OBJECT;
 }
 
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)

@@ -49,6 +49,7 @@ typedef enum pattern_kind {
 	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
 	PATTERN_TILING, /* POV-Ray's 27 tilings of the x-z plane */
 	PATTERN_MATERIAL_MAP, /* a block pattern: an image's palette index (or red) picks the entry */
+	PATTERN_OBJECT, /* a block pattern: entry 1 inside an object, 0 outside (pattern_node.fn) */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
@@ -118,7 +119,7 @@ typedef struct pattern_node {
 	pattern_turb turb;     /* its classic turbulence (amount 0: none) */
 	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
 	int32_t child;	   /* PATTERN_PIGMENT_PATTERN: its pigment's node (-1: none, value 0) */
-	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0) */
+	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0); PATTERN_OBJECT: the inside */
 	/* slope: its unit direction (point_at: the point) and weight, the altitude's unit direction
 	 * and weight, each one's low and width (0: none given) */
 	dvec3 slope_dir, altit_dir;

@@ -21,7 +21,7 @@ scene_pattern_kind scene_pattern_find(const char *s, size_t n)
 
 int scene_pattern_blocks(scene_pattern_kind k)
 {
-	return k == SCENE_PAT_CHECKER || k == SCENE_PAT_BRICK ? 2 : k == SCENE_PAT_HEXAGON ? 3 : 0;
+	return k == SCENE_PAT_CHECKER || k == SCENE_PAT_BRICK || k == SCENE_PAT_OBJECT ? 2 : k == SCENE_PAT_HEXAGON ? 3 : 0;
 }
 
 /* POV-Ray 3.7's constructors (source/core/material/pattern.cpp): ContinuousPattern's ramp wave

@@ -28,7 +28,8 @@
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
 	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
-	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")
+	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")          \
+	X(OBJECT, "object")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -122,7 +123,7 @@ typedef struct scene_pigment {
 	bool is_normal;	  /* a normal { }: the pattern perturbs the shading normal */
 	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */
-	scene_fn fn;	  /* FUNCTION: its function */
+	scene_fn fn;	  /* FUNCTION: its function; OBJECT: its object's inside (1 inside, 0 outside) */
 	bool slope_map;	  /* a normal's slope_map: each entry's color[0] a height, color[1] its slope */
 	/* SLOPE, as POV-Ray's parser leaves it: the unit direction (point_at: the point) and its
 	 * weight, the altitude's unit direction and weight (the weights add to 1), each one's low and

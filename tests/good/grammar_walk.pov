@@ -12,8 +12,8 @@
 #declare C = color rgb <1, 0.5, 0.25>;
 // rule: deprecation
 #declare deprecated once "use Ball" OldBall = 1;
-// rule: block_value, trace_call
-#declare Ball = sphere { 0, 1 } #declare TraceN = <0, 0, 0>; #declare TraceP = trace(Ball, <0, 0, -5>, z, TraceN);
+// rule: block_value, trace_call, inside_call, object_ref
+#declare Ball = sphere { 0, 1 } #declare TraceN = <0, 0, 0>; #declare TraceP = trace(Ball, <0, 0, -5>, z, TraceN); #declare InBall = inside(Ball, 0); #declare ObjPig = pigment { object { Ball color rgb 0 color rgb 1 } }
 // rule: if, token
 #if (A < 0) sphere { 0, 2 } #else sphere { 0, 3 } #end
 // rule: ifdef, undef

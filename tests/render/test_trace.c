@@ -23,6 +23,12 @@ static int trace_cb(void *user, const scene *sc, const scene_object *objs, size_
 	return world_trace(user, sc, objs, n, key, org, dir_, hit, normal, d, loc);
 }
 
+static bool inside_cb(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key, scene_fn *out,
+		      diag *d, diag_loc loc)
+{
+	return world_inside_fn(user, sc, objs, n, key, out, d, loc);
+}
+
 static scene *parse(const char *text, world_tracer *t, FILE *err)
 {
 	const char *path = check_path(dir, "s.pov");
@@ -32,7 +38,7 @@ static scene *parse(const char *text, world_tracer *t, FILE *err)
 	diag d;
 	diag_init(&d, err ? err : stderr);
 	scene *sc = NULL;
-	lang_options o = {.trace = t ? trace_cb : NULL, .trace_user = t};
+	lang_options o = {.trace = t ? trace_cb : NULL, .inside = t ? inside_cb : NULL, .trace_user = t};
 	if (lang_parse_file(path, &o, &d, &sc) != LANG_OK)
 		sc = NULL;
 	diag_free(&d);
@@ -189,19 +195,35 @@ static bool exact_intersection(dvec3 o, dvec3 u, double *t, dvec3 *n)
 	return true;
 }
 
+/* The exact insides of the cases' solids. */
+static bool in_sphere(dvec3 q) { return d3_length(d3_sub(q, d3(0.2, -0.1, 0.3))) < 1.1; }
+static bool in_box(dvec3 q)
+{
+	dvec3 r = rot_inv(q);
+	return fabs(r.x) < 1 && fabs(r.y) < 0.5 && fabs(r.z) < 0.7;
+}
+static bool in_difference(dvec3 q)
+{
+	return fabs(q.x) < 1 && fabs(q.y) < 1 && fabs(q.z) < 1 && d3_length(d3_sub(q, d3(0, 0, -1))) >= 0.6;
+}
+static bool in_intersection(dvec3 q) { return d3_length(q) < 1 && q.y < 0.3; }
+
 typedef struct trace_case {
 	const char *name, *decl; /* declares O */
 	exact_fn exact;
+	bool (*inside)(dvec3 q);
 	double tol; /* the distance the tessellation may keep from the surface */
 	double rad; /* rays from a sphere of this radius around the origin... */
 } trace_case;
 
 static const trace_case cases[] = {
-	{"sphere", "#declare O = sphere { <0.2, -0.1, 0.3>, 1.1 }\n", exact_sphere, 2e-3, 4},
-	{"rotated box", "#declare O = box { <-1, -0.5, -0.7>, <1, 0.5, 0.7> rotate <0, 30, 20> }\n", exact_box, 1e-5, 4},
-	{"difference", "#declare O = difference { box { -1, 1 } sphere { <0, 0, -1>, 0.6 } }\n", exact_difference, 2e-3, 4},
+	{"sphere", "#declare O = sphere { <0.2, -0.1, 0.3>, 1.1 }\n", exact_sphere, in_sphere, 2e-3, 4},
+	{"rotated box", "#declare O = box { <-1, -0.5, -0.7>, <1, 0.5, 0.7> rotate <0, 30, 20> }\n", exact_box, in_box,
+	 1e-5, 4},
+	{"difference", "#declare O = difference { box { -1, 1 } sphere { <0, 0, -1>, 0.6 } }\n", exact_difference,
+	 in_difference, 2e-3, 4},
 	{"intersection with a plane", "#declare O = intersection { sphere { 0, 1 } plane { y, 0.3 } }\n",
-	 exact_intersection, 2e-3, 4},
+	 exact_intersection, in_intersection, 2e-3, 4},
 };
 
 /* A uniform unit vector. */
@@ -299,6 +321,32 @@ static void test_case(const trace_case *c)
 	CHECK(worst_n < 0.05, "%s: worst normal angle %g", c->name, worst_n);
 	CHECK(world_tracer_builds(t) == 1, "%s: one world for one object, built %zu", c->name, world_tracer_builds(t));
 	CHECK(d.errors == 0, "%s: no errors, %d", c->name, d.errors);
+	/* The inside (POV-Ray's inside() and object pattern) at random points against the exact
+	 * solid's, away from its surface by more than the tessellation's distance. */
+	scene_fn fn;
+	bool made = world_inside_fn(t, sc, objs, n, objs, &fn, &d, diag_noloc());
+	CHECK(made && fn.eval, "%s: an inside function", c->name);
+	int wrong = 0, tested = 0, in = 0;
+	for (int i = 0; made && i < 20000; i++) {
+		dvec3 q = d3(3 * rng_double(&r) - 1.5, 3 * rng_double(&r) - 1.5, 3 * rng_double(&r) - 1.5);
+		bool want = c->inside(q), near = false;
+		for (int k = 0; k < 6 && !near; k++) {
+			dvec3 dv = d3(k / 2 == 0 ? 1 : 0, k / 2 == 1 ? 1 : 0, k / 2 == 2 ? 1 : 0);
+			near = c->inside(d3_add(q, d3_scale(dv, (k & 1 ? -2 : 2) * c->tol + 1e-5))) != want;
+		}
+		if (near)
+			continue;
+		double xyz[3] = {q.x, q.y, q.z}, v = -1;
+		bool ok = fn.eval(fn.ctx, xyz, &v);
+		tested++, in += want;
+		if (!ok || (v == 1.0) != want || (v != 0.0 && v != 1.0))
+			wrong++;
+	}
+	printf("%s: inside at %d points (%d inside), %d wrong\n", c->name, tested, in, wrong);
+	CHECK(tested > 15000 && in > 1000 && wrong == 0, "%s: inside wrong at %d of %d points (%d inside)", c->name,
+	      wrong, tested, in);
+	CHECK(world_tracer_builds(t) == 1, "%s: the inside test takes the traced world, built %zu", c->name,
+	      world_tracer_builds(t));
 	/* A zero direction: an error, reported. */
 	dvec3 p, nn;
 	int got = world_trace(t, sc, objs, n, objs, d3(0, 0, -5), d3(0, 0, 0), &p, &nn, &d, diag_noloc());
@@ -336,6 +384,31 @@ static void test_language(void)
 		}
 	}
 	CHECK(world_tracer_builds(t) == 1, "one declared object, one world: %zu", world_tracer_builds(t));
+	scene_free(sc);
+	world_tracer_free(t);
+	/* inside() and the object pattern: both the object's inside, by the same world. */
+	t = world_tracer_new(0);
+	sc = parse("#declare B = difference { box { -1, 1 } sphere { <0, 0, -1>, 0.6 } }\n"
+		   "sphere { <inside(B, <0.5, 0.5, 0>), inside(B, <0, 0, -0.8>), inside(B, <2, 0, 0>)>, 0.1 }\n"
+		   "plane { z, 0 pigment { object { B color rgb <1, 0, 0> color rgb <0, 0, 1> } } }\n",
+		   t, NULL);
+	CHECK(sc != NULL, "the inside scene parses");
+	if (sc && scene_n_objects(sc) == 2) {
+		dvec3 c = scene_object_at(sc, 0)->geom->u.sphere.center;
+		CHECK(c.x == 1 && c.y == 0 && c.z == 0, "inside() gives 1, 0, 0: <%g, %g, %g>", c.x, c.y, c.z);
+		const scene_material *m = scene_object_at(sc, 1)->material;
+		const scene_pigment *pg = m ? m->pigment : NULL;
+		CHECK(pg && pg->kind == SCENE_PAT_OBJECT && pg->fn.eval, "an object pattern");
+		CHECK(pg && pg->n_entries == 2 && pg->entries[0].color[0] == 1 && pg->entries[1].color[2] == 1,
+		      "its entries: outside red, inside blue");
+		if (pg && pg->fn.eval) {
+			const double in[3] = {0.5, -0.5, 0.9}, out[3] = {0, 0, -0.7}, far[3] = {3, 0, 0};
+			double a = -1, b = -1, e = -1;
+			pg->fn.eval(pg->fn.ctx, in, &a), pg->fn.eval(pg->fn.ctx, out, &b), pg->fn.eval(pg->fn.ctx, far, &e);
+			CHECK(a == 1 && b == 0 && e == 0, "the pattern's inside: %g %g %g", a, b, e);
+		}
+	}
+	CHECK(world_tracer_builds(t) == 1, "inside() and the pattern share the world: %zu", world_tracer_builds(t));
 	scene_free(sc);
 	world_tracer_free(t);
 	/* Without a tracer the language refuses trace() with an error. */
