@@ -1581,7 +1581,9 @@ bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_l
 {
 	*loc = lang_peek(p)->loc;
 	value v;
-	if (!lang_expr(p, &v))
+	/* An additive expression, as POV-Ray's Parse_Vector: `<0, 1, 2> <1, 2, 3>` is two index
+	 * vectors (the commas between them are optional), not a comparison. */
+	if (!lang_additive(p, &v))
 		return false;
 	if (v.kind != VAL_VECTOR)
 		return lang_error(p, *loc, "expected a vector of indices %s, found %s", what, lang_value_kind_name(&v));

@@ -414,7 +414,46 @@ static bool warp_black_hole(parser *p, scene_warp *w)
 	}
 }
 
-/* warp = "warp" "{" ( "turbulence" ( float | vector ) turb_params | "repeat" ... | "black_hole" ... ) "}" */
+/* The mapping warps' options (POV-Ray's Parse_Warp): planar [ vector [ "," ] float ] (the plane's
+ * orientation and offset); cylindrical, spherical, toroidal { "orientation" vector | "dist_exp"
+ * float | "major_radius" float (toroidal) }; cubic. */
+static bool warp_mapping(parser *p, scene_warp *w)
+{
+	w->orientation = d3(0, 0, 1), w->dist_exp = 0.0, w->major_radius = 1.0, w->plane_offset = 0.0;
+	if (w->kind == SCENE_WARP_CUBIC)
+		return true;
+	if (w->kind == SCENE_WARP_PLANAR) {
+		if (lang_peek(p)->kind == LTK_RBRACE)
+			return true;
+		diag_loc at = lang_peek(p)->loc;
+		dvec3 o;
+		TRY(lang_vec3(p, "(the orientation of 'planar')", &o));
+		if (!(d3_length(o) > 0))
+			return lang_error(p, at, "the orientation of a warp is the zero vector");
+		w->orientation = d3_normalize(o);
+		lang_accept(p, LTK_COMMA);
+		return lang_float(p, "as the planar warp's offset", &w->plane_offset);
+	}
+	for (;;) {
+		diag_loc at = lang_peek(p)->loc;
+		if (accept_word(p, "orientation")) {
+			dvec3 o;
+			TRY(lang_vec3(p, "after 'orientation'", &o));
+			if (!(d3_length(o) > 0))
+				return lang_error(p, at, "the orientation of a warp is the zero vector");
+			w->orientation = d3_normalize(o);
+		} else if (accept_word(p, "dist_exp")) {
+			TRY(lang_float(p, "after 'dist_exp'", &w->dist_exp));
+		} else if (w->kind == SCENE_WARP_TOROIDAL && accept_word(p, "major_radius")) {
+			TRY(lang_float(p, "after 'major_radius'", &w->major_radius));
+		} else {
+			return true;
+		}
+	}
+}
+
+/* warp = "warp" "{" ( "turbulence" ( float | vector ) turb_params | "repeat" ... | "black_hole" ...
+ *        | "planar" ... | "cylindrical" ... | "spherical" ... | "toroidal" ... | "cubic" ) "}" */
 static bool warp_block(parser *p, pig_build *b)
 {
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
@@ -432,12 +471,26 @@ static bool warp_block(parser *p, pig_build *b)
 		w.kind = SCENE_WARP_BLACK_HOLE;
 		TRY(warp_black_hole(p, &w));
 	} else {
-		lang_token *t = lang_peek(p);
-		if (t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
-			return lang_error(p, t->loc, "'warp { %.*s }' is not supported by circe (turbulence, repeat and "
-						     "black_hole are)",
-					  (int)t->len, t->text);
-		return lang_error_found(p, "expected turbulence, repeat or black_hole in 'warp'");
+		static const struct {
+			const char *word;
+			scene_warp_kind kind;
+		} maps[] = {{"planar", SCENE_WARP_PLANAR},     {"cylindrical", SCENE_WARP_CYLINDRICAL},
+			    {"spherical", SCENE_WARP_SPHERICAL}, {"toroidal", SCENE_WARP_TOROIDAL},
+			    {"cubic", SCENE_WARP_CUBIC}};
+		size_t i = 0;
+		while (i < sizeof maps / sizeof maps[0] && !accept_word(p, maps[i].word))
+			i++;
+		if (i == sizeof maps / sizeof maps[0]) {
+			lang_token *t = lang_peek(p);
+			if (t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
+				return lang_error(p, t->loc, "'warp { %.*s }' is not supported by circe (turbulence, repeat, "
+							     "black_hole, planar, cylindrical, spherical, toroidal and cubic are)",
+						  (int)t->len, t->text);
+			return lang_error_found(p, "expected turbulence, repeat, black_hole, planar, cylindrical, spherical, "
+						   "toroidal or cubic in 'warp'");
+		}
+		w.kind = maps[i].kind;
+		TRY(warp_mapping(p, &w));
 	}
 	TRY(lang_expect_close(p, open, "warp"));
 	return push_warp(p, b, &w);

@@ -1523,6 +1523,27 @@ static bool is_block(pattern_kind k)
 	       k == PATTERN_OBJECT;
 }
 
+/* The mapping warps' last step (warp.cpp): the mapped <x, y, z> turned to the orientation o
+ * (the identity for <0, 0, 1>). */
+static dvec3 orient_mapped(dvec3 o, double x, double y, double z)
+{
+	if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0)
+		return d3(x, y, z);
+	return d3(o.x * z + o.y * x + o.z * x, o.x * y - o.y * z + o.z * y, -o.x * x + o.y * y + o.z * z);
+}
+
+/* The angle of <x, z> from the x axis, in [0, 2 pi) (warp.cpp's acos form). */
+static double xz_angle(double x, double z, double len)
+{
+	if (z == 0.0)
+		return x > 0.0 ? 0.0 : M_PI;
+	double t = acos(fmax(-1.0, fmin(1.0, x / len)));
+	return z < 0.0 ? TWO_PI - t : t;
+}
+
+/* POV-Ray's distance exponent: the mapped u (and v) scaled by len^e (e 0: not at all). */
+static double dist_scale(double len, double e) { return e == 1.0 ? len : e != 0.0 ? pow(len, e) : 1.0; }
+
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 {
 	switch (w->kind) {
@@ -1554,6 +1575,51 @@ dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 			return p;
 		double s = fmin(1.0, pow((w->radius - len) / w->radius, w->falloff) * w->strength);
 		return d3_add(p, d3_scale(d, w->inverse ? -s : s));
+	}
+	case WARP_PLANAR: /* PlanarWarp::WarpPoint: z is the offset */
+		return orient_mapped(w->orientation, p.x, p.y, w->plane_offset);
+	case WARP_CYLINDRICAL: { /* CylindricalWarp::WarpPoint: u the angle about y over 2 pi, v y, z the radius */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return p;
+		double th = xz_angle(p.x, p.z, len) / (TWO_PI) * dist_scale(len, w->dist_exp);
+		return orient_mapped(w->orientation, th, p.y, len);
+	}
+	case WARP_SPHERICAL: { /* SphericalWarp::WarpPoint: u longitude, v latitude, z the distance */
+		double dist = d3_length(p);
+		if (dist == 0.0)
+			return p;
+		double x = p.x / dist, y = p.y / dist, z = p.z / dist;
+		double phi = 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI, len = sqrt(x * x + z * z);
+		double th = len == 0.0 ? 0.0 : xz_angle(x, z, len) / (TWO_PI);
+		double f = dist_scale(dist, w->dist_exp);
+		return orient_mapped(w->orientation, th * f, phi * f, dist);
+	}
+	case WARP_TOROIDAL: { /* ToroidalWarp::WarpPoint: u about y, v about the tube, z the tube's radius */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return p;
+		double th = -xz_angle(p.x, p.z, len);
+		double x = len - w->major_radius, r = sqrt(x * x + p.y * p.y);
+		double phi = r > 0.0 ? acos(fmax(-1.0, fmin(1.0, -x / r))) : 0.0;
+		if (p.y > 0.0)
+			phi = TWO_PI - phi;
+		double f = dist_scale(r, w->dist_exp);
+		return orient_mapped(w->orientation, th / (-TWO_PI) * f, phi / (TWO_PI) * f, r);
+	}
+	case WARP_CUBIC: { /* CubicWarp::WarpPoint: the six faces onto a cross-shaped net in [0, 1]^2 */
+		double x = p.x, y = p.y, z = p.z, ax = fabs(x), ay = fabs(y), az = fabs(z);
+		if (x >= 0 && x >= ay && x >= az)
+			return d3(0.75 - 0.25 * (z / x + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / x + 1.0) / 2.0, x);
+		if (y >= 0 && y >= ax && y >= az)
+			return d3(0.25 + 0.25 * (x / y + 1.0) / 2.0, 1.0 - (1.0 / 3.0) * (z / y + 1.0) / 2.0, y);
+		if (z >= 0 && z >= ax && z >= ay)
+			return d3(0.25 + 0.25 * (x / z + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / z + 1.0) / 2.0, z);
+		if (x < 0 && x <= -ay && x <= -az)
+			return d3(0.25 * (z / -x + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / -x + 1.0) / 2.0, -x);
+		if (y < 0 && y <= -ax && y <= -az)
+			return d3(0.25 + 0.25 * (x / -y + 1.0) / 2.0, (1.0 / 3.0) * (z / -y + 1.0) / 2.0, -y);
+		return d3(1.0 - 0.25 * (x / -z + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / -z + 1.0) / 2.0, -z);
 	}
 	}
 	return p;

@@ -56,7 +56,11 @@ typedef enum pattern_kind {
 /* POV-Ray's wave types (ContinuousPattern::Evaluate). */
 typedef enum pattern_wave { WAVE_RAMP, WAVE_TRIANGLE, WAVE_SINE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY } pattern_wave;
 
-typedef enum pattern_warp_kind { WARP_TRANSFORM, WARP_TURBULENCE, WARP_REPEAT, WARP_BLACK_HOLE } pattern_warp_kind;
+/* In the order of scene/pigment.h's scene_warp_kind. */
+typedef enum pattern_warp_kind {
+	WARP_TRANSFORM, WARP_TURBULENCE, WARP_REPEAT, WARP_BLACK_HOLE,
+	WARP_PLANAR, WARP_CYLINDRICAL, WARP_SPHERICAL, WARP_TOROIDAL, WARP_CUBIC
+} pattern_warp_kind;
 
 /* Turbulence's parameters (POV-Ray's defaults: octaves 6, omega 0.5, lambda 2). */
 typedef struct pattern_turb {
@@ -76,6 +80,8 @@ typedef struct pattern_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 orientation; /* the mapping warps: unit; dist_exp, plane_offset, major_radius as POV-Ray's */
+	double dist_exp, plane_offset, major_radius;
 } pattern_warp;
 
 /* One entry of a colour map, a pigment map or a block pattern's list: a colour, or a node. */

@@ -50,7 +50,10 @@ typedef struct scene_turb {
 } scene_turb;
 
 typedef enum scene_warp_kind {
-	SCENE_WARP_TRANSFORM, SCENE_WARP_TURBULENCE, SCENE_WARP_REPEAT, SCENE_WARP_BLACK_HOLE
+	SCENE_WARP_TRANSFORM, SCENE_WARP_TURBULENCE, SCENE_WARP_REPEAT, SCENE_WARP_BLACK_HOLE,
+	/* POV-Ray's mapping warps (warp.cpp): the point mapped onto a plane, a cylinder, a sphere, a
+	 * torus or a cube's net */
+	SCENE_WARP_PLANAR, SCENE_WARP_CYLINDRICAL, SCENE_WARP_SPHERICAL, SCENE_WARP_TOROIDAL, SCENE_WARP_CUBIC
 } scene_warp_kind;
 
 typedef struct scene_warp {
@@ -65,6 +68,10 @@ typedef struct scene_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 orientation; /* the mapping warps': unit, <0, 0, 1> by default */
+	double dist_exp;   /* cylindrical, spherical, toroidal: 0 */
+	double plane_offset; /* planar: 0 */
+	double major_radius; /* toroidal: 1 */
 } scene_warp;
 
 struct scene_pigment;
