@@ -180,6 +180,10 @@ typedef struct parser {
 	/* statements' state (stmt.c) */
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
+	/* stmt.c: a light_source in a CSG block goes into the scene's lights, moved by the block's
+	 * transforms, only while an object statement places its objects in the scene (not in a
+	 * #declare, a clipped_by or a pattern's object) */
+	bool lights_in_csg;
 	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each
 				 * (and stmt.c's LANG_WARNED_INTERIOR_TEXTURE) */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */

@@ -26,11 +26,6 @@ static int one_of(parser *p, const lang_tok *kws, int n, const char *msg)
 
 static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
 {
-	bool csg = !strcmp(what, "union") || !strcmp(what, "intersection") || !strcmp(what, "difference") ||
-		   !strcmp(what, "merge");
-	if (csg && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) /* POV-Ray's lights in CSG (drums.pov, iortest.pov) */
-		return lang_error(p, lang_peek(p)->loc, "a light_source inside a %s is not supported by circe: give it "
-							"beside the %s, with the %s's transforms", what, what, what);
 	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
 	lang_error_found(p, "expected %s or '}' to close '%s' (opened at line %u)", expect, what, open.line);
 	if (at_eof)
@@ -1339,6 +1334,17 @@ static bool csg_prepend(parser *p, scene_object *objs, size_t n, scene_csg_step 
 
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
+/* object_item where the objects are not placed in the scene (a #declare, clipped_by, looks_like,
+ * an object pattern's object): a light_source in their CSG is refused there. */
+static bool object_item_unplaced(parser *p, vecbuf *out, bool *matched)
+{
+	bool saved = p->lights_in_csg;
+	p->lights_in_csg = false;
+	bool ok = object_item(p, out, matched);
+	p->lights_in_csg = saved;
+	return ok;
+}
+
 /* The objects of a clipped_by or bounded_by block, parsed into a temporary buffer and kept in the
  * arena (*objs, *n, appended to): each object item one operand, numbered from *operands on, of
  * the node `id` when id is not 0. */
@@ -1351,7 +1357,7 @@ static bool clip_objects(parser *p, diag_loc open, const char *what, uint32_t id
 	while (ok && lang_peek(p)->kind != LTK_RBRACE) {
 		size_t from = b.len;
 		bool matched;
-		ok = object_item(p, &b, &matched);
+		ok = object_item_unplaced(p, &b, &matched);
 		if (ok && !matched)
 			ok = bad_item(p, open, what, "an object");
 		any = true;
@@ -1535,6 +1541,8 @@ static bool modifier(parser *p, mods *m, bool *matched)
 static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 {
 	if (m->interior) {
+		if (!m->mat && p->default_tex && p->default_tex->kind == MAT_TEXTURE) /* POV-Ray: the #default texture's */
+			m->mat = p->default_tex, m->mat_loc = m->interior_loc, m->t_at_mat = m->t;
 		if (!m->mat || m->mat->kind != MAT_TEXTURE)
 			return lang_error(p, m->interior_loc, "'interior' sets the ior of a texture; this object has none");
 		scene_material *mm = (scene_material *)m->mat; /* made or copied here, hence writable */
@@ -1600,12 +1608,28 @@ static bool csg_mods(parser *p, vecbuf *out, size_t start, mods *m, diag_loc kw)
 }
 
 /* { modifier } "}" : the common tail of every object item. */
-static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
+/* A light moved by t: its position, point_at, area axes and its looks_like objects. */
+static void light_move(scene_light *l, const xform *t)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) { /* copies of the light's own (light_head, looks_like) */
+		scene_object *o = (scene_object *)&l->looks[i];
+		o->transform = xform_then(o->transform, *t);
+	}
+	l->position = xform_point(t, l->position);
+	l->point_at = xform_point(t, l->point_at);
+	l->axis1 = xform_vector(t, l->axis1);
+	l->axis2 = xform_vector(t, l->axis2);
+}
+
+/* object_tail moving the scene's lights from `lights` on too (object { union { light_source ... } }). */
+static bool object_tail_lights(parser *p, vecbuf *out, size_t start, size_t lights, diag_loc open, const char *what)
 {
 	mods m = {.t = xform_identity()};
 	for (;;) {
 		if (lang_peek(p)->kind == LTK_RBRACE) {
 			diag_loc close = lang_advance(p)->loc;
+			for (size_t i = lights; i < p->sc->lights.len; i++)
+				light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &m.t);
 			return csg_mods(p, out, start, &m, close) && apply_mods(p, out, start, &m);
 		}
 		bool matched;
@@ -1613,6 +1637,11 @@ static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, con
 		if (!matched)
 			return bad_item(p, open, what, "a transform, a material, no_shadow");
 	}
+}
+
+static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
+{
+	return object_tail_lights(p, out, start, p->sc->lights.len, open, what);
 }
 
 static scene_geom *new_geom(parser *p, scene_shape_kind kind, diag_loc loc)
@@ -2427,10 +2456,37 @@ static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc op
 
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
-/* union = "union" "{" object_item { object_item } { modifier } "}" */
+static bool light_block(parser *p, scene_light *out, diag_loc kw);
+static bool add_light(parser *p, const scene_light *l, diag_loc kw);
+
+/* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
+ * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
+ * moves the lights from its first on (csg_lights_move); only where the object is placed in the
+ * scene (p->lights_in_csg). */
+static bool csg_light(parser *p, const char *what)
+{
+	lang_token kw = *lang_peek(p);
+	if (!p->lights_in_csg)
+		return lang_error(p, kw.loc, "a light_source inside a %s is supported only in an object placed in the "
+					     "scene (not in a #declare, clipped_by, object pattern or looks_like): "
+					     "give it beside the %s's copies", what, what);
+	lang_advance(p);
+	scene_light l;
+	TRY(light_block(p, &l, kw.loc));
+	return add_light(p, &l, kw.loc);
+}
+
+/* The block's transforms applied to the lights its items placed (the scene's lights from first). */
+static void csg_lights_move(parser *p, size_t first, const mods *m)
+{
+	for (size_t i = first; i < p->sc->lights.len; i++)
+		light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &m->t);
+}
+
+/* union = "union" "{" ( object_item | light_source ) { object_item | light_source } { modifier } "}" */
 static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
-	size_t start = out->len;
+	size_t start = out->len, lights = p->sc->lights.len;
 	mods m = {.t = xform_identity()};
 	bool any = false;
 	for (;;) {
@@ -2438,7 +2494,13 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 			if (!any)
 				return lang_error(p, kw, "union has no objects");
 			lang_advance(p);
+			csg_lights_move(p, lights, &m);
 			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
+		}
+		if (lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) {
+			TRY(csg_light(p, "union"));
+			any = true;
+			continue;
 		}
 		bool matched;
 		TRY(object_item(p, out, &matched));
@@ -2457,7 +2519,7 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
  * stay objects and carry the node in their CSG path (scene.h). */
 static bool csg_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open, scene_csg_op op, const char *what)
 {
-	size_t start = out->len;
+	size_t start = out->len, lights = p->sc->lights.len;
 	mods m = {.t = xform_identity()};
 	uint32_t id = ++p->sc->csg_ids, operands = 0;
 	for (;;) {
@@ -2465,7 +2527,12 @@ static bool csg_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open, scene_
 			if (!operands)
 				return lang_error(p, kw, "%s has no objects", what);
 			lang_advance(p);
+			csg_lights_move(p, lights, &m);
 			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
+		}
+		if (lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) { /* no operand: it only moves with the solid */
+			TRY(csg_light(p, what));
+			continue;
 		}
 		size_t from = out->len;
 		bool matched;
@@ -2543,12 +2610,12 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	lang_token *t = lang_peek(p);
 	if (t->kind != LTK_IDENT) {
-		size_t start = out->len;
+		size_t start = out->len, lights = p->sc->lights.len;
 		bool matched;
 		TRY(object_item(p, out, &matched));
 		if (!matched)
 			return lang_error_found(p, "expected a declared object or an object after 'object {'");
-		return object_tail(p, out, start, open, "object");
+		return object_tail_lights(p, out, start, lights, open, "object");
 	}
 	size_t start = out->len;
 	TRY(declared_object(p, out, kw));
@@ -2692,7 +2759,7 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
-	bool ok = object_item(p, &tmp, &matched);
+	bool ok = object_item_unplaced(p, &tmp, &matched);
 	if (!matched) {
 		*handled = false;
 		vecbuf_free(&tmp);
@@ -2730,7 +2797,7 @@ bool lang_object_list(parser *p, const char *what, const objlist **out)
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
-	bool ok = object_item(p, &tmp, &matched);
+	bool ok = object_item_unplaced(p, &tmp, &matched);
 	if (ok && !matched) {
 		vecbuf_free(&tmp);
 		return lang_error_found(p, "expected an object %s", what);
@@ -3353,7 +3420,7 @@ static bool looks_like(parser *p, scene_light *l)
 	if (lang_peek(p)->kind == LTK_IDENT) /* a declared object, as POV-Ray's Parse_Object takes it */
 		ok = declared_object(p, &b, lang_peek(p)->loc);
 	else
-		ok = object_item(p, &b, &matched);
+		ok = object_item_unplaced(p, &b, &matched);
 	if (ok && (!matched || !b.len))
 		ok = lang_error_found(p, "expected an object in 'looks_like'");
 	xform to = xform_translate(l->position);
@@ -3467,14 +3534,7 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 		bool matched;
 		TRY(transform_item(p, &moved, &matched));
 		if (matched) {
-			for (uint32_t i = 0; i < l.n_looks; i++) { /* copies of the light's own (light_head, looks_like) */
-				scene_object *o = (scene_object *)&l.looks[i];
-				o->transform = xform_then(o->transform, moved);
-			}
-			l.position = xform_point(&moved, l.position);
-			l.point_at = xform_point(&moved, l.point_at);
-			l.axis1 = xform_vector(&moved, l.axis1);
-			l.axis2 = xform_vector(&moved, l.axis2);
+			light_move(&l, &moved);
 			continue;
 		}
 		bool directed = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL || l.kind == SCENE_LIGHT_CYLINDER;
@@ -3832,7 +3892,10 @@ bool lang_statement(parser *p)
 			return add_light(p, &l, kw.loc);
 		}
 		TRY(lang_enter(p, kw.loc));
+		bool saved = p->lights_in_csg;
+		p->lights_in_csg = true; /* placed in the scene: its CSG's lights join the scene's */
 		bool ok = instance(p, &p->sc->objects, kw.loc, open);
+		p->lights_in_csg = saved;
 		lang_leave(p);
 		TRY(ok);
 		give_default(p, start);
@@ -3843,7 +3906,11 @@ bool lang_statement(parser *p)
 	}
 	bool matched;
 	size_t start = p->sc->objects.len;
-	TRY(object_item(p, &p->sc->objects, &matched));
+	bool saved = p->lights_in_csg;
+	p->lights_in_csg = true; /* placed in the scene: its CSG's lights join the scene's */
+	bool ok = object_item(p, &p->sc->objects, &matched);
+	p->lights_in_csg = saved;
+	TRY(ok);
 	if (!matched)
 		return lang_error_found(p, "expected a statement (camera, light_source, background, sky_sphere, "
 					   "global_settings or an object)");
