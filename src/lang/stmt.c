@@ -1457,6 +1457,22 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 	return true;
 }
 
+/* The texture a bare pigment, finish or normal of the object changes (m->tex): made now, or, after
+ * a declared texture (`texture { Black_Chocolate } normal { bumps 0.3 }`: biscuit.pov), a copy of
+ * it (POV-Ray changes the object's top texture layer, a copy of the declared one). */
+static bool own_texture(parser *p, mods *m, diag_loc loc)
+{
+	if (m->tex)
+		return true;
+	if (m->mat && m->mat_is_texture && m->mat->kind == MAT_TEXTURE) {
+		TRY(m->tex = copy_material(p, m->mat, loc));
+		m->mat = m->tex;
+		return true;
+	}
+	TRY(m->tex = new_texture(p, loc));
+	return set_material(p, m, m->tex, loc);
+}
+
 /* modifier = transform_item | material | texture | pigment | finish | interior | "no_shadow"
  *          | object_flag */
 static bool modifier(parser *p, mods *m, bool *matched)
@@ -1467,10 +1483,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		return true;
 	*matched = true;
 	if (lang_normal_starts(p)) { /* normal { } on the object: its texture's, as a bare pigment */
-		if (!m->tex) {
-			TRY(m->tex = new_texture(p, t.loc));
-			TRY(set_material(p, m, m->tex, t.loc));
-		}
+		TRY(own_texture(p, m, t.loc));
 		return lang_normal(p, m->tex);
 	}
 	switch (t.kind) {
@@ -1490,7 +1503,9 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		const scene_material *mat;
 		bool fresh;
 		TRY(texture(p, &mat, &fresh));
-		if (m->mat && m->mat_is_texture) { /* a texture after a texture: its layer on top */
+		/* a texture after a texture, or after a bare pigment, finish or normal (POV-Ray's
+		 * Link_Textures: glasschess's `pigment { rgbf 0.9 } texture { Glass }`): its layer on top */
+		if (m->mat && (m->mat_is_texture || (m->mat == m->tex && m->mat->kind == MAT_TEXTURE))) {
 			TRY(layer_texture(p, m->mat, mat, t.loc, &m->mat));
 			m->tex = (scene_material *)m->mat;
 			return true;
@@ -1503,10 +1518,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	}
 	case LTK_KW_PIGMENT:
 	case LTK_KW_FINISH:
-		if (!m->tex) {
-			TRY(m->tex = new_texture(p, t.loc));
-			TRY(set_material(p, m, m->tex, t.loc));
-		}
+		TRY(own_texture(p, m, t.loc));
 		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex, SCENE_COLOR_REFLECTANCE) : finish(p, m->tex);
 	case LTK_KW_INTERIOR:
 		if (!m->interior)
