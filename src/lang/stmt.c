@@ -3155,9 +3155,22 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		TRY(camera_transform(p, c, &matched));
 		if (matched)
 			continue;
+		if (lang_normal_starts(p)) { /* POV-Ray's camera normal: the rays' directions perturbed */
+			scene_material *scratch = arena_zalloc(&p->sc->arena, 1, sizeof *scratch);
+			if (!scratch)
+				return lang_error(p, t.loc, "out of memory");
+			scratch->loc = t.loc;
+			scratch->normal = c->normal;
+			TRY(lang_normal(p, scratch));
+			c->normal = scratch->normal, c->normal_loc = t.loc;
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
+			if (c->normal && c->type != SCENE_CAM_PERSPECTIVE && c->type != SCENE_CAM_ORTHOGRAPHIC)
+				return lang_error(p, c->normal_loc, "a camera's normal is supported by circe on perspective and "
+								    "orthographic cameras only");
 			return true;
 		case LTK_KW_LOCATION: v = &c->location; break;
 		case LTK_KW_LOOK_AT:

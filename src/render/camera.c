@@ -162,6 +162,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		*why = "its vertical angle is outside (0, 180] degrees";
 	if (*why)
 		return false;
+	*c = (cam){0}; /* no perturb unless the caller sets one after */
 	cam_params q = *p;
 	if (p->type != CAM_PERSPECTIVE && p->type != CAM_ORTHOGRAPHIC)
 		q.has_angle = false; /* the angle is the projection's own, not the screen's */
@@ -302,11 +303,18 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
 	if (c->type == CAM_PERSPECTIVE) {
 		*out = cam_perspective(c, sx, sy, lens_u);
-		return true;
+	} else {
+		if (!cam_project(c, sx, sy, out))
+			return false;
+		*out = cam_lens(c, *out, lens_u);
 	}
-	if (!cam_project(c, sx, sy, out))
-		return false;
-	*out = cam_lens(c, *out, lens_u);
+	if (c->perturb) { /* TracePixel::CreateCameraRay's Perturb_Normal of the direction, last */
+		vec3 d = out->d;
+		c->perturb(c->perturb_user, 0.5f * sx, 0.5f * sy, &d);
+		d = v3_normalize(d);
+		if (v3_is_finite(d) && v3_length2(d) > 0.5f)
+			out->d = d;
+	}
 	return true;
 }
 

@@ -122,6 +122,7 @@ struct world {
 	char **image_paths;
 	size_t n_images;
 	pattern_prog patterns;  /* every material's pigment, compiled (build_pattern.c) */
+	uint32_t cam_normal; /* the camera normal's node in patterns (camera.perturb set: build_camera.c) */
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
 	light_set lights;
 	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */

@@ -662,6 +662,11 @@ void scene_dump(const scene *s, FILE *o)
 			dump_d3(o, "focal_point", c->focal_point);
 		dump_camera_more(o, c);
 		fputc('\n', o);
+		if (c->normal) { /* only then: older dumps stay as they were */
+			fprintf(o, "  normal ");
+			scene_pigment_dump(o, c->normal);
+			fputc('\n', o);
+		}
 	}
 	if (s->has_background) {
 		fprintf(o, "background");

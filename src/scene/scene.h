@@ -33,6 +33,10 @@ typedef struct scene_camera {
 	double v_angle_deg; /* spherical's vertical angle */
 	bool has_xform; /* translate/rotate/scale/matrix on the camera, applied last */
 	xform xf;
+	/* POV-Ray's camera normal { }: a normal pattern perturbing each camera ray's direction, at
+	 * the image point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]); NULL: none */
+	const struct scene_pigment *normal;
+	diag_loc normal_loc;
 } scene_camera;
 
 typedef enum scene_light_kind {
