@@ -1308,6 +1308,8 @@ typedef struct mods {
 	size_t n_bound;
 	diag_loc bound_loc;
 	bool bound_clips; /* the bound's objects are clipping objects already */
+	bool uv; /* uv_mapping on the object: its textures at <u, v, 0> */
+	diag_loc uv_loc;
 } mods;
 
 /* No CSG solid nests deeper than this (its evaluation walks the path of each hit). */
@@ -1533,6 +1535,11 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		lang_advance(p);
 		return true;
 	default:
+		if (lang_word_is(&t, "uv_mapping")) { /* POV-Ray's UV_MAPPING flag: the object's textures at <u, v, 0> */
+			lang_advance(p);
+			m->uv = true, m->uv_loc = t.loc;
+			return true;
+		}
 		if (lang_word_is(&t, "interior_texture")) { /* read as a texture, then dropped */
 			const scene_material *inner;
 			lang_advance(p);
@@ -1564,15 +1571,26 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 		}
 		copy_interior(mm, m->interior);
 	}
+	const scene_material *uv_from = NULL, *uv_to = NULL; /* the last texture mapped, its copy */
 	for (size_t i = start; i < out->len; i++) {
 		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		if (m->uv && (o->material || m->mat) && (o->material ? o->material : m->mat)->kind == MAT_TEXTURE) {
+			const scene_material *src = o->material ? o->material : m->mat;
+			if (src != uv_from) {
+				scene_material *c = copy_material(p, src, m->uv_loc);
+				TRY(c && texture_uv_mapping(p, c, m->uv_loc));
+				uv_from = src, uv_to = c;
+			}
+			if (o->material)
+				o->material = uv_to;
+		}
 		if (!o->material && m->mat) { /* POV-Ray: a texture moves with the transforms after it */
 			o->texture_from_object = xform_then(o->transform, m->t_at_mat);
 			o->texture_placed = true;
 		}
 		o->transform = xform_then(o->transform, m->t);
 		if (!o->material)
-			o->material = m->mat;
+			o->material = m->uv && m->mat && m->mat == uv_from ? uv_to : m->mat;
 		o->no_shadow |= m->no_shadow;
 		lang_apply_object_flags(o, &m->flags);
 	}
