@@ -1004,9 +1004,14 @@ static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
 	long type;
 	double f;
 	if (ex) {
+		diag_loc at = lang_peek(p)->loc;
 		TRY(lang_float(p, "after 'exponent'", &f));
-		if (f != 2.0)
-			return lang_error(p, t.loc, "a fractal's exponent other than 2 is not supported by circe, found %g", f);
+		long e = (long)fmax(-1e9, fmin(1e9, f)); /* POV-Ray's (int) */
+		if (e < 2 || e > 33) { /* POV-Ray's warning, and its exponent 2 */
+			diag_warning(p->d, at, "a fractal's exponent is 2 to 33, found %g: exponent 2 is used, as POV-Ray does", f);
+			e = 2;
+		}
+		b->pg.fractal_exponent = (int)e;
 		return true;
 	}
 	TRY(lang_int(p, ext ? "as the exterior type" : "as the interior type", 0, ext ? 8 : 6, &type));

@@ -249,17 +249,46 @@ static double fractal_interior(const pattern_node *n, double a, double b, double
 	}
 }
 
+/* (a + bi)^e for e > 4, as POV-Ray 3.7's mandelx_pattern and juliax_pattern: the binomial sums
+ * with pow, the signs of i^k (k & 2: negative). */
+static void fractal_power(double *a, double *b, int e)
+{
+	double x = *a, y = *b, re = pow(x, e), im = 0.0, c = 1.0; /* c: the binomial coefficient (e k) */
+	for (int k = 1; k <= e; k++) {
+		c = c * (e - k + 1) / k;
+		double t = (k & 2 ? -c : c) * pow(x, e - k) * pow(y, k);
+		if (k & 1)
+			im += t;
+		else
+			re += t;
+	}
+	*a = re, *b = im;
+}
+
 /* Mandel2Pattern and JuliaPattern::EvaluateRaw: z <- z^2 + c from z = c = <x, y> (mandel) or from
- * z = <x, y> with the pattern's c (julia), until |z|^2 > 4 or the iterations limit. */
+ * z = <x, y> with the pattern's c (julia), until |z|^2 > 4 or the iterations limit; exponent 3
+ * and 4 as POV-Ray's mandel3/4 and julia3/4 patterns, above 4 as mandelx and juliax. */
 static double fractal(const pattern_node *n, dvec3 p)
 {
 	double a = p.x, b = p.y, cr = p.x, ci = p.y;
 	if (n->kind == PATTERN_JULIA)
 		cr = n->julia_c[0], ci = n->julia_c[1];
 	double a2 = a * a, b2 = b * b, mindist2 = a2 + b2;
+	int e = n->fractal_exponent;
 	for (int it = 0; it < n->fractal_iterations; it++) {
-		b = 2.0 * a * b + ci;
-		a = a2 - b2 + cr;
+		if (e == 3) {
+			b = 3.0 * a2 * b - b2 * b + ci;
+			a = a2 * a - 3.0 * a * b2 + cr;
+		} else if (e == 4) {
+			b = 4.0 * (a2 * a * b - a * b2 * b) + ci;
+			a = a2 * a2 - 6.0 * a2 * b2 + b2 * b2 + cr;
+		} else if (e > 4) {
+			fractal_power(&a, &b, e);
+			a += cr, b += ci;
+		} else {
+			b = 2.0 * a * b + ci;
+			a = a2 - b2 + cr;
+		}
 		a2 = a * a, b2 = b * b;
 		double d2 = a2 + b2;
 		mindist2 = fmin(mindist2, d2);
@@ -1842,7 +1871,7 @@ pattern_node pattern_node_default(pattern_kind kind)
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
 			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
 			  .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
-			  .fractal_iterations = 1, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0,
+			  .fractal_iterations = 1, .fractal_exponent = 2, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2

@@ -112,6 +112,7 @@ typedef struct pattern_node {
 	dvec3 crackle_form; /* crackle: weights of the three nearest distances (default <-1, 1, 0>) */
 	double crackle_metric, crackle_offset; /* crackle: the distance's exponent (2), its offset (0) */
 	int fractal_iterations;		       /* mandel, julia: the iterations limit */
+	int fractal_exponent;		       /* mandel, julia: E of z^E + c, 2..33 */
 	double julia_c[2];		       /* julia's c (and a julia magnet's) */
 	int magnet_type;		       /* magnet: 1 or 2 */
 	bool slope_map; /* a normal's slope_map: the entries' color[0] heights, color[1] slopes */

@@ -113,6 +113,7 @@ typedef struct scene_pigment {
 	double crackle_metric;	     /* crackle's metric: the exponent of its distance, 2 */
 	double crackle_offset;	     /* crackle's offset: added to each distance (in the metric), 0 */
 	int fractal_iterations;	     /* mandel, julia: the iterations limit, >= 1 */
+	int fractal_exponent;	     /* mandel, julia: z^E + c, E in 2..33 (POV-Ray's), default 2 */
 	double julia_c[2];	     /* julia: the constant c = <re, im> */
 	int magnet_type;	     /* magnet: 1 or 2 */
 	bool magnet_julia;	     /* magnet: julia's form (z starts at the point, c given), else mandel's */
