@@ -3537,16 +3537,18 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
 static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
 
 /* A spotlight's radius or falloff in degrees: POV-Ray keeps only its cosine, so a negative angle
- * is its opposite (cornell.pov's `radius -90` for a cosine falloff); over 90 degrees a cone wider
- * than a half-space. */
+ * is its opposite (cornell.pov's `radius -90` for a cosine falloff) and any angle is the one in
+ * [0, 180] of its cosine (laser.pov's `falloff 250` is 110). Over 90 degrees the cone is wider
+ * than a half-space: POV-Ray's spot still lights nothing behind it (Attenuate_Light: cos theta >
+ * 0), its spline reaching down to the falloff's negative cosine; a radius over 90 leaves the
+ * tightness alone (POV-Ray's `Radius > 0` test), as render/light.c's spline gives 1 above it. */
 static bool spot_angle(parser *p, diag_loc loc, const char *what, double *x)
 {
-	*x = fabs(*x);
 	if (!isfinite(*x))
 		return lang_error(p, loc, "spotlight %s must be finite", what);
-	if (*x > 90)
-		return lang_error(p, loc, "a spotlight %s over 90 degrees (a cone wider than a half-space) is not supported by "
-					  "circe, found %g", what, *x);
+	*x = fmod(fabs(*x), 360.0);
+	if (*x > 180.0)
+		*x = 360.0 - *x;
 	return true;
 }
 
