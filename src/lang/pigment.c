@@ -406,8 +406,8 @@ static bool warp_black_hole(parser *p, scene_warp *w)
 			w->inverse = true;
 		} else if (accept_word(p, "repeat")) {
 			TRY(lang_vec3(p, "after 'repeat'", &w->repeat));
-		} else if (peek_word(p, "turbulence")) {
-			return lang_error(p, lang_peek(p)->loc, "'turbulence' of a black hole is not supported by circe");
+		} else if (accept_word(p, "turbulence")) { /* POV-Ray's uncertainty of a repeated hole's centre */
+			TRY(lang_vec3(p, "after the black hole's 'turbulence'", &w->uncertainty));
 		} else {
 			return true;
 		}

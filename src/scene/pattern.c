@@ -1592,12 +1592,24 @@ dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 	}
 	case WARP_BLACK_HOLE: { /* BlackHoleWarp::WarpPoint, type 0 */
 		dvec3 c = w->center;
+		bool rep = w->repeat.x > 0.0 || w->repeat.y > 0.0 || w->repeat.z > 0.0;
+		int bx = w->repeat.x > 0.0 ? cell_of(p.x / w->repeat.x) : 0, by = w->repeat.y > 0.0 ? cell_of(p.y / w->repeat.y) : 0,
+		    bz = w->repeat.z > 0.0 ? cell_of(p.z / w->repeat.z) : 0;
+		if (rep && (w->uncertainty.x != 0.0 || w->uncertainty.y != 0.0 || w->uncertainty.z != 0.0)) {
+			/* POV-Ray's "turbulence" of a black hole: each block's centre moved by a random
+			 * fraction in [0, 1) of the vector per axis (its WarpRands of Hash3d(block);
+			 * circe's own hash: the same spread, other draws) */
+			uint32_t h = hash_cell(bx, by, bz) ^ 0x5bd1e995u;
+			c.x += hash_unit(hash_cell((int)h, 1, 0)) * w->uncertainty.x;
+			c.y += hash_unit(hash_cell((int)h, 2, 0)) * w->uncertainty.y;
+			c.z += hash_unit(hash_cell((int)h, 3, 0)) * w->uncertainty.z;
+		}
 		if (w->repeat.x > 0.0)
-			c.x += w->repeat.x * floor(p.x / w->repeat.x);
+			c.x += w->repeat.x * bx;
 		if (w->repeat.y > 0.0)
-			c.y += w->repeat.y * floor(p.y / w->repeat.y);
+			c.y += w->repeat.y * by;
 		if (w->repeat.z > 0.0)
-			c.z += w->repeat.z * floor(p.z / w->repeat.z);
+			c.z += w->repeat.z * bz;
 		dvec3 d = d3_sub(p, c);
 		double len = d3_length(d);
 		if (len >= w->radius)

@@ -80,6 +80,7 @@ typedef struct pattern_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 uncertainty; /* WARP_BLACK_HOLE: turbulence, the repeated centres' random offsets */
 	dvec3 orientation; /* the mapping warps: unit; dist_exp, plane_offset, major_radius as POV-Ray's */
 	double dist_exp, plane_offset, major_radius;
 } pattern_warp;

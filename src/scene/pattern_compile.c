@@ -41,6 +41,7 @@ static pattern_warp warp_of(const scene_warp *s)
 	pattern_warp w = {.kind = (pattern_warp_kind)s->kind, .xf = s->xf, .axis = s->axis, .width = s->width,
 			  .offset = s->offset, .flip = s->flip, .center = s->center, .radius = s->radius,
 			  .strength = s->strength, .falloff = s->falloff, .inverse = s->inverse, .repeat = s->repeat,
+			  .uncertainty = s->uncertainty,
 			  .orientation = s->orientation, .dist_exp = s->dist_exp, .plane_offset = s->plane_offset,
 			  .major_radius = s->major_radius};
 	w.turb = (pattern_turb){s->turb.amount, s->turb.octaves, s->turb.omega, s->turb.lambda};

@@ -68,6 +68,7 @@ typedef struct scene_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 uncertainty; /* BLACK_HOLE's turbulence: each repeated centre moved by up to it */
 	dvec3 orientation; /* the mapping warps': unit, <0, 0, 1> by default */
 	double dist_exp;   /* cylindrical, spherical, toroidal: 0 */
 	double plane_offset; /* planar: 0 */
