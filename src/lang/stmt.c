@@ -3056,6 +3056,8 @@ static int camera_type(parser *p, const lang_token *t, bool *ok)
 	case LTK_KW_SPHERICAL: return SCENE_CAM_SPHERICAL;
 	default: break;
 	}
+	if (lang_word_is(t, "omnimax"))
+		return SCENE_CAM_OMNIMAX;
 	if (t->kind != LTK_KW_CYLINDER)
 		return -1;
 	lang_advance(p);

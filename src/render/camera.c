@@ -276,6 +276,25 @@ static bool cam_project(const cam *c, float sx, float sy, render_ray *ray)
 		ray->d = cam_dir(c, cosf(lat) * sinf(lon), sinf(lat), cosf(lat) * cosf(lon));
 		return true;
 	}
+	case CAM_OMNIMAX: {
+		/* POV-Ray's omnimax: sx, sy fitted to its 4:3 aspect (1.283458 the dome's), the polar
+		 * angle 1.411269 r - 0.09439 r^3 + 0.25674 r^5 of the radius r (no ray outside the
+		 * unit circle, nor below 45 degrees under the axis). */
+		const float aspect = 4.0f / 3.0f;
+		float x = sx, y = sy;
+		if (aspect > 1.283458f)
+			x *= aspect / 1.283458f, y = (y - 1.0f) / 1.283458f + 1.0f;
+		float rad = sqrtf(x * x + y * y);
+		if (rad > 1.0f)
+			return false;
+		float phi = rad == 0.0f ? 0.0f : x < 0.0f ? RENDER_PI - asinf(y / rad) : asinf(y / rad);
+		float th = 1.411269f * rad - 0.09439f * rad * rad * rad + 0.25674f * rad * rad * rad * rad * rad;
+		float cx = cosf(phi), sx2 = sinf(phi), cy = cosf(th), sy2 = sinf(th);
+		if (sx2 * sy2 < tanf(135.0f * RENDER_PI / 180.0f) * cy)
+			return false;
+		ray->d = cam_dir(c, cx * sy2, sx2 * sy2, cy);
+		return true;
+	}
 	case CAM_PERSPECTIVE: break;
 	}
 	return false;

@@ -28,6 +28,7 @@ typedef enum cam_type {
 	CAM_CYLINDER_3, /* axis along up, orthographic along up */
 	CAM_CYLINDER_4, /* axis along right, orthographic along right */
 	CAM_SPHERICAL,
+	CAM_OMNIMAX, /* POV-Ray's: a fisheye of 180 degrees on the dome's curve, 45 below the axis cut */
 } cam_type;
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are

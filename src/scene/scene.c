@@ -606,7 +606,7 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 {
 	static const char *const types[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
 					    "panoramic", "cylinder 1", "cylinder 2", "cylinder 3",
-					    "cylinder 4", "spherical"};
+					    "cylinder 4", "spherical", "omnimax"};
 	if (c->type != SCENE_CAM_PERSPECTIVE)
 		fprintf(o, " %s", types[c->type]);
 	if (c->type == SCENE_CAM_SPHERICAL)

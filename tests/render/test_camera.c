@@ -189,9 +189,36 @@ static void test_perturb(void)
 	}
 }
 
+/* POV-Ray's omnimax (tracepixel.cpp): the image centre looks forward; at image radius r (in its
+ * 4:3 frame fitted to 1.283458) the ray is 1.411269 r - 0.09439 r^3 + 0.25674 r^5 radians off the
+ * axis; no ray outside the unit circle, nor more than 45 degrees below the axis. */
+static void test_omnimax(void)
+{
+	cam c;
+	cam_params p = cam_params_default();
+	p.location = d3(0, 0, 0);
+	p.look_at = d3(0, 0, 1);
+	p.type = CAM_OMNIMAX;
+	CHECK(cam_init(&c, &p, 400, 400), "cam_init omnimax");
+	render_ray r;
+	/* the axis lies below the image's centre, at sy = 1 - 1.283458: pixel row 256.69 of 400 */
+	CHECK(cam_sample(&c, 199, 256, v2(1, 0.6917f), v2(0, 0), &r) && angle_deg(r.d, c.forward) < 2e-2,
+	      "omnimax axis: %g degrees off", angle_deg(r.d, c.forward));
+	/* along +x from the centre: sx = 0.5 is x = 0.5 * (4/3) / 1.283458 in the dome's frame */
+	CHECK(cam_sample(&c, 299, 199, v2(1, 1), v2(0, 0), &r), "omnimax at sx 0.5");
+	double x = 0.5 * (4.0 / 3.0) / 1.283458, y = (0.0 - 1.0) / 1.283458 + 1.0, rad = sqrt(x * x + y * y);
+	double th = 1.411269 * rad - 0.09439 * pow(rad, 3) + 0.25674 * pow(rad, 5);
+	CHECK_NEAR(angle_deg(r.d, c.forward), th * 180 / M_PI, 2e-2);
+	CHECK(!cam_sample(&c, 0, 0, v2(0, 0), v2(0, 0), &r), "omnimax: no ray in the corner");
+	/* the top edge's middle: r = 1, 1.411269 - 0.09439 + 0.25674 radians (90.16 degrees) above the axis */
+	CHECK(cam_sample(&c, 199, 0, v2(1, 0), v2(0, 0), &r) && r.d.y > 0, "omnimax top");
+	CHECK_NEAR(angle_deg(r.d, c.forward), (1.411269 - 0.09439 + 0.25674) * 180 / M_PI, 2e-2);
+}
+
 int main(void)
 {
 	test_perturb();
+	test_omnimax();
 	cam c;
 	cam_params p = cam_params_default();
 	p.location = d3(1, 2, -5);
