@@ -344,6 +344,21 @@ static const cli_opt check_options[] = {
 };
 #undef C
 
+/* lang_options.trace: the build's world_trace, user its world_tracer. */
+static int trace_object(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key, dvec3 org,
+			dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc)
+{
+	return world_trace(user, sc, objs, n, key, org, dir, hit, normal, d, loc);
+}
+
+/* lang_options.inside: the build's world_inside_fn (its worlds live as long as the tracer: free it
+ * after the scene's render). */
+static bool inside_object(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
+			  scene_fn *out, diag *d, diag_loc loc)
+{
+	return world_inside_fn(user, sc, objs, n, key, out, d, loc);
+}
+
 /* circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE]: parse and build, print statistics;
  * a scene whose render would need more than the memory limit fails. */
 static int cmd_check(int argc, char **argv)
@@ -363,7 +378,9 @@ static int cmd_check(int argc, char **argv)
 	diag d;
 	diag_init(&d, stderr);
 	scene *sc = NULL;
-	lang_status st = lang_parse_file(argv[optind], &lo, &d, &sc);
+	world_tracer *tracer = world_tracer_new(max_memory); /* the object patterns' too: freed last */
+	lo.trace = trace_object, lo.inside = inside_object, lo.trace_user = tracer;
+	lang_status st = tracer ? lang_parse_file(argv[optind], &lo, &d, &sc) : LANG_NO_MEMORY;
 	int rc = st == LANG_OK ? EXIT_OK : st == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
 	if (st != LANG_OK)
 		note_memory_limit();
@@ -393,6 +410,7 @@ static int cmd_check(int argc, char **argv)
 		}
 	}
 	scene_free(sc);
+	world_tracer_free(tracer);
 	diag_free(&d);
 	return rc;
 }
@@ -725,6 +743,7 @@ typedef struct render_state {
 	diag d;
 	scene *sc;
 	world *w;
+	world_tracer *tracer; /* trace()'s and the object patterns' worlds: the render calls the latter */
 	film f;
 	bool has_film;
 	double parse_s, build_s;
@@ -737,6 +756,7 @@ static void render_free(render_state *s)
 		film_free(&s->f);
 	world_free(s->w);
 	scene_free(s->sc);
+	world_tracer_free(s->tracer);
 	free(s->out), free(s->png), free(s->out_default);
 	diag_free(&s->d);
 }
@@ -766,7 +786,9 @@ static int render_scene_of(const render_cli *o, render_state *s)
 	lang_options lo = {.include_dirs = o->includes.dir, .n_include_dirs = (size_t)o->includes.n,
 			   .clock = o->clock, .width = o->width, .height = o->height, .animated = o->frame >= 0,
 			   .frame = o->frame};
-	lang_status ls = lang_parse_file(o->scene, &lo, &s->d, &s->sc);
+	s->tracer = world_tracer_new(o->max_memory);
+	lo.trace = trace_object, lo.inside = inside_object, lo.trace_user = s->tracer;
+	lang_status ls = s->tracer ? lang_parse_file(o->scene, &lo, &s->d, &s->sc) : LANG_NO_MEMORY;
 	if (ls != LANG_OK) {
 		note_memory_limit();
 		return ls == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;

@@ -7,6 +7,7 @@
 #include "base/diag.h"
 #include "render/camera.h"
 #include "render/integrator.h"
+#include "scene/pigment.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -80,5 +81,34 @@ void world_stats_get(const world *w, world_stats *out);
  * "disk" or "volume" (--sss, else the materials' one), "mixed" when they differ, "none" without
  * SSS materials. */
 const char *world_sss_method(const world *w);
+
+/* POV-Ray's trace(object, start, direction [, normal]) at parse time (build_trace.c): an object's
+ * records (the objects of one object value, CSG paths and all) made a world of their own under the
+ * parent scene's camera, so tessellated as the render will tessellate them, and kept for later
+ * traces of the same key (WORLD_TRACER_SLOTS objects at once, the oldest built again when
+ * needed). */
+enum { WORLD_TRACER_SLOTS = 4 };
+typedef struct world_tracer world_tracer;
+/* The tessellation a trace sees is that of an image of this size (circe's default), whatever the
+ * render's: the values a scene computes with trace do not change with the image's size. */
+enum { WORLD_TRACE_WIDTH = 640, WORLD_TRACE_HEIGHT = 480 };
+/* max_memory: the tessellation limit, as world_options' (0: its default). NULL when memory runs out. */
+world_tracer *world_tracer_new(size_t max_memory);
+void world_tracer_free(world_tracer *t);
+/* The nearest hit past the start of the ray from org along dir on objs[0..n) (parent: the scene
+ * they belong to, as parsed so far; key: a name for the object that stays its own while t lives,
+ * NULL for none): 1 with *hit and the unit normal *normal there (outward of the solid), 0 for none
+ * (both zero vectors, as POV-Ray's), -1 after reporting at loc (a zero direction, an object that
+ * cannot be built). */
+int world_trace(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key, dvec3 org,
+		dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
+/* POV-Ray's object pattern and inside(object, point): the inside of objs[0..n) (their union; CSG
+ * by its trees, a mesh by the parity of its crossings) as a function of a world-space point, 1
+ * inside and 0 outside, valid while t lives (the scene's patterns call it during the render:
+ * free t after the render), thread-safe. False after reporting at loc. */
+bool world_inside_fn(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
+		     scene_fn *out, diag *d, diag_loc loc);
+/* How many worlds t has built (each object once while it stays kept). */
+size_t world_tracer_builds(const world_tracer *t);
 
 #endif

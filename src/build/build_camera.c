@@ -1,6 +1,8 @@
 /* build_camera.c - the scene's camera, for the tessellation (scene_view) and for the render. */
 #include "build/build_impl.h"
 
+#include "scene/pattern.h"
+
 #include <math.h>
 
 /* The scene's camera as cam_params, POV-Ray's default when it has none: the one derivation that
@@ -72,6 +74,15 @@ double view_focal_px(const subd_camera *v)
 	return 0.5 * v->image_height / tan(v->fov_y_deg * M_PI / 360.0);
 }
 
+/* cam.perturb of a camera normal: POV-Ray's Perturb_Normal of the ray's direction at <x0, y0, 0>. */
+static void cam_perturb(const void *user, float x0, float y0, vec3 *d)
+{
+	const world *w = user;
+	dvec3 n = v3_to_d3(*d);
+	pattern_perturb(&w->patterns, w->cam_normal, d3(x0, y0, 0), &n);
+	*d = d3v(n);
+}
+
 bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	double angle_deg;
@@ -81,6 +92,11 @@ bool build_camera(world *w, const scene *sc, const world_options *opt, diag *d)
 	if (!cam_init_why(&w->camera, &cp, opt->width, opt->height, &why)) {
 		diag_error(d, loc, "the camera is degenerate: %s", why);
 		return false;
+	}
+	if (sc->has_camera && sc->camera.normal) {
+		if (!build_pattern(w, sc->camera.normal, &w->cam_normal, d))
+			return false;
+		w->camera.perturb = cam_perturb, w->camera.perturb_user = w;
 	}
 	return true;
 }

@@ -1260,6 +1260,10 @@ bool lang_primary(parser *p, value *out)
 			return colour_value(p, out);
 		if (t->kind == LTK_UNSUPPORTED && (lang_word_is(t, "min_extent") || lang_word_is(t, "max_extent")))
 			return lang_extent(p, out); /* extent.c */
+		if (t->kind == LTK_UNSUPPORTED && lang_word_is(t, "trace"))
+			return lang_trace(p, out); /* extent.c */
+		if (t->kind == LTK_UNSUPPORTED && lang_word_is(t, "inside"))
+			return lang_inside(p, out); /* extent.c */
 		const builtin *b = builtin_of(t->kind);
 		if (!b && t->kind == LTK_UNSUPPORTED && lang_token_is(t, "vturbulence"))
 			b = &vturbulence_builtin;
@@ -1577,7 +1581,9 @@ bool lang_index_tuple(parser *p, const char *what, uint32_t *idx, int *n, diag_l
 {
 	*loc = lang_peek(p)->loc;
 	value v;
-	if (!lang_expr(p, &v))
+	/* An additive expression, as POV-Ray's Parse_Vector: `<0, 1, 2> <1, 2, 3>` is two index
+	 * vectors (the commas between them are optional), not a comparison. */
+	if (!lang_additive(p, &v))
 		return false;
 	if (v.kind != VAL_VECTOR)
 		return lang_error(p, *loc, "expected a vector of indices %s, found %s", what, lang_value_kind_name(&v));

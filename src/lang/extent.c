@@ -223,3 +223,88 @@ bool lang_extent(parser *p, value *out)
 	}
 	return true;
 }
+
+/* trace = "trace" "(" expression "," vector "," vector [ "," identifier ] ")"
+ * POV-Ray's Parse_Trace (source/parser/parser_functions.cpp): the first hit of the ray from the
+ * start along the direction on the object, <0, 0, 0> when there is none; the identifier, a
+ * declared one, receives the unit outward normal there (<0, 0, 0> without a hit). The hit is
+ * found by the caller's lang_options.trace (main.c gives the build's, which traces the object's
+ * tessellated surface, as rendered); the object is any object value, its declared name the key
+ * of the callee's cache. */
+bool lang_trace(parser *p, value *out)
+{
+	lang_token name = *lang_advance(p);
+	TRY(lang_expect(p, LTK_LPAREN, "after 'trace'"));
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (v.kind != VAL_OBJECT || !v.obj)
+		return lang_error(p, at, "'trace' needs an object, found %s", lang_value_kind_name(&v));
+	TRY(lang_expect(p, LTK_COMMA, "after the object of 'trace'"));
+	dvec3 org, dir;
+	TRY(lang_vec3(p, "(the start of 'trace')", &org));
+	TRY(lang_expect(p, LTK_COMMA, "after the start of 'trace'"));
+	diag_loc dir_at = lang_peek(p)->loc;
+	TRY(lang_vec3(p, "(the direction of 'trace')", &dir));
+	lang_token normal = {0};
+	bool has_normal = false;
+	if (lang_accept(p, LTK_COMMA) && lang_peek(p)->kind != LTK_RPAREN) {
+		p->no_expand = true;
+		normal = *lang_peek(p);
+		p->no_expand = false;
+		if (normal.kind != LTK_IDENT)
+			return lang_error_found(p, "expected the name of a declared vector to receive the normal of 'trace'");
+		if (!lang_lookup(p, normal.text, normal.len))
+			return lang_error(p, normal.loc, "the normal of 'trace' goes into a declared identifier: '%.*s' is "
+							 "not declared (#declare it first, as POV-Ray asks)",
+					  (int)normal.len, normal.text);
+		lang_advance(p);
+		has_normal = true;
+	}
+	TRY(lang_expect(p, LTK_RPAREN, "to close the arguments of 'trace'"));
+	if (!(d3_length(dir) > 0))
+		return lang_error(p, dir_at, "the direction of 'trace' is the zero vector");
+	if (!p->opt.trace)
+		return lang_error(p, name.loc, "'trace' is not supported by circe here (no tracer: it needs the build)");
+	dvec3 hit, n;
+	int r = p->opt.trace(p->opt.trace_user, p->sc, v.obj->items, v.obj->n, v.obj, org, dir, &hit, &n, p->d, name.loc);
+	if (r < 0)
+		return false;
+	memset(out, 0, sizeof *out);
+	out->kind = VAL_VECTOR, out->n = 3;
+	out->v[0] = hit.x, out->v[1] = hit.y, out->v[2] = hit.z;
+	if (has_normal) {
+		value nv = {.kind = VAL_VECTOR, .n = 3, .v = {n.x, n.y, n.z}};
+		TRY(lang_define(p, &normal, false, &nv));
+	}
+	return true;
+}
+
+/* inside = "inside" "(" expression "," vector ")"   POV-Ray's Inside_Object at parse time: 1 when
+ * the point is inside the object (its tessellated solid; CSG by its trees), else 0, by
+ * lang_options.inside (main.c gives the build's). */
+bool lang_inside(parser *p, value *out)
+{
+	lang_token name = *lang_advance(p);
+	TRY(lang_expect(p, LTK_LPAREN, "after 'inside'"));
+	diag_loc at = lang_peek(p)->loc;
+	value v;
+	TRY(lang_expr(p, &v));
+	if (v.kind != VAL_OBJECT || !v.obj)
+		return lang_error(p, at, "'inside' needs an object, found %s", lang_value_kind_name(&v));
+	TRY(lang_expect(p, LTK_COMMA, "after the object of 'inside'"));
+	dvec3 q;
+	TRY(lang_vec3(p, "(the point of 'inside')", &q));
+	TRY(lang_expect(p, LTK_RPAREN, "to close the arguments of 'inside'"));
+	if (!p->opt.inside)
+		return lang_error(p, name.loc, "'inside' is not supported by circe here (no inside test: it needs the build)");
+	scene_fn fn;
+	TRY(p->opt.inside(p->opt.trace_user, p->sc, v.obj->items, v.obj->n, v.obj, &fn, p->d, name.loc));
+	double xyz[3] = {q.x, q.y, q.z}, r = 0;
+	if (!fn.eval || !fn.eval(fn.ctx, xyz, &r))
+		r = 0;
+	memset(out, 0, sizeof *out);
+	out->kind = VAL_FLOAT, out->n = 1;
+	out->v[0] = r > 0.5 ? 1.0 : 0.0;
+	return true;
+}

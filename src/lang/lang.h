@@ -7,6 +7,7 @@
 #define CIRCE_LANG_LANG_H
 
 #include "base/diag.h"
+#include "scene/pigment.h"
 #include "scene/scene.h"
 
 #include <stdbool.h>
@@ -31,6 +32,20 @@ enum { LANG_DEFAULT_WIDTH = 640, LANG_DEFAULT_HEIGHT = 480 };
  * does not exist, which makes the parser try the next folder of the search path). */
 typedef int (*lang_read_fn)(void *user, const char *path, char **text, size_t *len);
 
+/* POV-Ray's trace(object, start, direction [, normal]): the nearest hit past org along dir on the
+ * objects objs[0..n) of one object value (sc: the scene as parsed so far; key: the same pointer for
+ * the same declared object, for the callee's cache). Returns 1 with *hit and the unit outward normal
+ * *normal, 0 for no hit, -1 after reporting at loc. The language knows no meshes: main.c gives the
+ * build's world_trace; without one, trace() is an error. */
+typedef int (*lang_trace_fn)(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
+			     dvec3 org, dvec3 dir, dvec3 *hit, dvec3 *normal, diag *d, diag_loc loc);
+
+/* POV-Ray's object pattern and inside(object, point): the inside of objs[0..n) as sc's function of
+ * a point (1 inside, 0 outside), valid while the callee's state lives (main.c keeps it until the
+ * scene is freed). False after reporting at loc. */
+typedef bool (*lang_inside_fn)(void *user, const scene *sc, const scene_object *objs, size_t n, const void *key,
+			       scene_fn *out, diag *d, diag_loc loc);
+
 typedef struct lang_options {
 	const char *const *include_dirs; /* the -I folders, searched after the including file's */
 	size_t n_include_dirs;
@@ -42,6 +57,9 @@ typedef struct lang_options {
 	void *read_user;
 	long max_loop_iterations; /* per #while (and 10x that in all); 0: LANG_MAX_LOOP_ITERATIONS and
 				     10,000,000 in all. A fuzzer lowers it to keep inputs fast. */
+	lang_trace_fn trace; /* NULL: trace() is refused with an error */
+	lang_inside_fn inside; /* NULL: the object pattern and inside() are refused with an error */
+	void *trace_user; /* both's */
 } lang_options;
 
 typedef enum lang_status {

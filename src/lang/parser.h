@@ -180,6 +180,10 @@ typedef struct parser {
 	/* statements' state (stmt.c) */
 	const scene_material *default_tex; /* #default's texture; NULL until a #default */
 	bool sky_colour; /* a sky_sphere's colour pigment set the background: a background {} leaves it */
+	/* stmt.c: a light_source in a CSG block goes into the scene's lights, moved by the block's
+	 * transforms, only while an object statement places its objects in the scene (not in a
+	 * #declare, a clipped_by or a pattern's object) */
+	bool lights_in_csg;
 	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each
 				 * (and stmt.c's LANG_WARNED_INTERIOR_TEXTURE) */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */
@@ -269,6 +273,10 @@ bool lang_wrong_count(parser *p, diag_loc at, const char *fname, int lo, int hi,
 const char *lang_value_kind_name(const value *v);
 /* extent.c: min_extent(object) or max_extent(object), the word at the current token. */
 bool lang_extent(parser *p, value *out);
+/* extent.c: trace(object, start, direction [, normal]), the word at the current token. */
+bool lang_trace(parser *p, value *out);
+/* extent.c: inside(object, point), the word at the current token. */
+bool lang_inside(parser *p, value *out);
 
 /* Declares name (#declare, or #local with local) as v; false after reporting. */
 bool lang_define(parser *p, const lang_token *name, bool local, const value *v);
@@ -322,6 +330,9 @@ bool lang_statement(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);
+/* An object (a declared object's name, or an object item) as a list of placed objects; what: the
+ * error's context ("in the object pattern"). */
+bool lang_object_list(parser *p, const char *what, const objlist **out);
 /* "{" ... "}" after `what`, any tokens between, the braces balanced (directives still run). */
 bool lang_skip_block(parser *p, const char *what);
 /* For shapes.c: a new geometry record (NULL after reporting), and an object of g placed in out with

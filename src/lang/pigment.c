@@ -409,15 +409,54 @@ static bool warp_black_hole(parser *p, scene_warp *w)
 			w->inverse = true;
 		} else if (accept_word(p, "repeat")) {
 			TRY(lang_vec3(p, "after 'repeat'", &w->repeat));
-		} else if (peek_word(p, "turbulence")) {
-			return lang_error(p, lang_peek(p)->loc, "'turbulence' of a black hole is not supported by circe");
+		} else if (accept_word(p, "turbulence")) { /* POV-Ray's uncertainty of a repeated hole's centre */
+			TRY(lang_vec3(p, "after the black hole's 'turbulence'", &w->uncertainty));
 		} else {
 			return true;
 		}
 	}
 }
 
-/* warp = "warp" "{" ( "turbulence" ( float | vector ) turb_params | "repeat" ... | "black_hole" ... ) "}" */
+/* The mapping warps' options (POV-Ray's Parse_Warp): planar [ vector [ "," ] float ] (the plane's
+ * orientation and offset); cylindrical, spherical, toroidal { "orientation" vector | "dist_exp"
+ * float | "major_radius" float (toroidal) }; cubic. */
+static bool warp_mapping(parser *p, scene_warp *w)
+{
+	w->orientation = d3(0, 0, 1), w->dist_exp = 0.0, w->major_radius = 1.0, w->plane_offset = 0.0;
+	if (w->kind == SCENE_WARP_CUBIC)
+		return true;
+	if (w->kind == SCENE_WARP_PLANAR) {
+		if (lang_peek(p)->kind == LTK_RBRACE)
+			return true;
+		diag_loc at = lang_peek(p)->loc;
+		dvec3 o;
+		TRY(lang_vec3(p, "(the orientation of 'planar')", &o));
+		if (!(d3_length(o) > 0))
+			return lang_error(p, at, "the orientation of a warp is the zero vector");
+		w->orientation = d3_normalize(o);
+		lang_accept(p, LTK_COMMA);
+		return lang_float(p, "as the planar warp's offset", &w->plane_offset);
+	}
+	for (;;) {
+		diag_loc at = lang_peek(p)->loc;
+		if (accept_word(p, "orientation")) {
+			dvec3 o;
+			TRY(lang_vec3(p, "after 'orientation'", &o));
+			if (!(d3_length(o) > 0))
+				return lang_error(p, at, "the orientation of a warp is the zero vector");
+			w->orientation = d3_normalize(o);
+		} else if (accept_word(p, "dist_exp")) {
+			TRY(lang_float(p, "after 'dist_exp'", &w->dist_exp));
+		} else if (w->kind == SCENE_WARP_TOROIDAL && accept_word(p, "major_radius")) {
+			TRY(lang_float(p, "after 'major_radius'", &w->major_radius));
+		} else {
+			return true;
+		}
+	}
+}
+
+/* warp = "warp" "{" ( "turbulence" ( float | vector ) turb_params | "repeat" ... | "black_hole" ...
+ *        | "planar" ... | "cylindrical" ... | "spherical" ... | "toroidal" ... | "cubic" ) "}" */
 static bool warp_block(parser *p, pig_build *b)
 {
 	diag_loc kw = lang_advance(p)->loc, open = lang_peek(p)->loc;
@@ -435,12 +474,26 @@ static bool warp_block(parser *p, pig_build *b)
 		w.kind = SCENE_WARP_BLACK_HOLE;
 		TRY(warp_black_hole(p, &w));
 	} else {
-		lang_token *t = lang_peek(p);
-		if (t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
-			return lang_error(p, t->loc, "'warp { %.*s }' is not supported by circe (turbulence, repeat and "
-						     "black_hole are)",
-					  (int)t->len, t->text);
-		return lang_error_found(p, "expected turbulence, repeat or black_hole in 'warp'");
+		static const struct {
+			const char *word;
+			scene_warp_kind kind;
+		} maps[] = {{"planar", SCENE_WARP_PLANAR},     {"cylindrical", SCENE_WARP_CYLINDRICAL},
+			    {"spherical", SCENE_WARP_SPHERICAL}, {"toroidal", SCENE_WARP_TOROIDAL},
+			    {"cubic", SCENE_WARP_CUBIC}};
+		size_t i = 0;
+		while (i < sizeof maps / sizeof maps[0] && !accept_word(p, maps[i].word))
+			i++;
+		if (i == sizeof maps / sizeof maps[0]) {
+			lang_token *t = lang_peek(p);
+			if (t->kind == LTK_UNSUPPORTED || (t->kind >= LANG_FIRST_KEYWORD && t->kind < LANG_FIRST_DIRECTIVE))
+				return lang_error(p, t->loc, "'warp { %.*s }' is not supported by circe (turbulence, repeat, "
+							     "black_hole, planar, cylindrical, spherical, toroidal and cubic are)",
+						  (int)t->len, t->text);
+			return lang_error_found(p, "expected turbulence, repeat, black_hole, planar, cylindrical, spherical, "
+						   "toroidal or cubic in 'warp'");
+		}
+		w.kind = maps[i].kind;
+		TRY(warp_mapping(p, &w));
 	}
 	TRY(lang_expect_close(p, open, "warp"));
 	return push_warp(p, b, &w);
@@ -736,6 +789,24 @@ static bool slope_args(parser *p, scene_pigment *g, diag_loc kw)
 	return true;
 }
 
+/* object_pattern = "object" "{" object_ref block_list "}"   POV-Ray's object pattern: entry 0
+ * outside the object, 1 inside (the object in the pattern's space), by lang_options.inside (main.c
+ * gives the build's: the inside of the object's tessellated solid, as CSG classifies it). */
+static bool object_pattern(parser *p, pig_build *b, diag_loc kw)
+{
+	lang_advance(p);
+	diag_loc open = lang_peek(p)->loc;
+	TRY(lang_expect(p, LTK_LBRACE, "after 'object' (the object pattern)"));
+	const objlist *l;
+	TRY(lang_object_list(p, "in the object pattern", &l));
+	TRY(block_list(p, b));
+	TRY(lang_expect_close(p, open, "object pattern"));
+	if (!p->opt.inside)
+		return lang_error(p, kw, "'object' as a pattern is not supported by circe here (no inside test: it needs "
+					 "the build)");
+	return p->opt.inside(p->opt.trace_user, p->sc, l->items, l->n, l, &b->pg.fn, p->d, kw);
+}
+
 /* pattern_head = pattern_word [ arguments ]: gradient's vector, spiral's arms, a block pattern's
  * list. A new pattern starts afresh, its warps and turbulence too (POV-Ray 3.7 makes a new pattern
  * object, which holds them), over a declared pigment or normal. */
@@ -750,6 +821,8 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_func_pattern(p, &b->pg.fn);
 	if (k == SCENE_PAT_IMAGE_PATTERN)
 		return image_block(p, b, k);
+	if (k == SCENE_PAT_OBJECT)
+		return object_pattern(p, b, kw);
 	if (k == SCENE_PAT_MATERIAL_MAP) /* a texture's (head() reads it there) */
 		return lang_error(p, kw, "'material_map' picks textures: it belongs in a texture, not in a %s",
 				  b->normal ? "normal" : b->density ? "density" : "pigment");
@@ -934,9 +1007,14 @@ static bool fractal_modifier(parser *p, pig_build *b, bool *matched)
 	long type;
 	double f;
 	if (ex) {
+		diag_loc at = lang_peek(p)->loc;
 		TRY(lang_float(p, "after 'exponent'", &f));
-		if (f != 2.0)
-			return lang_error(p, t.loc, "a fractal's exponent other than 2 is not supported by circe, found %g", f);
+		long e = (long)fmax(-1e9, fmin(1e9, f)); /* POV-Ray's (int) */
+		if (e < 2 || e > 33) { /* POV-Ray's warning, and its exponent 2 */
+			diag_warning(p->d, at, "a fractal's exponent is 2 to 33, found %g: exponent 2 is used, as POV-Ray does", f);
+			e = 2;
+		}
+		b->pg.fractal_exponent = (int)e;
 		return true;
 	}
 	TRY(lang_int(p, ext ? "as the exterior type" : "as the interior type", 0, ext ? 8 : 6, &type));

@@ -26,11 +26,6 @@ static int one_of(parser *p, const lang_tok *kws, int n, const char *msg)
 
 static bool bad_item(parser *p, diag_loc open, const char *what, const char *expect)
 {
-	bool csg = !strcmp(what, "union") || !strcmp(what, "intersection") || !strcmp(what, "difference") ||
-		   !strcmp(what, "merge");
-	if (csg && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) /* POV-Ray's lights in CSG (drums.pov, iortest.pov) */
-		return lang_error(p, lang_peek(p)->loc, "a light_source inside a %s is not supported by circe: give it "
-							"beside the %s, with the %s's transforms", what, what, what);
 	bool at_eof = lang_peek(p)->kind == LTK_EOF && !p->failed;
 	lang_error_found(p, "expected %s or '}' to close '%s' (opened at line %u)", expect, what, open.line);
 	if (at_eof)
@@ -550,8 +545,6 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 		}
 		return true;
 	}
-	if (lang_peek(p)->kind == LTK_KW_OBJECT) /* POV-Ray's object pattern */
-		return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
 	if (lang_peek(p)->kind != LTK_RBRACE && !starts_transform(p)) { /* pigment {} changes nothing */
 		const char *what = use == SCENE_COLOR_REFLECTANCE ? "pigment colour" : "sky colour";
 		TRY(pigment_color(p, what, use, m));
@@ -1022,8 +1015,9 @@ static bool texture_body(parser *p, diag_loc kw, diag_loc open, lang_tok close, 
 			TRY(lang_normal(p, m));
 		else if (k == close)
 			break;
-		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern (a keyword of circe's for objects) */
-			return lang_error(p, lang_peek(p)->loc, "'object' as a pattern is not supported by circe");
+		else if (k == LTK_KW_OBJECT) /* POV-Ray's object pattern after a texture's items */
+			return lang_error(p, lang_peek(p)->loc, "the object pattern of a texture comes first in it, before "
+								"its pigment, normal and finish");
 		else if (lang_word_is(lang_peek(p), "uv_mapping")) /* POV-Ray's: the whole texture at <u, v, 0> */
 			lang_advance(p), uv = true;
 		else {
@@ -1372,6 +1366,8 @@ typedef struct mods {
 	size_t n_bound;
 	diag_loc bound_loc;
 	bool bound_clips; /* the bound's objects are clipping objects already */
+	bool uv; /* uv_mapping on the object: its textures at <u, v, 0> */
+	diag_loc uv_loc;
 } mods;
 
 /* No CSG solid nests deeper than this (its evaluation walks the path of each hit). */
@@ -1398,6 +1394,17 @@ static bool csg_prepend(parser *p, scene_object *objs, size_t n, scene_csg_step 
 
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
+/* object_item where the objects are not placed in the scene (a #declare, clipped_by, looks_like,
+ * an object pattern's object): a light_source in their CSG is refused there. */
+static bool object_item_unplaced(parser *p, vecbuf *out, bool *matched)
+{
+	bool saved = p->lights_in_csg;
+	p->lights_in_csg = false;
+	bool ok = object_item(p, out, matched);
+	p->lights_in_csg = saved;
+	return ok;
+}
+
 /* The objects of a clipped_by or bounded_by block, parsed into a temporary buffer and kept in the
  * arena (*objs, *n, appended to): each object item one operand, numbered from *operands on, of
  * the node `id` when id is not 0. */
@@ -1410,7 +1417,7 @@ static bool clip_objects(parser *p, diag_loc open, const char *what, uint32_t id
 	while (ok && lang_peek(p)->kind != LTK_RBRACE) {
 		size_t from = b.len;
 		bool matched;
-		ok = object_item(p, &b, &matched);
+		ok = object_item_unplaced(p, &b, &matched);
 		if (ok && !matched)
 			ok = bad_item(p, open, what, "an object");
 		any = true;
@@ -1510,6 +1517,22 @@ static bool set_material(parser *p, mods *m, const scene_material *mat, diag_loc
 	return true;
 }
 
+/* The texture a bare pigment, finish or normal of the object changes (m->tex): made now, or, after
+ * a declared texture (`texture { Black_Chocolate } normal { bumps 0.3 }`: biscuit.pov), a copy of
+ * it (POV-Ray changes the object's top texture layer, a copy of the declared one). */
+static bool own_texture(parser *p, mods *m, diag_loc loc)
+{
+	if (m->tex)
+		return true;
+	if (m->mat && m->mat_is_texture && m->mat->kind == MAT_TEXTURE) {
+		TRY(m->tex = copy_material(p, m->mat, loc));
+		m->mat = m->tex;
+		return true;
+	}
+	TRY(m->tex = new_texture(p, loc));
+	return set_material(p, m, m->tex, loc);
+}
+
 /* modifier = transform_item | material | texture | pigment | finish | interior | "no_shadow"
  *          | object_flag */
 static bool modifier(parser *p, mods *m, bool *matched)
@@ -1520,10 +1543,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		return true;
 	*matched = true;
 	if (lang_normal_starts(p)) { /* normal { } on the object: its texture's, as a bare pigment */
-		if (!m->tex) {
-			TRY(m->tex = new_texture(p, t.loc));
-			TRY(set_material(p, m, m->tex, t.loc));
-		}
+		TRY(own_texture(p, m, t.loc));
 		return lang_normal(p, m->tex);
 	}
 	switch (t.kind) {
@@ -1543,7 +1563,9 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		const scene_material *mat;
 		bool fresh;
 		TRY(texture(p, &mat, &fresh));
-		if (m->mat && m->mat_is_texture) { /* a texture after a texture: its layer on top */
+		/* a texture after a texture, or after a bare pigment, finish or normal (POV-Ray's
+		 * Link_Textures: glasschess's `pigment { rgbf 0.9 } texture { Glass }`): its layer on top */
+		if (m->mat && (m->mat_is_texture || (m->mat == m->tex && m->mat->kind == MAT_TEXTURE))) {
 			TRY(layer_texture(p, m->mat, mat, t.loc, &m->mat));
 			m->tex = (scene_material *)m->mat;
 			return true;
@@ -1556,10 +1578,7 @@ static bool modifier(parser *p, mods *m, bool *matched)
 	}
 	case LTK_KW_PIGMENT:
 	case LTK_KW_FINISH:
-		if (!m->tex) {
-			TRY(m->tex = new_texture(p, t.loc));
-			TRY(set_material(p, m, m->tex, t.loc));
-		}
+		TRY(own_texture(p, m, t.loc));
 		return t.kind == LTK_KW_PIGMENT ? pigment(p, m->tex, SCENE_COLOR_REFLECTANCE) : finish(p, m->tex);
 	case LTK_KW_INTERIOR:
 		if (!m->interior)
@@ -1574,6 +1593,11 @@ static bool modifier(parser *p, mods *m, bool *matched)
 		lang_advance(p);
 		return true;
 	default:
+		if (lang_word_is(&t, "uv_mapping")) { /* POV-Ray's UV_MAPPING flag: the object's textures at <u, v, 0> */
+			lang_advance(p);
+			m->uv = true, m->uv_loc = t.loc;
+			return true;
+		}
 		if (lang_word_is(&t, "interior_texture")) { /* read as a texture, then dropped */
 			const scene_material *inner;
 			lang_advance(p);
@@ -1594,6 +1618,8 @@ static bool modifier(parser *p, mods *m, bool *matched)
 static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 {
 	if (m->interior) {
+		if (!m->mat && p->default_tex && p->default_tex->kind == MAT_TEXTURE) /* POV-Ray: the #default texture's */
+			m->mat = p->default_tex, m->mat_loc = m->interior_loc, m->t_at_mat = m->t;
 		if (!m->mat || m->mat->kind != MAT_TEXTURE)
 			return lang_error(p, m->interior_loc, "'interior' sets the ior of a texture; this object has none");
 		scene_material *mm = (scene_material *)m->mat; /* made or copied here, hence writable */
@@ -1603,15 +1629,26 @@ static bool apply_mods(parser *p, vecbuf *out, size_t start, mods *m)
 		}
 		copy_interior(mm, m->interior);
 	}
+	const scene_material *uv_from = NULL, *uv_to = NULL; /* the last texture mapped, its copy */
 	for (size_t i = start; i < out->len; i++) {
 		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		if (m->uv && (o->material || m->mat) && (o->material ? o->material : m->mat)->kind == MAT_TEXTURE) {
+			const scene_material *src = o->material ? o->material : m->mat;
+			if (src != uv_from) {
+				scene_material *c = copy_material(p, src, m->uv_loc);
+				TRY(c && texture_uv_mapping(p, c, m->uv_loc));
+				uv_from = src, uv_to = c;
+			}
+			if (o->material)
+				o->material = uv_to;
+		}
 		if (!o->material && m->mat) { /* POV-Ray: a texture moves with the transforms after it */
 			o->texture_from_object = xform_then(o->transform, m->t_at_mat);
 			o->texture_placed = true;
 		}
 		o->transform = xform_then(o->transform, m->t);
 		if (!o->material)
-			o->material = m->mat;
+			o->material = m->uv && m->mat && m->mat == uv_from ? uv_to : m->mat;
 		o->no_shadow |= m->no_shadow;
 		lang_apply_object_flags(o, &m->flags);
 	}
@@ -1659,12 +1696,28 @@ static bool csg_mods(parser *p, vecbuf *out, size_t start, mods *m, diag_loc kw)
 }
 
 /* { modifier } "}" : the common tail of every object item. */
-static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
+/* A light moved by t: its position, point_at, area axes and its looks_like objects. */
+static void light_move(scene_light *l, const xform *t)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) { /* copies of the light's own (light_head, looks_like) */
+		scene_object *o = (scene_object *)&l->looks[i];
+		o->transform = xform_then(o->transform, *t);
+	}
+	l->position = xform_point(t, l->position);
+	l->point_at = xform_point(t, l->point_at);
+	l->axis1 = xform_vector(t, l->axis1);
+	l->axis2 = xform_vector(t, l->axis2);
+}
+
+/* object_tail moving the scene's lights from `lights` on too (object { union { light_source ... } }). */
+static bool object_tail_lights(parser *p, vecbuf *out, size_t start, size_t lights, diag_loc open, const char *what)
 {
 	mods m = {.t = xform_identity()};
 	for (;;) {
 		if (lang_peek(p)->kind == LTK_RBRACE) {
 			diag_loc close = lang_advance(p)->loc;
+			for (size_t i = lights; i < p->sc->lights.len; i++)
+				light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &m.t);
 			return csg_mods(p, out, start, &m, close) && apply_mods(p, out, start, &m);
 		}
 		bool matched;
@@ -1672,6 +1725,11 @@ static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, con
 		if (!matched)
 			return bad_item(p, open, what, "a transform, a material, no_shadow");
 	}
+}
+
+static bool object_tail(parser *p, vecbuf *out, size_t start, diag_loc open, const char *what)
+{
+	return object_tail_lights(p, out, start, p->sc->lights.len, open, what);
 }
 
 static scene_geom *new_geom(parser *p, scene_shape_kind kind, diag_loc loc)
@@ -2486,10 +2544,37 @@ static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc op
 
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
-/* union = "union" "{" object_item { object_item } { modifier } "}" */
+static bool light_block(parser *p, scene_light *out, diag_loc kw);
+static bool add_light(parser *p, const scene_light *l, diag_loc kw);
+
+/* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
+ * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
+ * moves the lights from its first on (csg_lights_move); only where the object is placed in the
+ * scene (p->lights_in_csg). */
+static bool csg_light(parser *p, const char *what)
+{
+	lang_token kw = *lang_peek(p);
+	if (!p->lights_in_csg)
+		return lang_error(p, kw.loc, "a light_source inside a %s is supported only in an object placed in the "
+					     "scene (not in a #declare, clipped_by, object pattern or looks_like): "
+					     "give it beside the %s's copies", what, what);
+	lang_advance(p);
+	scene_light l;
+	TRY(light_block(p, &l, kw.loc));
+	return add_light(p, &l, kw.loc);
+}
+
+/* The block's transforms applied to the lights its items placed (the scene's lights from first). */
+static void csg_lights_move(parser *p, size_t first, const mods *m)
+{
+	for (size_t i = first; i < p->sc->lights.len; i++)
+		light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &m->t);
+}
+
+/* union = "union" "{" ( object_item | light_source ) { object_item | light_source } { modifier } "}" */
 static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
-	size_t start = out->len;
+	size_t start = out->len, lights = p->sc->lights.len;
 	mods m = {.t = xform_identity()};
 	bool any = false;
 	for (;;) {
@@ -2497,7 +2582,13 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 			if (!any)
 				return lang_error(p, kw, "union has no objects");
 			lang_advance(p);
+			csg_lights_move(p, lights, &m);
 			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
+		}
+		if (lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) {
+			TRY(csg_light(p, "union"));
+			any = true;
+			continue;
 		}
 		bool matched;
 		TRY(object_item(p, out, &matched));
@@ -2516,7 +2607,7 @@ static bool union_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
  * stay objects and carry the node in their CSG path (scene.h). */
 static bool csg_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open, scene_csg_op op, const char *what)
 {
-	size_t start = out->len;
+	size_t start = out->len, lights = p->sc->lights.len;
 	mods m = {.t = xform_identity()};
 	uint32_t id = ++p->sc->csg_ids, operands = 0;
 	for (;;) {
@@ -2524,7 +2615,12 @@ static bool csg_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open, scene_
 			if (!operands)
 				return lang_error(p, kw, "%s has no objects", what);
 			lang_advance(p);
+			csg_lights_move(p, lights, &m);
 			return csg_mods(p, out, start, &m, kw) && apply_mods(p, out, start, &m);
+		}
+		if (lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE) { /* no operand: it only moves with the solid */
+			TRY(csg_light(p, what));
+			continue;
 		}
 		size_t from = out->len;
 		bool matched;
@@ -2602,12 +2698,12 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	lang_token *t = lang_peek(p);
 	if (t->kind != LTK_IDENT) {
-		size_t start = out->len;
+		size_t start = out->len, lights = p->sc->lights.len;
 		bool matched;
 		TRY(object_item(p, out, &matched));
 		if (!matched)
 			return lang_error_found(p, "expected a declared object or an object after 'object {'");
-		return object_tail(p, out, start, open, "object");
+		return object_tail_lights(p, out, start, lights, open, "object");
 	}
 	size_t start = out->len;
 	TRY(declared_object(p, out, kw));
@@ -2751,7 +2847,7 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
-	bool ok = object_item(p, &tmp, &matched);
+	bool ok = object_item_unplaced(p, &tmp, &matched);
 	if (!matched) {
 		*handled = false;
 		vecbuf_free(&tmp);
@@ -2769,6 +2865,42 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		return lang_error(p, p->prev.loc, "out of memory");
 	out->kind = VAL_OBJECT;
 	out->obj = l;
+	return ok;
+}
+
+/* object_ref = identifier | object_item: an object as a value's list (the object pattern's
+ * object). A declared object's name is its own list, the same for every use. */
+bool lang_object_list(parser *p, const char *what, const objlist **out)
+{
+	lang_token *t = lang_peek(p);
+	if (t->kind == LTK_IDENT) {
+		const symbol *s = lang_lookup(p, t->text, t->len);
+		if (s && s->val.kind == VAL_OBJECT && s->val.obj) {
+			lang_advance(p);
+			*out = s->val.obj;
+			return true;
+		}
+	}
+	diag_loc at = t->loc;
+	vecbuf tmp;
+	vecbuf_init(&tmp, sizeof(scene_object));
+	bool matched;
+	bool ok = object_item_unplaced(p, &tmp, &matched);
+	if (ok && !matched) {
+		vecbuf_free(&tmp);
+		return lang_error_found(p, "expected an object %s", what);
+	}
+	objlist *l = ok ? arena_zalloc(&p->sc->arena, 1, sizeof *l) : NULL;
+	if (l) {
+		l->n = tmp.len;
+		l->items = arena_alloc(&p->sc->arena, tmp.len ? tmp.len : 1, sizeof(scene_object), 16);
+		if (l->items && tmp.len)
+			memcpy(l->items, tmp.data, tmp.len * sizeof(scene_object));
+	}
+	vecbuf_free(&tmp);
+	if (ok && (!l || !l->items))
+		return lang_error(p, at, "out of memory");
+	*out = l;
 	return ok;
 }
 
@@ -2982,6 +3114,8 @@ static int camera_type(parser *p, const lang_token *t, bool *ok)
 	case LTK_KW_SPHERICAL: return SCENE_CAM_SPHERICAL;
 	default: break;
 	}
+	if (lang_word_is(t, "omnimax"))
+		return SCENE_CAM_OMNIMAX;
 	if (t->kind != LTK_KW_CYLINDER)
 		return -1;
 	lang_advance(p);
@@ -3099,9 +3233,22 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		TRY(camera_transform(p, c, &matched));
 		if (matched)
 			continue;
+		if (lang_normal_starts(p)) { /* POV-Ray's camera normal: the rays' directions perturbed */
+			scene_material *scratch = arena_zalloc(&p->sc->arena, 1, sizeof *scratch);
+			if (!scratch)
+				return lang_error(p, t.loc, "out of memory");
+			scratch->loc = t.loc;
+			scratch->normal = c->normal;
+			TRY(lang_normal(p, scratch));
+			c->normal = scratch->normal, c->normal_loc = t.loc;
+			continue;
+		}
 		switch (t.kind) {
 		case LTK_RBRACE:
 			lang_advance(p);
+			if (c->normal && c->type != SCENE_CAM_PERSPECTIVE && c->type != SCENE_CAM_ORTHOGRAPHIC)
+				return lang_error(p, c->normal_loc, "a camera's normal is supported by circe on perspective and "
+								    "orthographic cameras only");
 			return true;
 		case LTK_KW_LOCATION: v = &c->location; break;
 		case LTK_KW_LOOK_AT:
@@ -3376,7 +3523,7 @@ static bool looks_like(parser *p, scene_light *l)
 	if (lang_peek(p)->kind == LTK_IDENT) /* a declared object, as POV-Ray's Parse_Object takes it */
 		ok = declared_object(p, &b, lang_peek(p)->loc);
 	else
-		ok = object_item(p, &b, &matched);
+		ok = object_item_unplaced(p, &b, &matched);
 	if (ok && (!matched || !b.len))
 		ok = lang_error_found(p, "expected an object in 'looks_like'");
 	xform to = xform_translate(l->position);
@@ -3450,16 +3597,18 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
 static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
 
 /* A spotlight's radius or falloff in degrees: POV-Ray keeps only its cosine, so a negative angle
- * is its opposite (cornell.pov's `radius -90` for a cosine falloff); over 90 degrees a cone wider
- * than a half-space. */
+ * is its opposite (cornell.pov's `radius -90` for a cosine falloff) and any angle is the one in
+ * [0, 180] of its cosine (laser.pov's `falloff 250` is 110). Over 90 degrees the cone is wider
+ * than a half-space: POV-Ray's spot still lights nothing behind it (Attenuate_Light: cos theta >
+ * 0), its spline reaching down to the falloff's negative cosine; a radius over 90 leaves the
+ * tightness alone (POV-Ray's `Radius > 0` test), as render/light.c's spline gives 1 above it. */
 static bool spot_angle(parser *p, diag_loc loc, const char *what, double *x)
 {
-	*x = fabs(*x);
 	if (!isfinite(*x))
 		return lang_error(p, loc, "spotlight %s must be finite", what);
-	if (*x > 90)
-		return lang_error(p, loc, "a spotlight %s over 90 degrees (a cone wider than a half-space) is not supported by "
-					  "circe, found %g", what, *x);
+	*x = fmod(fabs(*x), 360.0);
+	if (*x > 180.0)
+		*x = 360.0 - *x;
 	return true;
 }
 
@@ -3490,14 +3639,7 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 		bool matched;
 		TRY(transform_item(p, &moved, &matched));
 		if (matched) {
-			for (uint32_t i = 0; i < l.n_looks; i++) { /* copies of the light's own (light_head, looks_like) */
-				scene_object *o = (scene_object *)&l.looks[i];
-				o->transform = xform_then(o->transform, moved);
-			}
-			l.position = xform_point(&moved, l.position);
-			l.point_at = xform_point(&moved, l.point_at);
-			l.axis1 = xform_vector(&moved, l.axis1);
-			l.axis2 = xform_vector(&moved, l.axis2);
+			light_move(&l, &moved);
 			continue;
 		}
 		bool directed = l.kind == SCENE_LIGHT_SPOT || l.kind == SCENE_LIGHT_PARALLEL || l.kind == SCENE_LIGHT_CYLINDER;
@@ -3855,7 +3997,10 @@ bool lang_statement(parser *p)
 			return add_light(p, &l, kw.loc);
 		}
 		TRY(lang_enter(p, kw.loc));
+		bool saved = p->lights_in_csg;
+		p->lights_in_csg = true; /* placed in the scene: its CSG's lights join the scene's */
 		bool ok = instance(p, &p->sc->objects, kw.loc, open);
+		p->lights_in_csg = saved;
 		lang_leave(p);
 		TRY(ok);
 		give_default(p, start);
@@ -3866,7 +4011,11 @@ bool lang_statement(parser *p)
 	}
 	bool matched;
 	size_t start = p->sc->objects.len;
-	TRY(object_item(p, &p->sc->objects, &matched));
+	bool saved = p->lights_in_csg;
+	p->lights_in_csg = true; /* placed in the scene: its CSG's lights join the scene's */
+	bool ok = object_item(p, &p->sc->objects, &matched);
+	p->lights_in_csg = saved;
+	TRY(ok);
 	if (!matched)
 		return lang_error_found(p, "expected a statement (camera, light_source, background, sky_sphere, "
 					   "global_settings or an object)");

@@ -162,6 +162,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		*why = "its vertical angle is outside (0, 180] degrees";
 	if (*why)
 		return false;
+	*c = (cam){0}; /* no perturb unless the caller sets one after */
 	cam_params q = *p;
 	if (p->type != CAM_PERSPECTIVE && p->type != CAM_ORTHOGRAPHIC)
 		q.has_angle = false; /* the angle is the projection's own, not the screen's */
@@ -275,6 +276,25 @@ static bool cam_project(const cam *c, float sx, float sy, render_ray *ray)
 		ray->d = cam_dir(c, cosf(lat) * sinf(lon), sinf(lat), cosf(lat) * cosf(lon));
 		return true;
 	}
+	case CAM_OMNIMAX: {
+		/* POV-Ray's omnimax: sx, sy fitted to its 4:3 aspect (1.283458 the dome's), the polar
+		 * angle 1.411269 r - 0.09439 r^3 + 0.25674 r^5 of the radius r (no ray outside the
+		 * unit circle, nor below 45 degrees under the axis). */
+		const float aspect = 4.0f / 3.0f;
+		float x = sx, y = sy;
+		if (aspect > 1.283458f)
+			x *= aspect / 1.283458f, y = (y - 1.0f) / 1.283458f + 1.0f;
+		float rad = sqrtf(x * x + y * y);
+		if (rad > 1.0f)
+			return false;
+		float phi = rad == 0.0f ? 0.0f : x < 0.0f ? RENDER_PI - asinf(y / rad) : asinf(y / rad);
+		float th = 1.411269f * rad - 0.09439f * rad * rad * rad + 0.25674f * rad * rad * rad * rad * rad;
+		float cx = cosf(phi), sx2 = sinf(phi), cy = cosf(th), sy2 = sinf(th);
+		if (sx2 * sy2 < tanf(135.0f * RENDER_PI / 180.0f) * cy)
+			return false;
+		ray->d = cam_dir(c, cx * sy2, sx2 * sy2, cy);
+		return true;
+	}
 	case CAM_PERSPECTIVE: break;
 	}
 	return false;
@@ -302,11 +322,18 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
 	if (c->type == CAM_PERSPECTIVE) {
 		*out = cam_perspective(c, sx, sy, lens_u);
-		return true;
+	} else {
+		if (!cam_project(c, sx, sy, out))
+			return false;
+		*out = cam_lens(c, *out, lens_u);
 	}
-	if (!cam_project(c, sx, sy, out))
-		return false;
-	*out = cam_lens(c, *out, lens_u);
+	if (c->perturb) { /* TracePixel::CreateCameraRay's Perturb_Normal of the direction, last */
+		vec3 d = out->d;
+		c->perturb(c->perturb_user, 0.5f * sx, 0.5f * sy, &d);
+		d = v3_normalize(d);
+		if (v3_is_finite(d) && v3_length2(d) > 0.5f)
+			out->d = d;
+	}
 	return true;
 }
 

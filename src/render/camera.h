@@ -28,6 +28,7 @@ typedef enum cam_type {
 	CAM_CYLINDER_3, /* axis along up, orthographic along up */
 	CAM_CYLINDER_4, /* axis along right, orthographic along right */
 	CAM_SPHERICAL,
+	CAM_OMNIMAX, /* POV-Ray's: a fisheye of 180 degrees on the dome's curve, 45 below the axis cut */
 } cam_type;
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are
@@ -66,6 +67,11 @@ typedef struct cam {
 	cam_type type;
 	float lens_radius, focal_distance;
 	int width, height;
+	/* POV-Ray's camera normal: perturbs a ray's unit direction *d as a normal pattern perturbs
+	 * a surface normal, at the image point (x0, y0) in [-0.5, 0.5] (POV-Ray's x0, y0 of its
+	 * perspective and orthographic cameras); thread-safe. NULL: none. */
+	void (*perturb)(const void *user, float x0, float y0, vec3 *d);
+	const void *perturb_user;
 } cam;
 
 cam_params cam_params_default(void);

@@ -138,6 +138,7 @@ struct world {
 	char **image_paths;
 	size_t n_images;
 	pattern_prog patterns;  /* every material's pigment, compiled (build_pattern.c) */
+	uint32_t cam_normal; /* the camera normal's node in patterns (camera.perturb set: build_camera.c) */
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
 	light_set lights;
 	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */
@@ -169,6 +170,10 @@ uint32_t sss_set(const world *w, size_t i);
 bool world_csg_keep(const world *w, uint32_t inst, vec3 p);
 /* render/world_csg.c: whether p is inside instance inst's own solid (its inverse applied). */
 bool world_inside(const world *w, uint32_t inst, vec3 p);
+/* render/world_csg.c: whether p (world space) is inside any of w's objects: each CSG solid by
+ * its tree, each other instance by its own solid (clipping objects aside): POV-Ray's inside()
+ * and object pattern, on the worlds of build_trace.c. */
+bool world_point_inside(const world *w, vec3 p);
 /* render/world_csg.c: the top levels' hit filter (tlas_filter): key is the insts index. */
 bool world_csg_filter(void *user, uint32_t key, const bvh_ray *ray, const bvh_hit *hit);
 /* render/world.c: w->rs, the integrator's view of the built w through world.c's callbacks. */

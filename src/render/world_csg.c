@@ -154,3 +154,16 @@ bool world_csg_filter(void *user, uint32_t key, const bvh_ray *ray, const bvh_hi
 		p = d3_to_v3(xform_point(&in->xf, v3_to_d3(p)));
 	return world_csg_keep(w, key, p);
 }
+
+bool world_point_inside(const world *w, vec3 p)
+{
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		if (in->csg_parent < 0 && !in->hidden && world_inside(w, (uint32_t)i, p))
+			return true;
+	}
+	for (size_t n = 0; n < w->n_csg_nodes; n++) /* each solid by its root */
+		if (w->csg_nodes[n].parent < 0 && node_inside(w, (int32_t)n, p))
+			return true;
+	return false;
+}

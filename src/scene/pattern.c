@@ -249,17 +249,46 @@ static double fractal_interior(const pattern_node *n, double a, double b, double
 	}
 }
 
+/* (a + bi)^e for e > 4, as POV-Ray 3.7's mandelx_pattern and juliax_pattern: the binomial sums
+ * with pow, the signs of i^k (k & 2: negative). */
+static void fractal_power(double *a, double *b, int e)
+{
+	double x = *a, y = *b, re = pow(x, e), im = 0.0, c = 1.0; /* c: the binomial coefficient (e k) */
+	for (int k = 1; k <= e; k++) {
+		c = c * (e - k + 1) / k;
+		double t = (k & 2 ? -c : c) * pow(x, e - k) * pow(y, k);
+		if (k & 1)
+			im += t;
+		else
+			re += t;
+	}
+	*a = re, *b = im;
+}
+
 /* Mandel2Pattern and JuliaPattern::EvaluateRaw: z <- z^2 + c from z = c = <x, y> (mandel) or from
- * z = <x, y> with the pattern's c (julia), until |z|^2 > 4 or the iterations limit. */
+ * z = <x, y> with the pattern's c (julia), until |z|^2 > 4 or the iterations limit; exponent 3
+ * and 4 as POV-Ray's mandel3/4 and julia3/4 patterns, above 4 as mandelx and juliax. */
 static double fractal(const pattern_node *n, dvec3 p)
 {
 	double a = p.x, b = p.y, cr = p.x, ci = p.y;
 	if (n->kind == PATTERN_JULIA)
 		cr = n->julia_c[0], ci = n->julia_c[1];
 	double a2 = a * a, b2 = b * b, mindist2 = a2 + b2;
+	int e = n->fractal_exponent;
 	for (int it = 0; it < n->fractal_iterations; it++) {
-		b = 2.0 * a * b + ci;
-		a = a2 - b2 + cr;
+		if (e == 3) {
+			b = 3.0 * a2 * b - b2 * b + ci;
+			a = a2 * a - 3.0 * a * b2 + cr;
+		} else if (e == 4) {
+			b = 4.0 * (a2 * a * b - a * b2 * b) + ci;
+			a = a2 * a2 - 6.0 * a2 * b2 + b2 * b2 + cr;
+		} else if (e > 4) {
+			fractal_power(&a, &b, e);
+			a += cr, b += ci;
+		} else {
+			b = 2.0 * a * b + ci;
+			a = a2 - b2 + cr;
+		}
 		a2 = a * a, b2 = b * b;
 		double d2 = a2 + b2;
 		mindist2 = fmin(mindist2, d2);
@@ -1500,6 +1529,10 @@ static double raw_eps(const pattern_prog *pg, const pattern_node *n, dvec3 p, co
 	case PATTERN_IMAGE_PATTERN: return image_pattern(n, p);
 	case PATTERN_TILING: return tiling(n->tiling, p);
 	case PATTERN_MATERIAL_MAP: return material_map(n, p);
+	case PATTERN_OBJECT: { /* ObjectPattern::Evaluate: Inside_Object, 1 inside */
+		double xyz[3] = {p.x, p.y, p.z}, v = 0.0;
+		return n->fn.eval && n->fn.eval(n->fn.ctx, xyz, &v) && v > 0.5 ? 1.0 : 0.0;
+	}
 	case PATTERN_PIGMENT_PATTERN: { /* PigmentPattern: its pigment's greyscale */
 		float c[5];
 		if (!pg || n->child < 0)
@@ -1515,8 +1548,30 @@ double pattern_raw(const pattern_node *n, dvec3 p) { return raw_eps(NULL, n, p, 
 
 static bool is_block(pattern_kind k)
 {
-	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP;
+	return k == PATTERN_CHECKER || k == PATTERN_HEXAGON || k == PATTERN_BRICK || k == PATTERN_MATERIAL_MAP ||
+	       k == PATTERN_OBJECT;
 }
+
+/* The mapping warps' last step (warp.cpp): the mapped <x, y, z> turned to the orientation o
+ * (the identity for <0, 0, 1>). */
+static dvec3 orient_mapped(dvec3 o, double x, double y, double z)
+{
+	if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0)
+		return d3(x, y, z);
+	return d3(o.x * z + o.y * x + o.z * x, o.x * y - o.y * z + o.z * y, -o.x * x + o.y * y + o.z * z);
+}
+
+/* The angle of <x, z> from the x axis, in [0, 2 pi) (warp.cpp's acos form). */
+static double xz_angle(double x, double z, double len)
+{
+	if (z == 0.0)
+		return x > 0.0 ? 0.0 : M_PI;
+	double t = acos(fmax(-1.0, fmin(1.0, x / len)));
+	return z < 0.0 ? TWO_PI - t : t;
+}
+
+/* POV-Ray's distance exponent: the mapped u (and v) scaled by len^e (e 0: not at all). */
+static double dist_scale(double len, double e) { return e == 1.0 ? len : e != 0.0 ? pow(len, e) : 1.0; }
 
 dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 {
@@ -1537,18 +1592,75 @@ dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 	}
 	case WARP_BLACK_HOLE: { /* BlackHoleWarp::WarpPoint, type 0 */
 		dvec3 c = w->center;
+		bool rep = w->repeat.x > 0.0 || w->repeat.y > 0.0 || w->repeat.z > 0.0;
+		int bx = w->repeat.x > 0.0 ? cell_of(p.x / w->repeat.x) : 0, by = w->repeat.y > 0.0 ? cell_of(p.y / w->repeat.y) : 0,
+		    bz = w->repeat.z > 0.0 ? cell_of(p.z / w->repeat.z) : 0;
+		if (rep && (w->uncertainty.x != 0.0 || w->uncertainty.y != 0.0 || w->uncertainty.z != 0.0)) {
+			/* POV-Ray's "turbulence" of a black hole: each block's centre moved by a random
+			 * fraction in [0, 1) of the vector per axis (its WarpRands of Hash3d(block);
+			 * circe's own hash: the same spread, other draws) */
+			uint32_t h = hash_cell(bx, by, bz) ^ 0x5bd1e995u;
+			c.x += hash_unit(hash_cell((int)h, 1, 0)) * w->uncertainty.x;
+			c.y += hash_unit(hash_cell((int)h, 2, 0)) * w->uncertainty.y;
+			c.z += hash_unit(hash_cell((int)h, 3, 0)) * w->uncertainty.z;
+		}
 		if (w->repeat.x > 0.0)
-			c.x += w->repeat.x * floor(p.x / w->repeat.x);
+			c.x += w->repeat.x * bx;
 		if (w->repeat.y > 0.0)
-			c.y += w->repeat.y * floor(p.y / w->repeat.y);
+			c.y += w->repeat.y * by;
 		if (w->repeat.z > 0.0)
-			c.z += w->repeat.z * floor(p.z / w->repeat.z);
+			c.z += w->repeat.z * bz;
 		dvec3 d = d3_sub(p, c);
 		double len = d3_length(d);
 		if (len >= w->radius)
 			return p;
 		double s = fmin(1.0, pow((w->radius - len) / w->radius, w->falloff) * w->strength);
 		return d3_add(p, d3_scale(d, w->inverse ? -s : s));
+	}
+	case WARP_PLANAR: /* PlanarWarp::WarpPoint: z is the offset */
+		return orient_mapped(w->orientation, p.x, p.y, w->plane_offset);
+	case WARP_CYLINDRICAL: { /* CylindricalWarp::WarpPoint: u the angle about y over 2 pi, v y, z the radius */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return p;
+		double th = xz_angle(p.x, p.z, len) / (TWO_PI) * dist_scale(len, w->dist_exp);
+		return orient_mapped(w->orientation, th, p.y, len);
+	}
+	case WARP_SPHERICAL: { /* SphericalWarp::WarpPoint: u longitude, v latitude, z the distance */
+		double dist = d3_length(p);
+		if (dist == 0.0)
+			return p;
+		double x = p.x / dist, y = p.y / dist, z = p.z / dist;
+		double phi = 0.5 + asin(fmax(-1.0, fmin(1.0, y))) / M_PI, len = sqrt(x * x + z * z);
+		double th = len == 0.0 ? 0.0 : xz_angle(x, z, len) / (TWO_PI);
+		double f = dist_scale(dist, w->dist_exp);
+		return orient_mapped(w->orientation, th * f, phi * f, dist);
+	}
+	case WARP_TOROIDAL: { /* ToroidalWarp::WarpPoint: u about y, v about the tube, z the tube's radius */
+		double len = sqrt(p.x * p.x + p.z * p.z);
+		if (len == 0.0)
+			return p;
+		double th = -xz_angle(p.x, p.z, len);
+		double x = len - w->major_radius, r = sqrt(x * x + p.y * p.y);
+		double phi = r > 0.0 ? acos(fmax(-1.0, fmin(1.0, -x / r))) : 0.0;
+		if (p.y > 0.0)
+			phi = TWO_PI - phi;
+		double f = dist_scale(r, w->dist_exp);
+		return orient_mapped(w->orientation, th / (-TWO_PI) * f, phi / (TWO_PI) * f, r);
+	}
+	case WARP_CUBIC: { /* CubicWarp::WarpPoint: the six faces onto a cross-shaped net in [0, 1]^2 */
+		double x = p.x, y = p.y, z = p.z, ax = fabs(x), ay = fabs(y), az = fabs(z);
+		if (x >= 0 && x >= ay && x >= az)
+			return d3(0.75 - 0.25 * (z / x + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / x + 1.0) / 2.0, x);
+		if (y >= 0 && y >= ax && y >= az)
+			return d3(0.25 + 0.25 * (x / y + 1.0) / 2.0, 1.0 - (1.0 / 3.0) * (z / y + 1.0) / 2.0, y);
+		if (z >= 0 && z >= ax && z >= ay)
+			return d3(0.25 + 0.25 * (x / z + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / z + 1.0) / 2.0, z);
+		if (x < 0 && x <= -ay && x <= -az)
+			return d3(0.25 * (z / -x + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / -x + 1.0) / 2.0, -x);
+		if (y < 0 && y <= -ax && y <= -az)
+			return d3(0.25 + 0.25 * (x / -y + 1.0) / 2.0, (1.0 / 3.0) * (z / -y + 1.0) / 2.0, -y);
+		return d3(1.0 - 0.25 * (x / -z + 1.0) / 2.0, 1.0 / 3.0 + (1.0 / 3.0) * (y / -z + 1.0) / 2.0, -z);
 	}
 	}
 	return p;
@@ -1775,7 +1887,7 @@ pattern_node pattern_node_default(pattern_kind kind)
 	pattern_node n = {.kind = kind, .frequency = 1.0, .exponent = 1.0, .vector = d3(0, 1, 0), .arms = 1,
 			  .bump_amount = 0.5, .accuracy = 0.02, .child = -1,
 			  .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
-			  .fractal_iterations = 1, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0,
+			  .fractal_iterations = 1, .fractal_exponent = 2, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0,
 			  .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0,
 			  .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}};
 	n.wave = kind == PATTERN_MARBLE || kind == PATTERN_WOOD || kind == PATTERN_SPIRAL1 || kind == PATTERN_SPIRAL2

@@ -49,13 +49,18 @@ typedef enum pattern_kind {
 	PATTERN_FACETS, /* a normal's only: the normal quantised (or the point's cells' noise: coords) */
 	PATTERN_TILING, /* POV-Ray's 27 tilings of the x-z plane */
 	PATTERN_MATERIAL_MAP, /* a block pattern: an image's palette index (or red) picks the entry */
+	PATTERN_OBJECT, /* a block pattern: entry 1 inside an object, 0 outside (pattern_node.fn) */
 	PATTERN_KIND_COUNT
 } pattern_kind;
 
 /* POV-Ray's wave types (ContinuousPattern::Evaluate). */
 typedef enum pattern_wave { WAVE_RAMP, WAVE_TRIANGLE, WAVE_SINE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY } pattern_wave;
 
-typedef enum pattern_warp_kind { WARP_TRANSFORM, WARP_TURBULENCE, WARP_REPEAT, WARP_BLACK_HOLE } pattern_warp_kind;
+/* In the order of scene/pigment.h's scene_warp_kind. */
+typedef enum pattern_warp_kind {
+	WARP_TRANSFORM, WARP_TURBULENCE, WARP_REPEAT, WARP_BLACK_HOLE,
+	WARP_PLANAR, WARP_CYLINDRICAL, WARP_SPHERICAL, WARP_TOROIDAL, WARP_CUBIC
+} pattern_warp_kind;
 
 /* Turbulence's parameters (POV-Ray's defaults: octaves 6, omega 0.5, lambda 2). */
 typedef struct pattern_turb {
@@ -75,6 +80,9 @@ typedef struct pattern_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 uncertainty; /* WARP_BLACK_HOLE: turbulence, the repeated centres' random offsets */
+	dvec3 orientation; /* the mapping warps: unit; dist_exp, plane_offset, major_radius as POV-Ray's */
+	double dist_exp, plane_offset, major_radius;
 } pattern_warp;
 
 /* One entry of a colour map, a pigment map or a block pattern's list: a colour, or a node. */
@@ -105,6 +113,7 @@ typedef struct pattern_node {
 	dvec3 crackle_form; /* crackle: weights of the three nearest distances (default <-1, 1, 0>) */
 	double crackle_metric, crackle_offset; /* crackle: the distance's exponent (2), its offset (0) */
 	int fractal_iterations;		       /* mandel, julia: the iterations limit */
+	int fractal_exponent;		       /* mandel, julia: E of z^E + c, 2..33 */
 	double julia_c[2];		       /* julia's c (and a julia magnet's) */
 	int magnet_type;		       /* magnet: 1 or 2 */
 	bool slope_map; /* a normal's slope_map: the entries' color[0] heights, color[1] slopes */
@@ -118,7 +127,7 @@ typedef struct pattern_node {
 	pattern_turb turb;     /* its classic turbulence (amount 0: none) */
 	double bump_amount, accuracy; /* a normal's: its amount (0.5) and slope step (0.02) */
 	int32_t child;	   /* PATTERN_PIGMENT_PATTERN: its pigment's node (-1: none, value 0) */
-	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0) */
+	scene_fn fn;	   /* PATTERN_FUNCTION: the function (eval NULL, or failing: value 0); PATTERN_OBJECT: the inside */
 	/* slope: its unit direction (point_at: the point) and weight, the altitude's unit direction
 	 * and weight, each one's low and width (0: none given) */
 	dvec3 slope_dir, altit_dir;

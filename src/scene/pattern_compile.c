@@ -40,7 +40,10 @@ static pattern_warp warp_of(const scene_warp *s)
 {
 	pattern_warp w = {.kind = (pattern_warp_kind)s->kind, .xf = s->xf, .axis = s->axis, .width = s->width,
 			  .offset = s->offset, .flip = s->flip, .center = s->center, .radius = s->radius,
-			  .strength = s->strength, .falloff = s->falloff, .inverse = s->inverse, .repeat = s->repeat};
+			  .strength = s->strength, .falloff = s->falloff, .inverse = s->inverse, .repeat = s->repeat,
+			  .uncertainty = s->uncertainty,
+			  .orientation = s->orientation, .dist_exp = s->dist_exp, .plane_offset = s->plane_offset,
+			  .major_radius = s->major_radius};
 	w.turb = (pattern_turb){s->turb.amount, s->turb.octaves, s->turb.omega, s->turb.lambda};
 	return w;
 }
@@ -55,6 +58,7 @@ static pattern_node node_of(const scene_pigment *pg)
 	n.vector = pg->vector, n.mortar = pg->mortar, n.control0 = pg->control0, n.control1 = pg->control1;
 	n.arms = pg->arms, n.agate_turb = pg->agate_turb, n.solid = pg->solid;
 	n.crackle_form = pg->crackle_form, n.crackle_metric = pg->crackle_metric, n.crackle_offset = pg->crackle_offset;
+	n.fractal_exponent = pg->fractal_exponent;
 	n.fractal_iterations = pg->fractal_iterations, n.julia_c[0] = pg->julia_c[0], n.julia_c[1] = pg->julia_c[1];
 	n.fractal_exterior = pg->fractal_exterior, n.fractal_interior = pg->fractal_interior;
 	n.magnet_type = pg->magnet_type, n.magnet_julia = pg->magnet_julia, n.slope_map = pg->slope_map;

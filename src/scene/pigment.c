@@ -21,7 +21,7 @@ scene_pattern_kind scene_pattern_find(const char *s, size_t n)
 
 int scene_pattern_blocks(scene_pattern_kind k)
 {
-	return k == SCENE_PAT_CHECKER || k == SCENE_PAT_BRICK ? 2 : k == SCENE_PAT_HEXAGON ? 3 : 0;
+	return k == SCENE_PAT_CHECKER || k == SCENE_PAT_BRICK || k == SCENE_PAT_OBJECT ? 2 : k == SCENE_PAT_HEXAGON ? 3 : 0;
 }
 
 /* POV-Ray 3.7's constructors (source/core/material/pattern.cpp): ContinuousPattern's ramp wave
@@ -35,7 +35,7 @@ scene_pigment scene_pigment_defaults(scene_pattern_kind k, diag_loc loc)
 			   .bump_amount = 0.5, .accuracy = 0.02, .mortar = 0.5 - 2.0e-10, .control0 = 1.0, .control1 = 1.0, .agate_turb = 1.0, .arms = 1,
 			   .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0},
 			   .crackle_form = d3(-1, 1, 0), .crackle_metric = 2.0,
-			   .fractal_iterations = 1, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0};
+			   .fractal_iterations = 1, .fractal_exponent = 2, .fractal_exterior = 1, .exterior_factor = 1.0, .interior_factor = 1.0};
 	if (k == SCENE_PAT_MARBLE || k == SCENE_PAT_WOOD || k == SCENE_PAT_SPIRAL1 || k == SCENE_PAT_SPIRAL2)
 		p.wave = SCENE_WAVE_TRIANGLE;
 	if (k == SCENE_PAT_QUILTED)
@@ -116,6 +116,8 @@ void scene_pigment_dump(FILE *o, const scene_pigment *pg)
 			fprintf(o, " c <%g, %g> iterations %d exterior %d %g interior %d %g", pg->julia_c[0], pg->julia_c[1],
 				pg->fractal_iterations, pg->fractal_exterior, pg->exterior_factor, pg->fractal_interior,
 				pg->interior_factor);
+		if ((pg->kind == SCENE_PAT_MANDEL || pg->kind == SCENE_PAT_JULIA) && pg->fractal_exponent != 2)
+			fprintf(o, " exponent %d", pg->fractal_exponent); /* only then: older dumps stay as they were */
 	}
 	if (pg->turb.amount.x != 0.0 || pg->turb.amount.y != 0.0 || pg->turb.amount.z != 0.0)
 		fprintf(o, " turbulence <%g, %g, %g> octaves %d omega %g lambda %g", pg->turb.amount.x, pg->turb.amount.y,

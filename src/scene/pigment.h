@@ -28,7 +28,8 @@
 	X(LAYERS, "(layers)") X(AVERAGE, "average")   \
 	X(MANDEL, "mandel") X(JULIA, "julia") X(MAGNET, "magnet") X(SLOPE, "slope")   \
 	X(DENSITY_FILE, "density_file") X(IMAGE_PATTERN, "image_pattern")    \
-	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")
+	X(FACETS, "facets") X(TILING, "tiling") X(MATERIAL_MAP, "material_map")          \
+	X(OBJECT, "object")
 
 typedef enum scene_pattern_kind {
 #define SCENE_PAT_ENUM(e, s) SCENE_PAT_##e,
@@ -49,7 +50,10 @@ typedef struct scene_turb {
 } scene_turb;
 
 typedef enum scene_warp_kind {
-	SCENE_WARP_TRANSFORM, SCENE_WARP_TURBULENCE, SCENE_WARP_REPEAT, SCENE_WARP_BLACK_HOLE
+	SCENE_WARP_TRANSFORM, SCENE_WARP_TURBULENCE, SCENE_WARP_REPEAT, SCENE_WARP_BLACK_HOLE,
+	/* POV-Ray's mapping warps (warp.cpp): the point mapped onto a plane, a cylinder, a sphere, a
+	 * torus or a cube's net */
+	SCENE_WARP_PLANAR, SCENE_WARP_CYLINDRICAL, SCENE_WARP_SPHERICAL, SCENE_WARP_TOROIDAL, SCENE_WARP_CUBIC
 } scene_warp_kind;
 
 typedef struct scene_warp {
@@ -64,6 +68,11 @@ typedef struct scene_warp {
 	double radius, strength, falloff;
 	bool inverse;
 	dvec3 repeat;
+	dvec3 uncertainty; /* BLACK_HOLE's turbulence: each repeated centre moved by up to it */
+	dvec3 orientation; /* the mapping warps': unit, <0, 0, 1> by default */
+	double dist_exp;   /* cylindrical, spherical, toroidal: 0 */
+	double plane_offset; /* planar: 0 */
+	double major_radius; /* toroidal: 1 */
 } scene_warp;
 
 struct scene_pigment;
@@ -105,6 +114,7 @@ typedef struct scene_pigment {
 	double crackle_metric;	     /* crackle's metric: the exponent of its distance, 2 */
 	double crackle_offset;	     /* crackle's offset: added to each distance (in the metric), 0 */
 	int fractal_iterations;	     /* mandel, julia: the iterations limit, >= 1 */
+	int fractal_exponent;	     /* mandel, julia: z^E + c, E in 2..33 (POV-Ray's), default 2 */
 	double julia_c[2];	     /* julia: the constant c = <re, im> */
 	int magnet_type;	     /* magnet: 1 or 2 */
 	bool magnet_julia;	     /* magnet: julia's form (z starts at the point, c given), else mandel's */
@@ -122,7 +132,7 @@ typedef struct scene_pigment {
 	bool is_normal;	  /* a normal { }: the pattern perturbs the shading normal */
 	double bump_amount, accuracy; /* a normal's amount (POV-Ray's 0.5) and slope step (0.02) */
 	bool block_list;  /* entries are a block pattern's list */
-	scene_fn fn;	  /* FUNCTION: its function */
+	scene_fn fn;	  /* FUNCTION: its function; OBJECT: its object's inside (1 inside, 0 outside) */
 	bool slope_map;	  /* a normal's slope_map: each entry's color[0] a height, color[1] its slope */
 	/* SLOPE, as POV-Ray's parser leaves it: the unit direction (point_at: the point) and its
 	 * weight, the altitude's unit direction and weight (the weights add to 1), each one's low and

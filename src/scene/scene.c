@@ -606,7 +606,7 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 {
 	static const char *const types[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
 					    "panoramic", "cylinder 1", "cylinder 2", "cylinder 3",
-					    "cylinder 4", "spherical"};
+					    "cylinder 4", "spherical", "omnimax"};
 	if (c->type != SCENE_CAM_PERSPECTIVE)
 		fprintf(o, " %s", types[c->type]);
 	if (c->type == SCENE_CAM_SPHERICAL)
@@ -662,6 +662,11 @@ void scene_dump(const scene *s, FILE *o)
 			dump_d3(o, "focal_point", c->focal_point);
 		dump_camera_more(o, c);
 		fputc('\n', o);
+		if (c->normal) { /* only then: older dumps stay as they were */
+			fprintf(o, "  normal ");
+			scene_pigment_dump(o, c->normal);
+			fputc('\n', o);
+		}
 	}
 	if (s->has_background) {
 		fprintf(o, "background");

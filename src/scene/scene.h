@@ -17,7 +17,7 @@
 typedef enum scene_cam_type {
 	SCENE_CAM_PERSPECTIVE, SCENE_CAM_ORTHOGRAPHIC, SCENE_CAM_FISHEYE, SCENE_CAM_ULTRA_WIDE_ANGLE,
 	SCENE_CAM_PANORAMIC, SCENE_CAM_CYLINDER_1, SCENE_CAM_CYLINDER_2, SCENE_CAM_CYLINDER_3,
-	SCENE_CAM_CYLINDER_4, SCENE_CAM_SPHERICAL,
+	SCENE_CAM_CYLINDER_4, SCENE_CAM_SPHERICAL, SCENE_CAM_OMNIMAX,
 } scene_cam_type;
 
 typedef struct scene_camera {
@@ -33,6 +33,10 @@ typedef struct scene_camera {
 	double v_angle_deg; /* spherical's vertical angle */
 	bool has_xform; /* translate/rotate/scale/matrix on the camera, applied last */
 	xform xf;
+	/* POV-Ray's camera normal { }: a normal pattern perturbing each camera ray's direction, at
+	 * the image point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]); NULL: none */
+	const struct scene_pigment *normal;
+	diag_loc normal_loc;
 } scene_camera;
 
 typedef enum scene_light_kind {

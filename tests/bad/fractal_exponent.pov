@@ -1,2 +1,2 @@
-// circe has the fractals of exponent 2 only.
-sphere { 0, 1 pigment { mandel 20 exponent 3 } }
+// a fractal's exponent belongs to mandel and julia (POV-Ray's magnets have none)
+sphere { 0, 1 pigment { magnet 1 mandel 20 exponent 3 } }

@@ -12,8 +12,8 @@
 #declare C = color rgb <1, 0.5, 0.25>;
 // rule: deprecation
 #declare deprecated once "use Ball" OldBall = 1;
-// rule: block_value
-#declare Ball = sphere { 0, 1 }
+// rule: block_value, trace_call, inside_call, object_ref
+#declare Ball = sphere { 0, 1 } #declare TraceN = <0, 0, 0>; #declare TraceP = trace(Ball, <0, 0, -5>, z, TraceN); #declare InBall = inside(Ball, 0); #declare ObjPig = pigment { object { Ball color rgb 0 color rgb 1 } }
 // rule: if, token
 #if (A < 0) sphere { 0, 2 } #else sphere { 0, 3 } #end
 // rule: ifdef, undef
@@ -100,8 +100,8 @@ object { Balls[0] }
 // rule: pigment_body, pattern, block_pattern, block_item, pattern_modifier, turb_param, wave, colour_map, colour_entry
 sphere { 0, 1 pigment { checker rgb 1, pigment { bozo turbulence 0.5 octaves 3 omega 0.6 lambda 2.5 poly_wave 2 } } }
 sphere { 0, 1 pigment { marble frequency 2 phase 0.1 colour_map { [0 rgb 0] [0.5, 0.7 rgb 1 rgb 0.5] [1 rgb <1, 0, 0>] } scale 2 } }
-// rule: pigment_map, pigment_entry, warp, repeat_item, black_hole_item
-#declare Cm = color_map { [0 rgb 0] [1 rgb 1] };
+// rule: pigment_map, pigment_entry, warp, repeat_item, black_hole_item, mapping_item
+#declare Cm = color_map { [0 rgb 0] [1 rgb 1] }; #declare WarpPig = pigment { checker warp { toroidal orientation y dist_exp 1 major_radius 2 } warp { planar y, 1 } warp { cubic } }
 sphere { 0, 1 pigment { gradient y pigment_map { [0 checker rgb 0, rgb 1] [1 Paint0] } warp { repeat x offset y flip x } warp { black_hole 0, 1 strength 2 falloff 1 inverse repeat 1 } warp { turbulence 0.2 octaves 2 } } }
 sphere { 0, 1 pigment { wood color_map { Cm } brick_size 2 mortar 0.1 agate_turb 1 control0 0 control1 1 quick_color rgb 1 uv_mapping } }
 sphere { 0, 1 material { marble { pigment { granite scale < 2 1 1 > } } } }

@@ -153,8 +153,72 @@ static double angle_deg(vec3 a, vec3 b)
 	return acos(c > 1 ? 1 : c < -1 ? -1 : c) * 180.0 / M_PI;
 }
 
+/* A camera normal's callback for the test: tilts the direction by (x0, y0) along the camera's
+ * right and up, and records what it was given. */
+static float seen_x0, seen_y0;
+static void tilt(const void *user, float x0, float y0, vec3 *d)
+{
+	const cam *c = user;
+	seen_x0 = x0, seen_y0 = y0;
+	*d = v3_add(*d, v3_add(v3_scale(c->right, 0.3f * x0), v3_scale(c->up, 0.3f * y0)));
+}
+
+/* POV-Ray's camera normal (cam.perturb): called with the image point in [-0.5, 0.5] (+y up), the
+ * ray's direction perturbed and normalised, its origin unchanged. */
+static void test_perturb(void)
+{
+	cam c;
+	cam_params p = cam_params_default();
+	p.location = d3(0, 1, -4);
+	p.look_at = d3(0, 1, 0);
+	for (int type = 0; type < 2; type++) {
+		p.type = type ? CAM_ORTHOGRAPHIC : CAM_PERSPECTIVE;
+		CHECK(cam_init(&c, &p, 200, 100), "cam_init");
+		render_ray plain = cam_ray(&c, 150, 20, v2(0.5f, 0.5f), v2(0, 0));
+		c.perturb = tilt, c.perturb_user = &c;
+		render_ray bent = cam_ray(&c, 150, 20, v2(0.5f, 0.5f), v2(0, 0));
+		c.perturb = NULL;
+		CHECK_NEAR(seen_x0, 150.5 / 200 - 0.5, 1e-6);
+		CHECK_NEAR(seen_y0, 0.5 - 20.5 / 100, 1e-6);
+		vec3 want = v3_normalize(v3_add(plain.d, v3_add(v3_scale(c.right, 0.3f * seen_x0), v3_scale(c.up, 0.3f * seen_y0))));
+		CHECK(angle_deg(bent.d, want) < 1e-3, "type %d: the bent ray (%g %g %g), want (%g %g %g)", type, bent.d.x,
+		      bent.d.y, bent.d.z, want.x, want.y, want.z);
+		CHECK(angle_deg(bent.d, plain.d) > 1.0, "type %d: the ray is bent", type);
+		CHECK(v3_length(v3_sub(bent.o, plain.o)) < 1e-6f, "type %d: the origin stays", type);
+		CHECK_NEAR(v3_length(bent.d), 1.0, 1e-5);
+	}
+}
+
+/* POV-Ray's omnimax (tracepixel.cpp): the image centre looks forward; at image radius r (in its
+ * 4:3 frame fitted to 1.283458) the ray is 1.411269 r - 0.09439 r^3 + 0.25674 r^5 radians off the
+ * axis; no ray outside the unit circle, nor more than 45 degrees below the axis. */
+static void test_omnimax(void)
+{
+	cam c;
+	cam_params p = cam_params_default();
+	p.location = d3(0, 0, 0);
+	p.look_at = d3(0, 0, 1);
+	p.type = CAM_OMNIMAX;
+	CHECK(cam_init(&c, &p, 400, 400), "cam_init omnimax");
+	render_ray r;
+	/* the axis lies below the image's centre, at sy = 1 - 1.283458: pixel row 256.69 of 400 */
+	CHECK(cam_sample(&c, 199, 256, v2(1, 0.6917f), v2(0, 0), &r) && angle_deg(r.d, c.forward) < 2e-2,
+	      "omnimax axis: %g degrees off", angle_deg(r.d, c.forward));
+	/* along +x from the centre: sx = 0.5 is x = 0.5 * (4/3) / 1.283458 in the dome's frame */
+	CHECK(cam_sample(&c, 299, 199, v2(1, 1), v2(0, 0), &r), "omnimax at sx 0.5");
+	double x = 0.5 * (4.0 / 3.0) / 1.283458, y = (0.0 - 1.0) / 1.283458 + 1.0, rad = sqrt(x * x + y * y);
+	double th = 1.411269 * rad - 0.09439 * pow(rad, 3) + 0.25674 * pow(rad, 5);
+	CHECK_NEAR(angle_deg(r.d, c.forward), th * 180 / M_PI, 2e-2);
+	CHECK(!cam_sample(&c, 0, 0, v2(0, 0), v2(0, 0), &r), "omnimax: no ray in the corner");
+	/* the top edge's middle: r = 1, 1.411269 - 0.09439 + 0.25674 radians (90.16 degrees) above the axis */
+	CHECK(cam_sample(&c, 199, 0, v2(1, 0), v2(0, 0), &r) && r.d.y > 0, "omnimax top");
+	CHECK_NEAR(angle_deg(r.d, c.forward), (1.411269 - 0.09439 + 0.25674) * 180 / M_PI, 2e-2);
+}
+
 int main(void)
 {
+	test_perturb();
+	test_omnimax();
 	cam c;
 	cam_params p = cam_params_default();
 	p.location = d3(1, 2, -5);

@@ -266,6 +266,21 @@ static void test_delta_and_set(void)
 		      ok ? ls.li.x : 0.0, want);
 	}
 
+	/* A cone wider than a half-space (POV-Ray's laser.pov: radius 50, falloff 110): the spline
+	 * reaches down to cos 110 < 0, but nothing behind the light's plane is lit (POV-Ray's
+	 * Attenuate_Light: cos theta > 0). */
+	light wide = light_spot(v3(0, 1, 0), v3(0, 0, 0), v3s(1), 50, 110);
+	for (float deg = 40; deg <= 130; deg += 10) {
+		float r = deg * RENDER_PI / 180;
+		vec3 q = v3(sinf(r), 1 - cosf(r), 0);
+		bool ok = light_sample_from(&wide, q, v3s(0), v2(0, 0), &ls);
+		float c50 = cosf(50 * RENDER_PI / 180), c110 = cosf(110 * RENDER_PI / 180),
+		      t = (cosf(r) - c110) / (c50 - c110);
+		double want = deg <= 50 ? 1.0 : deg >= 90 ? 0.0 : t * t * (3 - 2 * t);
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "wide spot at %g deg: %g, want %g", deg,
+		      ok ? ls.li.x : 0.0, want);
+	}
+
 	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));
 	CHECK(light_sample_from(&par, v3(5, 5, 5), v3s(0), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
 	CHECK(fabsf(ls.wi.y - sqrtf(0.5f)) < 1e-6f && fabsf(ls.wi.z + sqrtf(0.5f)) < 1e-6f && ls.li.y == 3.0f,

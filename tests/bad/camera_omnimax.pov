@@ -1,1 +1,0 @@
-camera { omnimax location <0, 0, -5> }

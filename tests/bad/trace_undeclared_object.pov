@@ -1,0 +1,2 @@
+// trace of a name never declared
+#declare P = trace(Obj, <0, 0, 0>, x);
