@@ -92,15 +92,25 @@ void sss_auto_slab_tr(const sss_auto_slab *s, int c, double L_mm, double *t, dou
 double sss_auto_light_share(const sss_auto_slab *s, double e_near, double e_far, double L_mm)
 {
 	double far = e_far > 0.0 ? e_far : 0.0, near = e_near > 0.0 ? e_near : 0.0; /* NaN or <= 0: unlit */
-	if (!(far > 0.0))
-		return 0.0;
-	double f = 0.0;
+	if (!(far > 0.0) || !(L_mm < INFINITY))
+		return 0.0; /* an unlit far side, or T = 0 in every channel */
+	if (!(near > 0.0))
+		return 1.0; /* all of the light is the far side's */
+	/* f_c = far T / (near R + far T) = 1 / (1 + (near / far) (R / T)): only the ratio R / T of
+	 * each channel, e^{k (d - 2 s)} (1 - e^{-2 k (d - s)}) / (1 - e^{-2 k s}) by
+	 * sss_auto_slab_tr's formula, two exponentials where T and R take five (issue 21: the light
+	 * share was 4.5 % of the wax sphere's render under auto, where nothing walks). */
+	double L = fmax(0.0, L_mm), ratio = near / far, f = 0.0;
 	for (int c = 0; c < 3; c++) {
-		double t, r;
-		sss_auto_slab_tr(s, c, L_mm, &t, &r);
-		double a = far * t, b = near * r + a;
-		if (b > 0.0)
-			f = fmax(f, a / b);
+		double k = s->sigma_tr[c], d = L + s->ext[c], src = fmin(s->src[c], d), rt;
+		if (!(k * d > 1e-6))
+			rt = src > 0.0 ? (d - src) / src : INFINITY; /* the linear limit */
+		else
+			rt = src > 0.0 ? exp(k * (d - 2.0 * src)) * -expm1(-2.0 * k * (d - src)) / -expm1(-2.0 * k * src)
+				       : INFINITY;
+		double fc = 1.0 / (1.0 + ratio * rt); /* rt = +Inf: 0 */
+		if (fc > f)
+			f = fc;
 	}
 	return f;
 }

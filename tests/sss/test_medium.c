@@ -290,6 +290,22 @@ static void check_auto_light(void)
 	CHECK_NEAR(sss_auto_light_share(&sl, 1.0, 40.0, 4.0), f_max, 1e-15); /* the largest channel's */
 	CHECK(sss_auto_light_share(&sl, 2.0, 5.0, -1.0) == sss_auto_light_share(&sl, 2.0, 5.0, 0.0),
 	      "L < 0 counts as 0");
+	/* the share from R/T alone (issue 21's cheaper form) against far T / (near R + far T) from
+	 * sss_auto_slab_tr, over thicknesses from 0 to 1 m and light ratios from 1e-4 to 1e4 */
+	double worst = 0.0;
+	for (double L = 0.0; L < 1000.0; L = L * 1.5 + 0.01)
+		for (double q = 1e-4; q < 1e4; q *= 3.0) {
+			double want = 0.0;
+			for (int c = 0; c < 3; c++) {
+				double tc, rc;
+				sss_auto_slab_tr(&sl, c, L, &tc, &rc);
+				want = fmax(want, q * tc / (rc + q * tc));
+			}
+			worst = fmax(worst, fabs(sss_auto_light_share(&sl, 1.0, q, L) - want));
+		}
+	CHECK(worst < 1e-13, "the share by R/T agrees with T and R: largest difference %g", worst);
+	CHECK(sss_auto_light_share(&sl, 1.0, 5.0, INFINITY) == 0.0 && sss_auto_light_share(&sl, 0.0, 5.0, INFINITY) == 0.0,
+	      "a half space lets nothing through, lit or not");
 	/* no absorption: everything leaves, T + R = 1, linear in L */
 	const double none[3] = {0.0, 0.0, 0.0};
 	CHECK(sss_auto_slab_make(&sl, ss, none, 1.4), "the slab without absorption");
