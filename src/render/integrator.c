@@ -561,6 +561,10 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
 			p *= sss_auto_light_prob(sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
 		}
+		/* thinner than the profile's own reach: the walk, lit from either side (the larger of
+		 * the two probabilities: continuous where both are) */
+		if (hit && p < 1.0)
+			p = fmax(p, sss_auto_thin_prob(thick, m->auto_tail_walk, m->auto_tail_circle));
 		p_walk = (float)p;
 	}
 	/* the search's fifth number: neither circle (its first three) nor the walk (a stream keyed by

@@ -115,6 +115,42 @@ double sss_auto_light_share(const sss_auto_slab *s, double e_near, double e_far,
 	return f;
 }
 
+/* The largest tail 1 - CDF(L) over the channels that carry light. */
+static double tail_at(const sss_profile *p, double L)
+{
+	double t = 0.0;
+	for (int c = 0; c < 3; c++)
+		if (p->ch[c].albedo > 0.0)
+			t = fmax(t, 1.0 - sss_channel_cdf(&p->ch[c], L));
+	return t;
+}
+
+double sss_auto_tail_thickness(const sss_profile *p, double tail)
+{
+	/* the tail falls with L and is 0 from the largest r_max on: bisection to a double's resolution */
+	double lo = 0.0, hi = sss_profile_r_max(p);
+	if (!(tail_at(p, 0.0) > tail))
+		return 0.0;
+	for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; i++) {
+		double mid = 0.5 * (lo + hi);
+		if (tail_at(p, mid) > tail)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return hi;
+}
+
+double sss_auto_thin_prob(double L, double l_walk, double l_circle)
+{
+	if (!(l_circle > 0.0) || L >= l_circle)
+		return 0.0;
+	if (!(L > l_walk)) /* NaN too */
+		return 1.0;
+	double x = log(L / l_walk) / log(l_circle / l_walk);
+	return 1.0 - x * x * (3.0 - 2.0 * x);
+}
+
 const char *sss_profile_name(sss_profile_kind k)
 {
 	return (unsigned)k < SSS_PROFILE_KINDS ? profile_names[k] : "?";
