@@ -529,10 +529,12 @@ static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
 
 /* auto (src/sss/README.md, "auto"): the thickness of the object below the exit, by one ray along
  * the inward geometric normal on the SSS volume alone, in diffuse mean free paths l_d, sets the
- * geometric probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 8 l_d on, smooth
+ * geometric probability of the walk (sss_auto_walk_prob: 1 below 5 l_d, 0 from 10 l_d on, smooth
  * between); where it is not 0, the share of the exit's light that comes from the far side where
  * the ray left (sss_auto_light_share of the two sides' unshadowed irradiance) multiplies it by
  * sss_auto_light_prob (0 below 1 %, 1 from 10 %): the walk only where light reaches the far side.
+ * Where the object is thinner than the profile's own reach (sss_auto_thin_prob: its tail from 5 %
+ * to 2 %), the walk whatever the light, the larger of the two probabilities.
  * Circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
  * The choice draws its own sampler dimension, and only where the probability is strictly between
  * 0 and 1, so a thick object (or a thin one lit from the front only) renders exactly as under
