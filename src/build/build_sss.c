@@ -128,6 +128,12 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	r->auto_walk = r->method == SSS_METHOD_AUTO && !r->auto_open; /* check_volumes ran first */
 	if (r->method == SSS_METHOD_AUTO && !sss_auto_slab_make(&r->auto_slab, ss_mm, sa_mm, ss->ior))
 		r->auto_walk = false; /* no extinction: sss_walk_medium_from_reduced refused it above */
+	/* the profile's tail (sss/medium.h): where the object is thinner than that, the walk whatever
+	 * the light; never beyond the thickness ray's reach */
+	double reach_mm = SSS_AUTO_CIRCLE_ABOVE * ld;
+	r->auto_tail_walk = (float)(fmin(reach_mm, sss_auto_tail_thickness(&r->profile, SSS_AUTO_TAIL_WALK)) * r->units_per_mm);
+	r->auto_tail_circle =
+		(float)(fmin(reach_mm, sss_auto_tail_thickness(&r->profile, SSS_AUTO_TAIL_CIRCLE)) * r->units_per_mm);
 	/* f_t's c (DESIGN.md): integral of (1 - F(mu)) mu dmu over the outside hemisphere, times 2,
 	 * is 1 - 2 FM1(eta) with FM1 of light arriving from outside (sss_fresnel_moment1's eta =
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */

@@ -532,10 +532,12 @@ static double auto_irradiance(const render_scene *s, vec3 p, vec3 n, float wrap)
 
 /* auto (src/sss/README.md, "auto"): the thickness of the object below the exit, by one ray along
  * the inward geometric normal on the SSS volume alone, in diffuse mean free paths l_d, sets the
- * geometric probability of the walk (sss_auto_walk_prob: 1 below 4 l_d, 0 from 8 l_d on, smooth
+ * geometric probability of the walk (sss_auto_walk_prob: 1 below 5 l_d, 0 from 10 l_d on, smooth
  * between); where it is not 0, the share of the exit's light that comes from the far side where
  * the ray left (sss_auto_light_share of the two sides' unshadowed irradiance) multiplies it by
  * sss_auto_light_prob (0 below 1 %, 1 from 10 %): the walk only where light reaches the far side.
+ * Where the object is thinner than the profile's own reach (sss_auto_thin_prob: its tail from 5 %
+ * to 2 %), the walk whatever the light, the larger of the two probabilities.
  * Circle tracing otherwise. The ray stops at the band's far end: beyond it the answer is circle.
  * The choice draws its own sampler dimension, and only where the probability is strictly between
  * 0 and 1, so a thick object (or a thin one lit from the front only) renders exactly as under
@@ -564,6 +566,10 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
 			p *= sss_auto_light_prob(sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
 		}
+		/* thinner than the profile's own reach: the walk, lit from either side (the larger of
+		 * the two probabilities: continuous where both are) */
+		if (hit && p < 1.0)
+			p = fmax(p, sss_auto_thin_prob(thick, m->auto_tail_walk, m->auto_tail_circle));
 		p_walk = (float)p;
 	}
 	/* the search's fifth number: neither circle (its first three) nor the walk (a stream keyed by

@@ -69,6 +69,8 @@ typedef struct render_sss {
 	sss_walk_medium medium; /* volume and auto: the medium's coefficients per scene unit */
 	float auto_ld;	     /* the largest channel's diffuse mean free path l_d, in scene units */
 	sss_auto_slab auto_slab; /* auto's light factor: the diffusion slab of the medium (sss/medium.h) */
+	float auto_tail_walk, auto_tail_circle; /* auto's profile tail: the thicknesses, scene units, where
+						 * the profile's tail is SSS_AUTO_TAIL_WALK and _CIRCLE */
 	bool auto_walk;	     /* auto may walk: every object of the material is closed */
 	bool auto_open;	     /* the build's: an object of this material under auto is open */
 	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */

@@ -92,17 +92,63 @@ void sss_auto_slab_tr(const sss_auto_slab *s, int c, double L_mm, double *t, dou
 double sss_auto_light_share(const sss_auto_slab *s, double e_near, double e_far, double L_mm)
 {
 	double far = e_far > 0.0 ? e_far : 0.0, near = e_near > 0.0 ? e_near : 0.0; /* NaN or <= 0: unlit */
-	if (!(far > 0.0))
-		return 0.0;
-	double f = 0.0;
+	if (!(far > 0.0) || !(L_mm < INFINITY))
+		return 0.0; /* an unlit far side, or T = 0 in every channel */
+	if (!(near > 0.0))
+		return 1.0; /* all of the light is the far side's */
+	/* f_c = far T / (near R + far T) = 1 / (1 + (near / far) (R / T)): only the ratio R / T of
+	 * each channel, e^{k (d - 2 s)} (1 - e^{-2 k (d - s)}) / (1 - e^{-2 k s}) by
+	 * sss_auto_slab_tr's formula, two exponentials where T and R take five (issue 21: the light
+	 * share was 4.5 % of the wax sphere's render under auto, where nothing walks). */
+	double L = fmax(0.0, L_mm), ratio = near / far, f = 0.0;
 	for (int c = 0; c < 3; c++) {
-		double t, r;
-		sss_auto_slab_tr(s, c, L_mm, &t, &r);
-		double a = far * t, b = near * r + a;
-		if (b > 0.0)
-			f = fmax(f, a / b);
+		double k = s->sigma_tr[c], d = L + s->ext[c], src = fmin(s->src[c], d), rt;
+		if (!(k * d > 1e-6))
+			rt = src > 0.0 ? (d - src) / src : INFINITY; /* the linear limit */
+		else
+			rt = src > 0.0 ? exp(k * (d - 2.0 * src)) * -expm1(-2.0 * k * (d - src)) / -expm1(-2.0 * k * src)
+				       : INFINITY;
+		double fc = 1.0 / (1.0 + ratio * rt); /* rt = +Inf: 0 */
+		if (fc > f)
+			f = fc;
 	}
 	return f;
+}
+
+/* The largest tail 1 - CDF(L) over the channels that carry light. */
+static double tail_at(const sss_profile *p, double L)
+{
+	double t = 0.0;
+	for (int c = 0; c < 3; c++)
+		if (p->ch[c].albedo > 0.0)
+			t = fmax(t, 1.0 - sss_channel_cdf(&p->ch[c], L));
+	return t;
+}
+
+double sss_auto_tail_thickness(const sss_profile *p, double tail)
+{
+	/* the tail falls with L and is 0 from the largest r_max on: bisection to a double's resolution */
+	double lo = 0.0, hi = sss_profile_r_max(p);
+	if (!(tail_at(p, 0.0) > tail))
+		return 0.0;
+	for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; i++) {
+		double mid = 0.5 * (lo + hi);
+		if (tail_at(p, mid) > tail)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return hi;
+}
+
+double sss_auto_thin_prob(double L, double l_walk, double l_circle)
+{
+	if (!(l_circle > 0.0) || L >= l_circle)
+		return 0.0;
+	if (!(L > l_walk)) /* NaN too */
+		return 1.0;
+	double x = log(L / l_walk) / log(l_circle / l_walk);
+	return 1.0 - x * x * (3.0 - 2.0 * x);
 }
 
 const char *sss_profile_name(sss_profile_kind k)

@@ -60,6 +60,21 @@ double sss_auto_walk_prob(double m);
 #define SSS_AUTO_LIGHT_WRAP 0.5f
 #endif
 double sss_auto_light_prob(double f);
+/* The profile's tail (issue 21, src/sss/README.md "auto"): where the object below the exit is
+ * thinner than the distance within which the profile lays down all but a few per cent of its
+ * light, the profile's half space is not there whatever the light (the bench's lips, skin lit from
+ * the front, 2 to 3 l_d of red thick: circle -15 % against the walk). The walk is taken with
+ * probability at least sss_auto_thin_prob: 1 up to the thickness where the largest channel's tail
+ * 1 - CDF(L) is SSS_AUTO_TAIL_WALK, 0 from where it is SSS_AUTO_TAIL_CIRCLE on, and 1 - smoothstep
+ * of log L between (continuous with a continuous slope). */
+#define SSS_AUTO_TAIL_WALK 0.05
+#define SSS_AUTO_TAIL_CIRCLE 0.02
+/* The smallest thickness L (mm) at which every channel of albedo > 0 has 1 - CDF(L) <= tail
+ * (0 < tail < 1; 0 when no channel has an albedo). */
+double sss_auto_tail_thickness(const sss_profile *p, double tail);
+/* From the thickness L and the two thicknesses above (any one unit; l_walk <= l_circle): NaN or
+ * L <= l_walk gives 1, L >= l_circle (or l_circle <= 0) gives 0. */
+double sss_auto_thin_prob(double L, double l_walk, double l_circle);
 /* What a slab of the medium sends out of each side (src/sss/README.md, "auto": the diffusion
  * slab), per channel: the 1D diffusion solution between the extrapolated boundaries (zero
  * fluence at z_b = 2 A D outside each face, D = 1/(3 sigma_t'), A = (1 + F_dr)/(1 - F_dr) from the

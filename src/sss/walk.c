@@ -28,6 +28,12 @@
 #define WALK_REACH (8.0 * WALK_SKIN)
 #define WALK_WHOLE_EVERY 64
 
+/* fmax and fmin with their NaN rules (the number when one is NaN), inline: at -O2 without
+ * -ffinite-math-only the compiler calls libm's for them, a call per use in the walk's loop
+ * (issue 21's profile of the wax bunny under auto: 1.7 % of the render in __fmax). */
+static inline double walk_max(double a, double b) { return a > b || b != b ? a : b; }
+static inline double walk_min(double a, double b) { return a < b || b != b ? a : b; }
+
 
 bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
 				  const double sigma_a_per_mm[3], double g, double eta, double mm_per_unit)
@@ -57,8 +63,8 @@ vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2)
 		double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * u1);
 		mu = (1.0 + g * g - s * s) / (2.0 * g);
 	}
-	mu = fmax(-1.0, fmin(1.0, mu));
-	double sin_t = sqrt(fmax(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u2;
+	mu = walk_max(-1.0, walk_min(1.0, mu));
+	double sin_t = sqrt(walk_max(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u2;
 	vec3 b1, b2;
 	v3_basis(w, &b1, &b2);
 	vec3 d = v3_add(v3_scale(w, (float)mu),
@@ -76,15 +82,15 @@ static void walk_hero_probs(const sss_walk_medium *m, const double sigma_t[3], d
 {
 	double top = 0.0;
 	for (int c = 0; c < 3; c++) {
-		double a = sigma_t[c] > 0.0 ? m->sigma_s[c] / sigma_t[c] : 0.0, s = sqrt(fmax(0.0, 1.0 - a));
+		double a = sigma_t[c] > 0.0 ? m->sigma_s[c] / sigma_t[c] : 0.0, s = sqrt(walk_max(0.0, 1.0 - a));
 		q[c] = (1.0 - s) / (1.0 + s);
-		top = fmax(top, q[c]);
+		top = walk_max(top, q[c]);
 	}
 	if (!(top > 0.0))
 		top = q[0] = q[1] = q[2] = 1.0; /* nothing scatters: any channel */
 	double sum = 0.0;
 	for (int c = 0; c < 3; c++)
-		sum += q[c] = fmax(q[c], 0.1 * top);
+		sum += q[c] = walk_max(q[c], 0.1 * top);
 	for (int c = 0; c < 3; c++)
 		q[c] /= sum;
 }
@@ -146,7 +152,7 @@ static double dwivedi_pdf_mu(double nu, double log_nu, double mu)
 /* Its inverse CDF, Meng et al. 2016 eq. 10: mu = nu - (nu + 1) ((nu - 1)/(nu + 1))^u. */
 static double dwivedi_sample_mu(double nu, double log_nu, double u)
 {
-	return fmax(-1.0, fmin(1.0, nu - (nu + 1.0) * exp(-u * log_nu)));
+	return walk_max(-1.0, walk_min(1.0, nu - (nu + 1.0) * exp(-u * log_nu)));
 }
 
 /* The Henyey-Greenstein density per steradian of the cosine mu between the old and new
@@ -159,12 +165,11 @@ static double hg_pdf(double g, double mu)
 	return (1.0 - g * g) / (4.0 * WALK_PI * d * sqrt(d));
 }
 
-/* The unit direction at cosine mu from the unit axis n, azimuth 2 pi u. */
-static vec3 dir_about(vec3 n, double mu, double u)
+/* The unit direction at cosine mu from the unit axis n, azimuth 2 pi u, in n's basis b1, b2
+ * (v3_basis: the guide's axis is fixed for a walk, so its basis is made once). */
+static vec3 dir_about(vec3 n, vec3 b1, vec3 b2, double mu, double u)
 {
-	double s = sqrt(fmax(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u;
-	vec3 b1, b2;
-	v3_basis(n, &b1, &b2);
+	double s = sqrt(walk_max(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u;
 	return v3_normalize(v3_add(v3_scale(n, (float)mu),
 				   v3_add(v3_scale(b1, (float)(s * cos(phi))), v3_scale(b2, (float)(s * sin(phi))))));
 }
@@ -176,6 +181,7 @@ static vec3 dir_about(vec3 n, double mu, double u)
 typedef struct walk_guide {
 	bool on;
 	vec3 x, n;	   /* the entry point; the outward normal there */
+	vec3 b1, b2;	   /* n's basis (v3_basis), for the guided directions */
 	double nu, log_nu; /* nu, ln((nu + 1)/(nu - 1)) */
 	double frac;	   /* probability of the guided strategy at a scattering event */
 	double sigma_ref;  /* extinction of the reference channel, per scene unit */
@@ -201,11 +207,12 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	}
 	if (m->classic || !(a_max > 0.0))
 		return gd;
-	double nu = fmax(WALK_NU_MIN, sss_walk_dwivedi_nu(a_max));
+	double nu = walk_max(WALK_NU_MIN, sss_walk_dwivedi_nu(a_max));
 	if (!(nu < WALK_NU_MAX))
 		return gd;
 	gd.on = true;
 	gd.x = x, gd.n = n;
+	v3_basis(n, &gd.b1, &gd.b2);
 	gd.nu = nu;
 	gd.log_nu = log((nu + 1.0) / (nu - 1.0));
 	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic.
@@ -213,7 +220,7 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	 * WALK_FRAC_NU (issue 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
 	 * a stretch 1 - mu / nu), so the mixture's weights stay near 1 with little of the classic
 	 * strategy, and each step's pull to the surface, weak there, is not halved. */
-	gd.frac = 1.0 - fmax(0.5 * fmin(1.0, WALK_FRAC_NU / nu), pow(fabs(m->g), 0.125));
+	gd.frac = 1.0 - walk_max(0.5 * walk_min(1.0, WALK_FRAC_NU / nu), pow(fabs(m->g), 0.125));
 	gd.sigma_ref = sigma_t[ref];
 	return gd;
 }
@@ -226,7 +233,7 @@ static double walk_backward_frac(const walk_guide *gd, vec3 p)
 {
 	if (!(gd->far > 0.0))
 		return 0.0;
-	double x = fmax(0.0, fmin(gd->far, -(double)v3_dot(v3_sub(p, gd->x), gd->n)));
+	double x = walk_max(0.0, walk_min(gd->far, -(double)v3_dot(v3_sub(p, gd->x), gd->n)));
 	double e = (gd->far - 2.0 * x) * gd->sigma_ref / gd->nu;
 	return e > 700.0 ? 0.0 : 1.0 / (1.0 + exp(e));
 }
@@ -261,12 +268,12 @@ static vec3 walk_scatter(const sss_walk_medium *m, const walk_guide *gd, vec3 p,
 		mu = dwivedi_sample_mu(gd->nu, gd->log_nu, u1);
 		if (backward)
 			mu = -mu; /* the backward guide is the forward one mirrored through the tangent plane */
-		nw = dir_about(gd->n, mu, u2);
+		nw = dir_about(gd->n, gd->b1, gd->b2, mu, u2);
 	} else {
 		nw = sss_walk_sample_hg(w, m->g, u1, u2);
 	}
-	mu = fmax(-1.0, fmin(1.0, (double)v3_dot(nw, gd->n)));
-	double ph = hg_pdf(m->g, fmax(-1.0, fmin(1.0, (double)v3_dot(w, nw))));
+	mu = walk_max(-1.0, walk_min(1.0, (double)v3_dot(nw, gd->n)));
+	double ph = hg_pdf(m->g, walk_max(-1.0, walk_min(1.0, (double)v3_dot(w, nw))));
 	wd->f_fwd = dwivedi_pdf_mu(gd->nu, gd->log_nu, mu) / (2.0 * WALK_PI * ph);
 	wd->f_bwd = dwivedi_pdf_mu(gd->nu, gd->log_nu, -mu) / (2.0 * WALK_PI * ph);
 	wd->s_fwd = 1.0 - mu / gd->nu;
@@ -346,7 +353,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		 * wandering in the void. */
 		float reach = INFINITY;
 		if (res.steps % WALK_WHOLE_EVERY != 0 && t < INFINITY)
-			reach = (float)(t + WALK_REACH * fmax(last_scale, fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)))));
+			reach = (float)(t + WALK_REACH * walk_max(last_scale, walk_max(fabs(org.x), walk_max(fabs(org.y), fabs(org.z)))));
 		bvh_ray ray = {org, w, 0.0f, reach};
 		sss_probe_hit h;
 		bool hit = pr->closest(pr->ctx, &ray, &h);
@@ -357,17 +364,17 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		if (!hit) /* nothing within reach: the free path ends inside, a collision */
 			h.t = INFINITY, h.scale = 0.0f, h.p = org, h.ng = v3(0.0f, 0.0f, 1.0f);
 		else
-			last_scale = fmax(last_scale, (double)h.scale);
+			last_scale = walk_max(last_scale, (double)h.scale);
 		if (gd.on && res.steps == 0) { /* the far side below the entry (Cycles' opposite interface) */
-			gd.far = fmax(0.0, -(double)v3_dot(v3_sub(h.p, gd.x), gd.n));
+			gd.far = walk_max(0.0, -(double)v3_dot(v3_sub(h.p, gd.x), gd.n));
 			/* (the guided fraction faded with this thickness until issue 21's second pass,
 			 * 1 - e^{-far sigma_ref / (4 nu)}: with the backward guide and the higher
 			 * fraction of bright media the fade cost efficiency in every layer walkbench
 			 * measures, 3 and 30 mm of skin, wax and marble; src/sss/README.md) */
 		}
-		double scale = fmax(h.scale, fmax(fabs(h.p.x), fmax(fabs(h.p.y), fabs(h.p.z))));
-		double cos_n = fmax(1e-6, fabs((double)v3_dot(w, h.ng)));
-		double d = fmax(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */
+		double scale = walk_max(h.scale, walk_max(fabs(h.p.x), walk_max(fabs(h.p.y), fabs(h.p.z))));
+		double cos_n = walk_max(1e-6, fabs((double)v3_dot(w, h.ng)));
+		double d = walk_max(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */
 		res.steps++;
 		bool collision = t < d;
 		double len = collision ? t : d, p[3], e[3];
@@ -383,13 +390,13 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		for (int k = 0; k < 3; k++) {
 			f[k] *= (collision ? m->sigma_s[k] : 1.0) * e[k] / p[hero];
 			ratio[k] *= p[k] / p[hero];
-			big = fmax(big, fmax(f[k], ratio[k]));
+			big = walk_max(big, walk_max(f[k], ratio[k]));
 		}
 		if (big > 1e100) /* the weights are f over the mixture of ratios: rescale both alike */
 			for (int k = 0; k < 3; k++)
 				f[k] *= 1e-100, ratio[k] *= 1e-100;
 		walk_beta(q, f, ratio, beta);
-		if (!(fmax(beta[0], fmax(beta[1], beta[2])) > 0.0)) {
+		if (!(walk_max(beta[0], walk_max(beta[1], beta[2])) > 0.0)) {
 			res.status = SSS_WALK_ABSORBED; /* nothing scatters (a pure absorber), or all underflowed */
 			return res;
 		}
@@ -410,7 +417,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 				continue;
 			}
 			stuck = 0;
-			double cos_i = fmin(1.0, (double)v3_dot(w, n_out));
+			double cos_i = walk_min(1.0, (double)v3_dot(w, n_out));
 			double eta = 1.0 / m->eta; /* from the medium (eta) to outside (1) */
 			if (rng_double(g) < sss_fresnel_dielectric(cos_i, eta)) {
 				w = v3_normalize(v3_madd(w, n_out, (float)(-2.0 * cos_i)));
@@ -419,7 +426,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			} else {
 				/* Snell: the tangential part scales by n_i/n_t = m->eta */
 				double sin2_t = m->eta * m->eta * (1.0 - cos_i * cos_i);
-				double cos_t = sqrt(fmax(0.0, 1.0 - sin2_t));
+				double cos_t = sqrt(walk_max(0.0, 1.0 - sin2_t));
 				vec3 wt = v3_madd(v3_scale(w, (float)m->eta), n_out, (float)(cos_t - m->eta * cos_i));
 				res.status = SSS_WALK_EXITED;
 				res.p = h.p, res.ng = h.ng, res.dir = v3_normalize(wt);
@@ -433,7 +440,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			}
 		}
 		if (res.steps >= SSS_WALK_RR_START) {
-			double survive = fmin(1.0, fmax(beta[0], fmax(beta[1], beta[2])));
+			double survive = walk_min(1.0, walk_max(beta[0], walk_max(beta[1], beta[2])));
 			if (!(rng_double(g) < survive)) {
 				res.status = SSS_WALK_ABSORBED;
 				return res;

@@ -518,26 +518,47 @@ static void test_auto_thin(void)
 	CHECK(c.mean < 0.7 * v.mean, "circle %g should miss much of volume's %g on a back-lit sheet", c.mean, v.mean);
 }
 
-/* The same 3 mm sheet lit from the front only: nothing lights its far side, so auto does not walk
- * (the light factor, src/sss/README.md "auto") and its image is circle's bit for bit, while the
- * geometric rule alone would walk every exit; lit from behind as well (test_auto_thin) it walks. */
+/* A sheet of skin lit from the front only, 20 mm thick (5.4 of the red l_d: the geometric rule
+ * alone would walk nearly every exit): nothing lights its far side and the profile lays down all
+ * but 0.1 % of its light within 20 mm (its tail), so auto does not walk (the light factor,
+ * src/sss/README.md "auto") and its image is circle's bit for bit. 3 mm thick (issue 21) the
+ * profile's tail beyond the sheet is a third of its light: auto walks every exit, lit from the
+ * front only, and renders volume's image, which circle's misses by more than 3 %. */
 static void test_auto_front(void)
 {
-	const char *text = "global_settings { mm_per_unit 1 }\n"
-			   "camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
-			   "light_source { <0, 100, -30> color rgb 1 intensity 2 parallel point_at <0, 0, 0> }\n"
-			   "box { <-60, -3, -60>, <60, 0, 60> material { skin { } } }\n";
-	image_stats c, a;
-	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
-	render(text, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
+	const char *thick = "global_settings { mm_per_unit 1 }\n"
+			    "camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+			    "light_source { <0, 100, -30> color rgb 1 intensity 2 parallel point_at <0, 0, 0> }\n"
+			    "box { <-60, -20, -60>, <60, 0, 60> material { skin { } } }\n";
+	image_stats c, a, v;
+	render(thick, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
+	render(thick, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
 	int differ = 0;
 	unsigned long walks = 0;
 	for (int i = 0; i < W * H; i++)
 		differ += a.px[i] != c.px[i], walks += a.px_walks[i];
-	printf("front-lit 3 mm sheet of skin: auto %.5f, circle %.5f, %d pixels differ, %lu walks\n", a.mean, c.mean,
+	printf("front-lit 20 mm sheet of skin: auto %.5f, circle %.5f, %d pixels differ, %lu walks\n", a.mean, c.mean,
 	       differ, walks);
 	CHECK(differ == 0 && walks == 0 && a.nonfinite == 0 && a.circles > 0,
 	      "auto walks a sheet lit from the front only: %d pixels differ from circle, %lu walks", differ, walks);
+
+	const char *thin = "global_settings { mm_per_unit 1 }\n"
+			   "camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+			   "light_source { <0, 100, -30> color rgb 1 intensity 2 parallel point_at <0, 0, 0> }\n"
+			   "box { <-60, -3, -60>, <60, 0, 60> material { skin { } } }\n";
+	render(thin, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_CIRCLE, &c);
+	render(thin, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, &a);
+	render(thin, 4, 4, SSS_CIRCLE_EXACT, SSS_METHOD_VOLUME, &v);
+	differ = 0, walks = 0;
+	for (int i = 0; i < W * H; i++)
+		differ += a.px[i] != v.px[i], walks += a.px_walks[i];
+	printf("front-lit 3 mm sheet of skin: circle %.5f, auto %.5f, volume %.5f (circle %+.1f %%); %d pixels of auto "
+	       "differ from volume, %lu walks\n",
+	       c.mean, a.mean, v.mean, 100 * (c.mean / v.mean - 1), differ, walks);
+	CHECK(differ == 0 && walks > 0 && a.nonfinite == 0,
+	      "auto is not volume on a 3 mm sheet lit from the front: %d pixels differ", differ);
+	CHECK(fabs(c.mean / v.mean - 1.0) > 0.03, "circle %g and volume %g agree on a 3 mm sheet lit from the front",
+	      c.mean, v.mean);
 }
 
 /* The wedge: a closed block of wax (grey, l_d 1 mm) whose thickness below its flat top grows
@@ -570,6 +591,14 @@ static void test_auto_wedge(void)
 	/* the light factor is 1 wherever the geometric rule is not 0 (the comment above) */
 	/* the light factor (the comment above): 1 up to 7 l_d */
 	sss_auto_slab sl = grey_slab(0.8, 1.0, 1.0);
+	/* the profile's tail floor (sss_auto_thin_prob) is 0 across the wedge: burley's tail beyond
+	 * 2 % of its light ends well inside 2.5 l_d at albedo 0.8 */
+	sss_profile wp;
+	CHECK(sss_profile_from_artist(&wp, SSS_PROFILE_BURLEY, (const double[3]){0.8, 0.8, 0.8}, (const double[3]){1.0, 1.0, 1.0},
+				      1.0),
+	      "the wedge's profile");
+	double tail_2 = sss_auto_tail_thickness(&wp, SSS_AUTO_TAIL_CIRCLE);
+	CHECK(tail_2 > 0.5 && tail_2 < 2.5, "the wedge's profile tail of 2 %% ends at %g l_d", tail_2);
 	const double e_near = 100.0 / sqrt(100.0 * 100.0 + 30.0 * 30.0),
 		     e_far = 400.0 * (24.0 / sqrt(24.0 * 24.0 + 11.0 * 11.0) + SSS_AUTO_LIGHT_WRAP) / (1.0 + SSS_AUTO_LIGHT_WRAP);
 #define WEDGE_P(t) (sss_auto_walk_prob(t) * sss_auto_light_prob(sss_auto_light_share(&sl, e_near, e_far, (t) * 1.0)))

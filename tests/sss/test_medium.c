@@ -290,6 +290,22 @@ static void check_auto_light(void)
 	CHECK_NEAR(sss_auto_light_share(&sl, 1.0, 40.0, 4.0), f_max, 1e-15); /* the largest channel's */
 	CHECK(sss_auto_light_share(&sl, 2.0, 5.0, -1.0) == sss_auto_light_share(&sl, 2.0, 5.0, 0.0),
 	      "L < 0 counts as 0");
+	/* the share from R/T alone (issue 21's cheaper form) against far T / (near R + far T) from
+	 * sss_auto_slab_tr, over thicknesses from 0 to 1 m and light ratios from 1e-4 to 1e4 */
+	double worst = 0.0;
+	for (double L = 0.0; L < 1000.0; L = L * 1.5 + 0.01)
+		for (double q = 1e-4; q < 1e4; q *= 3.0) {
+			double want = 0.0;
+			for (int c = 0; c < 3; c++) {
+				double tc, rc;
+				sss_auto_slab_tr(&sl, c, L, &tc, &rc);
+				want = fmax(want, q * tc / (rc + q * tc));
+			}
+			worst = fmax(worst, fabs(sss_auto_light_share(&sl, 1.0, q, L) - want));
+		}
+	CHECK(worst < 1e-13, "the share by R/T agrees with T and R: largest difference %g", worst);
+	CHECK(sss_auto_light_share(&sl, 1.0, 5.0, INFINITY) == 0.0 && sss_auto_light_share(&sl, 0.0, 5.0, INFINITY) == 0.0,
+	      "a half space lets nothing through, lit or not");
 	/* no absorption: everything leaves, T + R = 1, linear in L */
 	const double none[3] = {0.0, 0.0, 0.0};
 	CHECK(sss_auto_slab_make(&sl, ss, none, 1.4), "the slab without absorption");
@@ -297,6 +313,52 @@ static void check_auto_light(void)
 	sss_auto_slab_tr(&sl, 0, 3.0, &t, &r);
 	CHECK_NEAR(t + r, 1.0, 1e-12);
 	CHECK(!sss_auto_slab_make(&sl, none, none, 1.4), "no extinction: no slab");
+}
+
+/* auto's profile tail (issue 21): the thickness where the largest channel's tail 1 - CDF(L) is
+ * given, by bisection, for every profile kind on skin1 (the channels' tails checked either side
+ * of it), ordered (a smaller tail is further), 0 when even L = 0 is below it; and the floor
+ * sss_auto_thin_prob, 1 up to the first thickness, 0 from the second, monotone and continuous
+ * (the same slope bound as the geometric rule's) between, with NaN walking. */
+static void check_auto_tail(void)
+{
+	const sss_preset *sk = sss_preset_find("skin1");
+	double ss[3], sa[3];
+	for (int c = 0; c < 3; c++)
+		ss[c] = sk->sigma_s_per_mm[c], sa[c] = sk->sigma_a_per_mm[c];
+	const sss_profile_kind kinds[4] = {SSS_PROFILE_GAUSSIAN, SSS_PROFILE_SUM_OF_GAUSSIANS, SSS_PROFILE_BURLEY,
+					   SSS_PROFILE_DIPOLE};
+	for (int k = 0; k < 4; k++) {
+		sss_profile p;
+		CHECK(sss_profile_from_physical(&p, kinds[k], ss, sa, 1.4), "skin1's %s profile", sss_profile_name(kinds[k]));
+		double l5 = sss_auto_tail_thickness(&p, SSS_AUTO_TAIL_WALK), l2 = sss_auto_tail_thickness(&p, SSS_AUTO_TAIL_CIRCLE);
+		double t_at = 0.0, t_below = 0.0;
+		for (int c = 0; c < 3; c++) {
+			t_at = fmax(t_at, 1.0 - sss_channel_cdf(&p.ch[c], l2));
+			t_below = fmax(t_below, 1.0 - sss_channel_cdf(&p.ch[c], l2 * (1.0 - 1e-9)));
+		}
+		printf("skin1 %s: the profile's tail is 5 %% at %.3f mm, 2 %% at %.3f mm\n", sss_profile_name(kinds[k]), l5, l2);
+		CHECK(l5 > 0.0 && l5 < l2 && l2 <= sss_profile_r_max(&p), "%s: tail thicknesses %g, %g", sss_profile_name(kinds[k]),
+		      l5, l2);
+		CHECK(t_at <= SSS_AUTO_TAIL_CIRCLE && t_below > SSS_AUTO_TAIL_CIRCLE * (1.0 - 1e-6),
+		      "%s: the tail %g at %g mm, %g just below", sss_profile_name(kinds[k]), t_at, l2, t_below);
+		CHECK(sss_auto_tail_thickness(&p, 0.999999) == 0.0 || sss_auto_tail_thickness(&p, 0.999999) < l5,
+		      "%s: a tail of nearly all", sss_profile_name(kinds[k]));
+	}
+	const double a = 2.0, b = 5.0;
+	CHECK(sss_auto_thin_prob(0.0, a, b) == 1.0 && sss_auto_thin_prob(a, a, b) == 1.0 && sss_auto_thin_prob(NAN, a, b) == 1.0,
+	      "thinner than the tail walks");
+	CHECK(sss_auto_thin_prob(b, a, b) == 0.0 && sss_auto_thin_prob(INFINITY, a, b) == 0.0 &&
+		  sss_auto_thin_prob(1.0, 0.0, 0.0) == 0.0,
+	      "thicker, or no tail: no floor");
+	CHECK_NEAR(sss_auto_thin_prob(sqrt(a * b), a, b), 0.5, 1e-12);
+	double prev = 1.0, worst = 0.0, step = 1e-4;
+	for (double L = 0.5 * a; L < 1.5 * b; L += step) {
+		double q = sss_auto_thin_prob(L, a, b);
+		CHECK(q <= prev && q >= 0.0 && q <= 1.0, "L %g: %g after %g", L, q, prev);
+		worst = fmax(worst, prev - q), prev = q;
+	}
+	CHECK(worst < 1.01 * 1.5 / (a * log(b / a)) * step, "a jump of %g in the floor", worst);
 }
 
 int main(void)
@@ -309,5 +371,6 @@ int main(void)
 	check_pov_translucency();
 	check_auto_rule();
 	check_auto_light();
+	check_auto_tail();
 	return check_done("test_medium");
 }
