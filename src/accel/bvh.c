@@ -929,6 +929,9 @@ BVH_INLINE __m128 f4_lanes(int n)
 	return _mm_castsi128_ps(_mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(n)));
 }
 
+/* The set bits of a lane mask (SSE2 has no popcnt instruction; gcc would call libgcc). */
+BVH_INLINE int f4_popcount(int mask) { return (int)(0x4332322132212110ull >> (4 * (mask & 15)) & 15); }
+
 /* blend: a in the lanes of mask (all ones or all zeros), b in the others. */
 BVH_INLINE __m128 f4_blend(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
 
@@ -1016,6 +1019,8 @@ BVH_INLINE __m256 f8_lanes(int n)
 #define LP_ROWS64(m) LP_ROWS16(m), LP_ROWS16((m) + 16), LP_ROWS16((m) + 32), LP_ROWS16((m) + 48)
 static const int32_t left_pack[256][8] __attribute__((aligned(32))) = {
     LP_ROWS64(0), LP_ROWS64(64), LP_ROWS64(128), LP_ROWS64(192)};
+
+BVH_INLINE int f8_popcount(int mask) { return __builtin_popcount((unsigned)mask); }
 
 BVH_INLINE __m256 f8_blend(__m256 mask, __m256 a, __m256 b) { return _mm256_blendv_ps(b, a, mask); }
 

@@ -157,6 +157,7 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 			float tn[W];
 			int mask = K(node_hit)(nd, &sr, *tlimit, tn);
 			if (mask != 0) {
+				const int all = mask;
 				int k0 = lowest_bit(mask);
 				mask &= mask - 1;
 				if (mask == 0) {
@@ -166,31 +167,33 @@ static bool K(intersect)(const bvh *b, const tri_ray *r, float *tlimit, bvh_hit 
 				int k1 = lowest_bit(mask);
 				mask &= mask - 1;
 				if (mask == 0) {
-					/* Two: go to the nearer, keep the other. */
-					if (tn[k1] < tn[k0]) {
-						int tk = k0;
-						k0 = k1, k1 = tk;
-					}
-					stack[sp++] = (K(stack_entry)){nd->child[k1], tn[k1]};
-					ref = nd->child[k0];
+					/* Two: go to the nearer, keep the other; chosen by a mask, not a branch
+					 * (which way the nearer lies is a coin toss for incoherent rays). */
+					uint32_t c0 = nd->child[k0], c1 = nd->child[k1], t0, t1;
+					memcpy(&t0, &tn[k0], sizeof t0), memcpy(&t1, &tn[k1], sizeof t1);
+					uint32_t swap = -(uint32_t)(tn[k1] < tn[k0]);
+					uint32_t dc = (c0 ^ c1) & swap, dt = (t0 ^ t1) & swap;
+					K(stack_entry) *e = &stack[sp++];
+					e->ref = c1 ^ dc;
+					t1 ^= dt;
+					memcpy(&e->tnear, &t1, sizeof t1);
+					ref = c0 ^ dc;
 					continue;
 				}
-				/* More: push all sorted, the nearest on top, and take it. */
+				/* More: push all sorted, the nearest on top, and take it. Each child's place is
+				 * the count of children farther than it (ties: the higher slot counts as
+				 * farther), from one compare of all at once: no branch on the order. */
+				(void)k0, (void)k1;
 				int base = sp;
-				stack[sp++] = (K(stack_entry)){nd->child[k0], tn[k0]};
-				stack[sp++] = (K(stack_entry)){nd->child[k1], tn[k1]};
-				do {
-					int k = lowest_bit(mask);
-					mask &= mask - 1;
-					stack[sp++] = (K(stack_entry)){nd->child[k], tn[k]};
-				} while (mask != 0);
-				for (int i = base + 1; i < sp; i++) {
-					K(stack_entry) e = stack[i];
-					int j = i;
-					for (; j > base && stack[j - 1].tnear < e.tnear; j--)
-						stack[j] = stack[j - 1];
-					stack[j] = e;
+				vf tv = V(loadu)(tn);
+				for (int mm = all; mm != 0; mm &= mm - 1) {
+					int k = lowest_bit(mm);
+					vf tk = V(set1)(tn[k]);
+					int farther = V(movemask)(V(gt)(tv, tk)) | (V(movemask)(V(eq)(tv, tk)) & (int)(0xfffffffeu << k));
+					stack[base + V(popcount)(farther & all)] =
+					    (K(stack_entry)){nd->child[k], tn[k]};
 				}
+				sp = base + V(popcount)(all);
 				ref = stack[--sp].ref;
 				continue;
 			}
