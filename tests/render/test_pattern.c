@@ -260,7 +260,25 @@ static void check_noise(void)
 		seen[pattern_perm(i)] = true;
 	}
 	CHECK(perm_ok, "Perlin's table is a permutation of 0..255");
-	CHECK_NEAR(pattern_noise(d3(3, -7, 12)), 0.5, 1e-12); /* gradient noise is 0 on the lattice */
+	{ /* POV-Ray 3.7's own noise and DNoise, as povray 3.7.0.10 prints them (#debug of f_noise3d
+	   * and of vturbulence(2, 0.5, 1, P), one octave: DNoise, at assumed_gamma 1): the same
+	   * numbers to 1e-9, on and off the lattice, at negative coordinates too */
+		const dvec3 at[6] = {{0.3, 1.7, -2.2},	  {12.25, -3.5, 7.75}, {-0.61, -0.13, 0.97},
+				     {100.2, 33.3, -57.9}, {3, -7, 12},	       {-4.5, 2.25, 0.125}};
+		const double want[6][4] = {{0.5288514781, 0.0271863994, 0.3209507833, 0.2678770334},
+					   {0.6090963306, 0.1909996057, 0.1606372757, -0.2244817187},
+					   {0.6068633328, 0.1864411260, -0.6025423188, -0.0828901506},
+					   {0.3794376056, -0.2778296203, 0.1837101964, -0.2537354306},
+					   {0.6467341058, 0.2678340000, -0.2219045000, 0.0828945000},
+					   {0.5172905143, 0.0035856514, -0.2973617705, -0.4577620183}};
+		for (int i = 0; i < 6; i++) {
+			dvec3 d = pattern_dnoise(at[i]);
+			CHECK_NEAR(pattern_noise(at[i]), want[i][0], 1e-9);
+			CHECK_NEAR(d.x, want[i][1], 1e-9);
+			CHECK_NEAR(d.y, want[i][2], 1e-9);
+			CHECK_NEAR(d.z, want[i][3], 1e-9);
+		}
+	}
 	double lo = 1, hi = 0, sum = 0, tlo = 10, thi = -10;
 	pattern_turb t = {d3(1, 1, 1), 6, 0.5, 2.0};
 	int n = 20000;
