@@ -195,3 +195,48 @@ dvec3 noise_pov_vector(dvec3 p)
 	}
 	return r;
 }
+
+/* ---- POV-Ray 3.7's random numbers of cells and crackle ----
+ * pattern.cpp's gPatternRands: the first outputs of the Mersenne Twister MT19937 (Matsumoto and
+ * Nishimura 1998) from its standard seed 5489, each over 2^32 (boost's uniform_real in [0, 1)
+ * from one 32-bit draw), indexed by Hash3d: the permutation above applied to the cell's three
+ * coordinates in turn, each taken mod 4096. Indices reach 4095 + 2. */
+#define POV_RANDS 4098
+static double pov_rands[POV_RANDS];
+static pthread_once_t pov_rands_once = PTHREAD_ONCE_INIT;
+
+static void pov_rands_init(void)
+{
+	uint32_t mt[624];
+	mt[0] = 5489u;
+	for (int i = 1; i < 624; i++)
+		mt[i] = 1812433253u * (mt[i - 1] ^ (mt[i - 1] >> 30)) + (uint32_t)i;
+	int next = 624;
+	for (int n = 0; n < POV_RANDS; n++) {
+		if (next == 624) { /* the twist: a new block of 624 */
+			for (int i = 0; i < 624; i++) {
+				uint32_t y = (mt[i] & 0x80000000u) | (mt[(i + 1) % 624] & 0x7fffffffu);
+				mt[i] = mt[(i + 397) % 624] ^ (y >> 1) ^ ((y & 1u) ? 0x9908b0dfu : 0u);
+			}
+			next = 0;
+		}
+		uint32_t y = mt[next++];
+		y ^= y >> 11;
+		y ^= (y << 7) & 0x9d2c5680u;
+		y ^= (y << 15) & 0xefc60000u;
+		y ^= y >> 18;
+		pov_rands[n] = (double)y / 4294967296.0;
+	}
+}
+
+int noise_pov_hash3(int x, int y, int z)
+{
+	pthread_once(&pov_hash_once, pov_hash_init);
+	return pov_hash[pov_hash[pov_hash[x & 0xFFF] ^ (y & 0xFFF)] ^ (z & 0xFFF)];
+}
+
+double noise_pov_rand(int i)
+{
+	pthread_once(&pov_rands_once, pov_rands_init);
+	return i >= 0 && i < POV_RANDS ? pov_rands[i] : 0.0;
+}

@@ -15,5 +15,9 @@ int noise_perm(int i);
 double noise_pov(dvec3 p);
 /* POV-Ray 3.7's vector noise (DNoise) at p: each component a lattice sum, about [-0.5, 0.5]. */
 dvec3 noise_pov_vector(dvec3 p);
+/* POV-Ray's Hash3d of a lattice cell: its permutation over x, y, z (each mod 4096), in 0..4095. */
+int noise_pov_hash3(int x, int y, int z);
+/* POV-Ray's gPatternRands at i (0 <= i < 4098; 0 elsewhere): MT19937's i-th output over 2^32. */
+double noise_pov_rand(int i);
 
 #endif

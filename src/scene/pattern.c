@@ -87,23 +87,14 @@ double pattern_wave_apply(pattern_wave w, double v, double frequency, double pha
 	return v;
 }
 
-/* A 32-bit hash of a lattice cell (the "lowbias32" mixer of C. Wellons, 2018), standing in for
- * POV-Ray's Hash3d and its random table: cells and crackle take their randomness from it. */
-static uint32_t hash_cell(int x, int y, int z)
-{
-	uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u ^ (uint32_t)z * 0xcb1ab31fu;
-	h ^= h >> 16, h *= 0x7feb352du, h ^= h >> 15, h *= 0x846ca68bu, h ^= h >> 16;
-	return h;
-}
-
-static double hash_unit(uint32_t h) { return (double)(h >> 8) * (1.0 / 16777216.0); }
-
 static int cell_of(double v) { return (int)floor(fmax(-2.0e9, fmin(2.0e9, v))); }
 
+/* crackle's feature point of a unit cube (pattern.cpp's IntPickInCube): the cube's corner plus
+ * three of gPatternRands from the cube's Hash3d on, so the cells are POV-Ray's own. */
 dvec3 pattern_crackle_point(int x, int y, int z)
 {
-	uint32_t h = hash_cell(x, y, z);
-	return d3(x + hash_unit(h), y + hash_unit(h * 0x9e3779b9u + 1u), z + hash_unit(h * 0x85ebca6bu + 2u));
+	int h = noise_pov_hash3(x, y, z);
+	return d3(x + noise_pov_rand(h), y + noise_pov_rand(h + 1), z + noise_pov_rand(h + 2));
 }
 
 /* |a|^m for crackle's metric, without pow where m is 1, 1.5, 2 or 3. */
@@ -457,8 +448,8 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	}
 	case PATTERN_MARBLE: return p.x + own_turb(n, p);
 	case PATTERN_WOOD: return wood(n, p);
-	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
-					1.0);
+	case PATTERN_CELLS: /* CellsPattern: gPatternRands at the cell's Hash3d */
+		return fmin(noise_pov_rand(noise_pov_hash3(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))), 1.0);
 	case PATTERN_CRACKLE: return crackle(p, n);
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA: return fractal(n, p);

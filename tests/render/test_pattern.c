@@ -279,6 +279,19 @@ static void check_noise(void)
 			CHECK_NEAR(d.z, want[i][3], 1e-9);
 		}
 	}
+	{ /* cells and crackle from POV-Ray's Hash3d and gPatternRands: povray 3.7.0.10's #debug of
+	   * function { pattern { cells } } and { crackle } at six points */
+		const dvec3 at[6] = {{0.3, 1.7, -2.2},	   {12.25, -3.5, 7.75}, {-0.61, -0.13, 0.97},
+				     {100.2, 33.3, -57.9}, {3.5, -7.5, 12.5},	{-4.5, 2.25, 0.125}};
+		const double want[6][2] = {{0.9564163543, 0.1058904655}, {0.4167994647, 0.4122530295},
+					   {0.8008794207, 0.1172139950}, {0.1965205926, 0.1323610083},
+					   {0.6417353761, 0.4065015991}, {0.3872454274, 0.1233842829}};
+		pattern_node c = pattern_node_default(PATTERN_CELLS), k = pattern_node_default(PATTERN_CRACKLE);
+		for (int i = 0; i < 6; i++) {
+			CHECK_NEAR(pattern_raw(&c, at[i]), want[i][0], 1e-9);
+			CHECK_NEAR(pattern_raw(&k, at[i]), want[i][1], 1e-9);
+		}
+	}
 	double lo = 1, hi = 0, sum = 0, tlo = 10, thi = -10;
 	pattern_turb t = {d3(1, 1, 1), 6, 0.5, 2.0};
 	int n = 20000;
