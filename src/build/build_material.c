@@ -143,17 +143,30 @@ static void pov_finish_spec(const scene *sc, const scene_material *sm, bsdf_pov_
  * surface lets pigment * filter + transmit through, a smooth dielectric where the object has an
  * interior, straight through where it has none; its diffuse is scaled by POV-Ray's opacity
  * 1 - filter - transmit (core/render/trace.cpp: att = Opacity(), highlights unscaled). */
-static bool pigment_can_clear(const scene_pigment *pg, int depth)
+/* Whether an image_map's own alpha is below 1 somewhere (POV-Ray's HasTransparency: such texels
+ * are clear by 1 - alpha). The world's image, the one its pattern maps (loaded once). */
+static bool image_has_alpha(world *w, const scene_pigment *pg, diag *d)
+{
+	const image *img = world_image(w, pg->loc, pg->image, IMAGE_SRGB, d);
+	size_t n = img ? (size_t)img->width * (size_t)img->height : 0;
+	for (size_t i = 0; i < n; i++)
+		if (img->rgba[4 * i + 3] != 1.0f)
+			return true;
+	return false;
+}
+
+static bool pigment_can_clear(world *w, const scene_pigment *pg, int depth, diag *d)
 {
 	if (!pg || depth > SCENE_PIGMENT_MAX_DEPTH || pg->is_normal)
 		return false;
 	if (pg->kind == SCENE_PAT_PLAIN)
 		return pg->color[3] + pg->color[4] > 0.0f;
 	if (pg->kind == SCENE_PAT_IMAGE) /* outside a `once` image POV-Ray's pigment is clear */
-		return pg->filter_all + pg->transmit_all > 0.0f || pg->once;
+		return pg->filter_all + pg->transmit_all > 0.0f || pg->once || pg->pal_filter || pg->pal_transmit ||
+		       image_has_alpha(w, pg, d);
 	for (uint32_t i = 0; i < pg->n_entries; i++) {
 		const scene_map_entry *e = &pg->entries[i];
-		if (e->pigment ? pigment_can_clear(e->pigment, depth + 1) : e->color[3] + e->color[4] > 0.0f)
+		if (e->pigment ? pigment_can_clear(w, e->pigment, depth + 1, d) : e->color[3] + e->color[4] > 0.0f)
 			return true;
 	}
 	return false;
@@ -162,15 +175,15 @@ static bool pigment_can_clear(const scene_pigment *pg, int depth)
 /* A texture whose pattern pigment can let light through somewhere: its transparency is the
  * point's (bsdf_clear.patterned, set at each hit by render/world.c's shade_pattern), the
  * material's own filter and transmit unused (POV-Ray's pigment gives all five channels). */
-static bool pattern_clear(const scene_material *sm)
+static bool pattern_clear(world *w, const scene_material *sm, diag *d)
 {
-	return sm->kind == MAT_TEXTURE && !sm->pov_sss && sm->pigment && pigment_can_clear(sm->pigment, 0);
+	return sm->kind == MAT_TEXTURE && !sm->pov_sss && sm->pigment && pigment_can_clear(w, sm->pigment, 0, d);
 }
 
-static void build_clear(bsdf_params *b, world_material *wm, const scene_material *sm)
+static void build_clear(world *w, bsdf_params *b, world_material *wm, const scene_material *sm, diag *d)
 {
 	float f = sm->filter, t = sm->transmit;
-	bool patterned = pattern_clear(sm);
+	bool patterned = pattern_clear(w, sm, d);
 	if (!(f + t > 0.0f) && !patterned)
 		return;
 	bsdf_clear *c = &b->clear;
@@ -260,7 +273,7 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 			w->bsdfs[k].pov.sss_diffuse = w->bsdfs[k].pov.diffuse;
 			w->bsdfs[k].pov.diffuse = 0.0f;
 		}
-		build_clear(&w->bsdfs[k], wm, sm);
+		build_clear(w, &w->bsdfs[k], wm, sm, d);
 		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 		break;
 	case MAT_EMISSION:

@@ -1624,6 +1624,11 @@ static void image_color(const pattern_node *n, dvec3 p, float out[5])
 	}
 	out[0] = c[0], out[1] = c[1], out[2] = c[2];
 	out[3] = n->filter_all, out[4] = n->transmit_all;
+	if (n->img_alpha) { /* image_colour_at: the image's own alpha is transmit, 1 - alpha; filter
+			     * and transmit all apply to what is opaque (imageAlpha times each) */
+		float a = c[3];
+		out[3] = n->filter_all * a, out[4] = (1.0f - a) + n->transmit_all * a;
+	}
 	if (n->img_index) {
 		pattern_node near = *n;
 		near.img = n->img_index, near.interpolate = false;

@@ -400,6 +400,23 @@ static void check_image(void)
 	CHECK(c[3] == 0.4f && c[4] == 0.25f, "palette index 3: filter %g transmit %g", c[3], c[4]);
 	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: index 0, none given */
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "palette index 0: filter %g transmit %g", c[3], c[4]);
+	/* the image's own alpha (a PNG's alpha or a palette's tRNS) is transmit 1 - alpha, and filter
+	 * all and transmit all apply to the opaque part (imageutil.cpp image_colour_at: imageAlpha
+	 * times each): povmap.png's transparent frame is see-through in POV-Ray */
+	float pa[16] = {1, 0, 0, 0.25f, 0, 1, 0, 1, 0, 0, 1, 0, 1, 1, 1, 1};
+	image al = {.width = 2, .height = 2, .rgba = pa};
+	n = pattern_node_default(PATTERN_IMAGE);
+	n.img = &al, n.img_alpha = true;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c); /* top left: alpha 0.25 */
+	CHECK(c[0] == 1 && c[3] == 0.0f && c[4] == 0.75f, "alpha 0.25: transmit %g filter %g", c[4], c[3]);
+	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: alpha 0 */
+	CHECK(c[4] == 1.0f, "alpha 0: clear (transmit %g)", c[4]);
+	n.filter_all = 0.4f, n.transmit_all = 0.2f;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c);
+	CHECK(fabsf(c[3] - 0.1f) < 1e-6f && fabsf(c[4] - 0.8f) < 1e-6f, "alpha 0.25, filter all 0.4, transmit all 0.2: %g %g",
+	      c[3], c[4]);
+	pattern_eval(&pg, 0, d3(0.75, 0.75, 0), 0, c); /* top right: opaque */
+	CHECK(fabsf(c[3] - 0.4f) < 1e-6f && fabsf(c[4] - 0.2f) < 1e-6f, "opaque texel: filter all, transmit all");
 }
 
 static void check_defaults(void)
