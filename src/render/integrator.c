@@ -703,11 +703,19 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	if (s->shade)
 		s->shade(s->user, hit, &v->b, &ns);
 	v->ng_out = v3_dot(hit->ng, wo) >= 0.0f ? hit->ng : v3_neg(hit->ng);
-	v->f.n = v3_dot(ns, v->ng_out) >= 0.0f ? ns : v3_neg(ns);
-	/* A shading normal turned away from the viewer (strong normal maps, coarse meshes)
-	 * would leave wo below the BSDF's horizon: shade with the true normal instead. */
-	if (v3_dot(v->f.n, wo) <= 0.0f)
-		v->f.n = v->ng_out;
+	/* The shading normal turns to wo's side with the surface's own (interpolated) normal, as
+	 * POV-Ray flips its perturbed normal by the raw one: a normal { } tilted past the geometric
+	 * horizon stays tilted, not mirrored into a normal facing the light. */
+	v->f.n = v3_dot(hit->ns, v->ng_out) >= 0.0f ? ns : v3_neg(ns);
+	/* A shading normal turned away from the viewer (strong normal maps, coarse meshes) would
+	 * leave wo below the BSDF's horizon: it is bent to just above wo's horizon, the nearest
+	 * normal that shades (continuous as the normal crosses it, and dark towards a light along
+	 * wo, as POV-Ray's cos of a normal facing away); along -wo itself the true normal. */
+	float nw = v3_dot(v->f.n, wo);
+	if (nw <= 0.0f) {
+		vec3 bent = v3_add(v->f.n, v3_scale(wo, 1e-3f - nw));
+		v->f.n = v3_length2(bent) > 1e-6f ? v3_normalize(bent) : v->ng_out;
+	}
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
 	v->wo_local = to_local(&v->f, wo);
 	v->p = hit->p;
