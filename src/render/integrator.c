@@ -835,6 +835,12 @@ static inline void through_fog(const render_scene *s, const render_settings *set
 	pa->beta = v3_mul(pa->beta, att);
 }
 
+/* Whether b has POV-Ray highlights (specular, phong), which only light samples see. */
+static inline bool pov_highlights(const bsdf_params *b)
+{
+	return b->kind == BSDF_POV && (b->pov.specular > 0.0f || b->pov.phong > 0.0f);
+}
+
 /* The probability of the delta lobes of v's transparent part against its opaque lobes, by their
  * weights (0 at an opaque surface, 1 where the opaque part reflects nothing). */
 static inline float delta_prob(const vertex *v, bool entering)
@@ -981,7 +987,11 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (sm) {
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-		} else if (v.lobe_prob > 0.0f && !at_cap) {
+		} else if ((v.lobe_prob > 0.0f || pov_highlights(&v.b)) && !at_cap) {
+			/* POV-Ray's highlights are seen by next-event estimation alone, whatever lobe the
+			 * path goes on by: a clear glass (no diffuse, so no lobe but the delta ones) and a
+			 * checker's Clear squares keep their specular and phong, unscaled by the opacity
+			 * as POV-Ray's (MIS with lobe_prob 0 leaves the light's sample its whole weight) */
 			add_direct(s, set, &v.b, &v, g, DIM_NEE, RENDER_PART_DIRECT, &pa);
 		}
 		if (!sm)
