@@ -3,8 +3,8 @@
  * algebraic surfaces as fields (most scaled by their first parameter and clamped to [-10, 10],
  * as POV-Ray clamps them), the "_2d" curves swept or revolved, the helices, spirals, meshes and
  * blobs, and the noise-based fractals (f_ridge, f_ridged_mf, f_hetero_mf, f_noise_generator),
- * which run circe's noise (scene/pattern.h's pattern_noise, POV-Ray's range [0, 1]) and so have
- * POV-Ray's structure, not its values; f_pattern (77), POV-Ray's hook of pattern functions,
+ * which run POV-Ray 3.7's own noise (scene/pattern.h's pattern_noise, base/noise.c's noise_pov);
+ * f_pattern (77), POV-Ray's hook of pattern functions,
  * is 0 when a scene calls it directly, as in POV-Ray. func.c's table takes them from
  * lang_fn_internal_more. */
 #include "lang/func.h"
@@ -444,7 +444,7 @@ static double f_witch_of_agnesi_2d(const double *a)
 	return field(P(0), -(P(1) * P(1) * v + u * u * v - P(2)));
 }
 
-/* ---- the noise-based fractals: circe's noise (pattern_noise), centred by 2 N - 1 ---- */
+/* ---- the noise-based fractals: POV-Ray's noise (pattern_noise), centred by 2 N - 1 ---- */
 
 static double snoise(double x, double y, double z) { return pattern_noise(d3(x, y, z)) * 2.0 - 1.0; }
 

@@ -712,11 +712,19 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	if (s->shade)
 		s->shade(s->user, hit, &v->b, &ns);
 	v->ng_out = v3_dot(hit->ng, wo) >= 0.0f ? hit->ng : v3_neg(hit->ng);
-	v->f.n = v3_dot(ns, v->ng_out) >= 0.0f ? ns : v3_neg(ns);
-	/* A shading normal turned away from the viewer (strong normal maps, coarse meshes)
-	 * would leave wo below the BSDF's horizon: shade with the true normal instead. */
-	if (v3_dot(v->f.n, wo) <= 0.0f)
-		v->f.n = v->ng_out;
+	/* The shading normal turns to wo's side with the surface's own (interpolated) normal, as
+	 * POV-Ray flips its perturbed normal by the raw one: a normal { } tilted past the geometric
+	 * horizon stays tilted, not mirrored into a normal facing the light. */
+	v->f.n = v3_dot(hit->ns, v->ng_out) >= 0.0f ? ns : v3_neg(ns);
+	/* A shading normal turned away from the viewer (strong normal maps, coarse meshes) would
+	 * leave wo below the BSDF's horizon: it is bent to just above wo's horizon, the nearest
+	 * normal that shades (continuous as the normal crosses it, and dark towards a light along
+	 * wo, as POV-Ray's cos of a normal facing away); along -wo itself the true normal. */
+	float nw = v3_dot(v->f.n, wo);
+	if (nw <= 0.0f) {
+		vec3 bent = v3_add(v->f.n, v3_scale(wo, 1e-3f - nw));
+		v->f.n = v3_length2(bent) > 1e-6f ? v3_normalize(bent) : v->ng_out;
+	}
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
 	v->wo_local = to_local(&v->f, wo);
 	v->p = hit->p;
@@ -834,6 +842,12 @@ static inline void through_fog(const render_scene *s, const render_settings *set
 	render_fog_segment(s->fogs, s->fog_count, ray->o, ray->d, t, &att, &add);
 	gather(set, pa, v3_mul(pa->beta, add));
 	pa->beta = v3_mul(pa->beta, att);
+}
+
+/* Whether b has POV-Ray highlights (specular, phong), which only light samples see. */
+static inline bool pov_highlights(const bsdf_params *b)
+{
+	return b->kind == BSDF_POV && (b->pov.specular > 0.0f || b->pov.phong > 0.0f);
 }
 
 /* The probability of the delta lobes of v's transparent part against its opaque lobes, by their
@@ -989,7 +1003,11 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (sm) {
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-		} else if (v.lobe_prob > 0.0f && !at_cap) {
+		} else if ((v.lobe_prob > 0.0f || pov_highlights(&v.b)) && !at_cap) {
+			/* POV-Ray's highlights are seen by next-event estimation alone, whatever lobe the
+			 * path goes on by: a clear glass (no diffuse, so no lobe but the delta ones) and a
+			 * checker's Clear squares keep their specular and phong, unscaled by the opacity
+			 * as POV-Ray's (MIS with lobe_prob 0 leaves the light's sample its whole weight) */
 			add_direct(s, set, &v.b, &v, g, DIM_NEE, RENDER_PART_DIRECT, &pa);
 		}
 		if (!sm)

@@ -14,11 +14,6 @@
 /* POV-Ray's EPSILON (source/core/configcore.h): the block patterns' floor() nudge, so a point
  * exactly on an integer plane falls on the same side as POV-Ray puts it. */
 #define POV_EPSILON 1.0e-10
-/* 0.5 + 0.5 NOISE_GAIN perlin is POV-Ray's range with this gain: measured on 160,000 points of
- * a plane, POV-Ray 3.7's bozo (noise_generator 2, a 16-bit linear render) has mean 0.508, standard
- * deviation 0.134, range [0.065, 0.948]; circe's 0.501, 0.122 to 0.142 (the plane on a lattice
- * plane or off it), [0.055, 0.945]. test_pattern checks the range and the mean. */
-#define NOISE_GAIN 1.0
 /* warp.cpp's COORDINATE_LIMIT: warped points are clamped there. */
 #define POV_COORDINATE_LIMIT 1.0e17
 /* POV-Ray's default number of waves of ripples and waves (global_settings number_of_waves). */
@@ -26,36 +21,17 @@
 
 int pattern_perm(int i) { return noise_perm(i); }
 
-static double perlin(dvec3 p) { return noise_perlin(p); }
-
 static double clamp01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
 
-double pattern_noise(dvec3 p) { return clamp01(0.5 + 0.5 * NOISE_GAIN * perlin(p)); }
+/* POV-Ray 3.7's own noise (base/noise.c: its table, permutation and blend, noise_generator 2),
+ * so that bozo, granite, agate and the rest show POV-Ray's blobs, not others of their size. */
+double pattern_noise(dvec3 p) { return noise_pov(p); }
 
-/* POV-Ray 3.7's noise (texture.cpp Noise, noise_generator 2, the default from #version 3.5 on)
- * is its lattice sum s brought into [0, 1] as (s + 1.05242) * 0.48985582; DNoise's components
- * are such sums themselves, not brought in (texture.cpp OriDNoise). */
-#define POV_NOISE2_SCALE 0.48985582
+/* POV-Ray's DNoise: the vector noise bumps, dents and the turbulence warp move by. */
+dvec3 pattern_dnoise(dvec3 p) { return noise_pov_vector(p); }
 
-/* Three noises at points far apart (so the components are independent), as POV-Ray's DNoise
- * draws three components from its lattice: each is circe's noise - 0.5 taken back to the scale
- * of POV-Ray's sum (divided by POV_NOISE2_SCALE, so about twice noise - 0.5), which is what
- * bumps, dents and the turbulence warp move by. Measured beside POV-Ray (a plane under
- * `normal { bumps 0.1 }` and a parallel light: the shading's spread was 0.46 of POV-Ray's before). */
-dvec3 pattern_dnoise(dvec3 p)
-{
-	const double k = 0.5 * NOISE_GAIN / POV_NOISE2_SCALE, lim = 0.5 / POV_NOISE2_SCALE;
-	double x = k * perlin(d3_add(p, d3(31.416, 0.0, 0.0)));
-	double y = k * perlin(d3_add(p, d3(0.0, 47.853, 12.337)));
-	double z = k * perlin(d3_add(p, d3(-23.251, 5.711, -61.079)));
-	return d3(fmax(-lim, fmin(lim, x)), fmax(-lim, fmin(lim, y)), fmax(-lim, fmin(lim, z)));
-}
-
-/* circe's noise spreads as POV-Ray 3.7's noise_generator 2 (the default from #version 3.5 on):
- * standard deviation 0.135 against its 0.126 (texture.cpp's Noise comment: its sum's 0.2568
- * times 0.48985582), half of generator 1's. POV-Ray's generator-2 branches of Turbulence,
- * granite and wrinkles therefore take 2 noise - 0.5 (or |1 - 2 noise|), so that their spread is
- * generator 1's; circe takes those branches. */
+/* POV-Ray 3.7's generator-2 branches of Turbulence, granite and wrinkles take 2 noise - 0.5 (or
+ * |1 - 2 noise|): its range-corrected noise has about half generator 1's spread. */
 static double noise2(dvec3 p) { return 2.0 * pattern_noise(p) - 0.5; }
 
 /* texture.cpp's Turbulence (generator 2): clamp(2 noise(p) - 0.5, 0, 1) + sum over octaves 2..n
@@ -111,23 +87,14 @@ double pattern_wave_apply(pattern_wave w, double v, double frequency, double pha
 	return v;
 }
 
-/* A 32-bit hash of a lattice cell (the "lowbias32" mixer of C. Wellons, 2018), standing in for
- * POV-Ray's Hash3d and its random table: cells and crackle take their randomness from it. */
-static uint32_t hash_cell(int x, int y, int z)
-{
-	uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u ^ (uint32_t)z * 0xcb1ab31fu;
-	h ^= h >> 16, h *= 0x7feb352du, h ^= h >> 15, h *= 0x846ca68bu, h ^= h >> 16;
-	return h;
-}
-
-static double hash_unit(uint32_t h) { return (double)(h >> 8) * (1.0 / 16777216.0); }
-
 static int cell_of(double v) { return (int)floor(fmax(-2.0e9, fmin(2.0e9, v))); }
 
+/* crackle's feature point of a unit cube (pattern.cpp's IntPickInCube): the cube's corner plus
+ * three of gPatternRands from the cube's Hash3d on, so the cells are POV-Ray's own. */
 dvec3 pattern_crackle_point(int x, int y, int z)
 {
-	uint32_t h = hash_cell(x, y, z);
-	return d3(x + hash_unit(h), y + hash_unit(h * 0x9e3779b9u + 1u), z + hash_unit(h * 0x85ebca6bu + 2u));
+	int h = noise_pov_hash3(x, y, z);
+	return d3(x + noise_pov_rand(h), y + noise_pov_rand(h + 1), z + noise_pov_rand(h + 2));
 }
 
 /* |a|^m for crackle's metric, without pow where m is 1, 1.5, 2 or 3. */
@@ -345,16 +312,10 @@ static double magnet(const pattern_node *n, dvec3 p)
 	return fractal_interior(n, z.re, z.im, mindist2);
 }
 
-/* The i-th wave source of ripples and waves: a unit vector (POV-Ray normalises DNoise at
- * <i, 0, 0>; circe draws it from the cell hash) and its frequency from POV-Ray's own generator
- * (noise.cpp's Initialize_Waves, its seed and constants). */
-static dvec3 wave_source(int i)
-{
-	uint32_t h = hash_cell(i, 7, 11);
-	double z = 2.0 * hash_unit(h) - 1.0, phi = TWO_PI * hash_unit(h * 0x9e3779b9u + 1u);
-	double r = sqrt(fmax(0.0, 1.0 - z * z));
-	return d3(r * cos(phi), r * sin(phi), z);
-}
+/* The i-th wave source of ripples and waves: POV-Ray's vector noise at <i, 0, 0>, normalised, and
+ * its frequency from POV-Ray's own generator (noise.cpp's Initialize_Waves, its seed and
+ * constants). */
+static dvec3 wave_source(int i) { return d3_normalize(pattern_dnoise(d3((double)i, 0.0, 0.0))); }
 
 /* The next wave's frequency from Initialize_Waves' generator (state *next, seeded -560851967). */
 static double wave_frequency(uint32_t *next)
@@ -516,8 +477,8 @@ static double raw_shapes(const pattern_node *n, dvec3 p, double eps)
 	}
 	case PATTERN_MARBLE: return p.x + own_turb(n, p);
 	case PATTERN_WOOD: return wood(n, p);
-	case PATTERN_CELLS: return fmin(hash_unit(hash_cell(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))),
-					1.0);
+	case PATTERN_CELLS: /* CellsPattern: gPatternRands at the cell's Hash3d */
+		return fmin(noise_pov_rand(noise_pov_hash3(cell_of(p.x + eps), cell_of(p.y + eps), cell_of(p.z + eps))), 1.0);
 	case PATTERN_CRACKLE: return crackle(p, n);
 	case PATTERN_MANDEL:
 	case PATTERN_JULIA: return fractal(n, p);

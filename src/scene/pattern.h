@@ -204,10 +204,9 @@ double pattern_wave_apply(pattern_wave w, double v, double frequency, double pha
  * entries, a step where two share a value). */
 void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5]);
 
-/* Noise, in [0, 1] and 0.5 on average, like POV-Ray's Noise(). */
+/* POV-Ray 3.7's Noise() (noise_generator 2): in [0, 1], its own values (base/noise.c). */
 double pattern_noise(dvec3 p);
-/* Vector noise, each component in [-0.5, 0.5] / 0.48985582 and 0 on average (POV-Ray's DNoise: the
- * bare lattice sum of its noise_generator 2, about twice noise - 0.5). */
+/* POV-Ray 3.7's DNoise: each component its bare lattice sum, about [-0.6, 0.6], 0 on average. */
 dvec3 pattern_dnoise(dvec3 p);
 /* POV-Ray's Turbulence (a sum of octaves of noise) and DTurbulence (of vector noise). */
 double pattern_turbulence(dvec3 p, const pattern_turb *t);

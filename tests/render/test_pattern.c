@@ -284,7 +284,38 @@ static void check_noise(void)
 		seen[pattern_perm(i)] = true;
 	}
 	CHECK(perm_ok, "Perlin's table is a permutation of 0..255");
-	CHECK_NEAR(pattern_noise(d3(3, -7, 12)), 0.5, 1e-12); /* gradient noise is 0 on the lattice */
+	{ /* POV-Ray 3.7's own noise and DNoise, as povray 3.7.0.10 prints them (#debug of f_noise3d
+	   * and of vturbulence(2, 0.5, 1, P), one octave: DNoise, at assumed_gamma 1): the same
+	   * numbers to 1e-9, on and off the lattice, at negative coordinates too */
+		const dvec3 at[6] = {{0.3, 1.7, -2.2},	  {12.25, -3.5, 7.75}, {-0.61, -0.13, 0.97},
+				     {100.2, 33.3, -57.9}, {3, -7, 12},	       {-4.5, 2.25, 0.125}};
+		const double want[6][4] = {{0.5288514781, 0.0271863994, 0.3209507833, 0.2678770334},
+					   {0.6090963306, 0.1909996057, 0.1606372757, -0.2244817187},
+					   {0.6068633328, 0.1864411260, -0.6025423188, -0.0828901506},
+					   {0.3794376056, -0.2778296203, 0.1837101964, -0.2537354306},
+					   {0.6467341058, 0.2678340000, -0.2219045000, 0.0828945000},
+					   {0.5172905143, 0.0035856514, -0.2973617705, -0.4577620183}};
+		for (int i = 0; i < 6; i++) {
+			dvec3 d = pattern_dnoise(at[i]);
+			CHECK_NEAR(pattern_noise(at[i]), want[i][0], 1e-9);
+			CHECK_NEAR(d.x, want[i][1], 1e-9);
+			CHECK_NEAR(d.y, want[i][2], 1e-9);
+			CHECK_NEAR(d.z, want[i][3], 1e-9);
+		}
+	}
+	{ /* cells and crackle from POV-Ray's Hash3d and gPatternRands: povray 3.7.0.10's #debug of
+	   * function { pattern { cells } } and { crackle } at six points */
+		const dvec3 at[6] = {{0.3, 1.7, -2.2},	   {12.25, -3.5, 7.75}, {-0.61, -0.13, 0.97},
+				     {100.2, 33.3, -57.9}, {3.5, -7.5, 12.5},	{-4.5, 2.25, 0.125}};
+		const double want[6][2] = {{0.9564163543, 0.1058904655}, {0.4167994647, 0.4122530295},
+					   {0.8008794207, 0.1172139950}, {0.1965205926, 0.1323610083},
+					   {0.6417353761, 0.4065015991}, {0.3872454274, 0.1233842829}};
+		pattern_node c = pattern_node_default(PATTERN_CELLS), k = pattern_node_default(PATTERN_CRACKLE);
+		for (int i = 0; i < 6; i++) {
+			CHECK_NEAR(pattern_raw(&c, at[i]), want[i][0], 1e-9);
+			CHECK_NEAR(pattern_raw(&k, at[i]), want[i][1], 1e-9);
+		}
+	}
 	double lo = 1, hi = 0, sum = 0, tlo = 10, thi = -10;
 	pattern_turb t = {d3(1, 1, 1), 6, 0.5, 2.0};
 	int n = 20000;
@@ -393,6 +424,23 @@ static void check_image(void)
 	CHECK(c[3] == 0.4f && c[4] == 0.25f, "palette index 3: filter %g transmit %g", c[3], c[4]);
 	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: index 0, none given */
 	CHECK(c[3] == 0.5f && c[4] == 0.25f, "palette index 0: filter %g transmit %g", c[3], c[4]);
+	/* the image's own alpha (a PNG's alpha or a palette's tRNS) is transmit 1 - alpha, and filter
+	 * all and transmit all apply to the opaque part (imageutil.cpp image_colour_at: imageAlpha
+	 * times each): povmap.png's transparent frame is see-through in POV-Ray */
+	float pa[16] = {1, 0, 0, 0.25f, 0, 1, 0, 1, 0, 0, 1, 0, 1, 1, 1, 1};
+	image al = {.width = 2, .height = 2, .rgba = pa};
+	n = pattern_node_default(PATTERN_IMAGE);
+	n.img = &al, n.img_alpha = true;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c); /* top left: alpha 0.25 */
+	CHECK(c[0] == 1 && c[3] == 0.0f && c[4] == 0.75f, "alpha 0.25: transmit %g filter %g", c[4], c[3]);
+	pattern_eval(&pg, 0, d3(0.25, 0.25, 0), 0, c); /* bottom left: alpha 0 */
+	CHECK(c[4] == 1.0f, "alpha 0: clear (transmit %g)", c[4]);
+	n.filter_all = 0.4f, n.transmit_all = 0.2f;
+	pattern_eval(&pg, 0, d3(0.25, 0.75, 0), 0, c);
+	CHECK(fabsf(c[3] - 0.1f) < 1e-6f && fabsf(c[4] - 0.8f) < 1e-6f, "alpha 0.25, filter all 0.4, transmit all 0.2: %g %g",
+	      c[3], c[4]);
+	pattern_eval(&pg, 0, d3(0.75, 0.75, 0), 0, c); /* top right: opaque */
+	CHECK(fabsf(c[3] - 0.4f) < 1e-6f && fabsf(c[4] - 0.2f) < 1e-6f, "opaque texel: filter all, transmit all");
 }
 
 static void check_defaults(void)

@@ -1,0 +1,4 @@
+// pat_waves.pov (bench/pov_cover.sh): waves
+#version 3.7;
+#declare P = pigment { waves frequency 2 color_map { [0 rgb <0, 0.2, 0.5>] [1 rgb <0.7, 0.9, 1>] } }
+#include "pat_stage.inc"
