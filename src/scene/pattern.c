@@ -1558,12 +1558,12 @@ dvec3 pattern_warp_point(const pattern_warp *w, dvec3 p)
 		    bz = w->repeat.z > 0.0 ? cell_of(p.z / w->repeat.z) : 0;
 		if (rep && (w->uncertainty.x != 0.0 || w->uncertainty.y != 0.0 || w->uncertainty.z != 0.0)) {
 			/* POV-Ray's "turbulence" of a black hole: each block's centre moved by a random
-			 * fraction in [0, 1) of the vector per axis (its WarpRands of Hash3d(block);
-			 * circe's own hash: the same spread, other draws) */
-			uint32_t h = hash_cell(bx, by, bz) ^ 0x5bd1e995u;
-			c.x += hash_unit(hash_cell((int)h, 1, 0)) * w->uncertainty.x;
-			c.y += hash_unit(hash_cell((int)h, 2, 0)) * w->uncertainty.y;
-			c.z += hash_unit(hash_cell((int)h, 3, 0)) * w->uncertainty.z;
+			 * fraction in [0, 1) of the vector per axis, WarpRands at the block's Hash3d and the two
+			 * after it (warp.cpp; WarpRands is the same sequence as gPatternRands) */
+			int h = noise_pov_hash3(bx, by, bz);
+			c.x += noise_pov_rand(h) * w->uncertainty.x;
+			c.y += noise_pov_rand(h + 1) * w->uncertainty.y;
+			c.z += noise_pov_rand(h + 2) * w->uncertainty.z;
 		}
 		if (w->repeat.x > 0.0)
 			c.x += w->repeat.x * bx;
