@@ -750,6 +750,69 @@ static void test_auto_light_band(void)
 	CHECK(c2_geo > b2, "the cylinder cannot tell the light factor from the geometric rule (chi-square %g)", c2_geo);
 }
 
+/* The profile's tail across an image (issue 21): a closed block of skin whose thickness below
+ * its flat top grows from 6 to 13 mm across x, seen from above and lit from above only, so the
+ * light factor is 0 everywhere (the bottom faces away from the light) and the walk comes from the
+ * tail floor alone: skin1's sum of Gaussians has 5 % of its light beyond L_5 = 8.2 mm and 2 %
+ * beyond L_2 = 10.7 mm, and the image sees 6.4 to 12.6 mm. With direct light only each path has
+ * one exit on the top: the walked fraction, column by column, must follow
+ * sss_auto_thin_prob(T, L_5, L_2) (binomial chi-square), and a hard switch at the band's middle
+ * must fail the same bound: no seam where the floor hands over to circle. */
+static void test_auto_tail_band(void)
+{
+	const char *text =
+		"global_settings { mm_per_unit 1 }\n"
+		"camera { location <0, 40, -1> look_at <0, 0, 0> angle 30 }\n"
+		"light_source { <0, 100, -30> color rgb 1 intensity 1 parallel point_at <0, 0, 0> }\n"
+		"mesh2 { vertex_vectors { 8, <-12,0,-8>, <12,0,-8>, <12,0,8>, <-12,0,8>, <-12,-6,-8>, <12,-13,-8>, "
+		"<12,-13,8>, <-12,-6,8> }\n"
+		"  face_indices { 12, <0,2,1>, <0,3,2>, <4,5,6>, <4,6,7>, <0,1,5>, <0,5,4>, <1,2,6>, <1,6,5>, <2,3,7>, "
+		"<2,7,6>, <3,0,4>, <3,4,7> }\n"
+		"  material { skin { } } }\n";
+	/* the material's profile as the build makes it (build_sss.c: skin1's artist form, eta 1.4) */
+	sss_medium_spec spec = {.preset = "skin1"};
+	sss_medium md;
+	sss_medium_derive(&spec, 1.4, &md);
+	sss_profile pr;
+	CHECK(sss_profile_from_artist(&pr, SSS_PROFILE_SUM_OF_GAUSSIANS, md.albedo, md.ld_mm, 1.4), "skin1's profile");
+	double l5 = sss_auto_tail_thickness(&pr, SSS_AUTO_TAIL_WALK), l2 = sss_auto_tail_thickness(&pr, SSS_AUTO_TAIL_CIRCLE);
+	CHECK(l5 > 7.0 && l2 < 12.0, "skin1's tail band %g to %g mm lies inside the block's 6.4 to 12.6", l5, l2);
+	double xs[W];
+	world *w;
+	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
+	CHECK(build(text, &o, &w) && last_warnings == 0, "the skin block builds without warnings (%d)", last_warnings);
+	for (int x = 0; x < W; x++) {
+		render_ray r = cam_ray(world_camera(w), x, H / 2, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
+		xs[x] = r.o.x - r.d.x * (r.o.y / r.d.y);
+	}
+	world_free(w);
+	image_stats fr;
+	render_seed(text, 24, 1, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, 23, &fr);
+	CHECK(fr.nonfinite == 0, "the skin block: %lu non-finite", fr.nonfinite);
+	double c2 = 0.0, c2_hard = 0.0, mid = sqrt(l5 * l2);
+	int dof = 0, inside = 0;
+	for (int x = 0; x < W; x++) {
+		double t = 6.0 + (xs[x] + 12.0) * 7.0 / 24.0, p = sss_auto_thin_prob(t, l5, l2), ph = t < mid ? 1.0 : 0.0;
+		unsigned long n = 0, k = 0;
+		for (int y = 0; y < H; y++)
+			n += fr.px_searches[y * W + x], k += fr.px_walks[y * W + x];
+		double f = n ? (double)k / n : 0.0;
+		double v = fmax(p * (1.0 - p), 1.0 / n) / n, vh = fmax(ph * (1.0 - ph), 1.0 / n) / n;
+		c2 += (f - p) * (f - p) / v, c2_hard += (f - ph) * (f - ph) / vh, dof++;
+		inside += p > 0.05 && p < 0.95;
+		printf("tail band column %2d: T %5.2f mm: walked %.4f of %lu exits, p(walk) %.4f\n", x, t, f, n, p);
+		CHECK(p < 1.0 || k == n, "column %d: p = 1 but %lu of %lu walked", x, k, n);
+		CHECK(p > 0.0 || k == 0, "column %d: p = 0 but %lu of %lu walked", x, k, n);
+	}
+	double b2 = dof + 4.0 * sqrt(2.0 * dof);
+	printf("tail band: the walked fraction against the floor: chi-square %.1f; against a hard switch %.1f; bound %.1f "
+	       "(%d columns, %d inside the band)\n",
+	       c2, c2_hard, b2, dof, inside);
+	CHECK(inside >= 4, "only %d columns inside the tail band", inside);
+	CHECK(c2 <= b2, "auto's choice does not follow the tail floor: chi-square %g > %g", c2, b2);
+	CHECK(c2_hard > b2, "the block cannot tell a hard switch (chi-square %g) from the floor", c2_hard);
+}
+
 /* The five parts of a scene with all of them (the background seen, a skin sphere's coat and
  * BSSRDF, a diffuse floor, interreflection) sum to the whole: the paths make the same decisions
  * whatever the part, so the sums agree to float rounding, sample by sample. */
@@ -815,6 +878,7 @@ int main(void)
 	test_auto_front();
 	test_auto_wedge();
 	test_auto_light_band();
+	test_auto_tail_band();
 	test_parts();
 	rmdir(dir);
 	return check_done("test_sss");
