@@ -234,6 +234,7 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 		params->clear.tint = v3_min(v3_add(v3_scale(rgb, f), v3s(t)), v3s(1.0f));
 		params->clear.reflect *= fminf(1.0f, f + t);
 		params->pov.diffuse = wm->opaque_diffuse * fmaxf(0.0f, 1.0f - f - t);
+		params->pov.glow = v3_scale(params->pov.glow, fmaxf(0.0f, 1.0f - f - t)); /* as the diffuse */
 	}
 	if (params->kind == BSDF_POV) /* the finish's lobes follow the pigment (its diffuse included) */
 		bsdf_pov_set_pigment(params, rgb);
