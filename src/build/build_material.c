@@ -211,6 +211,7 @@ static void build_clear(world *w, bsdf_params *b, world_material *wm, const scen
 	bool finish_reflects = v3_max_comp(fs->refl_min) > 0.0f || v3_max_comp(fs->refl_max) > 0.0f;
 	c->reflect = finish_reflects ? 0.0f : patterned ? 1.0f : fminf(1.0f, f + t);
 	b->pov.diffuse *= fmaxf(0.0f, 1.0f - f - t); /* bsdf_pov_set_pigment derives the lobe from it */
+	b->pov.glow = v3_scale(b->pov.glow, fmaxf(0.0f, 1.0f - f - t)); /* POV-Ray's emission * att too */
 	if (!(sm->ior > 0.0f)) {
 		c->kind = BSDF_CLEAR_THIN;
 		return;

@@ -234,6 +234,7 @@ static void shade_pattern(const world *w, const world_material *wm, const render
 		params->clear.tint = v3_min(v3_add(v3_scale(rgb, f), v3s(t)), v3s(1.0f));
 		params->clear.reflect *= fminf(1.0f, f + t);
 		params->pov.diffuse = wm->opaque_diffuse * fmaxf(0.0f, 1.0f - f - t);
+		params->pov.glow = v3_scale(params->pov.glow, fmaxf(0.0f, 1.0f - f - t)); /* as the diffuse */
 	}
 	if (params->kind == BSDF_POV) /* the finish's lobes follow the pigment (its diffuse included) */
 		bsdf_pov_set_pigment(params, rgb);
@@ -253,6 +254,12 @@ static void shade_normal(const world *w, uint32_t node, bool uv, const render_hi
 	vec3 out = v3_normalize(d3v(pattern_normal_through(&in->pattern_xf, n, false)));
 	if (v3_is_finite(out) && v3_length2(out) > 0.5f)
 		*ns = out;
+}
+
+/* The factor on a channel's layer weights that keeps their sum s and what passes t at most 1. */
+static float layers_cap(float s, float t)
+{
+	return s + t > 1.0f && s > 0.0f ? fmaxf(0.0f, 1.0f - t) / s : 1.0f;
 }
 
 /* A layered texture at the hit, as POV-Ray 3.7 lights one (trace.cpp ComputeLightedTexture): from
@@ -315,19 +322,14 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 			break; /* the layers below are hidden */
 	}
 	/* The energy bound: sum + through <= 1 in every channel */
-	float k = 1.0f;
-	const float *sc = &sum.x, *tc = &through.x;
-	for (int j = 0; j < 3; j++)
-		if (sc[j] + tc[j] > 1.0f && sc[j] > 0.0f)
-			k = fminf(k, fmaxf(0.0f, 1.0f - tc[j]) / sc[j]);
-	vec3 e = emit;
+	float k = fminf(layers_cap(sum.x, through.x), fminf(layers_cap(sum.y, through.y), layers_cap(sum.z, through.z)));
 	if (pick_a > 0.0f) {
 		*params = pick;
 		params->pov_weight = v3_scale(pick_w, k * total / pick_a);
 	} else { /* no layer reflects anything: the top one's lobes at weight 0 */
 		params->pov_weight = v3s(0.0f);
 	}
-	params->emit = e;
+	params->emit = emit;
 	*ns = pick_n;
 	if (params->clear.patterned) {
 		params->clear.tint = v3_min(through, v3s(1.0f));

@@ -476,7 +476,8 @@ int main(void)
 	 * where the pattern says (thin: no interior), its tint pigment * filter + transmit and its
 	 * diffuse scaled by the opacity there; opaque and at its full diffuse elsewhere. */
 	ok = build("plane { y, 0.5 pigment { checker rgb <0.2, 0.4, 0.6> rgbf <1, 0.5, 1, 1> } finish { diffuse 0.6 } }\n"
-		   "sphere { <0, 5, 0>, 1 pigment { rgb 0.5 } }\n",
+		   "sphere { <0, 5, 0>, 1 pigment { rgb 0.5 } }\n"
+		   "sphere { <5, 5, 0>, 1 pigment { rgbt <0.5, 0.5, 0.5, 0.75> } }\n",
 		   &w, &err);
 	CHECK(ok, "checker with filter: %s", err);
 	free(err);
@@ -491,12 +492,21 @@ int main(void)
 		CHECK(v3_max_comp(at.clear.tint) == 0.0f && at.clear.reflect == 0.0f, "opaque square: tint %g",
 		      v3_max_comp(at.clear.tint));
 		CHECK_NEAR(at.pov.diffuse, 0.6, 1e-6);
+		/* the implicit ambient 0.1 glows where the colour is opaque, not where it is clear
+		 * (POV-Ray's layCol * emission * att) */
+		CHECK(near_vec(at.emit, v3(0.02f, 0.04f, 0.06f), 1e-6f), "opaque square: emit (%g %g %g)", at.emit.x,
+		      at.emit.y, at.emit.z);
 		CHECK(trace(w, v3(1.5f, 3, 0.5f), v3(0, -1, 0), &hc), "hit the checker's second square");
 		at = base;
 		w->rs.shade(w->rs.user, &hc, &at, &ns);
 		CHECK(same_vec(at.clear.tint, v3(1, 0.5f, 1)), "clear square: tint (%g %g %g)", at.clear.tint.x,
 		      at.clear.tint.y, at.clear.tint.z);
 		CHECK_NEAR(at.pov.diffuse, 0.0, 0);
+		CHECK(v3_max_comp(at.emit) == 0.0f, "clear square: no glow (%g)", v3_max_comp(at.emit));
+		/* a plain rgbt colour glows its ambient times its opacity: 0.1 * 0.5 * 0.25 */
+		CHECK(trace(w, v3(5, 10, 0), v3(0, -1, 0), &hc), "hit the transmitting sphere");
+		CHECK(near_vec(w->bsdfs[hc.material].emit, v3s(0.0125f), 1e-6f), "rgbt 0.75: emit %g",
+		      w->bsdfs[hc.material].emit.x);
 		/* the plain sphere stays opaque */
 		CHECK(trace(w, v3(0, 10, 0), v3(0, -1, 0), &hc) && w->bsdfs[hc.material].clear.kind == BSDF_CLEAR_NONE &&
 			      !w->bsdfs[hc.material].clear.patterned,
