@@ -5,7 +5,9 @@
 # markdown table of the medians of the rounds: build, closest hit, any hit against Embree in the
 # same process (ratios > 1: faster than Embree), bytes per triangle and the cost of a circle in
 # closest-hit rays (-c: circle radii log-uniform in LO..HI of the diagonal, raybench's
-# --circle-radius; 0.0003,0.03 resembles the default scene's skin on the head). Needs Embree (configure found libembree-dev). Run from the build folder;
+# --circle-radius; 0.0003,0.03 resembles the default scene's skin on the head). Compares against
+# Embree when configure found libembree-dev; without it the Embree columns read n/a (then
+# bench/rayab.sh compares against another revision in one process). Run from the build folder;
 # meshes from ../shared/assets (CIRCE_ASSETS overrides), ray files made once with bench/raygen.
 set -eu
 rounds=3
@@ -32,6 +34,11 @@ for mesh in head bunny; do
 		bench/raygen "$path" $kind "$nrays" "$work/$mesh-$kind.bin" >/dev/null
 	done
 done
+# raybench --embree exists only when configure found Embree.
+embree=--embree
+first=${1#*=}
+"$first" "$head" "$work/head-primary.bin" --repeat 1 --embree >/dev/null 2>&1 || embree=
+[ -n "$embree" ] || echo "raybench was built without Embree: its columns read n/a" >&2
 # One line per run: version mesh kind then raybench's key value pairs.
 for round in $(seq "$rounds"); do
 	for mesh in head bunny; do
@@ -39,7 +46,7 @@ for round in $(seq "$rounds"); do
 		for kind in primary incoherent; do
 			for v in "$@"; do
 				name=${v%%=*} bin=${v#*=}
-				out=$("$bin" "$path" "$work/$mesh-$kind.bin" --repeat 3 --embree --circles 100000 --circle-radius "$radii")
+				out=$("$bin" "$path" "$work/$mesh-$kind.bin" --repeat 3 $embree --circles 100000 --circle-radius "$radii")
 				echo "$name $mesh $kind $out" >>"$work/runs"
 			done
 		done
@@ -57,6 +64,7 @@ function median(list,    n, a, i, j, t) {
 	for (i = 4; i < NF; i += 2)
 		val[key, $i] = val[key, $i] " " $(i + 1)
 }
+function or_na(list, fmt) { return list == "" ? "n/a" : sprintf(fmt, median(list)) }
 END {
 	nv = split(versions, vs, " ")
 	print "| mesh | rays | version | build ratio | closest Mrays/s (Embree) | closest ratio | any ratio | B/tri | circle = N rays | hits agree |"
@@ -65,10 +73,10 @@ END {
 	for (m = 1; m <= 2; m++) for (k = 1; k <= 2; k++) for (v = 1; v <= nv; v++) {
 		name = vs[v]; sub(/=.*/, "", name)
 		key = name SUBSEP meshes[m] SUBSEP kinds[k]
-		printf "| %s | %s | %s | %.2f | %.2f (%.2f) | %.2f | %.2f | %.1f | %.2f | %s |\n", meshes[m], kinds[k], name,
-			median(val[key, "ratio_build"]), median(val[key, "mrays_closest"]),
-			median(val[key, "embree_mrays_closest"]), median(val[key, "ratio_closest"]),
-			median(val[key, "ratio_any"]), median(val[key, "bytes_per_tri"]),
-			median(val[key, "circle_cost_in_rays"]), median(val[key, "hits_agree"])
+		printf "| %s | %s | %s | %s | %.2f (%s) | %s | %s | %.1f | %.2f | %s |\n", meshes[m], kinds[k], name,
+			or_na(val[key, "ratio_build"], "%.2f"), median(val[key, "mrays_closest"]),
+			or_na(val[key, "embree_mrays_closest"], "%.2f"), or_na(val[key, "ratio_closest"], "%.2f"),
+			or_na(val[key, "ratio_any"], "%.2f"), median(val[key, "bytes_per_tri"]),
+			median(val[key, "circle_cost_in_rays"]), or_na(val[key, "hits_agree"], "%s")
 	}
 }' "$work/runs"

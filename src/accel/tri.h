@@ -10,6 +10,9 @@
 
 #include <math.h>
 #include <stdbool.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,17 +35,32 @@ static inline bool tri_ray_prepare(tri_ray *r, vec3 org, vec3 dir, float tmin, f
 	    isnan(tmax) || tmax < tmin || (dir.x == 0.0f && dir.y == 0.0f && dir.z == 0.0f))
 		return false;
 	r->org = org, r->dir = dir, r->tmin = tmin, r->tmax = tmax;
-	r->inv_dir = v3(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
+	/* The axes without branches (for incoherent rays each is a coin toss): kz the largest |d| (x
+	 * only when larger than both, then y when larger than z, else z), kx and ky the next two in
+	 * turn, swapped when d[kz] < 0. */
 	vec3 a = v3_abs(dir);
-	int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-	int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-	if (v3_get(dir, kz) < 0.0f) {
-		int tmp = kx;
-		kx = ky, ky = tmp;
-	}
-	r->kx = kx, r->ky = ky, r->kz = kz;
+	int xy = a.x > a.y;
+	float axy = xy ? a.x : a.y;
+	int kz = axy > a.z ? 1 - xy : 2;
+	static const int next_axis[3] = {1, 2, 0};
+	int kx = next_axis[kz], ky = next_axis[kx];
 	float dz = v3_get(dir, kz);
+	int swap = -(int)(dz < 0.0f);
+	int dk = (kx ^ ky) & swap;
+	kx ^= dk, ky ^= dk;
+	r->kx = kx, r->ky = ky, r->kz = kz;
+#ifdef __SSE2__
+	/* The six quotients as two vector divisions (each lane rounds as the scalar division does):
+	 * the set-up is a good part of a ray that misses after a node or two. */
+	float q[4], s[4];
+	_mm_storeu_ps(q, _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(dir.x, dir.y, dir.z, 1.0f)));
+	_mm_storeu_ps(s, _mm_div_ps(_mm_setr_ps(v3_get(dir, kx), v3_get(dir, ky), 1.0f, 1.0f), _mm_set1_ps(dz)));
+	r->inv_dir = v3(q[0], q[1], q[2]);
+	r->sx = s[0], r->sy = s[1], r->sz = s[2];
+#else
+	r->inv_dir = v3(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
 	r->sx = v3_get(dir, kx) / dz, r->sy = v3_get(dir, ky) / dz, r->sz = 1.0f / dz;
+#endif
 	return true;
 }
 
