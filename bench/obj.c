@@ -2,6 +2,9 @@
 #include "obj.h"
 
 #include "base/mem.h"
+#include "base/rng.h"
+
+#include <math.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,4 +83,33 @@ void bench_mesh_free(bench_mesh *m)
 {
 	mem_free(m->positions), mem_free(m->indices);
 	memset(m, 0, sizeof *m);
+}
+
+/* Circles as circle tracing makes them: centre uniform on a random triangle, n its normal, t
+ * random in the tangent plane, radius log-uniform between rlo and rhi times the diagonal, half. */
+tri_circle *bench_make_circles(const bench_mesh *m, long n, float diag, float rlo, float rhi)
+{
+	tri_circle *c = mem_alloc((size_t)n, sizeof *c);
+	rng g;
+	rng_seed(&g, 42, 42);
+	for (long i = 0; c && i < n;) {
+		const uint32_t *ix = m->indices + 3 * rng_below(&g, m->num_triangles);
+		vec3 v0 = m->positions[ix[0]], v1 = m->positions[ix[1]], v2 = m->positions[ix[2]];
+		vec3 nn = v3_normalize(v3_cross(v3_sub(v1, v0), v3_sub(v2, v0)));
+		if (!(v3_length2(nn) > 0.5f))
+			continue;
+		float a = rng_float(&g), b = rng_float(&g);
+		if (a + b > 1)
+			a = 1 - a, b = 1 - b;
+		vec3 b1, b2;
+		v3_basis(nn, &b1, &b2);
+		float phi = 6.2831853f * rng_float(&g);
+		c[i].centre = v3_add(v0, v3_add(v3_scale(v3_sub(v1, v0), a), v3_scale(v3_sub(v2, v0), b)));
+		c[i].t = v3_normalize(v3_add(v3_scale(b1, cosf(phi)), v3_scale(b2, sinf(phi))));
+		c[i].n = nn;
+		c[i].radius = diag * rlo * powf(rhi / rlo, rng_float(&g));
+		c[i].full = false;
+		i++;
+	}
+	return c;
 }

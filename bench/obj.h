@@ -4,6 +4,7 @@
 #ifndef CIRCE_BENCH_OBJ_H
 #define CIRCE_BENCH_OBJ_H
 
+#include "accel/tri.h"
 #include "base/vec.h"
 
 #include <stdbool.h>
@@ -23,5 +24,10 @@ void bench_mesh_free(bench_mesh *m);
 /* CPU seconds used by the process (all its threads): timings stay fair on a shared, loaded
  * machine, where wall-clock time would count other processes' turns. */
 double bench_now(void);
+
+/* Circles as circle tracing makes them: centre uniform on a random triangle, n its normal, t
+ * random in the tangent plane, radius log-uniform between rlo and rhi times diag; seeded, so every
+ * benchmark (raybench, rayab) gets the same n circles of a mesh. NULL when out of memory. */
+tri_circle *bench_make_circles(const bench_mesh *m, long n, float diag, float rlo, float rhi);
 
 #endif

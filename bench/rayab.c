@@ -8,7 +8,6 @@
 #include "config.h"
 #include "accel/bvh.h"
 #include "base/mem.h"
-#include "base/rng.h"
 #include "obj.h"
 
 #include <math.h>
@@ -27,34 +26,6 @@ void base_bvh_set_simd(bvh_simd simd);
 typedef struct ray_rec {
 	float ox, oy, oz, dx, dy, dz, tmin, tmax;
 } ray_rec;
-
-/* raybench's circles (make_circles there): the same seed, so the same circles. */
-static tri_circle *make_circles(const bench_mesh *m, long n, float diag, float rlo, float rhi)
-{
-	tri_circle *c = mem_alloc((size_t)n, sizeof *c);
-	rng g;
-	rng_seed(&g, 42, 42);
-	for (long i = 0; c && i < n;) {
-		const uint32_t *ix = m->indices + 3 * rng_below(&g, m->num_triangles);
-		vec3 v0 = m->positions[ix[0]], v1 = m->positions[ix[1]], v2 = m->positions[ix[2]];
-		vec3 nn = v3_normalize(v3_cross(v3_sub(v1, v0), v3_sub(v2, v0)));
-		if (!(v3_length2(nn) > 0.5f))
-			continue;
-		float a = rng_float(&g), b = rng_float(&g);
-		if (a + b > 1)
-			a = 1 - a, b = 1 - b;
-		vec3 b1, b2;
-		v3_basis(nn, &b1, &b2);
-		float phi = 6.2831853f * rng_float(&g);
-		c[i].centre = v3_add(v0, v3_add(v3_scale(v3_sub(v1, v0), a), v3_scale(v3_sub(v2, v0), b)));
-		c[i].t = v3_normalize(v3_add(v3_scale(b1, cosf(phi)), v3_scale(b2, sinf(phi))));
-		c[i].n = nn;
-		c[i].radius = diag * rlo * powf(rhi / rlo, rng_float(&g));
-		c[i].full = false;
-		i++;
-	}
-	return c;
-}
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -129,7 +100,7 @@ int main(int argc, char **argv)
 	vec3 lo = m.positions[0], hi = lo;
 	for (uint32_t i = 1; i < m.num_vertices; i++)
 		lo = v3_min(lo, m.positions[i]), hi = v3_max(hi, m.positions[i]);
-	tri_circle *cs = make_circles(&m, nc, v3_length(v3_sub(hi, lo)), rlo, rhi);
+	tri_circle *cs = bench_make_circles(&m, nc, v3_length(v3_sub(hi, lo)), rlo, rhi);
 	static tri_circle_hit buf[2][MAX_HITS];
 	long sink = 0;
 	for (int k = 0; k < repeat; k++) {

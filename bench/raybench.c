@@ -4,7 +4,6 @@
 
 #include "accel/bvh.h"
 #include "base/mem.h"
-#include "base/rng.h"
 #include "obj.h"
 
 #include <stdio.h>
@@ -43,35 +42,6 @@ static ray_rec *read_rays(const char *path, size_t *n)
 	}
 	fclose(f);
 	return r;
-}
-
-/* Circles as circle tracing makes them: centre uniform on a random triangle, n its normal, t
- * random in the tangent plane, radius log-uniform between rlo and rhi times the diagonal, half. */
-static tri_circle *make_circles(const bench_mesh *m, long n, float diag, float rlo, float rhi)
-{
-	tri_circle *c = mem_alloc((size_t)n, sizeof *c);
-	rng g;
-	rng_seed(&g, 42, 42);
-	for (long i = 0; c && i < n;) {
-		const uint32_t *ix = m->indices + 3 * rng_below(&g, m->num_triangles);
-		vec3 v0 = m->positions[ix[0]], v1 = m->positions[ix[1]], v2 = m->positions[ix[2]];
-		vec3 nn = v3_normalize(v3_cross(v3_sub(v1, v0), v3_sub(v2, v0)));
-		if (!(v3_length2(nn) > 0.5f))
-			continue;
-		float a = rng_float(&g), b = rng_float(&g);
-		if (a + b > 1)
-			a = 1 - a, b = 1 - b;
-		vec3 b1, b2;
-		v3_basis(nn, &b1, &b2);
-		float phi = 6.2831853f * rng_float(&g);
-		c[i].centre = v3_add(v0, v3_add(v3_scale(v3_sub(v1, v0), a), v3_scale(v3_sub(v2, v0), b)));
-		c[i].t = v3_normalize(v3_add(v3_scale(b1, cosf(phi)), v3_scale(b2, sinf(phi))));
-		c[i].n = nn;
-		c[i].radius = diag * rlo * powf(rhi / rlo, rng_float(&g));
-		c[i].full = false;
-		i++;
-	}
-	return c;
 }
 
 int main(int argc, char **argv)
@@ -165,7 +135,7 @@ int main(int argc, char **argv)
 		vec3 lo = m.positions[0], hi = lo;
 		for (uint32_t v = 1; v < m.num_vertices; v++)
 			lo = v3_min(lo, m.positions[v]), hi = v3_max(hi, m.positions[v]);
-		tri_circle *cs = make_circles(&m, circles, v3_length(v3_sub(hi, lo)), rlo, rhi);
+		tri_circle *cs = bench_make_circles(&m, circles, v3_length(v3_sub(hi, lo)), rlo, rhi);
 		static tri_circle_hit buf[4096];
 		double best = 1e30;
 		long total = 0;
