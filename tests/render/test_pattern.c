@@ -483,30 +483,6 @@ static void check_normals(void)
 		CHECK(fabs(v.x / v.y + 0.1 * 0.3 * 4.0 / 3.0) < 1e-9 && fabs(d3_length(v) - 1) < 1e-12 && fabs(v.z) < 1e-9,
 		      "gradient x's slope at accuracy %g: <%g, %g, %g>", acc, v.x, v.y, v.z);
 	}
-	/* A repeated black hole's turbulence (POV-Ray's uncertainty): each block's centre moved by a
-	 * fraction in [0, 1) of the vector per axis, the same for every point of the block, others
-	 * elsewhere. Falloff 0 and strength 1 move a point by its whole offset from the centre (q =
-	 * 2p - c), so the centre reads back from q. */
-	pattern_warp un = {.kind = WARP_BLACK_HOLE, .radius = 10, .strength = 1, .falloff = 0,
-			   .repeat = d3(4, 4, 4), .uncertainty = d3(1, 0.5, 0.25)};
-	dvec3 first = d3(0, 0, 0);
-	int differ = 0;
-	for (int bx = -3; bx <= 3; bx++)
-		for (int k = 0; k < 2; k++) {
-			dvec3 p = d3(4 * bx + 1 + k, 1.5 + 0.5 * k, 2.2), c = d3_sub(d3_scale(p, 2), pattern_warp_point(&un, p));
-			dvec3 f = d3_sub(c, d3(4 * bx, 0, 0)); /* the block's offset from its unmoved centre */
-			CHECK(f.x >= 0 && f.x < 1 && f.y >= 0 && f.y < 0.5 && f.z >= 0 && f.z < 0.25,
-			      "block %d: the centre's offset <%g, %g, %g>", bx, f.x, f.y, f.z);
-			if (k == 0 && bx == -3)
-				first = f;
-			else if (k == 0 && d3_length(d3_sub(f, first)) > 1e-6)
-				differ++;
-			if (k == 1) { /* the same block, another point: the same centre */
-				dvec3 p0 = d3(4 * bx + 1, 1.5, 2.2), c0 = d3_sub(d3_scale(p0, 2), pattern_warp_point(&un, p0));
-				CHECK(d3_length(d3_sub(c, c0)) < 1e-9, "block %d: one centre", bx);
-			}
-		}
-	CHECK(differ >= 5, "the blocks' centres differ: %d of 6", differ);
 	pattern_warp sc = {.kind = WARP_TRANSFORM};
 	CHECK(xform_scale(d3(2, 2, 2), &sc.xf), "scale");
 	pg.warps = &sc, pg.n_warps = 1, n.warp0 = 0, n.n_warps = 1;
