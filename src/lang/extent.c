@@ -15,6 +15,7 @@
 #include "geom/shape.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* POV-Ray's BOUND_HUGE / 2: an unbounded object's box (Make_BBox(-BOUND_HUGE / 2, BOUND_HUGE)). */
@@ -224,6 +225,21 @@ bool lang_extent(parser *p, value *out)
 	return true;
 }
 
+/* The opening of trace's and inside's arguments: the function's name, "(", an object value and ",". */
+static bool object_argument(parser *p, const char *fn, lang_token *name, value *v)
+{
+	*name = *lang_advance(p);
+	char after[32];
+	snprintf(after, sizeof after, "after '%s'", fn);
+	TRY(lang_expect(p, LTK_LPAREN, after));
+	diag_loc at = lang_peek(p)->loc;
+	TRY(lang_expr(p, v));
+	if (v->kind != VAL_OBJECT || !v->obj)
+		return lang_error(p, at, "'%s' needs an object, found %s", fn, lang_value_kind_name(v));
+	snprintf(after, sizeof after, "after the object of '%s'", fn);
+	return lang_expect(p, LTK_COMMA, after);
+}
+
 /* trace = "trace" "(" expression "," vector "," vector [ "," identifier ] ")"
  * POV-Ray's Parse_Trace (source/parser/parser_functions.cpp): the first hit of the ray from the
  * start along the direction on the object, <0, 0, 0> when there is none; the identifier, a
@@ -233,14 +249,9 @@ bool lang_extent(parser *p, value *out)
  * of the callee's cache. */
 bool lang_trace(parser *p, value *out)
 {
-	lang_token name = *lang_advance(p);
-	TRY(lang_expect(p, LTK_LPAREN, "after 'trace'"));
-	diag_loc at = lang_peek(p)->loc;
+	lang_token name;
 	value v;
-	TRY(lang_expr(p, &v));
-	if (v.kind != VAL_OBJECT || !v.obj)
-		return lang_error(p, at, "'trace' needs an object, found %s", lang_value_kind_name(&v));
-	TRY(lang_expect(p, LTK_COMMA, "after the object of 'trace'"));
+	TRY(object_argument(p, "trace", &name, &v));
 	dvec3 org, dir;
 	TRY(lang_vec3(p, "(the start of 'trace')", &org));
 	TRY(lang_expect(p, LTK_COMMA, "after the start of 'trace'"));
@@ -285,14 +296,9 @@ bool lang_trace(parser *p, value *out)
  * lang_options.inside (main.c gives the build's). */
 bool lang_inside(parser *p, value *out)
 {
-	lang_token name = *lang_advance(p);
-	TRY(lang_expect(p, LTK_LPAREN, "after 'inside'"));
-	diag_loc at = lang_peek(p)->loc;
+	lang_token name;
 	value v;
-	TRY(lang_expr(p, &v));
-	if (v.kind != VAL_OBJECT || !v.obj)
-		return lang_error(p, at, "'inside' needs an object, found %s", lang_value_kind_name(&v));
-	TRY(lang_expect(p, LTK_COMMA, "after the object of 'inside'"));
+	TRY(object_argument(p, "inside", &name, &v));
 	dvec3 q;
 	TRY(lang_vec3(p, "(the point of 'inside')", &q));
 	TRY(lang_expect(p, LTK_RPAREN, "to close the arguments of 'inside'"));

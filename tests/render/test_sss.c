@@ -576,6 +576,23 @@ static void test_auto_front(void)
  * (the bottom's cosine 0.91, wrapped to 0.94, under the 400 light, the top's 0.96 under the 1; T
  * and R the diffusion slab's, sss/medium.h), is 0.14 at 7 l_d, 0.058 at 8 and 0.008 at 10; the
  * product is smooth too, and the part of the band below 7 l_d is the geometric rule's alone. */
+
+/* The x of each column where the camera's ray meets the top (y = 0) at the middle row, of the
+ * scene text built with auto: false when it does not build without warnings. */
+static bool column_xs(const char *text, double xs[W])
+{
+	world *w;
+	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
+	if (!build(text, &o, &w))
+		return false;
+	for (int x = 0; x < W; x++) {
+		render_ray r = cam_ray(world_camera(w), x, H / 2, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
+		xs[x] = r.o.x - r.d.x * (r.o.y / r.d.y);
+	}
+	world_free(w);
+	return last_warnings == 0;
+}
+
 static void test_auto_wedge(void)
 {
 	const char *text =
@@ -608,16 +625,8 @@ static void test_auto_wedge(void)
 	       light_8, sss_auto_walk_prob(7.0), sss_auto_walk_prob(8.0));
 	CHECK(light_7 == 1.0 && light_8 > 0.5, "the wedge's light factor is not 1 across most of the band (%g, %g)", light_7,
 	      light_8);
-	/* the x of each column where the camera's ray meets the top (y = 0), at the middle row */
 	double xs[W];
-	world *w;
-	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
-	CHECK(build(text, &o, &w) && last_warnings == 0, "the wedge builds without warnings (%d)", last_warnings);
-	for (int x = 0; x < W; x++) {
-		render_ray r = cam_ray(world_camera(w), x, H / 2, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
-		xs[x] = r.o.x - r.d.x * (r.o.y / r.d.y);
-	}
-	world_free(w);
+	CHECK(column_xs(text, xs), "the wedge builds without warnings (%d)", last_warnings);
 	const int spp = 160;
 	image_stats im[3];
 	const sss_method ms[3] = {SSS_METHOD_CIRCLE, SSS_METHOD_VOLUME, SSS_METHOD_AUTO};
@@ -778,14 +787,7 @@ static void test_auto_tail_band(void)
 	double l5 = sss_auto_tail_thickness(&pr, SSS_AUTO_TAIL_WALK), l2 = sss_auto_tail_thickness(&pr, SSS_AUTO_TAIL_CIRCLE);
 	CHECK(l5 > 7.0 && l2 < 12.0, "skin1's tail band %g to %g mm lies inside the block's 6.4 to 12.6", l5, l2);
 	double xs[W];
-	world *w;
-	world_options o = {.width = W, .height = H, .sss_method = SSS_METHOD_AUTO};
-	CHECK(build(text, &o, &w) && last_warnings == 0, "the skin block builds without warnings (%d)", last_warnings);
-	for (int x = 0; x < W; x++) {
-		render_ray r = cam_ray(world_camera(w), x, H / 2, v2(0.5f, 0.5f), v2(0.5f, 0.5f));
-		xs[x] = r.o.x - r.d.x * (r.o.y / r.d.y);
-	}
-	world_free(w);
+	CHECK(column_xs(text, xs), "the skin block builds without warnings (%d)", last_warnings);
 	image_stats fr;
 	render_seed(text, 24, 1, SSS_CIRCLE_EXACT, SSS_METHOD_AUTO, 23, &fr);
 	CHECK(fr.nonfinite == 0, "the skin block: %lu non-finite", fr.nonfinite);
