@@ -311,6 +311,23 @@ static void test_delta_and_set(void)
 			CHECK(ok && ls.li.x == 1.0f, "on the radius: %g, want 1", ok ? ls.li.x : 0.0);
 	}
 
+	/* A cylinder whose falloff (1) is below its radius (2): POV-Ray's Attenuate_Light lights only
+	 * len < falloff, with (1 - len / falloff)^tightness times cubic_spline(0, 1 - radius / falloff,
+	 * 1 - len / falloff) beyond the radius, never reached here: full out to the falloff, then none. */
+	light cyl = light_cylinder(v3(0, 5, 0), v3(0, 0, 0), v3s(1), 2.0f, 1.0f, 0.0f);
+	for (float x = 0.05f; x < 2.5f; x += 0.1f) {
+		bool ok = light_sample_from(&cyl, v3(x, 0, 0), v3s(0), v2(0, 0), &ls);
+		double len = x, want = 0.0;
+		if (len < 1.0) {
+			double dist = 1 - len / 1.0, lo = 0.0, hi = 1 - 2.0 / 1.0;
+			want = 1.0; /* pow(dist, tightness 0) */
+			if (len > 2.0)
+				want *= dist < lo ? 0.0 : dist >= hi ? 1.0 : 0.0;
+		}
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-5, "cylinder falloff < radius at %g: %g, want %g", x,
+		      ok ? ls.li.x : 0.0, want);
+	}
+
 	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));
 	CHECK(light_sample_from(&par, v3(5, 5, 5), v3s(0), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
 	CHECK(fabsf(ls.wi.y - sqrtf(0.5f)) < 1e-6f && fabsf(ls.wi.z + sqrtf(0.5f)) < 1e-6f && ls.li.y == 3.0f,
