@@ -3474,9 +3474,8 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 		return lang_error(p, seen->tightness_loc, "'tightness' needs 'spotlight' or 'cylinder'");
 	if (l->kind == SCENE_LIGHT_CYLINDER && !(l->cyl_falloff > 0))
 		return lang_error(p, l->loc, "cylinder falloff must be > 0, found %g", l->cyl_falloff);
-	if (l->kind == SCENE_LIGHT_CYLINDER && l->cyl_falloff < l->cyl_radius)
-		return lang_error(p, l->loc, "cylinder falloff (%g) is smaller than its radius (%g)", l->cyl_falloff,
-				  l->cyl_radius);
+	/* A falloff below the radius is POV-Ray's too (parser.cpp keeps both): the beam is lit fully
+	 * out to the falloff and not beyond (render/light.c cylinder_factor). */
 	if (seen->fade && l->has_intensity)
 		return lang_error(p, seen->fade_loc, "fade_distance and fade_power are POV-Ray's distance law and "
 						     "'intensity' circe's (1 / d^2): give one or the other");
@@ -3569,8 +3568,8 @@ static bool light_head(parser *p, scene_light *l, diag_loc kw, bool *point_at)
 }
 
 /* The checks at a light_source's '}' of what its items ask of each other: point_at and falloff
- * (given where their loc is not NULL) need a light with a direction, a spot's falloff cone holds
- * its radius cone, and a directed light's point_at is not its position. */
+ * (given where their loc is not NULL) need a light with a direction, and a directed light's
+ * point_at is not its position. */
 static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag_loc *point_at, const diag_loc *falloff)
 {
 	bool directed = l->kind == SCENE_LIGHT_SPOT || l->kind == SCENE_LIGHT_PARALLEL || l->kind == SCENE_LIGHT_CYLINDER;
@@ -3578,9 +3577,8 @@ static bool light_close(parser *p, const scene_light *l, diag_loc kw, const diag
 		return lang_error(p, *point_at, "'point_at' needs 'spotlight', 'cylinder' or 'parallel'");
 	if (falloff && l->kind != SCENE_LIGHT_SPOT && l->kind != SCENE_LIGHT_CYLINDER)
 		return lang_error(p, *falloff, "'falloff' needs 'spotlight' or 'cylinder'");
-	if (l->kind == SCENE_LIGHT_SPOT && l->falloff_deg < l->cone_deg)
-		return lang_error(p, kw, "spotlight falloff (%g degrees) is smaller than its radius (%g degrees)",
-				  l->falloff_deg, l->cone_deg);
+	/* A spot's falloff below its radius is POV-Ray's too: lit fully inside the radius, not outside
+	 * (render/light.c light_spot). */
 	if (directed && !(d3_length(d3_sub(l->point_at, l->position)) > 0))
 		return lang_error(p, kw, "point_at is the light position: the light has no direction");
 	return true;

@@ -22,7 +22,10 @@ light light_point(vec3 pos, vec3 intensity)
 
 light light_spot(vec3 pos, vec3 point_at, vec3 intensity, float radius_deg, float falloff_deg)
 {
-	if (falloff_deg < radius_deg) /* POV-Ray: falloff at least radius */
+	/* POV-Ray keeps a falloff below the radius, but its spline (cubic_spline(cos falloff, cos
+	 * radius, cos theta), only outside the radius) is 0 there: the same hard edge at the radius as
+	 * this clamp, which also gives light_power the lit cone. */
+	if (falloff_deg < radius_deg)
 		falloff_deg = radius_deg;
 	return (light){.kind = LIGHT_SPOT,
 		       .color = intensity,
@@ -216,13 +219,15 @@ static bool sphere_cone(const light *l, vec3 p, vec3 *axis, float *dist, float *
 	return *sin2_max > 0.0f;
 }
 
-/* POV-Ray's cubic_spline (point.cpp): 0 below lo, 1 from hi on, a smoothstep between. */
+/* POV-Ray's cubic_spline (lightsource.cpp): 0 below lo, 1 from hi on (hi first when lo = hi, the
+ * spot whose falloff was clamped up to its radius: lit on the radius, as POV-Ray, which skips the
+ * spline there), a smoothstep between. */
 static float cubic_spline(float lo, float hi, float x)
 {
-	if (x <= lo)
-		return 0.0f;
 	if (x >= hi)
 		return 1.0f;
+	if (x < lo)
+		return 0.0f;
 	float t = (x - lo) / (hi - lo);
 	return t * t * (3.0f - 2.0f * t);
 }

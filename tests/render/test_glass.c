@@ -120,6 +120,26 @@ static void test_fade(void)
 		CHECK_NEAR(t.z, 1.0, 1e-6);
 	}
 	CHECK_NEAR(bsdf_fade_apply(&sq, 1.0f).x, 0.5, 1e-6); /* half at fade_distance */
+	/* fade_power 1 (glass.inc has none, POV-Ray's docs' linear-ish case): color + (1 - color) /
+	 * (1 + d / distance), here at distance 2 with glass.inc's default fade_color 0. */
+	bsdf_fade lin = {.distance = 2.0f, .power = 1.0f, .color = v3(0, 0.25f, 0)};
+	const double ds[] = {0.1, 0.5, 1.0, 2.0, 3.7, 10.0};
+	for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++) {
+		vec3 t = bsdf_fade_apply(&lin, (float)ds[i]);
+		double att = 1 + ds[i] / 2.0;
+		CHECK_NEAR(t.x, 1 / att, 1e-6);
+		CHECK_NEAR(t.y, 0.25 + 0.75 / att, 1e-6);
+	}
+	/* glass.inc's I_Glass1 (fade_distance 1, fade_power 2, fade_color 0) through the ruby ball's
+	 * diameter 2: 1 / (1 + 4) = 0.2 of the light, in every channel (the ruby's red is the
+	 * pigment's filter, applied at each surface, not the fade's). */
+	bsdf_fade g1 = {.distance = 1.0f, .power = 2.0f};
+	CHECK_NEAR(bsdf_fade_apply(&g1, 2.0f).x, 0.2, 1e-6);
+	CHECK_NEAR(bsdf_fade_apply(&g1, 2.0f).z, 0.2, 1e-6);
+	/* glass.inc's I_Glass_Fade_Exp2 (fade_distance 1, fade_power 1001): exp(-d). */
+	bsdf_fade g3 = {.distance = 1.0f, .power = 1001.0f};
+	for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++)
+		CHECK_NEAR(bsdf_fade_apply(&g3, (float)ds[i]).y, exp(-ds[i]), 1e-6);
 	bsdf_fade ex = {.distance = 0.5f, .power = 1001.0f, .color = v3(0.2f, 0, 0)};
 	CHECK_NEAR(bsdf_fade_apply(&ex, 0.5f).y, exp(-1.0), 1e-6);
 	CHECK_NEAR(bsdf_fade_apply(&ex, 2.0f).x, exp(-0.8 * 4), 1e-6);

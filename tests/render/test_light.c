@@ -281,6 +281,53 @@ static void test_delta_and_set(void)
 		      ok ? ls.li.x : 0.0, want);
 	}
 
+	/* falloff below radius (radius 30, falloff 15). POV-Ray keeps both (parser.cpp: no clamp);
+	 * its Attenuate_Light, written here from its formula, applies cubic_spline(cos falloff,
+	 * cos radius, cos theta) only outside the radius, where cos theta < cos radius < cos falloff
+	 * makes it 0: full light inside the radius, none outside, a hard edge at the radius (not
+	 * at the falloff). light_spot's clamp of falloff up to radius gives the same. */
+	light narrow = light_spot(v3(0, 1, 0), v3(0, 0, 0), v3s(1), 30, 15);
+	for (float deg = 1; deg <= 61; deg += 4) { /* off the edge: 29 and 33 beside it */
+		float r = deg * RENDER_PI / 180;
+		vec3 q = v3(sinf(r), 1 - cosf(r), 0);
+		bool ok = light_sample_from(&narrow, q, v3s(0), v2(0, 0), &ls);
+		double ct = cos(deg * M_PI / 180), rad = cos(30 * M_PI / 180), fall = cos(15 * M_PI / 180);
+		double want = 1.0; /* pow(cos theta, tightness 0) */
+		if (ct < rad) {	   /* POV-Ray's cubic_spline(low, high, pos) */
+			double lo = fall, hi = rad, t = (ct - lo) / (hi - lo);
+			want *= ct < lo ? 0.0 : ct >= hi ? 1.0 : (3 - 2 * t) * t * t;
+		}
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-4, "falloff < radius at %g deg: %g, want %g", deg,
+		      ok ? ls.li.x : 0.0, want);
+	}
+	/* Exactly on the radius POV-Ray does not call the spline (cos theta < cos radius fails): full. */
+	{
+		float c30 = cosf(30 * RENDER_PI / 180), s30 = sinf(30 * RENDER_PI / 180);
+		vec3 q = v3(s30, 1 - c30, 0);
+		vec3 toq = v3_normalize(v3_sub(q, v3(0, 1, 0)));
+		float ct = -toq.y;
+		bool ok = light_sample_from(&narrow, q, v3s(0), v2(0, 0), &ls);
+		if (ct == narrow.cos_hot)
+			CHECK(ok && ls.li.x == 1.0f, "on the radius: %g, want 1", ok ? ls.li.x : 0.0);
+	}
+
+	/* A cylinder whose falloff (1) is below its radius (2): POV-Ray's Attenuate_Light lights only
+	 * len < falloff, with (1 - len / falloff)^tightness times cubic_spline(0, 1 - radius / falloff,
+	 * 1 - len / falloff) beyond the radius, never reached here: full out to the falloff, then none. */
+	light cyl = light_cylinder(v3(0, 5, 0), v3(0, 0, 0), v3s(1), 2.0f, 1.0f, 0.0f);
+	for (float x = 0.05f; x < 2.5f; x += 0.1f) {
+		bool ok = light_sample_from(&cyl, v3(x, 0, 0), v3s(0), v2(0, 0), &ls);
+		double len = x, want = 0.0;
+		if (len < 1.0) {
+			double dist = 1 - len / 1.0, lo = 0.0, hi = 1 - 2.0 / 1.0;
+			want = 1.0; /* pow(dist, tightness 0) */
+			if (len > 2.0)
+				want *= dist < lo ? 0.0 : dist >= hi ? 1.0 : 0.0;
+		}
+		CHECK(fabs((ok ? ls.li.x : 0.0) - want) < 1e-5, "cylinder falloff < radius at %g: %g, want %g", x,
+		      ok ? ls.li.x : 0.0, want);
+	}
+
 	light par = light_parallel(v3(0, 10, -10), v3(0, 0, 0), v3(3, 3, 3));
 	CHECK(light_sample_from(&par, v3(5, 5, 5), v3s(0), v2(0.3f, 0.3f), &ls) && isinf(ls.dist), "parallel sample");
 	CHECK(fabsf(ls.wi.y - sqrtf(0.5f)) < 1e-6f && fabsf(ls.wi.z + sqrtf(0.5f)) < 1e-6f && ls.li.y == 3.0f,
