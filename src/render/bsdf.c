@@ -185,7 +185,8 @@ vec3 bsdf_albedo(const bsdf_params *b)
 {
 	vec3 a = b->kind == BSDF_PLASTIC ? v3_add(b->diffuse, b->specular) : b->diffuse;
 	if (b->kind == BSDF_POV) /* the diffuse reflectance; the highlights are no albedo */
-		a = v3_mul(v3_scale(b->pigment, b->pov.diffuse * b->pov_scale), b->pov_weight);
+		a = v3_add(v3_mul(v3_scale(b->pigment, b->pov.diffuse * b->pov_scale), b->pov_weight),
+			   b->pov_layer_diffuse);
 	return v3_min(a, v3s(1.0f));
 }
 

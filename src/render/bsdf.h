@@ -83,6 +83,10 @@ typedef struct bsdf_params {
 	/* BSDF_POV: multiplies every lobe (1; at a layered texture, the one layer shade() picked:
 	 * that layer's weight over the probability of picking it, render/world.c shade_layers) */
 	vec3 pov_weight;
+	/* BSDF_POV: a Lambert reflectance added to the lobes as it is (not times pov_scale or
+	 * pov_weight): at a layered texture, the sum of the layers' diffuse terms that shade()
+	 * evaluates exactly rather than by the layer it picks (render/world.c shade_layers); else 0 */
+	vec3 pov_layer_diffuse;
 	/* A layered texture's material: shade() picks one of its layers by render_hit.u_layer, a
 	 * number the integrator draws for it */
 	bool layered;

@@ -74,8 +74,10 @@ static vec3 lobes_bound(const bsdf_params *b)
 
 vec3 bsdf_pov_albedo_bound(const bsdf_params *b)
 {
-	return v3_mul(v3_scale(lobes_bound(b), b->pov_scale), b->pov_weight);
+	return v3_add(v3_mul(v3_scale(lobes_bound(b), b->pov_scale), b->pov_weight), b->pov_layer_diffuse);
 }
+
+static bool has_layer_diffuse(const bsdf_params *b) { return v3_max_comp(b->pov_layer_diffuse) > 0.0f; }
 
 void bsdf_pov_set_pigment(bsdf_params *b, vec3 pigment)
 {
@@ -102,6 +104,12 @@ static void lobe_probs(const bsdf_params *b, vec3 wo, float p[LOBE_COUNT])
 	/* A subsurface texture's b->diffuse is the BSSRDF's albedo: it has no Lambert lobe. */
 	p[LOBE_DIFFUSE] = f->sss_diffuse > 0.0f ? 0.0f : v3_luminance(b->diffuse);
 	p[LOBE_REFLECTION] = has_reflection(f) ? v3_luminance(reflectivity(f, b->pigment, wo.z)) : 0.0f;
+	if (has_layer_diffuse(b)) { /* the picked layer's lobes at their weight beside the layers' diffuse */
+		vec3 w = v3_scale(b->pov_weight, b->pov_scale);
+		p[LOBE_DIFFUSE] = v3_luminance(v3_mul(v3_scale(b->pigment, f->sss_diffuse > 0.0f ? 0.0f : f->diffuse), w));
+		p[LOBE_DIFFUSE] += v3_luminance(b->pov_layer_diffuse);
+		p[LOBE_REFLECTION] = has_reflection(f) ? v3_luminance(v3_mul(reflectivity(f, b->pigment, wo.z), w)) : 0.0f;
+	}
 	float sum = 0.0f;
 	for (int k = 0; k < LOBE_COUNT; k++)
 		sum += p[k] = fmaxf(p[k], 0.0f);
@@ -119,7 +127,8 @@ vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi)
 	vec3 r = v3_scale(b->pigment, f->diffuse * RENDER_INV_PI);
 	if (has_reflection(f))
 		r = v3_madd(r, reflectivity(f, b->pigment, c), bsdf_ggx_reflection(wo, wi, BSDF_POV_MIRROR_ALPHA));
-	return v3_mul(v3_scale(r, b->pov_scale), b->pov_weight);
+	r = v3_mul(v3_scale(r, b->pov_scale), b->pov_weight);
+	return has_layer_diffuse(b) ? v3_madd(r, b->pov_layer_diffuse, RENDER_INV_PI) : r;
 }
 
 vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
@@ -160,6 +169,8 @@ vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
 	if (wo.z <= 0.0f || wi.z <= 0.0f)
 		return v3s(0.0f);
 	vec3 r = v3_mul(v3_scale(b->pigment, b->pov.diffuse * RENDER_INV_PI * b->pov_scale), b->pov_weight);
+	if (has_layer_diffuse(b))
+		r = v3_madd(r, b->pov_layer_diffuse, RENDER_INV_PI);
 	return v3_add(r, bsdf_pov_highlights(b, wo, wi));
 }
 

@@ -267,9 +267,14 @@ static float layers_cap(float s, float t)
  * and ambient scaled by its opacity 1 - filter - transmit, and all of it by W, what the layers
  * above let through (the product of their pigment * filter + transmit); the light that passes
  * every layer is the surface's transparent part (bsdf_clear). The BSDF is the sum of the layers'
- * W-weighted lobes: shade picks one layer by hit->u_layer, with probability proportional to the
- * luminance of its weighted albedo, and returns its lobes times W over that probability
- * (bsdf_params.pov_weight): their expectation is the sum. The emission (ambient) is the sum itself.
+ * W-weighted lobes. Where no layer has its own normal, their Lambert terms (W_i Kd_i opacity_i
+ * C_i, one normal) add into one lobe evaluated exactly (bsdf_params.pov_layer_diffuse), save a
+ * layer whose diffuse is no plain Lambert (brilliance, subsurface); the rest of the layers' lobes
+ * (highlights, reflection, and every lobe where the layers' normals differ) is estimated: shade
+ * picks one layer by hit->u_layer, with probability proportional to the luminance of its weighted
+ * albedo bound less the diffuse already summed, and returns those lobes times W over that
+ * probability (bsdf_params.pov_weight): their expectation is the sum. The emission (ambient) is
+ * the sum itself.
  * Where the sum of the layers' albedos and the transparent part could pass 1 in a channel (upper
  * layers' highlights over the light they let through), the layers' weights are scaled so that
  * it is 1 (doc/language.md "Layered textures"). */
@@ -281,8 +286,11 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 	float clear = 1.0f, total = 0.0f;
 	double u = hit->u_layer;
 	bsdf_params pick = *params;
-	vec3 pick_w = v3s(0.0f), pick_n = raw;
+	vec3 pick_w = v3s(0.0f), pick_n = raw, mixed = v3s(0.0f);
 	float pick_a = 0.0f;
+	bool mix = true; /* every layer sees the same normal: their Lambert terms add into one lobe */
+	for (uint32_t i = 0; i < wm->n_layers; i++)
+		mix = mix && !wm->layers[i].has_normal;
 	for (uint32_t i = wm->n_layers; i-- > 0;) {
 		const world_layer *l = &wm->layers[i];
 		vec3 n = raw;
@@ -302,6 +310,13 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 		b.pov.diffuse *= opacity;
 		bsdf_pov_set_pigment(&b, rgb);
 		emit = v3_add(emit, v3_mul(through, v3_scale(b.emit, opacity)));
+		if (mix && b.pov.diffuse > 0.0f && b.pov.brilliance_less_1 == 0.0f && b.pov.sss_diffuse <= 0.0f) {
+			vec3 d = v3_mul(through, b.diffuse);
+			mixed = v3_add(mixed, d);
+			sum = v3_add(sum, d);
+			b.pov.diffuse = 0.0f; /* after bsdf_pov_set_pigment: pov_scale counts it */
+			b.diffuse = v3s(0.0f);
+		}
 		vec3 wa = v3_mul(through, bsdf_pov_albedo_bound(&b));
 		sum = v3_add(sum, wa);
 		float a = v3_luminance(wa);
@@ -329,6 +344,7 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 	} else { /* no layer reflects anything: the top one's lobes at weight 0 */
 		params->pov_weight = v3s(0.0f);
 	}
+	params->pov_layer_diffuse = v3_scale(mixed, k);
 	params->emit = emit;
 	*ns = pick_n;
 	if (params->clear.patterned) {
