@@ -45,6 +45,7 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 		cp.mesh_faces = (const cam_mesh_face *)c->mesh_faces;
 		cp.mesh_n = c->mesh_n;
 		cp.mesh_first = c->mesh_first, cp.mesh_count = c->mesh_count;
+		cp.mesh_distribution = c->mesh_distribution;
 		cp.mesh_offset = (float)c->location.z; /* POV-Ray's Location[Z], along the normal */
 		cp.mesh_invert = c->has_direction && c->direction.z < -1e-10; /* POV-Ray's -EPSILON */
 	}

@@ -3196,9 +3196,9 @@ static bool camera_accepted(parser *p, const lang_token *t)
 
 /* POV-Ray's mesh_camera (Parse_Mesh_Camera), the lookahead 'mesh_camera': "{" rays_per_pixel
  * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". circe does what the
- * sample scenes' pinhole and orthographic meshes need: distribution 0, ray k of pixel i from
- * face i of mesh k (tracepixel.cpp's CreateCameraRay); the rest is refused where it is
- * written. */
+ * sample scenes' pinhole, orthographic and stereo meshes need: distribution 0, ray k of pixel i
+ * from face i of mesh k, and 2, the meshes side by side (tracepixel.cpp's CreateCameraRay); the
+ * rest is refused where it is written. */
 static bool mesh_camera_block(parser *p, scene_camera *c)
 {
 	diag_loc open;
@@ -3209,10 +3209,14 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 	TRY(lang_int(p, "for the mesh_camera's rays_per_pixel", 1, 1L << 30, &rays));
 	at = lang_peek(p)->loc;
 	TRY(lang_int(p, "for the mesh_camera's distribution_type", 0, 3, &dist));
-	if (dist != 0)
-		return lang_error(p, at, "circe's mesh_camera does distribution_type 0 only (a face per pixel); %ld is "
+	if (dist == 1 || dist == 3)
+		return lang_error(p, at, "circe's mesh_camera does distribution_type 0 and 2 only; %ld (POV-Ray's %s) is "
 					 "not supported",
-				  dist);
+				  dist, dist == 1 ? "summed meshes" : "uv baking");
+	if (dist == 2 && rays != 1)
+		return lang_error(p, rays_at, "rays per pixel must be 1 for mesh_camera distribution 2, as in POV-Ray; "
+					      "found %ld",
+				  rays);
 	if (lang_float_follows(p)) {
 		double x;
 		at = lang_peek(p)->loc;
@@ -3241,7 +3245,7 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 	}
 	if (ok && b.len == 0)
 		ok = lang_error(p, lang_peek(p)->loc, "a mesh_camera needs a mesh or mesh2 after its distribution type");
-	if (ok && (size_t)rays > b.len)
+	if (ok && dist == 0 && (size_t)rays > b.len)
 		ok = lang_error(p, rays_at, "a mesh_camera of distribution 0 needs a mesh for each of its %ld rays per pixel, "
 				       "found %zu mesh%s",
 				rays, b.len, b.len == 1 ? "" : "es");
@@ -3252,7 +3256,7 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 						      "line %d",
 				open.line);
 	if (ok) { /* ray k of a pixel from mesh k, as POV-Ray; the degenerate faces are not faces */
-		uint32_t total = 0, nm = (uint32_t)rays;
+		uint32_t total = 0, nm = dist == 2 ? (uint32_t)b.len : (uint32_t)rays; /* 2: side by side */
 		for (uint32_t k = 0; k < nm; k++)
 			total += ((const scene_object *)b.data)[k].geom->u.mesh.n_faces;
 		scene_cam_face *f = arena_zalloc(&p->sc->arena, total ? total : 1, sizeof *f);
@@ -3276,6 +3280,7 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 		if (ok)
 			first[nm] = n;
 		c->mesh_faces = f, c->mesh_n = n, c->mesh_first = first, c->mesh_count = nm;
+		c->mesh_distribution = (int)dist;
 		c->type = SCENE_CAM_MESH;
 	}
 	vecbuf_free(&b);

@@ -167,6 +167,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		c->type = CAM_MESH;
 		c->mesh_faces = p->mesh_faces, c->mesh_n = p->mesh_n;
 		c->mesh_first = p->mesh_first, c->mesh_count = p->mesh_count;
+		c->mesh_distribution = p->mesh_distribution;
 		c->mesh_offset = p->mesh_offset, c->mesh_invert = p->mesh_invert;
 		c->origin = v3(0.0f, 0.0f, 0.0f), c->forward = v3(0.0f, 0.0f, 1.0f);
 		c->width = width, c->height = height;
@@ -337,9 +338,16 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 		 * the mesh's last face, no ray. The sub-pixel position is lost, as in POV-Ray (its x, y
 		 * floored); pixel_u.x picks the mesh instead, so the samples average POV-Ray's rays. */
 		uint32_t k = (uint32_t)(pixel_u.x * (float)c->mesh_count);
+		uint64_t i = (uint64_t)py * (uint64_t)c->width + (uint64_t)px;
+		if (c->mesh_distribution == 2) {
+			/* POV-Ray's distribution 2: mesh k for the k-th of mesh_count strips, its face
+			 * y * (width / mesh_count) + x with x the image's column (not the strip's), as
+			 * POV-Ray 3.7 computes it */
+			k = (uint32_t)((double)px / ((double)c->width / (double)c->mesh_count));
+			i = (uint64_t)py * (uint64_t)((uint32_t)c->width / c->mesh_count) + (uint64_t)px;
+		}
 		if (k >= c->mesh_count)
 			k = c->mesh_count - 1;
-		uint64_t i = (uint64_t)py * (uint64_t)c->width + (uint64_t)px;
 		uint32_t from = c->mesh_first[k], to = c->mesh_first[k + 1];
 		if (px < 0 || py < 0 || px >= c->width || i >= (uint64_t)(to - from))
 			return false;

@@ -72,6 +72,7 @@ typedef struct cam_params {
 	const cam_mesh_face *mesh_faces;
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
+	int mesh_distribution; /* 0; 2: POV-Ray's side-by-side cameras, mesh k for the k-th strip */
 	float mesh_offset;
 	bool mesh_invert;
 } cam_params;
@@ -96,6 +97,7 @@ typedef struct cam {
 	const cam_mesh_face *mesh_faces; /* CAM_MESH, as cam_params */
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
+	int mesh_distribution;
 	float mesh_offset;
 	bool mesh_invert;
 } cam;

@@ -626,7 +626,7 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 	if (c->type == SCENE_CAM_SPHERICAL)
 		fprintf(o, " v_angle %g", c->v_angle_deg);
 	if (c->type == SCENE_CAM_MESH)
-		fprintf(o, " meshes %u faces %u", c->mesh_count, c->mesh_n);
+		fprintf(o, " distribution %d meshes %u faces %u", c->mesh_distribution, c->mesh_count, c->mesh_n);
 	if (c->has_direction)
 		dump_d3(o, "direction", c->direction);
 	if (!c->has_look_at)

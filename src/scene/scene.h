@@ -55,6 +55,7 @@ typedef struct scene_camera {
 	const scene_cam_face *mesh_faces;
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
+	int mesh_distribution; /* 0, or 2: mesh k the k-th vertical strip of the image */
 } scene_camera;
 
 typedef enum scene_light_kind {

@@ -272,6 +272,19 @@ static void test_mesh_camera(void)
 	CHECK(cam_sample(&c, 1, 0, v2(0.4f, 0.2f), v2(0, 0), &r), "pixel 1 inverted");
 	CHECK(near3(r.o, v3(14.0f / 3, 2.0f / 3, -1), 1e-5f) && near3(r.d, v3(0, 0, 1), 1e-6f),
 	      "pixel 1 inverted: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+	/* Distribution 2 on a 4 x 1 image, mesh 0 = A, B and mesh 1 = A, B, C: pixels 0 and 1 the left
+	 * strip (faces 0, 1 of mesh 0), pixels 2 and 3 the right (faces 2, 3 of mesh 1: POV-Ray's
+	 * y * (width / 2) + x with the image's x), face 3 past mesh 1's last. */
+	const scene_cam_face g[5] = {f[0], f[1], f[0], f[1], f[2]};
+	const uint32_t first2[3] = {0, 2, 5};
+	p.mesh_faces = (const cam_mesh_face *)g, p.mesh_n = 5, p.mesh_first = first2;
+	p.mesh_distribution = 2, p.mesh_invert = false;
+	CHECK(cam_init(&c, &p, 4, 1), "mesh camera distribution 2");
+	CHECK(cam_sample(&c, 1, 0, v2(0.9f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(0, 0, -1), 1e-6f),
+	      "distribution 2, pixel 1: face B of mesh 0");
+	CHECK(cam_sample(&c, 2, 0, v2(0.1f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(r5, -2 * r5, 0), 1e-6f),
+	      "distribution 2, pixel 2: face C of mesh 1 (d %g %g %g)", r.d.x, r.d.y, r.d.z);
+	CHECK(!cam_sample(&c, 3, 0, v2(0.1f, 0.5f), v2(0, 0), &r), "distribution 2, pixel 3 past mesh 1 has a ray");
 	p.mesh_n = 0;
 	CHECK(!cam_init(&c, &p, 2, 2), "a mesh camera without faces is accepted");
 }
