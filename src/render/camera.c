@@ -169,11 +169,18 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		c->mesh_first = p->mesh_first, c->mesh_count = p->mesh_count;
 		c->mesh_distribution = p->mesh_distribution;
 		c->mesh_offset = p->mesh_offset, c->mesh_invert = p->mesh_invert;
-		c->origin = v3(0.0f, 0.0f, 0.0f), c->forward = v3(0.0f, 0.0f, 1.0f);
 		c->width = width, c->height = height;
-		if (!p->mesh_faces || p->mesh_n == 0 || !p->mesh_first || p->mesh_count == 0)
+		if (!p->mesh_faces || p->mesh_n == 0 || !p->mesh_first || p->mesh_count == 0) {
 			*why = "its mesh_camera has no faces";
-		return !*why;
+			return false;
+		}
+		/* The first face's ray stands for the camera where one point is wanted (the
+		 * tessellation's view, cam_ray's fallback). */
+		c->origin = p->mesh_faces[0].centroid, c->forward = p->mesh_faces[0].dir;
+		vec3 side = fabsf(c->forward.y) < 0.9f ? v3(0.0f, 1.0f, 0.0f) : v3(1.0f, 0.0f, 0.0f);
+		c->right = v3_normalize(v3_cross(side, c->forward));
+		c->up = v3_cross(c->forward, c->right);
+		return true;
 	}
 	cam_params q = *p;
 	if (p->type != CAM_PERSPECTIVE && p->type != CAM_ORTHOGRAPHIC)

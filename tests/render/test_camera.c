@@ -255,6 +255,9 @@ static void test_mesh_camera(void)
 	p.mesh_offset = 0.5f;
 	cam c;
 	CHECK(cam_init(&c, &p, 2, 2), "mesh camera");
+	CHECK(near3(c.origin, f[0].centroid, 0) && near3(c.forward, f[0].dir, 0) && fabsf(v3_dot(c.up, c.forward)) < 1e-6f &&
+		  fabsf(v3_length(c.up) - 1) < 1e-6f && fabsf(v3_dot(c.right, c.up)) < 1e-6f,
+	      "mesh camera's frame: the first face's ray, an orthonormal up and right");
 	render_ray r;
 	CHECK(cam_sample(&c, 0, 0, v2(0.1f, 0.9f), v2(0, 0), &r), "pixel 0, mesh 0");
 	CHECK(near3(r.o, v3(14.0f / 3, 2.0f / 3, 1), 1e-5f) && near3(r.d, v3(0, 0, 1), 1e-6f),
