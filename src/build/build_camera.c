@@ -4,6 +4,7 @@
 #include "scene/pattern.h"
 
 #include <math.h>
+#include <stddef.h>
 
 /* The scene's camera as cam_params, POV-Ray's default when it has none: the one derivation that
  * the render's camera (build_camera) and the tessellation's view (scene_view) both start from.
@@ -36,6 +37,18 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 	cp.v_angle_deg = (float)c->v_angle_deg;
 	cp.has_xform = c->has_xform;
 	cp.xf = c->xf;
+	if (cp.type == CAM_MESH) {
+		_Static_assert(sizeof(scene_cam_face) == sizeof(cam_mesh_face) &&
+				   offsetof(scene_cam_face, offset) == offsetof(cam_mesh_face, offset) &&
+				   offsetof(scene_cam_face, dir) == offsetof(cam_mesh_face, dir),
+			       "scene_cam_face is cam_mesh_face");
+		cp.mesh_faces = (const cam_mesh_face *)c->mesh_faces;
+		cp.mesh_n = c->mesh_n;
+		cp.mesh_first = c->mesh_first, cp.mesh_count = c->mesh_count;
+		cp.mesh_distribution = c->mesh_distribution;
+		cp.mesh_offset = (float)c->location.z; /* POV-Ray's Location[Z], along the normal */
+		cp.mesh_invert = c->has_direction && c->direction.z < -1e-10; /* POV-Ray's -EPSILON */
+	}
 	return cp;
 }
 

@@ -1971,8 +1971,21 @@ static bool smooth_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 }
 
 /* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } ) { modifier } "}" */
+static bool declared_object(parser *p, vecbuf *out, diag_loc kw);
+
 static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
+	if (lang_peek(p)->kind == LTK_IDENT) { /* POV-Ray's mesh { Declared_Mesh mods }: a copy */
+		size_t start = out->len;
+		lang_token t = *lang_peek(p);
+		TRY(declared_object(p, out, kw));
+		for (size_t i = start; i < out->len; i++) {
+			const scene_geom *g = ((const scene_object *)out->data)[i].geom;
+			if (!g || (g->kind != SHAPE_MESH && g->kind != SHAPE_MESH_FILE))
+				return lang_error(p, t.loc, "'%.*s' is not a mesh, after 'mesh {'", (int)t.len, t.text);
+		}
+		return object_tail(p, out, start, open, "mesh");
+	}
 	if (lang_accept(p, LTK_KW_FILE)) {
 		scene_geom *g;
 		TRY(g = new_geom(p, SHAPE_MESH_FILE, kw));
@@ -3181,13 +3194,106 @@ static bool camera_accepted(parser *p, const lang_token *t)
 	return lang_float(p, t->kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x);
 }
 
+/* POV-Ray's mesh_camera (Parse_Mesh_Camera), the lookahead 'mesh_camera': "{" rays_per_pixel
+ * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". circe does what the
+ * sample scenes' pinhole, orthographic and stereo meshes need: distribution 0, ray k of pixel i
+ * from face i of mesh k, and 2, the meshes side by side (tracepixel.cpp's CreateCameraRay); the
+ * rest is refused where it is written. */
+static bool mesh_camera_block(parser *p, scene_camera *c)
+{
+	diag_loc open;
+	lang_advance(p);
+	TRY(open_block(p, "mesh_camera", &open));
+	long rays, dist;
+	diag_loc at = lang_peek(p)->loc, rays_at = at;
+	TRY(lang_int(p, "for the mesh_camera's rays_per_pixel", 1, 1L << 30, &rays));
+	at = lang_peek(p)->loc;
+	TRY(lang_int(p, "for the mesh_camera's distribution_type", 0, 3, &dist));
+	if (dist == 1 || dist == 3)
+		return lang_error(p, at, "circe's mesh_camera does distribution_type 0 and 2 only; %ld (POV-Ray's %s) is "
+					 "not supported",
+				  dist, dist == 1 ? "summed meshes" : "uv baking");
+	if (dist == 2 && rays != 1)
+		return lang_error(p, rays_at, "rays per pixel must be 1 for mesh_camera distribution 2, as in POV-Ray; "
+					      "found %ld",
+				  rays);
+	if (lang_float_follows(p)) {
+		double x;
+		at = lang_peek(p)->loc;
+		TRY(lang_float(p, "for the mesh_camera's max_distance", &x));
+		if (x != 0)
+			return lang_error(p, at, "circe's mesh_camera has no max_distance (found %g); rays run to infinity",
+					  x);
+	}
+	vecbuf b;
+	vecbuf_init(&b, sizeof(scene_object));
+	bool ok = true;
+	for (;;) {
+		lang_token t = *lang_peek(p);
+		if (t.kind != LTK_KW_MESH && t.kind != LTK_KW_MESH2)
+			break;
+		size_t from = b.len;
+		bool matched;
+		if (!(ok = object_item_unplaced(p, &b, &matched)))
+			break;
+		const scene_object *o = (const scene_object *)b.data + from;
+		if (b.len != from + 1 || o->geom->kind != SHAPE_MESH) {
+			ok = lang_error(p, t.loc, "a mesh_camera's mesh must be one plain mesh (no per-face textures, no "
+						  "file)");
+			break;
+		}
+	}
+	if (ok && b.len == 0)
+		ok = lang_error(p, lang_peek(p)->loc, "a mesh_camera needs a mesh or mesh2 after its distribution type");
+	if (ok && dist == 0 && (size_t)rays > b.len)
+		ok = lang_error(p, rays_at, "a mesh_camera of distribution 0 needs a mesh for each of its %ld rays per pixel, "
+				       "found %zu mesh%s",
+				rays, b.len, b.len == 1 ? "" : "es");
+	if (ok && lang_peek(p)->kind == LTK_KW_SMOOTH)
+		ok = lang_error(p, lang_peek(p)->loc, "smooth is for mesh_camera distribution 3 only, as in POV-Ray");
+	if (ok && !lang_accept(p, LTK_RBRACE))
+		ok = lang_error(p, lang_peek(p)->loc, "expected another mesh or '}' to close the mesh_camera opened at "
+						      "line %d",
+				open.line);
+	if (ok) { /* ray k of a pixel from mesh k, as POV-Ray; the degenerate faces are not faces */
+		uint32_t total = 0, nm = dist == 2 ? (uint32_t)b.len : (uint32_t)rays; /* 2: side by side */
+		for (uint32_t k = 0; k < nm; k++)
+			total += ((const scene_object *)b.data)[k].geom->u.mesh.n_faces;
+		scene_cam_face *f = arena_zalloc(&p->sc->arena, total ? total : 1, sizeof *f);
+		uint32_t *first = arena_zalloc(&p->sc->arena, nm + 1, sizeof *first);
+		if (!f || !first)
+			ok = lang_error(p, open, "out of memory");
+		uint32_t n = 0;
+		for (uint32_t k = 0; ok && k < nm; k++) {
+			const scene_object *o = (const scene_object *)b.data + k;
+			const scene_mesh *m = &o->geom->u.mesh;
+			first[k] = n;
+			for (uint32_t i = 0; i < m->n_faces; i++) {
+				const uint32_t *v = &m->faces[3 * i];
+				if (scene_cam_face_make(v3_to_d3(m->positions[v[0]]), v3_to_d3(m->positions[v[1]]),
+							v3_to_d3(m->positions[v[2]]), &o->transform, &f[n]))
+					n++;
+			}
+			if (n == first[k])
+				ok = lang_error(p, o->loc, "the mesh_camera's mesh has no face with an area");
+		}
+		if (ok)
+			first[nm] = n;
+		c->mesh_faces = f, c->mesh_n = n, c->mesh_first = first, c->mesh_count = nm;
+		c->mesh_distribution = (int)dist;
+		c->type = SCENE_CAM_MESH;
+	}
+	vecbuf_free(&b);
+	return ok;
+}
+
 /* camera = "camera" "{" [ projection ] { "location" vector | "look_at" vector | "sky" vector
  *          | "direction" vector | "angle" float [ "," float ] | "right" vector | "up" vector
  *          | "aperture" float | "focal_point" vector | "blur_samples" float [ "," float ]
  *          | "confidence" float | "variance" float | transform } "}"
  * (an identifier first: a declared camera, then modified)
  * projection = "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle" | "panoramic"
- *          | "cylinder" int | "spherical"
+ *          | "cylinder" int | "spherical" | "omnimax" | mesh_camera (mesh_camera_block)
  * As POV-Ray 3.7 (Parse_Camera), the order of the settings does not matter: angle applies after
  * right and direction, look_at after angle, the transforms last (render/camera.c). */
 static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
@@ -3217,6 +3323,14 @@ static bool camera_block(parser *p, scene_camera *c, diag_loc kw)
 		bool ok, matched;
 		int type = camera_type(p, &t, &ok);
 		TRY(ok);
+		if (type < 0 && lang_word_is(&t, "mesh_camera")) {
+			if (!first)
+				return lang_error(p, t.loc, "the projection ('mesh_camera') must come first in the camera, as "
+							    "in POV-Ray");
+			TRY(mesh_camera_block(p, c));
+			first = false;
+			continue;
+		}
 		if (type >= 0) {
 			if (!first)
 				return lang_error(p, t.loc, "the projection ('%.*s') must come first in the camera, as in POV-Ray",

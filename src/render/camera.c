@@ -163,6 +163,25 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 	if (*why)
 		return false;
 	*c = (cam){0}; /* no perturb unless the caller sets one after */
+	if (p->type == CAM_MESH) { /* POV-Ray: the faces alone make the rays */
+		c->type = CAM_MESH;
+		c->mesh_faces = p->mesh_faces, c->mesh_n = p->mesh_n;
+		c->mesh_first = p->mesh_first, c->mesh_count = p->mesh_count;
+		c->mesh_distribution = p->mesh_distribution;
+		c->mesh_offset = p->mesh_offset, c->mesh_invert = p->mesh_invert;
+		c->width = width, c->height = height;
+		if (!p->mesh_faces || p->mesh_n == 0 || !p->mesh_first || p->mesh_count == 0) {
+			*why = "its mesh_camera has no faces";
+			return false;
+		}
+		/* The first face's ray stands for the camera where one point is wanted (the
+		 * tessellation's view, cam_ray's fallback). */
+		c->origin = p->mesh_faces[0].centroid, c->forward = p->mesh_faces[0].dir;
+		vec3 side = fabsf(c->forward.y) < 0.9f ? v3(0.0f, 1.0f, 0.0f) : v3(1.0f, 0.0f, 0.0f);
+		c->right = v3_normalize(v3_cross(side, c->forward));
+		c->up = v3_cross(c->forward, c->right);
+		return true;
+	}
 	cam_params q = *p;
 	if (p->type != CAM_PERSPECTIVE && p->type != CAM_ORTHOGRAPHIC)
 		q.has_angle = false; /* the angle is the projection's own, not the screen's */
@@ -295,7 +314,8 @@ static bool cam_project(const cam *c, float sx, float sy, render_ray *ray)
 		ray->d = cam_dir(c, cx * sy2, sx2 * sy2, cy);
 		return true;
 	}
-	case CAM_PERSPECTIVE: break;
+	case CAM_PERSPECTIVE:
+	case CAM_MESH: break; /* cam_sample's own */
 	}
 	return false;
 }
@@ -320,6 +340,29 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 {
 	float sx = 2.0f * (((float)px + pixel_u.x) / (float)c->width) - 1.0f;  /* -1 left, +1 right */
 	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
+	if (c->type == CAM_MESH) {
+		/* POV-Ray's distribution 0: the pixel's index is its face's in the mesh of the ray; past
+		 * the mesh's last face, no ray. The sub-pixel position is lost, as in POV-Ray (its x, y
+		 * floored); pixel_u.x picks the mesh instead, so the samples average POV-Ray's rays. */
+		uint32_t k = (uint32_t)(pixel_u.x * (float)c->mesh_count);
+		uint64_t i = (uint64_t)py * (uint64_t)c->width + (uint64_t)px;
+		if (c->mesh_distribution == 2) {
+			/* POV-Ray's distribution 2: mesh k for the k-th of mesh_count strips, its face
+			 * y * (width / mesh_count) + x with x the image's column (not the strip's), as
+			 * POV-Ray 3.7 computes it */
+			k = (uint32_t)((double)px / ((double)c->width / (double)c->mesh_count));
+			i = (uint64_t)py * (uint64_t)((uint32_t)c->width / c->mesh_count) + (uint64_t)px;
+		}
+		if (k >= c->mesh_count)
+			k = c->mesh_count - 1;
+		uint32_t from = c->mesh_first[k], to = c->mesh_first[k + 1];
+		if (px < 0 || py < 0 || px >= c->width || i >= (uint64_t)(to - from))
+			return false;
+		const cam_mesh_face *f = &c->mesh_faces[from + i];
+		out->o = v3_madd(f->centroid, f->offset, c->mesh_offset);
+		out->d = c->mesh_invert ? v3_scale(f->dir, -1.0f) : f->dir;
+		return true;
+	}
 	if (c->type == CAM_PERSPECTIVE) {
 		*out = cam_perspective(c, sx, sy, lens_u);
 	} else {

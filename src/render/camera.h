@@ -10,6 +10,7 @@
 #include "base/vec.h"
 
 #include <stdbool.h>
+#include <stdint.h>
 
 /* A ray: origin, unit direction. */
 typedef struct render_ray {
@@ -29,7 +30,18 @@ typedef enum cam_type {
 	CAM_CYLINDER_4, /* axis along right, orthographic along right */
 	CAM_SPHERICAL,
 	CAM_OMNIMAX, /* POV-Ray's: a fisheye of 180 degrees on the dome's curve, 45 below the axis cut */
+	CAM_MESH,    /* POV-Ray's mesh_camera, distribution 0: pixel y * width + x from face y * width + x
+			of one of its meshes, the sample's pixel_u.x choosing which (POV-Ray's ray k
+			from mesh k, averaged) */
 } cam_type;
+
+/* A mesh_camera's faces in world space, one ray each (POV-Ray's CreateCameraRay, MESH_CAMERA):
+ * the face's centroid, the mesh transform's linear part applied to the face's unit normal (the
+ * offset of POV-Ray's location z, taken along the normal before the transform), and the
+ * transformed unit normal (the direction). In the scene's arena; the camera only points here. */
+typedef struct cam_mesh_face {
+	vec3 centroid, offset, dir;
+} cam_mesh_face;
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are
  * doubles, as the scene gives them: the view look_at - location and the focal distance are
@@ -53,6 +65,16 @@ typedef struct cam_params {
 	float v_angle_deg; /* spherical: the vertical field of view (angle_deg the horizontal) */
 	bool has_xform;	   /* the camera's own translate/rotate/scale/matrix, applied last */
 	xform xf;
+	/* CAM_MESH: its faces, mesh k's (mesh_count of them, one a ray per pixel) from
+	 * mesh_first[k] to mesh_first[k + 1] (face i of each for pixel i), the offset along each face's normal (POV-Ray's
+	 * location z) and whether the rays run against the normals (direction z < 0); the frame,
+	 * angle, lens and transform do not apply, as in POV-Ray. */
+	const cam_mesh_face *mesh_faces;
+	const uint32_t *mesh_first;
+	uint32_t mesh_n, mesh_count;
+	int mesh_distribution; /* 0; 2: POV-Ray's side-by-side cameras, mesh k for the k-th strip */
+	float mesh_offset;
+	bool mesh_invert;
 } cam_params;
 
 /* The ready camera: an orthonormal frame and the screen vectors at unit forward distance. */
@@ -72,6 +94,12 @@ typedef struct cam {
 	 * perspective and orthographic cameras); thread-safe. NULL: none. */
 	void (*perturb)(const void *user, float x0, float y0, vec3 *d);
 	const void *perturb_user;
+	const cam_mesh_face *mesh_faces; /* CAM_MESH, as cam_params */
+	const uint32_t *mesh_first;
+	uint32_t mesh_n, mesh_count;
+	int mesh_distribution;
+	float mesh_offset;
+	bool mesh_invert;
 } cam;
 
 cam_params cam_params_default(void);
@@ -86,7 +114,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
  * lens_u in [0,1)^2 choosing the point on the lens (ignored for a pinhole). */
 render_ray cam_ray(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u);
 /* cam_ray for every projection: false where the projection has no ray (outside fisheye's
- * circle), the pixel then black as in POV-Ray. */
+ * circle; a mesh camera's pixel past its last face), the pixel then black as in POV-Ray. */
 bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_ray *out);
 
 #endif

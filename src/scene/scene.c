@@ -601,16 +601,32 @@ static void dump_xform(FILE *o, const xform *t)
 	fputc('\n', o);
 }
 
+bool scene_cam_face_make(dvec3 p1, dvec3 p2, dvec3 p3, const xform *t, scene_cam_face *out)
+{
+	dvec3 n = d3_cross(d3_sub(p3, p1), d3_sub(p2, p1));
+	double len = d3_length(n);
+	if (!(len > 0) || !isfinite(len))
+		return false;
+	n = d3_scale(n, 1.0 / len);
+	dvec3 cen = d3_scale(d3_add(d3_add(p1, p2), p3), 1.0 / 3.0);
+	*out = (scene_cam_face){.centroid = d3_to_v3(xform_point(t, cen)),
+				.offset = d3_to_v3(xform_vector(t, n)),
+				.dir = d3_to_v3(d3_normalize(xform_normal(t, n)))};
+	return true;
+}
+
 /* What the camera says beyond POV-Ray's perspective defaults; nothing for those. */
 static void dump_camera_more(FILE *o, const scene_camera *c)
 {
 	static const char *const types[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
 					    "panoramic", "cylinder 1", "cylinder 2", "cylinder 3",
-					    "cylinder 4", "spherical", "omnimax"};
+					    "cylinder 4", "spherical", "omnimax", "mesh_camera"};
 	if (c->type != SCENE_CAM_PERSPECTIVE)
 		fprintf(o, " %s", types[c->type]);
 	if (c->type == SCENE_CAM_SPHERICAL)
 		fprintf(o, " v_angle %g", c->v_angle_deg);
+	if (c->type == SCENE_CAM_MESH)
+		fprintf(o, " distribution %d meshes %u faces %u", c->mesh_distribution, c->mesh_count, c->mesh_n);
 	if (c->has_direction)
 		dump_d3(o, "direction", c->direction);
 	if (!c->has_look_at)

@@ -17,8 +17,19 @@
 typedef enum scene_cam_type {
 	SCENE_CAM_PERSPECTIVE, SCENE_CAM_ORTHOGRAPHIC, SCENE_CAM_FISHEYE, SCENE_CAM_ULTRA_WIDE_ANGLE,
 	SCENE_CAM_PANORAMIC, SCENE_CAM_CYLINDER_1, SCENE_CAM_CYLINDER_2, SCENE_CAM_CYLINDER_3,
-	SCENE_CAM_CYLINDER_4, SCENE_CAM_SPHERICAL, SCENE_CAM_OMNIMAX,
+	SCENE_CAM_CYLINDER_4, SCENE_CAM_SPHERICAL, SCENE_CAM_OMNIMAX, SCENE_CAM_MESH,
 } scene_cam_type;
+
+/* One face of a mesh_camera's mesh in world space (render/camera.h's cam_mesh_face, the same
+ * layout): its centroid, the mesh transform's linear part of its unit normal, the transformed
+ * unit normal. */
+typedef struct scene_cam_face {
+	vec3 centroid, offset, dir;
+} scene_cam_face;
+/* The face of triangle p1 p2 p3 under the mesh's object-to-world t, as POV-Ray's mesh camera
+ * takes it: the centroid, the unit normal cross(p3 - p1, p2 - p1) (Mesh::Compute_Mesh_Triangle).
+ * False for a degenerate triangle (POV-Ray drops it: not a face). */
+bool scene_cam_face_make(dvec3 p1, dvec3 p2, dvec3 p3, const xform *t, scene_cam_face *out);
 
 typedef struct scene_camera {
 	diag_loc loc;
@@ -37,6 +48,14 @@ typedef struct scene_camera {
 	 * the image point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]); NULL: none */
 	const struct scene_pigment *normal;
 	diag_loc normal_loc;
+	/* SCENE_CAM_MESH, POV-Ray's mesh_camera (distribution 0): the non-degenerate faces of its
+	 * first mesh_count meshes (one a ray per pixel), mesh k's from mesh_first[k] to
+	 * mesh_first[k + 1], in the scene's arena; location z offsets each ray's origin along its
+	 * face normal, a direction z < 0 reverses the rays */
+	const scene_cam_face *mesh_faces;
+	const uint32_t *mesh_first;
+	uint32_t mesh_n, mesh_count;
+	int mesh_distribution; /* 0, or 2: mesh k the k-th vertical strip of the image */
 } scene_camera;
 
 typedef enum scene_light_kind {

@@ -3,6 +3,7 @@
 #include "base/rng.h"
 #include "check.h"
 #include "render/camera.h"
+#include "scene/scene.h"
 
 /* The ray through image point (sx, sy) in [-1, 1]^2 (+1 right, +1 top) of a 2 x 2 image. */
 static bool ray_at(const cam *c, float sx, float sy, render_ray *r)
@@ -215,8 +216,85 @@ static void test_omnimax(void)
 	CHECK_NEAR(angle_deg(r.d, c.forward), (1.411269 - 0.09439 + 0.25674) * 180 / M_PI, 2e-2);
 }
 
+/* POV-Ray's mesh_camera, distribution 0 (tracepixel.cpp's MESH_CAMERA): pixel i shoots from face i
+ * of the ray's mesh, at the centroid moved location z along the face normal, in the direction of
+ * the normal cross(P3 - P1, P2 - P1) (reversed by direction z < 0), under the mesh's transform;
+ * no ray past the mesh's last face. Values by hand. */
+static void test_mesh_camera(void)
+{
+	xform sc, t;
+	CHECK(xform_scale(d3(2, 2, 2), &sc), "scale");
+	t = xform_then(xform_translate(d3(2, 0, 0)), sc); /* x' = 2 (x + 2), y' = 2 y, z' = 2 z */
+	scene_cam_face f[3];
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(0, 1, 0), d3(1, 0, 0), &t, &f[0]), "face A");
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(1, 0, 0), d3(0, 1, 0), &t, &f[1]), "face B");
+	CHECK(!scene_cam_face_make(d3(0, 0, 0), d3(1, 1, 1), d3(2, 2, 2), &t, &f[2]), "a degenerate face is a face");
+	/* A and B: centroid (1/3, 1/3, 0) -> (14/3, 2/3, 0); normals +z (A) and -z (B), offset twice that. */
+	CHECK(near3(f[0].centroid, v3(14.0f / 3, 2.0f / 3, 0), 1e-5f) && near3(f[0].dir, v3(0, 0, 1), 1e-6f) &&
+		  near3(f[0].offset, v3(0, 0, 2), 1e-6f),
+	      "face A: centroid (%g %g %g) dir (%g %g %g)", f[0].centroid.x, f[0].centroid.y, f[0].centroid.z,
+	      f[0].dir.x, f[0].dir.y, f[0].dir.z);
+	CHECK(near3(f[1].dir, v3(0, 0, -1), 1e-6f), "face B's normal (%g %g %g)", f[1].dir.x, f[1].dir.y, f[1].dir.z);
+	/* A non-uniform scale <2,1,1> of (0,0,0) (0,0,1) (1,1,0): normal (1,-1,0)/sqrt 2, centroid
+	 * (1/3,1/3,1/3) -> (2/3,1/3,1/3); offset S n = (2,-1,0)/sqrt 2; direction S^-T n ~ (1,-2,0)/sqrt 5. */
+	xform s2;
+	CHECK(xform_scale(d3(2, 1, 1), &s2), "scale 2 1 1");
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(0, 0, 1), d3(1, 1, 0), &s2, &f[2]), "face C");
+	float r2 = 1.0f / sqrtf(2.0f), r5 = 1.0f / sqrtf(5.0f);
+	CHECK(near3(f[2].centroid, v3(2.0f / 3, 1.0f / 3, 1.0f / 3), 1e-6f) && near3(f[2].offset, v3(2 * r2, -r2, 0), 1e-6f) &&
+		  near3(f[2].dir, v3(r5, -2 * r5, 0), 1e-6f),
+	      "face C: centroid (%g %g %g) offset (%g %g %g) dir (%g %g %g)", f[2].centroid.x, f[2].centroid.y,
+	      f[2].centroid.z, f[2].offset.x, f[2].offset.y, f[2].offset.z, f[2].dir.x, f[2].dir.y, f[2].dir.z);
+
+	/* Two meshes on a 2 x 2 image: mesh 0 = A, B; mesh 1 = C; location z 0.5. */
+	_Static_assert(sizeof(scene_cam_face) == sizeof(cam_mesh_face), "layout");
+	const uint32_t first[3] = {0, 2, 3};
+	cam_params p = cam_params_default();
+	p.type = CAM_MESH;
+	p.mesh_faces = (const cam_mesh_face *)f, p.mesh_n = 3, p.mesh_first = first, p.mesh_count = 2;
+	p.mesh_offset = 0.5f;
+	cam c;
+	CHECK(cam_init(&c, &p, 2, 2), "mesh camera");
+	CHECK(near3(c.origin, f[0].centroid, 0) && near3(c.forward, f[0].dir, 0) && fabsf(v3_dot(c.up, c.forward)) < 1e-6f &&
+		  fabsf(v3_length(c.up) - 1) < 1e-6f && fabsf(v3_dot(c.right, c.up)) < 1e-6f,
+	      "mesh camera's frame: the first face's ray, an orthonormal up and right");
+	render_ray r;
+	CHECK(cam_sample(&c, 0, 0, v2(0.1f, 0.9f), v2(0, 0), &r), "pixel 0, mesh 0");
+	CHECK(near3(r.o, v3(14.0f / 3, 2.0f / 3, 1), 1e-5f) && near3(r.d, v3(0, 0, 1), 1e-6f),
+	      "pixel 0: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+	CHECK(cam_sample(&c, 1, 0, v2(0.4f, 0.2f), v2(0, 0), &r), "pixel 1, mesh 0");
+	CHECK(near3(r.o, v3(14.0f / 3, 2.0f / 3, -1), 1e-5f) && near3(r.d, v3(0, 0, -1), 1e-6f),
+	      "pixel 1: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+	CHECK(!cam_sample(&c, 0, 1, v2(0.1f, 0.5f), v2(0, 0), &r), "pixel 2 past mesh 0's faces has a ray");
+	CHECK(cam_sample(&c, 0, 0, v2(0.75f, 0.5f), v2(0, 0), &r), "pixel 0, mesh 1");
+	CHECK(near3(r.o, v3(2.0f / 3 + r2, 1.0f / 3 - 0.5f * r2, 1.0f / 3), 1e-5f) && near3(r.d, v3(r5, -2 * r5, 0), 1e-6f),
+	      "pixel 0 of mesh 1: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+	CHECK(!cam_sample(&c, 1, 0, v2(0.75f, 0.5f), v2(0, 0), &r), "pixel 1 past mesh 1's one face has a ray");
+	p.mesh_invert = true; /* direction z < 0 */
+	CHECK(cam_init(&c, &p, 2, 2), "inverted mesh camera");
+	CHECK(cam_sample(&c, 1, 0, v2(0.4f, 0.2f), v2(0, 0), &r), "pixel 1 inverted");
+	CHECK(near3(r.o, v3(14.0f / 3, 2.0f / 3, -1), 1e-5f) && near3(r.d, v3(0, 0, 1), 1e-6f),
+	      "pixel 1 inverted: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+	/* Distribution 2 on a 4 x 1 image, mesh 0 = A, B and mesh 1 = A, B, C: pixels 0 and 1 the left
+	 * strip (faces 0, 1 of mesh 0), pixels 2 and 3 the right (faces 2, 3 of mesh 1: POV-Ray's
+	 * y * (width / 2) + x with the image's x), face 3 past mesh 1's last. */
+	const scene_cam_face g[5] = {f[0], f[1], f[0], f[1], f[2]};
+	const uint32_t first2[3] = {0, 2, 5};
+	p.mesh_faces = (const cam_mesh_face *)g, p.mesh_n = 5, p.mesh_first = first2;
+	p.mesh_distribution = 2, p.mesh_invert = false;
+	CHECK(cam_init(&c, &p, 4, 1), "mesh camera distribution 2");
+	CHECK(cam_sample(&c, 1, 0, v2(0.9f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(0, 0, -1), 1e-6f),
+	      "distribution 2, pixel 1: face B of mesh 0");
+	CHECK(cam_sample(&c, 2, 0, v2(0.1f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(r5, -2 * r5, 0), 1e-6f),
+	      "distribution 2, pixel 2: face C of mesh 1 (d %g %g %g)", r.d.x, r.d.y, r.d.z);
+	CHECK(!cam_sample(&c, 3, 0, v2(0.1f, 0.5f), v2(0, 0), &r), "distribution 2, pixel 3 past mesh 1 has a ray");
+	p.mesh_n = 0;
+	CHECK(!cam_init(&c, &p, 2, 2), "a mesh camera without faces is accepted");
+}
+
 int main(void)
 {
+	test_mesh_camera();
 	test_perturb();
 	test_omnimax();
 	cam c;
