@@ -844,12 +844,6 @@ static inline void through_fog(const render_scene *s, const render_settings *set
 	pa->beta = v3_mul(pa->beta, att);
 }
 
-/* Whether b has POV-Ray highlights (specular, phong), which only light samples see. */
-static inline bool pov_highlights(const bsdf_params *b)
-{
-	return b->kind == BSDF_POV && (b->pov.specular > 0.0f || b->pov.phong > 0.0f);
-}
-
 /* The probability of the delta lobes of v's transparent part against its opaque lobes, by their
  * weights (0 at an opaque surface or where nothing passes, 1 where the opaque part reflects
  * nothing). A POV-Ray finish's opaque weight counts its highlights and reflection with its
@@ -1003,11 +997,12 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (sm) {
 			if (!sss_scatter(s, set, sm, &hit, wo, &v, g, &pa, &out))
 				break;
-		} else if ((v.lobe_prob > 0.0f || pov_highlights(&v.b)) && !at_cap) {
+		} else if (v.lobe_prob > 0.0f && !at_cap) {
 			/* POV-Ray's highlights are seen by next-event estimation alone, whatever lobe the
-			 * path goes on by: a clear glass (no diffuse, so no lobe but the delta ones) and a
-			 * checker's Clear squares keep their specular and phong, unscaled by the opacity
-			 * as POV-Ray's (MIS with lobe_prob 0 leaves the light's sample its whole weight) */
+			 * path goes on by: delta_prob counts them in the opaque part's weight, so a clear
+			 * glass (no diffuse) or a checker's Clear squares with specular or phong keep
+			 * lobe_prob > 0, and their highlights, unscaled by the opacity as POV-Ray's (the
+			 * light's sample is weighted by MIS against lobe_prob times the BSDF's pdf) */
 			add_direct(s, set, &v.b, &v, g, DIM_NEE, RENDER_PART_DIRECT, &pa);
 		}
 		if (!sm)
