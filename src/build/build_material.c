@@ -233,6 +233,7 @@ static bool build_layers(world *w, size_t k, const scene *sc, const scene_materi
 		return false;
 	}
 	wm->n_layers = n;
+	wm->layers_mix = true;
 	bool replaced = !sm->pigment || sm->pigment->kind != SCENE_PAT_LAYERS;
 	for (uint32_t i = 0; i < n; i++) {
 		world_layer *l = &wm->layers[i];
@@ -253,6 +254,7 @@ static bool build_layers(world *w, size_t k, const scene *sc, const scene_materi
 			if (!build_pattern(w, nrm, &l->normal, d))
 				return false;
 			l->has_normal = true, l->normal_uv = nrm->uv_mapping;
+			wm->layers_mix = false;
 		}
 	}
 	w->bsdfs[k].layered = true;

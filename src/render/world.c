@@ -288,9 +288,7 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 	bsdf_params pick = *params;
 	vec3 pick_w = v3s(0.0f), pick_n = raw, mixed = v3s(0.0f);
 	float pick_a = 0.0f;
-	bool mix = true; /* every layer sees the same normal: their Lambert terms add into one lobe */
-	for (uint32_t i = 0; i < wm->n_layers; i++)
-		mix = mix && !wm->layers[i].has_normal;
+	bool mix = wm->layers_mix; /* every layer sees the same normal: their Lambert terms add into one lobe */
 	for (uint32_t i = wm->n_layers; i-- > 0;) {
 		const world_layer *l = &wm->layers[i];
 		vec3 n = raw;

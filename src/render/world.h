@@ -117,6 +117,7 @@ typedef struct world_material {
 	 * finish; has_pattern and has_normal are then unused. NULL otherwise. */
 	world_layer *layers;
 	uint32_t n_layers;
+	bool layers_mix; /* no layer has a normal of its own: their Lambert terms add into one lobe */
 } world_material;
 
 
