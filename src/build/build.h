@@ -26,11 +26,17 @@
  * pixel of a 4K image 60 degrees wide is 2.7e-4 rad), whatever else the scene holds. */
 #define WORLD_PLANE_HORIZON_RAD 1e-4f
 
+struct world_tracer;
+
 typedef struct world_options {
 	int width, height;    /* the image, for the camera and adaptive tessellation */
 	size_t max_memory;    /* tessellation and per-texture limit in bytes (0: 1 GiB) */
 	bool geometry_only;   /* `circe check`: tessellate and count, no textures, lights or BVHs */
 	sss_method sss_method; /* --sss: overrides every material's; SSS_METHOD_DEFAULT: their own */
+	/* trace()'s worlds (NULL: none): a POV-Ray shape (an isosurface, a lathe, ...) that one of
+	 * them tessellated at the accuracy this build asks of it is copied from there, not made again
+	 * (world_tracer_mesh): the surface rendered is the one traced, bit for bit. */
+	const struct world_tracer *reuse;
 } world_options;
 
 /* One tessellated shape of POV-Ray's (cylinder, torus, lathe, blob, ...) for `circe check`: its
@@ -59,6 +65,7 @@ typedef struct world_stats {
 	size_t csg_nodes;       /* nodes of the CSG solids (build_csg.c), unions made for operands too */
 	size_t csg_solids;      /* CSG solids (their roots) */
 	size_t csg_clips;       /* clipped_by objects (never traced) */
+	size_t reused_shapes;   /* shapes copied from trace()'s worlds (world_options.reuse) */
 } world_stats;
 
 
@@ -110,5 +117,11 @@ bool world_inside_fn(world_tracer *t, const scene *parent, const scene_object *o
 		     scene_fn *out, diag *d, diag_loc loc);
 /* How many worlds t has built (each object once while it stays kept). */
 size_t world_tracer_builds(const world_tracer *t);
+/* The mesh of POV-Ray shape `shape` (a geom/shape.h shape_desc) tessellated at accuracy tol and
+ * segments (geom/shape.h shape_accuracy) in one of t's kept worlds, copied into *out with the
+ * error bound it met in *err; false when no kept world made that one (or memory runs out: the
+ * caller then tessellates it itself). */
+bool world_tracer_mesh(const world_tracer *t, const void *shape, double tol, uint32_t segments, mesh *out,
+		       double *err);
 
 #endif

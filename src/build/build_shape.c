@@ -61,9 +61,14 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 	double tol;
 	uint32_t level = shape_level(sc, g, &view, centre, radius, &tol);
 	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level)};
-	mesh *m = &w->geoms[g->id].m;
-	if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
+	world_geom *wg = &w->geoms[g->id];
+	mesh *m = &wg->m;
+	/* The same shape at the same accuracy in a trace()'s world: the same mesh, copied. */
+	if (opt->reuse && world_tracer_mesh(opt->reuse, s, acc.tol, acc.segments, m, &tol))
+		w->stats.reused_shapes++;
+	else if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
 		return false;
+	wg->shape = s, wg->shape_tol = acc.tol, wg->shape_segments = acc.segments, wg->shape_err = tol;
 	world_shape_stat st = {shape_kind_name(s->kind), g->loc, m->num_triangles, tol, (int)level};
 	return note_shape(w, &st, d);
 }

@@ -61,6 +61,31 @@ void world_tracer_free(world_tracer *t)
 
 size_t world_tracer_builds(const world_tracer *t) { return t ? t->builds : 0; }
 
+/* The geom of w that tessellated shape at (tol, segments), or NULL. */
+static const world_geom *made_in(const world *w, const void *shape, double tol, uint32_t segments)
+{
+	for (size_t i = 0; w && i < w->n_geoms; i++) {
+		const world_geom *g = &w->geoms[i];
+		if (g->shape == shape && g->shape_tol == tol && g->shape_segments == segments)
+			return g;
+	}
+	return NULL;
+}
+
+bool world_tracer_mesh(const world_tracer *t, const void *shape, double tol, uint32_t segments, mesh *out,
+		       double *err)
+{
+	const world_geom *g = NULL;
+	for (int i = 0; t && !g && i < WORLD_TRACER_SLOTS; i++)
+		g = made_in(t->slot[i].w, shape, tol, segments);
+	for (size_t i = 0; t && !g && i < t->n_pinned; i++)
+		g = made_in(t->pinned[i].w, shape, tol, segments);
+	if (!g || !mesh_copy(out, &g->m))
+		return false;
+	*err = g->shape_err;
+	return true;
+}
+
 /* The scene of objs[0..n) alone: their geometry records copied (renumbered, linked in a list of
  * their own), the objects grey, no lights, the parent's camera and settings. NULL when memory runs
  * out. */
