@@ -86,8 +86,12 @@ static void world_release(world *w)
 		mem_free(w->images[i]);
 		mem_free(w->image_paths[i]);
 	}
-	for (size_t i = 0; w->materials && i < w->n_materials; i++)
+	for (size_t i = 0; w->materials && i < w->n_materials; i++) {
 		mem_free(w->materials[i].layers);
+		for (uint32_t j = 0; j < w->materials[i].n_map; j++)
+			mem_free(w->materials[i].map[j].layers);
+		mem_free(w->materials[i].map);
+	}
 	light_set_free(&w->lights);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);

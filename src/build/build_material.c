@@ -224,25 +224,22 @@ static void build_clear(world *w, bsdf_params *b, world_material *wm, const scen
 /* A layered texture's layers (world_layer): each with its own finish (its diffuse before the
  * point's opacity), pigment and normal; the top one with the material's finish and normal (what
  * later modifiers changed) and, when the material's pigment was replaced since, its pigment. */
-static bool build_layers(world *w, size_t k, const scene *sc, const scene_material *sm, diag *d)
+/* The n layers of texture sm (n_layers of them, or sm alone when 0) into out[0..n), bottom first,
+ * under the interior ior; normals: whether their normals are built (else the layers have none).
+ * *has_normal is set when one has. */
+static bool fill_layers(world *w, const scene *sc, const scene_material *sm, float ior, bool normals,
+			world_layer *out, bool *has_normal, diag *d)
 {
-	world_material *wm = &w->materials[k];
-	uint32_t n = sm->n_layers;
-	if (!(wm->layers = mem_calloc(n, sizeof *wm->layers))) {
-		diag_error(d, sm->loc, "out of memory");
-		return false;
-	}
-	wm->n_layers = n;
-	wm->layers_mix = true;
-	bool replaced = !sm->pigment || sm->pigment->kind != SCENE_PAT_LAYERS;
+	uint32_t n = sm->n_layers ? sm->n_layers : 1;
+	bool replaced = !sm->n_layers || !sm->pigment || sm->pigment->kind != SCENE_PAT_LAYERS;
 	for (uint32_t i = 0; i < n; i++) {
-		world_layer *l = &wm->layers[i];
+		world_layer *l = &out[i];
 		bool top = i + 1 == n;
 		scene_material fin = top ? *sm : *sm->layers[i]; /* the interior is the object's */
-		fin.ior = sm->ior;
+		fin.ior = ior;
 		pov_finish_spec(sc, &fin, &l->finish, d);
 		const scene_material *pig = top && replaced ? sm : sm->layers[i];
-		const scene_pigment *nrm = top ? sm->normal : sm->layers[i]->normal;
+		const scene_pigment *nrm = !normals ? NULL : top ? sm->normal : sm->layers[i]->normal;
 		if (pig->pigment) {
 			if (!build_pattern(w, pig->pigment, &l->pattern, d))
 				return false;
@@ -254,8 +251,55 @@ static bool build_layers(world *w, size_t k, const scene *sc, const scene_materi
 			if (!build_pattern(w, nrm, &l->normal, d))
 				return false;
 			l->has_normal = true, l->normal_uv = nrm->uv_mapping;
-			wm->layers_mix = false;
+			*has_normal = true;
 		}
+	}
+	return true;
+}
+
+static bool build_layers(world *w, size_t k, const scene *sc, const scene_material *sm, diag *d)
+{
+	world_material *wm = &w->materials[k];
+	uint32_t n = sm->n_layers;
+	if (!(wm->layers = mem_calloc(n, sizeof *wm->layers))) {
+		diag_error(d, sm->loc, "out of memory");
+		return false;
+	}
+	wm->n_layers = n;
+	bool has_normal = false;
+	if (!fill_layers(w, sc, sm, sm->ior, true, wm->layers, &has_normal, d))
+		return false;
+	wm->layers_mix = !has_normal;
+	w->bsdfs[k].layered = true;
+	return true;
+}
+
+/* A patterned texture whose entries include layered textures (scene_material.map_textures): each
+ * entry's layers, lit with their own finishes; their normals are the material's (the pattern's
+ * normal_map of the entries' normals, lang/stmt.c pattern_texture_normal), shared by every layer
+ * of an entry. */
+static bool build_map(world *w, size_t k, const scene *sc, const scene_material *sm, diag *d)
+{
+	world_material *wm = &w->materials[k];
+	uint32_t n = sm->n_map_textures;
+	if (!(wm->map = mem_calloc(n, sizeof *wm->map))) {
+		diag_error(d, sm->loc, "out of memory");
+		return false;
+	}
+	wm->n_map = n;
+	for (uint32_t i = 0; i < n; i++) {
+		const scene_material *e = sm->map_textures[i];
+		if (e->kind != MAT_TEXTURE) /* the parser takes textures only */
+			continue;
+		world_stack *st = &wm->map[i];
+		st->n = e->n_layers ? e->n_layers : 1;
+		bool has_normal = false;
+		if (!(st->layers = mem_calloc(st->n, sizeof *st->layers))) {
+			diag_error(d, sm->loc, "out of memory");
+			return false;
+		}
+		if (!fill_layers(w, sc, e, sm->ior, false, st->layers, &has_normal, d))
+			return false;
 	}
 	w->bsdfs[k].layered = true;
 	return true;
@@ -357,6 +401,9 @@ bool build_material(world *w, size_t k, const scene *sc, const world_options *op
 		bsdf_pov_set_pigment(&w->bsdfs[k], sm->color);
 	}
 	if (sm->kind == MAT_TEXTURE && sm->n_layers && !sm->pov_sss && !build_layers(w, k, sc, sm, d))
+		return false;
+	if (sm->kind == MAT_TEXTURE && !sm->n_layers && sm->n_map_textures && !sm->pov_sss && wm->has_pattern &&
+	    sm->pigment->n_entries == sm->n_map_textures && !build_map(w, k, sc, sm, d))
 		return false;
 	/* A POV-Ray subsurface texture's medium is derived from its pigment (its pattern's mean). */
 	if (sm->pov_sss && !build_sss(w, k, sc, opt, sm, d))

@@ -527,6 +527,7 @@ static bool pigment(parser *p, scene_material *m, scene_color_use use)
 	diag_loc open, moved = {0};
 	lang_advance(p);
 	TRY(open_block(p, "pigment", &open));
+	m->map_textures = NULL, m->n_map_textures = 0; /* a patterned texture's entries: its pigment's */
 	bool named = names_block(p);
 	if (named) {
 		const value *v;
@@ -935,9 +936,15 @@ static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok clos
 	scene_material *m = copy_material(p, mats[0], kw);
 	TRY(m);
 	m->pigment = pig, m->image = NULL, m->filter = m->transmit = 0.0f;
-	m->layers = NULL, m->n_layers = 0; /* an entry's layers: its composite pigment only */
+	m->layers = NULL, m->n_layers = 0; /* the entries' layers: below, with map_textures */
+	m->map_textures = NULL, m->n_map_textures = 0;
 	TRY(pattern_texture_normal(p, pig, mats, n, &m->normal));
-	for (uint32_t i = 1; i < n; i++)
+	bool layered = false; /* then every entry is lit per layer, with its own finishes */
+	for (uint32_t i = 0; i < n; i++)
+		layered = layered || (mats[i]->n_layers && mats[i]->kind == MAT_TEXTURE);
+	if (layered && n == pig->n_entries)
+		m->map_textures = mats, m->n_map_textures = n;
+	for (uint32_t i = 1; i < n && !m->map_textures; i++)
 		if (!same_finish(mats[0], mats[i])) {
 			diag_warning(p->d, kw, "the textures of this pattern differ in their finish: circe lights them all "
 					       "with the first one's (the pigments and normals follow the pattern)");

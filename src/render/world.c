@@ -14,6 +14,9 @@
 /* How many float ulps of its triangle's scale a hit position may be off (the interpolation of
  * three rounded vertices and a transform): the tolerance of a pattern's cell boundaries. */
 #define PATTERN_HIT_ULPS 16.0
+/* The entries of a patterned texture with layered entries one hit blends at most (an average's
+ * first ones of non-zero weight; another pattern blends two). */
+#define WORLD_MAP_PICKS 16
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
@@ -278,24 +281,36 @@ static float layers_cap(float s, float t)
  * Where the sum of the layers' albedos and the transparent part could pass 1 in a channel (upper
  * layers' highlights over the light they let through), the layers' weights are scaled so that
  * it is 1 (doc/language.md "Layered textures"). */
-static void shade_layers(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params,
-			 vec3 *ns)
+/* What shade_layers gathers over the layers of one stack or of several (a patterned texture's
+ * entries, each with its weight): the reservoir's pick, the sums, what passes. */
+typedef struct layer_sum {
+	vec3 emit, sum, mixed, passed; /* passed: what passes each stack, times its weight, added */
+	float clear;		       /* the stacks' filter + transmit products, times their weights */
+	float total, pick_a;
+	double u;
+	bsdf_params pick;
+	vec3 pick_w, pick_n;
+} layer_sum;
+
+/* One stack of layers (bottom first) into *acc at weight s: from the top down, each layer lit with
+ * its own finish over params, at the hit (q NULL) or at the point *q of its pattern (q_tol its
+ * tolerance: a patterned texture's entry), its normal its own (when it has one) or raw. */
+static void stack_layers(const world *w, const world_layer *layers, uint32_t n_layers, bool mix, float s,
+			 const render_hit *hit, const bsdf_params *params, vec3 raw, const dvec3 *q, double q_tol,
+			 layer_sum *acc)
 {
-	const vec3 raw = *ns;
-	vec3 through = v3s(1.0f), emit = v3s(0.0f), sum = v3s(0.0f);
-	float clear = 1.0f, total = 0.0f;
-	double u = hit->u_layer;
-	bsdf_params pick = *params;
-	vec3 pick_w = v3s(0.0f), pick_n = raw, mixed = v3s(0.0f);
-	float pick_a = 0.0f;
-	bool mix = wm->layers_mix; /* every layer sees the same normal: their Lambert terms add into one lobe */
-	for (uint32_t i = wm->n_layers; i-- > 0;) {
-		const world_layer *l = &wm->layers[i];
+	vec3 through = v3s(s);
+	float clear = s;
+	pattern_surface sf = {v3_to_d3(raw), v3_to_d3(hit->p)};
+	for (uint32_t i = n_layers; i-- > 0;) {
+		const world_layer *l = &layers[i];
 		vec3 n = raw;
 		if (l->has_normal)
 			shade_normal(w, l->normal, l->normal_uv, hit, &n);
 		float c[5];
-		if (l->has_pattern)
+		if (l->has_pattern && q)
+			pattern_eval_at(&w->patterns, l->pattern, *q, &sf, q_tol, c);
+		else if (l->has_pattern)
 			pattern_at_hit(w, hit, l->pattern, l->pattern_uv, n, c);
 		else
 			memcpy(c, l->color, sizeof c);
@@ -307,48 +322,92 @@ static void shade_layers(const world *w, const world_material *wm, const render_
 		b.pov = l->finish;
 		b.pov.diffuse *= opacity;
 		bsdf_pov_set_pigment(&b, rgb);
-		emit = v3_add(emit, v3_mul(through, v3_scale(b.emit, opacity)));
+		acc->emit = v3_add(acc->emit, v3_mul(through, v3_scale(b.emit, opacity)));
 		if (mix && b.pov.diffuse > 0.0f && b.pov.brilliance_less_1 == 0.0f && b.pov.sss_diffuse <= 0.0f) {
 			vec3 d = v3_mul(through, b.diffuse);
-			mixed = v3_add(mixed, d);
-			sum = v3_add(sum, d);
+			acc->mixed = v3_add(acc->mixed, d);
+			acc->sum = v3_add(acc->sum, d);
 			b.pov.diffuse = 0.0f; /* after bsdf_pov_set_pigment: pov_scale counts it */
 			b.diffuse = v3s(0.0f);
 		}
 		vec3 wa = v3_mul(through, bsdf_pov_albedo_bound(&b));
-		sum = v3_add(sum, wa);
+		acc->sum = v3_add(acc->sum, wa);
 		float a = v3_luminance(wa);
 		if (a > 0.0f) { /* a one-number weighted reservoir: u rescaled at each choice */
-			total += a;
-			double p = a / total;
-			if (u < p) {
-				pick = b, pick_w = through, pick_n = n, pick_a = a;
-				u = u / p;
+			acc->total += a;
+			double p = a / acc->total;
+			if (acc->u < p) {
+				acc->pick = b, acc->pick_w = through, acc->pick_n = n, acc->pick_a = a;
+				acc->u = acc->u / p;
 			} else {
-				u = (u - p) / (1.0 - p);
+				acc->u = (acc->u - p) / (1.0 - p);
 			}
-			u = fmin(fmax(u, 0.0), 1.0 - DBL_EPSILON);
+			acc->u = fmin(fmax(acc->u, 0.0), 1.0 - DBL_EPSILON);
 		}
 		through = v3_mul(through, v3_min(v3_add(v3_scale(rgb, f), v3s(t)), v3s(1.0f)));
 		clear *= fminf(1.0f, f + t);
 		if (!(v3_max_comp(through) > 0.0f))
 			break; /* the layers below are hidden */
 	}
+	acc->passed = v3_add(acc->passed, through);
+	acc->clear += clear;
+}
+
+/* The BSDF of what *acc gathered: the picked layer's lobes at their weight, the layers' diffuse,
+ * the glow, the transparent part (shade_layers). */
+static void layers_done(const layer_sum *acc, bsdf_params *params, vec3 *ns)
+{
 	/* The energy bound: sum + through <= 1 in every channel */
+	vec3 through = acc->passed, sum = acc->sum;
 	float k = fminf(layers_cap(sum.x, through.x), fminf(layers_cap(sum.y, through.y), layers_cap(sum.z, through.z)));
-	if (pick_a > 0.0f) {
-		*params = pick;
-		params->pov_weight = v3_scale(pick_w, k * total / pick_a);
+	if (acc->pick_a > 0.0f) {
+		*params = acc->pick;
+		params->pov_weight = v3_scale(acc->pick_w, k * acc->total / acc->pick_a);
 	} else { /* no layer reflects anything: the top one's lobes at weight 0 */
 		params->pov_weight = v3s(0.0f);
 	}
-	params->pov_layer_diffuse = v3_scale(mixed, k);
-	params->emit = emit;
-	*ns = pick_n;
+	params->pov_layer_diffuse = v3_scale(acc->mixed, k);
+	params->emit = acc->emit;
+	*ns = acc->pick_n;
 	if (params->clear.patterned) {
 		params->clear.tint = v3_min(through, v3s(1.0f));
-		params->clear.reflect *= fminf(1.0f, clear);
+		params->clear.reflect *= fminf(1.0f, acc->clear);
 	}
+}
+
+static void shade_layers(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params,
+			 vec3 *ns)
+{
+	layer_sum acc = {.emit = v3s(0.0f), .sum = v3s(0.0f), .mixed = v3s(0.0f), .passed = v3s(0.0f),
+			 .u = hit->u_layer, .pick = *params, .pick_w = v3s(0.0f), .pick_n = *ns};
+	stack_layers(w, wm->layers, wm->n_layers, wm->layers_mix, 1.0f, hit, params, *ns, NULL, 0.0, &acc);
+	layers_done(&acc, params, ns);
+}
+
+/* A patterned texture with layered entries (world_material.map): the entries its pattern picks at
+ * the hit (pattern_pick: one, or two blended, or average's), each stack of layers lit as a layered
+ * texture's at the point its entry is evaluated, at the entry's weight, into one sum (POV-Ray's
+ * ComputeOneTextureColour: the entries' lit colours blended by the map's weights). Every layer
+ * sees the material's normal (the pattern's normal_map of the entries'), so their Lambert terms
+ * add into one lobe. */
+static void shade_map(const world *w, const world_material *wm, const render_hit *hit, bsdf_params *params, vec3 *ns)
+{
+	const world_inst *in = &w->insts[hit->object];
+	dvec3 p = wm->pattern_uv ? d3(hit->uv.x, hit->uv.y, 0.0) : xform_inv_point(&in->pattern_xf, v3_to_d3(hit->p));
+	double tol = wm->pattern_uv ? PATTERN_HIT_ULPS * FLT_EPSILON
+				    : PATTERN_HIT_ULPS * FLT_EPSILON * fmax(hit->scale, 1e-30) * pattern_inv_gain(&in->pattern_xf);
+	pattern_surface sf = {v3_to_d3(*ns), v3_to_d3(hit->p)};
+	uint32_t entry[WORLD_MAP_PICKS];
+	double weight[WORLD_MAP_PICKS], q_tol;
+	dvec3 q;
+	uint32_t n = pattern_pick(&w->patterns, wm->pattern, p, &sf, tol, WORLD_MAP_PICKS, entry, weight, &q, &q_tol);
+	layer_sum acc = {.emit = v3s(0.0f), .sum = v3s(0.0f), .mixed = v3s(0.0f), .passed = v3s(0.0f),
+			 .u = hit->u_layer, .pick = *params, .pick_w = v3s(0.0f), .pick_n = *ns};
+	for (uint32_t i = 0; i < n; i++)
+		if (entry[i] < wm->n_map && weight[i] > 0.0)
+			stack_layers(w, wm->map[entry[i]].layers, wm->map[entry[i]].n, true, (float)weight[i], hit, params,
+				     *ns, &q, q_tol, &acc);
+	layers_done(&acc, params, ns);
 }
 
 /* render_scene.shade: the material's albedo texture (clamped to a reflectance) and its normal map
@@ -363,6 +422,12 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 	 * ComputeLightedTexture perturbs a layer's normal before its pigment). */
 	if (wm->n_layers) {
 		shade_layers(w, wm, hit, params, ns);
+		return;
+	}
+	if (wm->n_map) { /* the pattern's normal first, then the entries' layers see it */
+		if (wm->has_normal)
+			shade_normal(w, wm->normal, wm->normal_uv, hit, ns);
+		shade_map(w, wm, hit, params, ns);
 		return;
 	}
 	if (wm->has_normal)

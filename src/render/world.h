@@ -104,6 +104,12 @@ typedef struct world_layer {
 	uint32_t normal;
 } world_layer;
 
+/* The layers of one entry of a patterned texture (world_material.map), bottom first. */
+typedef struct world_stack {
+	world_layer *layers;
+	uint32_t n;
+} world_stack;
+
 /* What a material adds to its BSDF parameters at a hit. */
 typedef struct world_material {
 	const image *albedo; /* NULL: the constant colour of the BSDF */
@@ -123,6 +129,11 @@ typedef struct world_material {
 	world_layer *layers;
 	uint32_t n_layers;
 	bool layers_mix; /* no layer has a normal of its own: their Lambert terms add into one lobe */
+	/* A patterned texture with layered entries (scene_material.map_textures): per entry of its
+	 * pigment's map (node `pattern`), that entry's layers (owned), lit as a layered texture's
+	 * at the point the entry is evaluated, weighted by the map's blend; n_map entries. */
+	world_stack *map;
+	uint32_t n_map;
 } world_material;
 
 

@@ -84,6 +84,13 @@ typedef struct scene_material {
 	 * "Layered textures"), the top one with the material's finish and normal. */
 	const struct scene_material *const *layers;
 	uint32_t n_layers;
+	/* A patterned texture (texture_map, checker of textures, material_map) with a layered texture
+	 * among its entries: the entries' textures, in the order of its pigment's entries (the
+	 * material's pigment is their pigment map), each lit per layer with its own finishes at the
+	 * point its entry is evaluated (render/world.c shade_map); NULL otherwise (the first entry's
+	 * finish lights every entry). A later pigment drops them. */
+	const struct scene_material *const *map_textures;
+	uint32_t n_map_textures;
 	struct scene_material *next;
 } scene_material;
 

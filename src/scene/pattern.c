@@ -2159,3 +2159,56 @@ static void perturb_depth(const pattern_prog *pg, uint32_t node, dvec3 p, const 
 	if (isfinite(v.x) && isfinite(v.y) && isfinite(v.z))
 		*nrm = v;
 }
+
+uint32_t pattern_pick(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double tol,
+		      uint32_t max, uint32_t *entry, double *weight, dvec3 *q, double *q_tol)
+{
+	const pattern_node *n = &pg->nodes[node];
+	double eps = tol > POV_EPSILON ? tol : POV_EPSILON;
+	if (n->kind == PATTERN_PLAIN || n->kind == PATTERN_LAYERS || n->kind == PATTERN_IMAGE || !n->n_entries ||
+	    max < 1)
+		return 0;
+	*q = warped(pg, n, p, &eps);
+	*q_tol = eps;
+	uint32_t k = n->n_entries;
+	const pattern_entry *e = pg->entries + n->entry0;
+	if (n->kind == PATTERN_AVERAGE) { /* average(): every entry by its value over their sum */
+		double total = 0.0;
+		for (uint32_t j = 0; j < k; j++)
+			total += e[j].value;
+		uint32_t m = 0;
+		for (uint32_t j = 0; j < k && m < max; j++)
+			if (total != 0.0 && e[j].value != 0.0)
+				entry[m] = j, weight[m++] = e[j].value / total;
+		return m;
+	}
+	if (is_block(n->kind)) { /* eval_depth's block lookup: an index past the list is none */
+		uint32_t i = (uint32_t)raw_eps(pg, n, *q, sf, eps);
+		if (i >= k)
+			return 0;
+		entry[0] = i, weight[0] = 1.0;
+		return 1;
+	}
+	double v = pattern_wave_apply(n->wave, raw_eps(pg, n, *q, sf, eps), n->frequency, n->phase, n->exponent);
+	/* map_lookup's search: clamped at the ends, the two entries around v blended linearly */
+	if (k == 1 || v <= e[0].value || v >= e[k - 1].value) {
+		entry[0] = k == 1 || v <= e[0].value ? 0 : k - 1, weight[0] = 1.0;
+		return 1;
+	}
+	uint32_t j = 1;
+	while (j < k - 1 && e[j].value <= v)
+		j++;
+	double span = e[j].value - e[j - 1].value;
+	double t = span > 0.0 ? (v - e[j - 1].value) / span : 1.0;
+	entry[0] = j - 1, weight[0] = 1.0 - t;
+	if (max < 2 || t <= 0.0) {
+		weight[0] = 1.0;
+		return 1;
+	}
+	if (t >= 1.0) {
+		entry[0] = j, weight[0] = 1.0;
+		return 1;
+	}
+	entry[1] = j, weight[1] = t;
+	return 2;
+}

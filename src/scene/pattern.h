@@ -204,6 +204,15 @@ double pattern_wave_apply(pattern_wave w, double v, double frequency, double pha
  * entries, a step where two share a value). */
 void pattern_map_lookup(const pattern_prog *pg, const pattern_node *n, double v, dvec3 p, int depth, float out[5]);
 
+/* The entries of node's map that point p picks, as its colour lookup would blend them (POV-Ray's
+ * texture map, trace.cpp ComputeOneTextureColour): a block pattern's one entry, a continuous
+ * pattern's two around its value (or one at the ends), average's every entry of non-zero value
+ * (at most max); their indices into the node's list in entry[], their weights (adding to 1) in
+ * weight[]. *q is p after the node's warps, where the entries are evaluated, *q_tol its
+ * tolerance. Returns how many (0: node has no map, or the index names no entry). */
+uint32_t pattern_pick(const pattern_prog *pg, uint32_t node, dvec3 p, const pattern_surface *sf, double tol,
+		      uint32_t max, uint32_t *entry, double *weight, dvec3 *q, double *q_tol);
+
 /* POV-Ray 3.7's Noise() (noise_generator 2): in [0, 1], its own values (base/noise.c). */
 double pattern_noise(dvec3 p);
 /* POV-Ray 3.7's DNoise: each component its bare lattice sum, about [-0.6, 0.6], 0 on average. */
