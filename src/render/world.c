@@ -14,9 +14,9 @@
 /* How many float ulps of its triangle's scale a hit position may be off (the interpolation of
  * three rounded vertices and a transform): the tolerance of a pattern's cell boundaries. */
 #define PATTERN_HIT_ULPS 16.0
-/* The entries of a patterned texture with layered entries one hit blends at most (an average's
- * first ones of non-zero weight; another pattern blends two). */
-#define WORLD_MAP_PICKS 16
+/* The entries of a patterned texture with layered entries one hit blends at most: an average's
+ * every one (another pattern blends two). */
+#define WORLD_MAP_PICKS PATTERN_MAX_ENTRIES
 
 static vec3 d3v(dvec3 v) { return d3_to_v3(v); }
 
