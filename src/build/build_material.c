@@ -221,12 +221,11 @@ static void build_clear(world *w, bsdf_params *b, world_material *wm, const scen
 	c->fade = (bsdf_fade){.distance = sm->fade_distance, .power = sm->fade_power, .color = sm->fade_color};
 }
 
-/* A layered texture's layers (world_layer): each with its own finish (its diffuse before the
- * point's opacity), pigment and normal; the top one with the material's finish and normal (what
- * later modifiers changed) and, when the material's pigment was replaced since, its pigment. */
-/* The n layers of texture sm (n_layers of them, or sm alone when 0) into out[0..n), bottom first,
- * under the interior ior; normals: whether their normals are built (else the layers have none).
- * *has_normal is set when one has. */
+/* The layers (world_layer) of texture sm into out[0..n), bottom first: its n_layers, or sm alone
+ * when it has none; each with its own finish (its diffuse before the point's opacity), pigment
+ * and normal, under the interior's ior; the top one with the material's finish and normal (what
+ * later modifiers changed) and, when the material's pigment was replaced since, its pigment.
+ * normals false: the layers get none. *has_normal is set when one has. */
 static bool fill_layers(world *w, const scene *sc, const scene_material *sm, float ior, bool normals,
 			world_layer *out, bool *has_normal, diag *d)
 {
@@ -257,6 +256,7 @@ static bool fill_layers(world *w, const scene *sc, const scene_material *sm, flo
 	return true;
 }
 
+/* A layered texture's layers (fill_layers), each lit with its own finish (render/world.c). */
 static bool build_layers(world *w, size_t k, const scene *sc, const scene_material *sm, diag *d)
 {
 	world_material *wm = &w->materials[k];
