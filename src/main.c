@@ -873,6 +873,9 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 				"render %.3f s\n",
 			s->out, s->f.spp, stats->seconds, stats->samples_per_s, stats->threads,
 			(unsigned long long)stats->dropped, s->parse_s, s->build_s, ws.triangles, stats->seconds);
+	if (!o->quiet && ws.reused_shapes)
+		fprintf(stderr, "circe: build: %zu shapes copied from trace()'s worlds (tessellated once for both)\n",
+			ws.reused_shapes);
 	if (!o->quiet && stats->sss_searches)
 		fprintf(stderr, "circe: sss: %llu entry searches, %llu found no entry (no-hit rate %.4g: circles or "
 				"probes that hit nothing, walks lost or at their step bound), %llu with more hits than "

@@ -36,8 +36,13 @@ grep -q "copied from trace" plain.check && fail "no trace, yet a shape copied: $
 grep -q "copied from trace" near.check && fail "placed nearer than traced (a finer mesh asked), yet copied: $(cat near.check)"
 t1=$(grep "isosurface at" traced.check | sed 's/ at [^:]*:/ at /') t2=$(grep "isosurface at" plain.check | sed 's/ at [^:]*:/ at /')
 [ -n "$t1" ] && [ "$t1" = "$t2" ] || fail "the copied mesh is not the one made: '$t1' against '$t2'"
+# At trace's own image size (640 x 480, build.h WORLD_TRACE_WIDTH), where the render asks the
+# accuracy the trace's world made; a window over the rock.
 for s in traced plain; do
-	expect_status 0 "$CIRCE" render "$s.pov" $INC -o "$s.exr" -W 64 -H 48 --spp 4 --quiet
+	expect_status 0 "$CIRCE" render "$s.pov" $INC -o "$s.exr" -W 640 -H 480 --region 280,180,360,260 --spp 2
+	cp err "$s.render"
 done
+grep -q "1 shapes copied from trace" traced.render || fail "the render did not copy the traced rock: $(cat traced.render)"
+grep -q "copied from trace" plain.render && fail "the render without a trace copied a shape: $(cat plain.render)"
 expect_status 0 "$CIRCE" compare traced.exr plain.exr --fail 0
 pass
