@@ -830,8 +830,15 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_error(p, kw, "'facets' is a normal's pattern: it cannot be used in a %s",
 				  b->tex ? "texture" : b->density ? "density" : "pigment");
 	lang_advance(p);
-	if (k == SCENE_PAT_GRADIENT)
-		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_GRADIENT) { /* POV-Ray's Parse_Pattern normalises the vector */
+		diag_loc at = lang_peek(p)->loc;
+		TRY(lang_vec3(p, "after 'gradient'", &b->pg.vector));
+		double len = d3_length(b->pg.vector);
+		if (!(len > 0) || !isfinite(len))
+			return lang_error(p, at, "the vector of 'gradient' must not be zero (POV-Ray makes it unit length)");
+		b->pg.vector = d3_scale(b->pg.vector, 1.0 / len);
+		return true;
+	}
 	if (k == SCENE_PAT_SLOPE)
 		return slope_args(p, &b->pg, kw);
 	if (k == SCENE_PAT_DENSITY_FILE)
