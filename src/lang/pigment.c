@@ -505,7 +505,7 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind);
 
 static bool image_map(parser *p, pig_build *b) { return image_block(p, b, SCENE_PAT_IMAGE); }
 
-/* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" ] string { "map_type" int | "once"
+/* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" | "hdr" ] string { "map_type" int | "once"
  *             | "interpolate" int | ( "filter" | "transmit" ) "all" float } "}" */
 /* image_pattern = "image_pattern" "{" the same head { "map_type" int | "once" | "interpolate" int
  *                 | "use_color" | "use_colour" | "use_index" | "use_alpha" | "gamma" float } "}"
@@ -530,10 +530,10 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 	if (pat)
 		b->pg.accuracy = accuracy;
 	lang_tok k = lang_peek(p)->kind;
-	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
+	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR || peek_word(p, "hdr"))
 		lang_advance(p);
 	else if (lang_peek(p)->kind != LTK_STRING)
-		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in '%s'", what);
+		return lang_error_found(p, "expected the image type (png, jpeg, exr or hdr) or its file in '%s'", what);
 	TRY(lang_asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &b->pg.image));
 	for (;;) {
 		long n;
