@@ -280,8 +280,11 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 	vec3 wi_local = to_local(f, ls_out.wi);
 	vec3 fval = ls_out.delta ? bsdf_eval_delta_light(b, wo_local, wi_local) : bsdf_eval(b, wo_local, wi_local);
 	/* POV-Ray's shadowless light is its fill light: diffuse only, no specular or phong (trace.cpp) */
-	vec3 shine = ls_out.shadowless ? bsdf_shine(b, wo_local, wi_local) : v3s(0.0f);
-	fval = v3_max(v3_sub(fval, shine), v3s(0.0f));
+	vec3 shine = v3s(0.0f);
+	if (ls_out.shadowless) {
+		shine = bsdf_shine(b, wo_local, wi_local);
+		fval = v3_max(v3_sub(fval, shine), v3s(0.0f));
+	}
 	if (v3_max_comp(fval) <= 0.0f)
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
