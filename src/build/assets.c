@@ -39,7 +39,7 @@ static bool open_one(const scene_asset *a, diag *d)
 	else if ((got = read(fd, head, sizeof head)) < 0)
 		diag_error(d, a->loc, "%s '%s': cannot read it: %s", what, a->path, strerror(errno));
 	else if (a->kind == SCENE_ASSET_IMAGE && image_format_of(head, (size_t)got) == IMAGE_UNKNOWN)
-		diag_error(d, a->loc, "%s '%s': not a PNG, JPEG or OpenEXR image", what, a->path);
+		diag_error(d, a->loc, "%s '%s': not a PNG, JPEG, OpenEXR or Radiance HDR image", what, a->path);
 	else
 		ok = true;
 	close(fd);

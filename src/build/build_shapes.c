@@ -335,7 +335,7 @@ static bool build_height_field(const scene_geom *g, const shape_accuracy *a, mes
 	image_format k = file_format(h->path, &depth, &colour);
 	/* PNG: by its header; JPEG: 8-bit colour (a grey one reads the same, r = g); EXR: deep. */
 	bool grey = k == IMAGE_PNG && (colour == 0 || colour == 4);
-	bool deep = k == IMAGE_EXR || (k == IMAGE_PNG && depth > 8);
+	bool deep = k == IMAGE_EXR || k == IMAGE_HDR || (k == IMAGE_PNG && depth > 8);
 	uint32_t w = (uint32_t)img.width, hh = (uint32_t)img.height;
 	float *heights = mem_alloc((size_t)w * hh, sizeof *heights);
 	bool ok = heights != NULL;

@@ -1,4 +1,5 @@
-/* image.c - PNG (libpng), JPEG (libjpeg) and EXR loading to linear float RGBA; PNG writing. */
+/* image.c - PNG (libpng), JPEG (libjpeg), EXR and Radiance HDR (RGBE) loading to linear float RGBA;
+ * PNG writing. */
 #include "io/image.h"
 
 #include "base/mem.h"
@@ -336,6 +337,144 @@ static bool load_exr(const char *path, size_t max_bytes, image *out, diag *d)
 	return true;
 }
 
+/* ---- Radiance HDR (RGBE) ------------------------------------------------------------------ */
+
+/* One RGBE texel as linear floats: Radiance's colr_color, (m + 0.5) 2^(e - 136), 0 for e = 0. */
+static void rgbe_to_float(const unsigned char *c, float *o)
+{
+	if (!c[3]) {
+		o[0] = o[1] = o[2] = 0.0f;
+	} else {
+		double f = ldexp(1.0, (int)c[3] - 136);
+		for (int i = 0; i < 3; i++)
+			o[i] = (float)((c[i] + 0.5) * f);
+	}
+	o[3] = 1.0f;
+}
+
+/* A flat scanline (4 bytes a texel) with the old run-length form: a texel 1, 1, 1, n repeats the
+ * one before n << shift times, the shift growing by 8 for each such texel in a row. */
+static bool hdr_old_line(FILE *fp, unsigned char *line, int width, int start)
+{
+	int shift = 0;
+	for (int x = start; x < width;) {
+		unsigned char *t = line + 4 * (size_t)x;
+		if (fread(t, 1, 4, fp) != 4)
+			return false;
+		if (t[0] == 1 && t[1] == 1 && t[2] == 1) {
+			if (!x)
+				return false; /* nothing to repeat */
+			long n = (long)t[3] << shift;
+			if (n > width - x)
+				return false;
+			for (long i = 0; i < n; i++, x++)
+				memcpy(line + 4 * (size_t)x, line + 4 * (size_t)(x - 1), 4);
+			shift += 8;
+			if (shift > 16)
+				return false;
+		} else {
+			x++, shift = 0;
+		}
+	}
+	return true;
+}
+
+/* One scanline: the new run-length form (2, 2, width's two bytes, then each of the four channels
+ * as runs: a count above 128 repeats the next byte count - 128 times, else that many bytes
+ * follow), or the old flat one. */
+static bool hdr_line(FILE *fp, unsigned char *line, int width)
+{
+	if (width < 8 || width > 0x7fff)
+		return hdr_old_line(fp, line, width, 0);
+	unsigned char h[4];
+	if (fread(h, 1, 4, fp) != 4)
+		return false;
+	if (h[0] != 2 || h[1] != 2 || (h[2] & 128)) { /* a flat line: h is its first texel */
+		memcpy(line, h, 4);
+		return hdr_old_line(fp, line, width, 1);
+	}
+	if (((int)h[2] << 8 | h[3]) != width)
+		return false;
+	for (int c = 0; c < 4; c++)
+		for (int x = 0; x < width;) {
+			int k = getc(fp);
+			if (k == EOF)
+				return false;
+			if (k > 128) {
+				int v = getc(fp);
+				k -= 128;
+				if (v == EOF || k > width - x)
+					return false;
+				while (k--)
+					line[4 * (size_t)x++ + c] = (unsigned char)v;
+			} else {
+				if (k == 0 || k > width - x)
+					return false;
+				while (k--) {
+					int v = getc(fp);
+					if (v == EOF)
+						return false;
+					line[4 * (size_t)x++ + c] = (unsigned char)v;
+				}
+			}
+		}
+	return true;
+}
+
+/* A Radiance picture: "#?" magic, header lines to an empty one (FORMAT must be RGBE, not XYZE;
+ * EXPOSURE is ignored, as POV-Ray's hdr.cpp ignores it), the resolution "-Y H +X W" (rows top to
+ * bottom, the standard orientation and the only one POV-Ray reads), then the scanlines. */
+static bool load_hdr(FILE *fp, const char *path, size_t max_bytes, image *out, diag *d)
+{
+	char buf[512];
+	bool rgbe = true;
+	if (!fgets(buf, sizeof buf, fp) || strncmp(buf, "#?", 2) != 0) {
+		diag_file_error(d, path, "not a Radiance HDR file (no '#?' line)");
+		return false;
+	}
+	for (;;) {
+		if (!fgets(buf, sizeof buf, fp)) {
+			diag_file_error(d, path, "Radiance HDR header ends before its resolution line");
+			return false;
+		}
+		if (buf[0] == '\n')
+			break;
+		if (!strncmp(buf, "FORMAT=", 7) && strncmp(buf + 7, "32-bit_rle_rgbe", 15) != 0)
+			rgbe = false;
+	}
+	if (!rgbe) {
+		diag_file_error(d, path, "Radiance HDR file is not RGBE (FORMAT=32-bit_rle_rgbe): XYZE is not supported");
+		return false;
+	}
+	int w = 0, h = 0;
+	char tail;
+	if (!fgets(buf, sizeof buf, fp) || sscanf(buf, "-Y %d +X %d%c", &h, &w, &tail) != 3 || tail != '\n') {
+		diag_file_error(d, path, "Radiance HDR resolution line is not '-Y height +X width' (other orientations "
+					 "are not supported)");
+		return false;
+	}
+	if (!size_ok(w, h, max_bytes, path, d) || !image_alloc(out, w, h, path, d))
+		return false;
+	unsigned char *line = mem_alloc((size_t)w, 4);
+	if (!line) {
+		image_free(out);
+		diag_file_error(d, path, "out of memory for a %dx%d image", w, h);
+		return false;
+	}
+	bool ok = true;
+	for (int y = 0; ok && y < h; y++) {
+		ok = hdr_line(fp, line, w);
+		for (int x = 0; ok && x < w; x++)
+			rgbe_to_float(line + 4 * (size_t)x, out->rgba + 4 * ((size_t)y * w + x));
+		if (!ok)
+			diag_file_error(d, path, "Radiance HDR data is corrupt or cut short at row %d of %d", y + 1, h);
+	}
+	mem_free(line);
+	if (!ok)
+		image_free(out);
+	return ok;
+}
+
 image_format image_format_of(const unsigned char *head, size_t n)
 {
 	if (n >= 8 && !png_sig_cmp(head, 0, 8))
@@ -344,6 +483,8 @@ image_format image_format_of(const unsigned char *head, size_t n)
 		return IMAGE_JPEG;
 	if (n >= 4 && head[0] == 0x76 && head[1] == 0x2f && head[2] == 0x31 && head[3] == 0x01)
 		return IMAGE_EXR;
+	if (n >= 2 && head[0] == '#' && head[1] == '?')
+		return IMAGE_HDR;
 	return IMAGE_UNKNOWN;
 }
 
@@ -372,8 +513,10 @@ bool image_load_limited(const char *path, image_encoding enc, size_t max_bytes, 
 		ok = load_jpeg(fp, path, enc, max_bytes, out, d);
 	else if (fmt == IMAGE_EXR)
 		ok = load_exr(path, max_bytes, out, d);
+	else if (fmt == IMAGE_HDR)
+		ok = load_hdr(fp, path, max_bytes, out, d);
 	else {
-		diag_file_error(d, path, "not a PNG, JPEG or OpenEXR image");
+		diag_file_error(d, path, "not a PNG, JPEG, OpenEXR or Radiance HDR image");
 		ok = false;
 	}
 	fclose(fp);

@@ -1,5 +1,5 @@
-/* image.h - float RGBA images in memory, loaded from PNG, JPEG or EXR (textures, environment maps,
- * `compare`), and the PNG preview writer. Pixels are linear: 8- and 16-bit files are decoded from
+/* image.h - float RGBA images in memory, loaded from PNG, JPEG, EXR or Radiance HDR (textures,
+ * environment maps, `compare`), and the PNG preview writer. Pixels are linear: 8- and 16-bit files are decoded from
  * sRGB unless the caller asks for raw values (normal maps are data, not colour). */
 #ifndef CIRCE_IO_IMAGE_H
 #define CIRCE_IO_IMAGE_H
@@ -22,14 +22,15 @@ typedef enum image_encoding {
 	IMAGE_INDEX /* as IMAGE_RAW, but a palette PNG gives its palette indices (image.indexed) */
 } image_encoding;
 
-typedef enum image_format { IMAGE_UNKNOWN, IMAGE_PNG, IMAGE_JPEG, IMAGE_EXR } image_format;
+typedef enum image_format { IMAGE_UNKNOWN, IMAGE_PNG, IMAGE_JPEG, IMAGE_EXR, IMAGE_HDR } image_format;
 enum { IMAGE_SIGNATURE_BYTES = 8 }; /* enough of a file's start for image_format_of */
 
-/* The format a file's first n bytes announce (PNG and JPEG signatures, EXR magic). */
+/* The format a file's first n bytes announce (PNG and JPEG signatures, EXR magic, Radiance's "#?"). */
 image_format image_format_of(const unsigned char *head, size_t n);
 
-/* Loads by content (PNG and JPEG signatures, EXR magic); missing channels: grey fills RGB, alpha 1.
- * EXR uses R, G, B, A (or Y for luminance). False with the reason reported to d. */
+/* Loads by content (PNG and JPEG signatures, EXR magic, Radiance HDR's "#?"); missing channels: grey
+ * fills RGB, alpha 1. EXR uses R, G, B, A (or Y for luminance); EXR and HDR are linear whatever
+ * enc. False with the reason reported to d. */
 bool image_load(const char *path, image_encoding enc, image *out, diag *d);
 /* image_load refusing, from the size in a PNG, JPEG or EXR header and before anything is decoded,
  * an image whose float RGBA (16 bytes a pixel: all that loading takes for PNG and JPEG; an EXR's

@@ -505,7 +505,7 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind);
 
 static bool image_map(parser *p, pig_build *b) { return image_block(p, b, SCENE_PAT_IMAGE); }
 
-/* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" ] string { "map_type" int | "once"
+/* image_map = "image_map" "{" [ "png" | "jpeg" | "exr" | "hdr" ] string { "map_type" int | "once"
  *             | "interpolate" int | ( "filter" | "transmit" ) "all" float } "}" */
 /* image_pattern = "image_pattern" "{" the same head { "map_type" int | "once" | "interpolate" int
  *                 | "use_color" | "use_colour" | "use_index" | "use_alpha" | "gamma" float } "}"
@@ -530,10 +530,10 @@ static bool image_block(parser *p, pig_build *b, scene_pattern_kind kind)
 	if (pat)
 		b->pg.accuracy = accuracy;
 	lang_tok k = lang_peek(p)->kind;
-	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR)
+	if (k == LTK_KW_PNG || k == LTK_KW_JPEG || k == LTK_KW_EXR || peek_word(p, "hdr"))
 		lang_advance(p);
 	else if (lang_peek(p)->kind != LTK_STRING)
-		return lang_error_found(p, "expected the image type (png, jpeg or exr) or its file in '%s'", what);
+		return lang_error_found(p, "expected the image type (png, jpeg, exr or hdr) or its file in '%s'", what);
 	TRY(lang_asset_path(p, "as the image file", SCENE_ASSET_IMAGE, &b->pg.image));
 	for (;;) {
 		long n;
@@ -830,8 +830,15 @@ static bool pattern_head(parser *p, pig_build *b, scene_pattern_kind k)
 		return lang_error(p, kw, "'facets' is a normal's pattern: it cannot be used in a %s",
 				  b->tex ? "texture" : b->density ? "density" : "pigment");
 	lang_advance(p);
-	if (k == SCENE_PAT_GRADIENT)
-		return lang_vec3(p, "after 'gradient'", &b->pg.vector);
+	if (k == SCENE_PAT_GRADIENT) { /* POV-Ray's Parse_Pattern normalises the vector */
+		diag_loc at = lang_peek(p)->loc;
+		TRY(lang_vec3(p, "after 'gradient'", &b->pg.vector));
+		double len = d3_length(b->pg.vector);
+		if (!(len > 0) || !isfinite(len))
+			return lang_error(p, at, "the vector of 'gradient' must not be zero (POV-Ray makes it unit length)");
+		b->pg.vector = d3_scale(b->pg.vector, 1.0 / len);
+		return true;
+	}
 	if (k == SCENE_PAT_SLOPE)
 		return slope_args(p, &b->pg, kw);
 	if (k == SCENE_PAT_DENSITY_FILE)

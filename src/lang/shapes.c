@@ -258,7 +258,7 @@ static bool hf_function(parser *p, scene_height_field *h, lang_token kw)
 	return true;
 }
 
-/* height_field = "height_field" "{" ( [ "png" | "exr" | "jpeg" ] string | "function" float [","] float
+/* height_field = "height_field" "{" ( [ "png" | "exr" | "jpeg" | "hdr" ] string | "function" float [","] float
  *                "{" function body "}" ) { "smooth" | "water_level" float } { modifier } "}"
  * (POV-Ray's other image types are not supported) */
 static bool height_field(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
@@ -267,7 +267,7 @@ static bool height_field(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	TRY(g = lang_new_geom(p, SHAPE_HEIGHT_FIELD, kw));
 	scene_height_field *h = &g->u.height_field;
 	lang_tok k = lang_peek(p)->kind;
-	if (k == LTK_KW_PNG || k == LTK_KW_EXR || k == LTK_KW_JPEG)
+	if (k == LTK_KW_PNG || k == LTK_KW_EXR || k == LTK_KW_JPEG || lang_word_is(lang_peek(p), "hdr"))
 		lang_advance(p);
 	h->path_loc = lang_peek(p)->loc;
 	if (k == LTK_KW_FUNCTION)

@@ -3881,17 +3881,13 @@ static bool background(parser *p)
 }
 
 /* sky_sphere { pigment { C } }: a sky of one colour is circe's background (a constant
- * environment light); a patterned sky (a pattern, several layers) is baked by the build into a
- * lat-long image (build_pattern.c). An image_map pigment is refused: circe's sky image is
- * `image`, mapped lat-long. */
+ * environment light); a patterned sky (a pattern, an image_map, several layers) is baked by the
+ * build into a lat-long image (build_pattern.c), each pigment evaluated at the ray's direction as
+ * POV-Ray's ComputeSky does (an image_map's map_type 1 is then POV-Ray's spherical sky image). */
 static bool sky_pigments(parser *p, diag_loc kw, scene_material *const *pg, int n, const xform *moved, bool was_moved)
 {
 	scene_sky_sphere *s = &p->sc->sky_sphere;
 	bool patterned = n > 1 || pg[0]->pigment;
-	for (int i = 0; i < n; i++)
-		if (pg[i]->pigment && pg[i]->pigment->kind == SCENE_PAT_IMAGE)
-			return lang_error(p, pg[i]->loc, "an image_map pigment in sky_sphere is not supported by circe: give "
-							 "the lat-long image as sky_sphere { image \"file\" }");
 	if (!patterned) {
 		vec3 c = v3_scale(pg[0]->color, (float)s->intensity);
 		if (!v3_is_finite(c))

@@ -156,6 +156,11 @@ vec3 bsdf_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 	return b->kind == BSDF_POV ? bsdf_pov_highlights(b, wo, wi) : v3s(0.0f);
 }
 
+vec3 bsdf_shine(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return b->kind == BSDF_POV ? bsdf_pov_shine(b, wo, wi) : v3s(0.0f);
+}
+
 vec3 bsdf_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi)
 {
 	return b->kind == BSDF_POV ? bsdf_pov_eval_delta_light(b, wo, wi) : bsdf_eval(b, wo, wi);

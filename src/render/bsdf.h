@@ -108,6 +108,9 @@ vec3 bsdf_eval(const bsdf_params *b, vec3 wo, vec3 wi);
 /* The part of bsdf_eval only light sources show in (POV-Ray's highlights; zero for other kinds):
  * next-event estimation weighs it fully, as no BSDF sample ever finds it. */
 vec3 bsdf_highlights(const bsdf_params *b, vec3 wo, vec3 wi);
+/* The part of bsdf_highlights that is specular and phong (without brilliance's part): what a
+ * POV-Ray shadowless light, a fill light, does not show (trace.cpp gives it no highlights). */
+vec3 bsdf_shine(const bsdf_params *b, vec3 wo, vec3 wi);
 /* bsdf_eval as a delta light (point, spot, parallel; found by light samples only) sees it:
  * BSDF_POV's without its near-mirror reflection, which in POV-Ray sees no light source. */
 vec3 bsdf_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi);

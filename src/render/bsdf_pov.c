@@ -131,11 +131,12 @@ vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi)
 	return has_layer_diffuse(b) ? v3_madd(r, b->pov_layer_diffuse, RENDER_INV_PI) : r;
 }
 
-vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
+/* The highlights of light sources; with shine false only the brilliance's part (bsdf_pov_shine). */
+static vec3 highlights(const bsdf_params *b, vec3 wo, vec3 wi, bool shine)
 {
 	const bsdf_pov_finish_spec *f = &b->pov;
 	bool bright = f->brilliance_less_1 != 0.0f && f->diffuse > 0.0f && f->sss_diffuse <= 0.0f;
-	if (wo.z <= 0.0f || wi.z <= 0.0f || (f->specular <= 0.0f && f->phong <= 0.0f && !bright))
+	if (wo.z <= 0.0f || wi.z <= 0.0f || ((!shine || (f->specular <= 0.0f && f->phong <= 0.0f)) && !bright))
 		return v3s(0.0f);
 	vec3 r = v3s(0.0f);
 	if (bright) { /* POV-Ray's Kd' cos^b beside the Lambert lobe's Kd cos (bsdf_pov.h) */
@@ -143,13 +144,13 @@ vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 		float d = (full * powf(wi.z, bm1) - f->diffuse) * wi.z; /* the cosine POV-Ray's term has */
 		r = v3_madd(r, b->pigment, d);
 	}
-	if (f->specular > 0.0f) { /* trace.cpp ComputeSpecularColour: Ks (N.H)^(1/roughness) */
+	if (shine && f->specular > 0.0f) { /* trace.cpp ComputeSpecularColour: Ks (N.H)^(1/roughness) */
 		vec3 h = v3_normalize(v3_add(wo, wi));
 		if (h.z > 0.0f)
 			r = v3_madd(r, metallic_tint(f->metallic, b->pigment, fminf(fmaxf(v3_dot(wi, h), 0.0f), 1.0f)),
 				    f->specular * powf(h.z, spec_n(f)));
 	}
-	if (f->phong > 0.0f) { /* ComputePhongColour: Kp (R.L)^phong_size, R the mirror of the eye */
+	if (shine && f->phong > 0.0f) { /* ComputePhongColour: Kp (R.L)^phong_size, R the mirror of the eye */
 		float rl = 2.0f * wo.z * wi.z - v3_dot(wo, wi);
 		if (rl > 0.0f)
 			r = v3_madd(r, metallic_tint(f->metallic, b->pigment, wi.z), f->phong * powf(rl, f->phong_size));
@@ -157,6 +158,13 @@ vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi)
 	/* POV-Ray adds this to the colour without the cosine its diffuse has; under a light scaled by
 	 * pi (build_light.c) the BSDF that gives it is this / (pi cos_i). */
 	return v3_mul(v3_scale(r, b->pov_scale * RENDER_INV_PI / wi.z), b->pov_weight);
+}
+
+vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi) { return highlights(b, wo, wi, true); }
+
+vec3 bsdf_pov_shine(const bsdf_params *b, vec3 wo, vec3 wi)
+{
+	return v3_sub(highlights(b, wo, wi, true), highlights(b, wo, wi, false));
 }
 
 vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi)

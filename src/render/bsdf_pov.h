@@ -58,6 +58,8 @@ float bsdf_pov_metallic_fresnel(float cos_angle);
 vec3 bsdf_pov_eval(const bsdf_params *b, vec3 wo, vec3 wi);
 vec3 bsdf_pov_eval_paths(const bsdf_params *b, vec3 wo, vec3 wi);
 vec3 bsdf_pov_highlights(const bsdf_params *b, vec3 wo, vec3 wi);
+/* The specular and phong part of the highlights (not the brilliance's). */
+vec3 bsdf_pov_shine(const bsdf_params *b, vec3 wo, vec3 wi);
 /* What a delta light shows in: eval without the reflection lobe. */
 vec3 bsdf_pov_eval_delta_light(const bsdf_params *b, vec3 wo, vec3 wi);
 float bsdf_pov_pdf(const bsdf_params *b, vec3 wo, vec3 wi);

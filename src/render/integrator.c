@@ -279,6 +279,12 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	vec3 wi_local = to_local(f, ls_out.wi);
 	vec3 fval = ls_out.delta ? bsdf_eval_delta_light(b, wo_local, wi_local) : bsdf_eval(b, wo_local, wi_local);
+	/* POV-Ray's shadowless light is its fill light: diffuse only, no specular or phong (trace.cpp) */
+	vec3 shine = v3s(0.0f);
+	if (ls_out.shadowless) {
+		shine = bsdf_shine(b, wo_local, wi_local);
+		fval = v3_max(v3_sub(fval, shine), v3s(0.0f));
+	}
 	if (v3_max_comp(fval) <= 0.0f)
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
@@ -291,7 +297,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		      ? 1.0f
 		      : render_power_heuristic(light_pdf, lobe_prob * bsdf_pdf(b, wo_local, wi_local));
 	if (w < 1.0f) { /* highlights only light sources show in: no BSDF sample shares them */
-		vec3 hl = bsdf_highlights(b, wo_local, wi_local);
+		vec3 hl = v3_sub(bsdf_highlights(b, wo_local, wi_local), shine);
 		/* at least 0: a brilliance's part of hl is signed (bsdf_pov.h), under a light MIS shares */
 		fval = v3_max(v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl), v3s(0.0f));
 		w = 1.0f;

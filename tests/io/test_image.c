@@ -137,7 +137,7 @@ int main(void)
 	fclose(mem);
 	CHECK(strstr(buf, "bad.png: error: cannot read PNG") && strstr(buf, "bad.jpg: error: cannot read JPEG") &&
 		      strstr(buf, "none.png: error: cannot open: No such file or directory") &&
-		      strstr(buf, "x.txt: error: not a PNG, JPEG or OpenEXR image"),
+		      strstr(buf, "x.txt: error: not a PNG, JPEG, OpenEXR or Radiance HDR image"),
 	      "messages:\n%s", buf);
 	free(buf);
 	diag_free(&e);
@@ -159,8 +159,61 @@ int main(void)
 	image_free(&img);
 	CHECK(image_load(path("a.png"), IMAGE_INDEX, &img, &d) && !img.indexed, "an RGB png has no indices");
 	image_free(&img);
-	const char *names[] = {"a.png", "b.png", "c.jpg", "d.exr", "bad.png", "bad.jpg", "x.txt", "p.png"};
-	for (int i = 0; i < 8; i++)
+	/* Radiance HDR (RGBE), written by hand: texel (m + 0.5) 2^(e - 136), 0 for e = 0 (Radiance's
+	 * colr_color). new.hdr is 8 x 2 in the run-length form (row 0 all runs, row 1 literals),
+	 * old.hdr 3 x 1 flat with the old repeat texel 1, 1, 1, 2; EXPOSURE is ignored (POV-Ray's). */
+	f = fopen(path("new.hdr"), "wb");
+	fputs("#?RADIANCE\n# a comment\nFORMAT=32-bit_rle_rgbe\nEXPOSURE=2\n\n-Y 2 +X 8\n", f);
+	const unsigned char row0[] = {2, 2, 0, 8, 136, 128, 136, 64, 136, 32, 136, 129};
+	fwrite(row0, 1, sizeof row0, f);
+	unsigned char row1[4 + 4 * 9];
+	memcpy(row1, (const unsigned char[]){2, 2, 0, 8}, 4);
+	for (int c = 0; c < 4; c++) {
+		row1[4 + 9 * c] = 8;
+		for (int x = 0; x < 8; x++)
+			row1[5 + 9 * c + x] = (unsigned char)(c == 0 ? 16 * x : c == 1 ? 0 : c == 2 ? 255 : x ? 128 + x % 2 : 0);
+	}
+	fwrite(row1, 1, sizeof row1, f);
+	fclose(f);
+	CHECK(image_load(path("new.hdr"), IMAGE_SRGB, &img, &d) && img.width == 8 && img.height == 2, "run-length hdr");
+	for (int x = 0; x < 8; x++) {
+		const float *t = img.rgba + 4 * x, *b = img.rgba + 4 * (8 + x);
+		CHECK(t[0] == 128.5f / 128 && t[1] == 64.5f / 128 && t[2] == 32.5f / 128 && t[3] == 1, "hdr row 0, texel %d", x);
+		float sc = x ? (x % 2 ? 2.0f : 1.0f) / 256 : 0;
+		CHECK(b[0] == (16 * x + 0.5f) * sc && b[1] == 0.5f * sc && b[2] == 255.5f * sc, "hdr row 1, texel %d: %g %g %g",
+		      x, b[0], b[1], b[2]);
+	}
+	image_free(&img);
+	f = fopen(path("old.hdr"), "wb");
+	fputs("#?RGBE\n\n-Y 1 +X 3\n", f);
+	fwrite((const unsigned char[]){10, 20, 30, 137, 1, 1, 1, 2}, 1, 8, f);
+	fclose(f);
+	CHECK(image_load(path("old.hdr"), IMAGE_RAW, &img, &d) && img.width == 3 && img.height == 1, "flat hdr");
+	for (int x = 0; x < 3; x++)
+		CHECK(img.rgba[4 * x] == 21.0f && img.rgba[4 * x + 1] == 41.0f && img.rgba[4 * x + 2] == 61.0f,
+		      "flat hdr texel %d repeated: %g", x, img.rgba[4 * x]);
+	image_free(&img);
+	buf = NULL, len = 0;
+	mem = open_memstream(&buf, &len);
+	diag_init(&e, mem);
+	const char *bad[][2] = {{"xyz.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n\1\1\1\x80"},
+				{"flip.hdr", "#?RADIANCE\n\n+Y 1 +X 1\n\1\1\1\x80"},
+				{"cut.hdr", "#?RADIANCE\n\n-Y 2 +X 8\n\2\2\0\x08\x88"}};
+	for (int i = 0; i < 3; i++) {
+		f = fopen(path(bad[i][0]), "wb");
+		fputs(bad[i][1], f);
+		fclose(f);
+		CHECK(!image_load(path(bad[i][0]), IMAGE_SRGB, &img, &e), "%s fails", bad[i][0]);
+		unlink(path(bad[i][0]));
+	}
+	fclose(mem);
+	CHECK(strstr(buf, "xyz.hdr: error: Radiance HDR file is not RGBE") && strstr(buf, "flip.hdr: error: Radiance HDR "
+		      "resolution line is not '-Y height +X width'") && strstr(buf, "cut.hdr: error: Radiance HDR data is "
+		      "corrupt or cut short at row 1 of 2"), "hdr messages:\n%s", buf);
+	free(buf);
+	diag_free(&e);
+	const char *names[] = {"a.png", "b.png", "c.jpg", "d.exr", "bad.png", "bad.jpg", "x.txt", "p.png", "new.hdr", "old.hdr"};
+	for (int i = 0; i < 10; i++)
 		unlink(path(names[i]));
 	CHECK(rmdir(dir) == 0, "no temporaries left in %s", dir);
 	diag_free(&d);

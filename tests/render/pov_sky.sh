@@ -5,7 +5,8 @@
 # under `global_settings { radiosity {} }`, or circe's own sky (`intensity`), it is the furnace,
 # 1.0; a mirror (reflection 1, diffuse 0) shows POV-Ray's sky, 1.0, with or without radiosity;
 # and the implicit ambient 0.1 glows 0.1 * pigment * ambient_light without radiosity (0.05 at
-# ambient_light 0.5) but not under circe's sky.
+# ambient_light 0.5) but not under circe's sky. A sky_sphere's image_map (map_type 1, a uniform
+# EXR of 0.5) is what the mirror shows: 0.5.
 . "$top_srcdir/tests/lib.sh"
 enter_workdir
 MKEXR="$top_builddir/tests/io/mkexr"
@@ -42,4 +43,7 @@ scene glow_r "ambient_light 0.5 radiosity { }" "" "diffuse 1 ambient 1"
 expect_status 0 "$CIRCE" compare glow_r.exr zero.exr --fail 1e-6
 scene glow_c "ambient_light 0.5" "sky_sphere { pigment { color rgb 0 } intensity 1 }" "diffuse 1"
 expect_status 0 "$CIRCE" compare glow_c.exr zero.exr --fail 1e-6
+"$MKEXR" sky.exr 16 8 --const 0.5 --alpha 1 || exit 99
+scene mirror_img "max_trace_level 5" "sky_sphere { pigment { image_map { exr \"sky.exr\" map_type 1 } } }" "ambient 0 diffuse 0 reflection 1"
+near mirror_img 0.5 0.01
 pass

@@ -174,6 +174,23 @@ static void test_pov_finish(long n)
 	double rest = 0.8 * 0.5 * dm.pov_scale / M_PI + bsdf_highlights(&dm, wo35, wm).x;
 	CHECK(full.x > 1000 * rest, "the mirror direction: %g against the rest %g", full.x, rest);
 	CHECK_NEAR(dl.x, rest, 1e-6 * rest);
+	/* bsdf_shine, what a POV-Ray shadowless (fill) light does not show: the specular and phong of
+	 * the highlights, not brilliance's part. With specular and phong the finish's highlights less
+	 * its shine are those of the same finish without them (its brilliance's cos^b term alone). */
+	f = pov_spec(0.6f, 0.5f, 0.05f, 0.7f, 20.0f);
+	f.brilliance_less_1 = 2.0f;
+	bsdf_params sh = bsdf_pov(&f, v3(0.8f, 0.6f, 0.4f));
+	f.specular = f.phong = 0.0f;
+	bsdf_params dull = bsdf_pov(&f, v3(0.8f, 0.6f, 0.4f));
+	for (double th = 0; th < 80; th += 15) {
+		vec3 wi = dir_at(th), wo = dir_at(th * 0.5 + 10);
+		wo.x = -wo.x;
+		vec3 rest = v3_sub(bsdf_highlights(&sh, wo, wi), bsdf_shine(&sh, wo, wi)), want = bsdf_highlights(&dull, wo, wi);
+		double s0 = (double)sh.pov_scale / dull.pov_scale; /* both capped by their own energy */
+		CHECK(fabs(rest.y - want.y * s0) <= 1e-5 * fabs(want.y) + 1e-7 && bsdf_shine(&sh, wo, wi).y > 0,
+		      "shine at %g deg: the rest %g, brilliance's part %g", th, rest.y, want.y * s0);
+	}
+	CHECK(v3_max_comp(bsdf_shine(&dull, z, z)) == 0.0f, "no specular, no phong: no shine");
 	/* Reciprocity of what paths carry (metallic tint and reflection weigh at wi.h); POV-Ray's
 	 * highlights are not reciprocal and light sources alone show in them. */
 	f = pov_spec(0.4f, 0.5f, 0.1f, 0.5f, 8.0f);

@@ -1,0 +1,1 @@
+sphere { 0, 1 pigment { gradient <0, 0, 0> } }
