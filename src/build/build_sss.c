@@ -139,6 +139,10 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
 	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
+	if (sm->pov_sss) /* POV-Ray's brightness: the weight's tex / albedo becomes tex * gain / albedo */
+		r->albedo = v3((float)(md.albedo[0] / sss_pov_gain(md.albedo[0], ss->ior, r->pov_open)),
+			       (float)(md.albedo[1] / sss_pov_gain(md.albedo[1], ss->ior, r->pov_open)),
+			       (float)(md.albedo[2] / sss_pov_gain(md.albedo[2], ss->ior, r->pov_open)));
 	/* A POV-Ray subsurface texture's weight is always its entry's b->diffuse / albedo: its
 	 * pigment there, and the finish's scale that keeps the lobes and the BSSRDF within 1. */
 	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL || sm->pov_sss;
@@ -172,7 +176,9 @@ static void warn_dense_medium(const world *w, const world_inst *in, const scene 
 }
 
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
- * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
+ * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh; for
+ * a POV-Ray subsurface texture also under the other methods, as its brightness depends on it
+ * (render_sss.pov_open, sss_pov_gain). */
 bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	bool ok = true;
@@ -184,7 +190,9 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, w->insts[i].object);
 		sss_method method = is_sss(o->material) ? sss_method_of(o->material, opt) : SSS_METHOD_DEFAULT;
-		if (method != SSS_METHOD_VOLUME && method != SSS_METHOD_AUTO)
+		bool walks = method == SSS_METHOD_VOLUME || method == SSS_METHOD_AUTO;
+		bool pov = is_sss(o->material) && o->material->pov_sss; /* its brightness: sss_pov_gain's k */
+		if (!walks && !pov)
 			continue;
 		const world_geom *g = w->insts[i].g;
 		size_t gi = (size_t)(g - w->geoms);
@@ -198,6 +206,10 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 			}
 			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
 		}
+		if (pov && closed[gi] < 0)
+			w->sss[w->insts[i].material].pov_open = true; /* built after this check */
+		if (!walks)
+			continue;
 		if (closed[gi] < 0 && method == SSS_METHOD_AUTO) {
 			/* auto walks only where the object is thin; an open one holds no volume to walk
 			 * in, so its material keeps to circle tracing (said once per material) */
