@@ -175,10 +175,93 @@ static void warn_dense_medium(const world *w, const world_inst *in, const scene 
 			     worst, SSS_WALK_MAX_STEPS);
 }
 
+/* Whether instance i's mesh is closed (sss_walk_mesh_closure), cached per mesh in closed[] (0
+ * unknown, 1 closed, -1 open): 1, 0, or -1 out of memory. */
+static int mesh_closed(const world *w, size_t i, int8_t *closed)
+{
+	size_t gi = (size_t)(w->insts[i].g - w->geoms);
+	if (!closed[gi]) {
+		uint64_t open_edges = 0;
+		sss_mesh_closure c = sss_walk_mesh_closure(&w->insts[i].g->m, &open_edges);
+		if (c == SSS_MESH_NO_MEMORY)
+			return -1;
+		closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+	}
+	return closed[gi] > 0;
+}
+
+/* Whether a CSG item (a node >= 0, an instance -1 - i) is a bounded solid, as POV-Ray's subsurface
+ * probe rays from inside it find: every one meets its surface (1), or some leave it unmet (0: a
+ * plane, an open mesh, an inverse, a clipped solid); -1 out of memory. An intersection is bounded
+ * when one operand is, a union or merge when all are, a difference when its base is. */
+static int pov_bounded(const world *w, int32_t item, int8_t *closed)
+{
+	if (item < 0) {
+		const world_inst *in = &w->insts[-1 - item];
+		if (in->hidden || in->csg_inverse || in->inside_kind == WORLD_INSIDE_PLANE)
+			return 0;
+		return mesh_closed(w, (size_t)(-1 - item), closed);
+	}
+	const world_csg_node *n = &w->csg_nodes[item];
+	if (n->inverse)
+		return 0;
+	bool any = false, all = true;
+	for (uint32_t k = n->first; k < n->first + n->count; k++) {
+		const world_csg_kid *kid = &w->csg_kids[k];
+		if (kid->item < 0 && w->insts[-1 - kid->item].hidden)
+			return 0; /* clipped_by: the cut leaves a hole */
+		if (n->op == SCENE_CSG_DIFFERENCE && kid->operand != 0)
+			continue;
+		int b = pov_bounded(w, kid->item, closed);
+		if (b < 0)
+			return -1;
+		any = any || b, all = all && b;
+	}
+	return n->op == SCENE_CSG_INTERSECTION ? any : all;
+}
+
+/* POV-Ray's subsurface brightness depends on whether its objects are bounded (sss_pov_gain's k):
+ * render_sss.pov_open of every POV-Ray subsurface texture on an unbounded object, the whole CSG
+ * solid's when it is in one. A texture on both kinds takes the open one's, and says so. */
+static bool mark_pov_open(world *w, const scene *sc, int8_t *closed, diag *d)
+{
+	uint8_t *seen = mem_calloc(w->n_materials, 1); /* per material: 1 an object seen, 2 mixed said */
+	if (!seen) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	bool ok = true;
+	for (size_t i = 0; i < w->n_insts && ok; i++) {
+		const scene_object *o = scene_object_at(sc, w->insts[i].object);
+		if (!is_sss(o->material) || !o->material->pov_sss || w->insts[i].hidden)
+			continue;
+		int32_t item = -1 - (int32_t)i;
+		for (int32_t p = w->insts[i].csg_parent; p >= 0; p = w->csg_nodes[p].parent)
+			item = p;
+		int b = pov_bounded(w, item, closed);
+		if (b < 0) {
+			diag_error(d, o->loc, "out of memory while checking that the object is closed");
+			ok = false;
+			break;
+		}
+		size_t k = (size_t)w->insts[i].material;
+		render_sss *r = &w->sss[k]; /* built after this check */
+		if ((seen[k] & 1) && r->pov_open != !b && !(seen[k] & 2)) {
+			diag_warning(d, o->loc, "this subsurface texture is on both open and closed objects: POV-Ray "
+						"shows it about twice as bright on the open ones, circe on all of them; give "
+						"each kind its own texture (said once per texture)");
+			seen[k] |= 2;
+		}
+		r->pov_open = r->pov_open || !b;
+		seen[k] |= 1;
+	}
+	mem_free(seen);
+	return ok;
+}
+
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
- * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh; for
- * a POV-Ray subsurface texture also under the other methods, as its brightness depends on it
- * (render_sss.pov_open, sss_pov_gain). */
+ * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh; a
+ * POV-Ray subsurface texture's objects too, under every method (mark_pov_open). */
 bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	bool ok = true;
@@ -187,12 +270,14 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 		diag_error(d, diag_noloc(), "out of memory");
 		return false;
 	}
+	if (!mark_pov_open(w, sc, closed, d)) {
+		mem_free(closed);
+		return false;
+	}
 	for (size_t i = 0; i < w->n_insts; i++) {
 		const scene_object *o = scene_object_at(sc, w->insts[i].object);
 		sss_method method = is_sss(o->material) ? sss_method_of(o->material, opt) : SSS_METHOD_DEFAULT;
-		bool walks = method == SSS_METHOD_VOLUME || method == SSS_METHOD_AUTO;
-		bool pov = is_sss(o->material) && o->material->pov_sss; /* its brightness: sss_pov_gain's k */
-		if (!walks && !pov)
+		if (method != SSS_METHOD_VOLUME && method != SSS_METHOD_AUTO)
 			continue;
 		const world_geom *g = w->insts[i].g;
 		size_t gi = (size_t)(g - w->geoms);
@@ -206,10 +291,6 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 			}
 			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
 		}
-		if (pov && closed[gi] < 0)
-			w->sss[w->insts[i].material].pov_open = true; /* built after this check */
-		if (!walks)
-			continue;
 		if (closed[gi] < 0 && method == SSS_METHOD_AUTO) {
 			/* auto walks only where the object is thin; an open one holds no volume to walk
 			 * in, so its material keeps to circle tracing (said once per material) */

@@ -472,6 +472,55 @@ static void test_pov_subsurface(void)
 	      "checker slab: %d pixels at %.6g, %d at %.6g, %d outside them (of %d)", n_hi, hi, n_lo, lo, outside, W * H);
 }
 
+/* Which POV-Ray subsurface textures are on open objects (render_sss.pov_open: POV-Ray's diffuse
+ * estimate doubles there): planes, discs, clipped or inverse solids and the CSG solids that are
+ * unbounded; not closed meshes, nor the bounded CSG solids built from planes. A texture on both
+ * kinds (a union's members share theirs) is open, and said once. */
+static void test_pov_open(void)
+{
+	struct { const char *obj; bool open; int warnings; } c[] = {
+		{"plane { y, 0 T() }", true, 0},
+		{"box { -1, 1 T() }", false, 0},
+		{"sphere { 0, 1 T() }", false, 0},
+		{"disc { 0, y, 2 T() }", true, 0},
+		{"sphere { 0, 1 inverse T() }", true, 0},
+		{"sphere { 0, 1 clipped_by { plane { y, 0.5 } } T() }", true, 0},
+		{"intersection { plane { y, 0 } box { -1, 1 } T() }", false, 0},
+		{"intersection { plane { y, 0 } plane { x, 0 } T() }", true, 0},
+		{"difference { box { -1, 1 } sphere { 0, 0.5 } T() }", false, 0},
+		{"difference { plane { y, 0 } sphere { 0, 0.5 } T() }", true, 0},
+		{"merge { box { -1, 1 } sphere { <1, 0, 0>, 0.5 } T() }", false, 0},
+		{"union { plane { y, -1 } sphere { 0, 1 } T() }", true, 1}, /* its members share the texture */
+		{"plane { y, -1 T() } sphere { 0, 1 T() }", true, 0},	    /* two textures: one of them open */
+	};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		char text[1024];
+		snprintf(text, sizeof text,
+			 "global_settings { subsurface { } }\n"
+			 "camera { location <0, 1, -4> look_at <0, 0, 0> }\n"
+			 "#macro T() texture { pigment { rgb 0.5 } finish { subsurface { translucency 1 } } } "
+			 "interior { ior 1.3 } #end\n"
+			 "%s\n",
+			 c[i].obj);
+		world *w;
+		world_options o = {.width = W, .height = H};
+		if (!build(text, &o, &w)) {
+			CHECK(false, "%s builds", c[i].obj);
+			continue;
+		}
+		const render_scene *rs = world_scene(w);
+		int n = 0;
+		bool open = false;
+		for (size_t k = 0; k < rs->material_count; k++)
+			if (rs->sss[k])
+				n++, open = open || rs->sss[k]->pov_open;
+		CHECK(n == 1 + (i == sizeof c / sizeof c[0] - 1) && open == c[i].open && last_warnings == c[i].warnings,
+		      "%s: %d subsurface textures, open %d (expected %d), %d warnings (expected %d)", c[i].obj, n, open,
+		      c[i].open, last_warnings, c[i].warnings);
+		world_free(w);
+	}
+}
+
 /* POV-Ray's brightness itself: POV-Ray 3.7.0 renders this scene (a plane, and a box 50 units
  * deep, of pigment 0.5, diffuse 1, translucency 1 mm, ior 1.5, mm_per_unit 10, under a light
  * overhead, seen straight down) at a mean of 0.9579 (plane) and 0.4970 (box), where its Lambert
@@ -906,6 +955,7 @@ int main(void)
 	test_slab_zero_variance();
 	test_pov_subsurface();
 	test_pov_brightness();
+	test_pov_open();
 	test_small_radius();
 	test_furnace();
 	test_extremes();
