@@ -281,9 +281,9 @@ double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double 
 	return fmax(ld, SSS_POV_MIN_RADIUS_FRACTION * translucency_mm);
 }
 
-double sss_pov_gain(double rd, double eta, bool open)
+double sss_pov_gain(double rd, double eta, double k)
 {
 	double r = fmin(fmax(rd, SSS_POV_GAIN_MIN_RD), 1.0);
 	double single = sss_pov_alpha_prime(r, eta) / (24.0 * r); /* POV-Ray's single scattering over R_d */
-	return (1.0 - 2.0 * sss_fresnel_moment1(eta)) * ((open ? 2.0 : 1.0) + single);
+	return (1.0 - 2.0 * sss_fresnel_moment1(eta)) * (k + single);
 }

@@ -176,11 +176,11 @@ double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double 
  * ComputeSubsurfaceScattering: its diffuse term's estimate, k times the dipole's R_d, and its
  * single scattering, alpha'/24 with s ~ exp(-sigma_t s), sigma_tc = 2 sigma_t and p = 1/4 in
  * its units), circe's Ft(0)^2 rd / (1 - 2 FM1(eta)) (f_t's normalisation), so the factor is
- * (1 - 2 FM1(eta)) (k + alpha'(rd)/(24 rd)), alpha' sss_pov_alpha_prime's. k = 2 on an open
- * object (`open`: a plane, any surface that bounds no volume), where half of POV-Ray's probe
- * rays find no surface and its estimate divides by the others only; k = 1 on a closed one. rd is
- * held at >= SSS_POV_GAIN_MIN_RD (the ratio's limit at 0 is finite). eta > 0. */
-double sss_pov_gain(double rd, double eta, bool open);
+ * (1 - 2 FM1(eta)) (k + alpha'(rd)/(24 rd)), alpha' sss_pov_alpha_prime's. k is 1 over the
+ * fraction of POV-Ray's probe rays that meet a surface, as its estimate divides by those only:
+ * 1 on a closed object, 2 under a plane (half of them find nothing). rd is held at >=
+ * SSS_POV_GAIN_MIN_RD (the ratio's limit at 0 is finite). eta > 0. */
+double sss_pov_gain(double rd, double eta, double k);
 #define SSS_POV_GAIN_MIN_RD 1e-6
 
 #endif

@@ -437,7 +437,7 @@ static void test_pov_subsurface(void)
 	char on[1024], off[1024];
 	snprintf(on, sizeof on, "global_settings { subsurface { } }\n" SLAB_LIGHT "box { <-50, -50, -50>, <50, 0, 50> %s", tex);
 	snprintf(off, sizeof off, SLAB_LIGHT "box { <-50, -50, -50>, <50, 0, 50> %s", tex);
-	double lambert = 0.6 * (10.0 / sqrt(125.0)) / M_PI, expect = lambert * sss_pov_gain(0.6, 1.0, false);
+	double lambert = 0.6 * (10.0 / sqrt(125.0)) / M_PI, expect = lambert * sss_pov_gain(0.6, 1.0, 1.0);
 	image_stats a, b;
 	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
 	CHECK(a.max - a.min <= 1e-4 * expect && fabs(a.mean - expect) <= 1e-4 * expect,
@@ -448,7 +448,7 @@ static void test_pov_subsurface(void)
 	      "without global subsurface: %lu circles, mean %.9g, expected %.9g (Lambert)", b.circles, b.mean, lambert);
 	/* The same texture on a plane: open, so POV-Ray's diffuse term doubles. */
 	snprintf(on, sizeof on, "global_settings { subsurface { } }\n" SLAB_LIGHT "plane { y, 0 %s", tex);
-	double expect_open = lambert * sss_pov_gain(0.6, 1.0, true);
+	double expect_open = lambert * sss_pov_gain(0.6, 1.0, 2.0);
 	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
 	CHECK(a.max - a.min <= 1e-4 * expect_open && fabs(a.mean - expect_open) <= 1e-4 * expect_open,
 	      "POV-Ray subsurface plane at 1 spp: pixels from %.9g to %.9g, expected all %.9g", a.min, a.max, expect_open);
@@ -461,7 +461,7 @@ static void test_pov_subsurface(void)
 		 "box { <-50, -50, -50>, <50, 0, 50> texture { pigment { checker rgb 0.75 rgb 0.25 scale 3 translate "
 		 "<1.5, 0, 1.5> } finish { ambient 0 diffuse 0.8 subsurface { translucency 1.5 } } } interior { ior 1 } }\n");
 	render(on, 1, 1, SSS_CIRCLE_EXACT, SSS_METHOD_DEFAULT, &a);
-	double g = sss_pov_gain(0.4, 1.0, false), hi = lambert * g, lo = hi / 3.0, tol = 1e-3; /* m within 1e-3 of 0.4 */
+	double g = sss_pov_gain(0.4, 1.0, 1.0), hi = lambert * g, lo = hi / 3.0, tol = 1e-3; /* m within 1e-3 of 0.4 */
 	int n_hi = 0, n_lo = 0, outside = 0;
 	for (int i = 0; i < W * H; i++) {
 		n_hi += fabs(a.px[i] - hi) <= tol * hi;

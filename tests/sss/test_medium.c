@@ -230,11 +230,11 @@ static void check_pov_gain(void)
 		{0.3, 1.0, 1.1173940474, 2.1173940474},
 	};
 	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
-		double g0 = sss_pov_gain(c[i].rd, c[i].eta, false), g1 = sss_pov_gain(c[i].rd, c[i].eta, true);
+		double g0 = sss_pov_gain(c[i].rd, c[i].eta, 1.0), g1 = sss_pov_gain(c[i].rd, c[i].eta, 2.0);
 		CHECK(fabs(g0 / c[i].closed - 1.0) < 1e-8 && fabs(g1 / c[i].open - 1.0) < 1e-8,
 		      "case %zu: gain closed %.10g open %.10g, by hand %.10g %.10g", i, g0, g1, c[i].closed, c[i].open);
 	}
-	CHECK(sss_pov_gain(-1.0, 1.5, false) == sss_pov_gain(0.0, 1.5, false) && isfinite(sss_pov_gain(0.0, 1.5, true)),
+	CHECK(sss_pov_gain(-1.0, 1.5, 1.0) == sss_pov_gain(0.0, 1.5, 1.0) && isfinite(sss_pov_gain(0.0, 1.5, 2.0)),
 	      "rd <= 0 is held");
 	/* The two parts from POV-Ray's estimator, for rd 0.5 at eta 1.5, T = 1 mm. */
 	const double rd = 0.5, eta = 1.5, a = sss_pov_alpha_prime(rd, eta), st = 1.0 / a, z0 = 1.0 / st;
@@ -253,8 +253,8 @@ static void check_pov_gain(void)
 	CHECK(fabs(single * 24.0 / a - 1.0) < 1e-6, "single scattering %.9g, expected alpha'/24 = %.9g", single, a / 24.0);
 	/* POV-Ray's Ft(0)^2 (k rd + single) over circe's Ft(0)^2 rd / (1 - 2 FM1) */
 	double c_norm = 1.0 - 2.0 * sss_fresnel_moment1(eta);
-	CHECK_NEAR(sss_pov_gain(rd, eta, true), (mean_hit + single) / rd * c_norm, 1e-3);
-	CHECK_NEAR(sss_pov_gain(rd, eta, false), (mean_hit / 2.0 + single) / rd * c_norm, 1e-3);
+	CHECK_NEAR(sss_pov_gain(rd, eta, 2.0), (mean_hit + single) / rd * c_norm, 1e-3);
+	CHECK_NEAR(sss_pov_gain(rd, eta, 1.0), (mean_hit / 2.0 + single) / rd * c_norm, 1e-3);
 }
 
 /* auto's probability of the walk: 1 up to SSS_AUTO_WALK_BELOW l_d, 0 from SSS_AUTO_CIRCLE_ABOVE
