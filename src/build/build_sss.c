@@ -323,10 +323,12 @@ bool build_pov_probe(world *w, const scene *sc, diag *d)
 	uint32_t seq = 0;
 	for (int gy = 0; gy < POV_PROBE_GRID; gy++)
 		for (int gx = 0; gx < POV_PROBE_GRID; gx++) {
-			int px = (int)((gx + 0.5) * c->width / POV_PROBE_GRID), py = (int)((gy + 0.5) * c->height / POV_PROBE_GRID);
+			/* the same image points at every resolution: pixel and offset of (gx + 1/2) / grid */
+			double fx = (gx + 0.5) * c->width / POV_PROBE_GRID, fy = (gy + 0.5) * c->height / POV_PROBE_GRID;
+			int px = (int)fx, py = (int)fy;
 			render_ray ray;
 			render_hit hit = {0};
-			if (!cam_sample(c, px, py, v2(0.5f, 0.5f), v2(0.5f, 0.5f), &ray) ||
+			if (!cam_sample(c, px, py, v2((float)(fx - px), (float)(fy - py)), v2(0.5f, 0.5f), &ray) ||
 			    !rs->intersect(rs->user, &ray, 0.0f, INFINITY, &hit) || hit.material < 0 ||
 			    hit.object >= n_obj || open_obj[hit.object] != 1)
 				continue;

@@ -519,6 +519,39 @@ static void test_pov_open(void)
 		      c[i].open, last_warnings, c[i].warnings);
 		world_free(w);
 	}
+	/* The probe factor k (render_sss.pov_k) as POV-Ray's probe rays meet the scene: 2 under a
+	 * plane with nothing below it, 1 on a closed object, near 1 where a large box lies under the
+	 * plane (every probe ray meets a surface), between for a disc standing on a floor. */
+	struct { const char *objs; double lo, hi; } q[] = {
+		{"plane { y, 0 T() }", 1.95, 2.05},
+		{"sphere { 0, 1 T() }", 1.0, 1.0},
+		{"plane { y, 0 T() } box { <-1e3, -1e3, -1e3>, <1e3, -1, 1e3> }", 1.0, 1.05},
+		{"plane { y, -1 } disc { 0, -z, 0.8 T() }", 1.1, 1.9},
+	};
+	for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
+		char text[1024];
+		snprintf(text, sizeof text,
+			 "global_settings { subsurface { } }\n"
+			 "camera { location <0, 1, -4> look_at <0, 0, 0> }\n"
+			 "#macro T() texture { pigment { rgb 0.5 } finish { subsurface { translucency 1 } } } "
+			 "interior { ior 1.3 } #end\n"
+			 "%s\n",
+			 q[i].objs);
+		world *w;
+		world_options o = {.width = W, .height = H};
+		if (!build(text, &o, &w)) {
+			CHECK(false, "%s builds", q[i].objs);
+			continue;
+		}
+		const render_scene *rs = world_scene(w);
+		double k = 0.0;
+		for (size_t m = 0; m < rs->material_count; m++)
+			if (rs->sss[m])
+				k = rs->sss[m]->pov_k;
+		printf("POV-Ray's probe factor, %s: k %.4f\n", q[i].objs, k);
+		CHECK(k >= q[i].lo && k <= q[i].hi, "%s: k %.4f, expected %g to %g", q[i].objs, k, q[i].lo, q[i].hi);
+		world_free(w);
+	}
 }
 
 /* POV-Ray's brightness itself: POV-Ray 3.7.0 renders this scene (a plane, and a box 50 units
