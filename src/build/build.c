@@ -69,6 +69,10 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 		return false;
 	}
 	world_bind(w);
+	if (!o.geometry_only && w->has_sss && !build_pov_probe(w, sc, d)) {
+		world_release(w);
+		return false;
+	}
 	return true;
 }
 

@@ -65,6 +65,8 @@ sss_method sss_method_of(const scene_material *m, const world_options *opt);
 bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, const scene_material *sm, diag *d);
 bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d);
 void build_groups(world *w, const scene *sc);
+/* POV-Ray's subsurface probe factor on open objects, once the world can be traced. */
+bool build_pov_probe(world *w, const scene *sc, diag *d);
 
 /* build_light.c */
 bool build_lights(world *w, const scene *sc, diag *d);

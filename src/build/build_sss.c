@@ -139,6 +139,13 @@ bool build_sss(world *w, size_t k, const scene *sc, const world_options *opt, co
 	 * n_inside / n_outside); DESIGN.md writes FM1(1/eta) in pbrt's opposite convention. */
 	r->entry_norm = (float)(1.0 / (1.0 - 2.0 * sss_fresnel_moment1(ss->ior)));
 	r->albedo = v3((float)md.albedo[0], (float)md.albedo[1], (float)md.albedo[2]);
+	if (sm->pov_sss) { /* POV-Ray's brightness: the weight's tex / albedo becomes tex * gain / albedo
+			    * (k 2 on open objects until build_pov_probe measures it) */
+		r->pov_k = r->pov_open ? 2.0f : 1.0f;
+		r->albedo = v3((float)(md.albedo[0] / sss_pov_gain(md.albedo[0], ss->ior, r->pov_k)),
+			       (float)(md.albedo[1] / sss_pov_gain(md.albedo[1], ss->ior, r->pov_k)),
+			       (float)(md.albedo[2] / sss_pov_gain(md.albedo[2], ss->ior, r->pov_k)));
+	}
 	/* A POV-Ray subsurface texture's weight is always its entry's b->diffuse / albedo: its
 	 * pigment there, and the finish's scale that keeps the lobes and the BSSRDF within 1. */
 	r->textured = ss->albedo_image != NULL || ss->pigment != NULL || sm->pigment != NULL || sm->pov_sss;
@@ -171,14 +178,208 @@ static void warn_dense_medium(const world *w, const world_inst *in, const scene 
 			     worst, SSS_WALK_MAX_STEPS);
 }
 
+/* Whether instance i's mesh is closed (sss_walk_mesh_closure), cached per mesh in closed[] (0
+ * unknown, 1 closed, -1 open): 1, 0, or -1 out of memory. */
+static int mesh_closed(const world *w, size_t i, int8_t *closed)
+{
+	size_t gi = (size_t)(w->insts[i].g - w->geoms);
+	if (!closed[gi]) {
+		uint64_t open_edges = 0;
+		sss_mesh_closure c = sss_walk_mesh_closure(&w->insts[i].g->m, &open_edges);
+		if (c == SSS_MESH_NO_MEMORY)
+			return -1;
+		closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+	}
+	return closed[gi] > 0;
+}
+
+/* Whether a CSG item (a node >= 0, an instance -1 - i) is a bounded solid, as POV-Ray's subsurface
+ * probe rays from inside it find: every one meets its surface (1), or some leave it unmet (0: a
+ * plane, an open mesh, an inverse, a clipped solid); -1 out of memory. An intersection is bounded
+ * when one operand is, a union or merge when all are, a difference when its base is. */
+static int pov_bounded(const world *w, int32_t item, int8_t *closed)
+{
+	if (item < 0) {
+		const world_inst *in = &w->insts[-1 - item];
+		if (in->hidden || in->csg_inverse || in->inside_kind == WORLD_INSIDE_PLANE)
+			return 0;
+		return mesh_closed(w, (size_t)(-1 - item), closed);
+	}
+	const world_csg_node *n = &w->csg_nodes[item];
+	if (n->inverse)
+		return 0;
+	bool any = false, all = true;
+	for (uint32_t k = n->first; k < n->first + n->count; k++) {
+		const world_csg_kid *kid = &w->csg_kids[k];
+		if (kid->item < 0 && w->insts[-1 - kid->item].hidden)
+			return 0; /* clipped_by: the cut leaves a hole */
+		if (n->op == SCENE_CSG_DIFFERENCE && kid->operand != 0)
+			continue;
+		int b = pov_bounded(w, kid->item, closed);
+		if (b < 0)
+			return -1;
+		any = any || b, all = all && b;
+	}
+	return n->op == SCENE_CSG_INTERSECTION ? any : all;
+}
+
+/* POV-Ray's subsurface brightness depends on whether its objects are bounded (sss_pov_gain's k):
+ * render_sss.pov_open of every POV-Ray subsurface texture on an unbounded object, the whole CSG
+ * solid's when it is in one. A texture on both kinds takes the open one's, and says so. */
+static bool mark_pov_open(world *w, const scene *sc, int8_t *closed, diag *d)
+{
+	uint8_t *seen = mem_calloc(w->n_materials, 1); /* per material: 1 an object seen, 2 mixed said */
+	if (!seen) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	bool ok = true;
+	for (size_t i = 0; i < w->n_insts && ok; i++) {
+		const scene_object *o = scene_object_at(sc, w->insts[i].object);
+		if (!is_sss(o->material) || !o->material->pov_sss || w->insts[i].hidden)
+			continue;
+		int32_t item = -1 - (int32_t)i;
+		for (int32_t p = w->insts[i].csg_parent; p >= 0; p = w->csg_nodes[p].parent)
+			item = p;
+		int b = pov_bounded(w, item, closed);
+		if (b < 0) {
+			diag_error(d, o->loc, "out of memory while checking that the object is closed");
+			ok = false;
+			break;
+		}
+		size_t k = (size_t)w->insts[i].material;
+		render_sss *r = &w->sss[k]; /* built after this check */
+		if ((seen[k] & 1) && r->pov_open != !b && !(seen[k] & 2)) {
+			diag_warning(d, o->loc, "this subsurface texture is on both open and closed objects: POV-Ray "
+						"shows it about twice as bright on the open ones, circe on all of them; give "
+						"each kind its own texture (said once per texture)");
+			seen[k] |= 2;
+		}
+		r->pov_open = r->pov_open || !b;
+		seen[k] |= 1;
+	}
+	mem_free(seen);
+	return ok;
+}
+
+/* POV-Ray's probe factor, measured as POV-Ray's probe rays meet the scene (pov_probe_factors):
+ * POV_PROBE_GRID^2 camera rays over the image, and at each exit point they find on an open
+ * object of a POV-Ray subsurface texture POV_PROBE_DIRS rays, uniform over the sphere, from the
+ * base point POV-Ray takes (its average free path 1/sigma_t' behind the surface, on the side away
+ * from the eye: trace.cpp ComputeDiffuseSampleBase). Deterministic (Halton directions). */
+#define POV_PROBE_GRID 32
+#define POV_PROBE_DIRS 64
+
+/* The base point's depth below the surface, in scene units: POV-Ray's 1/sigma_t' of the
+ * luminance-weighted coefficients (its greyscale of sigma_a plus that of sigma_s'), sigma_s' =
+ * 1/T, sigma_t' = sigma_s' / alpha' (ComputeSubsurfaceScattering). */
+static double pov_probe_depth(const render_sss *r, const scene_material *sm, double mm_per_unit)
+{
+	const vec3 t = sm->finish.translucency_mm;
+	const double tc[3] = {t.x, t.y, t.z}, wl[3] = {0.2126, 0.7152, 0.0722};
+	double st = 0.0;
+	for (int c = 0; c < 3; c++)
+		st += wl[c] / (tc[c] * fmax(sss_pov_alpha_prime(r->profile.ch[c].albedo, sm->sss.ior), 1e-9));
+	return 1.0 / (st * mm_per_unit);
+}
+
+/* POV-Ray's diffuse estimate averages over its probe rays that meet any surface (trace.cpp
+ * ComputeSubsurfaceScattering: trueNumSamples), each weighted for the whole sphere, so where a
+ * fraction P of them meets something its estimate is 1/P times the dipole's integral: k = 1/P,
+ * 2 under a plane with nothing below it, less where the rays that leave an open object's back
+ * meet other objects (a disc standing on a floor). The factor of each POV-Ray subsurface texture
+ * on open objects is P's mean over its exit points the camera sees (1/P held to [1, 4]), and its
+ * weights' albedo is set from it (render_sss.albedo, sss_pov_gain); a texture the camera does not
+ * see keeps k = 2. Run once the world can be traced. */
+bool build_pov_probe(world *w, const scene *sc, diag *d)
+{
+	bool any = false;
+	for (size_t k = 0; k < w->n_materials; k++)
+		any = any || (w->sss_of[k] && w->sss[k].pov_open);
+	if (!any)
+		return true;
+	size_t n_obj = scene_n_objects(sc);
+	int8_t *closed = mem_calloc(w->n_geoms ? w->n_geoms : 1, 1);
+	int8_t *open_obj = mem_calloc(n_obj ? n_obj : 1, 1); /* per scene object: 1 open, -1 bounded */
+	double *hits = mem_calloc(w->n_materials, sizeof *hits), *rays = mem_calloc(w->n_materials, sizeof *rays);
+	bool ok = closed && open_obj && hits && rays;
+	for (size_t i = 0; ok && i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		if (in->hidden || !w->sss_of[in->material] || !w->sss[in->material].pov_open || in->object >= n_obj)
+			continue;
+		int32_t item = -1 - (int32_t)i;
+		for (int32_t p = in->csg_parent; p >= 0; p = w->csg_nodes[p].parent)
+			item = p;
+		int b = pov_bounded(w, item, closed);
+		ok = b >= 0;
+		open_obj[in->object] = b ? -1 : 1;
+	}
+	if (!ok) {
+		diag_error(d, diag_noloc(), "out of memory");
+		goto done;
+	}
+	const render_scene *rs = &w->rs;
+	const cam *c = &w->camera;
+	uint32_t seq = 0;
+	for (int gy = 0; gy < POV_PROBE_GRID; gy++)
+		for (int gx = 0; gx < POV_PROBE_GRID; gx++) {
+			/* the same image points at every resolution: pixel and offset of (gx + 1/2) / grid */
+			double fx = (gx + 0.5) * c->width / POV_PROBE_GRID, fy = (gy + 0.5) * c->height / POV_PROBE_GRID;
+			int px = (int)fx, py = (int)fy;
+			render_ray ray;
+			render_hit hit = {0};
+			if (!cam_sample(c, px, py, v2((float)(fx - px), (float)(fy - py)), v2(0.5f, 0.5f), &ray) ||
+			    !rs->intersect(rs->user, &ray, 0.0f, INFINITY, &hit) || hit.material < 0 ||
+			    hit.object >= n_obj || open_obj[hit.object] != 1)
+				continue;
+			size_t k = (size_t)hit.material;
+			const scene_material *sm = scene_object_at(sc, hit.object)->material;
+			if (!w->sss_of[k] || !sm || !sm->pov_sss)
+				continue;
+			double depth = pov_probe_depth(&w->sss[k], sm, sc->global.mm_per_unit);
+			/* behind the surface: the side away from the eye */
+			vec3 n = v3_dot(hit.ng, ray.d) > 0.0f ? hit.ng : v3_neg(hit.ng);
+			vec3 base = v3_add(hit.p, v3_scale(n, (float)depth));
+			for (int j = 0; j < POV_PROBE_DIRS; j++, seq++) {
+				double z = 1.0 - 2.0 * halton(seq + 1, 2), phi = 2.0 * M_PI * halton(seq + 1, 3);
+				double s = sqrt(fmax(0.0, 1.0 - z * z));
+				render_ray probe = {base, v3((float)(s * cos(phi)), (float)(s * sin(phi)), (float)z)};
+				render_hit ph = {0};
+				hits[k] += rs->intersect(rs->user, &probe, (float)(1e-3 * depth), INFINITY, &ph);
+				rays[k] += 1.0;
+			}
+		}
+	for (size_t k = 0; k < w->n_materials; k++) {
+		if (!(rays[k] > 0.0))
+			continue;
+		render_sss *r = &w->sss[k];
+		double f = fmin(fmax(rays[k] / fmax(hits[k], 1.0), 1.0), 4.0);
+		r->pov_k = (float)f;
+		double a[3];
+		for (int ch = 0; ch < 3; ch++) {
+			double rd = r->profile.ch[ch].albedo;
+			a[ch] = rd / sss_pov_gain(rd, r->ior, f);
+		}
+		r->albedo = v3((float)a[0], (float)a[1], (float)a[2]);
+	}
+done:
+	mem_free(closed), mem_free(open_obj), mem_free(hits), mem_free(rays);
+	return ok;
+}
+
 /* The volume method walks inside the object: an SSS object rendered by it must bound a volume
- * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh. */
+ * (sss_walk_mesh_closure), else light would leave through the holes. Checked once per mesh; a
+ * POV-Ray subsurface texture's objects too, under every method (mark_pov_open). */
 bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	bool ok = true;
 	int8_t *closed = mem_calloc(w->n_geoms ? w->n_geoms : 1, 1); /* 0 unknown, 1 closed, -1 open */
 	if (!closed) {
 		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	if (!mark_pov_open(w, sc, closed, d)) {
+		mem_free(closed);
 		return false;
 	}
 	for (size_t i = 0; i < w->n_insts; i++) {

@@ -73,7 +73,10 @@ typedef struct render_sss {
 						 * the profile's tail is SSS_AUTO_TAIL_WALK and _CIRCLE */
 	bool auto_walk;	     /* auto may walk: every object of the material is closed */
 	bool auto_open;	     /* the build's: an object of this material under auto is open */
-	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A */
+	bool pov_open;	     /* the build's: an object of this POV-Ray subsurface texture is open */
+	float pov_k;	     /* its POV-Ray probe factor (sss_pov_gain's k): 1 closed, about 2 open */
+	vec3 albedo;	     /* the profile's A: an albedo texture at x_i scales the weight by tex / A;
+			      * a POV-Ray subsurface texture's is A / sss_pov_gain (its brightness) */
 	bool textured;	     /* the albedo comes from a texture (shade() sets it at x_i) */
 } render_sss;
 

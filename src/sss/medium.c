@@ -280,3 +280,10 @@ double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double 
 	double ld = translucency_mm * a / sqrt(3.0 * (1.0 - a));
 	return fmax(ld, SSS_POV_MIN_RADIUS_FRACTION * translucency_mm);
 }
+
+double sss_pov_gain(double rd, double eta, double k)
+{
+	double r = fmin(fmax(rd, SSS_POV_GAIN_MIN_RD), 1.0);
+	double single = sss_pov_alpha_prime(r, eta) / (24.0 * r); /* POV-Ray's single scattering over R_d */
+	return (1.0 - 2.0 * sss_fresnel_moment1(eta)) * (k + single);
+}

@@ -169,5 +169,18 @@ double sss_pov_alpha_prime(double rd, double eta);
  * (such a channel reflects nothing, so its radius is never seen). T > 0. */
 double sss_pov_translucency_radius_mm(double rd, double translucency_mm, double eta);
 #define SSS_POV_MIN_RADIUS_FRACTION 1e-9
+/* POV-Ray's brightness of a subsurface surface over circe's BSSRDF of the same medium, one
+ * channel of diffuse reflectance rd = pigment * diffuse (doc/language.md "POV-Ray's subsurface",
+ * "Brightness"): the factor that makes a flat surface lit and seen along its normal show what
+ * POV-Ray 3.7 shows there. POV-Ray's light there is Ft(0)^2 (k rd + alpha'/24) (trace.cpp
+ * ComputeSubsurfaceScattering: its diffuse term's estimate, k times the dipole's R_d, and its
+ * single scattering, alpha'/24 with s ~ exp(-sigma_t s), sigma_tc = 2 sigma_t and p = 1/4 in
+ * its units), circe's Ft(0)^2 rd / (1 - 2 FM1(eta)) (f_t's normalisation), so the factor is
+ * (1 - 2 FM1(eta)) (k + alpha'(rd)/(24 rd)), alpha' sss_pov_alpha_prime's. k is 1 over the
+ * fraction of POV-Ray's probe rays that meet a surface, as its estimate divides by those only:
+ * 1 on a closed object, 2 under a plane (half of them find nothing). rd is held at >=
+ * SSS_POV_GAIN_MIN_RD (the ratio's limit at 0 is finite). eta > 0. */
+double sss_pov_gain(double rd, double eta, double k);
+#define SSS_POV_GAIN_MIN_RD 1e-6
 
 #endif

@@ -1,7 +1,8 @@
 /* test_medium: the one derivation of an SSS medium (sss/medium.h) - the presets, each form from
  * the other against values computed independently (JMLH01's Figure 5, the polynomial F_dr the
  * scene used before, l_d by hand), the round trips, what a spec's base and written parameters
- * give, and the name tables of methods and profiles read both ways. */
+ * give, the name tables of methods and profiles read both ways, and POV-Ray's subsurface brightness
+ * (sss_pov_gain) against values by hand and POV-Ray's estimator rebuilt by quadrature. */
 #include "check.h"
 #include "sss/medium.h"
 
@@ -199,6 +200,63 @@ static void check_pov_translucency(void)
 		   1e-12);
 }
 
+/* Jensen et al. 2001's dipole profile R_d(r) (their eq. 4, per unit area) with POV-Ray's boundary
+ * term A = (1 + F)/(1 - F), F = POV-Ray's F_dr: reduced albedo a, sigma_t' st (per mm), r in mm. */
+static double dipole_r(double r, double a, double st, double eta)
+{
+	double f = sss_pov_fresnel_diffuse(eta), A = (1.0 + f) / (1.0 - f);
+	double sa = st * (1.0 - a), str = sqrt(3.0 * sa * st);
+	double zr = 1.0 / st, zv = zr * (1.0 + 4.0 / 3.0 * A);
+	double dr = sqrt(r * r + zr * zr), dv = sqrt(r * r + zv * zv);
+	return a / (4.0 * M_PI) *
+	       (zr * (str * dr + 1.0) * exp(-str * dr) / (dr * dr * dr) + zv * (str * dv + 1.0) * exp(-str * dv) / (dv * dv * dv));
+}
+
+/* POV-Ray's brightness over circe's (sss_pov_gain): against values computed independently (a
+ * Python script: POV-Ray's F_dr, JMLH01's R_d inverted by bisection, FM1 by a midpoint rule of
+ * 200000 steps, then (1 - 2 FM1) (k + alpha'/(24 rd))), and its two parts rebuilt here from what
+ * POV-Ray 3.7's trace.cpp does (read, not copied): ComputeSubsurfaceScattering's diffuse estimate
+ * on a half-space, its probe rays from a base point 1/sigma_t' deep, uniform over the sphere,
+ * each weighted by 4 pi d^2 / cos, averaged over the rays that hit (the upward half), is twice the
+ * dipole's R_d; its single scattering at normal light and view, s = -ln(eps) / sigma_t, is
+ * alpha'/24 (sigma_s F p / sigma_tc e^{-2 sigma_t s}, sigma_tc = 2 sigma_t, p = 1/4, F = 1). */
+static void check_pov_gain(void)
+{
+	struct { double rd, eta, closed, open; } c[] = {
+		{0.5, 1.5, 0.9801979659, 1.8884200066},
+		{0.1, 1.45, 1.1255424728, 2.0411755137},
+		{0.9, 1.3, 0.9822819550, 1.9211501298},
+		{0.0, 1.5, 1.3105167368, 2.2187387775}, /* held at rd 1e-6 */
+		{0.3, 1.0, 1.1173940474, 2.1173940474},
+	};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		double g0 = sss_pov_gain(c[i].rd, c[i].eta, 1.0), g1 = sss_pov_gain(c[i].rd, c[i].eta, 2.0);
+		CHECK(fabs(g0 / c[i].closed - 1.0) < 1e-8 && fabs(g1 / c[i].open - 1.0) < 1e-8,
+		      "case %zu: gain closed %.10g open %.10g, by hand %.10g %.10g", i, g0, g1, c[i].closed, c[i].open);
+	}
+	CHECK(sss_pov_gain(-1.0, 1.5, 1.0) == sss_pov_gain(0.0, 1.5, 1.0) && isfinite(sss_pov_gain(0.0, 1.5, 2.0)),
+	      "rd <= 0 is held");
+	/* The two parts from POV-Ray's estimator, for rd 0.5 at eta 1.5, T = 1 mm. */
+	const double rd = 0.5, eta = 1.5, a = sss_pov_alpha_prime(rd, eta), st = 1.0 / a, z0 = 1.0 / st;
+	const int n = 200000;
+	double mean_hit = 0.0, single = 0.0;
+	for (int i = 0; i < n; i++) {
+		double mu = (i + 0.5) / n; /* over the hits, mu = cos is uniform in (0, 1] */
+		double d = z0 / mu, r = d * sqrt(1.0 - mu * mu);
+		mean_hit += dipole_r(r, a, st, eta) * 4.0 * M_PI * d * d / mu / n;
+		double eps = (i + 0.5) / n, s = -log(eps) / st;
+		single += (a * st) * 0.25 / (2.0 * st) * exp(-2.0 * st * s) / n;
+	}
+	printf("POV-Ray's estimator on a half-space: mean over hits %.6f = %.6f R_d; single %.6f = alpha'/%.4f\n",
+	       mean_hit, mean_hit / rd, single, a / single);
+	CHECK(fabs(mean_hit / (2.0 * rd) - 1.0) < 1e-3, "half-space: %.6g, expected 2 R_d = %.6g", mean_hit, 2.0 * rd);
+	CHECK(fabs(single * 24.0 / a - 1.0) < 1e-6, "single scattering %.9g, expected alpha'/24 = %.9g", single, a / 24.0);
+	/* POV-Ray's Ft(0)^2 (k rd + single) over circe's Ft(0)^2 rd / (1 - 2 FM1) */
+	double c_norm = 1.0 - 2.0 * sss_fresnel_moment1(eta);
+	CHECK_NEAR(sss_pov_gain(rd, eta, 2.0), (mean_hit + single) / rd * c_norm, 1e-3);
+	CHECK_NEAR(sss_pov_gain(rd, eta, 1.0), (mean_hit / 2.0 + single) / rd * c_norm, 1e-3);
+}
+
 /* auto's probability of the walk: 1 up to SSS_AUTO_WALK_BELOW l_d, 0 from SSS_AUTO_CIRCLE_ABOVE
  * on, continuous (no seam) and monotone between, with slope 0 at both ends; the extremes are
  * finite. */
@@ -369,6 +427,7 @@ int main(void)
 	check_derive();
 	check_names();
 	check_pov_translucency();
+	check_pov_gain();
 	check_auto_rule();
 	check_auto_light();
 	check_auto_tail();
