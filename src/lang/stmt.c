@@ -1876,19 +1876,52 @@ static bool push_v3(parser *p, vecbuf *v, dvec3 x)
 	return push(p, v, &f);
 }
 
-/* triangle        = "triangle" "{" vector "," vector "," vector "}"
+/* A mesh's triangles (POV-Ray's Parse_Mesh):
+ * triangle        = "triangle" "{" vector "," vector "," vector [ uv_vectors ] "}"
  * smooth_triangle = "smooth_triangle" "{" vector "," vector "," vector "," vector ","
- *                   vector "," vector "}" */
+ *                   vector "," vector [ uv_vectors ] "}"
+ * uv_vectors      = "uv_vectors" vector "," vector "," vector   (2-D: the corners' uv, for
+ *                   uv_mapping; a mesh's triangle without them has uv 0 at each corner) */
 static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth);
+static bool triangle_uv(parser *p, meshbuf *b, bool smooth, bool *any_uv);
 
-static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
+static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth, bool *any_uv)
 {
 	const char *what = smooth ? "smooth_triangle" : "triangle";
 	diag_loc open;
 	lang_advance(p);
 	TRY(open_block(p, what, &open));
 	TRY(triangle_body(p, b, smooth, any_smooth));
+	TRY(triangle_uv(p, b, smooth, any_uv));
 	return lang_expect_close(p, open, what);
+}
+
+/* A mesh triangle's uv_vectors, or uv 0 at its three corners without them. */
+static bool triangle_uv(parser *p, meshbuf *b, bool smooth, bool *any_uv)
+{
+	static const char *const nth[] = {"first", "second", "third"};
+	vec2 uv[3] = {{0, 0}, {0, 0}, {0, 0}};
+	if (lang_accept(p, LTK_KW_UV_VECTORS)) {
+		char ctx[64];
+		for (int i = 0; i < 3; i++) {
+			if (i)
+				TRY(lang_expect(p, LTK_COMMA, "between a triangle's uv_vectors"));
+			snprintf(ctx, sizeof ctx, "as the %s uv of the %s", nth[i], smooth ? "smooth_triangle" : "triangle");
+			diag_loc loc = lang_peek(p)->loc;
+			value v;
+			TRY(lang_additive(p, &v));
+			if (v.kind != VAL_VECTOR || v.n != 2)
+				return lang_error(p, loc, "expected a 2-vector <u, v> %s, found %s", ctx,
+						  lang_value_kind_name(&v));
+			uv[i] = v2((float)v.v[0], (float)v.v[1]);
+			if (!(isfinite(uv[i].x) && isfinite(uv[i].y)))
+				return lang_error(p, loc, "uv <%g, %g> overflows a float", v.v[0], v.v[1]);
+		}
+		*any_uv = true;
+	}
+	for (int i = 0; i < 3; i++)
+		TRY(push(p, &b->uv, &uv[i]));
+	return true;
 }
 
 /* The vertices (and normals) of a triangle, after its '{'. */
@@ -1927,7 +1960,7 @@ static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
 }
 
 /* The triangles of b as a SHAPE_MESH geometry. */
-static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, diag_loc kw)
+static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, bool any_uv, diag_loc kw)
 {
 	scene_geom *g = new_geom(p, SHAPE_MESH, kw);
 	if (!g)
@@ -1940,6 +1973,8 @@ static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, diag_loc kw
 		m->normals = take(&b->nrm, &m->n_normals);
 		m->normal_idx = take(&b->nidx, NULL);
 	}
+	if (any_uv) /* one a corner, like the positions: indexed by the faces' own indices */
+		m->uvs = take(&b->uv, &m->n_uvs);
 	return g;
 }
 
@@ -1951,7 +1986,14 @@ static bool object_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open, 
 	meshbuf b;
 	meshbuf_init(&b);
 	bool any_smooth = false;
-	scene_geom *g = triangle_body(p, &b, smooth, &any_smooth) ? mesh_geom(p, &b, any_smooth, kw) : NULL;
+	scene_geom *g = NULL;
+	if (triangle_body(p, &b, smooth, &any_smooth)) {
+		if (lang_peek(p)->kind == LTK_KW_UV_VECTORS) /* POV-Ray's Parse_Triangle has none */
+			lang_error(p, lang_peek(p)->loc, "'uv_vectors' belongs to a triangle of a mesh: a %s object "
+							  "has none (give it inside 'mesh { }')", smooth ? "smooth_triangle" : "triangle");
+		else
+			g = mesh_geom(p, &b, any_smooth, false, kw);
+	}
 	meshbuf_free(&b);
 	if (!g)
 		return false;
@@ -1996,17 +2038,17 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	}
 	meshbuf b;
 	meshbuf_init(&b);
-	bool any_smooth = false, ok = true;
+	bool any_smooth = false, any_uv = false, ok = true;
 	for (;;) {
 		lang_tok k = lang_peek(p)->kind;
 		if (k != LTK_KW_TRIANGLE && k != LTK_KW_SMOOTH_TRIANGLE)
 			break;
-		if (!(ok = triangle(p, &b, k == LTK_KW_SMOOTH_TRIANGLE, &any_smooth)))
+		if (!(ok = triangle(p, &b, k == LTK_KW_SMOOTH_TRIANGLE, &any_smooth, &any_uv)))
 			break;
 	}
 	if (ok && b.faces.len == 0)
 		ok = lang_error_found(p, "expected 'triangle', 'smooth_triangle' or 'file' in 'mesh'");
-	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, kw) : NULL;
+	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, any_uv, kw) : NULL;
 	meshbuf_free(&b);
 	if (!g)
 		return false;

@@ -65,8 +65,8 @@ sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0,
 // rule: box, plane
 box { -1, 1 }
 plane { y, 0 }
-// rule: mesh, triangle, smooth_triangle
-mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z } }
+// rule: mesh, triangle, smooth_triangle, tri_uv
+mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z uv_vectors <0, 0>, <1, 0>, <0, 1> } }
 mesh { file "model.obj" }
 // rule: mesh2, list
 mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, -z } uv_vectors { 3, <0, 0>, <1, 0>, <0, 1> }
