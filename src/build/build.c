@@ -63,7 +63,7 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
 	ok = ok && (o.geometry_only || build_top(w, d));
-	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_reach(w, sc, &o, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_release(w);
 		return false;
@@ -89,6 +89,13 @@ static void world_release(world *w)
 	for (size_t i = 0; w->materials && i < w->n_materials; i++)
 		mem_free(w->materials[i].layers);
 	light_set_free(&w->lights);
+	for (size_t i = 0; i < w->n_reach; i++) {
+		world_free(w->reach[i].through);
+		if (w->reach[i].through_sc)
+			w->reach[i].through_sc->geoms = NULL; /* shallow copies (build_light.c) */
+		scene_free(w->reach[i].through_sc);
+	}
+	mem_free(w->reach), mem_free(w->group_parent), mem_free(w->group_global);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
 	mem_free(w->csg_nodes), mem_free(w->csg_kids);

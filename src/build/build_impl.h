@@ -68,5 +68,7 @@ void build_groups(world *w, const scene *sc);
 
 /* build_light.c */
 bool build_lights(world *w, const scene *sc, diag *d);
+/* build_light.c: POV-Ray's light_group and projected_through (world.reach). */
+bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d);
 
 #endif

@@ -189,6 +189,7 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		set_xf_bound(in);
 		in->no_shadow = o->no_shadow;
 		in->hollow = (o->pov_flags & SCENE_OBJ_HOLLOW) != 0;
+		in->light_group = o->light_group;
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */
 		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;

@@ -2777,6 +2777,88 @@ static bool pov_shape(parser *p, vecbuf *out, const lang_token *word, diag_loc o
 	return object_tail(p, out, start, open, nm);
 }
 
+static bool optional_bool(parser *p, bool *on);
+
+/* The root of light group g's chain of enclosing groups (scene.h's scene_light_group). */
+static uint32_t light_group_root(const parser *p, uint32_t g)
+{
+	while (VECBUF_AT(&p->sc->light_groups, scene_light_group, g - 1).parent)
+		g = VECBUF_AT(&p->sc->light_groups, scene_light_group, g - 1).parent;
+	return g;
+}
+
+/* light_group = "light_group" "{" { object_item | light_source } { transform_item
+ *               | "global_lights" [ float ] | "photons" block } "}"
+ * POV-Ray's (Parse_Light_Group, core/lighting/lightgroup.cpp): a union whose lights light only
+ * its objects (and those of the groups inside it), its objects lit by the scene's other lights
+ * only with global_lights on (off by default; the outermost group's word counts, as POV-Ray sets
+ * its flag on every child). Its lights join the scene's as the CSG's do (csg_light). */
+static bool light_group_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	size_t start = out->len, lights = p->sc->lights.len;
+	if (p->sc->light_groups.len >= UINT32_MAX - 1)
+		return lang_error(p, kw, "too many light_groups");
+	scene_light_group grp = {.loc = kw, .parent = 0, .global_lights = false};
+	if (!vecbuf_push(&p->sc->light_groups, &grp))
+		return lang_error(p, kw, "out of memory");
+	uint32_t id = (uint32_t)p->sc->light_groups.len;
+	xform t = xform_identity();
+	bool global_lights = false;
+	for (;;) {
+		lang_token k = *lang_peek(p);
+		if (k.kind == LTK_RBRACE) {
+			lang_advance(p);
+			break;
+		}
+		if (k.kind == LTK_KW_LIGHT_SOURCE) {
+			TRY(csg_light(p, "light_group"));
+			continue;
+		}
+		bool matched;
+		TRY(object_item(p, out, &matched));
+		if (matched)
+			continue;
+		if (k.kind == LTK_UNSUPPORTED && lang_word_is(&k, "global_lights")) {
+			lang_advance(p);
+			TRY(optional_bool(p, &global_lights));
+			continue;
+		}
+		if (lang_word_is(&k, "photons")) { /* POV-Ray's photon target flags of the group */
+			lang_advance(p);
+			TRY(lang_skip_block(p, "photons"));
+			diag_warning(p->d, k.loc, "a light_group's 'photons' is accepted and ignored: circe computes "
+						  "caustics by its own path tracing");
+			continue;
+		}
+		TRY(transform_item(p, &t, &matched));
+		if (!matched)
+			return bad_item(p, open, "light_group", "an object, a light_source, a transform, global_lights");
+	}
+	VECBUF_AT(&p->sc->light_groups, scene_light_group, id - 1).global_lights = global_lights;
+	bool any_light = false;
+	for (size_t i = lights; i < p->sc->lights.len; i++) {
+		scene_light *l = &VECBUF_AT(&p->sc->lights, scene_light, i);
+		light_move(l, &t);
+		any_light |= !l->group;
+		if (!l->group) /* an inner group's light stays its group's */
+			l->group = id;
+	}
+	for (size_t i = start; i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->transform = xform_then(o->transform, t);
+		if (!o->light_group)
+			o->light_group = id;
+		else if (light_group_root(p, o->light_group) != id)
+			VECBUF_AT(&p->sc->light_groups, scene_light_group, light_group_root(p, o->light_group) - 1).parent = id;
+	}
+	if (start == out->len)
+		diag_warning(p->d, kw, "light_group has no objects: its lights light nothing");
+	else if (!any_light)
+		diag_warning(p->d, kw, "light_group has no light_source of its own: its objects are lit %s",
+			     global_lights ? "as any (global_lights on)" : "by no light but those of groups around it");
+	return true;
+}
+
 /* object_item = sphere | box | plane | triangle | smooth_triangle | mesh | mesh2 | subdivision_surface | instance | union
  *             | pov_shape */
 static bool object_item(parser *p, vecbuf *out, bool *matched)
@@ -2802,6 +2884,10 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 			break;
 		if (lang_pov_shape_kind(&t) >= 0) /* lathe, blob, text, ... (shapes2.c) */
 			break;
+		if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "light_group")) {
+			fn = light_group_block;
+			break;
+		}
 		*matched = false;
 		return true;
 	}

@@ -260,9 +260,23 @@ static bool pick_by_cosine(const bsdf_params *b)
 	return !(b->kind == BSDF_COAT && !(v3_max_comp(b->diffuse) > 0.0f));
 }
 
+/* Whether light li lights object `object` along the shadow ray (render_scene.light_reach), *tmax
+ * shortened to its projected_through object. */
+static bool light_reaches(const render_scene *s, uint32_t object, size_t li, const render_ray *shadow, float *tmax)
+{
+	if (!s->light_reach)
+		return true;
+	float t = *tmax;
+	if (!s->light_reach(s->user, object, li, shadow, &t))
+		return false;
+	if (t < *tmax)
+		*tmax = t * (1.0f - RENDER_SHADOW_EPS);
+	return true;
+}
+
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
-			  render_sampler *g, uint32_t dim)
+			  uint32_t object, render_sampler *g, uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -283,6 +297,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
+	if (!light_reaches(s, object, li, &shadow, &tmax))
+		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
@@ -321,6 +337,8 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
+	if (!light_reaches(s, UINT32_MAX, li, &shadow, &tmax))
+		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
@@ -621,6 +639,7 @@ typedef struct path {
 	float prev_pdf;	     /* of the BSDF sample that left prev_p */
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
+	uint32_t prev_object; /* its object (UINT32_MAX: a medium's point, or the camera) */
 	bool prev_cosine;    /* its light choice weighed the cosine (pick_by_cosine) */
 	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
 	bool sky_view;	     /* the same, by RENDER_SKY_MIRROR_PDF: sees a light that is only seen
@@ -668,6 +687,7 @@ typedef struct vertex {
 	vec3 p;	       /* rays leave from p, offset by p_scale (offset_origin) */
 	float p_scale;
 	vec3 wo_local; /* the outgoing direction in f */
+	uint32_t object; /* the hit's (render_scene.light_reach) */
 } vertex;
 
 /* A path that escapes the scene sees every infinite light, weighed against the BSDF sample; one
@@ -695,6 +715,9 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 {
 	const light_set *ls = s->lights;
 	if (hit->light < 0 || !ls || (size_t)hit->light >= ls->count)
+		return;
+	/* a light's group holds for the BSDF's sample as for next-event estimation (a sphere light) */
+	if (bounce > 0 && !pa->prev_delta && s->light_reach && !s->light_reach(s->user, pa->prev_object, (size_t)hit->light, NULL, &(float){INFINITY}))
 		return;
 	const light *l = &ls->lights[hit->light];
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
@@ -730,6 +753,7 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	v->p = hit->p;
 	v->p_scale = hit->scale;
 	v->lobe_prob = 1.0f;
+	v->object = hit->object;
 }
 
 /* Next-event estimation at v through the BSDF b (v's own, or a part of it), an event of kind
@@ -740,7 +764,7 @@ static inline void add_direct(const render_scene *s, const render_settings *set,
 	if (set->mode == RENDER_BSDF_ONLY)
 		return;
 	vec3 c = v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-						 v->lobe_prob, &pa->in, g, dim));
+						 v->lobe_prob, &pa->in, v->object, g, dim));
 	if (in_part(set, pa->bounce + 1, pa->bounce == 0 ? kind : pa->first))
 		pa->radiance = v3_add(pa->radiance, c);
 }
@@ -763,6 +787,7 @@ static inline void enter_at(const render_scene *s, const render_settings *set, c
 	pa->beta = v3_mul(pa->beta, w);
 	v->p = e->hit.p;
 	v->p_scale = e->hit.scale;
+	v->object = e->hit.object;
 	v->ng_out = e->hit.ng;
 	v->f.n = v3_dot(ns_i, v->ng_out) > 0.0f ? ns_i : v->ng_out;
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
@@ -828,6 +853,7 @@ static inline bool continue_path(const vertex *v, int bounce, render_sampler *g,
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
 	pa->prev_p = v->p, pa->prev_n = v->ng_out, pa->prev_cosine = pick_by_cosine(&v->b);
+	pa->prev_object = v->object;
 	if (!roulette(bounce, g, pa))
 		return false;
 	*ray = (render_ray){offset_origin(v->p, v->p_scale, v->ng_out), v3_normalize(wi)};
@@ -937,6 +963,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
 	pa->prev_p = x, pa->prev_n = v3s(0.0f), pa->prev_cosine = true;
+	pa->prev_object = UINT32_MAX;
 	pa->fog_view = pa->sky_view = false;
 	if (!roulette(bounce, g, pa))
 		return -1;
@@ -949,7 +976,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
-	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true,
+	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true, .prev_object = UINT32_MAX,
 		   .fog_view = true, .sky_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */

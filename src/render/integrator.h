@@ -138,6 +138,14 @@ typedef struct render_scene {
 	 * inside it; a non-hollow object inside a container holds none of its media. NULL: none is.
 	 * Thread-safe. */
 	bool (*hollow)(void *user, uint32_t object);
+	/* Optional (NULL: every light lights every surface, its shadow ray running to the light):
+	 * POV-Ray's light_group and projected_through (doc/language.md, "Lights"). Whether light
+	 * `light` (an index of lights) lights object `object` (a hit's; UINT32_MAX: a medium's point,
+	 * lit by the global lights) along the shadow ray `ray` that would reach it at *tmax: false
+	 * when the light's group leaves the object out, or the light's projected_through objects are
+	 * not met before *tmax; else *tmax becomes the distance to the first of them (only what lies
+	 * before shadows). ray NULL: the group alone. Thread-safe. */
+	bool (*light_reach)(void *user, uint32_t object, size_t light, const render_ray *ray, float *tmax);
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

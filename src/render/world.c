@@ -203,6 +203,40 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
 	return false;
 }
 
+/* render_scene.light_reach: POV-Ray's light_group (the object's group, or one around it, is the
+ * light's; a global light lights a grouped object only under its outermost group's
+ * global_lights) and projected_through (the light's objects met along the shadow ray before
+ * *tmax: *tmax becomes the distance to the first). Lights past the scene's light_sources (the
+ * sky, emissive objects) are global. */
+static bool world_light_reach(void *user, uint32_t object, size_t light, const render_ray *ray, float *tmax)
+{
+	const world *w = user;
+	if (light >= w->n_reach)
+		return true;
+	const world_reach *r = &w->reach[light];
+	uint32_t g = object < w->n_insts ? w->insts[object].light_group : 0;
+	if (r->group) {
+		while (g && g != r->group)
+			g = w->group_parent[g - 1];
+		if (!g)
+			return false;
+	} else if (g) {
+		while (w->group_parent[g - 1])
+			g = w->group_parent[g - 1];
+		if (!w->group_global[g - 1])
+			return false;
+	}
+	if (r->through && ray) {
+		const render_scene *ts = &r->through->rs;
+		render_hit h;
+		memset(&h, 0, sizeof h);
+		if (!ts->intersect(ts->user, ray, 0.0f, *tmax, &h))
+			return false;
+		*tmax = h.t;
+	}
+	return true;
+}
+
 /* The five channels of pattern node `node` at the hit, in its object's space (the scene's
  * placement undone, whatever the instance's mesh transform) or at <u, v, 0> with uv_mapping; ns
  * the normal slope sees. */
@@ -436,5 +470,5 @@ void world_bind(world *w)
 			       .circle_surface = world_circle_surface,
 			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
 			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
-			       .hollow = world_hollow};
+			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL};
 }

@@ -14,6 +14,7 @@ scene *scene_new(void)
 		return NULL;
 	arena_init(&s->arena, 64 * 1024);
 	vecbuf_init(&s->lights, sizeof(scene_light));
+	vecbuf_init(&s->light_groups, sizeof(scene_light_group));
 	vecbuf_init(&s->objects, sizeof(scene_object));
 	vecbuf_init(&s->assets, sizeof(scene_asset));
 	vecbuf_init(&s->clamped_colors, sizeof(diag_loc));
@@ -47,6 +48,7 @@ void scene_free(scene *s)
 	for (scene_geom *g = s->geoms; g; g = g->next)
 		free_geom_arrays(g);
 	vecbuf_free(&s->lights);
+	vecbuf_free(&s->light_groups);
 	vecbuf_free(&s->objects);
 	vecbuf_free(&s->assets);
 	vecbuf_free(&s->clamped_colors);
@@ -739,6 +741,22 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " %d %d%s%s%s", l->area_n1, l->area_n2, l->circular ? " circular" : "",
 				l->orient ? " orient" : "", l->jitter ? " jitter" : "");
 		}
+		if (l->group)
+			fprintf(o, " group %u", l->group);
+		if (l->n_projected)
+			fprintf(o, " projected_through %u", l->n_projected);
+		fputc('\n', o);
+		for (uint32_t k = 0; k < l->n_projected; k++) {
+			fprintf(o, "  through geom %u", l->projected[k].geom->id);
+			dump_loc(o, l->projected[k].loc);
+			fputc('\n', o);
+			dump_xform(o, &l->projected[k].transform);
+		}
+	}
+	for (size_t i = 0; i < s->light_groups.len; i++) {
+		const scene_light_group *g = &VECBUF_AT(&s->light_groups, scene_light_group, i);
+		fprintf(o, "light_group %zu parent %u global_lights %s", i + 1, g->parent, g->global_lights ? "on" : "off");
+		dump_loc(o, g->loc);
 		fputc('\n', o);
 	}
 	/* Oldest first: the lists are built newest first. */
@@ -781,6 +799,8 @@ void scene_dump(const scene *s, FILE *o)
 					ob->csg[k].id, ob->csg[k].operand);
 		}
 		dump_pov_flags(o, ob->pov_flags);
+		if (ob->light_group)
+			fprintf(o, " light_group %u", ob->light_group);
 		dump_loc(o, ob->loc);
 		fputc('\n', o);
 		dump_xform(o, &ob->transform);

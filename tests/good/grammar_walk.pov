@@ -80,6 +80,8 @@ subdivision_surface {
 subdivision_surface { file "cage.obj" scheme loop boundary edge_and_corner max_edge 1 }
 // rule: instance, union
 union { object { Ball } sphere { x, 0.5 } translate y }
+// rule: light_group
+light_group { light_source { <0, 9, 0> color 1 } sphere { -x, 0.5 } global_lights on translate y }
 // rule: material, material_item, sss_block, sss_param
 sphere { 0, 1 material { diffuse { color C } } }
 sphere { 0, 1 material { diffuse { image S } emission rgb 0.5 } }
