@@ -1703,6 +1703,10 @@ static void light_move(scene_light *l, const xform *t)
 		scene_object *o = (scene_object *)&l->looks[i];
 		o->transform = xform_then(o->transform, *t);
 	}
+	for (uint32_t i = 0; i < l->n_projected; i++) { /* the same (light_head, projected_through) */
+		scene_object *o = (scene_object *)&l->projected[i];
+		o->transform = xform_then(o->transform, *t);
+	}
 	l->position = xform_point(t, l->position);
 	l->point_at = xform_point(t, l->point_at);
 	l->axis1 = xform_vector(t, l->axis1);
@@ -3594,8 +3598,8 @@ static light_word light_word_at(const lang_token *t)
 
 /* Where a light_source's items that need another were given, for the checks at its '}'. */
 typedef struct light_seen {
-	bool tightness, fade, area_mod;
-	diag_loc tightness_loc, fade_loc, area_loc, area_mod_loc;
+	bool tightness, fade, area_mod, projected;
+	diag_loc tightness_loc, fade_loc, area_loc, area_mod_loc, projected_loc;
 	const char *area_mod_name;
 } light_seen;
 
@@ -3731,22 +3735,63 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 		return lang_error(p, seen->area_loc, "'area_light' on a %s light is not supported by circe",
 				  l->kind == SCENE_LIGHT_SPHERE ? "sphere" : l->kind == SCENE_LIGHT_PARALLEL ? "parallel"
 													 : "cylinder");
+	if (seen->projected && l->kind == SCENE_LIGHT_SPHERE) /* paths hit it: they would need the test too */
+		return lang_error(p, seen->projected_loc, "projected_through on a sphere light (circe's radius) is not "
+							  "supported by circe: give it to a point, spot, parallel or cylinder light");
 	if (seen->area_mod && !l->area)
 		diag_warning(p->d, seen->area_mod_loc, "'%s' only affects area_light", seen->area_mod_name);
 	return true;
 }
 
-/* The light's looks_like objects copied into the arena (each light placed moves its own). */
+/* The light's looks_like and projected_through objects copied into the arena (each light placed
+ * moves its own). */
 static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 {
-	if (!l->n_looks)
-		return true;
-	scene_object *o = arena_zalloc(&p->sc->arena, l->n_looks, sizeof *o);
-	if (!o)
-		return lang_error(p, at, "out of memory");
-	memcpy(o, l->looks, l->n_looks * sizeof *o);
-	l->looks = o;
+	if (l->n_looks) {
+		scene_object *o = arena_zalloc(&p->sc->arena, l->n_looks, sizeof *o);
+		if (!o)
+			return lang_error(p, at, "out of memory");
+		memcpy(o, l->looks, l->n_looks * sizeof *o);
+		l->looks = o;
+	}
+	if (l->n_projected) {
+		scene_object *o = arena_zalloc(&p->sc->arena, l->n_projected, sizeof *o);
+		if (!o)
+			return lang_error(p, at, "out of memory");
+		memcpy(o, l->projected, l->n_projected * sizeof *o);
+		l->projected = o;
+	}
 	return true;
+}
+
+/* projected_through = "projected_through" "{" ( identifier | object_item ) { modifier } "}":
+ * POV-Ray's (Parse_Light_Source): the light reaches a point only through the object, which is
+ * not placed in the scene (moved by the light's later transforms); one a light. */
+static bool projected_through(parser *p, scene_light *l)
+{
+	diag_loc kw = lang_advance(p)->loc, open;
+	if (l->n_projected)
+		return lang_error(p, kw, "only one projected_through is allowed in a light_source");
+	TRY(open_block(p, "projected_through", &open));
+	vecbuf b;
+	vecbuf_init(&b, sizeof(scene_object));
+	bool matched = true, ok;
+	if (lang_peek(p)->kind == LTK_IDENT)
+		ok = declared_object(p, &b, lang_peek(p)->loc);
+	else
+		ok = object_item_unplaced(p, &b, &matched);
+	if (ok && (!matched || !b.len))
+		ok = lang_error_found(p, "expected an object in 'projected_through'");
+	ok = ok && object_tail(p, &b, 0, open, "projected_through");
+	scene_object *o = ok ? arena_zalloc(&p->sc->arena, b.len, sizeof *o) : NULL;
+	if (ok && !o)
+		ok = lang_error(p, kw, "out of memory");
+	if (ok) {
+		memcpy(o, b.data, b.len * sizeof *o);
+		l->projected = o, l->n_projected = (uint32_t)b.len;
+	}
+	vecbuf_free(&b);
+	return ok;
 }
 
 /* looks_like = "looks_like" "{" ( identifier | object_item ) { modifier } "}": POV-Ray's (Parse_Light_Source): the
@@ -3943,6 +3988,13 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 			bool matched;
 			if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "looks_like")) {
 				TRY(looks_like(p, &l));
+				continue;
+			}
+			if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "projected_through")) {
+				TRY(projected_through(p, &l));
+				if (!seen.projected)
+					seen.projected_loc = t.loc;
+				seen.projected = true;
 				continue;
 			}
 			if (lang_word_is(&t, "photons")) { /* POV-Ray's photon flags of a light (balcony.pov) */

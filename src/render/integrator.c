@@ -260,17 +260,20 @@ static bool pick_by_cosine(const bsdf_params *b)
 	return !(b->kind == BSDF_COAT && !(v3_max_comp(b->diffuse) > 0.0f));
 }
 
-/* Whether light li lights object `object` along the shadow ray (render_scene.light_reach), *tmax
- * shortened to its projected_through object. */
-static bool light_reaches(const render_scene *s, uint32_t object, size_t li, const render_ray *shadow, float *tmax)
+/* Whether light li, dist away, lights object `object` along the shadow ray (render_scene.light_reach):
+ * the shadow ray's *tmax shortened to its projected_through object. The object is looked for up
+ * to the light itself (dist), not *tmax: at a distance, the shadow ray's margin is wider than an
+ * object about the light. */
+static bool light_reaches(const render_scene *s, uint32_t object, size_t li, const render_ray *shadow, float dist,
+			  float *tmax)
 {
 	if (!s->light_reach)
 		return true;
-	float t = *tmax;
+	float t = dist;
 	if (!s->light_reach(s->user, object, li, shadow, &t))
 		return false;
-	if (t < *tmax)
-		*tmax = t * (1.0f - RENDER_SHADOW_EPS);
+	if (t < dist)
+		*tmax = fminf(*tmax, t * (1.0f - RENDER_SHADOW_EPS));
 	return true;
 }
 
@@ -297,7 +300,7 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	if (!light_reaches(s, object, li, &shadow, &tmax))
+	if (!light_reaches(s, object, li, &shadow, ls_out.dist, &tmax))
 		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
@@ -337,7 +340,7 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
-	if (!light_reaches(s, UINT32_MAX, li, &shadow, &tmax))
+	if (!light_reaches(s, UINT32_MAX, li, &shadow, ls_out.dist, &tmax))
 		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
