@@ -95,7 +95,7 @@ static void world_release(world *w)
 			w->reach[i].through_sc->geoms = NULL; /* shallow copies (build_light.c) */
 		scene_free(w->reach[i].through_sc);
 	}
-	mem_free(w->reach), mem_free(w->group_parent), mem_free(w->group_global);
+	mem_free(w->reach), mem_free(w->group_parent), mem_free(w->group_global), mem_free(w->light_sign);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
 	mem_free(w->csg_nodes), mem_free(w->csg_kids);

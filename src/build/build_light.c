@@ -54,7 +54,9 @@ static void set_distance_law(light *l, const scene_light *sl)
 static light scene_light_to_light(const scene_light *sl)
 {
 	float k = sl->has_intensity || sl->kind == SCENE_LIGHT_SPHERE ? 1.0f : BUILD_POV_LIGHT_SCALE;
-	vec3 c = v3_scale(sl->color, (float)sl->intensity * k);
+	/* a negative light's magnitude: its sign is world.light_sign's */
+	vec3 mag = v3(fabsf(sl->color.x), fabsf(sl->color.y), fabsf(sl->color.z));
+	vec3 c = v3_scale(mag, (float)sl->intensity * k);
 	vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
 	light l;
 	switch (sl->kind) {
@@ -197,10 +199,36 @@ bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d)
 	return true;
 }
 
+/* POV-Ray's negative lights: the signs of the light_sources' colours (world.light_sign), when one
+ * is negative. */
+static bool build_signs(world *w, const scene *sc, diag *d)
+{
+	size_t n = scene_n_lights(sc);
+	bool any = false;
+	for (size_t i = 0; i < n && !any; i++) {
+		vec3 c = scene_light_at(sc, i)->color;
+		any = c.x < 0 || c.y < 0 || c.z < 0;
+	}
+	if (!any)
+		return true;
+	if (!(w->light_sign = mem_alloc(n, sizeof *w->light_sign))) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	w->n_light_sign = n;
+	for (size_t i = 0; i < n; i++) {
+		vec3 c = scene_light_at(sc, i)->color;
+		w->light_sign[i] = v3(c.x < 0 ? -1.0f : 1.0f, c.y < 0 ? -1.0f : 1.0f, c.z < 0 ? -1.0f : 1.0f);
+	}
+	return true;
+}
+
 bool build_lights(world *w, const scene *sc, diag *d)
 {
 	build_fogs(w, sc, d);
 	light_set_init(&w->lights);
+	if (!build_signs(w, sc, d))
+		return false;
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
 		const scene_light *sl = scene_light_at(sc, i);
 		light l = scene_light_to_light(sl);

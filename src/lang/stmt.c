@@ -3557,14 +3557,11 @@ static bool camera(parser *p)
 	return camera_block(p, &p->sc->camera, kw.loc);
 }
 
+/* A light's colour: a negative component is POV-Ray's negative light, which takes light away
+ * (doc/language.md, "Negative lights"). */
 static bool light_colour(parser *p, vec3 *c)
 {
-	diag_loc loc = lang_peek(p)->loc;
-	TRY(lang_color(p, "as the light colour", c));
-	if (!(c->x >= 0 && c->y >= 0 && c->z >= 0))
-		return lang_error(p, loc, "a negative light colour (POV-Ray's negative light, which takes light away) is not "
-					  "supported by circe");
-	return true;
+	return lang_color(p, "as the light colour", c);
 }
 
 /* POV-Ray's light words that mean something only in a light_source. They stay out of the keyword
@@ -3735,6 +3732,10 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 		return lang_error(p, seen->area_loc, "'area_light' on a %s light is not supported by circe",
 				  l->kind == SCENE_LIGHT_SPHERE ? "sphere" : l->kind == SCENE_LIGHT_PARALLEL ? "parallel"
 													 : "cylinder");
+	if (l->kind == SCENE_LIGHT_SPHERE && !(l->color.x >= 0 && l->color.y >= 0 && l->color.z >= 0))
+		return lang_error(p, l->loc, "a negative colour on a sphere light (circe's radius, an emitter that paths "
+					     "hit) is not supported by circe: POV-Ray's negative light is a point, spot, "
+					     "parallel or cylinder light");
 	if (seen->projected && l->kind == SCENE_LIGHT_SPHERE) /* paths hit it: they would need the test too */
 		return lang_error(p, seen->projected_loc, "projected_through on a sphere light (circe's radius) is not "
 							  "supported by circe: give it to a point, spot, parallel or cylinder light");

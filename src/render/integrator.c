@@ -315,7 +315,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		fval = v3_max(v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl), v3s(0.0f));
 		w = 1.0f;
 	}
-	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
+	vec3 c = v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
+	return s->light_sign && li < s->n_light_sign ? v3_mul(c, s->light_sign[li]) : c;
 }
 
 /* Next-event estimation at a scattering point x of a medium (coefficients c, reached along
@@ -347,7 +348,8 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY) ? 1.0f : render_power_heuristic(light_pdf, phase_pdf);
-	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w / light_pdf);
+	vec3 r = v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w / light_pdf);
+	return s->light_sign && li < s->n_light_sign ? v3_mul(r, s->light_sign[li]) : r;
 }
 
 /* ---- subsurface scattering ----------------------------------------------------------------- */

@@ -146,6 +146,13 @@ typedef struct render_scene {
 	 * not met before *tmax; else *tmax becomes the distance to the first of them (only what lies
 	 * before shadows). ray NULL: the group alone. Thread-safe. */
 	bool (*light_reach)(void *user, uint32_t object, size_t light, const render_ray *ray, float *tmax);
+	/* Optional (NULL: every light adds light): per light of the first n_light_sign, the sign of
+	 * each channel of its colour, +1 or -1: POV-Ray's negative light takes light away. Its light
+	 * holds the colour's magnitude (light selection weighs that); next-event estimation applies
+	 * the sign. With it a sample's radiance may be negative (the film keeps it: a pixel's mean is
+	 * clamped at 0 when read, as POV-Ray's colour at the end). */
+	const vec3 *light_sign;
+	size_t n_light_sign;
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

@@ -470,5 +470,6 @@ void world_bind(world *w)
 			       .circle_surface = world_circle_surface,
 			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
 			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
-			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL};
+			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL,
+			       .light_sign = w->light_sign, .n_light_sign = w->n_light_sign};
 }

@@ -149,6 +149,9 @@ struct world {
 	struct world_reach *reach;
 	size_t n_reach;
 	uint32_t *group_parent; /* group g's at [g - 1] */
+	vec3 *light_sign;       /* per light_source (the first n_light_sign lights): its colour's signs
+				 * (POV-Ray's negative light); NULL when no colour is negative */
+	size_t n_light_sign;
 	bool *group_global;
 	size_t n_groups;
 	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */
