@@ -46,6 +46,7 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
 	if (ok)
 		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
+	ok = ok && (o.geometry_only || build_atmosphere(w, sc, d));
 	for (size_t i = 0; i < w->n_geoms; i++) {
 		world_geom *g = &w->geoms[i];
 		w->stats.triangles += g->m.num_triangles;

@@ -68,6 +68,8 @@ void build_groups(world *w, const scene *sc);
 
 /* build_light.c */
 bool build_lights(world *w, const scene *sc, diag *d);
+/* build_material.c: POV-Ray's atmospheric media (world.atmosphere). */
+bool build_atmosphere(world *w, const scene *sc, diag *d);
 /* build_light.c: POV-Ray's light_group and projected_through (world.reach). */
 bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d);
 

@@ -4236,6 +4236,17 @@ bool lang_default(parser *p)
 	}
 }
 
+/* media = "media" "{" ... "}" at the top level: POV-Ray's atmospheric media, which fill the
+ * space outside every object (and inside hollow ones); several add up, as an interior's. */
+static bool atmosphere(parser *p)
+{
+	scene_material *m = (scene_material *)p->sc->atmosphere; /* the parser's own record */
+	if (!m && !(m = new_part(p, lang_peek(p)->loc)))
+		return false;
+	p->sc->atmosphere = m;
+	return interior_media(p, m);
+}
+
 /* Objects placed at the top level without a texture take the #default one (POV-Ray 3.7 gives
  * it when the object is placed, so a declared object placed after a #default takes it). */
 static void give_default(parser *p, size_t start)
@@ -4257,8 +4268,7 @@ bool lang_statement(parser *p)
 	if (lang_word_is(t, "rainbow"))
 		return lang_rainbow(p);
 	if (lang_word_is(t, "media"))
-		return lang_error(p, t->loc, "atmospheric media (a 'media' outside an interior) is not supported by circe: "
-					     "give it to a container object's interior (a box or sphere around the scene)");
+		return atmosphere(p);
 	switch (t->kind) {
 	case LTK_KW_GLOBAL_SETTINGS: return global_settings(p);
 	case LTK_KW_CAMERA: return camera(p);

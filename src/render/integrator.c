@@ -139,10 +139,19 @@ static vec3 media_density(const void *ctx, const render_medium *m, vec3 p)
 	return c->s->density ? c->s->density(c->s->user, c->object, m, p) : v3s(1.0f);
 }
 
+/* The nest's material for the atmosphere (render_scene.atmosphere), at its bottom, object
+ * UINT32_MAX: no surface crossed leaves it. */
+#define RENDER_NEST_ATMOSPHERE (-2)
+
 static const render_media *media_of(const render_scene *s, int material)
 {
+	if (material == RENDER_NEST_ATMOSPHERE)
+		return s->atmosphere;
 	return material >= 0 && s->media && (size_t)material < s->material_count ? s->media[material] : NULL;
 }
+
+/* Whether the scene has media: an interior's or the atmosphere's. */
+static inline bool any_media(const render_scene *s) { return s->media || s->atmosphere; }
 
 /* The interiors a ray is in, innermost last: entered by refraction into a dielectric, left by
  * refraction out of the same object. Deeper nests keep their outer RENDER_MAX_NEST - 1 and the
@@ -193,8 +202,8 @@ static const render_media *nest_media(const render_scene *s, const nest *st, uin
 static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d, float t0, float t1, rng *g)
 {
 	media_ctx mc = {s, 0};
-	const render_media *md = s->media ? nest_media(s, st, &mc.object) : NULL;
-	if (!md || !(t1 > t0))
+	const render_media *md = any_media(s) ? nest_media(s, st, &mc.object) : NULL;
+	if (!md || !(t1 > t0) || (md == s->atmosphere && !isfinite(t1))) /* the atmosphere ends with the scene */
 		return v3s(1.0f);
 	return render_media_transmittance(md, media_density, &mc, v3_madd(o, d, t0), d, t1 - t0, g);
 }
@@ -207,7 +216,7 @@ static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d,
 static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
 				 const nest *from, render_sampler *smp, uint32_t dim)
 {
-	rng local, *g = s->media ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
+	rng local, *g = any_media(s) ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
 	const vec3 o0 = ray.o;
 	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
@@ -983,6 +992,8 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
 	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true, .prev_object = UINT32_MAX,
 		   .fog_view = true, .sky_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
+	if (s->atmosphere) /* the camera is in the atmosphere */
+		pa.in = (nest){.n = 1, .mat = {RENDER_NEST_ATMOSPHERE}, .obj = {UINT32_MAX}};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
 	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
@@ -994,7 +1005,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (s->fog_count && pa.fog_view)
 			through_fog(s, set, &ray, hit_any ? hit.t : INFINITY, &pa);
 		uint32_t md_obj = 0;
-		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
+		const render_media *md = any_media(s) && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
 			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
 			if (r < 0)

@@ -153,6 +153,12 @@ typedef struct render_scene {
 	 * clamped at 0 when read, as POV-Ray's colour at the end). */
 	const vec3 *light_sign;
 	size_t n_light_sign;
+	/* Optional (NULL: none): POV-Ray's atmospheric media, which fill the space outside every
+	 * object and inside hollow ones: every path starts in them (the bottom of its nest of
+	 * interiors, under any container it enters), shadow rays take their transmittance; a path
+	 * that escapes the scene crosses none of them. density is asked with object UINT32_MAX (world
+	 * space). */
+	const render_media *atmosphere;
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

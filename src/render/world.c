@@ -434,10 +434,10 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 static vec3 world_density(void *user, uint32_t object, const render_medium *m, vec3 p)
 {
 	const world *w = user;
-	if (object >= w->n_insts)
+	if (object >= w->n_insts && object != UINT32_MAX)
 		return v3s(0.0f);
-	const world_inst *in = &w->insts[object];
-	dvec3 q = xform_inv_point(&in->pattern_xf, v3_to_d3(p));
+	/* UINT32_MAX: the atmosphere's, in world space */
+	dvec3 q = object == UINT32_MAX ? v3_to_d3(p) : xform_inv_point(&w->insts[object].pattern_xf, v3_to_d3(p));
 	double tol = PATTERN_HIT_ULPS * FLT_EPSILON * fmax(d3_length(q), 1.0);
 	vec3 r = v3s(1.0f);
 	for (uint32_t i = 0; i < m->n_density; i++) {
@@ -471,5 +471,6 @@ void world_bind(world *w)
 			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
 			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
 			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL,
-			       .light_sign = w->light_sign, .n_light_sign = w->n_light_sign};
+			       .light_sign = w->light_sign, .n_light_sign = w->n_light_sign,
+			       .atmosphere = w->has_atmosphere ? &w->atmosphere : NULL};
 }

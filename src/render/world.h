@@ -165,6 +165,8 @@ struct world {
 	render_media *media;    /* indexed like materials: an interior's media (render/media.h) */
 	const render_media **media_of; /* the integrator's table: NULL for materials without media */
 	bool has_media;
+	render_media atmosphere; /* POV-Ray's atmospheric media (build_material.c), with has_atmosphere */
+	bool has_atmosphere;
 	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
 	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index;
 				 * the one record of membership (the top level's sets are sss_set's) */

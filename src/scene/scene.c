@@ -417,6 +417,25 @@ static void dump_finish(FILE *o, const scene_finish *f)
 	fputc('\n', o);
 }
 
+/* A material's (or the atmosphere's) media, on its line. */
+static void dump_media(FILE *o, const scene_material *m)
+{
+	for (uint32_t k = 0; k < m->n_media; k++) {
+		const scene_media *md = &m->media[k];
+		fprintf(o, " media");
+		dump_v3(o, "absorption", md->absorption);
+		dump_v3(o, "emission", md->emission);
+		dump_v3(o, "scattering", md->scattering);
+		fprintf(o, " type %d eccentricity %g extinction %g method %d densities %u", md->scattering_type,
+			md->eccentricity, md->extinction, md->method, md->n_density);
+		for (uint32_t j = 0; j < md->n_density; j++) {
+			fprintf(o, " [");
+			scene_pigment_dump(o, md->density[j]);
+			fprintf(o, "]");
+		}
+	}
+}
+
 static void dump_material(FILE *o, const scene_material *m)
 {
 	fprintf(o, "material %u %s", m->id, scene_material_kind_name(m->kind));
@@ -438,20 +457,7 @@ static void dump_material(FILE *o, const scene_material *m)
 			fprintf(o, " fade_distance %g fade_power %g", m->fade_distance, m->fade_power);
 			dump_v3(o, "fade_color", m->fade_color);
 		}
-		for (uint32_t k = 0; k < m->n_media; k++) {
-			const scene_media *md = &m->media[k];
-			fprintf(o, " media");
-			dump_v3(o, "absorption", md->absorption);
-			dump_v3(o, "emission", md->emission);
-			dump_v3(o, "scattering", md->scattering);
-			fprintf(o, " type %d eccentricity %g extinction %g method %d densities %u", md->scattering_type,
-				md->eccentricity, md->extinction, md->method, md->n_density);
-			for (uint32_t j = 0; j < md->n_density; j++) {
-				fprintf(o, " [");
-				scene_pigment_dump(o, md->density[j]);
-				fprintf(o, "]");
-			}
-		}
+		dump_media(o, m);
 		fputc('\n', o);
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);
@@ -752,6 +758,12 @@ void scene_dump(const scene *s, FILE *o)
 			fputc('\n', o);
 			dump_xform(o, &l->projected[k].transform);
 		}
+	}
+	if (s->atmosphere) {
+		fprintf(o, "atmosphere");
+		dump_loc(o, s->atmosphere->loc);
+		dump_media(o, s->atmosphere);
+		fputc('\n', o);
 	}
 	for (size_t i = 0; i < s->light_groups.len; i++) {
 		const scene_light_group *g = &VECBUF_AT(&s->light_groups, scene_light_group, i);

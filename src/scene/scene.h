@@ -394,6 +394,9 @@ typedef struct scene {
 	bool has_sky_sphere;
 	scene_sky_sphere sky_sphere;
 	scene_fog *fogs; /* every fog, newest first (they combine in any order) */
+	/* POV-Ray's atmospheric media (a `media` statement outside an interior): a part record whose
+	 * media fill the space outside every object (and inside hollow ones); NULL: none. */
+	const struct scene_material *atmosphere;
 	vecbuf objects; /* scene_object */
 	scene_geom *geoms; /* every geometry record, newest first */
 	uint32_t n_geoms;
