@@ -78,7 +78,10 @@ static void world_release(world *w)
 {
 	mem_free((void *)w->stats.shapes);
 	w->stats.shapes = NULL;
+	for (size_t i = 0; w->insts && i < w->n_insts; i++)
+		mem_free(w->insts[i].part_material);
 	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
+		mem_free(w->geoms[i].tri_part);
 		mesh_free(&w->geoms[i].m);
 		bvh_free(w->geoms[i].b);
 	}

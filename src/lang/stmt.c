@@ -2769,13 +2769,46 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return object_tail(p, out, start, open, "object");
 }
 
-/* pov_shape = lathe | sor | prism | sphere_sweep | blob | text: the body in shapes2.c */
+bool lang_component_mods(parser *p, xform *t, bool *moved, const scene_material **mat, diag_loc open)
+{
+	mods m = {.t = xform_identity()};
+	*moved = false;
+	for (;;) {
+		lang_token k = *lang_peek(p);
+		if (k.kind == LTK_RBRACE)
+			break;
+		bool matched;
+		if (k.kind == LTK_KW_TEXTURE || k.kind == LTK_KW_PIGMENT || k.kind == LTK_KW_FINISH ||
+		    lang_normal_starts(p)) {
+			TRY(modifier(p, &m, &matched));
+			continue;
+		}
+		TRY(transform_item(p, &m.t, &matched));
+		if (!matched)
+			return lang_error_found(p, "expected a transform, a texture or '}' to close the blob component "
+						   "(opened at line %u)", open.line);
+		*moved = true;
+	}
+	lang_advance(p);
+	*t = m.t, *mat = m.mat;
+	return true;
+}
+
+/* pov_shape = lathe | sor | prism | sphere_sweep | blob | text: the body in shapes2.c; a blob's
+ * component textures go to its object (scene_object.part_mat). */
 static bool pov_shape(parser *p, vecbuf *out, const lang_token *word, diag_loc open)
 {
 	scene_geom *g;
 	TRY(g = lang_pov_shape(p, lang_pov_shape_kind(word), word->loc, transform_item));
 	size_t start = out->len;
+	const scene_material **parts = p->blob_parts;
+	uint32_t n_parts = p->n_blob_parts;
+	p->blob_parts = NULL, p->n_blob_parts = 0;
 	TRY(place(p, out, g, word->loc));
+	for (size_t i = start; i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->part_mat = parts, o->n_parts = n_parts;
+	}
 	char nm[32];
 	snprintf(nm, sizeof nm, "%.*s", (int)word->len, word->text);
 	return object_tail(p, out, start, open, nm);

@@ -75,7 +75,10 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
 		scale = in->xf_gain * scale + in->xf_shift; /* a bound of the world vertices' scale */
 	}
-	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
+	int material = in->material;
+	if (in->part_material && in->g->tri_part && in->g->tri_part[prim] <= in->n_parts)
+		material = in->part_material[in->g->tri_part[prim]]; /* a blob component's texture */
+	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = material, .light = in->light,
 			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = scale};
 }
 

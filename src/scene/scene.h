@@ -317,6 +317,10 @@ typedef struct scene_object {
 	bool inverse; /* the object's own inverse: its inside is the outside of its surface */
 	bool clip_only; /* a clipped_by object: its inside clips, its surface is never seen */
 	uint32_t light_group; /* the innermost light_group holding it (1-based), 0: none */
+	/* A blob's component textures (geom/shape.h's shape_blob_comp.part): part k's material at
+	 * part_mat[k - 1] (in the arena); part 0 is the object's material. n_parts 0: none. */
+	const struct scene_material *const *part_mat;
+	uint32_t n_parts;
 } scene_object;
 
 /* POV-Ray 3.7's object flags (Parse_Object_Mods): hollow matters only for media; the others hide

@@ -158,9 +158,9 @@ object { Vase translate x }
 sor { 4, <0, 0>, <1, 0>, <0.5, 1>, <0.7, 2> open }
 prism { conic_sweep bezier_spline 0.5, 1, 4, <1, 0>, <1, 1>, <0, 1>, <1, 0> }
 sphere_sweep { b_spline 4, <0, 0, 0>, 0.5, <1, 1, 0> 0.5, <2, 0, 0>, 0.5, <3, 1, 0>, 0.5 tolerance 1e-4 }
-// rule: blob, blob_item, text
+// rule: blob, blob_item, blob_comp_mod, text
 blob { threshold 0.6 component 1, 1, <0, 0, 0> sphere { <1, 0, 0>, 1, strength 1 scale 2 }
-	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 } }
+	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 pigment { rgb 0 } } }
 text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
 // rule: bicubic_patch, bicubic_item
 bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>
