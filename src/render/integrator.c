@@ -731,7 +731,9 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 	if (hit->light < 0 || !ls || (size_t)hit->light >= ls->count)
 		return;
 	/* a light's group holds for the BSDF's sample as for next-event estimation (a sphere light) */
-	if (bounce > 0 && !pa->prev_delta && s->light_reach && !s->light_reach(s->user, pa->prev_object, (size_t)hit->light, NULL, &(float){INFINITY}))
+	float t_reach = INFINITY;
+	if (bounce > 0 && !pa->prev_delta && s->light_reach &&
+	    !s->light_reach(s->user, pa->prev_object, (size_t)hit->light, NULL, &t_reach))
 		return;
 	const light *l = &ls->lights[hit->light];
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
