@@ -46,6 +46,7 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 		ok = o.geometry_only || build_material(w, m->id, sc, &o, m, d);
 	if (ok)
 		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
+	ok = ok && (o.geometry_only || build_atmosphere(w, sc, d));
 	for (size_t i = 0; i < w->n_geoms; i++) {
 		world_geom *g = &w->geoms[i];
 		w->stats.triangles += g->m.num_triangles;
@@ -63,7 +64,7 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 	for (size_t i = 0; i < w->n_insts; i++)
 		w->stats.instanced_triangles += w->insts[i].g->m.num_triangles;
 	ok = ok && (o.geometry_only || build_top(w, d));
-	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_camera(w, sc, &o, d)));
+	ok = ok && (o.geometry_only || (build_lights(w, sc, d) && build_reach(w, sc, &o, d) && build_camera(w, sc, &o, d)));
 	if (!ok) {
 		world_release(w);
 		return false;
@@ -81,7 +82,10 @@ static void world_release(world *w)
 {
 	mem_free((void *)w->stats.shapes);
 	w->stats.shapes = NULL;
+	for (size_t i = 0; w->insts && i < w->n_insts; i++)
+		mem_free(w->insts[i].part_material);
 	for (size_t i = 0; w->geoms && i < w->n_geoms; i++) {
+		mem_free(w->geoms[i].tri_part);
 		mesh_free(&w->geoms[i].m);
 		bvh_free(w->geoms[i].b);
 	}
@@ -97,6 +101,13 @@ static void world_release(world *w)
 		mem_free(w->materials[i].map);
 	}
 	light_set_free(&w->lights);
+	for (size_t i = 0; i < w->n_reach; i++) {
+		world_free(w->reach[i].through);
+		if (w->reach[i].through_sc)
+			w->reach[i].through_sc->geoms = NULL; /* shallow copies (build_light.c) */
+		scene_free(w->reach[i].through_sc);
+	}
+	mem_free(w->reach), mem_free(w->group_parent), mem_free(w->group_global), mem_free(w->light_sign);
 	tlas_free(w->top), tlas_free(w->shadow);
 	mem_free(w->top_inst), mem_free(w->inst_top), mem_free(w->sss_group);
 	mem_free(w->csg_nodes), mem_free(w->csg_kids);

@@ -70,5 +70,9 @@ bool build_pov_probe(world *w, const scene *sc, diag *d);
 
 /* build_light.c */
 bool build_lights(world *w, const scene *sc, diag *d);
+/* build_material.c: POV-Ray's atmospheric media (world.atmosphere). */
+bool build_atmosphere(world *w, const scene *sc, diag *d);
+/* build_light.c: POV-Ray's light_group and projected_through (world.reach). */
+bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d);
 
 #endif

@@ -189,9 +189,20 @@ bool build_instances(world *w, const scene *sc, const world_options *opt, diag *
 		set_xf_bound(in);
 		in->no_shadow = o->no_shadow;
 		in->hollow = (o->pov_flags & SCENE_OBJ_HOLLOW) != 0;
+		in->light_group = o->light_group;
 		in->light = -1;
 		/* Without a material: the default grey, the last entry. */
 		in->material = o->material ? (int)o->material->id : (int)w->n_materials - 1;
+		if (o->n_parts) { /* a blob's component textures (world_inst.part_material) */
+			if (!(in->part_material = mem_alloc(o->n_parts + 1u, sizeof *in->part_material))) {
+				diag_error(d, o->loc, "out of memory");
+				return false;
+			}
+			in->part_material[0] = in->material;
+			for (uint32_t k = 0; k < o->n_parts; k++)
+				in->part_material[k + 1] = (int)o->part_mat[k]->id;
+			in->n_parts = o->n_parts;
+		}
 		/* A plane's mesh is made later (build_planes), with its tangents. */
 		bool tangents = wants_tangents(o->material, opt) && o->geom->kind != SHAPE_PLANE;
 		if (is_sss(o->material) && o->geom->kind != SHAPE_PLANE && !xform_is_similarity(&in->xf, NULL)) {

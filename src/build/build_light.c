@@ -54,7 +54,9 @@ static void set_distance_law(light *l, const scene_light *sl)
 static light scene_light_to_light(const scene_light *sl)
 {
 	float k = sl->has_intensity || sl->kind == SCENE_LIGHT_SPHERE ? 1.0f : BUILD_POV_LIGHT_SCALE;
-	vec3 c = v3_scale(sl->color, (float)sl->intensity * k);
+	/* a negative light's magnitude: its sign is world.light_sign's */
+	vec3 mag = v3(fabsf(sl->color.x), fabsf(sl->color.y), fabsf(sl->color.z));
+	vec3 c = v3_scale(mag, (float)sl->intensity * k);
 	vec3 pos = d3v(sl->position), at = d3v(sl->point_at);
 	light l;
 	switch (sl->kind) {
@@ -101,10 +103,132 @@ static void build_fogs(world *w, const scene *sc, diag *d)
 	}
 }
 
+/* POV-Ray's light_group and projected_through: w->reach and the groups' table, when some light
+ * or object has either. */
+/* The scene of a light's projected_through objects alone: their geometry records copied (shallow,
+ * renumbered), no materials or lights, the parent's camera and settings (so tessellated as the
+ * render's objects); NULL when memory runs out. */
+static scene *through_scene(const scene *parent, const scene_light *sl)
+{
+	scene *sc = scene_new();
+	if (!sc)
+		return NULL;
+	sc->global = parent->global;
+	sc->has_camera = parent->has_camera;
+	sc->camera = parent->camera;
+	sc->csg_ids = parent->csg_ids;
+	bool ok = true;
+	for (uint32_t i = 0; ok && i < sl->n_projected; i++) {
+		scene_object o = sl->projected[i];
+		const scene_geom *same = NULL; /* a record the copies share stays shared */
+		for (uint32_t j = 0; j < i && !same; j++)
+			if (sl->projected[j].geom == o.geom)
+				same = scene_object_at(sc, j)->geom;
+		if (!same) {
+			scene_geom *g = arena_alloc(&sc->arena, 1, sizeof *g, 16);
+			if (!(ok = g != NULL))
+				break;
+			*g = *o.geom;
+			g->id = sc->n_geoms++;
+			g->next = sc->geoms;
+			sc->geoms = g;
+			same = g;
+		}
+		o.geom = same;
+		o.material = NULL;
+		o.texture_placed = false;
+		o.texture_from_object = xform_identity();
+		o.light_group = 0;
+		o.no_shadow = false;
+		ok = vecbuf_push(&sc->objects, &o) != NULL;
+	}
+	if (!ok) {
+		sc->geoms = NULL;
+		scene_free(sc);
+	}
+	return ok ? sc : NULL;
+}
+
+bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d)
+{
+	size_t n = scene_n_lights(sc), ng = sc->light_groups.len;
+	bool any = ng > 0;
+	for (size_t i = 0; i < n && !any; i++)
+		any = scene_light_at(sc, i)->n_projected > 0;
+	if (!any)
+		return true;
+	w->reach = mem_calloc(n ? n : 1, sizeof *w->reach);
+	w->group_parent = mem_calloc(ng ? ng : 1, sizeof *w->group_parent);
+	w->group_global = mem_calloc(ng ? ng : 1, sizeof *w->group_global);
+	if (!w->reach || !w->group_parent || !w->group_global) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	w->n_reach = n, w->n_groups = ng;
+	for (size_t g = 0; g < ng; g++) {
+		const scene_light_group *lg = &VECBUF_AT(&sc->light_groups, scene_light_group, g);
+		w->group_parent[g] = lg->parent;
+		w->group_global[g] = lg->global_lights;
+	}
+	for (size_t i = 0; i < n; i++) {
+		const scene_light *sl = scene_light_at(sc, i);
+		w->reach[i].group = sl->group;
+		if (!sl->n_projected)
+			continue;
+		scene *ps = w->reach[i].through_sc = through_scene(sc, sl);
+		if (!ps) {
+			diag_error(d, sl->loc, "out of memory");
+			return false;
+		}
+		/* Quietly: the render builds (and warns about) the same records. A failure is built
+		 * again aloud, for its messages. */
+		diag quiet;
+		diag_init(&quiet, NULL);
+		bool valid = scene_validate(ps, &quiet) == 0;
+		w->reach[i].through = valid ? world_build(ps, opt, &quiet) : NULL;
+		diag_free(&quiet);
+		if (!w->reach[i].through) {
+			if (valid)
+				world_free(world_build(ps, opt, d));
+			else
+				scene_validate(ps, d);
+			diag_error(d, sl->loc, "the light's projected_through object cannot be built (above)");
+			return false;
+		}
+	}
+	return true;
+}
+
+/* POV-Ray's negative lights: the signs of the light_sources' colours (world.light_sign), when one
+ * is negative. */
+static bool build_signs(world *w, const scene *sc, diag *d)
+{
+	size_t n = scene_n_lights(sc);
+	bool any = false;
+	for (size_t i = 0; i < n && !any; i++) {
+		vec3 c = scene_light_at(sc, i)->color;
+		any = c.x < 0 || c.y < 0 || c.z < 0;
+	}
+	if (!any)
+		return true;
+	if (!(w->light_sign = mem_alloc(n, sizeof *w->light_sign))) {
+		diag_error(d, diag_noloc(), "out of memory");
+		return false;
+	}
+	w->n_light_sign = n;
+	for (size_t i = 0; i < n; i++) {
+		vec3 c = scene_light_at(sc, i)->color;
+		w->light_sign[i] = v3(c.x < 0 ? -1.0f : 1.0f, c.y < 0 ? -1.0f : 1.0f, c.z < 0 ? -1.0f : 1.0f);
+	}
+	return true;
+}
+
 bool build_lights(world *w, const scene *sc, diag *d)
 {
 	build_fogs(w, sc, d);
 	light_set_init(&w->lights);
+	if (!build_signs(w, sc, d))
+		return false;
 	for (size_t i = 0; i < scene_n_lights(sc); i++) {
 		const scene_light *sl = scene_light_at(sc, i);
 		light l = scene_light_to_light(sl);

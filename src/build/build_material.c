@@ -320,6 +320,8 @@ static vec3 density_bound(const scene_pigment *pg, int depth)
 	return b;
 }
 
+static bool fill_media(world *w, const scene_material *sm, render_media *md, diag *d);
+
 /* The interior's media of material k as the integrator's (render/media.h): coefficients, the
  * densities compiled as patterns, their bounds and the majorant. */
 static bool build_media(world *w, size_t k, const scene_material *sm, diag *d)
@@ -331,7 +333,26 @@ static bool build_media(world *w, size_t k, const scene_material *sm, diag *d)
 						  "the container a pigment with filter or transmit, e.g. rgbt 1)");
 		return true;
 	}
-	render_media *md = &w->media[k];
+	if (!fill_media(w, sm, &w->media[k], d))
+		return false;
+	w->media_of[k] = &w->media[k];
+	return true;
+}
+
+/* POV-Ray's atmospheric media (scene.atmosphere) as w->atmosphere. */
+bool build_atmosphere(world *w, const scene *sc, diag *d)
+{
+	if (!sc->atmosphere)
+		return true;
+	if (!fill_media(w, sc->atmosphere, &w->atmosphere, d))
+		return false;
+	w->has_atmosphere = true;
+	return true;
+}
+
+/* The media of sm as the integrator's md. */
+static bool fill_media(world *w, const scene_material *sm, render_media *md, diag *d)
+{
 	md->n = sm->n_media < RENDER_MEDIA_MAX ? sm->n_media : RENDER_MEDIA_MAX;
 	for (uint32_t i = 0; i < md->n; i++) {
 		const scene_media *s = &sm->media[i];
@@ -349,7 +370,6 @@ static bool build_media(world *w, size_t k, const scene_material *sm, diag *d)
 		}
 	}
 	render_media_finish(md);
-	w->media_of[k] = md;
 	w->has_media = true;
 	return true;
 }

@@ -50,6 +50,29 @@ bool note_shape(world *w, const world_shape_stat *st, diag *d)
 	return true;
 }
 
+/* A blob with component textures: each triangle's part, the strongest component's at its centre
+ * (geom/shape.h's shape_blob_part_at), for world.c's fill_hit. */
+static bool blob_tri_parts(world_geom *wg, const shape_desc *s, diag *d, diag_loc loc)
+{
+	bool parted = false;
+	for (uint32_t i = 0; s->kind == SHAPE2_BLOB && i < s->n_comps && !parted; i++)
+		parted = s->comps[i].part > 0;
+	const mesh *m = &wg->m;
+	if (!parted || !m->num_triangles)
+		return true;
+	if (!(wg->tri_part = mem_alloc(m->num_triangles, sizeof *wg->tri_part))) {
+		diag_error(d, loc, "out of memory");
+		return false;
+	}
+	for (size_t t = 0; t < m->num_triangles; t++) {
+		const uint32_t *ix = m->indices + 3 * t;
+		dvec3 c = d3_scale(d3_add(d3_add(v3_to_d3(m->positions[ix[0]]), v3_to_d3(m->positions[ix[1]])),
+					  v3_to_d3(m->positions[ix[2]])), 1.0 / 3.0);
+		wg->tri_part[t] = (uint8_t)shape_blob_part_at(s, c);
+	}
+	return true;
+}
+
 bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world_options *opt, diag *d)
 {
 	const shape_desc *s = g->u.pov;
@@ -69,6 +92,8 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 	else if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
 		return false;
 	wg->shape = s, wg->shape_tol = acc.tol, wg->shape_segments = acc.segments, wg->shape_err = tol;
+	if (!blob_tri_parts(wg, s, d, g->loc))
+		return false;
 	world_shape_stat st = {shape_kind_name(s->kind), g->loc, m->num_triangles, tol, (int)level};
 	return note_shape(w, &st, d);
 }

@@ -51,6 +51,18 @@ double shape_blob_field(const shape_desc *s, dvec3 p)
 	return f;
 }
 
+uint32_t shape_blob_part_at(const shape_desc *s, dvec3 p)
+{
+	double best = 0;
+	uint32_t part = 0;
+	for (uint32_t i = 0; i < s->n_comps; i++) {
+		double f = fabs(comp_field(&s->comps[i], p, NULL));
+		if (f > best)
+			best = f, part = s->comps[i].part;
+	}
+	return part;
+}
+
 static double field_grad(const shape_desc *s, dvec3 p, dvec3 *g)
 {
 	*g = d3(0, 0, 0);

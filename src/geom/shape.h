@@ -38,7 +38,14 @@ typedef struct shape_blob_comp {
 	double radius, strength;
 	bool has_xf;
 	xform xf;
+	/* POV-Ray's texture of a component: 0 the blob's own, k >= 1 the k-th of the textures its
+	 * components carry (the language's); a point takes the part of the component whose field
+	 * is strongest there (shape_blob_part_at). */
+	uint32_t part;
 } shape_blob_comp;
+
+/* The most distinct component textures a blob may carry. */
+#define SHAPE_BLOB_MAX_PARTS 255
 
 typedef struct shape_desc {
 	shape_kind kind;
@@ -114,6 +121,10 @@ void shape_dump(FILE *o, const shape_desc *s);
 /* The value of POV-Ray's blob field at p: the sum over components of s (1 - d^2/r^2)^2 for d < r,
  * d the distance to the centre (sphere) or the axis segment (cylinder, hemispheres at its ends). */
 double shape_blob_field(const shape_desc *s, dvec3 p);
+/* The part (shape_blob_comp.part) of the component whose field's magnitude is largest at p (the
+ * first such; POV-Ray blends the textures by these magnitudes, circe takes the strongest), 0 where
+ * none reaches p. */
+uint32_t shape_blob_part_at(const shape_desc *s, dvec3 p);
 
 /* ---- what the tessellators share (shape.c) ---- */
 

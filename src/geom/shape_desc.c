@@ -39,7 +39,10 @@ void shape_dump(FILE *o, const shape_desc *s)
 				fprintf(o, "  cylinder %g %g %g %g %g %g", c->a.x, c->a.y, c->a.z, c->b.x, c->b.y, c->b.z);
 			else
 				fprintf(o, "  sphere %g %g %g", c->a.x, c->a.y, c->a.z);
-			fprintf(o, " radius %g strength %g%s\n", c->radius, c->strength, c->has_xf ? " transformed" : "");
+			fprintf(o, " radius %g strength %g%s", c->radius, c->strength, c->has_xf ? " transformed" : "");
+			if (c->part) /* only then: older dumps stay as they were */
+				fprintf(o, " part %u", c->part);
+			fputc('\n', o);
 		}
 		break;
 	case SHAPE2_BICUBIC:

@@ -184,6 +184,10 @@ typedef struct parser {
 	 * transforms, only while an object statement places its objects in the scene (not in a
 	 * #declare, a clipped_by or a pattern's object) */
 	bool lights_in_csg;
+	/* shapes2.c's blob just parsed: the materials of its textured components, part k's at
+	 * [k - 1] (in the arena), for stmt.c's pov_shape to give its object; 0: none */
+	const scene_material **blob_parts;
+	uint32_t n_blob_parts;
 	unsigned finish_warned; /* finish.c: the ignored finish words already warned about, one bit each
 				 * (and stmt.c's LANG_WARNED_INTERIOR_TEXTURE) */
 	deprecation pending_dep; /* the running #declare's, given to the symbol it defines */

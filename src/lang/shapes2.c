@@ -287,29 +287,39 @@ static bool sphere_sweep(parser *p, shape_desc *s)
 	return true;
 }
 
-/* A blob component's modifiers: transforms (its field read back through them); a texture of its
- * own is not supported (circe's objects have one material). */
-static bool component_mods(parser *p, shape_blob_comp *c, diag_loc open, lang_xform_item_fn xf_item)
+/* A blob component's modifiers: transforms (its field read back through them) and a texture of
+ * its own (*mat; its part is given by blob()). */
+static bool component_mods(parser *p, shape_blob_comp *c, diag_loc open, const scene_material **mat)
 {
 	xform t = xform_identity();
 	bool any = false;
-	for (;;) {
-		lang_token *k = lang_peek(p);
-		if (k->kind == LTK_RBRACE)
-			break;
-		if (k->kind == LTK_KW_TEXTURE || k->kind == LTK_KW_PIGMENT || k->kind == LTK_KW_FINISH ||
-		    lang_word_is(k, "normal"))
-			return lang_error(p, k->loc, "a texture of one blob component is not supported by circe: give the "
-						     "blob one texture");
-		bool matched;
-		TRY(xf_item(p, &t, &matched));
-		if (!matched)
-			return lang_error_found(p, "expected a transform or '}' to close the blob component (opened at line %u)",
-						open.line);
-		any = true;
-	}
-	lang_advance(p);
+	TRY(lang_component_mods(p, &t, &any, mat, open));
 	c->has_xf = any, c->xf = t;
+	return true;
+}
+
+/* Gives each textured component its part: one a distinct material, in order (shape_blob_comp). */
+static bool blob_parts(parser *p, vecbuf *comps, const vecbuf *mats, diag_loc kw)
+{
+	const scene_material **parts = NULL;
+	uint32_t n = 0;
+	for (size_t i = 0; i < comps->len; i++) {
+		const scene_material *m = VECBUF_AT(mats, const scene_material *, i);
+		if (!m)
+			continue;
+		uint32_t k = 0;
+		while (k < n && parts[k] != m)
+			k++;
+		if (k == n) {
+			if (n == SHAPE_BLOB_MAX_PARTS)
+				return lang_error(p, kw, "a blob has at most %d component textures", SHAPE_BLOB_MAX_PARTS);
+			if (!parts && !(parts = arena_alloc(&p->sc->arena, SHAPE_BLOB_MAX_PARTS, sizeof *parts, sizeof(void *))))
+				return lang_error(p, kw, "out of memory");
+			parts[n++] = m;
+		}
+		VECBUF_AT(comps, shape_blob_comp, i).part = k + 1;
+	}
+	p->blob_parts = parts, p->n_blob_parts = n;
 	return true;
 }
 
@@ -318,13 +328,17 @@ static bool component_mods(parser *p, shape_blob_comp *c, diag_loc open, lang_xf
  *        | "cylinder" "{" vector, vector, float, [ "strength" ] float { transform } "}" } ... */
 static bool blob(parser *p, shape_desc *s, diag_loc kw, lang_xform_item_fn xf_item)
 {
-	vecbuf comps;
+	(void)xf_item; /* the components' transforms are read by lang_component_mods */
+	vecbuf comps, mats;
 	vecbuf_init(&comps, sizeof(shape_blob_comp));
+	vecbuf_init(&mats, sizeof(const scene_material *));
+	p->n_blob_parts = 0;
 	s->threshold = 1.0;
 	bool ok = true;
 	for (; ok;) {
 		lang_token t = *lang_peek(p);
 		shape_blob_comp c = {0};
+		const scene_material *mat = NULL;
 		if (accept_word(p, "threshold")) {
 			ok = lang_float(p, "after 'threshold'", &s->threshold);
 			continue;
@@ -351,14 +365,16 @@ static bool blob(parser *p, shape_desc *s, diag_loc kw, lang_xform_item_fn xf_it
 			if (ok)
 				lang_accept(p, LTK_KW_STRENGTH);
 			ok = ok && lang_float(p, "as the component's strength", &c.strength) &&
-			     component_mods(p, &c, open, xf_item);
+			     component_mods(p, &c, open, &mat);
 		} else
 			break;
 		if (ok && !(c.radius > 0))
 			ok = lang_error(p, t.loc, "a blob component's radius must be > 0, found %g", c.radius);
-		if (ok && !vecbuf_push(&comps, &c))
+		if (ok && (!vecbuf_push(&comps, &c) || !vecbuf_push(&mats, &mat)))
 			ok = lang_error(p, t.loc, "out of memory");
 	}
+	ok = ok && blob_parts(p, &comps, &mats, kw);
+	vecbuf_free(&mats);
 	bool positive = false;
 	for (size_t i = 0; i < comps.len; i++)
 		positive |= VECBUF_AT(&comps, shape_blob_comp, i).strength > 0;

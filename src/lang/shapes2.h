@@ -9,6 +9,11 @@
  * the lookahead is none). */
 typedef bool (*lang_xform_item_fn)(parser *p, xform *t, bool *matched);
 
+/* stmt.c: a blob component's modifiers after its numbers, up to its '}' (consumed; open: its '{'):
+ * transforms composed into *t (*moved: any), and a texture, pigment, finish or normal of its own
+ * (*mat: the material they make, NULL without). */
+bool lang_component_mods(parser *p, xform *t, bool *moved, const scene_material **mat, diag_loc open);
+
 /* The shape a word begins (geom/shape.h's shape_kind), or -1. */
 int lang_pov_shape_kind(const lang_token *t);
 /* The body of shape `kind` after its '{', up to its modifiers: a new geometry record, or NULL

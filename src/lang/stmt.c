@@ -1710,6 +1710,10 @@ static void light_move(scene_light *l, const xform *t)
 		scene_object *o = (scene_object *)&l->looks[i];
 		o->transform = xform_then(o->transform, *t);
 	}
+	for (uint32_t i = 0; i < l->n_projected; i++) { /* the same (light_head, projected_through) */
+		scene_object *o = (scene_object *)&l->projected[i];
+		o->transform = xform_then(o->transform, *t);
+	}
 	l->position = xform_point(t, l->position);
 	l->point_at = xform_point(t, l->point_at);
 	l->axis1 = xform_vector(t, l->axis1);
@@ -1883,19 +1887,52 @@ static bool push_v3(parser *p, vecbuf *v, dvec3 x)
 	return push(p, v, &f);
 }
 
-/* triangle        = "triangle" "{" vector "," vector "," vector "}"
+/* A mesh's triangles (POV-Ray's Parse_Mesh):
+ * triangle        = "triangle" "{" vector "," vector "," vector [ uv_vectors ] "}"
  * smooth_triangle = "smooth_triangle" "{" vector "," vector "," vector "," vector ","
- *                   vector "," vector "}" */
+ *                   vector "," vector [ uv_vectors ] "}"
+ * uv_vectors      = "uv_vectors" vector "," vector "," vector   (2-D: the corners' uv, for
+ *                   uv_mapping; a mesh's triangle without them has uv 0 at each corner) */
 static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth);
+static bool triangle_uv(parser *p, meshbuf *b, bool smooth, bool *any_uv);
 
-static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
+static bool triangle(parser *p, meshbuf *b, bool smooth, bool *any_smooth, bool *any_uv)
 {
 	const char *what = smooth ? "smooth_triangle" : "triangle";
 	diag_loc open;
 	lang_advance(p);
 	TRY(open_block(p, what, &open));
 	TRY(triangle_body(p, b, smooth, any_smooth));
+	TRY(triangle_uv(p, b, smooth, any_uv));
 	return lang_expect_close(p, open, what);
+}
+
+/* A mesh triangle's uv_vectors, or uv 0 at its three corners without them. */
+static bool triangle_uv(parser *p, meshbuf *b, bool smooth, bool *any_uv)
+{
+	static const char *const nth[] = {"first", "second", "third"};
+	vec2 uv[3] = {{0, 0}, {0, 0}, {0, 0}};
+	if (lang_accept(p, LTK_KW_UV_VECTORS)) {
+		char ctx[64];
+		for (int i = 0; i < 3; i++) {
+			if (i)
+				TRY(lang_expect(p, LTK_COMMA, "between a triangle's uv_vectors"));
+			snprintf(ctx, sizeof ctx, "as the %s uv of the %s", nth[i], smooth ? "smooth_triangle" : "triangle");
+			diag_loc loc = lang_peek(p)->loc;
+			value v;
+			TRY(lang_additive(p, &v));
+			if (v.kind != VAL_VECTOR || v.n != 2)
+				return lang_error(p, loc, "expected a 2-vector <u, v> %s, found %s", ctx,
+						  lang_value_kind_name(&v));
+			uv[i] = v2((float)v.v[0], (float)v.v[1]);
+			if (!(isfinite(uv[i].x) && isfinite(uv[i].y)))
+				return lang_error(p, loc, "uv <%g, %g> overflows a float", v.v[0], v.v[1]);
+		}
+		*any_uv = true;
+	}
+	for (int i = 0; i < 3; i++)
+		TRY(push(p, &b->uv, &uv[i]));
+	return true;
 }
 
 /* The vertices (and normals) of a triangle, after its '{'. */
@@ -1934,7 +1971,7 @@ static bool triangle_body(parser *p, meshbuf *b, bool smooth, bool *any_smooth)
 }
 
 /* The triangles of b as a SHAPE_MESH geometry. */
-static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, diag_loc kw)
+static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, bool any_uv, diag_loc kw)
 {
 	scene_geom *g = new_geom(p, SHAPE_MESH, kw);
 	if (!g)
@@ -1947,6 +1984,8 @@ static scene_geom *mesh_geom(parser *p, meshbuf *b, bool any_smooth, diag_loc kw
 		m->normals = take(&b->nrm, &m->n_normals);
 		m->normal_idx = take(&b->nidx, NULL);
 	}
+	if (any_uv) /* one a corner, like the positions: indexed by the faces' own indices */
+		m->uvs = take(&b->uv, &m->n_uvs);
 	return g;
 }
 
@@ -1958,7 +1997,14 @@ static bool object_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open, 
 	meshbuf b;
 	meshbuf_init(&b);
 	bool any_smooth = false;
-	scene_geom *g = triangle_body(p, &b, smooth, &any_smooth) ? mesh_geom(p, &b, any_smooth, kw) : NULL;
+	scene_geom *g = NULL;
+	if (triangle_body(p, &b, smooth, &any_smooth)) {
+		if (lang_peek(p)->kind == LTK_KW_UV_VECTORS) /* POV-Ray's Parse_Triangle has none */
+			lang_error(p, lang_peek(p)->loc, "'uv_vectors' belongs to a triangle of a mesh: a %s object "
+							  "has none (give it inside 'mesh { }')", smooth ? "smooth_triangle" : "triangle");
+		else
+			g = mesh_geom(p, &b, any_smooth, false, kw);
+	}
 	meshbuf_free(&b);
 	if (!g)
 		return false;
@@ -2003,17 +2049,17 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	}
 	meshbuf b;
 	meshbuf_init(&b);
-	bool any_smooth = false, ok = true;
+	bool any_smooth = false, any_uv = false, ok = true;
 	for (;;) {
 		lang_tok k = lang_peek(p)->kind;
 		if (k != LTK_KW_TRIANGLE && k != LTK_KW_SMOOTH_TRIANGLE)
 			break;
-		if (!(ok = triangle(p, &b, k == LTK_KW_SMOOTH_TRIANGLE, &any_smooth)))
+		if (!(ok = triangle(p, &b, k == LTK_KW_SMOOTH_TRIANGLE, &any_smooth, &any_uv)))
 			break;
 	}
 	if (ok && b.faces.len == 0)
 		ok = lang_error_found(p, "expected 'triangle', 'smooth_triangle' or 'file' in 'mesh'");
-	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, kw) : NULL;
+	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, any_uv, kw) : NULL;
 	meshbuf_free(&b);
 	if (!g)
 		return false;
@@ -2730,16 +2776,131 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return object_tail(p, out, start, open, "object");
 }
 
-/* pov_shape = lathe | sor | prism | sphere_sweep | blob | text: the body in shapes2.c */
+bool lang_component_mods(parser *p, xform *t, bool *moved, const scene_material **mat, diag_loc open)
+{
+	mods m = {.t = xform_identity()};
+	*moved = false;
+	for (;;) {
+		lang_token k = *lang_peek(p);
+		if (k.kind == LTK_RBRACE)
+			break;
+		bool matched;
+		if (k.kind == LTK_KW_TEXTURE || k.kind == LTK_KW_PIGMENT || k.kind == LTK_KW_FINISH ||
+		    lang_normal_starts(p)) {
+			TRY(modifier(p, &m, &matched));
+			continue;
+		}
+		TRY(transform_item(p, &m.t, &matched));
+		if (!matched)
+			return lang_error_found(p, "expected a transform, a texture or '}' to close the blob component "
+						   "(opened at line %u)", open.line);
+		*moved = true;
+	}
+	lang_advance(p);
+	*t = m.t, *mat = m.mat;
+	return true;
+}
+
+/* pov_shape = lathe | sor | prism | sphere_sweep | blob | text: the body in shapes2.c; a blob's
+ * component textures go to its object (scene_object.part_mat). */
 static bool pov_shape(parser *p, vecbuf *out, const lang_token *word, diag_loc open)
 {
 	scene_geom *g;
 	TRY(g = lang_pov_shape(p, lang_pov_shape_kind(word), word->loc, transform_item));
 	size_t start = out->len;
+	const scene_material **parts = p->blob_parts;
+	uint32_t n_parts = p->n_blob_parts;
+	p->blob_parts = NULL, p->n_blob_parts = 0;
 	TRY(place(p, out, g, word->loc));
+	for (size_t i = start; i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->part_mat = parts, o->n_parts = n_parts;
+	}
 	char nm[32];
 	snprintf(nm, sizeof nm, "%.*s", (int)word->len, word->text);
 	return object_tail(p, out, start, open, nm);
+}
+
+static bool optional_bool(parser *p, bool *on);
+
+/* The root of light group g's chain of enclosing groups (scene.h's scene_light_group). */
+static uint32_t light_group_root(const parser *p, uint32_t g)
+{
+	while (VECBUF_AT(&p->sc->light_groups, scene_light_group, g - 1).parent)
+		g = VECBUF_AT(&p->sc->light_groups, scene_light_group, g - 1).parent;
+	return g;
+}
+
+/* light_group = "light_group" "{" { object_item | light_source } { transform_item
+ *               | "global_lights" [ float ] | "photons" block } "}"
+ * POV-Ray's (Parse_Light_Group, core/lighting/lightgroup.cpp): a union whose lights light only
+ * its objects (and those of the groups inside it), its objects lit by the scene's other lights
+ * only with global_lights on (off by default; the outermost group's word counts, as POV-Ray sets
+ * its flag on every child). Its lights join the scene's as the CSG's do (csg_light). */
+static bool light_group_block(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
+{
+	size_t start = out->len, lights = p->sc->lights.len;
+	if (p->sc->light_groups.len >= UINT32_MAX - 1)
+		return lang_error(p, kw, "too many light_groups");
+	scene_light_group grp = {.loc = kw, .parent = 0, .global_lights = false};
+	if (!vecbuf_push(&p->sc->light_groups, &grp))
+		return lang_error(p, kw, "out of memory");
+	uint32_t id = (uint32_t)p->sc->light_groups.len;
+	xform t = xform_identity();
+	bool global_lights = false;
+	for (;;) {
+		lang_token k = *lang_peek(p);
+		if (k.kind == LTK_RBRACE) {
+			lang_advance(p);
+			break;
+		}
+		if (k.kind == LTK_KW_LIGHT_SOURCE) {
+			TRY(csg_light(p, "light_group"));
+			continue;
+		}
+		bool matched;
+		TRY(object_item(p, out, &matched));
+		if (matched)
+			continue;
+		if (k.kind == LTK_UNSUPPORTED && lang_word_is(&k, "global_lights")) {
+			lang_advance(p);
+			TRY(optional_bool(p, &global_lights));
+			continue;
+		}
+		if (lang_word_is(&k, "photons")) { /* POV-Ray's photon target flags of the group */
+			lang_advance(p);
+			TRY(lang_skip_block(p, "photons"));
+			diag_warning(p->d, k.loc, "a light_group's 'photons' is accepted and ignored: circe computes "
+						  "caustics by its own path tracing");
+			continue;
+		}
+		TRY(transform_item(p, &t, &matched));
+		if (!matched)
+			return bad_item(p, open, "light_group", "an object, a light_source, a transform, global_lights");
+	}
+	VECBUF_AT(&p->sc->light_groups, scene_light_group, id - 1).global_lights = global_lights;
+	bool any_light = false;
+	for (size_t i = lights; i < p->sc->lights.len; i++) {
+		scene_light *l = &VECBUF_AT(&p->sc->lights, scene_light, i);
+		light_move(l, &t);
+		any_light |= !l->group;
+		if (!l->group) /* an inner group's light stays its group's */
+			l->group = id;
+	}
+	for (size_t i = start; i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->transform = xform_then(o->transform, t);
+		if (!o->light_group)
+			o->light_group = id;
+		else if (light_group_root(p, o->light_group) != id)
+			VECBUF_AT(&p->sc->light_groups, scene_light_group, light_group_root(p, o->light_group) - 1).parent = id;
+	}
+	if (start == out->len)
+		diag_warning(p->d, kw, "light_group has no objects: its lights light nothing");
+	else if (!any_light)
+		diag_warning(p->d, kw, "light_group has no light_source of its own: its objects are lit %s",
+			     global_lights ? "as any (global_lights on)" : "by no light but those of groups around it");
+	return true;
 }
 
 /* object_item = sphere | box | plane | triangle | smooth_triangle | mesh | mesh2 | subdivision_surface | instance | union
@@ -2767,6 +2928,10 @@ static bool object_item(parser *p, vecbuf *out, bool *matched)
 			break;
 		if (lang_pov_shape_kind(&t) >= 0) /* lathe, blob, text, ... (shapes2.c) */
 			break;
+		if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "light_group")) {
+			fn = light_group_block;
+			break;
+		}
 		*matched = false;
 		return true;
 	}
@@ -3432,14 +3597,11 @@ static bool camera(parser *p)
 	return camera_block(p, &p->sc->camera, kw.loc);
 }
 
+/* A light's colour: a negative component is POV-Ray's negative light, which takes light away
+ * (doc/language.md, "Negative lights"). */
 static bool light_colour(parser *p, vec3 *c)
 {
-	diag_loc loc = lang_peek(p)->loc;
-	TRY(lang_color(p, "as the light colour", c));
-	if (!(c->x >= 0 && c->y >= 0 && c->z >= 0))
-		return lang_error(p, loc, "a negative light colour (POV-Ray's negative light, which takes light away) is not "
-					  "supported by circe");
-	return true;
+	return lang_color(p, "as the light colour", c);
 }
 
 /* POV-Ray's light words that mean something only in a light_source. They stay out of the keyword
@@ -3473,8 +3635,8 @@ static light_word light_word_at(const lang_token *t)
 
 /* Where a light_source's items that need another were given, for the checks at its '}'. */
 typedef struct light_seen {
-	bool tightness, fade, area_mod;
-	diag_loc tightness_loc, fade_loc, area_loc, area_mod_loc;
+	bool tightness, fade, area_mod, projected;
+	diag_loc tightness_loc, fade_loc, area_loc, area_mod_loc, projected_loc;
 	const char *area_mod_name;
 } light_seen;
 
@@ -3610,22 +3772,67 @@ static bool light_pov_checks(parser *p, const scene_light *l, const light_seen *
 		return lang_error(p, seen->area_loc, "'area_light' on a %s light is not supported by circe",
 				  l->kind == SCENE_LIGHT_SPHERE ? "sphere" : l->kind == SCENE_LIGHT_PARALLEL ? "parallel"
 													 : "cylinder");
+	if (l->kind == SCENE_LIGHT_SPHERE && !(l->color.x >= 0 && l->color.y >= 0 && l->color.z >= 0))
+		return lang_error(p, l->loc, "a negative colour on a sphere light (circe's radius, an emitter that paths "
+					     "hit) is not supported by circe: POV-Ray's negative light is a point, spot, "
+					     "parallel or cylinder light");
+	if (seen->projected && l->kind == SCENE_LIGHT_SPHERE) /* paths hit it: they would need the test too */
+		return lang_error(p, seen->projected_loc, "projected_through on a sphere light (circe's radius) is not "
+							  "supported by circe: give it to a point, spot, parallel or cylinder light");
 	if (seen->area_mod && !l->area)
 		diag_warning(p->d, seen->area_mod_loc, "'%s' only affects area_light", seen->area_mod_name);
 	return true;
 }
 
-/* The light's looks_like objects copied into the arena (each light placed moves its own). */
+/* The light's looks_like and projected_through objects copied into the arena (each light placed
+ * moves its own). */
 static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 {
-	if (!l->n_looks)
-		return true;
-	scene_object *o = arena_zalloc(&p->sc->arena, l->n_looks, sizeof *o);
-	if (!o)
-		return lang_error(p, at, "out of memory");
-	memcpy(o, l->looks, l->n_looks * sizeof *o);
-	l->looks = o;
+	if (l->n_looks) {
+		scene_object *o = arena_zalloc(&p->sc->arena, l->n_looks, sizeof *o);
+		if (!o)
+			return lang_error(p, at, "out of memory");
+		memcpy(o, l->looks, l->n_looks * sizeof *o);
+		l->looks = o;
+	}
+	if (l->n_projected) {
+		scene_object *o = arena_zalloc(&p->sc->arena, l->n_projected, sizeof *o);
+		if (!o)
+			return lang_error(p, at, "out of memory");
+		memcpy(o, l->projected, l->n_projected * sizeof *o);
+		l->projected = o;
+	}
 	return true;
+}
+
+/* projected_through = "projected_through" "{" ( identifier | object_item ) { modifier } "}":
+ * POV-Ray's (Parse_Light_Source): the light reaches a point only through the object, which is
+ * not placed in the scene (moved by the light's later transforms); one a light. */
+static bool projected_through(parser *p, scene_light *l)
+{
+	diag_loc kw = lang_advance(p)->loc, open;
+	if (l->n_projected)
+		return lang_error(p, kw, "only one projected_through is allowed in a light_source");
+	TRY(open_block(p, "projected_through", &open));
+	vecbuf b;
+	vecbuf_init(&b, sizeof(scene_object));
+	bool matched = true, ok;
+	if (lang_peek(p)->kind == LTK_IDENT)
+		ok = declared_object(p, &b, lang_peek(p)->loc);
+	else
+		ok = object_item_unplaced(p, &b, &matched);
+	if (ok && (!matched || !b.len))
+		ok = lang_error_found(p, "expected an object in 'projected_through'");
+	ok = ok && object_tail(p, &b, 0, open, "projected_through");
+	scene_object *o = ok ? arena_zalloc(&p->sc->arena, b.len, sizeof *o) : NULL;
+	if (ok && !o)
+		ok = lang_error(p, kw, "out of memory");
+	if (ok) {
+		memcpy(o, b.data, b.len * sizeof *o);
+		l->projected = o, l->n_projected = (uint32_t)b.len;
+	}
+	vecbuf_free(&b);
+	return ok;
 }
 
 /* looks_like = "looks_like" "{" ( identifier | object_item ) { modifier } "}": POV-Ray's (Parse_Light_Source): the
@@ -3822,6 +4029,13 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 			bool matched;
 			if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "looks_like")) {
 				TRY(looks_like(p, &l));
+				continue;
+			}
+			if (t.kind == LTK_UNSUPPORTED && lang_word_is(&t, "projected_through")) {
+				TRY(projected_through(p, &l));
+				if (!seen.projected)
+					seen.projected_loc = t.loc;
+				seen.projected = true;
 				continue;
 			}
 			if (lang_word_is(&t, "photons")) { /* POV-Ray's photon flags of a light (balcony.pov) */
@@ -4058,6 +4272,17 @@ bool lang_default(parser *p)
 	}
 }
 
+/* media = "media" "{" ... "}" at the top level: POV-Ray's atmospheric media, which fill the
+ * space outside every object (and inside hollow ones); several add up, as an interior's. */
+static bool atmosphere(parser *p)
+{
+	scene_material *m = (scene_material *)p->sc->atmosphere; /* the parser's own record */
+	if (!m && !(m = new_part(p, lang_peek(p)->loc)))
+		return false;
+	p->sc->atmosphere = m;
+	return interior_media(p, m);
+}
+
 /* Objects placed at the top level without a texture take the #default one (POV-Ray 3.7 gives
  * it when the object is placed, so a declared object placed after a #default takes it). */
 static void give_default(parser *p, size_t start)
@@ -4079,8 +4304,7 @@ bool lang_statement(parser *p)
 	if (lang_word_is(t, "rainbow"))
 		return lang_rainbow(p);
 	if (lang_word_is(t, "media"))
-		return lang_error(p, t->loc, "atmospheric media (a 'media' outside an interior) is not supported by circe: "
-					     "give it to a container object's interior (a box or sphere around the scene)");
+		return atmosphere(p);
 	switch (t->kind) {
 	case LTK_KW_GLOBAL_SETTINGS: return global_settings(p);
 	case LTK_KW_CAMERA: return camera(p);

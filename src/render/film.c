@@ -54,11 +54,11 @@ int film_channel_components(film_channel ch)
 	return ch == FILM_DEPTH || ch == FILM_ERROR || ch == FILM_SAMPLES ? 1 : 3;
 }
 
-bool film_pixel_add(film_pixel *p, const render_sample *s)
+bool film_pixel_add(film_pixel *p, const render_sample *s, bool signed_radiance)
 {
 	vec3 c = s->radiance;
-	bool ok = v3_is_finite(c) && c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f && v3_is_finite(s->albedo) &&
-		  v3_is_finite(s->normal) && isfinite(s->depth);
+	bool ok = v3_is_finite(c) && (signed_radiance || (c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f)) &&
+		  v3_is_finite(s->albedo) && v3_is_finite(s->normal) && isfinite(s->depth);
 	if (!ok)
 		return false;
 	const float rgb[3] = {c.x, c.y, c.z}, alb[3] = {s->albedo.x, s->albedo.y, s->albedo.z},
@@ -98,7 +98,7 @@ double film_pixel_error(const film_pixel *p)
 	double var = (film_pixel_variance(p, 0) + film_pixel_variance(p, 1) + film_pixel_variance(p, 2)) / 3.0;
 	if (!(var > 0.0))
 		return 0.0;
-	double lum = (p->sum[0] + p->sum[1] + p->sum[2]) / (3.0 * p->n);
+	double lum = fabs(p->sum[0] + p->sum[1] + p->sum[2]) / (3.0 * p->n); /* signed: negative lights */
 	return sqrt(var) / (lum >= 1.0 ? lum : sqrt(lum));
 }
 
@@ -116,8 +116,8 @@ static float channel_value(const film_pixel *p, film_channel ch, int k)
 {
 	double inv = p->n ? 1.0 / p->n : 0.0;
 	switch (ch) {
-	case FILM_BEAUTY:
-		return (float)(p->sum[k] * inv);
+	case FILM_BEAUTY: /* at least 0: a negative light's samples (render_scene.light_sign) may sum below */
+		return (float)fmax(0.0, p->sum[k] * inv);
 	case FILM_ALBEDO:
 		return (float)(p->albedo[k] * inv);
 	case FILM_NORMAL:

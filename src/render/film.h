@@ -87,8 +87,10 @@ int film_channel_components(film_channel ch);
 /* Fills out (region width * height * components floats, row-major from (x0, y0)) from acc. */
 void film_read(const film *f, film_channel ch, float *out);
 /* Adds one sample to a pixel accumulator (and counts it in n); returns false, adding nothing, when
- * the radiance is non-finite or negative, or an AOV non-finite (the caller then adds a zero sample). */
-bool film_pixel_add(film_pixel *p, const render_sample *s);
+ * the radiance is non-finite or negative (unless signed_radiance: the scene's negative lights,
+ * render_scene.light_sign), or an AOV non-finite (the caller then adds a zero sample). The beauty's
+ * read-out is the mean clamped at 0. */
+bool film_pixel_add(film_pixel *p, const render_sample *s, bool signed_radiance);
 /* The variance of the pixel's mean in channel k (0..2); 0 below 2 samples. Independent samples
  * (nets 0): the sample variance / n. A sampler whose first 2^k samples are a net for every k
  * (nets 1: sampler.h's Sobol): its mean converges faster than the sample variance says (it

@@ -139,10 +139,19 @@ static vec3 media_density(const void *ctx, const render_medium *m, vec3 p)
 	return c->s->density ? c->s->density(c->s->user, c->object, m, p) : v3s(1.0f);
 }
 
+/* The nest's material for the atmosphere (render_scene.atmosphere), at its bottom, object
+ * UINT32_MAX: no surface crossed leaves it. */
+#define RENDER_NEST_ATMOSPHERE (-2)
+
 static const render_media *media_of(const render_scene *s, int material)
 {
+	if (material == RENDER_NEST_ATMOSPHERE)
+		return s->atmosphere;
 	return material >= 0 && s->media && (size_t)material < s->material_count ? s->media[material] : NULL;
 }
+
+/* Whether the scene has media: an interior's or the atmosphere's. */
+static inline bool any_media(const render_scene *s) { return s->media || s->atmosphere; }
 
 /* The interiors a ray is in, innermost last: entered by refraction into a dielectric, left by
  * refraction out of the same object. Deeper nests keep their outer RENDER_MAX_NEST - 1 and the
@@ -193,8 +202,8 @@ static const render_media *nest_media(const render_scene *s, const nest *st, uin
 static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d, float t0, float t1, rng *g)
 {
 	media_ctx mc = {s, 0};
-	const render_media *md = s->media ? nest_media(s, st, &mc.object) : NULL;
-	if (!md || !(t1 > t0))
+	const render_media *md = any_media(s) ? nest_media(s, st, &mc.object) : NULL;
+	if (!md || !(t1 > t0) || (md == s->atmosphere && !isfinite(t1))) /* the atmosphere ends with the scene */
 		return v3s(1.0f);
 	return render_media_transmittance(md, media_density, &mc, v3_madd(o, d, t0), d, t1 - t0, g);
 }
@@ -207,7 +216,7 @@ static vec3 media_segment(const render_scene *s, const nest *st, vec3 o, vec3 d,
 static vec3 shadow_transmittance(const render_scene *s, const render_settings *set, render_ray ray, float tmax,
 				 const nest *from, render_sampler *smp, uint32_t dim)
 {
-	rng local, *g = s->media ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
+	rng local, *g = any_media(s) ? render_sampler_stream(smp, dim, &local) : NULL; /* only media draw */
 	const vec3 o0 = ray.o;
 	nest st = *from;
 	if (!s->occluded(s->user, &ray, 0.0f, tmax))
@@ -260,9 +269,26 @@ static bool pick_by_cosine(const bsdf_params *b)
 	return !(b->kind == BSDF_COAT && !(v3_max_comp(b->diffuse) > 0.0f));
 }
 
+/* Whether light li, dist away, lights object `object` along the shadow ray (render_scene.light_reach):
+ * the shadow ray's *tmax shortened to its projected_through object. The object is looked for up
+ * to the light itself (dist), not *tmax: at a distance, the shadow ray's margin is wider than an
+ * object about the light. */
+static bool light_reaches(const render_scene *s, uint32_t object, size_t li, const render_ray *shadow, float dist,
+			  float *tmax)
+{
+	if (!s->light_reach)
+		return true;
+	float t = dist;
+	if (!s->light_reach(s->user, object, li, shadow, &t))
+		return false;
+	if (t < dist)
+		*tmax = fminf(*tmax, t * (1.0f - RENDER_SHADOW_EPS));
+	return true;
+}
+
 static vec3 sample_direct(const render_scene *s, const render_settings *set, const bsdf_params *b,
 			  const frame *f, vec3 ng_out, vec3 p, float p_scale, vec3 wo_local, float lobe_prob, const nest *in,
-			  render_sampler *g, uint32_t dim)
+			  uint32_t object, render_sampler *g, uint32_t dim)
 {
 	const light_set *ls = s->lights;
 	if (!ls || ls->count == 0)
@@ -289,6 +315,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		return v3s(0.0f);
 	render_ray shadow = {offset_origin(p, p_scale, ng_out), ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
+	if (!light_reaches(s, object, li, &shadow, ls_out.dist, &tmax))
+		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
@@ -302,7 +330,8 @@ static vec3 sample_direct(const render_scene *s, const render_settings *set, con
 		fval = v3_max(v3_add(v3_scale(v3_max(v3_sub(fval, hl), v3s(0.0f)), w), hl), v3s(0.0f));
 		w = 1.0f;
 	}
-	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
+	vec3 c = v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w * fabsf(wi_local.z) / light_pdf);
+	return s->light_sign && li < s->n_light_sign ? v3_mul(c, s->light_sign[li]) : c;
 }
 
 /* Next-event estimation at a scattering point x of a medium (coefficients c, reached along
@@ -327,12 +356,15 @@ static vec3 sample_direct_medium(const render_scene *s, const render_settings *s
 		return v3s(0.0f);
 	render_ray shadow = {x, ls_out.wi};
 	float tmax = isfinite(ls_out.dist) ? ls_out.dist * (1.0f - RENDER_SHADOW_EPS) : INFINITY;
+	if (!light_reaches(s, UINT32_MAX, li, &shadow, ls_out.dist, &tmax))
+		return v3s(0.0f);
 	vec3 vis = ls_out.shadowless ? v3s(1.0f) : shadow_transmittance(s, set, shadow, tmax, in, g, dim + 2);
 	if (!(v3_max_comp(vis) > 0.0f))
 		return v3s(0.0f);
 	float light_pdf = pick * ls_out.pdf;
 	float w = (ls_out.delta || set->mode == RENDER_LIGHT_ONLY) ? 1.0f : render_power_heuristic(light_pdf, phase_pdf);
-	return v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w / light_pdf);
+	vec3 r = v3_scale(v3_mul(v3_mul(fval, ls_out.li), vis), w / light_pdf);
+	return s->light_sign && li < s->n_light_sign ? v3_mul(r, s->light_sign[li]) : r;
 }
 
 /* ---- subsurface scattering ----------------------------------------------------------------- */
@@ -627,6 +659,7 @@ typedef struct path {
 	float prev_pdf;	     /* of the BSDF sample that left prev_p */
 	bool prev_delta;     /* that sample was a delta lobe (or is the camera's ray) */
 	vec3 prev_p, prev_n; /* the vertex that sample left, its ng_out */
+	uint32_t prev_object; /* its object (UINT32_MAX: a medium's point, or the camera) */
 	bool prev_cosine;    /* its light choice weighed the cosine (pick_by_cosine) */
 	bool fog_view;	     /* the camera's ray or a mirror's continuation of it: fogged (fog.h) */
 	bool sky_view;	     /* the same, by RENDER_SKY_MIRROR_PDF: sees a light that is only seen
@@ -674,6 +707,7 @@ typedef struct vertex {
 	vec3 p;	       /* rays leave from p, offset by p_scale (offset_origin) */
 	float p_scale;
 	vec3 wo_local; /* the outgoing direction in f */
+	uint32_t object; /* the hit's (render_scene.light_reach) */
 } vertex;
 
 /* A path that escapes the scene sees every infinite light, weighed against the BSDF sample; one
@@ -701,6 +735,11 @@ static inline void add_emitted(const render_scene *s, const render_settings *set
 {
 	const light_set *ls = s->lights;
 	if (hit->light < 0 || !ls || (size_t)hit->light >= ls->count)
+		return;
+	/* a light's group holds for the BSDF's sample as for next-event estimation (a sphere light) */
+	float t_reach = INFINITY;
+	if (bounce > 0 && !pa->prev_delta && s->light_reach &&
+	    !s->light_reach(s->user, pa->prev_object, (size_t)hit->light, NULL, &t_reach))
 		return;
 	const light *l = &ls->lights[hit->light];
 	float dist = pa->passed ? v3_length(v3_sub(hit->p, pa->prev_p)) : hit->t;
@@ -736,6 +775,7 @@ static inline void make_vertex(const render_scene *s, const render_hit *hit, vec
 	v->p = hit->p;
 	v->p_scale = hit->scale;
 	v->lobe_prob = 1.0f;
+	v->object = hit->object;
 }
 
 /* Next-event estimation at v through the BSDF b (v's own, or a part of it), an event of kind
@@ -746,7 +786,7 @@ static inline void add_direct(const render_scene *s, const render_settings *set,
 	if (set->mode == RENDER_BSDF_ONLY)
 		return;
 	vec3 c = v3_mul(pa->beta, sample_direct(s, set, b, &v->f, v->ng_out, v->p, v->p_scale, v->wo_local,
-						 v->lobe_prob, &pa->in, g, dim));
+						 v->lobe_prob, &pa->in, v->object, g, dim));
 	if (in_part(set, pa->bounce + 1, pa->bounce == 0 ? kind : pa->first))
 		pa->radiance = v3_add(pa->radiance, c);
 }
@@ -769,6 +809,7 @@ static inline void enter_at(const render_scene *s, const render_settings *set, c
 	pa->beta = v3_mul(pa->beta, w);
 	v->p = e->hit.p;
 	v->p_scale = e->hit.scale;
+	v->object = e->hit.object;
 	v->ng_out = e->hit.ng;
 	v->f.n = v3_dot(ns_i, v->ng_out) > 0.0f ? ns_i : v->ng_out;
 	v3_basis(v->f.n, &v->f.t, &v->f.b);
@@ -834,6 +875,7 @@ static inline bool continue_path(const vertex *v, int bounce, render_sampler *g,
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
 	pa->prev_p = v->p, pa->prev_n = v->ng_out, pa->prev_cosine = pick_by_cosine(&v->b);
+	pa->prev_object = v->object;
 	if (!roulette(bounce, g, pa))
 		return false;
 	*ray = (render_ray){offset_origin(v->p, v->p_scale, v->ng_out), v3_normalize(wi)};
@@ -937,6 +979,7 @@ static int through_media(const render_scene *s, const render_settings *set, cons
 	pa->passed = pa->stood_for = false;
 	pa->scattered = true;
 	pa->prev_p = x, pa->prev_n = v3s(0.0f), pa->prev_cosine = true;
+	pa->prev_object = UINT32_MAX;
 	pa->fog_view = pa->sky_view = false;
 	if (!roulette(bounce, g, pa))
 		return -1;
@@ -949,8 +992,10 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 	assert(set->max_trace_level >= 1);
 	render_sample out = {0};
 	/* prev_delta: the camera's ray, whatever it sees directly counts fully. */
-	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true,
+	path pa = {.radiance = v3s(0.0f), .beta = v3s(1.0f), .prev_delta = true, .prev_p = ray.o, .prev_n = v3s(0.0f), .prev_cosine = true, .prev_object = UINT32_MAX,
 		   .fog_view = true, .sky_view = true, .medium = -1, .first = RENDER_PART_CAMERA};
+	if (s->atmosphere) /* the camera is in the atmosphere */
+		pa.in = (nest){.n = 1, .mat = {RENDER_NEST_ATMOSPHERE}, .obj = {UINT32_MAX}};
 	/* bounce counts scattering events; passes the thin surfaces passed, which are none. */
 	/* vtx counts the loops (the sampler's blocks): bounce does not count thin surfaces. */
 	for (int bounce = 0, passes = 0, vtx = 0;; bounce++, vtx++) {
@@ -962,7 +1007,7 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		if (s->fog_count && pa.fog_view)
 			through_fog(s, set, &ray, hit_any ? hit.t : INFINITY, &pa);
 		uint32_t md_obj = 0;
-		const render_media *md = s->media && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
+		const render_media *md = any_media(s) && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
 			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
 			if (r < 0)

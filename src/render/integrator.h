@@ -141,6 +141,27 @@ typedef struct render_scene {
 	 * inside it; a non-hollow object inside a container holds none of its media. NULL: none is.
 	 * Thread-safe. */
 	bool (*hollow)(void *user, uint32_t object);
+	/* Optional (NULL: every light lights every surface, its shadow ray running to the light):
+	 * POV-Ray's light_group and projected_through (doc/language.md, "Lights"). Whether light
+	 * `light` (an index of lights) lights object `object` (a hit's; UINT32_MAX: a medium's point,
+	 * lit by the global lights) along the shadow ray `ray` that would reach it at *tmax: false
+	 * when the light's group leaves the object out, or the light's projected_through objects are
+	 * not met before *tmax; else *tmax becomes the distance to the first of them (only what lies
+	 * before shadows). ray NULL: the group alone. Thread-safe. */
+	bool (*light_reach)(void *user, uint32_t object, size_t light, const render_ray *ray, float *tmax);
+	/* Optional (NULL: every light adds light): per light of the first n_light_sign, the sign of
+	 * each channel of its colour, +1 or -1: POV-Ray's negative light takes light away. Its light
+	 * holds the colour's magnitude (light selection weighs that); next-event estimation applies
+	 * the sign. With it a sample's radiance may be negative (the film keeps it: a pixel's mean is
+	 * clamped at 0 when read, as POV-Ray's colour at the end). */
+	const vec3 *light_sign;
+	size_t n_light_sign;
+	/* Optional (NULL: none): POV-Ray's atmospheric media, which fill the space outside every
+	 * object and inside hollow ones: every path starts in them (the bottom of its nest of
+	 * interiors, under any container it enters), shadow rays take their transmittance; a path
+	 * that escapes the scene crosses none of them. density is asked with object UINT32_MAX (world
+	 * space). */
+	const render_media *atmosphere;
 } render_scene;
 
 typedef enum render_mode { RENDER_MIS, RENDER_LIGHT_ONLY, RENDER_BSDF_ONLY } render_mode;

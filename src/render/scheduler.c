@@ -72,9 +72,9 @@ static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[
 		counts[4] += smp.sss_walks;
 		counts[5] += smp.sss_walk_dropped;
 		counts[6] += smp.sss_walk_steps;
-		if (!film_pixel_add(px, &smp)) {
+		if (!film_pixel_add(px, &smp, job->scene->light_sign != NULL)) {
 			render_sample zero = {0};
-			film_pixel_add(px, &zero);
+			film_pixel_add(px, &zero, false);
 			counts[0]++;
 		}
 	}

@@ -78,7 +78,10 @@ static void fill_hit(const world *w, uint32_t inst, uint32_t prim, float u, floa
 		p = d3v(xform_point(&in->xf, v3_to_d3(p)));
 		scale = in->xf_gain * scale + in->xf_shift; /* a bound of the world vertices' scale */
 	}
-	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = in->material, .light = in->light,
+	int material = in->material;
+	if (in->part_material && in->g->tri_part && in->g->tri_part[prim] <= in->n_parts)
+		material = in->part_material[in->g->tri_part[prim]]; /* a blob component's texture */
+	*hit = (render_hit){.p = p, .ng = ng, .ns = ns, .uv = uv, .material = material, .light = in->light,
 			    .object = inst, .prim = prim, .bary = v2(u, v), .scale = scale};
 }
 
@@ -204,6 +207,40 @@ static bool world_shadow_closest(void *user, const render_ray *ray, float tmin, 
 		tmin = nextafterf(hit->t, INFINITY);
 	}
 	return false;
+}
+
+/* render_scene.light_reach: POV-Ray's light_group (the object's group, or one around it, is the
+ * light's; a global light lights a grouped object only under its outermost group's
+ * global_lights) and projected_through (the light's objects met along the shadow ray before
+ * *tmax: *tmax becomes the distance to the first). Lights past the scene's light_sources (the
+ * sky, emissive objects) are global. */
+static bool world_light_reach(void *user, uint32_t object, size_t light, const render_ray *ray, float *tmax)
+{
+	const world *w = user;
+	if (light >= w->n_reach)
+		return true;
+	const world_reach *r = &w->reach[light];
+	uint32_t g = object < w->n_insts ? w->insts[object].light_group : 0;
+	if (r->group) {
+		while (g && g != r->group)
+			g = w->group_parent[g - 1];
+		if (!g)
+			return false;
+	} else if (g) {
+		while (w->group_parent[g - 1])
+			g = w->group_parent[g - 1];
+		if (!w->group_global[g - 1])
+			return false;
+	}
+	if (r->through && ray) {
+		const render_scene *ts = &r->through->rs;
+		render_hit h;
+		memset(&h, 0, sizeof h);
+		if (!ts->intersect(ts->user, ray, 0.0f, *tmax, &h))
+			return false;
+		*tmax = h.t;
+	}
+	return true;
 }
 
 /* The five channels of pattern node `node` at the hit, in its object's space (the scene's
@@ -463,10 +500,10 @@ static void world_shade(void *user, const render_hit *hit, bsdf_params *params, 
 static vec3 world_density(void *user, uint32_t object, const render_medium *m, vec3 p)
 {
 	const world *w = user;
-	if (object >= w->n_insts)
+	if (object >= w->n_insts && object != UINT32_MAX)
 		return v3s(0.0f);
-	const world_inst *in = &w->insts[object];
-	dvec3 q = xform_inv_point(&in->pattern_xf, v3_to_d3(p));
+	/* UINT32_MAX: the atmosphere's, in world space */
+	dvec3 q = object == UINT32_MAX ? v3_to_d3(p) : xform_inv_point(&w->insts[object].pattern_xf, v3_to_d3(p));
 	double tol = PATTERN_HIT_ULPS * FLT_EPSILON * fmax(d3_length(q), 1.0);
 	vec3 r = v3s(1.0f);
 	for (uint32_t i = 0; i < m->n_density; i++) {
@@ -499,5 +536,7 @@ void world_bind(world *w)
 			       .circle_surface = world_circle_surface,
 			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
 			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
-			       .hollow = world_hollow};
+			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL,
+			       .light_sign = w->light_sign, .n_light_sign = w->n_light_sign,
+			       .atmosphere = w->has_atmosphere ? &w->atmosphere : NULL};
 }

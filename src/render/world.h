@@ -36,6 +36,7 @@ typedef struct world_geom {
 	const void *shape;
 	double shape_tol, shape_err;
 	uint32_t shape_segments;
+	uint8_t *tri_part;  /* a blob's component textures: each triangle's part (geom/shape.h), or NULL */
 } world_geom;
 
 /* One placed object. */
@@ -48,7 +49,11 @@ typedef struct world_inst {
 				  * triangle's world scale from its object one without transforming it */
 	bool no_shadow;
 	bool hollow;    /* POV-Ray's hollow: the media of a container around it fill it too */
+	uint32_t light_group; /* its scene object's light_group (scene.h; 0: none) */
 	int material;   /* index into world.materials */
+	int *part_material; /* a blob's component textures: part k's material at [k] ([0]: material),
+			     * with g->tri_part; NULL: material everywhere (owned) */
+	uint32_t n_parts;   /* entries of part_material less 1 */
 	int light;      /* index of its mesh light in world.lights, or -1 */
 	xform pattern_xf; /* object to world as the scene placed it: a pigment's pattern lives in its
 			   * object's space (xf may hold a sphere's centre and radius, or be flattened) */
@@ -158,6 +163,18 @@ struct world {
 	uint32_t cam_normal; /* the camera normal's node in patterns (camera.perturb set: build_camera.c) */
 	float *env_rgb;         /* the sky_sphere's pixels, RGB, kept for its light */
 	light_set lights;
+	/* POV-Ray's light_group and projected_through (build_light.c, world.c's light_reach): per
+	 * light_source of the scene (the first n_reach lights), its group (0: global) and the world of
+	 * its projected_through objects (or NULL); and each group's parent and global_lights. NULL
+	 * (0) when no light has either: every light lights every surface. */
+	struct world_reach *reach;
+	size_t n_reach;
+	uint32_t *group_parent; /* group g's at [g - 1] */
+	vec3 *light_sign;       /* per light_source (the first n_light_sign lights): its colour's signs
+				 * (POV-Ray's negative light); NULL when no colour is negative */
+	size_t n_light_sign;
+	bool *group_global;
+	size_t n_groups;
 	render_fog fogs[RENDER_MAX_FOGS]; /* the scene's fogs, the first RENDER_MAX_FOGS of them */
 	size_t n_fogs;
 	cam camera;
@@ -169,6 +186,8 @@ struct world {
 	render_media *media;    /* indexed like materials: an interior's media (render/media.h) */
 	const render_media **media_of; /* the integrator's table: NULL for materials without media */
 	bool has_media;
+	render_media atmosphere; /* POV-Ray's atmospheric media (build_material.c), with has_atmosphere */
+	bool has_atmosphere;
 	uint32_t *inst_top;     /* insts index -> top's instance index (UINT32_MAX: not in top) */
 	int *sss_group;         /* insts index -> its SSS volume: -1 alone, else the first member's index;
 				 * the one record of membership (the top level's sets are sss_set's) */
@@ -179,6 +198,13 @@ struct world {
 	world_stats stats;
 	render_scene rs;        /* the integrator's view of this world */
 };
+
+/* A light_source's reach (world.reach). */
+typedef struct world_reach {
+	uint32_t group;
+	world *through; /* owned, with its scene */
+	scene *through_sc; /* its geoms shallow copies of the parent's records */
+} world_reach;
 
 /* render/world.c: the top level's set of instance i (its SSS volume), which the build gives it. */
 uint32_t sss_set(const world *w, size_t i);

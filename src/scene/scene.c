@@ -14,6 +14,7 @@ scene *scene_new(void)
 		return NULL;
 	arena_init(&s->arena, 64 * 1024);
 	vecbuf_init(&s->lights, sizeof(scene_light));
+	vecbuf_init(&s->light_groups, sizeof(scene_light_group));
 	vecbuf_init(&s->objects, sizeof(scene_object));
 	vecbuf_init(&s->assets, sizeof(scene_asset));
 	vecbuf_init(&s->clamped_colors, sizeof(diag_loc));
@@ -47,6 +48,7 @@ void scene_free(scene *s)
 	for (scene_geom *g = s->geoms; g; g = g->next)
 		free_geom_arrays(g);
 	vecbuf_free(&s->lights);
+	vecbuf_free(&s->light_groups);
 	vecbuf_free(&s->objects);
 	vecbuf_free(&s->assets);
 	vecbuf_free(&s->clamped_colors);
@@ -415,6 +417,25 @@ static void dump_finish(FILE *o, const scene_finish *f)
 	fputc('\n', o);
 }
 
+/* A material's (or the atmosphere's) media, on its line. */
+static void dump_media(FILE *o, const scene_material *m)
+{
+	for (uint32_t k = 0; k < m->n_media; k++) {
+		const scene_media *md = &m->media[k];
+		fprintf(o, " media");
+		dump_v3(o, "absorption", md->absorption);
+		dump_v3(o, "emission", md->emission);
+		dump_v3(o, "scattering", md->scattering);
+		fprintf(o, " type %d eccentricity %g extinction %g method %d densities %u", md->scattering_type,
+			md->eccentricity, md->extinction, md->method, md->n_density);
+		for (uint32_t j = 0; j < md->n_density; j++) {
+			fprintf(o, " [");
+			scene_pigment_dump(o, md->density[j]);
+			fprintf(o, "]");
+		}
+	}
+}
+
 static void dump_material(FILE *o, const scene_material *m)
 {
 	fprintf(o, "material %u %s", m->id, scene_material_kind_name(m->kind));
@@ -436,20 +457,7 @@ static void dump_material(FILE *o, const scene_material *m)
 			fprintf(o, " fade_distance %g fade_power %g", m->fade_distance, m->fade_power);
 			dump_v3(o, "fade_color", m->fade_color);
 		}
-		for (uint32_t k = 0; k < m->n_media; k++) {
-			const scene_media *md = &m->media[k];
-			fprintf(o, " media");
-			dump_v3(o, "absorption", md->absorption);
-			dump_v3(o, "emission", md->emission);
-			dump_v3(o, "scattering", md->scattering);
-			fprintf(o, " type %d eccentricity %g extinction %g method %d densities %u", md->scattering_type,
-				md->eccentricity, md->extinction, md->method, md->n_density);
-			for (uint32_t j = 0; j < md->n_density; j++) {
-				fprintf(o, " [");
-				scene_pigment_dump(o, md->density[j]);
-				fprintf(o, "]");
-			}
-		}
+		dump_media(o, m);
 		fputc('\n', o);
 		if (m->kind == MAT_TEXTURE)
 			dump_finish(o, &m->finish);
@@ -739,6 +747,28 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " %d %d%s%s%s", l->area_n1, l->area_n2, l->circular ? " circular" : "",
 				l->orient ? " orient" : "", l->jitter ? " jitter" : "");
 		}
+		if (l->group)
+			fprintf(o, " group %u", l->group);
+		if (l->n_projected)
+			fprintf(o, " projected_through %u", l->n_projected);
+		fputc('\n', o);
+		for (uint32_t k = 0; k < l->n_projected; k++) {
+			fprintf(o, "  through geom %u", l->projected[k].geom->id);
+			dump_loc(o, l->projected[k].loc);
+			fputc('\n', o);
+			dump_xform(o, &l->projected[k].transform);
+		}
+	}
+	if (s->atmosphere) {
+		fprintf(o, "atmosphere");
+		dump_loc(o, s->atmosphere->loc);
+		dump_media(o, s->atmosphere);
+		fputc('\n', o);
+	}
+	for (size_t i = 0; i < s->light_groups.len; i++) {
+		const scene_light_group *g = &VECBUF_AT(&s->light_groups, scene_light_group, i);
+		fprintf(o, "light_group %zu parent %u global_lights %s", i + 1, g->parent, g->global_lights ? "on" : "off");
+		dump_loc(o, g->loc);
 		fputc('\n', o);
 	}
 	/* Oldest first: the lists are built newest first. */
@@ -781,6 +811,10 @@ void scene_dump(const scene *s, FILE *o)
 					ob->csg[k].id, ob->csg[k].operand);
 		}
 		dump_pov_flags(o, ob->pov_flags);
+		if (ob->light_group)
+			fprintf(o, " light_group %u", ob->light_group);
+		for (uint32_t k = 0; k < ob->n_parts; k++) /* a blob's component textures, part k + 1's */
+			fprintf(o, " part%u material %u", k + 1, ob->part_mat[k]->id);
 		dump_loc(o, ob->loc);
 		fputc('\n', o);
 		dump_xform(o, &ob->transform);

@@ -96,7 +96,24 @@ typedef struct scene_light {
 	 * placed; in the scene's arena. */
 	const struct scene_object *looks;
 	uint32_t n_looks;
+	/* POV-Ray's light_group: the group (1-based index of scene.light_groups) whose objects alone
+	 * the light lights; 0: a global light. */
+	uint32_t group;
+	/* POV-Ray's projected_through: the light reaches a point only through these objects (its
+	 * shadow ray must meet them, and only what lies before them shadows); in the scene's arena,
+	 * never placed in the scene, moved by the light's later transforms. */
+	const struct scene_object *projected;
+	uint32_t n_projected;
 } scene_light;
+
+/* POV-Ray's light_group: its objects are lit by its lights (scene_light.group) and those of the
+ * groups around it (parent, 1-based; 0: none); by the global lights only with global_lights on
+ * (the outermost group's word, as POV-Ray's flag set on every child). */
+typedef struct scene_light_group {
+	diag_loc loc;
+	uint32_t parent;
+	bool global_lights;
+} scene_light_group;
 
 typedef enum scene_shape_kind {
 	SHAPE_SPHERE,
@@ -299,6 +316,11 @@ typedef struct scene_object {
 	uint32_t csg_depth;
 	bool inverse; /* the object's own inverse: its inside is the outside of its surface */
 	bool clip_only; /* a clipped_by object: its inside clips, its surface is never seen */
+	uint32_t light_group; /* the innermost light_group holding it (1-based), 0: none */
+	/* A blob's component textures (geom/shape.h's shape_blob_comp.part): part k's material at
+	 * part_mat[k - 1] (in the arena); part 0 is the object's material. n_parts 0: none. */
+	const struct scene_material *const *part_mat;
+	uint32_t n_parts;
 } scene_object;
 
 /* POV-Ray 3.7's object flags (Parse_Object_Mods): hollow matters only for media; the others hide
@@ -365,6 +387,7 @@ typedef struct scene {
 	bool has_camera;
 	scene_camera camera;
 	vecbuf lights; /* scene_light */
+	vecbuf light_groups; /* scene_light_group; a light's or an object's group g is element g - 1 */
 	bool has_background;
 	vec3 background;
 	diag_loc background_loc;
@@ -375,6 +398,9 @@ typedef struct scene {
 	bool has_sky_sphere;
 	scene_sky_sphere sky_sphere;
 	scene_fog *fogs; /* every fog, newest first (they combine in any order) */
+	/* POV-Ray's atmospheric media (a `media` statement outside an interior): a part record whose
+	 * media fill the space outside every object (and inside hollow ones); NULL: none. */
+	const struct scene_material *atmosphere;
 	vecbuf objects; /* scene_object */
 	scene_geom *geoms; /* every geometry record, newest first */
 	uint32_t n_geoms;

@@ -65,8 +65,8 @@ sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0,
 // rule: box, plane
 box { -1, 1 }
 plane { y, 0 }
-// rule: mesh, triangle, smooth_triangle
-mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z } }
+// rule: mesh, triangle, smooth_triangle, tri_uv
+mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z uv_vectors <0, 0>, <1, 0>, <0, 1> } }
 mesh { file "model.obj" }
 // rule: mesh2, list
 mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, -z } uv_vectors { 3, <0, 0>, <1, 0>, <0, 1> }
@@ -80,6 +80,8 @@ subdivision_surface {
 subdivision_surface { file "cage.obj" scheme loop boundary edge_and_corner max_edge 1 }
 // rule: instance, union
 union { object { Ball } sphere { x, 0.5 } translate y }
+// rule: light_group
+light_group { light_source { <0, 9, 0> color 1 } sphere { -x, 0.5 } global_lights on translate y }
 // rule: material, material_item, sss_block, sss_param
 sphere { 0, 1 material { diffuse { color C } } }
 sphere { 0, 1 material { diffuse { image S } emission rgb 0.5 } }
@@ -156,9 +158,9 @@ object { Vase translate x }
 sor { 4, <0, 0>, <1, 0>, <0.5, 1>, <0.7, 2> open }
 prism { conic_sweep bezier_spline 0.5, 1, 4, <1, 0>, <1, 1>, <0, 1>, <1, 0> }
 sphere_sweep { b_spline 4, <0, 0, 0>, 0.5, <1, 1, 0> 0.5, <2, 0, 0>, 0.5, <3, 1, 0>, 0.5 tolerance 1e-4 }
-// rule: blob, blob_item, text
+// rule: blob, blob_item, blob_comp_mod, text
 blob { threshold 0.6 component 1, 1, <0, 0, 0> sphere { <1, 0, 0>, 1, strength 1 scale 2 }
-	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 } }
+	cylinder { <0, 0, 0>, <0, 1, 0>, 0.5, -0.5 pigment { rgb 0 } } }
 text { ttf "/usr/share/povray-3.7/include/timrom.ttf" "circe" 0.5, <0.1, 0, 0> }
 // rule: bicubic_patch, bicubic_item
 bicubic_patch { type 1 flatness 0.01 u_steps 3 v_steps 3 uv_vectors <0, 0>, <1, 0>, <1, 1>, <0, 1>

@@ -1,0 +1,2 @@
+media { absorption 0.1 }
+media { scattering { 1 } }

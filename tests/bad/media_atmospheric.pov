@@ -1,1 +1,0 @@
-media { scattering { 1, rgb 0.02 } }
