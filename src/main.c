@@ -888,6 +888,11 @@ static void report_render(const render_cli *o, const render_state *s, const rend
 			(unsigned long long)stats->sss_walks, (double)stats->sss_walks / (double)stats->sss_searches,
 			(double)stats->sss_walk_steps / (double)stats->sss_walks, (unsigned long long)stats->sss_walk_dropped,
 			SSS_WALK_MAX_STEPS);
+	if (!o->quiet && stats->sss_walks && stats->sss_walk_queries)
+		fprintf(stderr, "circe: sss: walks: %.4g of the interactions without a ray cast (inside a ball free of "
+				"surface), %.4g nearest-surface queries a walk\n",
+			(double)stats->sss_walk_skipped / (double)stats->sss_walk_steps,
+			(double)stats->sss_walk_queries / (double)stats->sss_walks);
 	if (!o->quiet)
 		report_noise(s, stats->seconds);
 }
@@ -1148,6 +1153,10 @@ int main(int argc, char **argv)
 	 * tests/render/determinism.sh). Read here once, before any build. */
 	const char *simd = getenv("CIRCE_SIMD");
 	bvh_set_simd(simd && !strcmp(simd, "sse2") ? BVH_SIMD_SSE2 : BVH_SIMD_AUTO);
+	/* CIRCE_WALK_SKIP=off: the volume walk casts every step (src/sss/README.md, "Skipping casts":
+	 * the same estimator; for the tests and bench/sss that compare the two in one binary). */
+	const char *skip = getenv("CIRCE_WALK_SKIP");
+	sss_walk_set_skip(!(skip && !strcmp(skip, "off")));
 	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
 	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */

@@ -1133,3 +1133,126 @@ vec3 bvh_offset_origin(vec3 p, vec3 n)
 	}
 	return v3(out[0], out[1], out[2]);
 }
+
+/* ---- Nearest surface ----------------------------------------------------------------------- */
+
+/* The squared distance from p to the triangle a, b, c, in double (Ericson 2005, "Real-Time
+ * Collision Detection", 5.1.5: the closest point by the Voronoi regions of the vertices, edges and
+ * face). The inputs are floats, so their differences are exact in double. */
+static double point_triangle_d2(dvec3 p, dvec3 a, dvec3 b, dvec3 c)
+{
+	dvec3 ab = d3_sub(b, a), ac = d3_sub(c, a), ap = d3_sub(p, a);
+	double d1 = d3_dot(ab, ap), d2 = d3_dot(ac, ap);
+	if (d1 <= 0.0 && d2 <= 0.0)
+		return d3_dot(ap, ap);
+	dvec3 bp = d3_sub(p, b);
+	double d3 = d3_dot(ab, bp), d4 = d3_dot(ac, bp);
+	if (d3 >= 0.0 && d4 <= d3)
+		return d3_dot(bp, bp);
+	double vc = d1 * d4 - d3 * d2;
+	if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+		dvec3 q = d3_sub(ap, d3_scale(ab, d1 / (d1 - d3)));
+		return d3_dot(q, q);
+	}
+	dvec3 cp = d3_sub(p, c);
+	double d5 = d3_dot(ab, cp), d6 = d3_dot(ac, cp);
+	if (d6 >= 0.0 && d5 <= d6)
+		return d3_dot(cp, cp);
+	double vb = d5 * d2 - d1 * d6;
+	if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+		dvec3 q = d3_sub(ap, d3_scale(ac, d2 / (d2 - d6)));
+		return d3_dot(q, q);
+	}
+	double va = d3 * d6 - d5 * d4;
+	if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
+		dvec3 q = d3_sub(bp, d3_scale(d3_sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+		return d3_dot(q, q);
+	}
+	/* inside the face: the distance to the plane */
+	dvec3 n = d3_cross(ab, ac);
+	double nn = d3_dot(n, n), h = d3_dot(ap, n);
+	if (!(nn > 0.0)) /* degenerate in double (the build left out those of zero area in float) */
+		return fmin(d3_dot(ap, ap), fmin(d3_dot(bp, bp), d3_dot(cp, cp)));
+	return h * h / nn;
+}
+
+/* The squared distance from p to the box lo, hi (0 inside; +inf for an empty child's box; no
+ * fmax: a libm call at -O2 without -ffinite-math-only). */
+static inline double point_box_d2(dvec3 p, float lo_x, float lo_y, float lo_z, float hi_x, float hi_y, float hi_z)
+{
+	if (!(lo_x <= hi_x))
+		return INFINITY;
+	double dx = p.x < lo_x ? lo_x - p.x : p.x > hi_x ? p.x - hi_x : 0.0;
+	double dy = p.y < lo_y ? lo_y - p.y : p.y > hi_y ? p.y - hi_y : 0.0;
+	double dz = p.z < lo_z ? lo_z - p.z : p.z > hi_z ? p.z - hi_z : 0.0;
+	return dx * dx + dy * dy + dz * dz;
+}
+
+float bvh_nearest(const bvh *b, vec3 p, float cap)
+{
+	if (!(cap > 0.0f))
+		return 0.0f;
+	if (b->num_nodes == 0 || !v3_is_finite(p))
+		return cap;
+	dvec3 pd = v3_to_d3(p);
+	double best = (double)cap * (double)cap; /* squared: what is at or beyond it is not looked at */
+	uint32_t width = b->width;
+	/* Children are pushed farthest first, so the nearest is looked at first and the best
+	 * distance falls early; a popped node whose box lies beyond the best is skipped. */
+	uint32_t stack[(BVH_MAX_WIDTH - 1) * BVH_MAX_DEPTH + BVH_MAX_WIDTH];
+	double stack_d2[(BVH_MAX_WIDTH - 1) * BVH_MAX_DEPTH + BVH_MAX_WIDTH];
+	int sp = 0;
+	bool found = false;
+	stack[sp] = 0, stack_d2[sp++] = 0.0;
+	while (sp > 0) {
+		--sp;
+		if (!(stack_d2[sp] < best))
+			continue;
+		uint32_t ni = stack[sp];
+		const uint32_t *child = node_children(b->nodes, width, ni);
+		const float *lx = node_plane(b->nodes, width, ni, 0), *ly = node_plane(b->nodes, width, ni, 1),
+			    *lz = node_plane(b->nodes, width, ni, 2), *hx = node_plane(b->nodes, width, ni, 3),
+			    *hy = node_plane(b->nodes, width, ni, 4), *hz = node_plane(b->nodes, width, ni, 5);
+		uint32_t order[BVH_MAX_WIDTH];
+		double dist[BVH_MAX_WIDTH];
+		int n = 0;
+		for (uint32_t k = 0; k < width; k++) {
+			double d2 = point_box_d2(pd, lx[k], ly[k], lz[k], hx[k], hy[k], hz[k]);
+			if (!(d2 < best) || child[k] == BVH_EMPTY)
+				continue;
+			if (child[k] & BVH_LEAF) { /* leaves at once: their triangles lower best for the rest */
+				uint32_t ref = child[k], count = leaf_count(ref);
+				const bvh_word *w = leaf_words(b, ref);
+				for (uint32_t g = 0; g < count; g += width) {
+					int m = (int)(count - g < width ? count - g : width);
+					const bvh_word *wg = w + GROUP_WORDS * (size_t)g;
+					for (int j = 0; j < m; j++) {
+						double t2 = point_triangle_d2(pd, v3_to_d3(group_vertex(wg, m, j, 0)),
+									      v3_to_d3(group_vertex(wg, m, j, 1)),
+									      v3_to_d3(group_vertex(wg, m, j, 2)));
+						if (t2 < best)
+							best = t2, found = true;
+					}
+				}
+				continue;
+			}
+			/* insertion by distance, farthest first */
+			int i = n++;
+			while (i > 0 && dist[i - 1] < d2)
+				order[i] = order[i - 1], dist[i] = dist[i - 1], i--;
+			order[i] = child[k], dist[i] = d2;
+		}
+		assert(sp + n <= (int)(sizeof stack / sizeof stack[0]));
+		for (int i = 0; i < n; i++)
+			stack[sp] = order[i], stack_d2[sp++] = dist[i];
+	}
+	/* Rounded down, and by a relative 2^-20 more: the double arithmetic's error (relative 1e-15
+	 * of the coordinates' differences) and the float result's rounding stay below the truth. */
+	if (!found)
+		return cap;
+	double d = sqrt(best) * (1.0 - 0x1p-20);
+	float f = (float)d;
+	if ((double)f > d)
+		f = nextafterf(f, 0.0f);
+	return f < cap ? f : cap;
+}

@@ -59,6 +59,15 @@ bool bvh_occluded(const bvh *b, const bvh_ray *ray);
  * non-finite axes, has no hits. */
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits);
 
+/* The distance from p to the nearest triangle of the mesh, or cap when none is nearer than cap
+ * (cap > 0; 0 for cap <= 0; cap for an empty bvh or a non-finite p): a lower bound for callers
+ * that need a ball free of surface (the volume walk skips the casts inside it, src/sss). The
+ * exact point-triangle distance at the leaves (in double), boxes nearer than the best so far
+ * visited nearest first; the result is rounded down by a relative 2^-20 and stays below the
+ * true distance but for an absolute error of about 1e-15 of the triangles' sizes, which a
+ * caller's own margin must cover. Degenerate triangles, never hit, are not counted either. */
+float bvh_nearest(const bvh *b, vec3 p, float cap);
+
 /* Bounds of the triangles that can be hit; false when there are none. */
 bool bvh_bounds(const bvh *b, vec3 *lo, vec3 *hi);
 /* Bytes held by the bvh (nodes and triangle copies), for statistics. */

@@ -285,3 +285,71 @@ uint32_t tlas_circle_set(const tlas *t, const tri_circle *q, uint32_t set, tri_c
 {
 	return sorted(hits, circle_tree(t, q, false, set, hits, max_hits), max_hits);
 }
+
+/* The squared distance from p to a node's box (0 inside). */
+static double node_d2(const bvh_node *nd, vec3 p)
+{
+	double d2 = 0.0;
+	float c[3] = {p.x, p.y, p.z};
+	for (int k = 0; k < 3; k++) {
+		double d = c[k] < nd->lo[k] ? (double)nd->lo[k] - c[k] : c[k] > nd->hi[k] ? (double)c[k] - nd->hi[k] : 0.0;
+		d2 += d * d;
+	}
+	return d2;
+}
+
+/* An instance's part of tlas_nearest_set: the world distance's lower bound, capped. */
+static float nearest_instance(const inst *in, const bvh_node *leaf, vec3 p, float cap)
+{
+	if (!(in->scale > 0.0f)) /* not a similarity: the world box's distance, a lower bound */
+		return (float)fmin((double)cap, sqrt(node_d2(leaf, p)) * (1.0 - 1e-5));
+	/* the float transforms are exact to a few ulps; 1e-5 of the distance is far more */
+	const double slack = 1.0 - 1e-5;
+	float d = bvh_nearest(in->geom, mul_point(in->w2o, p), (float)((double)cap / (in->scale * slack)));
+	return (float)fmin((double)cap, d * in->scale * slack);
+}
+
+float tlas_nearest_set(const tlas *t, vec3 p, uint32_t set, float cap)
+{
+	if (!(cap > 0.0f))
+		return 0.0f;
+	if (t->num_nodes == 0 || !v3_is_finite(p))
+		return cap;
+	float best = cap;
+	uint32_t stack[BVH_MAX_DEPTH + 2];
+	int sp = 0;
+	uint32_t ni = 0;
+	for (;;) {
+		const bvh_node *nd = &t->nodes[ni];
+		double b2 = (double)best * best;
+		if (nd->count & BVH_INNER) {
+			uint32_t c0 = nd->first, c1 = c0 + 1;
+			double d0 = node_d2(&t->nodes[c0], p), d1 = node_d2(&t->nodes[c1], p);
+			bool h0 = d0 < b2, h1 = d1 < b2;
+			if (h0 && h1 && d1 < d0) /* the nearer first */
+				c0 = c1, c1 = nd->first, h0 = h1 = true;
+			if (h0 && h1) {
+				assert(sp < BVH_MAX_DEPTH + 2);
+				stack[sp++] = c1;
+				ni = c0;
+				continue;
+			}
+			if (h0 || h1) {
+				ni = h0 ? c0 : c1;
+				continue;
+			}
+		} else {
+			for (uint32_t k = 0; k < nd->count; k++) {
+				const inst *in = &t->insts[t->order[nd->first + k]];
+				if (in->set != set)
+					continue;
+				float d = nearest_instance(in, nd, p, best);
+				if (d < best)
+					best = d;
+			}
+		}
+		if (sp == 0)
+			return best;
+		ni = stack[--sp];
+	}
+}

@@ -45,6 +45,12 @@ bool tlas_occluded(const tlas *t, const bvh_ray *ray);
 /* tlas_intersect over the instances whose set is `set` alone (the others are transparent). */
 bool tlas_intersect_set(const tlas *t, const bvh_ray *ray, uint32_t set, bvh_hit *hit);
 
+/* bvh_nearest over the instances whose set is `set`, in world space: a lower bound on the
+ * distance from p to their nearest triangle, or cap when none is nearer. An instance under a
+ * similarity transform scales its object-space distance by the scale (less a relative 1e-5 for
+ * the float transform); one under any other transform, a distance to its world box only. */
+float tlas_nearest_set(const tlas *t, vec3 p, uint32_t set, float cap);
+
 /* Every hit of the world-space circle q on instance `only` (or on all, TLAS_ALL_INSTANCES), with
  * positions and normals in world space and inst set. A circle is traced in an instance's own
  * space, which keeps it a circle only under a similarity transform (DESIGN.md): instances with a

@@ -452,6 +452,13 @@ static bool probe_closest(const void *ctx, const bvh_ray *ray, sss_probe_hit *h)
 	return true;
 }
 
+/* The walk's nearest surface (sss_probe_nearest_fn): the scene's, 0 (no ball) without it. */
+static float probe_nearest(const void *ctx, vec3 p, float cap)
+{
+	const probe_ctx *c = ctx;
+	return c->s->sss_nearest ? c->s->sss_nearest(c->s->user, c->at, p, cap) : 0.0f;
+}
+
 /* The disk comparator (King et al. 2013; src/sss/README.md "The disk comparator"): a probe
  * segment along n, t or b through the sphere of r_max, every hit on the same volume weighed by
  * MIS over the axes, one chosen by resampling as circle_entry does. */
@@ -469,7 +476,7 @@ static bool disk_entry(const render_scene *s, const render_sss *m, const render_
 	render_hit log[SSS_DISK_MAX_HITS + 1];
 	int n = 0;
 	probe_ctx ctx = {s, exit, v3_dot(exit->ng, n_out) >= 0.0f ? 1.0f : -1.0f, log, SSS_DISK_MAX_HITS + 1, &n};
-	sss_probe pr = {probe_closest, &ctx};
+	sss_probe pr = {probe_closest, &ctx, NULL};
 	sss_disk_hit hits[SSS_DISK_MAX_HITS];
 	bool more;
 	int k = sss_disk_gather(&m->profile, mm_per_unit, &f, &q, &pr, hits, SSS_DISK_MAX_HITS, &more);
@@ -521,11 +528,13 @@ static bool volume_entry(const render_scene *s, const render_sss *m, const rende
 	render_hit last;
 	int n = 0;
 	probe_ctx ctx = {s, exit, 1.0f, &last, 1, &n};
-	sss_probe pr = {probe_closest, &ctx};
+	sss_probe pr = {probe_closest, &ctx, s->sss_nearest ? probe_nearest : NULL};
 	sss_walk_result r = sss_walk(&m->medium, &pr, exit->p, exit->ng, exit->scale, w_in, g, SSS_WALK_MAX_STEPS);
 	out->sss_walks++;
 	out->sss_walk_dropped += r.status == SSS_WALK_STEP_LIMIT;
 	out->sss_walk_steps += (uint32_t)r.steps;
+	out->sss_walk_skipped += (uint32_t)r.skipped;
+	out->sss_walk_queries += (uint32_t)r.queries;
 	if (r.status == SSS_WALK_ABSORBED)
 		return false; /* an outcome of the walk, not a failure */
 	if (r.status != SSS_WALK_EXITED || n == 0 || last.prim != r.prim || !v3_is_finite(r.weight)) {

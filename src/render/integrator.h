@@ -120,6 +120,11 @@ typedef struct render_scene {
 	 * and the volume's walk. Needed when a material uses disk or volume. Thread-safe. */
 	bool (*sss_closest)(void *user, const render_hit *at, const render_ray *ray, float tmin, float tmax,
 			    render_hit *hit);
+	/* A lower bound on the distance from p to the SSS volume of `at` (what sss_closest traces),
+	 * or cap when it is at least cap away (tlas_nearest_set, bvh_nearest): the volume walk skips
+	 * the casts inside that ball (src/sss/README.md, "Skipping casts"). NULL: the walk casts
+	 * every step. Thread-safe. */
+	float (*sss_nearest)(void *user, const render_hit *at, vec3 p, float cap);
 	/* POV-Ray's fogs (fog.h), applied along camera rays and the mirror-like continuations of
 	 * them (a BSDF sample of density >= RENDER_FOG_MIRROR_PDF: POV-Ray's reflection and
 	 * refraction rays). Not along diffuse or glossy path rays: a fog is no light of the scene
@@ -222,7 +227,9 @@ typedef struct render_sample {
 	uint32_t sss_walks;    /* searches that were volume walks (volume; auto where it walked) */
 	uint32_t sss_walk_dropped; /* of them, walks that reached SSS_WALK_MAX_STEPS: dropped (weight 0,
 				    * also in sss_nohit), biased low, so counted and printed */
-	uint32_t sss_walk_steps;   /* the interactions (ray casts) of those walks: their cost */
+	uint32_t sss_walk_steps;   /* the interactions of those walks: their cost */
+	uint32_t sss_walk_skipped; /* of them, those whose ray cast a ball free of surface answered */
+	uint32_t sss_walk_queries; /* the walks' nearest-surface queries (sss_nearest) */
 } render_sample;
 
 /* Traces one path from the camera ray; g supplies every random number (its camera dimensions

@@ -33,7 +33,7 @@ typedef struct pool {
 	_Atomic uint64_t samples_done; /* pixel samples of the current pass, for progress */
 	_Atomic uint64_t dropped;      /* samples dropped in the current pass */
 	_Atomic uint64_t sss_searches, sss_nohit, sss_overflow, sss_walks, sss_walk_dropped,
-		sss_walk_steps; /* of the current pass */
+		sss_walk_steps, sss_walk_skipped, sss_walk_queries; /* of the current pass */
 } pool;
 
 static double now_s(void)
@@ -55,7 +55,7 @@ static bool interrupted(const render_job *job)
 }
 
 /* Renders samples [s0, s1) of one pixel (x, y) from px into px. */
-static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[6])
+static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[9])
 {
 	const render_job *job = p->job;
 	for (uint32_t s = p->s0; s < p->s1; s++) {
@@ -72,6 +72,8 @@ static void render_pixel(pool *p, int x, int y, film_pixel *px, uint64_t counts[
 		counts[4] += smp.sss_walks;
 		counts[5] += smp.sss_walk_dropped;
 		counts[6] += smp.sss_walk_steps;
+		counts[7] += smp.sss_walk_skipped;
+		counts[8] += smp.sss_walk_queries;
 		if (!film_pixel_add(px, &smp, job->scene->light_sign != NULL)) {
 			render_sample zero = {0};
 			film_pixel_add(px, &zero, false);
@@ -90,8 +92,8 @@ static bool render_tile(pool *p, int tile)
 	int xa = f->ax0 + tx * p->tile, ya = f->ay0 + ty * p->tile;
 	int xb = xa + p->tile < f->ax1 ? xa + p->tile : f->ax1,
 	    yb = ya + p->tile < f->ay1 ? ya + p->tile : f->ay1;
-	uint64_t counts[7] = {0, 0, 0, 0, 0, 0, 0}; /* dropped, SSS searches, no-hits, overflows, walks, walks
-						     * dropped, walk interactions */
+	uint64_t counts[9] = {0}; /* dropped, SSS searches, no-hits, overflows, walks, walks dropped, walk
+				   * interactions, skipped casts, nearest queries */
 	for (int y = ya; y < yb; y++) {
 		if (interrupted(p->job))
 			return false;
@@ -115,6 +117,8 @@ static bool render_tile(pool *p, int tile)
 	atomic_fetch_add(&p->sss_walks, counts[4]);
 	atomic_fetch_add(&p->sss_walk_dropped, counts[5]);
 	atomic_fetch_add(&p->sss_walk_steps, counts[6]);
+	atomic_fetch_add(&p->sss_walk_skipped, counts[7]);
+	atomic_fetch_add(&p->sss_walk_queries, counts[8]);
 	return true;
 }
 
@@ -247,6 +251,8 @@ static bool run_pass(pool *p, int workers, uint32_t n, double t0, double npix)
 	atomic_store(&p->sss_walks, 0);
 	atomic_store(&p->sss_walk_dropped, 0);
 	atomic_store(&p->sss_walk_steps, 0);
+	atomic_store(&p->sss_walk_skipped, 0);
+	atomic_store(&p->sss_walk_queries, 0);
 	p->active = workers;
 	p->generation++;
 	pthread_cond_broadcast(&p->start);
@@ -270,6 +276,8 @@ static size_t commit_pass(pool *p, render_stats *total, size_t active)
 	total->sss_walks += atomic_load(&p->sss_walks);
 	total->sss_walk_dropped += atomic_load(&p->sss_walk_dropped);
 	total->sss_walk_steps += atomic_load(&p->sss_walk_steps);
+	total->sss_walk_skipped += atomic_load(&p->sss_walk_skipped);
+	total->sss_walk_queries += atomic_load(&p->sss_walk_queries);
 	total->passes++;
 	if (ad->threshold > 0.0 && adaptive_is_check(ad, p->film->spp))
 		active = adaptive_check(p->film, ad, p->film->spp);

@@ -79,7 +79,9 @@ typedef struct render_stats {
 	uint64_t sss_overflow; /* of them, those with more hits than kept */
 	uint64_t sss_walks;    /* of them, volume walks (every search of volume, auto's walks) */
 	uint64_t sss_walk_dropped; /* of the walks, those that reached their step bound (dark, counted) */
-	uint64_t sss_walk_steps;   /* the walks' interactions (ray casts) */
+	uint64_t sss_walk_steps;   /* the walks' interactions */
+	uint64_t sss_walk_skipped; /* of them, those whose ray cast was skipped (a ball free of surface) */
+	uint64_t sss_walk_queries; /* the walks' nearest-surface queries */
 	double seconds;	      /* wall time of render_run */
 	double samples_per_s; /* pixel samples committed per second */
 	int passes;	      /* committed passes */

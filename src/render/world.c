@@ -183,6 +183,30 @@ static bool world_sss_closest(void *user, const render_hit *at, const render_ray
 	return true;
 }
 
+/* render_scene.sss_nearest: the distance from p to the SSS volume of `at` (its group's
+ * instances through the top level, or its own mesh), a lower bound, capped. A CSG operand's
+ * boundary is a part of its mesh, so the mesh's distance bounds it too. */
+static float world_sss_nearest(void *user, const render_hit *at, vec3 p, float cap)
+{
+	const world *w = user;
+	if (!w->top || at->object >= w->n_insts)
+		return 0.0f;
+	if (w->sss_group[at->object] >= 0)
+		return tlas_nearest_set(w->top, p, sss_set(w, at->object), cap);
+	const world_inst *in = &w->insts[at->object];
+	if (!in->g->b)
+		return cap;
+	if (in->identity)
+		return bvh_nearest(in->g->b, p, cap);
+	double sc;
+	if (!xform_is_similarity(&in->xf, &sc) || !(sc > 0.0))
+		return 0.0f; /* no ball: the walk casts */
+	const double slack = 1.0 - 1e-5; /* the transform's rounding */
+	vec3 q = d3v(xform_inv_point(&in->xf, v3_to_d3(p)));
+	float d = bvh_nearest(in->g->b, q, (float)((double)cap / (sc * slack)));
+	return (float)fmin((double)cap, d * sc * slack);
+}
+
 /* render_scene.occluded: any hit on an instance that casts shadows (not no_shadow). */
 static bool world_occluded(void *user, const render_ray *ray, float tmin, float tmax)
 {
@@ -534,7 +558,7 @@ void world_bind(world *w)
 			       .shade = world_shade, .materials = w->bsdfs, .material_count = w->n_materials,
 			       .lights = &w->lights, .sss = w->has_sss ? w->sss_of : NULL, .circle = world_circle,
 			       .circle_surface = world_circle_surface,
-			       .sss_closest = world_sss_closest, .fogs = w->fogs, .fog_count = w->n_fogs,
+			       .sss_closest = world_sss_closest, .sss_nearest = world_sss_nearest, .fogs = w->fogs, .fog_count = w->n_fogs,
 			       .media = w->has_media ? w->media_of : NULL, .density = world_density,
 			       .hollow = world_hollow, .light_reach = w->reach ? world_light_reach : NULL,
 			       .light_sign = w->light_sign, .n_light_sign = w->n_light_sign,

@@ -25,9 +25,15 @@ static bool probe_mesh_closest(const void *ctx, const bvh_ray *ray, sss_probe_hi
 	return true;
 }
 
+static float probe_mesh_nearest(const void *ctx, vec3 p, float cap)
+{
+	const sss_probe_mesh *pm = ctx;
+	return bvh_nearest(pm->bvh, p, cap);
+}
+
 sss_probe sss_probe_of_mesh(const sss_probe_mesh *pm)
 {
-	return (sss_probe){probe_mesh_closest, pm};
+	return (sss_probe){probe_mesh_closest, pm, probe_mesh_nearest};
 }
 
 int sss_probe_all(const sss_probe *pr, const bvh_ray *ray, sss_probe_hit *hits, int max_hits, bool *more)

@@ -27,9 +27,16 @@ typedef struct sss_probe_hit {
  * false for a miss. Must be thread-safe for concurrent calls with the same ctx. */
 typedef bool (*sss_probe_fn)(const void *ctx, const bvh_ray *ray, sss_probe_hit *hit);
 
+/* A lower bound on the distance from p to the object's surface, or cap (> 0) when it is at
+ * least cap away (accel's bvh_nearest, tlas_nearest_set): the ball of that radius about p holds
+ * no surface, so a walk's ray that stays inside it cannot hit one (walk.c skips the cast). 0 is
+ * always a valid answer. Thread-safe like sss_probe_fn. */
+typedef float (*sss_probe_nearest_fn)(const void *ctx, vec3 p, float cap);
+
 typedef struct sss_probe {
 	sss_probe_fn closest;
 	const void *ctx;
+	sss_probe_nearest_fn nearest; /* NULL: not known (the walk casts every step) */
 } sss_probe;
 
 /* A mesh in world space and its BVH (bvh_build over the same positions and indices). */
@@ -38,7 +45,8 @@ typedef struct sss_probe_mesh {
 	const mesh *mesh;
 } sss_probe_mesh;
 
-/* The probe of an sss_probe_mesh (ctx points to it and must outlive the probe). */
+/* The probe of an sss_probe_mesh (ctx points to it and must outlive the probe), with the nearest
+ * surface by bvh_nearest. */
 sss_probe sss_probe_of_mesh(const sss_probe_mesh *pm);
 
 /* Every hit along the ray with t in [tmin, tmax], ascending, by repeated closest-hit queries:

@@ -305,6 +305,71 @@ static double walk_path_pdf(const walk_guide *gd, const walk_dir *wd, double sig
 	return (1.0 - gd->frac) * classic + gd->frac * guided;
 }
 
+/* ---- skipping casts (README.md, "Skipping casts") ----------------------------------------------- */
+
+/* Below this many mean free paths of the hero channel a ball saves (about (r / mfp)^2 / 2 steps
+ * of a diffusing walk) less than its query costs: the next query waits, twice as long each time
+ * in a row, up to WALK_BALL_WAIT steps. */
+#ifndef WALK_BALL_MIN
+#define WALK_BALL_MIN 3.0
+#endif
+#ifndef WALK_BALL_WAIT
+#define WALK_BALL_WAIT 16
+#endif
+/* The query looks no farther than this many mean free paths (a larger ball would outlast the
+ * walk; a nearer cap prunes more of the tree). */
+#ifndef WALK_BALL_CAP
+#define WALK_BALL_CAP 64.0
+#endif
+
+/* A ball free of the object's surface: centre c, radius r (0: none), and the queries' back-off. */
+typedef struct walk_ball {
+	vec3 c;
+	double r;
+	int wait, backoff;
+} walk_ball;
+
+static bool walk_skip = true;
+void sss_walk_set_skip(bool on) { walk_skip = on; }
+
+/* Whether the ball about p of radius `need` is free of surface: inside the ball known, or in a
+ * new one asked of the probe at p when a query is due. mfp: the hero's mean free path. */
+static bool walk_ball_holds(walk_ball *b, const sss_probe *pr, vec3 p, double need, double mfp,
+			    sss_walk_result *res)
+{
+	if (b->r > 0.0) {
+		vec3 d = v3_sub(p, b->c);
+		double s = sqrt((double)d.x * d.x + (double)d.y * d.y + (double)d.z * d.z);
+		if (need + s < b->r) {
+			res->skipped++;
+			return true;
+		}
+	}
+	if (!pr->nearest || !walk_skip)
+		return false;
+	if (b->wait > 0) {
+		b->wait--;
+		return false;
+	}
+	float cap = (float)(WALK_BALL_CAP * mfp);
+	if (!(cap > 0.0f))
+		return false;
+	res->queries++;
+	b->c = p;
+	b->r = (double)pr->nearest(pr->ctx, p, cap);
+	if (!(b->r >= WALK_BALL_MIN * mfp)) {
+		b->wait = b->backoff;
+		b->backoff = b->backoff < WALK_BALL_WAIT ? 2 * b->backoff : WALK_BALL_WAIT;
+	} else {
+		b->backoff = 1;
+	}
+	if (need < b->r) {
+		res->skipped++;
+		return true;
+	}
+	return false;
+}
+
 /* One of the few functions over 100 lines left whole (issue 16): the walk is one loop whose
  * steps (the boundary hit, the free flight with its channel pdfs, the exit test, the reentry
  * after a step that lands outside, the scattering) read and write the same variables of its
@@ -338,6 +403,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	double stretch = 1.0;
 	int stuck = 0;		  /* reentries in a row */
 	double last_scale = x_scale; /* the largest triangle scale met: the skin's scale ahead */
+	walk_ball ball = {.c = org, .r = 0.0, .wait = 0, .backoff = 1};
 	for (res.steps = 0; res.steps < max_steps;) {
 		/* the hero's free path (stretched when the direction was guided); the densities of
 		 * every channel and strategy for the path so far are kept relative to the hero's */
@@ -352,11 +418,21 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		 * left through a crack of an open mesh ends LOST within that many steps instead of
 		 * wandering in the void. */
 		float reach = INFINITY;
-		if (res.steps % WALK_WHOLE_EVERY != 0 && t < INFINITY)
-			reach = (float)(t + WALK_REACH * walk_max(last_scale, walk_max(fabs(org.x), walk_max(fabs(org.y), fabs(org.z)))));
-		bvh_ray ray = {org, w, 0.0f, reach};
+		bool bounded = res.steps % WALK_WHOLE_EVERY != 0 && t < INFINITY, hit = false;
+		double skin = 0.0;
+		if (bounded) {
+			skin = WALK_REACH * walk_max(last_scale, walk_max(fabs(org.x), walk_max(fabs(org.y), fabs(org.z))));
+			reach = (float)(t + skin);
+		}
 		sss_probe_hit h;
-		bool hit = pr->closest(pr->ctx, &ray, &h);
+		/* Inside a ball known to be free of surface the bounded cast can only miss (README.md,
+		 * "Skipping casts"): its answer is known without it. The skin's margin again, and a
+		 * relative 1e-6, cover the cast's rounding and the float ray's. */
+		if (!bounded || !walk_ball_holds(&ball, pr, org, (double)reach * (1.0 + 1e-6) + skin, 1.0 / sigma_t[hero],
+						 &res)) {
+			bvh_ray ray = {org, w, 0.0f, reach};
+			hit = pr->closest(pr->ctx, &ray, &h);
+		}
 		if (!hit && !(reach < INFINITY)) {
 			res.status = SSS_WALK_LOST;
 			return res;

@@ -56,6 +56,8 @@ typedef struct sss_walk_result {
 	int reflections; /* boundary hits that reflected back inside (Fresnel or total internal) */
 	int reentries;	 /* boundary hits from outside, after a collision point rounded across the
 			  * surface: the walk steps back in (README.md); about 1 in 10^6 interactions */
+	int queries;	 /* nearest-surface queries asked of the probe (README.md, "Skipping casts") */
+	int skipped;	 /* interactions whose ray cast was skipped: inside a ball free of surface */
 } sss_walk_result;
 
 /* The default bound on interactions per walk; reaching it is counted, never silent (the renderer
@@ -78,6 +80,11 @@ typedef struct sss_walk_result {
  * boundary's weight is 1 and the radiance scale eta^2 of entering cancels at the exit. */
 sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, vec3 ng, float x_scale, vec3 w,
 			 rng *g, int max_steps);
+
+/* Whether walks skip the casts that a ball free of surface answers (the default, true; the probe
+ * must have `nearest`): the same walks either way, the casts a walk makes aside (README.md,
+ * "Skipping casts"). For tests and benchmarks; set it before walks run (not thread-safe). */
+void sss_walk_set_skip(bool on);
 
 /* Dwivedi's diffusion length nu0 (in mean free paths) of single-scattering albedo alpha: the
  * root of 1 = alpha nu0/2 ln((nu0 + 1)/(nu0 - 1)) by d'Eon & Krivanek 2020's fit (eq. 67);

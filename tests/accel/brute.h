@@ -188,6 +188,92 @@ static inline bvh_ray test_random_ray(const mesh *m, vec3 lo, vec3 hi, rng *g)
 /* The comparisons of the tests (need check.h included first). */
 #define MAX_HITS 4096
 
+/* The distance from p to segment a b, in double. */
+static inline double brute_segment_distance(dvec3 p, dvec3 a, dvec3 b)
+{
+	dvec3 ab = d3_sub(b, a), ap = d3_sub(p, a);
+	double l2 = d3_dot(ab, ab), t = l2 > 0.0 ? d3_dot(ap, ab) / l2 : 0.0;
+	t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+	return d3_length(d3_sub(ap, d3_scale(ab, t)));
+}
+
+/* The distance from p to the nearest triangle that the BVH keeps, in double, another way than
+ * bvh_nearest's (Voronoi regions): the foot of the perpendicular on the plane when its
+ * barycentrics are all >= 0, else the nearest of the three edges. */
+static inline double brute_nearest(const brute *m, vec3 p)
+{
+	double best = INFINITY;
+	dvec3 pd = v3_to_d3(p);
+	for (uint32_t f = 0; f < m->n; f++) {
+		if (m->skip[f])
+			continue;
+		dvec3 a = v3_to_d3(m->v[3 * f]), b = v3_to_d3(m->v[3 * f + 1]), c = v3_to_d3(m->v[3 * f + 2]);
+		dvec3 n = d3_cross(d3_sub(b, a), d3_sub(c, a));
+		double nn = d3_dot(n, n), d = INFINITY;
+		if (nn > 0.0) {
+			double h = d3_dot(d3_sub(pd, a), n) / nn;
+			dvec3 q = d3_sub(pd, d3_scale(n, h)); /* the foot on the plane */
+			double wa = d3_dot(d3_cross(d3_sub(b, q), d3_sub(c, q)), n);
+			double wb = d3_dot(d3_cross(d3_sub(c, q), d3_sub(a, q)), n);
+			double wc = d3_dot(d3_cross(d3_sub(a, q), d3_sub(b, q)), n);
+			if (wa >= 0.0 && wb >= 0.0 && wc >= 0.0)
+				d = fabs(h) * sqrt(nn);
+		}
+		if (!(d < INFINITY)) {
+			d = brute_segment_distance(pd, a, b);
+			d = fmin(d, brute_segment_distance(pd, b, c));
+			d = fmin(d, brute_segment_distance(pd, c, a));
+		}
+		best = fmin(best, d);
+	}
+	return best;
+}
+
+/* bvh_nearest against brute_nearest at random points: the enlarged bounds (far and inside), and
+ * points of the surface moved along a random direction by 1e-6 to 1e-1 of the extent (near). The
+ * BVH's must be a lower bound (within the absolute 1e-12 of the extent that rounding may take)
+ * and tight (within 1e-5); with a cap, the cap wherever the brute force's distance is beyond it. */
+static inline void check_nearest(const char *name, const mesh *m, const brute *bf, const bvh *b, long count,
+				 uint64_t seed)
+{
+	vec3 lo, hi;
+	mesh_bounds(m, &lo, &hi);
+	vec3 ext = v3_sub(hi, lo);
+	double extent = v3_length(ext);
+	rng g;
+	rng_seed(&g, seed, 3);
+	long bad = 0, capped = 0, near = 0;
+	for (long i = 0; i < count; i++) {
+		vec3 p;
+		if (i % 2 == 0) {
+			p = v3(lo.x - 0.5f * ext.x + 2.0f * ext.x * rng_float(&g), lo.y - 0.5f * ext.y + 2.0f * ext.y * rng_float(&g),
+			       lo.z - 0.5f * ext.z + 2.0f * ext.z * rng_float(&g));
+		} else {
+			vec3 s = test_point_on(m, rng_below(&g, m->num_triangles), &g);
+			p = v3_madd(s, test_unit_vector(&g), (float)(extent * 1e-6 * pow(1e5, rng_double(&g))));
+			near++;
+		}
+		double want = brute_nearest(bf, p);
+		float got = bvh_nearest(b, p, INFINITY);
+		float cap = (float)(extent * 0.2 * rng_double(&g));
+		float got_cap = bvh_nearest(b, p, cap);
+		bool ok = got <= want + 1e-12 * extent && got >= want * (1.0 - 1e-5) - 1e-12 * extent;
+		if (want >= cap)
+			ok = ok && got_cap == cap, capped++;
+		else
+			ok = ok && got_cap == got;
+		if (!ok && bad++ < 5)
+			CHECK(0, "%s point %ld (%.9g %.9g %.9g): bvh %.17g (cap %.9g: %.17g), brute %.17g", name, i, p.x, p.y,
+			      p.z, got, cap, got_cap, want);
+	}
+	CHECK(bad == 0, "%s: %ld of %ld nearest distances differ", name, bad, count);
+	CHECK(capped > count / 20 && capped < count - count / 20, "%s: %ld of %ld capped", name, capped, count);
+	CHECK(bvh_nearest(b, v3(NAN, 0, 0), 1.0f) == 1.0f && bvh_nearest(b, lo, 0.0f) == 0.0f &&
+		      bvh_nearest(b, lo, -1.0f) == 0.0f,
+	      "%s: nearest's edge cases", name);
+	printf("%s: %ld nearest points (%ld near the surface, %ld capped), %ld differ\n", name, count, near, capped, bad);
+}
+
 static inline void check_rays(const char *name, const mesh *m, const brute *bf, const bvh *b, long count, uint64_t seed)
 {
 	vec3 lo, hi;
@@ -261,6 +347,7 @@ static inline void check_mesh_file(const char *rel, long rays, long circles)
 		brute bf = brute_make(&m);
 		check_rays(rel, &m, &bf, b, rays, 11);
 		check_circles(rel, &m, &bf, b, circles, circles, 12);
+		check_nearest(rel, &m, &bf, b, circles / 50, 13);
 		brute_free(&bf);
 		bvh_free(b);
 	}

@@ -74,6 +74,56 @@ static void check_canonical_order(const mesh *m)
 	free(pos), free(ix);
 }
 
+/* tlas_nearest_set against the instances flattened into world space (bvh_nearest on each copy):
+ * a lower bound always; equal within the float transforms' rounding where every instance is a
+ * similarity (a non-uniform scale gives its box's distance, still a lower bound). */
+static void check_nearest_set(const tlas_instance *in, int n, const mesh *const meshes[2], bvh *const geoms[2], rng *g)
+{
+	bvh **flat = malloc((size_t)n * sizeof *flat);
+	for (int i = 0; i < n; i++) {
+		const mesh *src = meshes[in[i].geom == geoms[0] ? 0 : 1];
+		mesh w = *src;
+		w.positions = malloc(w.num_vertices * sizeof(vec3));
+		for (uint32_t v = 0; v < w.num_vertices; v++)
+			w.positions[v] = d3_to_v3(xform_point(&in[i].to_world, v3_to_d3(src->positions[v])));
+		flat[i] = bvh_build(w.positions, w.num_vertices, w.indices, w.num_triangles);
+		free(w.positions);
+	}
+	tlas *t = tlas_build(in, (uint32_t)n);
+	long count = test_count(3000), bad = 0, tight = 0, uniform_sets = 0;
+	for (long k = 0; k < count; k++) {
+		vec3 p = v3(50.0f * rng_float(g) - 25.0f, 50.0f * rng_float(g) - 25.0f, 50.0f * rng_float(g) - 25.0f);
+		uint32_t set = (uint32_t)(k % 3);
+		float cap = k % 2 ? INFINITY : 10.0f * rng_float(g);
+		float want = cap;
+		bool all_similar = true;
+		for (int i = 0; i < n; i++)
+			if (in[i].set == set) {
+				want = fminf(want, bvh_nearest(flat[i], p, cap));
+				double sc;
+				all_similar = all_similar && xform_is_similarity(&in[i].to_world, &sc);
+			}
+		float got = tlas_nearest_set(t, p, set, cap);
+		bool ok = got <= want * (1.0f + 1e-5f) + 1e-5f && got <= cap;
+		if (all_similar) {
+			uniform_sets++;
+			ok = ok && got >= want * (1.0f - 1e-4f) - 1e-5f;
+		}
+		tight += got >= want * 0.999f;
+		if (!ok && bad++ < 5)
+			CHECK(0, "nearest %ld (set %u, cap %g): tlas %.9g, flattened %.9g", k, set, cap, got, want);
+	}
+	CHECK(bad == 0 && tight > count / 2, "nearest: %ld of %ld differ (%ld tight, %ld similar sets)",
+	      bad, count, tight, uniform_sets);
+	CHECK(tlas_nearest_set(t, v3(NAN, 0, 0), 0, 2.0f) == 2.0f && tlas_nearest_set(t, v3(0, 0, 0), 0, 0.0f) == 0.0f,
+	      "nearest's edge cases");
+	printf("tlas nearest: %ld points, %ld tight, %ld differ\n", count, tight, bad);
+	tlas_free(t);
+	for (int i = 0; i < n; i++)
+		bvh_free(flat[i]);
+	free(flat);
+}
+
 int main(void)
 {
 	test_simd_from_env();
@@ -207,6 +257,13 @@ int main(void)
 	}
 	CHECK(cbad == 0 && ctotal > 0, "circles: %ld differ (%ld hits)", cbad, ctotal);
 	check_canonical_order(&bunny);
+	check_nearest_set(in, 40, meshes, geoms, &g);
+	static tlas_instance similar[40]; /* the same without the non-uniform ones */
+	int ns = 0;
+	for (int i = 0; i < 40; i++)
+		if (i % 10 != 9)
+			similar[ns++] = in[i];
+	check_nearest_set(similar, ns, meshes, geoms, &g);
 	tlas_free(t);
 	bvh_free(geoms[0]), bvh_free(geoms[1]);
 	mesh_free(&bunny), mesh_free(&sphere);

@@ -294,7 +294,7 @@ static void check_density(void)
 	sss_disk_hit hits[4];
 	sss_disk_probe q = {v3(0, 0, 1), v3(0, 0, -1), 0.0f, 0, r_max};
 	quadric s = {d3(0, 0, 0), 1.0, false};
-	sss_probe pr = {quadric_closest, &s};
+	sss_probe pr = {quadric_closest, &s, NULL};
 	CHECK(sss_disk_gather(&p, 1.0, &f, &q, &pr, hits, 4, NULL) == 0, "hits on an empty probe");
 	vec3 w;
 	float prob;

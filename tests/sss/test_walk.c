@@ -477,6 +477,66 @@ static void check_auto_slab(void)
 	}
 }
 
+/* A unit vector from the index i (deterministic, spread over the sphere). */
+static vec3 test_unit_vector_of(long i)
+{
+	double z = 1.0 - 2.0 * fmod(0.6180339887 * (double)i, 1.0), phi = 2.0 * PI * fmod(0.7548776662 * (double)i, 1.0);
+	double s = sqrt(fmax(0.0, 1.0 - z * z));
+	return v3((float)(s * cos(phi)), (float)(s * sin(phi)), (float)z);
+}
+
+/* A probe whose nearest surface lies: always the cap (no surface anywhere), for check_skip. */
+static float liar_nearest(const void *ctx, vec3 p, float cap)
+{
+	(void)ctx, (void)p;
+	return cap;
+}
+
+static bool same_walk(const sss_walk_result *a, const sss_walk_result *b)
+{
+	return a->status == b->status && a->steps == b->steps && a->reflections == b->reflections &&
+	       a->reentries == b->reentries && memcmp(&a->p, &b->p, sizeof a->p) == 0 &&
+	       memcmp(&a->weight, &b->weight, sizeof a->weight) == 0 && a->prim == b->prim;
+}
+
+/* Skipping casts inside a ball free of surface (README.md, "Skipping casts") changes no walk: a
+ * dense, bright medium (hundreds of interactions a walk, most of them far from the surface) in
+ * o walks the same with the nearest-surface query and without it, the same random numbers giving
+ * the same exits, weights and steps bit for bit, while most casts are skipped; sss_walk_set_skip
+ * (false) asks no query. A probe that claims there is no surface near makes the walks differ: the
+ * comparison can fail. */
+static void check_skip(const char *name, object *o, vec3 entry, vec3 ng)
+{
+	sss_walk_medium m = {{200, 150, 100}, {0.2, 0.5, 1.0}, 0.3, false, 1.3};
+	sss_probe plain = o->pr, liar = o->pr;
+	plain.nearest = NULL, liar.nearest = liar_nearest;
+	long n = test_scaled(2000), differ = 0, lied = 0, steps = 0, skipped = 0, queries = 0, off_queries = 0, exited = 0;
+	for (long i = 0; i < n; i++) {
+		rng r0, r1, r2, r3;
+		rng_seed(&r0, 77, (uint64_t)i), rng_seed(&r1, 77, (uint64_t)i), rng_seed(&r2, 77, (uint64_t)i);
+		rng_seed(&r3, 77, (uint64_t)i);
+		vec3 w = v3_normalize(v3_add(v3_neg(ng), v3_scale(test_unit_vector_of(i), 0.5f)));
+		sss_walk_result a = sss_walk(&m, &o->pr, entry, ng, 0.0f, w, &r0, SSS_WALK_MAX_STEPS);
+		sss_walk_result b = sss_walk(&m, &plain, entry, ng, 0.0f, w, &r1, SSS_WALK_MAX_STEPS);
+		sss_walk_result c = sss_walk(&m, &liar, entry, ng, 0.0f, w, &r2, SSS_WALK_MAX_STEPS);
+		sss_walk_set_skip(false);
+		sss_walk_result d = sss_walk(&m, &o->pr, entry, ng, 0.0f, w, &r3, SSS_WALK_MAX_STEPS);
+		sss_walk_set_skip(true);
+		differ += !same_walk(&a, &b) || !same_walk(&d, &b);
+		lied += !same_walk(&c, &b);
+		steps += a.steps, skipped += a.skipped, queries += a.queries, off_queries += d.queries + b.queries;
+		exited += a.status == SSS_WALK_EXITED;
+		CHECK(b.skipped == 0 && d.skipped == 0, "%s walk %ld: skipped casts without the query", name, i);
+	}
+	printf("skip %s: %ld walks, %.1f interactions, %.3f of them without a cast, %.2f queries a walk; %ld differ, "
+	       "%ld with a lying probe\n",
+	       name, n, (double)steps / n, (double)skipped / steps, (double)queries / n, differ, lied);
+	CHECK(differ == 0, "%s: %ld of %ld walks differ with the skip", name, differ, n);
+	CHECK(skipped > steps / 2 && off_queries == 0 && exited > n / 4, "%s: %ld of %ld casts skipped, %ld exited", name,
+	      skipped, steps, exited);
+	CHECK(lied > n / 10, "%s: a lying probe changed only %ld of %ld walks", name, lied, n);
+}
+
 int main(void)
 {
 	check_basics();
@@ -496,6 +556,7 @@ int main(void)
 	const double s_grey[3] = {3, 3, 3}, s_rgb[3] = {1, 3, 6};
 	check_energy("box grey g 0.7 eta 1.4", &box, v3(0.2f, -0.3f, 1.0f), v3(0, 0, 1), s_grey, 0.7, 1.4);
 	check_energy("box rgb g 0 eta 1.4", &box, v3(0.2f, -0.3f, 1.0f), v3(0, 0, 1), s_rgb, 0.0, 1.4);
+	check_skip("box", &box, v3(0.2f, -0.3f, 1.0f), v3(0, 0, 1));
 	object_free(&box);
 	CHECK(prim_sphere(v3(0, 0, 0), 1.0f, 48, &sphere.m), "prim_sphere");
 	object_init(&sphere);
@@ -507,6 +568,7 @@ int main(void)
 	if (v3_dot(n, centroid) < 0.0f)
 		n = v3_neg(n);
 	check_energy("sphere rgb g -0.3 eta 1.3", &sphere, centroid, n, s_rgb, -0.3, 1.3);
+	check_skip("sphere", &sphere, centroid, n);
 	object_free(&sphere);
 
 	check_beer_lambert();
