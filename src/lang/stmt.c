@@ -881,8 +881,8 @@ static bool texture_entry(parser *p, lang_tok close, const scene_material **out)
 	return texture_body(p, at, at, close, out, NULL);
 }
 
-/* Whether two textures light alike (their finish and normal): a patterned texture keeps its
- * first entry's. */
+/* Whether two textures light alike (every field of their finish): a patterned texture of such
+ * entries is one BSDF over their blended pigment; else each entry is lit with its own. */
 static bool same_finish(const scene_material *a, const scene_material *b)
 {
 	const scene_finish *f = &a->finish, *g = &b->finish;
@@ -890,6 +890,9 @@ static bool same_finish(const scene_material *a, const scene_material *b)
 	       f->phong == g->phong && f->phong_size == g->phong_size && f->metallic == g->metallic &&
 	       !memcmp(&f->refl_min, &g->refl_min, sizeof f->refl_min) &&
 	       !memcmp(&f->refl_max, &g->refl_max, sizeof f->refl_max) && f->refl_fresnel == g->refl_fresnel &&
+	       f->refl_falloff == g->refl_falloff && f->refl_metallic == g->refl_metallic &&
+	       f->brilliance == g->brilliance && f->diffuse_albedo == g->diffuse_albedo &&
+	       !memcmp(&f->emission, &g->emission, sizeof f->emission) &&
 	       f->has_ambient == g->has_ambient && !memcmp(&f->ambient, &g->ambient, sizeof f->ambient) &&
 	       f->subsurface == g->subsurface && !memcmp(&f->translucency_mm, &g->translucency_mm, sizeof f->translucency_mm);
 }
@@ -925,8 +928,10 @@ static bool pattern_texture_normal(parser *p, const scene_pigment *pig, const sc
  *                   { pattern_modifier | "texture_map" "{" { "[" float texture_body "]" } "}" }
  * POV-Ray's patterned texture (its pattern's value picks or blends the entries' textures). circe
  * blends the entries' pigments by the pattern (each evaluated where the surface is, SSS entry
- * points too) and their normals when they have any (as a normal_map); the finish is the first
- * entry's, warned about when the entries' finishes differ (doc/language.md "Layered textures"). */
+ * points too) and their normals when they have any (as a normal_map). When the entries' finishes
+ * differ or one is layered, each entry is lit with its own finish (map_textures: render/world.c's
+ * shade_map); else, and when one has a subsurface, the finish is the first entry's (doc/language.md
+ * "Patterned textures"). */
 static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok close, const scene_material **out)
 {
 	const scene_pigment *pig;
@@ -939,17 +944,19 @@ static bool pattern_texture(parser *p, diag_loc kw, diag_loc open, lang_tok clos
 	m->layers = NULL, m->n_layers = 0; /* the entries' layers: below, with map_textures */
 	m->map_textures = NULL, m->n_map_textures = 0;
 	TRY(pattern_texture_normal(p, pig, mats, n, &m->normal));
-	bool layered = false; /* then every entry is lit per layer, with its own finishes */
-	for (uint32_t i = 0; i < n; i++)
-		layered = layered || (mats[i]->n_layers && mats[i]->kind == MAT_TEXTURE);
-	if (layered && n == pig->n_entries)
+	/* Layered entries, or entries of different finishes: every entry is lit with its own finish
+	 * (per layer), as POV-Ray's ComputeOneTextureColour lights each entry before the blend. */
+	bool own = false, sss = false;
+	for (uint32_t i = 0; i < n; i++) {
+		own = own || (mats[i]->n_layers && mats[i]->kind == MAT_TEXTURE) || !same_finish(mats[0], mats[i]);
+		sss = sss || mats[i]->finish.subsurface;
+	}
+	if (own && sss) /* one medium a material (build_sss): the first entry's */
+		diag_warning(p->d, kw, "the textures of this pattern differ in their finish and one has a subsurface: "
+				       "circe lights them all with the first one's (the pigments and normals follow the "
+				       "pattern)");
+	else if (own && n == pig->n_entries)
 		m->map_textures = mats, m->n_map_textures = n;
-	for (uint32_t i = 1; i < n && !m->map_textures; i++)
-		if (!same_finish(mats[0], mats[i])) {
-			diag_warning(p->d, kw, "the textures of this pattern differ in their finish: circe lights them all "
-					       "with the first one's (the pigments and normals follow the pattern)");
-			break;
-		}
 	*out = m;
 	return true;
 }

@@ -1,7 +1,7 @@
 // POV-Ray's patterned textures (doc/language.md "Layered textures"): a block pattern's list of
 // textures, a texture_map (entries are texture bodies, a declared texture among them), average,
-// transforms of the whole, normals that follow the pattern, and finishes that differ (warned:
-// circe lights them with the first one's).
+// transforms of the whole, normals that follow the pattern, and finishes that differ (each entry
+// lit with its own).
 #declare Dark = texture { pigment { rgb 0.1 } finish { diffuse 0.8 specular 0.6 } }
 #declare Light = texture { pigment { rgb <0.9, 0.8, 0.7> } finish { diffuse 0.8 specular 0.6 } normal { bumps 0.3 } }
 plane { y, 0 texture { checker texture { Dark } texture { Light scale 0.5 } scale 4 translate <0.7, 0, 1> } }
