@@ -72,6 +72,8 @@ bool build_pov_probe(world *w, const scene *sc, diag *d);
 bool build_lights(world *w, const scene *sc, diag *d);
 /* build_material.c: POV-Ray's atmospheric media (world.atmosphere). */
 bool build_atmosphere(world *w, const scene *sc, diag *d);
+/* build_trace.c: the scene of objs[0..n) alone, their records copied; NULL out of memory. */
+scene *build_object_scene(const scene *parent, const scene_object *objs, size_t n);
 /* build_light.c: POV-Ray's light_group and projected_through (world.reach). */
 bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d);
 

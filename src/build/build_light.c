@@ -104,51 +104,8 @@ static void build_fogs(world *w, const scene *sc, diag *d)
 }
 
 /* POV-Ray's light_group and projected_through: w->reach and the groups' table, when some light
- * or object has either. */
-/* The scene of a light's projected_through objects alone: their geometry records copied (shallow,
- * renumbered), no materials or lights, the parent's camera and settings (so tessellated as the
- * render's objects); NULL when memory runs out. */
-static scene *through_scene(const scene *parent, const scene_light *sl)
-{
-	scene *sc = scene_new();
-	if (!sc)
-		return NULL;
-	sc->global = parent->global;
-	sc->has_camera = parent->has_camera;
-	sc->camera = parent->camera;
-	sc->csg_ids = parent->csg_ids;
-	bool ok = true;
-	for (uint32_t i = 0; ok && i < sl->n_projected; i++) {
-		scene_object o = sl->projected[i];
-		const scene_geom *same = NULL; /* a record the copies share stays shared */
-		for (uint32_t j = 0; j < i && !same; j++)
-			if (sl->projected[j].geom == o.geom)
-				same = scene_object_at(sc, j)->geom;
-		if (!same) {
-			scene_geom *g = arena_alloc(&sc->arena, 1, sizeof *g, 16);
-			if (!(ok = g != NULL))
-				break;
-			*g = *o.geom;
-			g->id = sc->n_geoms++;
-			g->next = sc->geoms;
-			sc->geoms = g;
-			same = g;
-		}
-		o.geom = same;
-		o.material = NULL;
-		o.texture_placed = false;
-		o.texture_from_object = xform_identity();
-		o.light_group = 0;
-		o.no_shadow = false;
-		ok = vecbuf_push(&sc->objects, &o) != NULL;
-	}
-	if (!ok) {
-		sc->geoms = NULL;
-		scene_free(sc);
-	}
-	return ok ? sc : NULL;
-}
-
+ * or object has either. A light's projected_through objects are a scene of their own
+ * (build_object_scene), tessellated as the render's objects. */
 bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d)
 {
 	size_t n = scene_n_lights(sc), ng = sc->light_groups.len;
@@ -175,7 +132,7 @@ bool build_reach(world *w, const scene *sc, const world_options *opt, diag *d)
 		w->reach[i].group = sl->group;
 		if (!sl->n_projected)
 			continue;
-		scene *ps = w->reach[i].through_sc = through_scene(sc, sl);
+		scene *ps = w->reach[i].through_sc = build_object_scene(sc, sl->projected, sl->n_projected);
 		if (!ps) {
 			diag_error(d, sl->loc, "out of memory");
 			return false;

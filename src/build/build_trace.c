@@ -86,10 +86,12 @@ bool world_tracer_mesh(const world_tracer *t, const void *shape, double tol, uin
 	return true;
 }
 
-/* The scene of objs[0..n) alone: their geometry records copied (renumbered, linked in a list of
- * their own), the objects grey, no lights, the parent's camera and settings. NULL when memory runs
- * out. */
-static scene *object_scene(const scene *parent, const scene_object *objs, size_t n)
+/* The scene of objs[0..n) alone (trace()'s object, a light's projected_through objects): their
+ * geometry records copied (shallow, renumbered, linked in a list of their own; a record the
+ * objects share stays shared), the objects grey, in no light group, casting shadows, no lights,
+ * the parent's camera and settings (so tessellated as the render's objects). NULL when memory
+ * runs out. */
+scene *build_object_scene(const scene *parent, const scene_object *objs, size_t n)
 {
 	scene *sc = scene_new();
 	if (!sc)
@@ -121,6 +123,8 @@ static scene *object_scene(const scene *parent, const scene_object *objs, size_t
 		o.material = NULL;
 		o.texture_placed = false;
 		o.texture_from_object = xform_identity();
+		o.light_group = 0;
+		o.no_shadow = false;
 		ok = vecbuf_push(&sc->objects, &o) != NULL;
 	}
 	mem_free(from), mem_free(to);
@@ -136,7 +140,7 @@ static scene *object_scene(const scene *parent, const scene_object *objs, size_t
 static bool build_slot(world_tracer *t, tracer_slot *s, const scene *parent, const scene_object *objs, size_t n,
 		       const void *key, diag *d, diag_loc loc)
 {
-	s->sc = object_scene(parent, objs, n);
+	s->sc = build_object_scene(parent, objs, n);
 	if (!s->sc) {
 		diag_error(d, loc, "out of memory");
 		return false;
