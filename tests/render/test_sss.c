@@ -472,6 +472,22 @@ static void test_pov_subsurface(void)
 	      "checker slab: %d pixels at %.6g, %d at %.6g, %d outside them (of %d)", n_hi, hi, n_lo, lo, outside, W * H);
 }
 
+/* The world of objs in a scene of POV-Ray's subsurface, T() its subsurface texture and interior
+ * (test_pov_open: openness and the probe factor). */
+static bool build_pov_sss(const char *objs, world **w)
+{
+	char text[1024];
+	snprintf(text, sizeof text,
+		 "global_settings { subsurface { } }\n"
+		 "camera { location <0, 1, -4> look_at <0, 0, 0> }\n"
+		 "#macro T() texture { pigment { rgb 0.5 } finish { subsurface { translucency 1 } } } "
+		 "interior { ior 1.3 } #end\n"
+		 "%s\n",
+		 objs);
+	world_options o = {.width = W, .height = H};
+	return build(text, &o, w);
+}
+
 /* Which POV-Ray subsurface textures are on open objects (render_sss.pov_open: POV-Ray's diffuse
  * estimate doubles there): planes, discs, clipped or inverse solids and the CSG solids that are
  * unbounded; not closed meshes, nor the bounded CSG solids built from planes. A texture on both
@@ -494,17 +510,8 @@ static void test_pov_open(void)
 		{"plane { y, -1 T() } sphere { 0, 1 T() }", true, 0},	    /* two textures: one of them open */
 	};
 	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
-		char text[1024];
-		snprintf(text, sizeof text,
-			 "global_settings { subsurface { } }\n"
-			 "camera { location <0, 1, -4> look_at <0, 0, 0> }\n"
-			 "#macro T() texture { pigment { rgb 0.5 } finish { subsurface { translucency 1 } } } "
-			 "interior { ior 1.3 } #end\n"
-			 "%s\n",
-			 c[i].obj);
 		world *w;
-		world_options o = {.width = W, .height = H};
-		if (!build(text, &o, &w)) {
+		if (!build_pov_sss(c[i].obj, &w)) {
 			CHECK(false, "%s builds", c[i].obj);
 			continue;
 		}
@@ -529,17 +536,8 @@ static void test_pov_open(void)
 		{"plane { y, -1 } disc { 0, -z, 0.8 T() }", 1.1, 1.9},
 	};
 	for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
-		char text[1024];
-		snprintf(text, sizeof text,
-			 "global_settings { subsurface { } }\n"
-			 "camera { location <0, 1, -4> look_at <0, 0, 0> }\n"
-			 "#macro T() texture { pigment { rgb 0.5 } finish { subsurface { translucency 1 } } } "
-			 "interior { ior 1.3 } #end\n"
-			 "%s\n",
-			 q[i].objs);
 		world *w;
-		world_options o = {.width = W, .height = H};
-		if (!build(text, &o, &w)) {
+		if (!build_pov_sss(q[i].objs, &w)) {
 			CHECK(false, "%s builds", q[i].objs);
 			continue;
 		}
