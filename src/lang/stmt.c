@@ -3812,6 +3812,36 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 	return true;
 }
 
+/* The object of a light's block `what` (projected_through, looks_like): a declared object, as
+ * POV-Ray's Parse_Object takes it, or an object item, not placed in the scene, into *b. */
+static bool light_object(parser *p, const char *what, vecbuf *b)
+{
+	bool matched = true, ok;
+	if (lang_peek(p)->kind == LTK_IDENT)
+		ok = declared_object(p, b, lang_peek(p)->loc);
+	else
+		ok = object_item_unplaced(p, b, &matched);
+	if (ok && (!matched || !b->len))
+		ok = lang_error_found(p, "expected an object in '%s'", what);
+	return ok;
+}
+
+/* The block's modifiers up to its '}', then b's objects copied into the scene's arena (casting no
+ * shadow when no_shadow): *out, *n. */
+static bool light_object_end(parser *p, const char *what, diag_loc kw, diag_loc open, vecbuf *b, bool no_shadow,
+			     const scene_object **out, uint32_t *n)
+{
+	TRY(object_tail(p, b, 0, open, what));
+	scene_object *o = arena_zalloc(&p->sc->arena, b->len, sizeof *o);
+	if (!o)
+		return lang_error(p, kw, "out of memory");
+	memcpy(o, b->data, b->len * sizeof *o);
+	for (size_t i = 0; no_shadow && i < b->len; i++)
+		o[i].no_shadow = true;
+	*out = o, *n = (uint32_t)b->len;
+	return true;
+}
+
 /* projected_through = "projected_through" "{" ( identifier | object_item ) { modifier } "}":
  * POV-Ray's (Parse_Light_Source): the light reaches a point only through the object, which is
  * not placed in the scene (moved by the light's later transforms); one a light. */
@@ -3823,21 +3853,8 @@ static bool projected_through(parser *p, scene_light *l)
 	TRY(open_block(p, "projected_through", &open));
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
-	bool matched = true, ok;
-	if (lang_peek(p)->kind == LTK_IDENT)
-		ok = declared_object(p, &b, lang_peek(p)->loc);
-	else
-		ok = object_item_unplaced(p, &b, &matched);
-	if (ok && (!matched || !b.len))
-		ok = lang_error_found(p, "expected an object in 'projected_through'");
-	ok = ok && object_tail(p, &b, 0, open, "projected_through");
-	scene_object *o = ok ? arena_zalloc(&p->sc->arena, b.len, sizeof *o) : NULL;
-	if (ok && !o)
-		ok = lang_error(p, kw, "out of memory");
-	if (ok) {
-		memcpy(o, b.data, b.len * sizeof *o);
-		l->projected = o, l->n_projected = (uint32_t)b.len;
-	}
+	bool ok = light_object(p, "projected_through", &b) &&
+		  light_object_end(p, "projected_through", kw, open, &b, false, &l->projected, &l->n_projected);
 	vecbuf_free(&b);
 	return ok;
 }
@@ -3853,28 +3870,11 @@ static bool looks_like(parser *p, scene_light *l)
 	TRY(open_block(p, "looks_like", &open));
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
-	bool matched = true, ok;
-	if (lang_peek(p)->kind == LTK_IDENT) /* a declared object, as POV-Ray's Parse_Object takes it */
-		ok = declared_object(p, &b, lang_peek(p)->loc);
-	else
-		ok = object_item_unplaced(p, &b, &matched);
-	if (ok && (!matched || !b.len))
-		ok = lang_error_found(p, "expected an object in 'looks_like'");
+	bool ok = light_object(p, "looks_like", &b);
 	xform to = xform_translate(l->position);
-	for (size_t i = 0; ok && i < b.len; i++) {
-		scene_object *o = &VECBUF_AT(&b, scene_object, i);
-		o->transform = xform_then(o->transform, to);
-	}
-	ok = ok && object_tail(p, &b, 0, open, "looks_like");
-	scene_object *o = ok ? arena_zalloc(&p->sc->arena, b.len, sizeof *o) : NULL;
-	if (ok && !o)
-		ok = lang_error(p, kw, "out of memory");
-	if (ok) {
-		memcpy(o, b.data, b.len * sizeof *o);
-		for (size_t i = 0; i < b.len; i++)
-			o[i].no_shadow = true;
-		l->looks = o, l->n_looks = (uint32_t)b.len;
-	}
+	for (size_t i = 0; ok && i < b.len; i++)
+		VECBUF_AT(&b, scene_object, i).transform = xform_then(VECBUF_AT(&b, scene_object, i).transform, to);
+	ok = ok && light_object_end(p, "looks_like", kw, open, &b, true, &l->looks, &l->n_looks);
 	vecbuf_free(&b);
 	return ok;
 }
