@@ -5,6 +5,7 @@
 #include "accel/offset.h"
 #include "base/mem.h"
 #include "sss/profile.h"
+#include "sss/walk_exp.h"
 
 #include <assert.h>
 #include <math.h>
@@ -33,6 +34,11 @@
  * (issue 21's profile of the wax bunny under auto: 1.7 % of the render in __fmax). */
 static inline double walk_max(double a, double b) { return a > b || b != b ? a : b; }
 static inline double walk_min(double a, double b) { return a < b || b != b ? a : b; }
+/* The same for numbers known not to be NaN (the walk's distances, cosines and scales): plain
+ * comparisons, one maxsd or minsd each (issue 21: the NaN rule's extra compare and branch made
+ * walk_max 6 % of a marble walk's instructions). A NaN a gives b, as fmax. */
+static inline double walk_maxn(double a, double b) { return a > b ? a : b; }
+static inline double walk_minn(double a, double b) { return a < b ? a : b; }
 
 
 bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime_per_mm[3],
@@ -54,6 +60,17 @@ bool sss_walk_medium_from_reduced(sss_walk_medium *m, const double sigma_s_prime
 	return true;
 }
 
+/* The unit direction at cosine mu from the unit axis n, azimuth 2 pi u, in n's basis b1, b2
+ * (v3_basis; the guide's axis is fixed for a walk, so its basis is made once). The azimuth's
+ * cosine and sine in float (one sincosf; issue 21: double sincos was 8 % of a marble walk): the
+ * direction is a float vector, so the double's digits were rounded away anyway. */
+static vec3 walk_dir_in(vec3 n, vec3 b1, vec3 b2, double mu, double u)
+{
+	float s = (float)sqrt(walk_maxn(0.0, 1.0 - mu * mu)), phi = (float)(2.0 * WALK_PI * u);
+	float c_phi = cosf(phi), s_phi = sinf(phi);
+	return v3_normalize(v3_add(v3_scale(n, (float)mu), v3_add(v3_scale(b1, s * c_phi), v3_scale(b2, s * s_phi))));
+}
+
 vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2)
 {
 	double mu;
@@ -64,13 +81,13 @@ vec3 sss_walk_sample_hg(vec3 w, double g, double u1, double u2)
 		mu = (1.0 + g * g - s * s) / (2.0 * g);
 	}
 	mu = walk_max(-1.0, walk_min(1.0, mu));
-	double sin_t = sqrt(walk_max(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u2;
 	vec3 b1, b2;
 	v3_basis(w, &b1, &b2);
-	vec3 d = v3_add(v3_scale(w, (float)mu),
-			v3_add(v3_scale(b1, (float)(sin_t * cos(phi))), v3_scale(b2, (float)(sin_t * sin(phi)))));
-	return v3_normalize(d);
+	return walk_dir_in(w, b1, b2, mu, u2);
 }
+
+/* Uniform in [0, 1) from one step of the generator (32 bits). */
+static inline double walk_u32(rng *g) { return (double)rng_u32(g) * 0x1p-32; }
 
 /* The probabilities of the hero channels: proportional to an estimate of what each channel
  * returns, the albedo of a semi-infinite medium of single-scattering albedo a,
@@ -107,8 +124,9 @@ static int walk_hero(const double q[3], double u)
 static void walk_beta(const double q[3], const double f[3], const double ratio[3], double beta[3])
 {
 	double mix = q[0] * ratio[0] + q[1] * ratio[1] + q[2] * ratio[2];
+	double inv = mix > 0.0 && isfinite(mix) ? 1.0 / mix : 0.0; /* one division, not three */
 	for (int k = 0; k < 3; k++)
-		beta[k] = mix > 0.0 && isfinite(mix) ? f[k] / mix : 0.0;
+		beta[k] = f[k] * inv;
 }
 
 /* The normal of the side of the surface that direction w goes to. */
@@ -143,16 +161,13 @@ double sss_walk_dwivedi_nu(double alpha)
 }
 
 /* The guided direction density over the cosine mu with the guiding axis, Meng et al. 2016 eq. 9:
- * p(mu) = 1 / ((nu - mu) ln((nu + 1)/(nu - 1))) on [-1, 1] (times 1/(2 pi) per steradian). */
-static double dwivedi_pdf_mu(double nu, double log_nu, double mu)
-{
-	return 1.0 / ((nu - mu) * log_nu);
-}
+ * p(mu) = 1 / ((nu - mu) ln((nu + 1)/(nu - 1))) on [-1, 1] (times 1/(2 pi) per steradian);
+ * walk_scatter evaluates it at mu and -mu with one division. */
 
 /* Its inverse CDF, Meng et al. 2016 eq. 10: mu = nu - (nu + 1) ((nu - 1)/(nu + 1))^u. */
 static double dwivedi_sample_mu(double nu, double log_nu, double u)
 {
-	return walk_max(-1.0, walk_min(1.0, nu - (nu + 1.0) * exp(-u * log_nu)));
+	return walk_maxn(-1.0, walk_minn(1.0, nu - (nu + 1.0) * sss_walk_exp(-u * log_nu)));
 }
 
 /* The Henyey-Greenstein density per steradian of the cosine mu between the old and new
@@ -165,14 +180,6 @@ static double hg_pdf(double g, double mu)
 	return (1.0 - g * g) / (4.0 * WALK_PI * d * sqrt(d));
 }
 
-/* The unit direction at cosine mu from the unit axis n, azimuth 2 pi u, in n's basis b1, b2
- * (v3_basis: the guide's axis is fixed for a walk, so its basis is made once). */
-static vec3 dir_about(vec3 n, vec3 b1, vec3 b2, double mu, double u)
-{
-	double s = sqrt(walk_max(0.0, 1.0 - mu * mu)), phi = 2.0 * WALK_PI * u;
-	return v3_normalize(v3_add(v3_scale(n, (float)mu),
-				   v3_add(v3_scale(b1, (float)(s * cos(phi))), v3_scale(b2, (float)(s * sin(phi))))));
-}
 
 /* The guide of one walk (README.md, "Guided sampling"): the axis n (outward at the entry), the
  * diffusion length nu in mean free paths of the reference channel (sigma_ref: the channel of
@@ -183,6 +190,7 @@ typedef struct walk_guide {
 	vec3 x, n;	   /* the entry point; the outward normal there */
 	vec3 b1, b2;	   /* n's basis (v3_basis), for the guided directions */
 	double nu, log_nu; /* nu, ln((nu + 1)/(nu - 1)) */
+	double inv_nu;	   /* 1 / nu */
 	double frac;	   /* probability of the guided strategy at a scattering event */
 	double sigma_ref;  /* extinction of the reference channel, per scene unit */
 	double far;	   /* thickness below the entry along -n found by the first segment; 0: none */
@@ -215,6 +223,7 @@ static walk_guide walk_guide_make(const sss_walk_medium *m, const double sigma_t
 	v3_basis(n, &gd.b1, &gd.b2);
 	gd.nu = nu;
 	gd.log_nu = log((nu + 1.0) / (nu - 1.0));
+	gd.inv_nu = 1.0 / nu;
 	/* Cycles' compromise for anisotropic media: 1 - max(1/2, |g|^(1/8)); 1/2 when isotropic.
 	 * The classic share of 1/2 shrinks by the factor WALK_FRAC_NU / nu beyond nu =
 	 * WALK_FRAC_NU (issue 21): at a high albedo the guided densities approach the classic ones (nu / (nu - mu) and
@@ -233,9 +242,9 @@ static double walk_backward_frac(const walk_guide *gd, vec3 p)
 {
 	if (!(gd->far > 0.0))
 		return 0.0;
-	double x = walk_max(0.0, walk_min(gd->far, -(double)v3_dot(v3_sub(p, gd->x), gd->n)));
-	double e = (gd->far - 2.0 * x) * gd->sigma_ref / gd->nu;
-	return e > 700.0 ? 0.0 : 1.0 / (1.0 + exp(e));
+	double x = walk_maxn(0.0, walk_minn(gd->far, -(double)v3_dot(v3_sub(p, gd->x), gd->n)));
+	double e = (gd->far - 2.0 * x) * gd->sigma_ref * gd->inv_nu;
+	return e > 700.0 ? 0.0 : 1.0 / (1.0 + sss_walk_exp(e));
 }
 
 /* One scattering event's sampling record: the direction's density factors (guided over
@@ -257,10 +266,14 @@ static vec3 walk_scatter(const sss_walk_medium *m, const walk_guide *gd, vec3 p,
 	wd->scattered = true;
 	if (!gd->on) {
 		wd->f_fwd = wd->f_bwd = 0.0, wd->s_fwd = wd->s_bwd = 1.0, wd->bwd = 0.0;
-		return sss_walk_sample_hg(w, m->g, rng_double(g), rng_double(g));
+		double u1 = rng_double(g), u2 = walk_u32(g);
+		return sss_walk_sample_hg(w, m->g, u1, u2);
 	}
 	wd->bwd = walk_backward_frac(gd, p);
-	double u_strategy = rng_double(g), u_side = rng_double(g), u1 = rng_double(g), u2 = rng_double(g);
+	/* the choices and the azimuth from one 32-bit draw each (their probabilities exact to
+	 * 2^-32, the azimuth finer than the float direction it makes), the cosine from 53 bits:
+	 * 5 steps of the generator, not 8 (issue 21) */
+	double u_strategy = walk_u32(g), u_side = walk_u32(g), u1 = rng_double(g), u2 = walk_u32(g);
 	bool guided = u_strategy < gd->frac, backward = u_side < wd->bwd;
 	vec3 nw;
 	double mu;
@@ -268,16 +281,18 @@ static vec3 walk_scatter(const sss_walk_medium *m, const walk_guide *gd, vec3 p,
 		mu = dwivedi_sample_mu(gd->nu, gd->log_nu, u1);
 		if (backward)
 			mu = -mu; /* the backward guide is the forward one mirrored through the tangent plane */
-		nw = dir_about(gd->n, gd->b1, gd->b2, mu, u2);
+		nw = walk_dir_in(gd->n, gd->b1, gd->b2, mu, u2);
 	} else {
 		nw = sss_walk_sample_hg(w, m->g, u1, u2);
 	}
-	mu = walk_max(-1.0, walk_min(1.0, (double)v3_dot(nw, gd->n)));
-	double ph = hg_pdf(m->g, walk_max(-1.0, walk_min(1.0, (double)v3_dot(w, nw))));
-	wd->f_fwd = dwivedi_pdf_mu(gd->nu, gd->log_nu, mu) / (2.0 * WALK_PI * ph);
-	wd->f_bwd = dwivedi_pdf_mu(gd->nu, gd->log_nu, -mu) / (2.0 * WALK_PI * ph);
-	wd->s_fwd = 1.0 - mu / gd->nu;
-	wd->s_bwd = 1.0 + mu / gd->nu;
+	mu = walk_maxn(-1.0, walk_minn(1.0, (double)v3_dot(nw, gd->n)));
+	double ph = hg_pdf(m->g, walk_maxn(-1.0, walk_minn(1.0, (double)v3_dot(w, nw))));
+	/* p(mu) / (2 pi ph) forward and backward: 1 / ((nu -+ mu) ln(..) 2 pi ph), one division */
+	double a = gd->nu - mu, b = gd->nu + mu, inv = 1.0 / (a * b * gd->log_nu * 2.0 * WALK_PI * ph);
+	wd->f_fwd = b * inv;
+	wd->f_bwd = a * inv;
+	wd->s_fwd = 1.0 - mu * gd->inv_nu;
+	wd->s_bwd = 1.0 + mu * gd->inv_nu;
 	if (guided)
 		*stretch = backward ? wd->s_bwd : wd->s_fwd;
 	return nw;
@@ -295,7 +310,7 @@ static double walk_path_pdf(const walk_guide *gd, const walk_dir *wd, double sig
 	double classic = collision ? sigma * e : e;
 	if (!gd->on || !wd->scattered)
 		return classic;
-	double x = exp(sigma * t * (1.0 - wd->s_fwd)); /* (1 - s_fwd) = mu/nu: e^{mu sigma t/nu} */
+	double x = sss_walk_exp(sigma * t * (1.0 - wd->s_fwd)); /* (1 - s_fwd) = mu/nu: e^{mu sigma t/nu} */
 	double ef = e * x, guided = wd->f_fwd * (collision ? wd->s_fwd * sigma * ef : ef);
 	if (wd->bwd > 0.0) {
 		double eb = x > 0.0 ? e / x : 0.0;
@@ -339,8 +354,8 @@ static bool walk_ball_holds(walk_ball *b, const sss_probe *pr, vec3 p, double ne
 {
 	if (b->r > 0.0) {
 		vec3 d = v3_sub(p, b->c);
-		double s = sqrt((double)d.x * d.x + (double)d.y * d.y + (double)d.z * d.z);
-		if (need + s < b->r) {
+		double s2 = (double)d.x * d.x + (double)d.y * d.y + (double)d.z * d.z, room = b->r - need;
+		if (room > 0.0 && s2 < room * room) { /* |p - c| + need < r, without a square root */
 			res->skipped++;
 			return true;
 		}
@@ -408,7 +423,9 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		/* the hero's free path (stretched when the direction was guided); the densities of
 		 * every channel and strategy for the path so far are kept relative to the hero's */
 		double st = sigma_t[hero] * stretch;
-		double t = st > 0.0 ? -log1p(-rng_double(g)) / st : INFINITY;
+		/* -ln(1 - u): u has 53 bits, so 1 - u is exact and log's argument is log1p's (libm's
+		 * log is the cheaper of the two: issue 21) */
+		double t = st > 0.0 ? -log(1.0 - rng_double(g)) / st : INFINITY;
 		/* The ray only needs to reach past the free path: a boundary beyond it is not met
 		 * (issue 21: a cast bounded by t visits the BVH's nodes along a segment a few mean
 		 * free paths long, not the whole chord to the far side; measured in
@@ -421,7 +438,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		bool bounded = res.steps % WALK_WHOLE_EVERY != 0 && t < INFINITY, hit = false;
 		double skin = 0.0;
 		if (bounded) {
-			skin = WALK_REACH * walk_max(last_scale, walk_max(fabs(org.x), walk_max(fabs(org.y), fabs(org.z))));
+			skin = WALK_REACH * walk_maxn(last_scale, walk_maxn(fabs(org.x), walk_maxn(fabs(org.y), fabs(org.z))));
 			reach = (float)(t + skin);
 		}
 		sss_probe_hit h;
@@ -440,7 +457,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		if (!hit) /* nothing within reach: the free path ends inside, a collision */
 			h.t = INFINITY, h.scale = 0.0f, h.p = org, h.ng = v3(0.0f, 0.0f, 1.0f);
 		else
-			last_scale = walk_max(last_scale, (double)h.scale);
+			last_scale = walk_maxn(last_scale, (double)h.scale);
 		if (gd.on && res.steps == 0) { /* the far side below the entry (Cycles' opposite interface) */
 			gd.far = walk_max(0.0, -(double)v3_dot(v3_sub(h.p, gd.x), gd.n));
 			/* (the guided fraction faded with this thickness until issue 21's second pass,
@@ -448,14 +465,14 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			 * fraction of bright media the fade cost efficiency in every layer walkbench
 			 * measures, 3 and 30 mm of skin, wax and marble; src/sss/README.md) */
 		}
-		double scale = walk_max(h.scale, walk_max(fabs(h.p.x), walk_max(fabs(h.p.y), fabs(h.p.z))));
-		double cos_n = walk_max(1e-6, fabs((double)v3_dot(w, h.ng)));
-		double d = walk_max(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */
+		double scale = walk_maxn(h.scale, walk_maxn(fabs(h.p.x), walk_maxn(fabs(h.p.y), fabs(h.p.z))));
+		double cos_n = walk_maxn(1e-6, fabs((double)v3_dot(w, h.ng)));
+		double d = walk_maxn(0.0, h.t - WALK_SKIN * scale / cos_n); /* w is unit */
 		res.steps++;
 		bool collision = t < d;
 		double len = collision ? t : d, p[3], e[3];
 		for (int k = 0; k < 3; k++) {
-			e[k] = exp(-sigma_t[k] * len);
+			e[k] = sss_walk_exp(-sigma_t[k] * len);
 			p[k] = walk_path_pdf(&gd, &wd, sigma_t[k], len, e[k], collision);
 		}
 		if (!(p[hero] > 0.0) || !isfinite(p[hero])) {
@@ -463,10 +480,11 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			return res;
 		}
 		double big = 0.0;
+		double inv_hero = 1.0 / p[hero];
 		for (int k = 0; k < 3; k++) {
-			f[k] *= (collision ? m->sigma_s[k] : 1.0) * e[k] / p[hero];
-			ratio[k] *= p[k] / p[hero];
-			big = walk_max(big, walk_max(f[k], ratio[k]));
+			f[k] *= (collision ? m->sigma_s[k] : 1.0) * e[k] * inv_hero;
+			ratio[k] *= p[k] * inv_hero;
+			big = walk_maxn(big, walk_maxn(f[k], ratio[k]));
 		}
 		if (big > 1e100) /* the weights are f over the mixture of ratios: rescale both alike */
 			for (int k = 0; k < 3; k++)
@@ -517,12 +535,15 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		}
 		if (res.steps >= SSS_WALK_RR_START) {
 			double survive = walk_min(1.0, walk_max(beta[0], walk_max(beta[1], beta[2])));
-			if (!(rng_double(g) < survive)) {
-				res.status = SSS_WALK_ABSORBED;
-				return res;
+			if (survive < 1.0) { /* (1: no draw, it would pass, and no rescaling) */
+				if (!(rng_double(g) < survive)) {
+					res.status = SSS_WALK_ABSORBED;
+					return res;
+				}
+				double inv = 1.0 / survive;
+				for (int k = 0; k < 3; k++)
+					beta[k] *= inv, f[k] *= inv;
 			}
-			for (int k = 0; k < 3; k++)
-				beta[k] /= survive, f[k] /= survive;
 		}
 	}
 	res.status = SSS_WALK_STEP_LIMIT;

@@ -10,6 +10,7 @@
 #include "sss/medium.h"
 #include "sss/profile.h"
 #include "sss/walk.h"
+#include "sss/walk_exp.h"
 #include "mean3.h"
 #include "sss_test.h"
 
@@ -130,20 +131,57 @@ static void check_basics(void)
 	rng r;
 	rng_seed(&r, 7, 1);
 	long n = test_scaled(200000);
+	/* and the azimuth (float sine and cosine since issue 21) uniform: about w, along two
+	 * perpendicular axes e1, e2, <x^2> = <y^2> = (1 - <mu^2>)/2, <x> = <y> = <x y> = 0 */
 	for (size_t k = 0; k < sizeof gs / sizeof gs[0]; k++) {
-		vec3 w = v3_normalize(v3(0.3f, -0.5f, 0.8f));
-		double s = 0.0, s2 = 0.0, s4 = 0.0;
+		vec3 w = v3_normalize(v3(0.3f, -0.5f, 0.8f)), e1, e2;
+		v3_basis(w, &e1, &e2);
+		double s = 0.0, s2 = 0.0, s4 = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0;
 		for (long i = 0; i < n; i++) {
-			vec3 d = sss_walk_sample_hg(w, gs[k], rng_double(&r), rng_double(&r));
-			double mu = v3_dot(d, w);
+			double u1 = rng_double(&r), u2 = rng_double(&r);
+			vec3 d = sss_walk_sample_hg(w, gs[k], u1, u2);
+			double mu = v3_dot(d, w), x = v3_dot(d, e1), y = v3_dot(d, e2);
 			CHECK(fabsf(v3_length(d) - 1.0f) < 1e-5f, "|d| = %g", v3_length(d));
 			s += mu, s2 += mu * mu, s4 += mu * mu * mu * mu;
+			sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
 		}
+		/* each of x, y, x y has a variance at most 1 (|x|, |y| <= 1): 4 SE is 4 / sqrt(n) */
+		double tol = 4.0 / sqrt((double)n), half = (1.0 - s2 / n) / 2.0;
+		CHECK(fabs(sx / n) < tol && fabs(sy / n) < tol && fabs(sxy / n) < tol,
+		      "g %g: azimuth <x> %g <y> %g <xy> %g (tolerance %g)", gs[k], sx / n, sy / n, sxy / n, tol);
+		CHECK(fabs(sxx / n - half) < tol && fabs(syy / n - half) < tol, "g %g: <x^2> %g <y^2> %g, want %g",
+		      gs[k], sxx / n, syy / n, half);
 		double mean = s / n, se = sqrt((s2 / n - mean * mean) / n);
 		double m2 = s2 / n, se2 = sqrt((s4 / n - m2 * m2) / n), want2 = (1.0 + 2.0 * gs[k] * gs[k]) / 3.0;
 		CHECK(fabs(mean - gs[k]) <= 3.0 * se + 1e-12, "g %g: mean cosine %g +- %g", gs[k], mean, se);
 		CHECK(fabs(m2 - want2) <= 3.0 * se2 + 1e-12, "g %g: <mu^2> %g +- %g, want %g", gs[k], m2, se2, want2);
 	}
+}
+
+/* The walk's exponential (walk_exp.h) against libm's: its relative error bound over its range,
+ * exact at 0, libm's own outside the range and for NaN. */
+static void check_exp(void)
+{
+	double worst = 0.0, worst_x = 0.0;
+	long n = 0;
+	for (double x = -707.99; x < 708.0; x += 0.000713, n++) {
+		double a = sss_walk_exp(x), b = exp(x), e = fabs(a - b) / b;
+		if (!(e <= worst))
+			worst = e, worst_x = x;
+	}
+	/* near 0 too, where the walk's arguments mostly are (short free paths) */
+	for (double x = -1e-3; x < 1e-3; x += 1.37e-9, n++) {
+		double a = sss_walk_exp(x), b = exp(x), e = fabs(a - b) / b;
+		if (!(e <= worst))
+			worst = e, worst_x = x;
+	}
+	printf("walk_exp: relative error at most %.3g (at x = %.6g) over %ld points; the bound %.3g\n", worst,
+	       worst_x, n, SSS_WALK_EXP_REL_ERR);
+	CHECK(worst <= SSS_WALK_EXP_REL_ERR, "walk_exp: relative error %g at x = %.17g", worst, worst_x);
+	CHECK(sss_walk_exp(0.0) == 1.0, "walk_exp(0) = %.17g", sss_walk_exp(0.0));
+	CHECK(sss_walk_exp(-800.0) == 0.0 && isinf(sss_walk_exp(800.0)) && isnan(sss_walk_exp(NAN)) &&
+		      sss_walk_exp(-INFINITY) == 0.0,
+	      "walk_exp outside its range: %g %g %g", sss_walk_exp(-800.0), sss_walk_exp(800.0), sss_walk_exp(NAN));
 }
 
 static void check_closure(void)
@@ -540,6 +578,7 @@ static void check_skip(const char *name, object *o, vec3 entry, vec3 ng)
 int main(void)
 {
 	check_basics();
+	check_exp();
 	check_closure();
 
 	const double grey[3] = {0.8, 0.8, 0.8}, ones[3] = {1, 1, 1};
