@@ -60,6 +60,15 @@ enum { LANG_COLOR_TERMS = 5 };
 typedef struct objlist {
 	scene_object *items;
 	size_t n;
+	/* A declared object's light_sources (POV-Ray's lights in a declared union, CSG or
+	 * light_group), in the declared object's space, and the light groups it made, taken out of
+	 * the scene's: its lights and objects name them by the ids they had, first_group on (1-based
+	 * as scene_light.group). Each copy placed in the scene gets moved copies of the lights and a
+	 * new group for each of its groups (stmt.c's declared_object). */
+	const scene_light *lights;
+	size_t n_lights;
+	const scene_light_group *groups;
+	uint32_t first_group, n_groups;
 } objlist;
 
 typedef struct value {

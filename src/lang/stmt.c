@@ -2629,7 +2629,7 @@ static bool csg_light(parser *p, const char *what)
 	lang_token kw = *lang_peek(p);
 	if (!p->lights_in_csg)
 		return lang_error(p, kw.loc, "a light_source inside a %s is supported only in an object placed in the "
-					     "scene (not in a #declare, clipped_by, object pattern or looks_like): "
+					     "scene or a #declare (not in a clipped_by, object pattern or looks_like): "
 					     "give it beside the %s's copies", what, what);
 	lang_advance(p);
 	scene_light l;
@@ -2748,20 +2748,55 @@ static bool csg_renumber(parser *p, scene_object *objs, size_t n, diag_loc kw)
 	return true;
 }
 
-/* A declared object's name: its objects pushed onto out as instances placed at kw. */
+static bool copy_looks(parser *p, scene_light *l, diag_loc at);
+
+/* A declared object's name: its objects pushed onto out as instances placed at kw, with copies
+ * of its light groups (new ids, the parent chain inside it copied) and, where the copy is placed
+ * in the scene (p->lights_in_csg), of its lights: POV-Ray copies a declared CSG's lights with
+ * each `object { U }`, and the enclosing blocks move them (object_tail_lights, csg_lights_move). */
 static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 {
+	lang_token name = *lang_peek(p);
 	const value *v = declared(p, VAL_OBJECT, "an object");
 	if (!v)
 		return false;
+	const objlist *ol = v->obj;
+	uint32_t first = ol->first_group, last = first + ol->n_groups; /* its groups: [first, last) */
+	uint32_t shift = 0;
+	if (ol->n_groups) {
+		if (p->sc->light_groups.len > UINT32_MAX - 1 - ol->n_groups)
+			return lang_error(p, kw, "too many light_groups");
+		shift = (uint32_t)p->sc->light_groups.len + 1 - first;
+		for (uint32_t g = first; g < last; g++) {
+			scene_light_group grp = ol->groups[g - first];
+			grp.parent = grp.parent >= first && grp.parent < last ? grp.parent + shift : 0;
+			grp.loc = kw;
+			if (!vecbuf_push(&p->sc->light_groups, &grp))
+				return lang_error(p, kw, "out of memory");
+		}
+	}
+#define SHIFTED(g) ((g) >= first && (g) < last ? (g) + shift : (g))
 	size_t start = out->len;
-	for (size_t i = 0; i < v->obj->n; i++) {
-		scene_object o = v->obj->items[i];
+	for (size_t i = 0; i < ol->n; i++) {
+		scene_object o = ol->items[i];
 		o.instance = true;
 		o.loc = kw;
+		o.light_group = SHIFTED(o.light_group);
 		if (!vecbuf_push(out, &o))
 			return lang_error(p, kw, "out of memory");
 	}
+	if (ol->n_lights && !p->lights_in_csg)
+		diag_warning(p->d, kw, "the light_source%s of '%.*s' light%s nothing here: a clipped_by, bounded_by, "
+				       "looks_like, projected_through or object pattern's object is not placed in the scene",
+			     ol->n_lights > 1 ? "s" : "", (int)name.len, name.text, ol->n_lights > 1 ? "" : "s");
+	for (size_t i = 0; p->lights_in_csg && i < ol->n_lights; i++) {
+		scene_light l = ol->lights[i];
+		l.group = SHIFTED(l.group);
+		l.loc = kw;
+		TRY(copy_looks(p, &l, kw)); /* its projected_through objects are moved with this copy only */
+		TRY(add_light(p, &l, kw));
+	}
+#undef SHIFTED
 	return csg_renumber(p, &VECBUF_AT(out, scene_object, start), out->len - start, kw);
 }
 
@@ -2778,9 +2813,9 @@ static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 			return lang_error_found(p, "expected a declared object or an object after 'object {'");
 		return object_tail_lights(p, out, start, lights, open, "object");
 	}
-	size_t start = out->len;
+	size_t start = out->len, lights = p->sc->lights.len;
 	TRY(declared_object(p, out, kw));
-	return object_tail(p, out, start, open, "object");
+	return object_tail_lights(p, out, start, lights, open, "object");
 }
 
 bool lang_component_mods(parser *p, xform *t, bool *moved, const scene_material **mat, diag_loc open)
@@ -3039,18 +3074,57 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
-	bool ok = object_item_unplaced(p, &tmp, &matched);
+	/* A light_source in its CSG is parsed as in a placed object, then taken out of the scene's
+	 * lights (and its light groups' ids noted) into the declared value: each copy places its
+	 * own (declared_object). */
+	size_t lights = p->sc->lights.len, objects = p->sc->objects.len;
+	uint32_t groups = (uint32_t)p->sc->light_groups.len;
+	bool saved = p->lights_in_csg;
+	p->lights_in_csg = true;
+	bool ok = object_item(p, &tmp, &matched);
+	p->lights_in_csg = saved;
 	if (!matched) {
 		*handled = false;
 		vecbuf_free(&tmp);
 		return true;
 	}
+	if (ok && p->sc->objects.len != objects) { /* add_light placed a looks_like's objects */
+		diag_loc at = p->prev.loc;
+		for (size_t i = lights; i < p->sc->lights.len; i++)
+			if (VECBUF_AT(&p->sc->lights, scene_light, i).n_looks) {
+				at = VECBUF_AT(&p->sc->lights, scene_light, i).loc;
+				break;
+			}
+		vecbuf_free(&tmp);
+		return lang_error(p, at, "a light_source with looks_like inside a declared object is not supported by "
+					 "circe: give the light beside the object's copies");
+	}
 	objlist *l = ok ? arena_zalloc(&p->sc->arena, 1, sizeof *l) : NULL;
 	if (l) {
 		l->n = tmp.len;
-		l->items = arena_alloc(&p->sc->arena, tmp.len, sizeof(scene_object), 16);
-		if (l->items)
+		l->items = arena_alloc(&p->sc->arena, tmp.len ? tmp.len : 1, sizeof(scene_object), 16);
+		if (l->items && tmp.len) /* none: a light_group of lights only */
 			memcpy(l->items, tmp.data, tmp.len * sizeof(scene_object));
+		l->first_group = groups + 1, l->n_groups = (uint32_t)p->sc->light_groups.len - groups;
+		if (l->n_groups) {
+			scene_light_group *copy = arena_alloc(&p->sc->arena, l->n_groups, sizeof *copy, 16);
+			if (copy)
+				memcpy(copy, &VECBUF_AT(&p->sc->light_groups, scene_light_group, groups), l->n_groups * sizeof *copy);
+			else
+				l->items = NULL;
+			l->groups = copy;
+			p->sc->light_groups.len = groups;
+		}
+		l->n_lights = p->sc->lights.len - lights;
+		if (l->n_lights) {
+			scene_light *copy = arena_alloc(&p->sc->arena, l->n_lights, sizeof(scene_light), 16);
+			if (copy)
+				memcpy(copy, &VECBUF_AT(&p->sc->lights, scene_light, lights), l->n_lights * sizeof(scene_light));
+			else
+				l->items = NULL;
+			l->lights = copy;
+			p->sc->lights.len = lights;
+		}
 	}
 	vecbuf_free(&tmp);
 	if (ok && (!l || !l->items))
@@ -3817,9 +3891,12 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 static bool light_object(parser *p, const char *what, vecbuf *b)
 {
 	bool matched = true, ok;
-	if (lang_peek(p)->kind == LTK_IDENT)
+	if (lang_peek(p)->kind == LTK_IDENT) {
+		bool saved = p->lights_in_csg;
+		p->lights_in_csg = false; /* not placed: its lights light nothing */
 		ok = declared_object(p, b, lang_peek(p)->loc);
-	else
+		p->lights_in_csg = saved;
+	} else
 		ok = object_item_unplaced(p, b, &matched);
 	if (ok && (!matched || !b->len))
 		ok = lang_error_found(p, "expected an object in '%s'", what);
