@@ -38,6 +38,13 @@ static const memfile files[] = {
 	{"values.pov", "box { -1, <image_width, image_height, clock_on> }\n"
 		       "sphere { <frame_number, initial_frame, final_frame>, clock + 1 }\n"
 		       "sphere { <clock_delta, initial_clock, final_clock>, 1 }\n"},
+	/* POV-Ray copies a declared union's and light_group's lights with each object { }: two lamps
+	 * moved by their copies, then two copies of a group of a light with a group inside it */
+	{"lights.pov", "#declare U = union { light_source { <0, 5, 0> color 1 } sphere { 0, 1 } }\n"
+		       "object { U translate x * 3 } object { U translate -x * 3 }\n"
+		       "#declare G = light_group { light_source { <1, 2, 3> color 1 } sphere { 0, 1 }\n"
+		       "  light_group { light_source { <0, 1, 0> color 1 } box { -1, 1 } } }\n"
+		       "object { G translate z } object { G scale 2 }\n"},
 };
 
 static int read_mem(void *user, const char *path, char **text, size_t *len)
@@ -191,12 +198,49 @@ int main(void)
 	}
 	scene_free(sc);
 
+	/* Lights in declared objects: one moved copy per object { }, a new group per declared group. */
+	st = parse_quiet("lights.pov", &vo, &sc, msg, sizeof msg);
+	CHECK(st == LANG_OK && sc, "lights.pov: status %d: %s", (int)st, msg);
+	if (sc) {
+		CHECK(scene_n_lights(sc) == 6 && scene_n_objects(sc) == 6 && sc->light_groups.len == 4,
+		      "lights.pov: %zu lights (6), %zu objects (6), %zu groups (4)", scene_n_lights(sc),
+		      scene_n_objects(sc), sc->light_groups.len);
+		static const double want[6][3] = {{3, 5, 0}, {-3, 5, 0}, {1, 2, 4}, {0, 1, 1}, {2, 4, 6}, {0, 2, 0}};
+		static const uint32_t group[6] = {0, 0, 1, 2, 3, 4}, parent[4] = {0, 1, 0, 3};
+		for (size_t i = 0; i < 6 && i < scene_n_lights(sc); i++) {
+			const scene_light *l = scene_light_at(sc, i);
+			CHECK(l->position.x == want[i][0] && l->position.y == want[i][1] && l->position.z == want[i][2] &&
+				      l->group == group[i],
+			      "lights.pov: light %zu at <%g, %g, %g> group %u, expected <%g, %g, %g> group %u", i,
+			      l->position.x, l->position.y, l->position.z, l->group, want[i][0], want[i][1], want[i][2],
+			      group[i]);
+		}
+		for (size_t g = 0; g < 4 && g < sc->light_groups.len; g++)
+			CHECK(VECBUF_AT(&sc->light_groups, scene_light_group, g).parent == parent[g],
+			      "lights.pov: group %zu's parent %u, expected %u", g + 1,
+			      VECBUF_AT(&sc->light_groups, scene_light_group, g).parent, parent[g]);
+		for (size_t i = 2; i < 6 && i < scene_n_objects(sc); i++) /* sphere, box of each copy of G */
+			CHECK(scene_object_at(sc, i)->light_group == group[i],
+			      "lights.pov: object %zu in group %u, expected %u", i, scene_object_at(sc, i)->light_group,
+			      group[i]);
+	}
+	scene_free(sc);
+
 	/* Allocation failure anywhere is an error, never a crash or a leak (under the sanitizers). */
 	for (long n = 0; n < 400; n += 7) {
 		mem_fail_after(n);
 		st = lang_parse_file("main.pov", &opt, &d, &sc);
 		mem_fail_after(-1);
 		CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "fail after %ld: %d", n, (int)st);
+		scene_free(sc);
+		sc = NULL;
+	}
+	for (long n = 0; n < 600; n += 3) {
+		mem_fail_after(n);
+		st = lang_parse_file("lights.pov", &vo, &d, &sc);
+		mem_fail_after(-1);
+		CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "lights.pov, fail after %ld: %d", n,
+		      (int)st);
 		scene_free(sc);
 		sc = NULL;
 	}
