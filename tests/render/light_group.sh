@@ -4,7 +4,9 @@
 # with the sphere, L2 is global. Without global_lights the plane is lit as by L2 alone and the
 # sphere as by L1 alone (means within 2 %: the same expectation, other noise); with global_lights
 # on the sphere is lit as by both, bit for bit; a group of every light and object renders bit for
-# bit the scene without it.
+# bit the scene without it. Two copies of a declared light_group (a light beside a sphere) render
+# bit for bit as the two groups written out, and not as one group of both lights and spheres (the
+# right copy's light, between the spheres, would light the left sphere's right side).
 . "$top_srcdir/tests/lib.sh"
 enter_workdir
 camP='location <3, 2, -3> look_at <3, 0, 0> angle 40'
@@ -41,4 +43,21 @@ awk -v a="$a" -v b="$b" 'BEGIN { exit !(a < 0.8 * b) }' || fail "the group's lig
 expect_status 0 "$CIRCE" compare onS.exr allS.exr
 expect_status 0 "$CIRCE" compare oneS.exr allS.exr
 expect_status 0 "$CIRCE" compare oneP.exr allP.exr
+cam='location <0, 3, -6> look_at <0, 0.6, 0> angle 50'
+L='light_source { <-1.5, 0.6, 0> color rgb <1.2, 0.3, 0.2> }'
+B='sphere { <0, 0.6, 0>, 0.6 pigment { rgb 0.9 } }'
+W='light_source { <0, 6, -3> color rgb 0.8 }'
+printf 'camera { %s }\n#declare G = light_group { %s %s }\nobject { G translate -x * 1.5 } object { G translate x * 1.5 } %s %s\n' \
+	"$cam" "$L" "$B" "$P" "$W" >decl.pov
+printf 'camera { %s }\nlight_group { %s %s translate -x * 1.5 } light_group { %s %s translate x * 1.5 } %s %s\n' \
+	"$cam" "$L" "$B" "$L" "$B" "$P" "$W" >two.pov
+printf 'camera { %s }\nlight_group { %s %s %s %s } %s %s\n' "$cam" \
+	'light_source { <-3, 0.6, 0> color rgb <1.2, 0.3, 0.2> }' 'light_source { <0, 0.6, 0> color rgb <1.2, 0.3, 0.2> }' \
+	'sphere { <-1.5, 0.6, 0>, 0.6 pigment { rgb 0.9 } }' 'sphere { <1.5, 0.6, 0>, 0.6 pigment { rgb 0.9 } }' \
+	"$P" "$W" >shared.pov
+for f in decl two shared; do
+	expect_status 0 "$CIRCE" render $f.pov -o $f.exr -W 32 -H 24 --spp 64 --seed 3 --quiet --part direct
+done
+expect_status 0 "$CIRCE" compare decl.exr two.exr
+expect_status 1 "$CIRCE" compare decl.exr shared.exr
 pass
