@@ -62,6 +62,24 @@ static void set_inside_kind(world_inst *in, const scene_geom *g)
 	}
 }
 
+/* Instance i's place among the pieces of its mesh (scene_object.pieces; insts are the scene's
+ * objects in order): all of them meshes, each naming its place, or it is taken whole. */
+static void set_pieces(world *w, const scene *sc, size_t i)
+{
+	world_inst *in = &w->insts[i];
+	const scene_object *o = scene_object_at(sc, in->object);
+	in->piece0 = 0, in->n_pieces = 0;
+	if (o->pieces < 2 || o->piece >= o->pieces || o->piece > i || i - o->piece + o->pieces > w->n_insts)
+		return;
+	size_t first = i - o->piece;
+	for (size_t k = 0; k < o->pieces; k++) {
+		const scene_object *ok = scene_object_at(sc, w->insts[first + k].object);
+		if (ok->pieces != o->pieces || ok->piece != k || ok->geom->kind != SHAPE_MESH)
+			return;
+	}
+	in->piece0 = (uint32_t)first, in->n_pieces = o->pieces;
+}
+
 static bool grow_nodes(world *w, size_t *cap)
 {
 	if (w->n_csg_nodes < *cap)
@@ -241,6 +259,7 @@ bool build_csg(world *w, const scene *sc, diag *d)
 		in->csg_inverse = o->inverse;
 		in->hidden = o->clip_only;
 		set_inside_kind(in, o->geom);
+		set_pieces(w, sc, i);
 		steps += o->csg_depth;
 	}
 	if (!steps)

@@ -2371,12 +2371,14 @@ static scene_geom *mesh_part(parser *p, const scene_mesh *m, const int32_t *ftex
 
 /* A mesh2 with a texture_list is placed as one mesh per texture its faces name (and one of the
  * faces naming none, which take the object's texture), each list texture in the mesh's own space,
- * moving with the object as POV-Ray's per-triangle textures do. */
+ * moving with the object as POV-Ray's per-triangle textures do; the pieces are one solid
+ * (scene_object.pieces: a CSG asks the whole mesh's inside). */
 static bool place_textured_mesh(parser *p, vecbuf *out, const scene_mesh *whole, const meshbuf *b, diag_loc kw)
 {
 	const int32_t *ftex = b->ftex.data;
 	const scene_material *const *texs = b->texs.data;
 	bool oom = false;
+	size_t start = out->len;
 	for (int32_t t = -1; t < (int32_t)b->texs.len; t++) {
 		scene_geom *g = mesh_part(p, whole, ftex, t, kw, &oom);
 		if (oom)
@@ -2386,6 +2388,10 @@ static bool place_textured_mesh(parser *p, vecbuf *out, const scene_mesh *whole,
 		TRY(place(p, out, g, kw));
 		if (t >= 0)
 			VECBUF_AT(out, scene_object, out->len - 1).material = texs[t];
+	}
+	for (size_t i = start; out->len - start > 1 && i < out->len; i++) {
+		scene_object *o = &VECBUF_AT(out, scene_object, i);
+		o->piece = (uint32_t)(i - start), o->pieces = (uint32_t)(out->len - start);
 	}
 	return true;
 }

@@ -67,6 +67,10 @@ typedef struct world_inst {
 	uint32_t csg_slot;
 	bool csg_filtered, csg_flip, csg_inverse, hidden;
 	uint8_t inside_kind; /* WORLD_INSIDE_*: how its inside is told */
+	/* A piece of a mesh placed as several objects (mesh2's texture_list, scene_object.pieces):
+	 * the pieces are insts[piece0 .. piece0 + n_pieces), their inside the parity of them all;
+	 * n_pieces 0: a whole object. */
+	uint32_t piece0, n_pieces;
 	dvec3 plane_n;       /* WORLD_INSIDE_PLANE: the unit normal and offset (object space) */
 	double plane_d;
 	dvec3 box_lo, box_hi; /* WORLD_INSIDE_BOX: object space; WORLD_INSIDE_CONE: base and cap */

@@ -54,10 +54,28 @@ static bool solid_inside(const world_inst *in, vec3 p)
 	return in->g->b && mesh_inside(in->g->b, d3_to_v3(q));
 }
 
+/* p (world) inside the mesh whose pieces in is one of (world_inst.n_pieces): the parity of the
+ * crossings of every piece, each an open surface (no piece's own box bounds the whole's inside). */
+static bool pieces_inside(const world *w, const world_inst *in, vec3 p)
+{
+	bool inside = false, near = false;
+	for (uint32_t k = 0; k < in->n_pieces; k++) {
+		const world_inst *pk = &w->insts[in->piece0 + k];
+		near |= p.x >= pk->lo.x && p.y >= pk->lo.y && p.z >= pk->lo.z && p.x <= pk->hi.x && p.y <= pk->hi.y &&
+			p.z <= pk->hi.z;
+	}
+	for (uint32_t k = 0; near && k < in->n_pieces; k++) {
+		const world_inst *pk = &w->insts[in->piece0 + k];
+		dvec3 q = pk->identity ? v3_to_d3(p) : xform_inv_point(&pk->xf, v3_to_d3(p));
+		inside ^= pk->g->b && mesh_inside(pk->g->b, d3_to_v3(q));
+	}
+	return inside;
+}
+
 bool world_inside(const world *w, uint32_t inst, vec3 p)
 {
 	const world_inst *in = &w->insts[inst];
-	return solid_inside(in, p) != in->csg_inverse;
+	return (in->n_pieces ? pieces_inside(w, in, p) : solid_inside(in, p)) != in->csg_inverse;
 }
 
 static bool kid_inside(const world *w, int32_t item, vec3 p);

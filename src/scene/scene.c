@@ -815,6 +815,8 @@ void scene_dump(const scene *s, FILE *o)
 			fprintf(o, " light_group %u", ob->light_group);
 		for (uint32_t k = 0; k < ob->n_parts; k++) /* a blob's component textures, part k + 1's */
 			fprintf(o, " part%u material %u", k + 1, ob->part_mat[k]->id);
+		if (ob->pieces)
+			fprintf(o, " piece %u of %u", ob->piece, ob->pieces);
 		dump_loc(o, ob->loc);
 		fputc('\n', o);
 		dump_xform(o, &ob->transform);

@@ -321,6 +321,11 @@ typedef struct scene_object {
 	 * part_mat[k - 1] (in the arena); part 0 is the object's material. n_parts 0: none. */
 	const struct scene_material *const *part_mat;
 	uint32_t n_parts;
+	/* mesh2's texture_list: the mesh placed as one object a texture (pieces of them, this one
+	 * piece, the others the objects just before and after it in the same order), each piece an
+	 * open surface of the one solid: its inside is the parity of all the pieces' crossings.
+	 * pieces 0: a whole object. */
+	uint32_t piece, pieces;
 } scene_object;
 
 /* POV-Ray 3.7's object flags (Parse_Object_Mods): hollow matters only for media; the others hide

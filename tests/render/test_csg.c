@@ -1,5 +1,6 @@
 /* test_csg: POV-Ray's CSG against brute force. For each solid (every operator, nested, inverse
- * on an object and on a node, planes as half-spaces, clipped_by, under transforms): random rays'
+ * on an object and on a node, planes as half-spaces, clipped_by, under transforms, a mesh2 split
+ * by its texture_list as an operand, its inside the whole mesh's): random rays'
  * closest hits and shadow rays against a loop over every triangle of every operand whose hits are
  * kept by the boolean's sensitivity (a point of operand i's surface bounds the solid where the
  * solid's inside changes with i's), the insides of points against a parity count over every
@@ -46,6 +47,9 @@ typedef struct csg_case {
 	int n;
 	bool inverse[MAX_LEAVES], clip[MAX_LEAVES];
 	bool (*f)(const bool *in);
+	/* The first `joined` objects are the pieces of one mesh (mesh2's texture_list: one mesh a
+	 * texture): each piece's inside is the whole mesh's, by the parity over all their triangles. */
+	int joined;
 } csg_case;
 
 static bool f_nested(const bool *in) { return in[0] && in[1] && !in[2] && !in[3]; }
@@ -56,6 +60,8 @@ static bool f_union_op(const bool *in) { return in[0] && !(in[1] || in[2]); }
 /* The planes' wedge case: cylinder, y < 0.6, y > -0.6, minus (x < 0 and z < 0). */
 static bool f_wedge(const bool *in) { return in[0] && in[1] && in[2] && !(in[3] && in[4]); }
 static bool f_open(const bool *in) { return in[0] && !in[1]; }
+/* A tetrahedron of two textures (two pieces, each the whole mesh's inside) less a sphere. */
+static bool f_split(const bool *in) { return in[0] && in[1] && !in[2]; }
 
 static const char CAMERA[] = "camera { location <0, 0, -60> look_at 0 }\nlight_source { <0, 50, -50> color 1 }\n";
 
@@ -83,6 +89,12 @@ static const csg_case cases[] = {
 	 5, {false}, {false}, f_wedge},
 	{"an open cylinder subtracted", /* its inside is the closed cylinder's, as POV-Ray's */
 	 "difference { sphere { 0, 1 } cylinder { -0.5*y, 2*y, 0.4 open } rotate 20*x }\n", 2, {false}, {false}, f_open},
+	{"a mesh2 of two textures less a sphere", /* each piece open; the operand is the whole mesh */
+	 "difference { mesh2 { vertex_vectors { 4, <-1.2, -1, -1>, <1.3, -1.1, -0.8>, <0, 1.3, -0.6>, <0.1, -0.2, 1.4> }\n"
+	 "  texture_list { 2, texture { pigment { rgb x } } texture { pigment { rgb y } } }\n"
+	 "  face_indices { 4, <0, 2, 1>, 0, <0, 1, 3>, 0, <1, 2, 3>, 1, <0, 3, 2>, 1 } }\n"
+	 "  sphere { <0.5, 0.3, -0.2>, 0.6 } rotate 25*y }\n",
+	 3, {false}, {false}, f_split, 2},
 };
 
 /* World-space triangles of every instance. */
@@ -135,6 +147,12 @@ static bool ref_inside_raw(const world *w, const tris *T, size_t i, vec3 p)
 
 static bool ref_inside(const world *w, const tris *T, const csg_case *c, size_t i, vec3 p)
 {
+	if ((int)i < c->joined) { /* the parity of the crossings of every piece: one mesh's */
+		bool in = false;
+		for (int k = 0; k < c->joined; k++)
+			in ^= ref_inside_raw(w, T, (size_t)k, p);
+		return in != c->inverse[i];
+	}
 	return ref_inside_raw(w, T, i, p) != c->inverse[i];
 }
 
@@ -143,8 +161,8 @@ static bool ref_solid(const world *w, const tris *T, const csg_case *c, bool (*f
 		      bool value)
 {
 	bool in[MAX_LEAVES];
-	for (int i = 0; i < c->n; i++)
-		in[i] = i == leaf ? value : ref_inside(w, T, c, (size_t)i, p);
+	for (int i = 0; i < c->n; i++) /* a piece of the joined mesh forces every piece */
+		in[i] = i == leaf || (i < c->joined && leaf >= 0 && leaf < c->joined) ? value : ref_inside(w, T, c, (size_t)i, p);
 	return f(in);
 }
 
