@@ -2030,7 +2030,20 @@ static bool smooth_triangle(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	return object_triangle(p, out, kw, open, true);
 }
 
-/* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } ) { modifier } "}" */
+/* [ "inside_vector" vector ] after a mesh's or mesh2's data: POV-Ray's (Parse_Mesh, Parse_Mesh2),
+ * the direction along which it counts crossings, without which its mesh has no inside in a CSG.
+ * Read and unused: circe's mesh always has the inside of its parity along a fixed ray of its own
+ * (render/world_csg.c), the same for any direction where the mesh is closed. */
+static bool inside_vector(parser *p)
+{
+	if (!word_here(p, "inside_vector"))
+		return true;
+	lang_advance(p);
+	dvec3 v;
+	return lang_vec3(p, "as the inside_vector", &v);
+}
+
+/* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } [ "inside_vector" vector ] ) { modifier } "}" */
 static bool declared_object(parser *p, vecbuf *out, diag_loc kw);
 
 static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
@@ -2066,6 +2079,7 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 	}
 	if (ok && b.faces.len == 0)
 		ok = lang_error_found(p, "expected 'triangle', 'smooth_triangle' or 'file' in 'mesh'");
+	ok = ok && inside_vector(p);
 	scene_geom *g = ok ? mesh_geom(p, &b, any_smooth, any_uv, kw) : NULL;
 	meshbuf_free(&b);
 	if (!g)
@@ -2076,6 +2090,7 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 }
 
 typedef bool (*item_fn)(parser *p, void *ctx, uint32_t i);
+
 
 /* list = "{" count { [ "," ] item } [ "," ] "}"   with exactly count items */
 static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, vecbuf *reserve, size_t per_item,
@@ -2253,7 +2268,8 @@ static bool once(parser *p, bool *seen, const lang_token *t)
 }
 
 /* mesh2 = "mesh2" "{" "vertex_vectors" list [ "normal_vectors" list ] [ "uv_vectors" list ]
- *         [ texture_list ] "face_indices" list [ "normal_indices" list ] [ "uv_indices" list ] { modifier } "}" */
+ *         [ texture_list ] "face_indices" list [ "normal_indices" list ] [ "uv_indices" list ]
+ *         [ "inside_vector" vector ] { modifier } "}" */
 static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 {
 	bool seen[6] = {false};
@@ -2323,7 +2339,7 @@ static bool mesh2_body(parser *p, meshbuf *b, diag_loc kw, diag_loc open)
 				return lang_error(p, open, "mesh2 has %zu uv_vectors but %zu vertex_vectors and no uv_indices",
 						  b->uv.len, b->pos.len);
 			(void)kw;
-			return true;
+			return inside_vector(p);
 		}
 	}
 }

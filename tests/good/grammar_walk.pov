@@ -65,12 +65,12 @@ sphere { V, 1 translate x rotate y * 30 scale 2 scale <1, 2, 3> matrix <1, 0, 0,
 // rule: box, plane
 box { -1, 1 }
 plane { y, 0 }
-// rule: mesh, triangle, smooth_triangle, tri_uv
-mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z uv_vectors <0, 0>, <1, 0>, <0, 1> } }
+// rule: mesh, triangle, smooth_triangle, tri_uv, inside_vector
+mesh { triangle { 0, x, y } smooth_triangle { 0, -z, x, -z, y, -z uv_vectors <0, 0>, <1, 0>, <0, 1> } inside_vector z }
 mesh { file "model.obj" }
 // rule: mesh2, list
 mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, -z } uv_vectors { 3, <0, 0>, <1, 0>, <0, 1> }
-        face_indices { 1, <0, 1, 2> } normal_indices { 1, <0, 0, 0> } uv_indices { 1, <0, 1, 2> } }
+        face_indices { 1, <0, 1, 2> } normal_indices { 1, <0, 0, 0> } uv_indices { 1, <0, 1, 2> } inside_vector <0, 0, 1> }
 // rule: subdivision_surface, subd_item, crease_list, corner_list
 subdivision_surface {
   vertex_vectors { 4, 0, x, x + y, y } faces { 1, <0, 1, 2, 3> }
