@@ -3110,17 +3110,10 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		vecbuf_free(&tmp);
 		return true;
 	}
-	if (ok && p->sc->objects.len != objects) { /* add_light placed a looks_like's objects */
-		diag_loc at = p->prev.loc;
-		for (size_t i = lights; i < p->sc->lights.len; i++)
-			if (VECBUF_AT(&p->sc->lights, scene_light, i).n_looks) {
-				at = VECBUF_AT(&p->sc->lights, scene_light, i).loc;
-				break;
-			}
-		vecbuf_free(&tmp);
-		return lang_error(p, at, "a light_source with looks_like inside a declared object is not supported by "
-					 "circe: give the light beside the object's copies");
-	}
+	/* add_light placed its lights' looks_like objects in the scene, unmoved by the blocks around
+	 * them: each light's own copy (scene_light.looks, moved with it) is placed with each copy of
+	 * the declared object instead (declared_object). */
+	p->sc->objects.len = objects;
 	objlist *l = ok ? arena_zalloc(&p->sc->arena, 1, sizeof *l) : NULL;
 	if (l) {
 		l->n = tmp.len;

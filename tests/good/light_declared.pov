@@ -1,8 +1,9 @@
 // POV-Ray copies the light_sources of a declared union, CSG or light_group with each
 // object { Name }: each copy's lights are moved by the copy's transforms (after the declared
 // object's own), and each light_group in it is a new group per copy (the chain inside copied; a
-// group around the copy becomes its parent). Where a copy is not placed in the scene (clipped_by)
-// its lights light nothing (a warning).
+// group around the copy becomes its parent); a light's looks_like objects and projected_through
+// objects move with its copy. Where a copy is not placed in the scene (clipped_by) its lights
+// light nothing (a warning).
 #declare Lamp = union { light_source { <0, 5, 0> color 1 } sphere { 0, 1 } translate y }
 object { Lamp translate x * 3 }
 object { Lamp rotate z * 90 }
@@ -23,3 +24,10 @@ object { G translate x }
 object { G scale 2 }
 light_group { light_source { <0, 9, 0> color 1 } object { G } }
 sphere { 0, 2 clipped_by { object { Lamp } } }
+#declare Bulb = union {
+  light_source { <0, 5, 0> color 1 looks_like { sphere { 0, 0.2 } } projected_through { disc { <0, 3, 0>, y, 0.5 } } }
+  sphere { 0, 1 }
+  translate y
+}
+object { Bulb translate x * 3 }
+object { Bulb rotate z * 90 }
