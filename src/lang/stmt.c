@@ -2091,7 +2091,6 @@ static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 
 typedef bool (*item_fn)(parser *p, void *ctx, uint32_t i);
 
-
 /* list = "{" count { [ "," ] item } [ "," ] "}"   with exactly count items */
 static bool counted_list(parser *p, const char *what, item_fn item, void *ctx, vecbuf *reserve, size_t per_item,
 			 uint32_t *count)
