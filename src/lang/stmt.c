@@ -3411,8 +3411,10 @@ static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_
 			n++;
 	}
 	if (n == 0)
-		return lang_error(p, o->loc, "the mesh_camera's mesh has no face with an area in uv (distribution 3 maps "
-					     "each pixel to the uv_vectors of its faces)");
+		return lang_error(
+		    p, o->loc,
+		    "the mesh_camera's mesh has no face with an area in uv (distribution 3 maps "
+		    "each pixel to the uv_vectors of its faces)");
 	c->uv_faces = f, c->uv_n = n, c->mesh_smooth = smooth;
 	if (!scene_cam_uv_index(&p->sc->arena, f, n, &c->uv_grid, &c->uv_start, &c->uv_list))
 		return lang_error(p, o->loc, "out of memory");
@@ -3436,8 +3438,9 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 	at = lang_peek(p)->loc;
 	TRY(lang_int(p, "for the mesh_camera's distribution_type", 0, 3, &dist));
 	if (dist >= 2 && rays != 1)
-		return lang_error(p, rays_at, "rays per pixel must be 1 for mesh_camera distribution %ld, as in POV-Ray; "
-					      "found %ld",
+		return lang_error(p, rays_at,
+				  "rays per pixel must be 1 for mesh_camera distribution %ld, as in POV-Ray; "
+				  "found %ld",
 				  dist, rays);
 	if (lang_float_follows(p)) {
 		double x;
@@ -3465,8 +3468,9 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 			break;
 		}
 		if (dist == 3 && from == 1)
-			diag_warning(p->d, t.loc, "a mesh_camera of distribution 3 uses its first mesh only: the meshes "
-						  "after it are ignored, as in POV-Ray");
+			diag_warning(p->d, t.loc,
+				     "a mesh_camera of distribution 3 uses its first mesh only: the meshes "
+				     "after it are ignored, as in POV-Ray");
 	}
 	if (ok && b.len == 0)
 		ok = lang_error(p, lang_peek(p)->loc, "a mesh_camera needs a mesh or mesh2 after its distribution type");
@@ -3477,7 +3481,8 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 	bool smooth = false;
 	if (ok && lang_peek(p)->kind == LTK_KW_SMOOTH) {
 		if (dist != 3)
-			ok = lang_error(p, lang_peek(p)->loc, "smooth is for mesh_camera distribution 3 only, as in POV-Ray");
+			ok = lang_error(p, lang_peek(p)->loc,
+					"smooth is for mesh_camera distribution 3 only, as in POV-Ray");
 		else
 			lang_advance(p), smooth = true;
 	}
@@ -3487,8 +3492,10 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 				open.line);
 	if (ok && dist == 3)
 		ok = mesh_camera_uv(p, (const scene_object *)b.data, smooth, c);
-	if (ok && dist != 3) { /* ray k of a pixel from mesh k, as POV-Ray; the degenerate faces are not faces */
-		uint32_t total = 0, nm = dist != 0 ? (uint32_t)b.len : (uint32_t)rays; /* 1: summed, 2: side by side */
+	/* Types 0 to 2: ray k of a pixel from mesh k (type 0), from the summed meshes (1) or the meshes
+	 * side by side (2), as POV-Ray; the degenerate faces are not faces */
+	if (ok && dist != 3) {
+		uint32_t total = 0, nm = dist != 0 ? (uint32_t)b.len : (uint32_t)rays;
 		for (uint32_t k = 0; k < nm; k++)
 			total += ((const scene_object *)b.data)[k].geom->u.mesh.n_faces;
 		scene_cam_face *f = arena_zalloc(&p->sc->arena, total ? total : 1, sizeof *f);

@@ -663,8 +663,8 @@ static bool uv_face_cells(const scene_cam_uv_face *f, uint32_t g, uint32_t c[4])
 	return true;
 }
 
-bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid, const uint32_t **start,
-			const uint32_t **list)
+bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid,
+			const uint32_t **start, const uint32_t **list)
 {
 	/* About one face a cell, at most 64 x 64; coarser while faces wide in uv would list more than
 	 * 4 entries a face (the lookup stays first-match exact at any size). */
@@ -723,7 +723,8 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 	if (c->type == SCENE_CAM_SPHERICAL)
 		fprintf(o, " v_angle %g", c->v_angle_deg);
 	if (c->type == SCENE_CAM_MESH && c->mesh_distribution == 3)
-		fprintf(o, " distribution 3 uv faces %u grid %u%s", c->uv_n, c->uv_grid, c->mesh_smooth ? " smooth" : "");
+		fprintf(o, " distribution 3 uv faces %u grid %u%s", c->uv_n, c->uv_grid,
+			c->mesh_smooth ? " smooth" : "");
 	else if (c->type == SCENE_CAM_MESH)
 		fprintf(o, " distribution %d meshes %u faces %u", c->mesh_distribution, c->mesh_count, c->mesh_n);
 	if (c->type == SCENE_CAM_MESH && c->mesh_distribution == 1)

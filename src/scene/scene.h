@@ -49,8 +49,8 @@ bool scene_cam_uv_face_make(const dvec3 p[3], const dvec3 *n, const vec2 uv[3], 
  * along v) listing from list[start[j * grid + i]] to list[start[j * grid + i + 1]] the faces
  * whose uv bounds meet it, in face order (the first face holding a point is the first of its
  * cell's that does). In arena a; false when out of memory. */
-bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid, const uint32_t **start,
-			const uint32_t **list);
+bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid,
+			const uint32_t **start, const uint32_t **list);
 /* The cell (0 to grid - 1) of coordinate x in [0, 1] on that grid (x below 0 in cell 0, 1 and above
  * in the last), the index's and the lookup's one rule. */
 static inline uint32_t scene_cam_uv_cell(double x, uint32_t grid)
@@ -76,8 +76,8 @@ typedef struct scene_camera {
 	 * the image point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]); NULL: none */
 	const struct scene_pigment *normal;
 	diag_loc normal_loc;
-	/* SCENE_CAM_MESH, POV-Ray's mesh_camera (distribution 0): the non-degenerate faces of its
-	 * first mesh_count meshes (one a ray per pixel), mesh k's from mesh_first[k] to
+	/* SCENE_CAM_MESH, POV-Ray's mesh_camera (distributions 0 to 2): the non-degenerate faces of
+	 * its first mesh_count meshes (0: one a ray per pixel; 1 and 2: all), mesh k's from mesh_first[k] to
 	 * mesh_first[k + 1], in the scene's arena; location z offsets each ray's origin along its
 	 * face normal, a direction z < 0 reverses the rays */
 	const scene_cam_face *mesh_faces;
@@ -86,7 +86,7 @@ typedef struct scene_camera {
 	int mesh_distribution; /* 0; 1: the meshes' faces summed, ray k of pixel i from face
 				  k * width * height + i; 2: mesh k the k-th vertical strip of the
 				  image; 3: the first mesh's uv, uv_faces */
-	uint32_t mesh_rays; /* rays per pixel (distribution 1 uses it; 0 and 2 count meshes) */
+	uint32_t mesh_rays;    /* rays per pixel (distribution 1 uses it; 0 and 2 count meshes) */
 	/* distribution 3: the first mesh's non-degenerate faces of an area in uv, in order, and
 	 * their uv index (scene_cam_uv_index); smooth: POV-Ray's smooth (the normals interpolate) */
 	const scene_cam_uv_face *uv_faces;

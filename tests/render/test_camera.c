@@ -337,8 +337,8 @@ static void test_mesh_camera_summed(void)
 	CHECK(cam_init(&c, &p, 2, 1), "distribution 1, offset and inverted");
 	CHECK(cam_sample(&c, 0, 0, v2(0.7f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(-1, 0, 0), 1e-6f) &&
 		  near3(r.o, v3(0.25f, 1.0f / 3, 1.0f / 3), 1e-6f),
-	      "face 2 offset 0.25 along +x, inverted: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y,
-	      r.d.z);
+	      "face 2 offset 0.25 along +x, inverted: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x,
+	      r.d.y, r.d.z);
 	p.mesh_rays = 0;
 	CHECK(!cam_init(&c, &p, 2, 1), "distribution 1 with no rays accepted");
 }
@@ -384,16 +384,19 @@ static void test_mesh_camera_uv(void)
 	t = xform_then(xform_translate(d3(0, 0, 5)), sc); /* x' = 2 x, y' = y, z' = z + 5 */
 	/* The quad (-1,-1) to (1,1) at z 0, uv (0,0) to (1,1) in two faces; POV-Ray's normal
 	 * cross(P3 - P1, P2 - P1) is -z for both. */
-	const dvec3 q[2][3] = {{d3(-1, -1, 0), d3(1, -1, 0), d3(1, 1, 0)}, {d3(-1, -1, 0), d3(1, 1, 0), d3(-1, 1, 0)}};
+	const dvec3 q[2][3] = {{d3(-1, -1, 0), d3(1, -1, 0), d3(1, 1, 0)},
+			       {d3(-1, -1, 0), d3(1, 1, 0), d3(-1, 1, 0)}};
 	const vec2 quv[2][3] = {{v2(0, 0), v2(1, 0), v2(1, 1)}, {v2(0, 0), v2(1, 1), v2(0, 1)}};
 	scene_cam_uv_face f[8];
-	CHECK(scene_cam_uv_face_make(q[0], NULL, quv[0], &t, &f[0]) && scene_cam_uv_face_make(q[1], NULL, quv[1], &t, &f[1]),
+	CHECK(scene_cam_uv_face_make(q[0], NULL, quv[0], &t, &f[0]) &&
+		  scene_cam_uv_face_make(q[1], NULL, quv[1], &t, &f[1]),
 	      "the quad's faces");
 	CHECK(near3(f[0].dir[0], v3(0, 0, -1), 1e-6f) && near3(f[1].offset[2], v3(0, 0, -1), 1e-6f) &&
 		  near3(f[0].p[1], v3(2, -1, 5), 1e-6f),
 	      "the quad's normals and corners under the transform");
 	const vec2 zero[3] = {v2(0, 0), v2(0, 0), v2(0, 0)}, line[3] = {v2(0, 0), v2(0.5f, 0.5f), v2(1, 1)};
-	CHECK(!scene_cam_uv_face_make(q[0], NULL, zero, &t, &f[2]), "a face of uv 0 (no uv_vectors) is a face");
+	CHECK(!scene_cam_uv_face_make(q[0], NULL, zero, &t, &f[2]),
+	      "a face of uv 0 (no uv_vectors) is a face");
 	CHECK(!scene_cam_uv_face_make(q[0], NULL, line, &t, &f[2]), "a face of no area in uv is a face");
 	const dvec3 flat[3] = {d3(0, 0, 0), d3(1, 1, 1), d3(2, 2, 2)};
 	CHECK(!scene_cam_uv_face_make(flat, NULL, quv[0], &t, &f[2]), "a degenerate face is a face");
@@ -406,10 +409,10 @@ static void test_mesh_camera_uv(void)
 		for (int px = 0; px < 4; px++) {
 			double u = (px + 0.5) / 4, v = 1 - (py + 0.5) / 2;
 			vec3 want = v3((float)(2 * (2 * u - 1)), (float)(2 * v - 1), 4.5f);
-			CHECK(cam_sample(&c, px, py, v2(0.5f, 0.5f), v2(0, 0), &r) && near3(r.o, want, 1e-6f) &&
-				  near3(r.d, v3(0, 0, -1), 1e-6f),
-			      "pixel %d %d: o (%g %g %g) d (%g %g %g), want o (%g %g %g)", px, py, r.o.x, r.o.y, r.o.z,
-			      r.d.x, r.d.y, r.d.z, want.x, want.y, want.z);
+			CHECK(cam_sample(&c, px, py, v2(0.5f, 0.5f), v2(0, 0), &r) &&
+				  near3(r.o, want, 1e-6f) && near3(r.d, v3(0, 0, -1), 1e-6f),
+			      "pixel %d %d: o (%g %g %g) d (%g %g %g), want o (%g %g %g)", px, py, r.o.x,
+			      r.o.y, r.o.z, r.d.x, r.d.y, r.d.z, want.x, want.y, want.z);
 		}
 	/* the sub-pixel position counts (POV-Ray's antialiasing works for this type) */
 	CHECK(cam_sample(&c, 0, 0, v2(0, 0), v2(0, 0), &r) && near3(r.o, v3(-2, 1, 4.5f), 1e-6f),
@@ -424,22 +427,26 @@ static void test_mesh_camera_uv(void)
 	/* Smooth: corner normals +z, +z, (0.6, 0, 0.8) on face (0,0,0) (1,0,0) (0,1,0), uv the same;
 	 * at uv (0.25, 0.25) the barycentrics are 1/2, 1/4, 1/4: normal (0.15, 0, 0.95) (before the
 	 * identity transform), the origin (0.25, 0.25, 0) + 0.1 of that unnormalised sum. */
-	const dvec3 s3[3] = {d3(0, 0, 0), d3(1, 0, 0), d3(0, 1, 0)}, sn[3] = {d3(0, 0, 1), d3(0, 0, 1), d3(0.6, 0, 0.8)};
+	const dvec3 s3[3] = {d3(0, 0, 0), d3(1, 0, 0), d3(0, 1, 0)},
+		    sn[3] = {d3(0, 0, 1), d3(0, 0, 1), d3(0.6, 0, 0.8)};
 	const vec2 suv[3] = {v2(0, 0), v2(1, 0), v2(0, 1)};
 	xform id = xform_identity();
 	CHECK(scene_cam_uv_face_make(s3, sn, suv, &id, &f[2]), "the smooth face");
 	CHECK(uv_cam(&c, &a, &f[2], 1, 4, 4, 0.1f), "smooth");
 	CHECK(cam_sample(&c, 1, 3, v2(0, 0), v2(0, 0), &r), "smooth: uv (1/4, 1/4)");
 	vec3 nsum = v3(0.15f, 0, 0.95f);
-	CHECK(near3(r.d, v3_normalize(nsum), 1e-6f) && near3(r.o, v3_madd(v3(0.25f, 0.25f, 0), nsum, 0.1f), 1e-6f),
+	CHECK(near3(r.d, v3_normalize(nsum), 1e-6f) &&
+		  near3(r.o, v3_madd(v3(0.25f, 0.25f, 0), nsum, 0.1f), 1e-6f),
 	      "smooth: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
 
 	/* Overlapping faces: the first in order wins, here the clockwise (negative area) face 3 of
 	 * direction +z before face 4 covering the same uv with -z. */
 	const dvec3 cw[3] = {d3(0, 0, 0), d3(0, 1, 0), d3(1, 0, 0)};
 	const vec2 cwuv[3] = {v2(0, 0), v2(0, 1), v2(1, 0)};
-	CHECK(scene_cam_uv_face_make(cw, NULL, cwuv, &id, &f[3]) && near3(f[3].dir[0], v3(0, 0, 1), 1e-6f), "face 3 (+z)");
-	CHECK(scene_cam_uv_face_make(s3, NULL, suv, &id, &f[4]) && near3(f[4].dir[0], v3(0, 0, -1), 1e-6f), "face 4 (-z)");
+	CHECK(scene_cam_uv_face_make(cw, NULL, cwuv, &id, &f[3]) && near3(f[3].dir[0], v3(0, 0, 1), 1e-6f),
+	      "face 3 (+z)");
+	CHECK(scene_cam_uv_face_make(s3, NULL, suv, &id, &f[4]) && near3(f[4].dir[0], v3(0, 0, -1), 1e-6f),
+	      "face 4 (-z)");
 	CHECK(uv_cam(&c, &a, &f[3], 2, 4, 4, 0), "overlapping");
 	CHECK(cam_sample(&c, 1, 3, v2(0, 0), v2(0, 0), &r) && near3(r.d, v3(0, 0, 1), 1e-6f),
 	      "the first of two faces holding the uv (d %g %g %g)", r.d.x, r.d.y, r.d.z);
@@ -454,10 +461,12 @@ static void test_mesh_camera_uv(void)
 	while (n < N) {
 		dvec3 pt[3];
 		vec2 uv[3];
-		double cu = rng_double(&s) * 1.2 - 0.1, cv = rng_double(&s) * 1.2 - 0.1, size = 0.02 + 0.3 * rng_double(&s);
+		double cu = rng_double(&s) * 1.2 - 0.1, cv = rng_double(&s) * 1.2 - 0.1,
+		       size = 0.02 + 0.3 * rng_double(&s);
 		for (int k = 0; k < 3; k++) {
 			pt[k] = d3(rng_double(&s), rng_double(&s), rng_double(&s));
-			uv[k] = v2((float)(cu + size * (rng_double(&s) - 0.5)), (float)(cv + size * (rng_double(&s) - 0.5)));
+			uv[k] = v2((float)(cu + size * (rng_double(&s) - 0.5)),
+				   (float)(cv + size * (rng_double(&s) - 0.5)));
 		}
 		if (scene_cam_uv_face_make(pt, NULL, uv, &id, &g[n]))
 			n++;
@@ -476,10 +485,12 @@ static void test_mesh_camera_uv(void)
 			continue;
 		}
 		hits++;
-		vec3 o = v3_madd(v3_madd(v3_scale(g[k].p[0], (float)b[0]), g[k].p[1], (float)b[1]), g[k].p[2], (float)b[2]);
+		vec3 o = v3_madd(v3_madd(v3_scale(g[k].p[0], (float)b[0]), g[k].p[1], (float)b[1]), g[k].p[2],
+				 (float)b[2]);
 		bad += !got || !near3(r.o, o, 1e-5f) || !near3(r.d, g[k].dir[0], 1e-5f);
 	}
-	CHECK(bad == 0 && hits > 5000, "the index's first face is brute force's: %d wrong of %d hits", bad, hits);
+	CHECK(bad == 0 && hits > 5000, "the index's first face is brute force's: %d wrong of %d hits", bad,
+	      hits);
 	arena_release(&a);
 }
 
