@@ -401,8 +401,9 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 			return cam_uv_sample(c, px, py, pixel_u, out);
 		/* POV-Ray's distribution 0: the pixel's index is its face's in the mesh of the ray; past
 		 * the mesh's last face, no ray. The sub-pixel position is lost, as in POV-Ray (its x, y
-		 * floored); pixel_u.x picks the mesh instead, so the samples average POV-Ray's rays. */
-		uint32_t k = (uint32_t)(pixel_u.x * (float)c->mesh_count);
+		 * floored); pixel_u.x picks one of the pixel's rays that exist instead, so the samples
+		 * average those alone, as POV-Ray divides by the rays it shot. */
+		uint32_t k = 0;
 		uint64_t i = (uint64_t)py * (uint64_t)c->width + (uint64_t)px;
 		if (c->mesh_distribution == 1) {
 			/* POV-Ray's distribution 1 as its documentation and tracepixel.cpp's comment
@@ -431,6 +432,18 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 			 * POV-Ray 3.7 computes it */
 			k = (uint32_t)((double)px / ((double)c->width / (double)c->mesh_count));
 			i = (uint64_t)py * (uint64_t)((uint32_t)c->width / c->mesh_count) + (uint64_t)px;
+		}
+		if (c->mesh_distribution == 0) { /* the j-th of the meshes with a face i */
+			uint32_t have = 0;
+			for (uint32_t m = 0; m < c->mesh_count; m++)
+				have += i < (uint64_t)(c->mesh_first[m + 1] - c->mesh_first[m]);
+			if (have == 0)
+				return false;
+			uint32_t j = (uint32_t)(pixel_u.x * (float)have);
+			j = j < have ? j : have - 1;
+			for (k = 0; k < c->mesh_count; k++)
+				if (i < (uint64_t)(c->mesh_first[k + 1] - c->mesh_first[k]) && j-- == 0)
+					break;
 		}
 		if (k >= c->mesh_count)
 			k = c->mesh_count - 1;
