@@ -666,10 +666,10 @@ static bool uv_face_cells(const scene_cam_uv_face *f, uint32_t g, uint32_t c[4])
 bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid,
 			const uint32_t **start, const uint32_t **list)
 {
-	/* About one face a cell, at most 64 x 64; coarser while faces wide in uv would list more than
+	/* About one face a cell, at most 256 x 256; coarser while faces wide in uv would list more than
 	 * 4 entries a face (the lookup stays first-match exact at any size). */
 	uint32_t g = (uint32_t)ceil(sqrt((double)n));
-	g = g < 1 ? 1 : g > 64 ? 64 : g;
+	g = g < 1 ? 1 : g > 256 ? 256 : g;
 	uint64_t total;
 	for (;;) {
 		total = 0;
