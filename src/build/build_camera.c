@@ -46,6 +46,15 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 		cp.mesh_n = c->mesh_n;
 		cp.mesh_first = c->mesh_first, cp.mesh_count = c->mesh_count;
 		cp.mesh_distribution = c->mesh_distribution;
+		cp.mesh_rays = c->mesh_rays;
+		_Static_assert(sizeof(scene_cam_uv_face) == sizeof(cam_uv_face) &&
+				   offsetof(scene_cam_uv_face, offset) == offsetof(cam_uv_face, offset) &&
+				   offsetof(scene_cam_uv_face, dir) == offsetof(cam_uv_face, dir) &&
+				   offsetof(scene_cam_uv_face, uv) == offsetof(cam_uv_face, uv),
+			       "scene_cam_uv_face is cam_uv_face");
+		cp.uv_faces = (const cam_uv_face *)c->uv_faces;
+		cp.uv_n = c->uv_n, cp.uv_grid = c->uv_grid;
+		cp.uv_start = c->uv_start, cp.uv_list = c->uv_list;
 		cp.mesh_offset = (float)c->location.z; /* POV-Ray's Location[Z], along the normal */
 		cp.mesh_invert = c->has_direction && c->direction.z < -1e-10; /* POV-Ray's -EPSILON */
 	}

@@ -3461,11 +3461,60 @@ static bool camera_accepted(parser *p, const lang_token *t)
 	return lang_float(p, t->kind == LTK_KW_CONFIDENCE ? "after 'confidence'" : "after 'variance'", &x);
 }
 
+/* Distribution 3's faces: mesh o's non-degenerate faces of an area in uv, in order, with their uv
+ * index, into c. smooth: a face whose corner normals differ takes them (POV-Ray's smooth
+ * modifier, for its smooth triangles); else every face its own normal. */
+static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_camera *c)
+{
+	const scene_mesh *m = &o->geom->u.mesh;
+	scene_cam_uv_face *f = arena_zalloc(&p->sc->arena, m->n_faces ? m->n_faces : 1, sizeof *f);
+	if (!f)
+		return lang_error(p, o->loc, "out of memory");
+	uint32_t n = 0;
+	for (uint32_t i = 0; i < m->n_faces; i++) {
+		dvec3 pt[3], nrm[3];
+		vec2 uv[3] = {{0, 0}, {0, 0}, {0, 0}};
+		bool has_n = smooth && m->normals;
+		for (int k = 0; k < 3; k++) {
+			uint32_t v = m->faces[3 * i + (uint32_t)k];
+			uint32_t t = m->uv_idx ? m->uv_idx[3 * i + (uint32_t)k] : v;
+			uint32_t q = m->normal_idx ? m->normal_idx[3 * i + (uint32_t)k] : v;
+			pt[k] = v3_to_d3(m->positions[v]);
+			if (m->uvs && t < m->n_uvs)
+				uv[k] = m->uvs[t];
+			if (has_n && q < m->n_normals) {
+				/* POV-Ray's: a zero normal made <1,0,0>, each normalised */
+				dvec3 x = v3_to_d3(m->normals[q]);
+				double len = d3_length(x);
+				nrm[k] = len > 0 ? d3_scale(x, 1 / len) : d3(1, 0, 0);
+			} else {
+				has_n = false;
+			}
+		}
+		/* POV-Ray's smooth triangle: its normals differ (squared by more than its EPSILON) */
+		if (has_n && !(d3_dot(d3_sub(nrm[0], nrm[1]), d3_sub(nrm[0], nrm[1])) > 1e-10 ||
+			       d3_dot(d3_sub(nrm[0], nrm[2]), d3_sub(nrm[0], nrm[2])) > 1e-10))
+			has_n = false;
+		if (scene_cam_uv_face_make(pt, has_n ? nrm : NULL, uv, &o->transform, &f[n]))
+			n++;
+	}
+	if (n == 0)
+		return lang_error(
+		    p, o->loc,
+		    "the mesh_camera's mesh has no face with an area in uv (distribution 3 maps "
+		    "each pixel to the uv_vectors of its faces)");
+	c->uv_faces = f, c->uv_n = n, c->mesh_smooth = smooth;
+	if (!scene_cam_uv_index(&p->sc->arena, f, n, &c->uv_grid, &c->uv_start, &c->uv_list))
+		return lang_error(p, o->loc, "out of memory");
+	return true;
+}
+
 /* POV-Ray's mesh_camera (Parse_Mesh_Camera), the lookahead 'mesh_camera': "{" rays_per_pixel
- * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". circe does what the
- * sample scenes' pinhole, orthographic and stereo meshes need: distribution 0, ray k of pixel i
- * from face i of mesh k, and 2, the meshes side by side (tracepixel.cpp's CreateCameraRay); the
- * rest is refused where it is written. */
+ * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". The distributions of
+ * tracepixel.cpp's CreateCameraRay: 0, ray k of pixel i from face i of mesh k; 1, the meshes'
+ * faces summed, ray k of pixel i from face k * width * height + i; 2, the meshes side by side;
+ * 3, the first mesh's uv (render/camera.c's cam_sample). What POV-Ray refuses is refused where
+ * it is written, and a max_distance other than 0 (circe's rays run to infinity). */
 static bool mesh_camera_block(parser *p, scene_camera *c)
 {
 	diag_loc open;
@@ -3476,14 +3525,11 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 	TRY(lang_int(p, "for the mesh_camera's rays_per_pixel", 1, 1L << 30, &rays));
 	at = lang_peek(p)->loc;
 	TRY(lang_int(p, "for the mesh_camera's distribution_type", 0, 3, &dist));
-	if (dist == 1 || dist == 3)
-		return lang_error(p, at, "circe's mesh_camera does distribution_type 0 and 2 only; %ld (POV-Ray's %s) is "
-					 "not supported",
-				  dist, dist == 1 ? "summed meshes" : "uv baking");
-	if (dist == 2 && rays != 1)
-		return lang_error(p, rays_at, "rays per pixel must be 1 for mesh_camera distribution 2, as in POV-Ray; "
-					      "found %ld",
-				  rays);
+	if (dist >= 2 && rays != 1)
+		return lang_error(p, rays_at,
+				  "rays per pixel must be 1 for mesh_camera distribution %ld, as in POV-Ray; "
+				  "found %ld",
+				  dist, rays);
 	if (lang_float_follows(p)) {
 		double x;
 		at = lang_peek(p)->loc;
@@ -3509,6 +3555,10 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 						  "file)");
 			break;
 		}
+		if (dist == 3 && from == 1)
+			diag_warning(p->d, t.loc,
+				     "a mesh_camera of distribution 3 uses its first mesh only: the meshes "
+				     "after it are ignored, as in POV-Ray");
 	}
 	if (ok && b.len == 0)
 		ok = lang_error(p, lang_peek(p)->loc, "a mesh_camera needs a mesh or mesh2 after its distribution type");
@@ -3516,14 +3566,24 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 		ok = lang_error(p, rays_at, "a mesh_camera of distribution 0 needs a mesh for each of its %ld rays per pixel, "
 				       "found %zu mesh%s",
 				rays, b.len, b.len == 1 ? "" : "es");
-	if (ok && lang_peek(p)->kind == LTK_KW_SMOOTH)
-		ok = lang_error(p, lang_peek(p)->loc, "smooth is for mesh_camera distribution 3 only, as in POV-Ray");
+	bool smooth = false;
+	if (ok && lang_peek(p)->kind == LTK_KW_SMOOTH) {
+		if (dist != 3)
+			ok = lang_error(p, lang_peek(p)->loc,
+					"smooth is for mesh_camera distribution 3 only, as in POV-Ray");
+		else
+			lang_advance(p), smooth = true;
+	}
 	if (ok && !lang_accept(p, LTK_RBRACE))
 		ok = lang_error(p, lang_peek(p)->loc, "expected another mesh or '}' to close the mesh_camera opened at "
 						      "line %d",
 				open.line);
-	if (ok) { /* ray k of a pixel from mesh k, as POV-Ray; the degenerate faces are not faces */
-		uint32_t total = 0, nm = dist == 2 ? (uint32_t)b.len : (uint32_t)rays; /* 2: side by side */
+	if (ok && dist == 3)
+		ok = mesh_camera_uv(p, (const scene_object *)b.data, smooth, c);
+	/* Types 0 to 2: ray k of a pixel from mesh k (type 0), from the summed meshes (1) or the meshes
+	 * side by side (2), as POV-Ray; the degenerate faces are not faces */
+	if (ok && dist != 3) {
+		uint32_t total = 0, nm = dist != 0 ? (uint32_t)b.len : (uint32_t)rays;
 		for (uint32_t k = 0; k < nm; k++)
 			total += ((const scene_object *)b.data)[k].geom->u.mesh.n_faces;
 		scene_cam_face *f = arena_zalloc(&p->sc->arena, total ? total : 1, sizeof *f);
@@ -3547,7 +3607,10 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 		if (ok)
 			first[nm] = n;
 		c->mesh_faces = f, c->mesh_n = n, c->mesh_first = first, c->mesh_count = nm;
+	}
+	if (ok) {
 		c->mesh_distribution = (int)dist;
+		c->mesh_rays = (uint32_t)rays;
 		c->type = SCENE_CAM_MESH;
 	}
 	vecbuf_free(&b);

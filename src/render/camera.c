@@ -8,6 +8,7 @@
 #include "render/camera.h"
 
 #include "render/sampling.h"
+#include "scene/scene.h" /* scene_cam_uv_cell: the uv index's cell rule */
 
 /* Below this sine of the angle between the view and the sky they are treated as parallel: the
  * frame would be meaningless. Dimensionless (both are unit vectors), so it holds at any scale. */
@@ -168,15 +169,29 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		c->mesh_faces = p->mesh_faces, c->mesh_n = p->mesh_n;
 		c->mesh_first = p->mesh_first, c->mesh_count = p->mesh_count;
 		c->mesh_distribution = p->mesh_distribution;
+		c->mesh_rays = p->mesh_rays;
+		c->uv_faces = p->uv_faces, c->uv_n = p->uv_n, c->uv_grid = p->uv_grid;
+		c->uv_start = p->uv_start, c->uv_list = p->uv_list;
 		c->mesh_offset = p->mesh_offset, c->mesh_invert = p->mesh_invert;
 		c->width = width, c->height = height;
-		if (!p->mesh_faces || p->mesh_n == 0 || !p->mesh_first || p->mesh_count == 0) {
+		bool uv = p->mesh_distribution == 3;
+		if (uv ? !p->uv_faces || p->uv_n == 0 || p->uv_grid == 0 || !p->uv_start || !p->uv_list
+		       : !p->mesh_faces || p->mesh_n == 0 || !p->mesh_first || p->mesh_count == 0 ||
+			     (p->mesh_distribution == 1 && p->mesh_rays == 0)) {
 			*why = "its mesh_camera has no faces";
 			return false;
 		}
 		/* The first face's ray stands for the camera where one point is wanted (the
 		 * tessellation's view, cam_ray's fallback). */
-		c->origin = p->mesh_faces[0].centroid, c->forward = p->mesh_faces[0].dir;
+		if (uv) {
+			const cam_uv_face *f = &p->uv_faces[0];
+			c->origin = v3_scale(v3_add(v3_add(f->p[0], f->p[1]), f->p[2]), 1.0f / 3.0f);
+			c->forward = v3_normalize(v3_add(v3_add(f->dir[0], f->dir[1]), f->dir[2]));
+			if (!v3_is_finite(c->forward) || v3_length2(c->forward) < 0.5f)
+				c->forward = v3_normalize(f->dir[0]);
+		} else {
+			c->origin = p->mesh_faces[0].centroid, c->forward = p->mesh_faces[0].dir;
+		}
 		vec3 side = fabsf(c->forward.y) < 0.9f ? v3(0.0f, 1.0f, 0.0f) : v3(1.0f, 0.0f, 0.0f);
 		c->right = v3_normalize(v3_cross(side, c->forward));
 		c->up = v3_cross(c->forward, c->right);
@@ -336,16 +351,81 @@ static render_ray cam_perspective(const cam *c, float sx, float sy, vec2 lens_u)
 	return ray;
 }
 
+/* POV-Ray's distribution 3 (tracepixel.cpp's CreateCameraRay, 3.8's pixel centres): the image
+ * point (px + pixel_u.x, py + pixel_u.y) is uv (x / width, 1 - y / height); the first face in order
+ * whose uv triangle holds it (its barycentrics from the uv, none below 0, as POV-Ray computes
+ * them) gives the ray: from the point of the same barycentrics on the face, moved mesh_offset
+ * along the interpolated normal, in the direction of the interpolated transformed normal
+ * (normalised). No face, no ray. The sub-pixel position counts here, as POV-Ray's antialiasing
+ * does for this type. */
+static bool cam_uv_sample(const cam *c, int px, int py, vec2 pixel_u, render_ray *out)
+{
+	double u = ((double)px + (double)pixel_u.x) / (double)c->width;
+	double v = 1.0 - ((double)py + (double)pixel_u.y) / (double)c->height;
+	uint32_t g = c->uv_grid, cell = scene_cam_uv_cell(v, g) * g + scene_cam_uv_cell(u, g);
+	for (uint32_t k = c->uv_start[cell]; k < c->uv_start[cell + 1]; k++) {
+		const cam_uv_face *f = &c->uv_faces[c->uv_list[k]];
+		double p1u = f->uv[0].x, p2u = f->uv[1].x, p3u = f->uv[2].x;
+		double p1v = f->uv[0].y, p2v = f->uv[1].y, p3v = f->uv[2].y;
+		double scale = (p2u - p1u) * (p3v - p1v) - (p3u - p1u) * (p2v - p1v);
+		double b1 = ((p2u - u) * (p3v - v) - (p3u - u) * (p2v - v)) / scale;
+		double b2 = ((p3u - u) * (p1v - v) - (p1u - u) * (p3v - v)) / scale;
+		double b3 = ((p1u - u) * (p2v - v) - (p2u - u) * (p1v - v)) / scale;
+		if (b1 < 0 || b2 < 0 || b3 < 0)
+			continue;
+		float w[3] = {(float)b1, (float)b2, (float)b3};
+		vec3 o = v3s(0.0f), off = v3s(0.0f), d = v3s(0.0f);
+		for (int i = 0; i < 3; i++) {
+			o = v3_madd(o, f->p[i], w[i]);
+			off = v3_madd(off, f->offset[i], w[i]);
+			d = v3_madd(d, f->dir[i], w[i]);
+		}
+		d = v3_normalize(d);
+		if (!v3_is_finite(d) || !(v3_length2(d) > 0.5f)) /* opposite normals cancelling */
+			return false;
+		out->o = v3_madd(o, off, c->mesh_offset);
+		out->d = c->mesh_invert ? v3_scale(d, -1.0f) : d;
+		return v3_is_finite(out->o);
+	}
+	return false;
+}
+
 bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_ray *out)
 {
 	float sx = 2.0f * (((float)px + pixel_u.x) / (float)c->width) - 1.0f;  /* -1 left, +1 right */
 	float sy = 1.0f - 2.0f * (((float)py + pixel_u.y) / (float)c->height); /* +1 top */
 	if (c->type == CAM_MESH) {
+		if (px < 0 || py < 0 || px >= c->width || py >= c->height)
+			return false;
+		if (c->mesh_distribution == 3)
+			return cam_uv_sample(c, px, py, pixel_u, out);
 		/* POV-Ray's distribution 0: the pixel's index is its face's in the mesh of the ray; past
 		 * the mesh's last face, no ray. The sub-pixel position is lost, as in POV-Ray (its x, y
-		 * floored); pixel_u.x picks the mesh instead, so the samples average POV-Ray's rays. */
-		uint32_t k = (uint32_t)(pixel_u.x * (float)c->mesh_count);
+		 * floored); pixel_u.x picks one of the pixel's rays that exist instead, so the samples
+		 * average those alone, as POV-Ray divides by the rays it shot. */
+		uint32_t k = 0;
 		uint64_t i = (uint64_t)py * (uint64_t)c->width + (uint64_t)px;
+		if (c->mesh_distribution == 1) {
+			/* POV-Ray's distribution 1 as its documentation and tracepixel.cpp's comment
+			 * give it: the meshes' faces summed in order, ray k of pixel i from face
+			 * k * width * height + i, no ray where that passes the last face; pixel_u.x
+			 * picks one of the pixel's rays that exist, so the samples average those alone,
+			 * as POV-Ray divides by the rays it shot. (POV-Ray 3.7's code adds k times the
+			 * faces, not the pixels: its rays after the first never exist.) */
+			uint64_t npix = (uint64_t)c->width * (uint64_t)c->height, total = c->mesh_n;
+			if (i >= total)
+				return false;
+			uint64_t count = (total - 1 - i) / npix + 1;
+			if (count > c->mesh_rays)
+				count = c->mesh_rays;
+			uint64_t r = (uint64_t)(pixel_u.x * (float)count);
+			if (r >= count)
+				r = count - 1;
+			const cam_mesh_face *f = &c->mesh_faces[i + r * npix];
+			out->o = v3_madd(f->centroid, f->offset, c->mesh_offset);
+			out->d = c->mesh_invert ? v3_scale(f->dir, -1.0f) : f->dir;
+			return true;
+		}
 		if (c->mesh_distribution == 2) {
 			/* POV-Ray's distribution 2: mesh k for the k-th of mesh_count strips, its face
 			 * y * (width / mesh_count) + x with x the image's column (not the strip's), as
@@ -353,10 +433,22 @@ bool cam_sample(const cam *c, int px, int py, vec2 pixel_u, vec2 lens_u, render_
 			k = (uint32_t)((double)px / ((double)c->width / (double)c->mesh_count));
 			i = (uint64_t)py * (uint64_t)((uint32_t)c->width / c->mesh_count) + (uint64_t)px;
 		}
+		if (c->mesh_distribution == 0) { /* the j-th of the meshes with a face i */
+			uint32_t have = 0;
+			for (uint32_t m = 0; m < c->mesh_count; m++)
+				have += i < (uint64_t)(c->mesh_first[m + 1] - c->mesh_first[m]);
+			if (have == 0)
+				return false;
+			uint32_t j = (uint32_t)(pixel_u.x * (float)have);
+			j = j < have ? j : have - 1;
+			for (k = 0; k < c->mesh_count; k++)
+				if (i < (uint64_t)(c->mesh_first[k + 1] - c->mesh_first[k]) && j-- == 0)
+					break;
+		}
 		if (k >= c->mesh_count)
 			k = c->mesh_count - 1;
 		uint32_t from = c->mesh_first[k], to = c->mesh_first[k + 1];
-		if (px < 0 || py < 0 || px >= c->width || i >= (uint64_t)(to - from))
+		if (i >= (uint64_t)(to - from))
 			return false;
 		const cam_mesh_face *f = &c->mesh_faces[from + i];
 		out->o = v3_madd(f->centroid, f->offset, c->mesh_offset);

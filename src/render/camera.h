@@ -30,9 +30,8 @@ typedef enum cam_type {
 	CAM_CYLINDER_4, /* axis along right, orthographic along right */
 	CAM_SPHERICAL,
 	CAM_OMNIMAX, /* POV-Ray's: a fisheye of 180 degrees on the dome's curve, 45 below the axis cut */
-	CAM_MESH,    /* POV-Ray's mesh_camera, distribution 0: pixel y * width + x from face y * width + x
-			of one of its meshes, the sample's pixel_u.x choosing which (POV-Ray's ray k
-			from mesh k, averaged) */
+	CAM_MESH,    /* POV-Ray's mesh_camera (cam_params.mesh_distribution says how a pixel finds its
+			face; cam_sample) */
 } cam_type;
 
 /* A mesh_camera's faces in world space, one ray each (POV-Ray's CreateCameraRay, MESH_CAMERA):
@@ -42,6 +41,15 @@ typedef enum cam_type {
 typedef struct cam_mesh_face {
 	vec3 centroid, offset, dir;
 } cam_mesh_face;
+
+/* A distribution 3 mesh_camera's face (POV-Ray's uv reverse mapping): the corners in world
+ * space, at each the transform's linear part of its unit normal (the offset) and the transformed
+ * normal (not renormalised: the ray's direction interpolates the three, then is normalised), and
+ * the corners' uv. scene_cam_uv_face makes them, the same layout. */
+typedef struct cam_uv_face {
+	vec3 p[3], offset[3], dir[3];
+	vec2 uv[3];
+} cam_uv_face;
 
 /* What the scene says; the defaults of cam_params_default() are POV-Ray's. The positions are
  * doubles, as the scene gives them: the view look_at - location and the focal distance are
@@ -65,14 +73,22 @@ typedef struct cam_params {
 	float v_angle_deg; /* spherical: the vertical field of view (angle_deg the horizontal) */
 	bool has_xform;	   /* the camera's own translate/rotate/scale/matrix, applied last */
 	xform xf;
-	/* CAM_MESH: its faces, mesh k's (mesh_count of them, one a ray per pixel) from
-	 * mesh_first[k] to mesh_first[k + 1] (face i of each for pixel i), the offset along each face's normal (POV-Ray's
-	 * location z) and whether the rays run against the normals (direction z < 0); the frame,
-	 * angle, lens and transform do not apply, as in POV-Ray. */
+	/* CAM_MESH: its faces, mesh k's (mesh_count of them) from mesh_first[k] to
+	 * mesh_first[k + 1], the offset along each face's normal (POV-Ray's location z) and whether
+	 * the rays run against the normals (direction z < 0); the frame, angle, lens and transform
+	 * do not apply, as in POV-Ray. Distribution 0: face i of mesh k for ray k of pixel i (a
+	 * mesh a ray per pixel); 1: face k * width * height + i of all the meshes' faces in order
+	 * for ray k of mesh_rays; 2: POV-Ray's side-by-side cameras, mesh k for the k-th strip;
+	 * 3: the pixel's uv on uv_faces, the first face in order holding it (uv_grid x uv_grid
+	 * cells, scene_cam_uv_index's uv_start and uv_list). */
 	const cam_mesh_face *mesh_faces;
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
-	int mesh_distribution; /* 0; 2: POV-Ray's side-by-side cameras, mesh k for the k-th strip */
+	int mesh_distribution;
+	uint32_t mesh_rays;
+	const cam_uv_face *uv_faces;
+	uint32_t uv_n, uv_grid;
+	const uint32_t *uv_start, *uv_list;
 	float mesh_offset;
 	bool mesh_invert;
 } cam_params;
@@ -98,6 +114,10 @@ typedef struct cam {
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
 	int mesh_distribution;
+	uint32_t mesh_rays;
+	const cam_uv_face *uv_faces;
+	uint32_t uv_n, uv_grid;
+	const uint32_t *uv_start, *uv_list;
 	float mesh_offset;
 	bool mesh_invert;
 } cam;

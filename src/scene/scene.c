@@ -623,6 +623,95 @@ bool scene_cam_face_make(dvec3 p1, dvec3 p2, dvec3 p3, const xform *t, scene_cam
 	return true;
 }
 
+bool scene_cam_uv_face_make(const dvec3 p[3], const dvec3 *n, const vec2 uv[3], const xform *t,
+			    scene_cam_uv_face *out)
+{
+	dvec3 fn = d3_cross(d3_sub(p[2], p[0]), d3_sub(p[1], p[0]));
+	double len = d3_length(fn);
+	if (!(len > 0) || !isfinite(len))
+		return false;
+	/* The uv area in double, as the lookup computes it (render/camera.c): not 0 there either. */
+	double scale = ((double)uv[1].x - uv[0].x) * ((double)uv[2].y - uv[0].y) -
+		       ((double)uv[2].x - uv[0].x) * ((double)uv[1].y - uv[0].y);
+	if (!(scale != 0) || !isfinite(scale))
+		return false;
+	fn = d3_scale(fn, 1.0 / len);
+	for (int i = 0; i < 3; i++) {
+		dvec3 ni = n ? n[i] : fn;
+		out->p[i] = d3_to_v3(xform_point(t, p[i]));
+		out->offset[i] = d3_to_v3(xform_vector(t, ni));
+		out->dir[i] = d3_to_v3(xform_normal(t, ni));
+		out->uv[i] = uv[i];
+	}
+	return true;
+}
+
+/* The cells of face f's uv bounds on a grid of g: false when they miss [0,1]^2 (no pixel's uv
+ * lies there). */
+static bool uv_face_cells(const scene_cam_uv_face *f, uint32_t g, uint32_t c[4])
+{
+	double lo[2] = {f->uv[0].x, f->uv[0].y}, hi[2] = {lo[0], lo[1]};
+	for (int i = 1; i < 3; i++) {
+		double x[2] = {f->uv[i].x, f->uv[i].y};
+		for (int a = 0; a < 2; a++)
+			lo[a] = fmin(lo[a], x[a]), hi[a] = fmax(hi[a], x[a]);
+	}
+	if (hi[0] < 0 || hi[1] < 0 || lo[0] > 1 || lo[1] > 1)
+		return false;
+	c[0] = scene_cam_uv_cell(lo[0], g), c[1] = scene_cam_uv_cell(hi[0], g);
+	c[2] = scene_cam_uv_cell(lo[1], g), c[3] = scene_cam_uv_cell(hi[1], g);
+	return true;
+}
+
+bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid,
+			const uint32_t **start, const uint32_t **list)
+{
+	/* About one face a cell, at most 256 x 256; coarser while faces wide in uv would list more than
+	 * 4 entries a face (the lookup stays first-match exact at any size). */
+	uint32_t g = (uint32_t)ceil(sqrt((double)n));
+	g = g < 1 ? 1 : g > 256 ? 256 : g;
+	uint64_t total;
+	for (;;) {
+		total = 0;
+		for (uint32_t k = 0; k < n; k++) {
+			uint32_t c[4];
+			if (uv_face_cells(&f[k], g, c))
+				total += (uint64_t)(c[1] - c[0] + 1) * (c[3] - c[2] + 1);
+		}
+		if (g == 1 || total <= 4 * (uint64_t)n + 1024)
+			break;
+		g /= 2;
+	}
+	if (total >= UINT32_MAX)
+		return false;
+	uint32_t *s = arena_zalloc(a, (size_t)g * g + 1, sizeof *s);
+	uint32_t *l = arena_zalloc(a, total ? (size_t)total : 1, sizeof *l);
+	if (!s || !l)
+		return false;
+	for (uint32_t k = 0; k < n; k++) { /* counts, then offsets, then the faces in order */
+		uint32_t c[4];
+		if (uv_face_cells(&f[k], g, c))
+			for (uint32_t j = c[2]; j <= c[3]; j++)
+				for (uint32_t i = c[0]; i <= c[1]; i++)
+					s[j * g + i + 1]++;
+	}
+	for (uint32_t i = 0; i < g * g; i++)
+		s[i + 1] += s[i];
+	uint32_t *fill = arena_zalloc(a, (size_t)g * g, sizeof *fill);
+	if (!fill)
+		return false;
+	memcpy(fill, s, (size_t)g * g * sizeof *fill);
+	for (uint32_t k = 0; k < n; k++) {
+		uint32_t c[4];
+		if (uv_face_cells(&f[k], g, c))
+			for (uint32_t j = c[2]; j <= c[3]; j++)
+				for (uint32_t i = c[0]; i <= c[1]; i++)
+					l[fill[j * g + i]++] = k;
+	}
+	*grid = g, *start = s, *list = l;
+	return true;
+}
+
 /* What the camera says beyond POV-Ray's perspective defaults; nothing for those. */
 static void dump_camera_more(FILE *o, const scene_camera *c)
 {
@@ -633,8 +722,13 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 		fprintf(o, " %s", types[c->type]);
 	if (c->type == SCENE_CAM_SPHERICAL)
 		fprintf(o, " v_angle %g", c->v_angle_deg);
-	if (c->type == SCENE_CAM_MESH)
+	if (c->type == SCENE_CAM_MESH && c->mesh_distribution == 3)
+		fprintf(o, " distribution 3 uv faces %u grid %u%s", c->uv_n, c->uv_grid,
+			c->mesh_smooth ? " smooth" : "");
+	else if (c->type == SCENE_CAM_MESH)
 		fprintf(o, " distribution %d meshes %u faces %u", c->mesh_distribution, c->mesh_count, c->mesh_n);
+	if (c->type == SCENE_CAM_MESH && c->mesh_distribution == 1)
+		fprintf(o, " rays %u", c->mesh_rays);
 	if (c->has_direction)
 		dump_d3(o, "direction", c->direction);
 	if (!c->has_look_at)

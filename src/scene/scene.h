@@ -30,6 +30,34 @@ typedef struct scene_cam_face {
  * takes it: the centroid, the unit normal cross(p3 - p1, p2 - p1) (Mesh::Compute_Mesh_Triangle).
  * False for a degenerate triangle (POV-Ray drops it: not a face). */
 bool scene_cam_face_make(dvec3 p1, dvec3 p2, dvec3 p3, const xform *t, scene_cam_face *out);
+/* One face of a distribution 3 mesh_camera's mesh (render/camera.h's cam_uv_face, the same
+ * layout): its corners in world space, at each corner the mesh transform's linear part of the
+ * corner's unit normal (the offset along it) and the transformed normal (the direction, not
+ * renormalised: a ray interpolates the three), and the corners' uv. */
+typedef struct scene_cam_uv_face {
+	vec3 p[3], offset[3], dir[3];
+	vec2 uv[3];
+} scene_cam_uv_face;
+/* The face of triangle p[0..2] with uv[0..2] under t, as POV-Ray's distribution 3 takes it: with
+ * n NULL (flat) each corner's normal is the face's, cross(p3 - p1, p2 - p1) normalised; else the
+ * corners' own n[0..2] (unit; POV-Ray's smooth, for a triangle whose normals differ). False for a
+ * degenerate triangle (not a face) and for one of no area in uv (no pixel maps onto it: POV-Ray's
+ * barycentrics would be 0 / 0 there). */
+bool scene_cam_uv_face_make(const dvec3 p[3], const dvec3 *n, const vec2 uv[3], const xform *t,
+			    scene_cam_uv_face *out);
+/* The uv index of n faces: a grid of *grid x *grid cells over [0,1]^2, cell (i, j) (i along u, j
+ * along v) listing from list[start[j * grid + i]] to list[start[j * grid + i + 1]] the faces
+ * whose uv bounds meet it, in face order (the first face holding a point is the first of its
+ * cell's that does). In arena a; false when out of memory. */
+bool scene_cam_uv_index(arena *a, const scene_cam_uv_face *f, uint32_t n, uint32_t *grid,
+			const uint32_t **start, const uint32_t **list);
+/* The cell (0 to grid - 1) of coordinate x in [0, 1] on that grid (x below 0 in cell 0, 1 and above
+ * in the last), the index's and the lookup's one rule. */
+static inline uint32_t scene_cam_uv_cell(double x, uint32_t grid)
+{
+	double c = x * (double)grid;
+	return !(c >= 0.0) ? 0u : c >= (double)(grid - 1) ? grid - 1 : (uint32_t)c;
+}
 
 typedef struct scene_camera {
 	diag_loc loc;
@@ -48,14 +76,23 @@ typedef struct scene_camera {
 	 * the image point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]); NULL: none */
 	const struct scene_pigment *normal;
 	diag_loc normal_loc;
-	/* SCENE_CAM_MESH, POV-Ray's mesh_camera (distribution 0): the non-degenerate faces of its
-	 * first mesh_count meshes (one a ray per pixel), mesh k's from mesh_first[k] to
+	/* SCENE_CAM_MESH, POV-Ray's mesh_camera (distributions 0 to 2): the non-degenerate faces of
+	 * its first mesh_count meshes (0: one a ray per pixel; 1 and 2: all), mesh k's from mesh_first[k] to
 	 * mesh_first[k + 1], in the scene's arena; location z offsets each ray's origin along its
 	 * face normal, a direction z < 0 reverses the rays */
 	const scene_cam_face *mesh_faces;
 	const uint32_t *mesh_first;
 	uint32_t mesh_n, mesh_count;
-	int mesh_distribution; /* 0, or 2: mesh k the k-th vertical strip of the image */
+	int mesh_distribution; /* 0; 1: the meshes' faces summed, ray k of pixel i from face
+				  k * width * height + i; 2: mesh k the k-th vertical strip of the
+				  image; 3: the first mesh's uv, uv_faces */
+	uint32_t mesh_rays;    /* rays per pixel (distribution 1 uses it; 0 and 2 count meshes) */
+	/* distribution 3: the first mesh's non-degenerate faces of an area in uv, in order, and
+	 * their uv index (scene_cam_uv_index); smooth: POV-Ray's smooth (the normals interpolate) */
+	const scene_cam_uv_face *uv_faces;
+	uint32_t uv_n, uv_grid;
+	const uint32_t *uv_start, *uv_list;
+	bool mesh_smooth;
 } scene_camera;
 
 typedef enum scene_light_kind {

@@ -269,7 +269,12 @@ static void test_mesh_camera(void)
 	CHECK(cam_sample(&c, 0, 0, v2(0.75f, 0.5f), v2(0, 0), &r), "pixel 0, mesh 1");
 	CHECK(near3(r.o, v3(2.0f / 3 + r2, 1.0f / 3 - 0.5f * r2, 1.0f / 3), 1e-5f) && near3(r.d, v3(r5, -2 * r5, 0), 1e-6f),
 	      "pixel 0 of mesh 1: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
-	CHECK(!cam_sample(&c, 1, 0, v2(0.75f, 0.5f), v2(0, 0), &r), "pixel 1 past mesh 1's one face has a ray");
+	/* pixel 1 is past mesh 1's one face: POV-Ray shoots its ray 0 alone and divides by 1, so
+	 * every sample takes mesh 0's face 1 */
+	for (float x = 0.05f; x < 1.0f; x += 0.3f)
+		CHECK(cam_sample(&c, 1, 0, v2(x, 0.5f), v2(0, 0), &r) && near3(r.o, v3(14.0f / 3, 2.0f / 3, -1), 1e-5f) &&
+			  near3(r.d, v3(0, 0, -1), 1e-6f),
+		      "pixel 1 at %g, past mesh 1's faces: mesh 0's face 1 (o %g %g %g)", x, r.o.x, r.o.y, r.o.z);
 	p.mesh_invert = true; /* direction z < 0 */
 	CHECK(cam_init(&c, &p, 2, 2), "inverted mesh camera");
 	CHECK(cam_sample(&c, 1, 0, v2(0.4f, 0.2f), v2(0, 0), &r), "pixel 1 inverted");
@@ -292,9 +297,213 @@ static void test_mesh_camera(void)
 	CHECK(!cam_init(&c, &p, 2, 2), "a mesh camera without faces is accepted");
 }
 
+/* POV-Ray's distribution 1 (its documentation; tracepixel.cpp's comment): the meshes' faces
+ * summed, ray k of pixel i from face k * width * height + i, no ray past the last face, the
+ * samples picking among the pixel's rays that exist. Three faces of distinct directions. */
+static void test_mesh_camera_summed(void)
+{
+	scene_cam_face f[3];
+	xform id = xform_identity();
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(0, 1, 0), d3(1, 0, 0), &id, &f[0]), "face 0 (+z)");
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(1, 0, 0), d3(0, 1, 0), &id, &f[1]), "face 1 (-z)");
+	CHECK(scene_cam_face_make(d3(0, 0, 0), d3(0, 0, 1), d3(0, 1, 0), &id, &f[2]), "face 2 (+x)");
+	CHECK(near3(f[0].dir, v3(0, 0, 1), 1e-6f) && near3(f[1].dir, v3(0, 0, -1), 1e-6f) &&
+		  near3(f[2].dir, v3(1, 0, 0), 1e-6f),
+	      "the three normals");
+	const uint32_t first[3] = {0, 2, 3}; /* mesh 0: faces 0, 1; mesh 1: face 2 (summed: 0 1 2) */
+	cam_params p = cam_params_default();
+	p.type = CAM_MESH;
+	p.mesh_faces = (const cam_mesh_face *)f, p.mesh_n = 3, p.mesh_first = first, p.mesh_count = 2;
+	p.mesh_distribution = 1, p.mesh_rays = 2;
+	cam c;
+	render_ray r;
+	/* 2 x 1 image: pixel 0 has rays from faces 0 and 2, pixel 1 from face 1 alone (face 3 is none) */
+	CHECK(cam_init(&c, &p, 2, 1), "distribution 1");
+	CHECK(cam_sample(&c, 0, 0, v2(0.2f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(0, 0, 1), 1e-6f),
+	      "pixel 0, ray 0: face 0 (d %g %g %g)", r.d.x, r.d.y, r.d.z);
+	CHECK(cam_sample(&c, 0, 0, v2(0.7f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(1, 0, 0), 1e-6f),
+	      "pixel 0, ray 1: face 2 = 1 * 2 + 0 (d %g %g %g)", r.d.x, r.d.y, r.d.z);
+	for (float x = 0.05f; x < 1.0f; x += 0.3f)
+		CHECK(cam_sample(&c, 1, 0, v2(x, 0.5f), v2(0, 0), &r) && near3(r.d, v3(0, 0, -1), 1e-6f),
+		      "pixel 1 at %g: its one ray, face 1 (its second, face 3, is past the last)", x);
+	/* 4 x 1: pixel 2 from face 2 (of the second mesh: summed), pixel 3 past the faces has none */
+	CHECK(cam_init(&c, &p, 4, 1), "distribution 1, 4 x 1");
+	CHECK(cam_sample(&c, 2, 0, v2(0.9f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(1, 0, 0), 1e-6f),
+	      "4 x 1, pixel 2: face 2");
+	CHECK(!cam_sample(&c, 3, 0, v2(0.1f, 0.5f), v2(0, 0), &r), "4 x 1, pixel 3 past the faces has a ray");
+	CHECK(!cam_sample(&c, 4, 0, v2(0.1f, 0.5f), v2(0, 0), &r), "a pixel outside the image has a ray");
+	/* one ray per pixel: pixel 0 is face 0 for every sample */
+	p.mesh_rays = 1;
+	CHECK(cam_init(&c, &p, 2, 1), "distribution 1, one ray");
+	CHECK(cam_sample(&c, 0, 0, v2(0.9f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(0, 0, 1), 1e-6f),
+	      "one ray: pixel 0 is face 0 alone");
+	p.location = d3(0, 0, 0);
+	p.mesh_offset = 0.25f, p.mesh_invert = true, p.mesh_rays = 2;
+	CHECK(cam_init(&c, &p, 2, 1), "distribution 1, offset and inverted");
+	CHECK(cam_sample(&c, 0, 0, v2(0.7f, 0.5f), v2(0, 0), &r) && near3(r.d, v3(-1, 0, 0), 1e-6f) &&
+		  near3(r.o, v3(0.25f, 1.0f / 3, 1.0f / 3), 1e-6f),
+	      "face 2 offset 0.25 along +x, inverted: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x,
+	      r.d.y, r.d.z);
+	p.mesh_rays = 0;
+	CHECK(!cam_init(&c, &p, 2, 1), "distribution 1 with no rays accepted");
+}
+
+/* The camera of distribution 3 over n faces (their uv index in a). */
+static bool uv_cam(cam *c, arena *a, const scene_cam_uv_face *f, uint32_t n, int w, int h, float offset)
+{
+	cam_params p = cam_params_default();
+	p.type = CAM_MESH, p.mesh_distribution = 3, p.mesh_rays = 1;
+	p.uv_faces = (const cam_uv_face *)f, p.uv_n = n, p.mesh_offset = offset;
+	if (!scene_cam_uv_index(a, f, n, &p.uv_grid, &p.uv_start, &p.uv_list))
+		return false;
+	return cam_init(c, &p, w, h);
+}
+
+/* The first of n faces whose uv triangle holds (u, v) (POV-Ray's test, no index): -1 for none. */
+static int uv_brute(const scene_cam_uv_face *f, uint32_t n, double u, double v, double b[3])
+{
+	for (uint32_t k = 0; k < n; k++) {
+		double p1u = f[k].uv[0].x, p2u = f[k].uv[1].x, p3u = f[k].uv[2].x;
+		double p1v = f[k].uv[0].y, p2v = f[k].uv[1].y, p3v = f[k].uv[2].y;
+		double s = (p2u - p1u) * (p3v - p1v) - (p3u - p1u) * (p2v - p1v);
+		b[0] = ((p2u - u) * (p3v - v) - (p3u - u) * (p2v - v)) / s;
+		b[1] = ((p3u - u) * (p1v - v) - (p1u - u) * (p3v - v)) / s;
+		b[2] = ((p1u - u) * (p2v - v) - (p2u - u) * (p1v - v)) / s;
+		if (b[0] >= 0 && b[1] >= 0 && b[2] >= 0)
+			return (int)k;
+	}
+	return -1;
+}
+
+/* POV-Ray's distribution 3 (tracepixel.cpp, 3.8's pixel centres): the image point (x, y) is uv
+ * (x / w, 1 - y / h); the first face in order holding it gives the ray from the point of the same
+ * barycentrics, offset along the (interpolated) normal, in the (interpolated) transformed
+ * normal's direction. A quad, a smooth face, a non-uniform scale, overlapping faces, and the uv
+ * index against brute force. */
+static void test_mesh_camera_uv(void)
+{
+	arena a;
+	arena_init(&a, 1 << 16);
+	xform sc, t;
+	CHECK(xform_scale(d3(2, 1, 1), &sc), "scale");
+	t = xform_then(xform_translate(d3(0, 0, 5)), sc); /* x' = 2 x, y' = y, z' = z + 5 */
+	/* The quad (-1,-1) to (1,1) at z 0, uv (0,0) to (1,1) in two faces; POV-Ray's normal
+	 * cross(P3 - P1, P2 - P1) is -z for both. */
+	const dvec3 q[2][3] = {{d3(-1, -1, 0), d3(1, -1, 0), d3(1, 1, 0)},
+			       {d3(-1, -1, 0), d3(1, 1, 0), d3(-1, 1, 0)}};
+	const vec2 quv[2][3] = {{v2(0, 0), v2(1, 0), v2(1, 1)}, {v2(0, 0), v2(1, 1), v2(0, 1)}};
+	scene_cam_uv_face f[8];
+	CHECK(scene_cam_uv_face_make(q[0], NULL, quv[0], &t, &f[0]) &&
+		  scene_cam_uv_face_make(q[1], NULL, quv[1], &t, &f[1]),
+	      "the quad's faces");
+	CHECK(near3(f[0].dir[0], v3(0, 0, -1), 1e-6f) && near3(f[1].offset[2], v3(0, 0, -1), 1e-6f) &&
+		  near3(f[0].p[1], v3(2, -1, 5), 1e-6f),
+	      "the quad's normals and corners under the transform");
+	const vec2 zero[3] = {v2(0, 0), v2(0, 0), v2(0, 0)}, line[3] = {v2(0, 0), v2(0.5f, 0.5f), v2(1, 1)};
+	CHECK(!scene_cam_uv_face_make(q[0], NULL, zero, &t, &f[2]),
+	      "a face of uv 0 (no uv_vectors) is a face");
+	CHECK(!scene_cam_uv_face_make(q[0], NULL, line, &t, &f[2]), "a face of no area in uv is a face");
+	const dvec3 flat[3] = {d3(0, 0, 0), d3(1, 1, 1), d3(2, 2, 2)};
+	CHECK(!scene_cam_uv_face_make(flat, NULL, quv[0], &t, &f[2]), "a degenerate face is a face");
+	cam c;
+	render_ray r;
+	CHECK(uv_cam(&c, &a, f, 2, 4, 2, 0.5f), "distribution 3 on a 4 x 2 image");
+	/* every pixel's centre: u = (px + 0.5) / 4, v = 1 - (py + 0.5) / 2, the point (2 (2u - 1),
+	 * 2v - 1, 5), offset 0.5 along the scale of -z, direction -z */
+	for (int py = 0; py < 2; py++)
+		for (int px = 0; px < 4; px++) {
+			double u = (px + 0.5) / 4, v = 1 - (py + 0.5) / 2;
+			vec3 want = v3((float)(2 * (2 * u - 1)), (float)(2 * v - 1), 4.5f);
+			CHECK(cam_sample(&c, px, py, v2(0.5f, 0.5f), v2(0, 0), &r) &&
+				  near3(r.o, want, 1e-6f) && near3(r.d, v3(0, 0, -1), 1e-6f),
+			      "pixel %d %d: o (%g %g %g) d (%g %g %g), want o (%g %g %g)", px, py, r.o.x,
+			      r.o.y, r.o.z, r.d.x, r.d.y, r.d.z, want.x, want.y, want.z);
+		}
+	/* the sub-pixel position counts (POV-Ray's antialiasing works for this type) */
+	CHECK(cam_sample(&c, 0, 0, v2(0, 0), v2(0, 0), &r) && near3(r.o, v3(-2, 1, 4.5f), 1e-6f),
+	      "the image's top-left corner is uv (0, 1): o (%g %g %g)", r.o.x, r.o.y, r.o.z);
+	CHECK(!cam_sample(&c, 4, 0, v2(0.5f, 0.5f), v2(0, 0), &r), "a pixel outside the image has a ray");
+
+	/* Half the uv square covered (face 0 only): the pixels above its diagonal have none. */
+	CHECK(uv_cam(&c, &a, f, 1, 4, 4, 0), "one face");
+	CHECK(cam_sample(&c, 3, 3, v2(0.5f, 0.5f), v2(0, 0), &r), "below the diagonal: face 0");
+	CHECK(!cam_sample(&c, 0, 0, v2(0.5f, 0.5f), v2(0, 0), &r), "uv (1/8, 7/8), on no face, has a ray");
+
+	/* Smooth: corner normals +z, +z, (0.6, 0, 0.8) on face (0,0,0) (1,0,0) (0,1,0), uv the same;
+	 * at uv (0.25, 0.25) the barycentrics are 1/2, 1/4, 1/4: normal (0.15, 0, 0.95) (before the
+	 * identity transform), the origin (0.25, 0.25, 0) + 0.1 of that unnormalised sum. */
+	const dvec3 s3[3] = {d3(0, 0, 0), d3(1, 0, 0), d3(0, 1, 0)},
+		    sn[3] = {d3(0, 0, 1), d3(0, 0, 1), d3(0.6, 0, 0.8)};
+	const vec2 suv[3] = {v2(0, 0), v2(1, 0), v2(0, 1)};
+	xform id = xform_identity();
+	CHECK(scene_cam_uv_face_make(s3, sn, suv, &id, &f[2]), "the smooth face");
+	CHECK(uv_cam(&c, &a, &f[2], 1, 4, 4, 0.1f), "smooth");
+	CHECK(cam_sample(&c, 1, 3, v2(0, 0), v2(0, 0), &r), "smooth: uv (1/4, 1/4)");
+	vec3 nsum = v3(0.15f, 0, 0.95f);
+	CHECK(near3(r.d, v3_normalize(nsum), 1e-6f) &&
+		  near3(r.o, v3_madd(v3(0.25f, 0.25f, 0), nsum, 0.1f), 1e-6f),
+	      "smooth: o (%g %g %g) d (%g %g %g)", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
+
+	/* Overlapping faces: the first in order wins, here the clockwise (negative area) face 3 of
+	 * direction +z before face 4 covering the same uv with -z. */
+	const dvec3 cw[3] = {d3(0, 0, 0), d3(0, 1, 0), d3(1, 0, 0)};
+	const vec2 cwuv[3] = {v2(0, 0), v2(0, 1), v2(1, 0)};
+	CHECK(scene_cam_uv_face_make(cw, NULL, cwuv, &id, &f[3]) && near3(f[3].dir[0], v3(0, 0, 1), 1e-6f),
+	      "face 3 (+z)");
+	CHECK(scene_cam_uv_face_make(s3, NULL, suv, &id, &f[4]) && near3(f[4].dir[0], v3(0, 0, -1), 1e-6f),
+	      "face 4 (-z)");
+	CHECK(uv_cam(&c, &a, &f[3], 2, 4, 4, 0), "overlapping");
+	CHECK(cam_sample(&c, 1, 3, v2(0, 0), v2(0, 0), &r) && near3(r.d, v3(0, 0, 1), 1e-6f),
+	      "the first of two faces holding the uv (d %g %g %g)", r.d.x, r.d.y, r.d.z);
+
+	/* The index against brute force: 300 random faces (many overlapping, some reaching outside
+	 * [0,1]^2) on a 64 x 48 image at random sub-pixel points, the same face or none. */
+	enum { N = 300 };
+	scene_cam_uv_face *g = arena_zalloc(&a, N, sizeof *g);
+	rng s;
+	rng_seed(&s, 19, 5);
+	uint32_t n = 0;
+	while (n < N) {
+		dvec3 pt[3];
+		vec2 uv[3];
+		double cu = rng_double(&s) * 1.2 - 0.1, cv = rng_double(&s) * 1.2 - 0.1,
+		       size = 0.02 + 0.3 * rng_double(&s);
+		for (int k = 0; k < 3; k++) {
+			pt[k] = d3(rng_double(&s), rng_double(&s), rng_double(&s));
+			uv[k] = v2((float)(cu + size * (rng_double(&s) - 0.5)),
+				   (float)(cv + size * (rng_double(&s) - 0.5)));
+		}
+		if (scene_cam_uv_face_make(pt, NULL, uv, &id, &g[n]))
+			n++;
+	}
+	CHECK(uv_cam(&c, &a, g, N, 64, 48, 0), "the random faces");
+	CHECK(c.uv_grid > 1, "a grid of more than one cell (%u)", c.uv_grid);
+	int hits = 0, bad = 0;
+	for (int i = 0; i < 20000; i++) {
+		int px = (int)(rng_u32(&s) % 64), py = (int)(rng_u32(&s) % 48);
+		vec2 pu = v2(rng_float(&s), rng_float(&s));
+		double u = ((double)px + pu.x) / 64, v = 1.0 - ((double)py + pu.y) / 48, b[3];
+		int k = uv_brute(g, N, u, v, b);
+		bool got = cam_sample(&c, px, py, pu, v2(0, 0), &r);
+		if (k < 0) {
+			bad += got;
+			continue;
+		}
+		hits++;
+		vec3 o = v3_madd(v3_madd(v3_scale(g[k].p[0], (float)b[0]), g[k].p[1], (float)b[1]), g[k].p[2],
+				 (float)b[2]);
+		bad += !got || !near3(r.o, o, 1e-5f) || !near3(r.d, g[k].dir[0], 1e-5f);
+	}
+	CHECK(bad == 0 && hits > 5000, "the index's first face is brute force's: %d wrong of %d hits", bad,
+	      hits);
+	arena_release(&a);
+}
+
 int main(void)
 {
 	test_mesh_camera();
+	test_mesh_camera_summed();
+	test_mesh_camera_uv();
 	test_perturb();
 	test_omnimax();
 	cam c;
