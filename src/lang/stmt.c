@@ -2043,7 +2043,8 @@ static bool inside_vector(parser *p)
 	return lang_vec3(p, "as the inside_vector", &v);
 }
 
-/* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } [ "inside_vector" vector ] ) { modifier } "}" */
+/* mesh = "mesh" "{" ( "file" string | { triangle | smooth_triangle } [ "inside_vector" vector ] )
+ *        { modifier } "}" */
 static bool declared_object(parser *p, vecbuf *out, diag_loc kw);
 
 static bool mesh(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
@@ -2649,9 +2650,11 @@ static bool csg_light(parser *p, const char *what)
 {
 	lang_token kw = *lang_peek(p);
 	if (!p->lights_in_csg)
-		return lang_error(p, kw.loc, "a light_source inside a %s is supported only in an object placed in the "
-					     "scene or a #declare (not in a clipped_by, object pattern or looks_like): "
-					     "give it beside the %s's copies", what, what);
+		return lang_error(p, kw.loc,
+				  "a light_source inside a %s is supported only in an object placed in the "
+				  "scene or a #declare (not in a clipped_by, object pattern or looks_like): "
+				  "give it beside the %s's copies",
+				  what, what);
 	lang_advance(p);
 	scene_light l;
 	TRY(light_block(p, &l, kw.loc));
@@ -2807,9 +2810,11 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 			return lang_error(p, kw, "out of memory");
 	}
 	if (ol->n_lights && !p->lights_in_csg)
-		diag_warning(p->d, kw, "the light_source%s of '%.*s' light%s nothing here: a clipped_by, bounded_by, "
-				       "looks_like, projected_through or object pattern's object is not placed in the scene",
-			     ol->n_lights > 1 ? "s" : "", (int)name.len, name.text, ol->n_lights > 1 ? "" : "s");
+		diag_warning(
+		    p->d, kw,
+		    "the light_source%s of '%.*s' light%s nothing here: a clipped_by, bounded_by, "
+		    "looks_like, projected_through or object pattern's object is not placed in the scene",
+		    ol->n_lights > 1 ? "s" : "", (int)name.len, name.text, ol->n_lights > 1 ? "" : "s");
 	for (size_t i = 0; p->lights_in_csg && i < ol->n_lights; i++) {
 		scene_light l = ol->lights[i];
 		l.group = SHIFTED(l.group);
@@ -3123,7 +3128,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		if (l->n_groups) {
 			scene_light_group *copy = arena_alloc(&p->sc->arena, l->n_groups, sizeof *copy, 16);
 			if (copy)
-				memcpy(copy, &VECBUF_AT(&p->sc->light_groups, scene_light_group, groups), l->n_groups * sizeof *copy);
+				memcpy(copy, &VECBUF_AT(&p->sc->light_groups, scene_light_group, groups),
+				       l->n_groups * sizeof *copy);
 			else
 				l->items = NULL;
 			l->groups = copy;
@@ -3133,7 +3139,8 @@ bool lang_declare_block(parser *p, value *out, bool *handled)
 		if (l->n_lights) {
 			scene_light *copy = arena_alloc(&p->sc->arena, l->n_lights, sizeof(scene_light), 16);
 			if (copy)
-				memcpy(copy, &VECBUF_AT(&p->sc->lights, scene_light, lights), l->n_lights * sizeof(scene_light));
+				memcpy(copy, &VECBUF_AT(&p->sc->lights, scene_light, lights),
+				       l->n_lights * sizeof(scene_light));
 			else
 				l->items = NULL;
 			l->lights = copy;

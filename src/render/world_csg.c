@@ -61,8 +61,8 @@ static bool pieces_inside(const world *w, const world_inst *in, vec3 p)
 	bool inside = false, near = false;
 	for (uint32_t k = 0; k < in->n_pieces; k++) {
 		const world_inst *pk = &w->insts[in->piece0 + k];
-		near |= p.x >= pk->lo.x && p.y >= pk->lo.y && p.z >= pk->lo.z && p.x <= pk->hi.x && p.y <= pk->hi.y &&
-			p.z <= pk->hi.z;
+		near |= p.x >= pk->lo.x && p.y >= pk->lo.y && p.z >= pk->lo.z && p.x <= pk->hi.x &&
+			p.y <= pk->hi.y && p.z <= pk->hi.z;
 	}
 	for (uint32_t k = 0; near && k < in->n_pieces; k++) {
 		const world_inst *pk = &w->insts[in->piece0 + k];
