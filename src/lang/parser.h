@@ -193,6 +193,9 @@ typedef struct parser {
 	 * transforms, only while an object statement places its objects in the scene (not in a
 	 * #declare, a clipped_by or a pattern's object) */
 	bool lights_in_csg;
+	/* Where objects are read unplaced, without lights_in_csg: "clipped_by", "bounded_by",
+	 * "looks_like", ... (stmt.c's object_item_unplaced); NULL when placed or declared. */
+	const char *unplaced;
 	/* shapes2.c's blob just parsed: the materials of its textured components, part k's at
 	 * [k - 1] (in the arena), for stmt.c's pov_shape to give its object; 0: none */
 	const scene_material **blob_parts;

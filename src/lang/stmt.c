@@ -1408,14 +1408,17 @@ static bool csg_prepend(parser *p, scene_object *objs, size_t n, scene_csg_step 
 
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
-/* object_item where the objects are not placed in the scene (a #declare, clipped_by, looks_like,
- * an object pattern's object): a light_source in their CSG is refused there. */
-static bool object_item_unplaced(parser *p, vecbuf *out, bool *matched)
+/* object_item where the objects are not placed in the scene (`where`: clipped_by, bounded_by,
+ * looks_like, projected_through, an object pattern's object, a mesh_camera's mesh): a
+ * light_source in their CSG is refused there, and a declared copy's lights light nothing
+ * (declared_object). */
+static bool object_item_unplaced(parser *p, vecbuf *out, bool *matched, const char *where)
 {
 	bool saved = p->lights_in_csg;
-	p->lights_in_csg = false;
+	const char *saved_where = p->unplaced;
+	p->lights_in_csg = false, p->unplaced = where;
 	bool ok = object_item(p, out, matched);
-	p->lights_in_csg = saved;
+	p->lights_in_csg = saved, p->unplaced = saved_where;
 	return ok;
 }
 
@@ -1431,7 +1434,7 @@ static bool clip_objects(parser *p, diag_loc open, const char *what, uint32_t id
 	while (ok && lang_peek(p)->kind != LTK_RBRACE) {
 		size_t from = b.len;
 		bool matched;
-		ok = object_item_unplaced(p, &b, &matched);
+		ok = object_item_unplaced(p, &b, &matched, what);
 		if (ok && !matched)
 			ok = bad_item(p, open, what, "an object");
 		any = true;
@@ -2809,12 +2812,15 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 		if (!vecbuf_push(out, &o))
 			return lang_error(p, kw, "out of memory");
 	}
+	const char *where = p->unplaced ? p->unplaced : "block";
+	if (ol->n_lights && !p->lights_in_csg && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by")))
+		return lang_error(p, kw, "'%.*s' holds a light_source: not allowed in a %s, as in POV-Ray (\"Illegal "
+					 "texture or patch in clip, bound or object pattern\")",
+				  (int)name.len, name.text, where);
 	if (ol->n_lights && !p->lights_in_csg)
-		diag_warning(
-		    p->d, kw,
-		    "the light_source%s of '%.*s' light%s nothing here: a clipped_by, bounded_by, "
-		    "looks_like, projected_through or object pattern's object is not placed in the scene",
-		    ol->n_lights > 1 ? "s" : "", (int)name.len, name.text, ol->n_lights > 1 ? "" : "s");
+		diag_warning(p->d, kw, "the light_source%s of '%.*s' light%s nothing in a %s: its object is not placed "
+				       "in the scene",
+			     ol->n_lights > 1 ? "s" : "", (int)name.len, name.text, ol->n_lights > 1 ? "" : "s", where);
 	for (size_t i = 0; p->lights_in_csg && i < ol->n_lights; i++) {
 		scene_light l = ol->lights[i];
 		l.group = SHIFTED(l.group);
@@ -3172,7 +3178,7 @@ bool lang_object_list(parser *p, const char *what, const objlist **out)
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
 	bool matched;
-	bool ok = object_item_unplaced(p, &tmp, &matched);
+	bool ok = object_item_unplaced(p, &tmp, &matched, "object pattern");
 	if (ok && !matched) {
 		vecbuf_free(&tmp);
 		return lang_error_found(p, "expected an object %s", what);
@@ -3554,7 +3560,7 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 			break;
 		size_t from = b.len;
 		bool matched;
-		if (!(ok = object_item_unplaced(p, &b, &matched)))
+		if (!(ok = object_item_unplaced(p, &b, &matched, "mesh_camera")))
 			break;
 		const scene_object *o = (const scene_object *)b.data + from;
 		if (b.len != from + 1 || o->geom->kind != SHAPE_MESH) {
@@ -3977,11 +3983,12 @@ static bool light_object(parser *p, const char *what, vecbuf *b)
 	bool matched = true, ok;
 	if (lang_peek(p)->kind == LTK_IDENT) {
 		bool saved = p->lights_in_csg;
-		p->lights_in_csg = false; /* not placed: its lights light nothing */
+		const char *saved_where = p->unplaced;
+		p->lights_in_csg = false, p->unplaced = what; /* not placed: its lights light nothing */
 		ok = declared_object(p, b, lang_peek(p)->loc);
-		p->lights_in_csg = saved;
+		p->lights_in_csg = saved, p->unplaced = saved_where;
 	} else
-		ok = object_item_unplaced(p, b, &matched);
+		ok = object_item_unplaced(p, b, &matched, what);
 	if (ok && (!matched || !b->len))
 		ok = lang_error_found(p, "expected an object in '%s'", what);
 	return ok;

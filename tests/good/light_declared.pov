@@ -2,8 +2,8 @@
 // object { Name }: each copy's lights are moved by the copy's transforms (after the declared
 // object's own), and each light_group in it is a new group per copy (the chain inside copied; a
 // group around the copy becomes its parent); a light's looks_like objects and projected_through
-// objects move with its copy. Where a copy is not placed in the scene (clipped_by) its lights
-// light nothing (a warning).
+// objects move with its copy. Where a copy is not placed in the scene (a looks_like) its lights
+// light nothing (a warning; in a clipped_by or bounded_by an error, as in POV-Ray).
 #declare Lamp = union { light_source { <0, 5, 0> color 1 } sphere { 0, 1 } translate y }
 object { Lamp translate x * 3 }
 object { Lamp rotate z * 90 }
@@ -23,7 +23,7 @@ object { Pair translate z * 2 }
 object { G translate x }
 object { G scale 2 }
 light_group { light_source { <0, 9, 0> color 1 } object { G } }
-sphere { 0, 2 clipped_by { object { Lamp } } }
+light_source { <0, 20, 0> color 0.5 looks_like { Lamp } }
 #declare Bulb = union {
   light_source { <0, 5, 0> color 1 looks_like { sphere { 0, 0.2 } } projected_through { disc { <0, 3, 0>, y, 0.5 } } }
   sphere { 0, 1 }
