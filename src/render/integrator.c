@@ -594,6 +594,10 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 		       render_sample *out)
 {
 	float p_walk = 0.0f;
+	/* the choice's number: the search's fifth, which neither circle (its first three) nor the walk
+	 * (a stream keyed by the first) draws; drawn once at most */
+	float u = 0.0f;
+	bool drawn = false;
 	if (m->auto_walk) {
 		float reach = (float)SSS_AUTO_CIRCLE_ABOVE * m->auto_ld;
 		double thick = INFINITY; /* nothing below within reach: thick */
@@ -607,21 +611,43 @@ static bool auto_entry(const render_scene *s, const render_settings *set, const 
 		}
 		double mfp = m->auto_ld > 0.0f ? thick / m->auto_ld : 0.0;
 		double p = sss_auto_walk_prob(mfp);
-		if (p > 0.0 && hit) {
-			vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
-			double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
-			double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
-			p *= sss_auto_light_prob(sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
-		}
 		/* thinner than the profile's own reach: the walk, lit from either side (the larger of
 		 * the two probabilities: continuous where both are) */
+		double thin = hit ? sss_auto_thin_prob(thick, m->auto_tail_walk, m->auto_tail_circle) : 0.0;
+		if (p > 0.0 && hit) {
+			/* The light factor (in [0, 1]) only lowers p, and the floor is taken after it:
+			 * where the floor is at least p, or the choice's number is at or past p, the
+			 * light cannot change the choice and is not estimated (issue 21, fifth pass: the
+			 * two irradiances and the share were 40 % of auto's price on the wax sphere,
+			 * where nothing walks). The same choices as estimating it always: a Sobol value
+			 * depends only on its dimension, so it is drawn early here; the random sampler's
+			 * next number depends on what was drawn before, so it keeps the order. */
+			if (!(thin < p)) {
+				p = thin; /* max(p * light, thin) = thin */
+			} else {
+				if (render_sampler_keyed(g) && (float)p < 1.0f)
+					u = render_sampler_1d(g, DIM_SSS_SEARCH + 4), drawn = true;
+				if (drawn && !(u < (float)p)) {
+					p = thin; /* u >= p >= max(p * light, thin): circle, as thin decides */
+				} else {
+					vec3 n_far = v3_dot(far.ng, probe.d) >= 0.0f ? far.ng : v3_neg(far.ng); /* out of the far side */
+					double e_far = auto_irradiance(s, far.p, n_far, SSS_AUTO_LIGHT_WRAP);
+					double e_near = e_far > 0.0 ? auto_irradiance(s, exit->p, n_out, 0.0f) : 0.0;
+					p *= sss_auto_light_prob(
+						sss_auto_light_share(&m->auto_slab, e_near, e_far, thick / m->units_per_mm));
+				}
+			}
+		}
 		if (hit && p < 1.0)
-			p = fmax(p, sss_auto_thin_prob(thick, m->auto_tail_walk, m->auto_tail_circle));
+			p = fmax(p, thin);
 		p_walk = (float)p;
 	}
-	/* the search's fifth number: neither circle (its first three) nor the walk (a stream keyed by
-	 * the first) draws it */
-	bool walk = p_walk >= 1.0f || (p_walk > 0.0f && render_sampler_1d(g, DIM_SSS_SEARCH + 4) < p_walk);
+	bool walk = p_walk >= 1.0f;
+	if (!walk && p_walk > 0.0f) {
+		if (!drawn)
+			u = render_sampler_1d(g, DIM_SSS_SEARCH + 4);
+		walk = u < p_walk;
+	}
 	if (walk)
 		return volume_entry(s, m, exit, n_shade, n_out, wo, g, e, out);
 	return circle_entry(s, set, m, exit, n_out, g, e, out);

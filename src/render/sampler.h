@@ -67,6 +67,9 @@ static inline render_sampler render_sampler_of_rng(rng g)
 {
 	return (render_sampler){.kind = RENDER_SAMPLER_RANDOM, .g = g};
 }
+/* Whether a value depends only on its dimension (Sobol), not on what was drawn before (random):
+ * a keyed sampler's number may be drawn early, or drawn and not used, without changing any other. */
+static inline bool render_sampler_keyed(const render_sampler *s) { return s->kind != RENDER_SAMPLER_RANDOM; }
 /* Parses "sobol" or "random"; false for anything else. */
 bool render_sampler_from_name(const char *name, render_sampler_kind *kind);
 const char *render_sampler_name(render_sampler_kind kind);
