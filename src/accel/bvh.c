@@ -880,15 +880,24 @@ static inline const bvh_word *leaf_words(const bvh *b, uint32_t ref)
 
 /* The exact circle test of triangle k of a leaf that passed the pre-tests: its hits go to
  * hits[total...] (up to max_hits in all); returns the new total. */
-static uint32_t circle_triangle(const tri_circle *q, const bvh_word *w, int m, int k, tri_circle_hit *hits,
+static uint32_t circle_triangle(const tri_circle_d *q, const bvh_word *w, int m, int k, tri_circle_hit *hits,
 				uint32_t max_hits, uint32_t total)
 {
+	vec3 v0 = group_vertex(w, m, k, 0), v1 = group_vertex(w, m, k, 1), v2 = group_vertex(w, m, k, 2);
+	uint32_t id = group_id(w, m, k);
+	if (total + 2 <= max_hits) {
+		/* Room for both: straight into hits. */
+		int nh = tri_circle_exact_prepared(q, v0, v1, v2, &hits[total]);
+		for (int i = 0; i < nh; i++)
+			hits[total + i].prim = id;
+		return total + (uint32_t)nh;
+	}
 	tri_circle_hit h[2];
-	int nh = tri_circle_exact(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1), group_vertex(w, m, k, 2), h);
+	int nh = tri_circle_exact_prepared(q, v0, v1, v2, h);
 	for (int i = 0; i < nh; i++, total++) {
 		if (total < max_hits) {
 			hits[total] = h[i];
-			hits[total].prim = group_id(w, m, k);
+			hits[total].prim = id;
 		}
 	}
 	return total;
@@ -1102,11 +1111,13 @@ static uint32_t circle_traverse(const bvh *b, const tri_circle *q, tri_circle_hi
 	/* No test of the root's own box: the traversal tests its children's. */
 	if (!circle_prepare(q, box_extent(b->lo, b->hi), &p))
 		return 0;
+	tri_circle_d qd;
+	tri_circle_d_prepare(q, &qd);
 #if BVH_HAVE_AVX2
 	if (b->width == 8)
-		return circle_8(b, q, &p, hits, max_hits);
+		return circle_8(b, &qd, &p, hits, max_hits);
 #endif
-	return circle_4(b, q, &p, hits, max_hits);
+	return circle_4(b, &qd, &p, hits, max_hits);
 }
 
 uint32_t bvh_circle(const bvh *b, const tri_circle *q, tri_circle_hit *hits, uint32_t max_hits)
