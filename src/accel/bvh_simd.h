@@ -304,10 +304,10 @@ static void K(circle_prepare)(const circle_prep *p, K(circle_prep) * q)
 {
 	K_UNROLL
 	for (int i = 0; i < 3; i++) {
-		q->lo[i] = V(set1)(v3_get(p->lo, i)), q->hi[i] = V(set1)(v3_get(p->hi, i));
-		q->c[i] = V(set1)(v3_get(p->c, i));
-		q->m[i] = V(set1)(v3_get(p->m, i)), q->neg_m[i] = V(set1)(v3_get(p->neg_m, i));
-		q->t[i] = V(set1)(v3_get(p->t, i)), q->neg_t[i] = V(set1)(v3_get(p->neg_t, i));
+		q->lo[i] = V(set1)(p->lo[i]), q->hi[i] = V(set1)(p->hi[i]);
+		q->c[i] = V(set1)(p->c[i]);
+		q->m[i] = V(set1)(p->m[i]), q->neg_m[i] = V(set1)(p->neg_m[i]);
+		q->t[i] = V(set1)(p->t[i]), q->neg_t[i] = V(set1)(p->neg_t[i]);
 	}
 	q->slack = V(set1)(p->slack), q->neg_slack = V(set1)(-p->slack);
 	q->rmax2 = V(set1)(p->rmax2), q->rmin2 = V(set1)(p->rmin2);

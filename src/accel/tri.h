@@ -230,28 +230,6 @@ static inline dvec3 tri_edge_crossing(dvec3 Pi, dvec3 Pj, double di, double dj, 
 	return d3_add(Pi, d3_scale(d3_sub(Pj, Pi), s));
 }
 
-/* a where the mask is all ones, b where it is zero: a select without a branch (which edges cross
- * the plane is a coin toss) and without indexing an array in memory (a store and a reload on the
- * test's chain of dependent operations). */
-static inline double tri_select(uint64_t mask, double a, double b)
-{
-#ifdef __SSE2__
-	__m128d m = _mm_castsi128_pd(_mm_cvtsi64_si128((long long)mask));
-	return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(m, _mm_set_sd(a)), _mm_andnot_pd(m, _mm_set_sd(b))));
-#else
-	uint64_t x, y;
-	memcpy(&x, &a, sizeof x);
-	memcpy(&y, &b, sizeof y);
-	x = (x & mask) | (y & ~mask);
-	memcpy(&a, &x, sizeof a);
-	return a;
-#endif
-}
-static inline dvec3 tri_select3(uint64_t mask, dvec3 a, dvec3 b)
-{
-	return d3(tri_select(mask, a.x, b.x), tri_select(mask, a.y, b.y), tri_select(mask, a.z, b.z));
-}
-
 static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
 {
 	dvec3 C = c->C, T = c->T, N = c->N, M = c->M;
@@ -270,19 +248,17 @@ static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3
 	 * lie on opposite sides, in the order of i, each with its barycentrics (of v1, v2). */
 	dvec3 S0, S1;
 	double su0, sv0, su1, sv1;
+	const dvec3 P[3] = {P0, P1, P2};
+	const double d[3] = {d0, d1, d2}, bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
 	if ((above | below) == 7) {
 		/* No vertex on the plane (the usual case): two edges cross. S0 is edge 0's crossing
-		 * when it crosses, else edge 1's; S1 edge 2's when it crosses, else edge 1's. */
-		uint64_t m0 = -(uint64_t)((d0 < 0.0) != (d1 < 0.0)), m2 = -(uint64_t)((d2 < 0.0) != (d0 < 0.0));
-		S0 = tri_edge_crossing(tri_select3(m0, P0, P1), tri_select3(m0, P1, P2), tri_select(m0, d0, d1),
-				       tri_select(m0, d1, d2), tri_select(m0, 0.0, 1.0), 0.0, tri_select(m0, 1.0, 0.0),
-				       tri_select(m0, 0.0, 1.0), &su0, &sv0);
-		S1 = tri_edge_crossing(tri_select3(m2, P2, P1), tri_select3(m2, P0, P2), tri_select(m2, d2, d1),
-				       tri_select(m2, d0, d2), tri_select(m2, 0.0, 1.0), tri_select(m2, 1.0, 0.0), 0.0,
-				       tri_select(m2, 0.0, 1.0), &su1, &sv1);
+		 * when it crosses, else edge 1's; S1 edge 2's when it crosses, else edge 1's: indices
+		 * without a branch (which edges cross is a coin toss). */
+		int c0 = (d0 < 0.0) != (d1 < 0.0), c2 = (d2 < 0.0) != (d0 < 0.0);
+		int i0 = 1 - c0, j0 = 2 - c0, i1 = 1 + c2, j1 = 2 - 2 * c2;
+		S0 = tri_edge_crossing(P[i0], P[j0], d[i0], d[j0], bu[i0], bv[i0], bu[j0], bv[j0], &su0, &sv0);
+		S1 = tri_edge_crossing(P[i1], P[j1], d[i1], d[j1], bu[i1], bv[i1], bu[j1], bv[j1], &su1, &sv1);
 	} else {
-		const dvec3 P[3] = {P0, P1, P2};
-		const double d[3] = {d0, d1, d2}, bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
 		dvec3 S[3];
 		double su[3], sv[3];
 		int ns = 0;
