@@ -782,8 +782,10 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	__m128 z = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c, zero), _mm_mul_ps(t, zero)), _mm_mul_ps(n, zero));
 	if (_mm_movemask_ps(_mm_cmpeq_ps(z, zero)) != 15 || !isfinite(q->radius) || q->radius < 0.0f)
 		return false;
-	__m128 m = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(t, t, _MM_SHUFFLE(3, 0, 2, 1)), _mm_shuffle_ps(n, n, _MM_SHUFFLE(3, 1, 0, 2))),
-			      _mm_mul_ps(_mm_shuffle_ps(t, t, _MM_SHUFFLE(3, 1, 0, 2)), _mm_shuffle_ps(n, n, _MM_SHUFFLE(3, 0, 2, 1))));
+	__m128 m = _mm_sub_ps(_mm_mul_ps(_mm_shuffle_ps(t, t, _MM_SHUFFLE(3, 0, 2, 1)),
+					 _mm_shuffle_ps(n, n, _MM_SHUFFLE(3, 1, 0, 2))),
+			      _mm_mul_ps(_mm_shuffle_ps(t, t, _MM_SHUFFLE(3, 1, 0, 2)),
+					 _mm_shuffle_ps(n, n, _MM_SHUFFLE(3, 0, 2, 1))));
 	_mm_store_ps(p->c, c), _mm_store_ps(p->t, t), _mm_store_ps(p->m, m);
 	_mm_store_ps(p->neg_t, _mm_xor_ps(t, sign)), _mm_store_ps(p->neg_m, _mm_xor_ps(m, sign));
 	p->r = q->radius, p->full = q->full;
@@ -796,11 +798,13 @@ static bool circle_prepare(const tri_circle *q, float extent, circle_prep *p)
 	 * ends, +-n_i, bound it), the negative end only when t_i <= 0. */
 	__m128 a = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(t, t), _mm_mul_ps(n, n))), an = _mm_andnot_ps(sign, n);
 	__m128 all = q->full ? _mm_castsi128_ps(_mm_set1_epi32(-1)) : zero;
-	__m128 use_up = _mm_or_ps(all, _mm_cmpge_ps(t, zero)), use_down = _mm_or_ps(all, _mm_cmple_ps(t, zero));
+	__m128 use_up = _mm_or_ps(all, _mm_cmpge_ps(t, zero)),
+	       use_down = _mm_or_ps(all, _mm_cmple_ps(t, zero));
 	__m128 up = _mm_or_ps(_mm_and_ps(use_up, a), _mm_andnot_ps(use_up, an));
 	__m128 down = _mm_or_ps(_mm_and_ps(use_down, a), _mm_andnot_ps(use_down, an));
 	__m128 r = _mm_set1_ps(q->radius), slack = _mm_set1_ps(p->slack);
-	__m128 lo = _mm_sub_ps(_mm_mul_ps(_mm_xor_ps(down, sign), r), slack), hi = _mm_add_ps(_mm_mul_ps(up, r), slack);
+	__m128 lo = _mm_sub_ps(_mm_mul_ps(_mm_xor_ps(down, sign), r), slack),
+	       hi = _mm_add_ps(_mm_mul_ps(up, r), slack);
 	_mm_store_ps(p->lo, _mm_add_ps(c, lo)), _mm_store_ps(p->hi, _mm_add_ps(c, hi));
 	return true;
 }

@@ -460,7 +460,7 @@ BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((co
  * into one list (leaf i, triangle k as i << 8 | k), then the exact test of each. Separate passes,
  * free of each other's branches, overlap better than a leaf test after each node test, and one
  * list needs no branch on which leaves have candidates. Returns the new total (circle_triangle). */
-static uint32_t K(circle_leaves)(const bvh *b, const tri_circle_d *q, const K(circle_prep) *p,
+static uint32_t K(circle_leaves)(const bvh *b, const tri_circle_d *q, const K(circle_prep) * p,
 				 const uint32_t *leaves, int n, tri_circle_hit *hits, uint32_t max_hits,
 				 uint32_t total)
 {

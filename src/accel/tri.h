@@ -190,12 +190,16 @@ static inline void tri_circle_d_prepare(const tri_circle *c, tri_circle_d *cd)
 	cd->r = c->radius, cd->full = c->full;
 }
 
+/* Inlined into the BVH's leaf loop even though it is long: called out of line, its spills and
+ * reloads of the prepared circle cost 50 instructions a test. */
+#define TRI_ALWAYS_INLINE static inline __attribute__((always_inline))
+
 /* Exact circle/triangle test, in double: the triangle is clipped to the circle's plane, giving a
  * segment, and the segment is solved against the circle. Writes up to two hits to out and returns
  * their number. A triangle lying in the circle's plane gives none: the circle would run inside it,
  * where the hit density |n_i . e_theta| is zero (DESIGN.md). Degenerate triangles give none. */
-static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
-					    tri_circle_hit out[2]);
+TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+						tri_circle_hit out[2]);
 
 static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
 {
@@ -222,15 +226,16 @@ static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, ve
 /* Where edge (i, j) of a triangle, its ends Pi and Pj at plane distances di and dj of opposite
  * signs and with barycentrics (ui, vi) and (uj, vj) of v1 and v2, crosses the plane: the point,
  * and its barycentrics. */
-static inline dvec3 tri_edge_crossing(dvec3 Pi, dvec3 Pj, double di, double dj, double ui, double vi, double uj,
-				      double vj, double *su, double *sv)
+static inline dvec3 tri_edge_crossing(dvec3 Pi, dvec3 Pj, double di, double dj, double ui, double vi,
+				      double uj, double vj, double *su, double *sv)
 {
 	double s = di / (di - dj);
 	*su = ui + s * (uj - ui), *sv = vi + s * (vj - vi);
 	return d3_add(Pi, d3_scale(d3_sub(Pj, Pi), s));
 }
 
-static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
+TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+						tri_circle_hit out[2])
 {
 	dvec3 C = c->C, T = c->T, N = c->N, M = c->M;
 	dvec3 P0 = v3_to_d3(v0), P1 = v3_to_d3(v1), P2 = v3_to_d3(v2);
@@ -256,8 +261,10 @@ static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3
 		 * without a branch (which edges cross is a coin toss). */
 		int c0 = (d0 < 0.0) != (d1 < 0.0), c2 = (d2 < 0.0) != (d0 < 0.0);
 		int i0 = 1 - c0, j0 = 2 - c0, i1 = 1 + c2, j1 = 2 - 2 * c2;
-		S0 = tri_edge_crossing(P[i0], P[j0], d[i0], d[j0], bu[i0], bv[i0], bu[j0], bv[j0], &su0, &sv0);
-		S1 = tri_edge_crossing(P[i1], P[j1], d[i1], d[j1], bu[i1], bv[i1], bu[j1], bv[j1], &su1, &sv1);
+		S0 =
+		    tri_edge_crossing(P[i0], P[j0], d[i0], d[j0], bu[i0], bv[i0], bu[j0], bv[j0], &su0, &sv0);
+		S1 =
+		    tri_edge_crossing(P[i1], P[j1], d[i1], d[j1], bu[i1], bv[i1], bu[j1], bv[j1], &su1, &sv1);
 	} else {
 		dvec3 S[3];
 		double su[3], sv[3];
@@ -267,8 +274,8 @@ static inline int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3
 			if (d[i] == 0.0) {
 				S[ns] = P[i], su[ns] = i == 1, sv[ns] = i == 2, ns++;
 			} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
-				S[ns] = tri_edge_crossing(P[i], P[j], d[i], d[j], bu[i], bv[i], bu[j], bv[j], &su[ns],
-							  &sv[ns]);
+				S[ns] = tri_edge_crossing(P[i], P[j], d[i], d[j], bu[i], bv[i], bu[j], bv[j],
+							  &su[ns], &sv[ns]);
 				ns++;
 			}
 		}
