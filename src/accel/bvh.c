@@ -891,22 +891,26 @@ static inline const bvh_word *leaf_words(const bvh *b, uint32_t ref)
 	return &b->leaf[GROUP_WORDS * (size_t)leaf_first(ref)];
 }
 
-/* The exact circle test of triangle k of a leaf that passed the pre-tests: its hits go to
- * hits[total...] (up to max_hits in all); returns the new total. */
-static uint32_t circle_triangle(const tri_circle_d *q, const bvh_word *w, int m, int k, tri_circle_hit *hits,
-				uint32_t max_hits, uint32_t total)
+/* The exact circle test of triangle k of a leaf that passed the pre-tests, in its two halves: the
+ * segment and its roots (returns their number, 0 for no hit), then the hits, which go to
+ * hits[total...] (up to max_hits in all; returns the new total). */
+BVH_INLINE int circle_segment(const tri_circle_d *q, const bvh_word *w, int m, int k, tri_circle_segment *g)
 {
-	vec3 v0 = group_vertex(w, m, k, 0), v1 = group_vertex(w, m, k, 1), v2 = group_vertex(w, m, k, 2);
-	uint32_t id = group_id(w, m, k);
+	return tri_circle_segment_solve(q, group_vertex(w, m, k, 0), group_vertex(w, m, k, 1),
+					group_vertex(w, m, k, 2), g);
+}
+static uint32_t circle_segment_hits(const tri_circle_d *q, const tri_circle_segment *g, int nr, uint32_t id,
+				    tri_circle_hit *hits, uint32_t max_hits, uint32_t total)
+{
 	if (total + 2 <= max_hits) {
 		/* Room for both: straight into hits. */
-		int nh = tri_circle_exact_prepared(q, v0, v1, v2, &hits[total]);
+		int nh = tri_circle_segment_hits(q, g, nr, &hits[total]);
 		for (int i = 0; i < nh; i++)
 			hits[total + i].prim = id;
 		return total + (uint32_t)nh;
 	}
 	tri_circle_hit h[2];
-	int nh = tri_circle_exact_prepared(q, v0, v1, v2, h);
+	int nh = tri_circle_segment_hits(q, g, nr, h);
 	for (int i = 0; i < nh; i++, total++) {
 		if (total < max_hits) {
 			hits[total] = h[i];

@@ -201,6 +201,20 @@ static inline void tri_circle_d_prepare(const tri_circle *c, tri_circle_d *cd)
 TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
 						tri_circle_hit out[2]);
 
+/* The exact test in two halves, for callers that overlap several triangles' tests (the BVH: each
+ * half is a long chain of dependent operations, two divisions and a square root, then a division
+ * and atan2's two): tri_circle_segment_solve clips the triangle to the plane and solves the segment's
+ * circle equation, returning the number of roots (0: no hit); tri_circle_segment_hits keeps the
+ * roots on the segment and on the circle's side and writes their hits. */
+typedef struct tri_circle_segment {
+	dvec3 S0, D, ng;		 /* the segment S0 + s D, s in [0, 1], and the triangle's normal */
+	double su0, sv0, su1, sv1, s[2]; /* the ends' barycentrics, the roots */
+} tri_circle_segment;
+TRI_ALWAYS_INLINE int tri_circle_segment_solve(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+					       tri_circle_segment *g);
+TRI_ALWAYS_INLINE int tri_circle_segment_hits(const tri_circle_d *c, const tri_circle_segment *g, int nr,
+					      tri_circle_hit out[2]);
+
 static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
 {
 	tri_circle_d cd;
@@ -234,10 +248,10 @@ static inline dvec3 tri_edge_crossing(dvec3 Pi, dvec3 Pj, double di, double dj, 
 	return d3_add(Pi, d3_scale(d3_sub(Pj, Pi), s));
 }
 
-TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
-						tri_circle_hit out[2])
+TRI_ALWAYS_INLINE int tri_circle_segment_solve(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+					       tri_circle_segment *g)
 {
-	dvec3 C = c->C, T = c->T, N = c->N, M = c->M;
+	dvec3 C = c->C, M = c->M;
 	dvec3 P0 = v3_to_d3(v0), P1 = v3_to_d3(v1), P2 = v3_to_d3(v2);
 	double d0 = d3_dot(M, d3_sub(P0, C)), d1 = d3_dot(M, d3_sub(P1, C)), d2 = d3_dot(M, d3_sub(P2, C));
 	/* Vertices above (bit i of above) and below the plane: none when all are on one side or
@@ -302,19 +316,25 @@ TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, 
 	double signed_sq;
 	memcpy(&signed_sq, &bits, sizeof signed_sq);
 	double q = -(b + signed_sq);
-	double roots[2];
-	int nr = 0;
-	if (q != 0.0) {
-		roots[nr++] = q / a;
-		if (disc > 0.0)
-			roots[nr++] = cc / q;
-	} else {
-		roots[nr++] = 0.0; /* b == 0 and disc == 0: the segment touches at S0 */
+	g->S0 = S0, g->D = D, g->ng = ng;
+	g->su0 = su0, g->sv0 = sv0, g->su1 = su1, g->sv1 = sv1;
+	if (q == 0.0) {
+		g->s[0] = 0.0; /* b == 0 and disc == 0: the segment touches at S0 */
+		return 1;
 	}
+	g->s[0] = q / a, g->s[1] = cc / q;
+	return disc > 0.0 ? 2 : 1;
+}
+
+TRI_ALWAYS_INLINE int tri_circle_segment_hits(const tri_circle_d *c, const tri_circle_segment *g, int nr,
+					      tri_circle_hit out[2])
+{
+	dvec3 C = c->C, T = c->T, N = c->N, S0 = g->S0, D = g->D;
+	double su0 = g->su0, sv0 = g->sv0, su1 = g->su1, sv1 = g->sv1;
 	int nh = 0;
 	vec3 ngu = v3s(0.0f);
 	for (int k = 0; k < nr; k++) {
-		double s = roots[k];
+		double s = g->s[k];
 		if (!(s >= 0.0 && s <= 1.0))
 			continue;
 		dvec3 x = d3_add(S0, d3_scale(D, s));
@@ -326,7 +346,7 @@ TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, 
 		if (c->full && theta < 0.0)
 			theta += 2.0 * M_PI;
 		if (nh == 0)
-			ngu = d3_to_v3(d3_normalize(ng)); /* only for hits */
+			ngu = d3_to_v3(d3_normalize(g->ng)); /* only for hits */
 		tri_circle_hit *h = &out[nh++];
 		h->pos = d3_to_v3(x);
 		h->theta = (float)theta;
@@ -336,6 +356,14 @@ TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, 
 		h->prim = h->inst = 0;
 	}
 	return nh;
+}
+
+TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+						tri_circle_hit out[2])
+{
+	tri_circle_segment g;
+	int nr = tri_circle_segment_solve(c, v0, v1, v2, &g);
+	return nr ? tri_circle_segment_hits(c, &g, nr, out) : 0;
 }
 
 #endif
