@@ -304,10 +304,10 @@ static void K(circle_prepare)(const circle_prep *p, K(circle_prep) * q)
 {
 	K_UNROLL
 	for (int i = 0; i < 3; i++) {
-		q->lo[i] = V(set1)(v3_get(p->lo, i)), q->hi[i] = V(set1)(v3_get(p->hi, i));
-		q->c[i] = V(set1)(v3_get(p->c, i));
-		q->m[i] = V(set1)(v3_get(p->m, i)), q->neg_m[i] = V(set1)(v3_get(p->neg_m, i));
-		q->t[i] = V(set1)(v3_get(p->t, i)), q->neg_t[i] = V(set1)(v3_get(p->neg_t, i));
+		q->lo[i] = V(set1)(p->lo[i]), q->hi[i] = V(set1)(p->hi[i]);
+		q->c[i] = V(set1)(p->c[i]);
+		q->m[i] = V(set1)(p->m[i]), q->neg_m[i] = V(set1)(p->neg_m[i]);
+		q->t[i] = V(set1)(p->t[i]), q->neg_t[i] = V(set1)(p->neg_t[i]);
 	}
 	q->slack = V(set1)(p->slack), q->neg_slack = V(set1)(-p->slack);
 	q->rmax2 = V(set1)(p->rmax2), q->rmin2 = V(set1)(p->rmin2);
@@ -455,12 +455,14 @@ BVH_INLINE int K(leaf_mask)(const K(node) *nd) { return V(movemask)(V(loadu)((co
 
 /* Leaves a circle traversal collects before it tests them (then it goes on). */
 #define K_LEAF_BATCH BVH_CIRCLE_LEAF_BATCH
+/* Candidates whose exact tests overlap (K(circle_leaves)). */
+#define K_EXACT_CHUNK 4
 
 /* The leaves[0, n) of a circle traversal: first every leaf's pre-test, its candidates left-packed
  * into one list (leaf i, triangle k as i << 8 | k), then the exact test of each. Separate passes,
  * free of each other's branches, overlap better than a leaf test after each node test, and one
  * list needs no branch on which leaves have candidates. Returns the new total (circle_triangle). */
-static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circle_prep) *p,
+static uint32_t K(circle_leaves)(const bvh *b, const tri_circle_d *q, const K(circle_prep) * p,
 				 const uint32_t *leaves, int n, tri_circle_hit *hits, uint32_t max_hits,
 				 uint32_t total)
 {
@@ -483,11 +485,23 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
 			nc += V(compress_lanes)(&cand[nc], (uint32_t)(i << 8 | W * h), K(group_circle)(p, wg, mg));
 		}
 	}
-	for (int j = 0; j < nc; j++) {
-		uint32_t leaf = leaves[cand[j] >> 8];
-		int k = (int)(cand[j] & 255), m = (int)leaf_count(leaf), mg;
-		const bvh_word *wg = K(group)(leaf_words(b, leaf), m, k / W, &mg);
-		total = circle_triangle(q, wg, mg, k % W, hits, max_hits, total);
+	/* The exact tests a few candidates at a time, first halves then second halves: each half is a
+	 * chain of dependent divisions and square roots, and the chains of different candidates
+	 * overlap. The hits keep the candidates' order. */
+	for (int j0 = 0; j0 < nc; j0 += K_EXACT_CHUNK) {
+		int nj = nc - j0 < K_EXACT_CHUNK ? nc - j0 : K_EXACT_CHUNK, nr[K_EXACT_CHUNK];
+		tri_circle_segment seg[K_EXACT_CHUNK];
+		uint32_t id[K_EXACT_CHUNK];
+		for (int j = 0; j < nj; j++) {
+			uint32_t leaf = leaves[cand[j0 + j] >> 8];
+			int k = (int)(cand[j0 + j] & 255), m = (int)leaf_count(leaf), mg;
+			const bvh_word *wg = K(group)(leaf_words(b, leaf), m, k / W, &mg);
+			nr[j] = circle_segment(q, wg, mg, k % W, &seg[j]);
+			id[j] = group_id(wg, mg, k % W);
+		}
+		for (int j = 0; j < nj; j++)
+			if (nr[j])
+				total = circle_segment_hits(q, &seg[j], nr[j], id[j], hits, max_hits, total);
 	}
 	return total;
 }
@@ -505,7 +519,7 @@ static uint32_t K(circle_leaves)(const bvh *b, const tri_circle *q, const K(circ
  * passes K_FIFO, nodes come from the back, depth first, which never takes it past K_QUEUE - W
  * (a descent adds at most W - 1 nodes a level); the front's part of the array is not reused. All
  * hits are returned, in an order that depends on the tree. */
-static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *cp, tri_circle_hit *hits,
+static uint32_t K(circle)(const bvh *b, const tri_circle_d *q, const circle_prep *cp, tri_circle_hit *hits,
 			  uint32_t max_hits)
 {
 	const K(node) *nodes = b->nodes;
@@ -540,5 +554,6 @@ static uint32_t K(circle)(const bvh *b, const tri_circle *q, const circle_prep *
 #undef K_FIFO
 #undef K_QUEUE
 #undef K_LEAF_BATCH
+#undef K_EXACT_CHUNK
 #undef K_STACK
 #undef K_UNROLL

@@ -174,11 +174,53 @@ static inline void tri_circle_hits_sort(tri_circle_hit *hits, uint32_t n)
  * 1.41, for 1.24 hits.) */
 #define TRI_CIRCLE_MARGIN 3e-6f
 
+/* A circle in double, as the exact test uses it: centre, axes and the plane normal M = T x N. The
+ * BVH prepares it once a circle (tri_circle_exact_prepared); the values are those the exact test
+ * would compute itself, so the hits are the same bits either way. */
+typedef struct tri_circle_d {
+	dvec3 C, T, N, M;
+	double r;
+	bool full;
+} tri_circle_d;
+
+static inline void tri_circle_d_prepare(const tri_circle *c, tri_circle_d *cd)
+{
+	cd->C = v3_to_d3(c->centre), cd->T = v3_to_d3(c->t), cd->N = v3_to_d3(c->n);
+	cd->M = d3_cross(cd->T, cd->N);
+	cd->r = c->radius, cd->full = c->full;
+}
+
+/* Inlined into the BVH's leaf loop even though it is long: called out of line, its spills and
+ * reloads of the prepared circle cost 50 instructions a test. */
+#define TRI_ALWAYS_INLINE static inline __attribute__((always_inline))
+
 /* Exact circle/triangle test, in double: the triangle is clipped to the circle's plane, giving a
  * segment, and the segment is solved against the circle. Writes up to two hits to out and returns
  * their number. A triangle lying in the circle's plane gives none: the circle would run inside it,
  * where the hit density |n_i . e_theta| is zero (DESIGN.md). Degenerate triangles give none. */
-static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2]);
+TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+						tri_circle_hit out[2]);
+
+/* The exact test in two halves, for callers that overlap several triangles' tests (the BVH: each
+ * half is a long chain of dependent operations, two divisions and a square root, then a division
+ * and atan2's two): tri_circle_segment_solve clips the triangle to the plane and solves the segment's
+ * circle equation, returning the number of roots (0: no hit); tri_circle_segment_hits keeps the
+ * roots on the segment and on the circle's side and writes their hits. */
+typedef struct tri_circle_segment {
+	dvec3 S0, D, ng;		 /* the segment S0 + s D, s in [0, 1], and the triangle's normal */
+	double su0, sv0, su1, sv1, s[2]; /* the ends' barycentrics, the roots */
+} tri_circle_segment;
+TRI_ALWAYS_INLINE int tri_circle_segment_solve(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+					       tri_circle_segment *g);
+TRI_ALWAYS_INLINE int tri_circle_segment_hits(const tri_circle_d *c, const tri_circle_segment *g, int nr,
+					      tri_circle_hit out[2]);
+
+static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
+{
+	tri_circle_d cd;
+	tri_circle_d_prepare(c, &cd);
+	return tri_circle_exact_prepared(&cd, v0, v1, v2, out);
+}
 
 static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2,
 				       tri_circle_hit out[2])
@@ -195,67 +237,69 @@ static inline int tri_circle_intersect(const tri_circle *c, vec3 v0, vec3 v1, ve
 	return tri_circle_exact(c, v0, v1, v2, out);
 }
 
-/* Where edge (i, j) of the triangle P, its ends at plane distances d[i] and d[j] of opposite
- * signs, crosses the plane: the point, and its barycentrics of v1 and v2. */
-static inline void tri_edge_crossing(const dvec3 P[3], const double d[3], int i, int j, dvec3 *S, double *su,
-				     double *sv)
+/* Where edge (i, j) of a triangle, its ends Pi and Pj at plane distances di and dj of opposite
+ * signs and with barycentrics (ui, vi) and (uj, vj) of v1 and v2, crosses the plane: the point,
+ * and its barycentrics. */
+static inline dvec3 tri_edge_crossing(dvec3 Pi, dvec3 Pj, double di, double dj, double ui, double vi,
+				      double uj, double vj, double *su, double *sv)
 {
-	static const double bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
-	double s = d[i] / (d[i] - d[j]);
-	*S = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
-	*su = bu[i] + s * (bu[j] - bu[i]), *sv = bv[i] + s * (bv[j] - bv[i]);
+	double s = di / (di - dj);
+	*su = ui + s * (uj - ui), *sv = vi + s * (vj - vi);
+	return d3_add(Pi, d3_scale(d3_sub(Pj, Pi), s));
 }
 
-/* The double-precision part of tri_circle_intersect, for callers that did its float pre-test
- * themselves (the BVH's group_circle: the same operations in the same order), or none: the
- * pre-test only skips triangles this part gives no hit for. */
-static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
+TRI_ALWAYS_INLINE int tri_circle_segment_solve(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+					       tri_circle_segment *g)
 {
-	dvec3 C = v3_to_d3(c->centre), T = v3_to_d3(c->t), N = v3_to_d3(c->n);
-	dvec3 M = d3_cross(T, N);
-	dvec3 P[3] = {v3_to_d3(v0), v3_to_d3(v1), v3_to_d3(v2)};
-	double d[3];
-	for (int i = 0; i < 3; i++)
-		d[i] = d3_dot(M, d3_sub(P[i], C));
+	dvec3 C = c->C, M = c->M;
+	dvec3 P0 = v3_to_d3(v0), P1 = v3_to_d3(v1), P2 = v3_to_d3(v2);
+	double d0 = d3_dot(M, d3_sub(P0, C)), d1 = d3_dot(M, d3_sub(P1, C)), d2 = d3_dot(M, d3_sub(P2, C));
 	/* Vertices above (bit i of above) and below the plane: none when all are on one side or
 	 * all on the plane. */
-	int above = (d[0] > 0.0) | (d[1] > 0.0) << 1 | (d[2] > 0.0) << 2;
-	int below = (d[0] < 0.0) | (d[1] < 0.0) << 1 | (d[2] < 0.0) << 2;
+	int above = (d0 > 0.0) | (d1 > 0.0) << 1 | (d2 > 0.0) << 2;
+	int below = (d0 < 0.0) | (d1 < 0.0) << 1 | (d2 < 0.0) << 2;
 	if (above == 7 || below == 7 || (above | below) == 0)
 		return 0;
-	dvec3 ng = d3_cross(d3_sub(P[1], P[0]), d3_sub(P[2], P[0]));
+	dvec3 ng = d3_cross(d3_sub(P1, P0), d3_sub(P2, P0));
 	if (!(d3_dot(ng, ng) > 0.0))
 		return 0;
-	/* The segment: vertices on the plane and crossings of edges (i, i + 1) whose ends lie on
-	 * opposite sides, in the order of i, each with its barycentrics (of v1, v2). */
-	dvec3 S[3];
-	double su[3], sv[3];
-	int ns = 0;
+	/* The segment [S0, S1]: vertices on the plane and crossings of edges (i, i + 1) whose ends
+	 * lie on opposite sides, in the order of i, each with its barycentrics (of v1, v2). */
+	dvec3 S0, S1;
+	double su0, sv0, su1, sv1;
+	const dvec3 P[3] = {P0, P1, P2};
+	const double d[3] = {d0, d1, d2}, bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
 	if ((above | below) == 7) {
-		/* No vertex on the plane (the usual case): the vertex alone on its side, k, ends the
-		 * two crossing edges, k - 1 and k; taken without a branch on which it is. */
-		static const int first_edge[3] = {0, 0, 1}, second_edge[3] = {2, 1, 2}, next[3] = {1, 2, 0};
-		int k = __builtin_ctz((unsigned)((above & (above - 1)) == 0 ? above : below));
-		int edges[2] = {first_edge[k], second_edge[k]};
-		for (int e = 0; e < 2; e++)
-			tri_edge_crossing(P, d, edges[e], next[edges[e]], &S[e], &su[e], &sv[e]);
-		ns = 2;
+		/* No vertex on the plane (the usual case): two edges cross. S0 is edge 0's crossing
+		 * when it crosses, else edge 1's; S1 edge 2's when it crosses, else edge 1's: indices
+		 * without a branch (which edges cross is a coin toss). */
+		int c0 = (d0 < 0.0) != (d1 < 0.0), c2 = (d2 < 0.0) != (d0 < 0.0);
+		int i0 = 1 - c0, j0 = 2 - c0, i1 = 1 + c2, j1 = 2 - 2 * c2;
+		S0 =
+		    tri_edge_crossing(P[i0], P[j0], d[i0], d[j0], bu[i0], bv[i0], bu[j0], bv[j0], &su0, &sv0);
+		S1 =
+		    tri_edge_crossing(P[i1], P[j1], d[i1], d[j1], bu[i1], bv[i1], bu[j1], bv[j1], &su1, &sv1);
 	} else {
+		dvec3 S[3];
+		double su[3], sv[3];
+		int ns = 0;
 		for (int i = 0; i < 3; i++) {
 			int j = i == 2 ? 0 : i + 1;
 			if (d[i] == 0.0) {
 				S[ns] = P[i], su[ns] = i == 1, sv[ns] = i == 2, ns++;
 			} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
-				tri_edge_crossing(P, d, i, j, &S[ns], &su[ns], &sv[ns]);
+				S[ns] = tri_edge_crossing(P[i], P[j], d[i], d[j], bu[i], bv[i], bu[j], bv[j],
+							  &su[ns], &sv[ns]);
 				ns++;
 			}
 		}
+		if (ns != 2)
+			return 0;
+		S0 = S[0], S1 = S[1], su0 = su[0], sv0 = sv[0], su1 = su[1], sv1 = sv[1];
 	}
-	if (ns != 2)
-		return 0;
 	/* |S0 + s D - C|^2 = r^2 for s in [0, 1]. */
-	dvec3 D = d3_sub(S[1], S[0]), E = d3_sub(S[0], C);
-	double a = d3_dot(D, D), b = d3_dot(D, E), r = c->radius;
+	dvec3 D = d3_sub(S1, S0), E = d3_sub(S0, C);
+	double a = d3_dot(D, D), b = d3_dot(D, E), r = c->r;
 	double cc = d3_dot(E, E) - r * r;
 	if (!(a > 0.0))
 		return 0;
@@ -272,22 +316,28 @@ static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v
 	double signed_sq;
 	memcpy(&signed_sq, &bits, sizeof signed_sq);
 	double q = -(b + signed_sq);
-	double roots[2];
-	int nr = 0;
-	if (q != 0.0) {
-		roots[nr++] = q / a;
-		if (disc > 0.0)
-			roots[nr++] = cc / q;
-	} else {
-		roots[nr++] = 0.0; /* b == 0 and disc == 0: the segment touches at S0 */
+	g->S0 = S0, g->D = D, g->ng = ng;
+	g->su0 = su0, g->sv0 = sv0, g->su1 = su1, g->sv1 = sv1;
+	if (q == 0.0) {
+		g->s[0] = 0.0; /* b == 0 and disc == 0: the segment touches at S0 */
+		return 1;
 	}
-	dvec3 ngu = d3_normalize(ng);
+	g->s[0] = q / a, g->s[1] = cc / q;
+	return disc > 0.0 ? 2 : 1;
+}
+
+TRI_ALWAYS_INLINE int tri_circle_segment_hits(const tri_circle_d *c, const tri_circle_segment *g, int nr,
+					      tri_circle_hit out[2])
+{
+	dvec3 C = c->C, T = c->T, N = c->N, S0 = g->S0, D = g->D;
+	double su0 = g->su0, sv0 = g->sv0, su1 = g->su1, sv1 = g->sv1;
 	int nh = 0;
+	vec3 ngu = v3s(0.0f);
 	for (int k = 0; k < nr; k++) {
-		double s = roots[k];
+		double s = g->s[k];
 		if (!(s >= 0.0 && s <= 1.0))
 			continue;
-		dvec3 x = d3_add(S[0], d3_scale(D, s));
+		dvec3 x = d3_add(S0, d3_scale(D, s));
 		dvec3 rel = d3_sub(x, C);
 		double ct = d3_dot(rel, T), st = d3_dot(rel, N);
 		if (!c->full && ct < 0.0)
@@ -295,15 +345,25 @@ static inline int tri_circle_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v
 		double theta = trig_atan2(st, ct);
 		if (c->full && theta < 0.0)
 			theta += 2.0 * M_PI;
+		if (nh == 0)
+			ngu = d3_to_v3(d3_normalize(g->ng)); /* only for hits */
 		tri_circle_hit *h = &out[nh++];
 		h->pos = d3_to_v3(x);
 		h->theta = (float)theta;
-		h->u = (float)(su[0] + s * (su[1] - su[0]));
-		h->v = (float)(sv[0] + s * (sv[1] - sv[0]));
-		h->ng = d3_to_v3(ngu);
+		h->u = (float)(su0 + s * (su1 - su0));
+		h->v = (float)(sv0 + s * (sv1 - sv0));
+		h->ng = ngu;
 		h->prim = h->inst = 0;
 	}
 	return nh;
+}
+
+TRI_ALWAYS_INLINE int tri_circle_exact_prepared(const tri_circle_d *c, vec3 v0, vec3 v1, vec3 v2,
+						tri_circle_hit out[2])
+{
+	tri_circle_segment g;
+	int nr = tri_circle_segment_solve(c, v0, v1, v2, &g);
+	return nr ? tri_circle_segment_hits(c, &g, nr, out) : 0;
 }
 
 #endif

@@ -1,5 +1,6 @@
 /* test_circle: circle hits on a plane, a sphere and a cylinder land on the analytic intersections;
- * the float pre-test of the circle/triangle test never loses a hit. */
+ * the float pre-test of the circle/triangle test never loses a hit; the exact test gives the hits of
+ * its reference form bit for bit. */
 #include "check.h"
 #include "brute.h"
 #include "geom/prim.h"
@@ -228,9 +229,130 @@ static void check_pretest(long count)
 	CHECK(with_hits > count / 4, "only %ld of %ld triangles hit", with_hits, count);
 }
 
+/* The exact circle/triangle test as first written (main before 2026-12-04's circle20f): edges in
+ * order, their crossings from arrays, the roots in a loop, every value in double. tri.h's
+ * tri_circle_exact is arranged for speed (a circle prepared once, the crossing edges chosen by
+ * index, no copies); it must return the same hits bit for bit, since images depend on them. */
+static int reference_exact(const tri_circle *c, vec3 v0, vec3 v1, vec3 v2, tri_circle_hit out[2])
+{
+	dvec3 C = v3_to_d3(c->centre), T = v3_to_d3(c->t), N = v3_to_d3(c->n), M = d3_cross(T, N);
+	dvec3 P[3] = {v3_to_d3(v0), v3_to_d3(v1), v3_to_d3(v2)};
+	double d[3];
+	for (int i = 0; i < 3; i++)
+		d[i] = d3_dot(M, d3_sub(P[i], C));
+	bool all_above = d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0,
+	     all_below = d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0;
+	if (all_above || all_below || (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0))
+		return 0;
+	dvec3 ng = d3_cross(d3_sub(P[1], P[0]), d3_sub(P[2], P[0]));
+	if (!(d3_dot(ng, ng) > 0.0))
+		return 0;
+	static const double bu[3] = {0, 1, 0}, bv[3] = {0, 0, 1};
+	dvec3 S[3];
+	double su[3], sv[3];
+	int ns = 0;
+	for (int i = 0; i < 3; i++) {
+		int j = (i + 1) % 3;
+		if (d[i] == 0.0) {
+			S[ns] = P[i], su[ns] = bu[i], sv[ns] = bv[i], ns++;
+		} else if ((d[i] < 0.0 && d[j] > 0.0) || (d[i] > 0.0 && d[j] < 0.0)) {
+			double s = d[i] / (d[i] - d[j]);
+			S[ns] = d3_add(P[i], d3_scale(d3_sub(P[j], P[i]), s));
+			su[ns] = bu[i] + s * (bu[j] - bu[i]), sv[ns] = bv[i] + s * (bv[j] - bv[i]);
+			ns++;
+		}
+	}
+	if (ns != 2)
+		return 0;
+	dvec3 D = d3_sub(S[1], S[0]), E = d3_sub(S[0], C);
+	double a = d3_dot(D, D), b = d3_dot(D, E), r = c->radius, cc = d3_dot(E, E) - r * r;
+	if (!(a > 0.0))
+		return 0;
+	double disc = b * b - a * cc;
+	if (disc < 0.0)
+		return 0;
+	double sq = sqrt(disc), q = b >= 0.0 ? -(b + sq) : -(b - sq), roots[2];
+	int nr = 0;
+	if (q != 0.0) {
+		roots[nr++] = q / a;
+		if (disc > 0.0)
+			roots[nr++] = cc / q;
+	} else {
+		roots[nr++] = 0.0;
+	}
+	int nh = 0;
+	for (int k = 0; k < nr; k++) {
+		double s = roots[k];
+		if (!(s >= 0.0 && s <= 1.0))
+			continue;
+		dvec3 x = d3_add(S[0], d3_scale(D, s)), rel = d3_sub(x, C);
+		double ct = d3_dot(rel, T), st = d3_dot(rel, N);
+		if (!c->full && ct < 0.0)
+			continue;
+		double theta = trig_atan2(st, ct);
+		if (c->full && theta < 0.0)
+			theta += 2.0 * PI;
+		out[nh++] = (tri_circle_hit){d3_to_v3(x),
+					     (float)theta,
+					     (float)(su[0] + s * (su[1] - su[0])),
+					     (float)(sv[0] + s * (sv[1] - sv[0])),
+					     d3_to_v3(d3_normalize(ng)),
+					     0,
+					     0};
+	}
+	return nh;
+}
+
+/* tri_circle_exact against reference_exact on triangles about circle points, small and large, and
+ * about the centre, larger than the circle (crossing it twice), and on axis-aligned circles with vertices
+ * exactly on the plane (the segment then ends at a vertex, or the triangle touches the plane at one). */
+static void check_exact_reference(long count)
+{
+	rng g;
+	rng_seed(&g, 5, 6);
+	long with_hits = 0, on_plane = 0, two = 0, differ = 0;
+	for (long i = 0; i < count; i++) {
+		bool aligned = i % 4 == 3;
+		vec3 n = aligned ? v3(0.0f, 1.0f, 0.0f) : test_unit_vector(&g);
+		vec3 c = v3_scale(test_unit_vector(&g), 10.0f * rng_float(&g));
+		float r = powf(10.0f, 2.0f * rng_float(&g) - 1.0f);
+		tri_circle q = aligned ? (tri_circle){c, v3(1.0f, 0.0f, 0.0f), n, r, i % 8 == 3}
+				       : circle_at(c, n, 2 * PI * rng_float(&g), r, i % 2 == 0 || i % 8 == 1);
+		float th = 2.0f * (float)PI * rng_float(&g),
+		      size = r * powf(10.0f, 2.0f * rng_float(&g) - 1.5f);
+		vec3 on = v3_add(c, v3_scale(v3_add(v3_scale(q.t, cosf(th)), v3_scale(q.n, sinf(th))), r));
+		if (i % 4 == 1) /* about the centre and larger than the circle: chords, two hits */
+			on = c, size = r * (2.0f + 2.0f * rng_float(&g));
+		vec3 v[3];
+		for (int k = 0; k < 3; k++) {
+			v[k] = v3_add(
+			    on, v3_scale(test_unit_vector(&g), i % 4 == 1 ? size : size * rng_float(&g)));
+			/* On an axis-aligned circle's plane z = c.z, exactly: M = t x n is (0, 0, 1). */
+			if (aligned && rng_below(&g, 3) == 0)
+				v[k].z = c.z, on_plane++;
+		}
+		tri_circle_hit a[2], b[2];
+		memset(a, 0, sizeof a), memset(b, 0, sizeof b);
+		int na = tri_circle_exact(&q, v[0], v[1], v[2], a),
+		    nb = reference_exact(&q, v[0], v[1], v[2], b);
+		with_hits += nb > 0, two += nb == 2;
+		if ((na != nb || memcmp(a, b, sizeof a) != 0) && differ++ < 5)
+			CHECK(0, "triangle %ld: %d hits, the reference %d (theta %.9g / %.9g)", i, na, nb,
+			      a[0].theta, b[0].theta);
+	}
+	printf(
+	    "exact test against the reference: %ld triangles, %ld with hits, %ld with two, %ld vertices on "
+	    "the plane, %ld differ\n",
+	    count, with_hits, two, on_plane, differ);
+	CHECK(differ == 0, "%ld of %ld triangles differ from the reference", differ, count);
+	CHECK(with_hits > count / 5 && two > count / 100 && on_plane > count / 10,
+	      "too few cases: %ld with hits, %ld with two, %ld on the plane", with_hits, two, on_plane);
+}
+
 int main(void)
 {
 	test_simd_from_env();
+	check_exact_reference(test_count(200000));
 	check_pretest(test_count(200000));
 	check_plane(test_count(20000));
 	check_sphere(test_count(5000));
