@@ -294,6 +294,9 @@ static void print_check_summary(const char *path, const scene *sc, const world_s
 	print_check_shapes(ws);
 	if (ws->reused_shapes)
 		printf("  shapes copied from trace()'s worlds: %zu (tessellated once for both)\n", ws->reused_shapes);
+	if (ws->cached_shapes)
+		printf("  isosurfaces with a grid made before (the same function, container and step): %zu\n",
+		       ws->cached_shapes);
 	if (ws->csg_solids)
 		printf("  CSG: %zu solids, %zu nodes (unions of several objects in one operand included), %zu "
 		       "clipping objects (never traced: only their insides are asked)\n",
@@ -390,7 +393,7 @@ static int cmd_check(int argc, char **argv)
 		scene_dump(sc, stdout);
 	else if (st == LANG_OK) {
 		world_options wo = {.width = CHECK_WIDTH, .height = CHECK_HEIGHT, .max_memory = max_memory,
-				    .geometry_only = true, .reuse = tracer};
+				    .geometry_only = true, .reuse = tracer, .shape_cache = world_tracer_shapes(tracer)};
 		world *w = world_build(sc, &wo, &d);
 		if (w) {
 			world_stats ws;
@@ -804,7 +807,7 @@ static int render_scene_of(const render_cli *o, render_state *s)
 	if (o->sss && !sss_method_from_name(o->sss, &sss))
 		assert(!"--sss was checked by its option parser");
 	world_options wo = {.width = o->width, .height = o->height, .max_memory = o->max_memory, .sss_method = sss,
-			    .reuse = s->tracer};
+			    .reuse = s->tracer, .shape_cache = world_tracer_shapes(s->tracer)};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
 	if (!(s->w = world_build(s->sc, &wo, &s->d))) {

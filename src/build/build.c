@@ -5,6 +5,7 @@
 #include "build/assets.h"
 #include "base/mem.h"
 #include "geom/prim.h"
+#include "geom/shape.h"
 #include "geom/subdiv.h"
 
 #include <string.h>
@@ -127,7 +128,13 @@ world *world_build(const scene *sc, const world_options *opt, diag *d)
 		diag_error(d, diag_noloc(), "out of memory");
 		return NULL;
 	}
-	if (!build_world(w, sc, opt, d)) {
+	world_options o = *opt;
+	shape_cache *own = NULL;
+	if (!o.shape_cache)
+		o.shape_cache = own = shape_cache_new(WORLD_SHAPE_CACHE_BYTES); /* NULL: none, made anew */
+	bool ok = build_world(w, sc, &o, d);
+	shape_cache_free(own);
+	if (!ok) {
 		mem_free(w);
 		return NULL;
 	}

@@ -37,7 +37,14 @@ typedef struct world_options {
 	 * them tessellated at the accuracy this build asks of it is copied from there, not made again
 	 * (world_tracer_mesh): the surface rendered is the one traced, bit for bit. */
 	const struct world_tracer *reuse;
+	/* isosurface grids made by other builds, looked up and kept (geom/shape.h shape_cache; NULL:
+	 * the build keeps its own while it runs, WORLD_SHAPE_CACHE_BYTES at most): the same
+	 * isosurface at the same grid step is made once, bit for bit the same mesh. */
+	struct shape_cache *shape_cache;
 } world_options;
+
+/* The most bytes of isosurface grids a build keeps for its own isosurfaces (world_options). */
+#define WORLD_SHAPE_CACHE_BYTES ((size_t)256 << 20)
 
 /* One tessellated shape of POV-Ray's (cylinder, torus, lathe, blob, ...) for `circe check`: its
  * keyword, place, triangles, the distance from its surface the mesh keeps to (0: exact, a polygon
@@ -66,6 +73,7 @@ typedef struct world_stats {
 	size_t csg_solids;      /* CSG solids (their roots) */
 	size_t csg_clips;       /* clipped_by objects (never traced) */
 	size_t reused_shapes;   /* shapes copied from trace()'s worlds (world_options.reuse) */
+	size_t cached_shapes;   /* isosurfaces with a grid taken from the shape cache (world_options.shape_cache) */
 } world_stats;
 
 
@@ -115,6 +123,9 @@ int world_trace(world_tracer *t, const scene *parent, const scene_object *objs, 
  * free t after the render), thread-safe. False after reporting at loc. */
 bool world_inside_fn(world_tracer *t, const scene *parent, const scene_object *objs, size_t n, const void *key,
 		     scene_fn *out, diag *d, diag_loc loc);
+/* The cache of isosurface grids t's worlds keep (WORLD_SHAPE_CACHE_BYTES at most), for the
+ * render's world_options.shape_cache; valid while t lives; NULL for a NULL t. */
+struct shape_cache *world_tracer_shapes(const world_tracer *t);
 /* How many worlds t has built (each object once while it stays kept). */
 size_t world_tracer_builds(const world_tracer *t);
 /* The mesh of POV-Ray shape `shape` (a geom/shape.h shape_desc) tessellated at accuracy tol and

@@ -83,7 +83,8 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 	subd_camera view = scene_view(sc, opt);
 	double tol;
 	uint32_t level = shape_level(sc, g, &view, centre, radius, &tol);
-	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level)};
+	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level), .cache = opt->shape_cache};
+	size_t hits = shape_cache_hits(opt->shape_cache);
 	world_geom *wg = &w->geoms[g->id];
 	mesh *m = &wg->m;
 	/* The same shape at the same accuracy in a trace()'s world: the same mesh, copied. */
@@ -91,6 +92,8 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 		w->stats.reused_shapes++;
 	else if (!shape_tessellate(s, &acc, m, &tol, d, g->loc))
 		return false;
+	else if (shape_cache_hits(opt->shape_cache) > hits)
+		w->stats.cached_shapes++;
 	wg->shape = s, wg->shape_tol = acc.tol, wg->shape_segments = acc.segments, wg->shape_err = tol;
 	if (!blob_tri_parts(wg, s, d, g->loc))
 		return false;

@@ -7,6 +7,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
+#include "geom/shape.h"
 
 #include <math.h>
 #include <string.h>
@@ -23,6 +24,7 @@ struct world_tracer {
 	tracer_slot slot[WORLD_TRACER_SLOTS];
 	unsigned next; /* the slot the next new object takes (round robin) */
 	size_t builds; /* worlds built, for tests */
+	shape_cache *shapes; /* the isosurface grids of its worlds (opt.shape_cache) */
 	/* The worlds of object patterns and inside(): kept while the tracer lives (the scene's
 	 * patterns call them during the render), one per key. */
 	tracer_slot *pinned;
@@ -34,7 +36,13 @@ world_tracer *world_tracer_new(size_t max_memory)
 	world_tracer *t = mem_calloc(1, sizeof *t);
 	if (!t)
 		return NULL;
-	t->opt = (world_options){.width = WORLD_TRACE_WIDTH, .height = WORLD_TRACE_HEIGHT, .max_memory = max_memory};
+	t->shapes = shape_cache_new(WORLD_SHAPE_CACHE_BYTES);
+	if (!t->shapes) {
+		mem_free(t);
+		return NULL;
+	}
+	t->opt = (world_options){.width = WORLD_TRACE_WIDTH, .height = WORLD_TRACE_HEIGHT, .max_memory = max_memory,
+				 .shape_cache = t->shapes};
 	return t;
 }
 
@@ -56,10 +64,13 @@ void world_tracer_free(world_tracer *t)
 	for (size_t i = 0; i < t->n_pinned; i++)
 		slot_free(&t->pinned[i]);
 	mem_free(t->pinned);
+	shape_cache_free(t->shapes);
 	mem_free(t);
 }
 
 size_t world_tracer_builds(const world_tracer *t) { return t ? t->builds : 0; }
+
+shape_cache *world_tracer_shapes(const world_tracer *t) { return t ? t->shapes : NULL; }
 
 /* The geom of w that tessellated shape at (tol, segments), or NULL. */
 static const world_geom *made_in(const world *w, const void *shape, double tol, uint32_t segments)

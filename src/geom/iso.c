@@ -68,11 +68,12 @@ static double container(const shape_desc *s, dvec3 p, dvec3 *g)
 	return best;
 }
 
-/* threshold - f at p and its gradient by forward differences (step 1e-3 of a cell: first order is
- * plenty for normals and distances, in four calls of the function where central ones took seven). */
-static double iso_eval_fn(iso_ctx *c, dvec3 p, dvec3 *g)
+/* The gradient of threshold - f at p, where it is fv, by forward differences (step 1e-3 of a cell:
+ * first order is plenty for normals and distances, in three more calls of the function where
+ * central ones took six). */
+static void iso_grad(iso_ctx *c, dvec3 p, double fv, dvec3 *g)
 {
-	double fv = iso_f(c, p), e = c->eps, d[3];
+	double e = c->eps, d[3];
 	for (int a = 0; a < 3; a++) {
 		dvec3 u = d3(a == 0 ? e : 0, a == 1 ? e : 0, a == 2 ? e : 0);
 		d[a] = (iso_f(c, d3_add(p, u)) - fv) / e;
@@ -80,6 +81,13 @@ static double iso_eval_fn(iso_ctx *c, dvec3 p, dvec3 *g)
 	*g = d3(d[0], d[1], d[2]);
 	if (!isfinite(d3_length(*g)))
 		*g = d3(0, 0, 0);
+}
+
+/* threshold - f at p and its gradient (iso_grad). */
+static double iso_eval_fn(iso_ctx *c, dvec3 p, dvec3 *g)
+{
+	double fv = iso_f(c, p);
+	iso_grad(c, p, fv, g);
 	return fv;
 }
 
@@ -93,10 +101,120 @@ static double iso_eval(const void *ctx, dvec3 p, dvec3 *g)
 	if (cv < fv)
 		return cv;
 	if (g) {
-		iso_eval_fn(c, p, g);
+		iso_grad(c, p, fv, g); /* f at p is a pure function's value: not called again */
 		c->max_grad = fmax(c->max_grad, d3_length(*g));
 	}
 	return fv;
+}
+
+/* ---- the cache of grids (shape.h's shape_cache) ---- */
+
+typedef struct iso_pass {
+	shape_desc s; /* a copy: the caller's may be gone; its fn_ctx lives as long as the cache */
+	double h;
+	shape_builder b; /* the pass's mesh (after drop_cut); uv unused */
+	double got, max_grad;
+} iso_pass;
+
+struct shape_cache {
+	iso_pass *e;
+	size_t n, cap;
+	size_t bytes, max_bytes;
+	size_t hits;
+};
+
+shape_cache *shape_cache_new(size_t max_bytes)
+{
+	shape_cache *c = mem_calloc(1, sizeof *c);
+	if (c)
+		c->max_bytes = max_bytes;
+	return c;
+}
+
+void shape_cache_free(shape_cache *c)
+{
+	if (!c)
+		return;
+	for (size_t i = 0; i < c->n; i++)
+		mem_free(c->e[i].b.pos), mem_free(c->e[i].b.nrm), mem_free(c->e[i].b.idx);
+	mem_free(c->e);
+	mem_free(c);
+}
+
+size_t shape_cache_hits(const shape_cache *c) { return c ? c->hits : 0; }
+size_t shape_cache_kept(const shape_cache *c) { return c ? c->n : 0; }
+
+static bool same_bits(const void *a, const void *b, size_t n) { return memcmp(a, b, n) == 0; }
+
+/* Whether a and b are one isosurface for the polygoniser: everything a pass reads (the function,
+ * threshold, container, open, max_gradient, region), doubles compared bit for bit. */
+static bool iso_same(const shape_desc *a, const shape_desc *b)
+{
+	if (a->fn != b->fn || a->fn_same != b->fn_same || !a->fn_same)
+		return false;
+	if (a->fn_ctx != b->fn_ctx && !a->fn_same(a->fn_ctx, b->fn_ctx))
+		return false;
+	return same_bits(&a->threshold, &b->threshold, sizeof a->threshold) && a->contained_sphere == b->contained_sphere &&
+	       same_bits(&a->box_lo, &b->box_lo, sizeof a->box_lo) && same_bits(&a->box_hi, &b->box_hi, sizeof a->box_hi) &&
+	       same_bits(&a->sphere_r, &b->sphere_r, sizeof a->sphere_r) && a->open == b->open &&
+	       same_bits(&a->max_gradient, &b->max_gradient, sizeof a->max_gradient) && a->has_region == b->has_region &&
+	       (!a->has_region || (same_bits(&a->region_lo, &b->region_lo, sizeof a->region_lo) &&
+				   same_bits(&a->region_hi, &b->region_hi, sizeof a->region_hi)));
+}
+
+static bool copy_builder(shape_builder *to, const shape_builder *from)
+{
+	sb_init(to);
+	uint32_t nv = from->nv ? from->nv : 1, nt = from->nt ? from->nt : 1;
+	to->pos = mem_alloc(nv, sizeof *to->pos), to->nrm = mem_alloc(nv, sizeof *to->nrm);
+	to->uv = mem_calloc(nv, sizeof *to->uv), to->idx = mem_alloc(3 * (size_t)nt, sizeof *to->idx);
+	if (!to->pos || !to->nrm || !to->uv || !to->idx) {
+		sb_free(to);
+		return false;
+	}
+	memcpy(to->pos, from->pos, from->nv * sizeof *to->pos);
+	memcpy(to->nrm, from->nrm, from->nv * sizeof *to->nrm);
+	memcpy(to->idx, from->idx, 3 * (size_t)from->nt * sizeof *to->idx);
+	to->nv = to->cap_v = from->nv, to->nt = to->cap_t = from->nt;
+	return true;
+}
+
+/* The pass of s at step h from the cache into b (initialised here), its distance and largest
+ * gradient; false when it is not there (or memory runs out: then it is made again). */
+static bool cache_take(shape_cache *c, const shape_desc *s, double h, shape_builder *b, double *got, double *max_grad)
+{
+	for (size_t i = 0; c && i < c->n; i++) {
+		const iso_pass *e = &c->e[i];
+		if (!same_bits(&e->h, &h, sizeof h) || !iso_same(&e->s, s))
+			continue;
+		if (!copy_builder(b, &e->b))
+			return false;
+		*got = e->got, *max_grad = e->max_grad;
+		c->hits++;
+		return true;
+	}
+	return false;
+}
+
+/* Keeps a copy of the pass (b, got, max_grad) of s at step h, when s may be cached and there is room. */
+static void cache_keep(shape_cache *c, const shape_desc *s, double h, const shape_builder *b, double got, double max_grad)
+{
+	size_t bytes = (size_t)b->nv * (sizeof *b->pos + sizeof *b->nrm) + 3 * (size_t)b->nt * sizeof *b->idx;
+	if (!c || !s->fn_same || b->failed || bytes > c->max_bytes - c->bytes)
+		return;
+	if (c->n == c->cap) {
+		size_t cap = c->cap ? 2 * c->cap : 8;
+		iso_pass *e = mem_realloc(c->e, cap, sizeof *e);
+		if (!e)
+			return;
+		c->e = e, c->cap = cap;
+	}
+	iso_pass *e = &c->e[c->n];
+	if (!copy_builder(&e->b, b))
+		return;
+	mem_free(e->b.uv), e->b.uv = NULL;
+	e->s = *s, e->h = h, e->got = got, e->max_grad = max_grad;
+	c->n++, c->bytes += bytes;
 }
 
 /* The container's bound. */
@@ -173,18 +291,25 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 	for (int pass = 0; pass < passes; pass++) {
 		h = shape_field_fit_step(ext, h, ISO_MAX_GRID_POINTS);
 		c.eps = 1e-3 * h;
-		if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc))
-			return false;
-		if (c.failed) {
-			sb_free(&b);
-			diag_error(d, loc, "the isosurface's function '%s' cannot be evaluated by circe at <%g, %g, %g>",
-				   s->fn_name ? s->fn_name : "function", c.failed_at.x, c.failed_at.y, c.failed_at.z);
-			return false;
+		/* the pass's own largest gradient (the cache keeps it), then the passes' together */
+		double grad_before = c.max_grad;
+		c.max_grad = 0;
+		if (!cache_take(acc->cache, s, h, &b, &got, &c.max_grad)) {
+			if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc))
+				return false;
+			if (c.failed) {
+				sb_free(&b);
+				diag_error(d, loc, "the isosurface's function '%s' cannot be evaluated by circe at <%g, %g, %g>",
+					   s->fn_name ? s->fn_name : "function", c.failed_at.x, c.failed_at.y, c.failed_at.z);
+				return false;
+			}
+			double rim = 0;
+			if (s->open && !b.failed)
+				rim = drop_cut(&c, &b, h);
+			got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
+			cache_keep(acc->cache, s, h, &b, got, c.max_grad);
 		}
-		double rim = 0;
-		if (s->open && !b.failed)
-			rim = drop_cut(&c, &b, h);
-		got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
+		c.max_grad = fmax(grad_before, c.max_grad);
 		if (b.failed || got <= 1.5 * acc->tol || pass == passes - 1)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);

@@ -76,6 +76,10 @@ typedef struct shape_desc {
 	 * marching's settings, kept for the dump (the mesh follows the accuracy it is given). */
 	bool (*fn)(const void *fn_ctx, const double xyz[3], double *out);
 	const void *fn_ctx;
+	/* Whether two fn_ctx compute the same function (NULL: only the same fn_ctx does): set by a
+	 * caller whose fn_ctx outlive every shape_cache (the language's compiled functions, in the
+	 * scene's arena); an isosurface without it is never cached. */
+	bool (*fn_same)(const void *a, const void *b);
 	const char *fn_name;
 	bool contained_sphere;
 	dvec3 box_lo, box_hi;
@@ -100,12 +104,31 @@ typedef struct shape_desc {
 	int algebra, jfunc, max_iteration;
 } shape_desc;
 
+/* What isosurfaces made, kept for the next with the same description (shape_cache_new). */
+typedef struct shape_cache shape_cache;
+
 /* tol: the largest distance of the mesh from the surface, in the shape's units; segments: around
- * a surface of revolution and a sphere_sweep's rings (>= 3). */
+ * a surface of revolution and a sphere_sweep's rings (>= 3); cache: where an isosurface's grids
+ * are looked up and kept (NULL: none). */
 typedef struct shape_accuracy {
 	double tol;
 	uint32_t segments;
+	shape_cache *cache;
 } shape_accuracy;
+
+/* A cache of isosurface grids (iso.c): what one grid step of an isosurface made (each of
+ * shape_isosurface's passes: the mesh, the distance it reached, the largest gradient met), kept
+ * for an isosurface of the same description (fn_same's function, threshold, container, open,
+ * max_gradient, region) at the same step, whatever tolerance asked for that step. POV-Ray's
+ * isocacti places 750 rocks of one function, each tessellated anew before. A hit gives the bytes
+ * a miss makes (a function is a pure one), so results do not depend on what was cached; passes
+ * of more than max_bytes in all are not kept. Not thread-safe: one builder at a time. NULL when
+ * memory runs out. */
+shape_cache *shape_cache_new(size_t max_bytes);
+void shape_cache_free(shape_cache *c);
+/* Passes taken from the cache, and passes made and kept (for tests and `circe check`). */
+size_t shape_cache_hits(const shape_cache *c);
+size_t shape_cache_kept(const shape_cache *c);
 
 const char *shape_kind_name(shape_kind k);
 /* A bound of the shape in its own space, from its description alone (text: estimated from the

@@ -115,25 +115,26 @@ static bool run_code(const lang_function *f, const double *args, double *out, co
 							   : r[o->comp];
 			break;
 		}
-		default: { /* the binary operators */
-			double a = st[sp - 2], b = st[sp - 1], r;
-			switch (o->op) {
-			case OP_ADD: r = a + b; break;
-			case OP_SUB: r = a - b; break;
-			case OP_MUL: r = a * b; break;
-			case OP_DIV: r = a / b; break;
-			case OP_LT: r = a < b; break;
-			case OP_LE: r = a <= b; break;
-			case OP_EQ: r = a == b; break;
-			case OP_NE: r = a != b; break;
-			case OP_GE: r = a >= b; break;
-			case OP_GT: r = a > b; break;
-			case OP_AND: r = a != 0.0 && b != 0.0; break;
-			default: r = a != 0.0 || b != 0.0; break; /* OP_OR */
-			}
-			sp--, st[sp - 1] = r;
-			break;
-		}
+		/* the binary operators, each its own case: one dispatch an instruction */
+#define BINARY(OP, EXPR)                                                                                               \
+	case OP: {                                                                                                     \
+		double a = st[sp - 2], b = st[sp - 1];                                                                 \
+		sp--, st[sp - 1] = (EXPR);                                                                             \
+		break;                                                                                                 \
+	}
+		BINARY(OP_ADD, a + b)
+		BINARY(OP_SUB, a - b)
+		BINARY(OP_MUL, a * b)
+		BINARY(OP_DIV, a / b)
+		BINARY(OP_LT, a < b)
+		BINARY(OP_LE, a <= b)
+		BINARY(OP_EQ, a == b)
+		BINARY(OP_NE, a != b)
+		BINARY(OP_GE, a >= b)
+		BINARY(OP_GT, a > b)
+		BINARY(OP_AND, a != 0.0 && b != 0.0)
+		BINARY(OP_OR, a != 0.0 || b != 0.0)
+#undef BINARY
 		}
 	}
 	out[0] = st[0];
@@ -168,6 +169,28 @@ bool lang_fn_eval(const lang_function *f, const double *args, double *out, const
 	}
 	*failed = f;
 	return false;
+}
+
+bool lang_fn_same(const lang_function *a, const lang_function *b)
+{
+	if (a == b)
+		return true;
+	if (!a || !b || a->kind != b->kind || a->n_params != b->n_params || a->n_out != b->n_out)
+		return false;
+	switch (a->kind) {
+	case LANG_FN_CODE:
+		if (a->n_code != b->n_code)
+			return false;
+		for (int i = 0; i < a->n_code; i++) {
+			const lang_fn_op *x = &a->code[i], *y = &b->code[i];
+			if (x->op != y->op || x->which != y->which || x->n != y->n || x->comp != y->comp ||
+			    memcmp(&x->k, &y->k, sizeof x->k) != 0 || !lang_fn_same(x->fn, y->fn))
+				return false;
+		}
+		return true;
+	case LANG_FN_INTERNAL: return a->internal == b->internal && a->impl == b->impl;
+	default: return false; /* a transform, spline or pattern: only itself (a == b above) */
+	}
 }
 
 /* ---- functions.inc's internal functions --------------------------------------------------- */

@@ -64,6 +64,13 @@ typedef struct lang_function {
  * that function. Results are IEEE doubles (a NaN is the caller's to refuse). */
 bool lang_fn_eval(const lang_function *f, const double *args, double *out, const lang_function **failed);
 
+/* Whether a and b compute the same values for all arguments: the same function, or compiled code
+ * of the same instructions (constants equal bit for bit) calling the same functions, or the same
+ * internal function. False may be said of two that are equal (a transform, a spline or a pattern
+ * compared by identity only), never true of two that differ: a cache of their results may rely on
+ * it. The call depth is bounded by LANG_FN_MAX_CALL_DEPTH. */
+bool lang_fn_same(const lang_function *a, const lang_function *b);
+
 /* A POV-Ray spline: entries sorted by key, each a vector of `terms` components (2..5). */
 typedef enum lang_spline_kind { LANG_SPLINE_LINEAR, LANG_SPLINE_QUADRATIC, LANG_SPLINE_CUBIC, LANG_SPLINE_NATURAL } lang_spline_kind;
 

@@ -513,6 +513,9 @@ static bool iso_call(const void *ctx, const double xyz[3], double *out)
 	return lang_fn_eval(ctx, xyz, out, &failed);
 }
 
+/* shape_desc.fn_same of the isosurface's function: compiled functions live in the scene's arena. */
+static bool iso_same_fn(const void *a, const void *b) { return lang_fn_same(a, b); }
+
 /* "function" "{" ... "}" or a declared function's name: a float function of x, y and z (of u, v
  * and a third for a parametric: u and v are x and y), evaluable by circe; *out the function. */
 static bool float_function(parser *p, const char *what, const lang_function **out)
@@ -546,7 +549,7 @@ static bool iso_function(parser *p, shape_desc *s, const char *what)
 {
 	const lang_function *f;
 	TRY(float_function(p, what, &f));
-	s->fn = iso_call, s->fn_ctx = f, s->fn_name = f->name;
+	s->fn = iso_call, s->fn_ctx = f, s->fn_name = f->name, s->fn_same = iso_same_fn;
 	return true;
 }
 

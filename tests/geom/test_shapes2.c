@@ -219,7 +219,7 @@ static void test_lathe(void)
 	/* a closed linear profile: a square ring section, a torus of square section (exact volume) */
 	double sq[] = {1, 0, 2, 0, 2, 1, 1, 1, 1, 0};
 	shape_desc s = lathe_desc(SHAPE_LINEAR, sq, 5);
-	shape_accuracy acc = {1e-3, 256};
+	shape_accuracy acc = {1e-3, 256, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "linear lathe");
@@ -232,7 +232,7 @@ static void test_lathe(void)
 	/* a cubic profile from the axis to the axis: closed by its poles, within tol of the curve */
 	double cp[] = {0, -0.5, 0, 0, 1, 0.5, 1.2, 1.5, 0.5, 2.5, 0, 3, 0, 3.5};
 	s = lathe_desc(SHAPE_CUBIC, cp, 7);
-	acc = (shape_accuracy){2e-3, 128};
+	acc = (shape_accuracy){2e-3, 128, NULL};
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "cubic lathe");
 	CHECK(open_edges(&m) == 0, "closed cubic lathe: %zu open edges", open_edges(&m));
 	CHECK(volume(&m) > 0, "outward: volume %g", volume(&m));
@@ -250,7 +250,7 @@ static void test_sor(void)
 {
 	double P[] = {0, 0, 1, 0, 1.2, 1, 0.6, 2, 0.8, 3, 0, 3.5};
 	shape_desc s = {.kind = SHAPE2_SOR, .pts = P, .n_pts = 6};
-	shape_accuracy acc = {1e-3, 128};
+	shape_accuracy acc = {1e-3, 128, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sor");
@@ -297,7 +297,7 @@ static void test_prism(void)
 	/* a square with a square hole (two sub-polygons, each closed by repeating its first point) */
 	double P[] = {-2, -2, 2, -2, 2, 2, -2, 2, -2, -2, -1, -1, 1, -1, 1, 1, -1, 1, -1, -1};
 	shape_desc s = {.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = P, .n_pts = 10, .h1 = 0, .h2 = 1};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "prism");
@@ -369,7 +369,7 @@ static void test_sphere_sweep(void)
 {
 	double S[] = {0, 0, 0, 0.5, 2, 0, 0, 0.3};
 	shape_desc s = {.kind = SHAPE2_SPHERE_SWEEP, .spline = SHAPE_LINEAR, .pts = S, .n_pts = 2};
-	shape_accuracy acc = {1e-3, 128};
+	shape_accuracy acc = {1e-3, 128, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sphere_sweep");
@@ -411,7 +411,7 @@ static void test_blob(void)
 	shape_desc s = {.kind = SHAPE2_BLOB, .comps = &one, .n_comps = 1, .threshold = 0.5};
 	CHECK_NEAR(shape_blob_field(&s, d3(sqrt(1 - sqrt(0.5)), 0, 0)), 0.5, 1e-12);
 	CHECK_NEAR(shape_blob_field(&s, d3(0, 0.5, 0)), 0.5625, 1e-12);
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "blob");
@@ -489,7 +489,7 @@ static void test_blob_crease(void)
 		{.a = d3(0, 1.5, -0.55), .radius = 0.07, .strength = 0.2},
 	};
 	shape_desc s = {.kind = SHAPE2_BLOB, .comps = candle, .n_comps = 6, .threshold = 0.5};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "candle at 1e-3");
@@ -531,7 +531,7 @@ static void test_text(void)
 		return;
 	}
 	shape_desc s = {.kind = SHAPE2_TEXT, .font = font, .text = "Bob 8%", .depth = 0.25};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "text");
@@ -564,7 +564,7 @@ static void test_bicubic(void)
 	double cp[48] = {-2, 0, -2, -1, 1, -2, 1, -1, -2, 2, 0, -2, -2, 1, -1, -1, 3, -1, 1, 2, -1, 2, 0, -1,
 			 -2, 0, 1,  -1, -1, 1, 1, 2, 1,   2, 1, 1,  -2, 0, 2,  -1, 1, 2, 1, 0, 2,  2, 0, 2};
 	shape_desc s = {.kind = SHAPE2_BICUBIC, .pts = cp, .n_pts = 16, .st = {0, 0, 1, 0, 1, 1, 0, 1}};
-	shape_accuracy acc = {2e-3, 64};
+	shape_accuracy acc = {2e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "bicubic_patch");
@@ -624,7 +624,7 @@ static void test_isosurface_octree(void)
 	double r = 0.6;
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere_counted, .fn_ctx = &r, .fn_name = "sphere",
 			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh a = {0}, b = {0};
 	double ta, tb;
 	sphere_calls = 0;
@@ -644,6 +644,68 @@ static void test_isosurface_octree(void)
 	mesh_free(&a), mesh_free(&b);
 }
 
+/* shape_desc.fn_same of fn_sphere's radii. */
+static bool same_radius(const void *a, const void *b) { return *(const double *)a == *(const double *)b; }
+
+static bool same_mesh(const mesh *a, const mesh *b)
+{
+	return a->num_vertices == b->num_vertices && a->num_triangles == b->num_triangles &&
+	       !memcmp(a->positions, b->positions, a->num_vertices * sizeof *a->positions) &&
+	       !memcmp(a->normals, b->normals, a->num_vertices * sizeof *a->normals) &&
+	       !memcmp(a->indices, b->indices, 3 * (size_t)a->num_triangles * sizeof *a->indices);
+}
+
+/* iso.c's shape_cache: a second isosurface of the same function (another fn_ctx that fn_same
+ * calls equal) at another tolerance that asks the same grid step is the cache's copy, made
+ * without a call of its function, bit for bit the mesh and distance made without the cache; one
+ * of another radius, or without fn_same, is made anew; a pass the cache's bytes cannot hold is
+ * not kept. */
+static void test_isosurface_cache(void)
+{
+	double r1 = 0.8, r2 = 0.8, r3 = 0.7;
+	shape_desc s1 = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere_counted, .fn_ctx = &r1, .fn_same = same_radius,
+			 .fn_name = "sphere", .box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
+	shape_desc s2 = s1, s3 = s1, s4 = s1;
+	s2.fn_ctx = &r2, s3.fn_ctx = &r3, s4.fn_same = NULL;
+	/* tolerances 0.01 and 0.02 both ask iso.c's coarsest step (an eighth of the container over 3) */
+	shape_accuracy a1 = {.tol = 0.01, .segments = 64}, a2 = {.tol = 0.02, .segments = 64};
+	mesh want = {0}, got = {0}, first = {0};
+	double tw, tg, tf;
+	CHECK(shape_tessellate(&s2, &a2, &want, &tw, &d, diag_noloc()), "uncached sphere");
+	shape_cache *c = shape_cache_new((size_t)1 << 26);
+	a1.cache = a2.cache = c;
+	CHECK(c && shape_tessellate(&s1, &a1, &first, &tf, &d, diag_noloc()), "the first sphere, kept");
+	CHECK(shape_cache_hits(c) == 0 && shape_cache_kept(c) == 1, "the first sphere: %zu hits, %zu kept",
+	      shape_cache_hits(c), shape_cache_kept(c));
+	sphere_calls = 0;
+	CHECK(shape_tessellate(&s2, &a2, &got, &tg, &d, diag_noloc()), "the second sphere, from the cache");
+	CHECK(shape_cache_hits(c) == 1 && sphere_calls == 0, "the second sphere: %zu hits, %lu calls of its function",
+	      shape_cache_hits(c), sphere_calls);
+	CHECK(same_mesh(&got, &want) && tg == tw, "the cached sphere is the uncached one (%u against %u triangles, "
+						  "distance %.17g against %.17g)",
+	      got.num_triangles, want.num_triangles, tg, tw);
+	CHECK(same_mesh(&first, &want) && tf == 0.01, "one grid for both tolerances (%u, %u triangles; distance %g)",
+	      first.num_triangles, want.num_triangles, tf);
+	mesh_free(&got);
+	CHECK(shape_tessellate(&s3, &a2, &got, &tg, &d, diag_noloc()), "another radius");
+	CHECK(shape_cache_hits(c) == 1 && shape_cache_kept(c) == 2 && got.num_vertices != want.num_vertices,
+	      "another radius made anew: %zu hits, %zu kept", shape_cache_hits(c), shape_cache_kept(c));
+	mesh_free(&got);
+	CHECK(shape_tessellate(&s4, &a2, &got, &tg, &d, diag_noloc()) && same_mesh(&got, &want),
+	      "without fn_same: the same mesh");
+	CHECK(shape_cache_hits(c) == 1 && shape_cache_kept(c) == 2, "without fn_same, not cached: %zu hits, %zu kept",
+	      shape_cache_hits(c), shape_cache_kept(c));
+	mesh_free(&got);
+	shape_cache_free(c);
+	shape_cache *tiny = shape_cache_new(1000);
+	a2.cache = tiny;
+	CHECK(tiny && shape_tessellate(&s1, &a2, &got, &tg, &d, diag_noloc()) && same_mesh(&got, &want),
+	      "a cache too small: the same mesh");
+	CHECK(shape_cache_kept(tiny) == 0, "a pass larger than the cache is not kept: %zu", shape_cache_kept(tiny));
+	shape_cache_free(tiny);
+	mesh_free(&got), mesh_free(&want), mesh_free(&first);
+}
+
 /* The distance of p to the boundary of (ball of radius r) cut by the box [-1, 1]^3. */
 static double cut_ball_dist(const void *ctx, dvec3 p)
 {
@@ -657,7 +719,7 @@ static void test_isosurface(void)
 	double r = 0.8;
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere, .fn_ctx = &r, .fn_name = "sphere",
 			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "isosurface sphere");
@@ -765,7 +827,7 @@ static void test_parametric(void)
 	tctx cx = {1, 0}, cy = {1, 1}, cz = {1, 2};
 	shape_desc s = {.kind = SHAPE2_PARAMETRIC, .fn = fn_torus3, .fn_ctxs = {&cx, &cy, &cz},
 			.uv_lo = {0, 0}, .uv_hi = {2 * M_PI, 2 * M_PI}, .box_lo = d3(-2, -2, -2), .box_hi = d3(2, 2, 2)};
-	shape_accuracy acc = {1e-3, 64};
+	shape_accuracy acc = {1e-3, 64, NULL};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "parametric torus");
@@ -806,7 +868,7 @@ static void test_julia(void)
 	for (int f = 0; f < 2; f++) {
 		shape_desc s = {.kind = SHAPE2_JULIA, .julia = {0, 0, 0, 0}, .slice = {0, 0, 0, 1}, .jfunc = f,
 				.max_iteration = 20, .precision = 20};
-		shape_accuracy acc = {2e-2, 64}; /* cells of 0.04: a quick test */
+		shape_accuracy acc = {2e-2, 64, NULL}; /* cells of 0.04: a quick test */
 		mesh m = {0};
 		double tol;
 		CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "julia");
@@ -824,7 +886,7 @@ static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
 	shape_desc s = lathe_desc(SHAPE_CUBIC, cp, 4);
-	shape_accuracy acc = {1e-9, 1u << 22};
+	shape_accuracy acc = {1e-9, 1u << 22, NULL};
 	mesh m = {0};
 	double tol;
 	diag quiet;
@@ -848,6 +910,7 @@ int main(void)
 	test_bicubic();
 	test_isosurface();
 	test_isosurface_octree();
+	test_isosurface_cache();
 	test_parametric();
 	test_julia();
 	test_limit();

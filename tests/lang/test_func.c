@@ -1,11 +1,14 @@
 /* test_func: user-defined functions compiled by the parser give what C computes for the same
  * expressions at many random arguments; functions.inc's internal functions match their closed
  * forms; splines reproduce what each kind must (lines, parabolas, natural splines' continuity
- * and free ends, Catmull-Rom's tangents). POV-Ray 3.7's own spline values are tests/good/splines. */
+ * and free ends, Catmull-Rom's tangents); lang_fn_same tells functions compiled apart from one
+ * text alike and others apart. POV-Ray 3.7's own spline values are tests/good/splines. */
 #include "base/mem.h"
 #include "check.h"
 #include "lang/func.h"
 #include "lang/lang.h"
+#include "geom/shape.h"
+#include "scene/scene.h"
 
 #include <errno.h>
 #include <math.h>
@@ -146,6 +149,50 @@ static void check_cases(const expr_case *cs, size_t n, const char *prelude)
 	diag_free(&d);
 }
 
+/* lang_fn_same: two isosurfaces' functions compiled apart from one text are the same; another
+ * constant, parameter or called function is not (the shape cache of geom/shape.h relies on it). */
+static void check_same(void)
+{
+	static const char text[] =
+		"#declare K = function { x*x + 1 }\n"
+		"#declare I = isosurface { function { x*x + y - 0.5 + K(x, y, z) } contained_by { box { -1, 1 } } }\n"
+		"#declare I = isosurface { function { x*x + y - 0.5 + K(x, y, z) } contained_by { box { -1, 1 } } }\n"
+		"#declare I = isosurface { function { x*x + y - 0.50000000000000011 + K(x, y, z) } contained_by { box { -1, 1 } } }\n"
+		"#declare I = isosurface { function { x*x + z - 0.5 + K(x, y, z) } contained_by { box { -1, 1 } } }\n"
+		"#declare K = function { x*x + 2 }\n"
+		"#declare I = isosurface { function { x*x + y - 0.5 + K(x, y, z) } contained_by { box { -1, 1 } } }\n";
+	scene_text = (char *)text, scene_len = sizeof text - 1;
+	diag d;
+	diag_init(&d, stderr);
+	lang_options opt = {.read = read_mem};
+	scene *sc = NULL;
+	lang_status st = lang_parse_file("f.pov", &opt, &d, &sc);
+	CHECK(st == LANG_OK, "the isosurfaces parse");
+	const lang_function *f[5] = {0};
+	int n = 0;
+	for (const scene_geom *g = sc ? sc->geoms : NULL; g; g = g->next)
+		if (g->kind == SHAPE_POV && n < 5)
+			f[n++] = g->u.pov->fn_ctx;
+	CHECK(n == 5, "five isosurfaces, %d", n);
+	if (n == 5) { /* the geoms' list runs from the last made to the first */
+		const lang_function *a = f[4], *b = f[3], *c = f[2], *e = f[1], *k = f[0];
+		CHECK(a != b && lang_fn_same(a, b) && lang_fn_same(b, a), "one text compiled twice is one function");
+		CHECK(lang_fn_same(a, a), "a function is itself");
+		CHECK(!lang_fn_same(a, c), "another constant (0.5 and the next double) is another function");
+		CHECK(!lang_fn_same(a, e), "another parameter is another function");
+		CHECK(!lang_fn_same(a, k), "another called function (K redeclared) is another function");
+		const double at[3] = {0.25, 0.5, -0.125};
+		double va = 0, vb = 1, vk = 0;
+		const lang_function *failed;
+		CHECK(lang_fn_eval(a, at, &va, &failed) && lang_fn_eval(b, at, &vb, &failed) && va == vb &&
+			      lang_fn_eval(k, at, &vk, &failed) && vk != va,
+		      "their values: %g %g, another K %g", va, vb, vk);
+	}
+	scene_free(sc);
+	diag_free(&d);
+	scene_text = NULL;
+}
+
 /* ---- splines ---- */
 
 static lang_spline make_spline(lang_spline_entry *e, size_t n, lang_spline_kind kind, double (*f)(double),
@@ -251,5 +298,6 @@ int main(void)
 		fprintf(stderr, "test_func: no functions.inc: its internal functions not checked\n");
 	}
 	check_splines();
+	check_same();
 	return check_done("test_func");
 }

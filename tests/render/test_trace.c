@@ -4,10 +4,12 @@
  * the exact point, and their normals, outward, within a small angle of the exact ones; rays
  * aimed clear of the solid miss, with both vectors zero); the cache (one world per object
  * however often it is traced); bad input (a zero direction) reported with a non-zero status; and
- * the language's trace() through lang_options (hit, normal into a declared name, a miss). */
+ * the language's trace() through lang_options (hit, normal into a declared name, a miss); trace()
+ * on an isosurface whose grid came from the shape cache, against the same trace without it. */
 #include "check.h"
 #include "base/rng.h"
 #include "build/build.h"
+#include "geom/shape.h"
 #include "lang/lang.h"
 
 #include <math.h>
@@ -423,6 +425,61 @@ static void test_language(void)
 	CHECK(strstr(buf, "s.pov:2:14: error: 'trace' is not supported by circe here") != NULL, "the message: %s", buf);
 }
 
+/* The hit of the n-th sphere the scene placed (its centre). */
+static dvec3 sphere_at(const scene *sc, size_t i)
+{
+	return i < scene_n_objects(sc) ? scene_object_at(sc, i)->geom->u.sphere.center : d3(NAN, NAN, NAN);
+}
+
+/* trace() on an isosurface whose grid came from the shape cache (geom/shape.h shape_cache: a
+ * second isosurface of the same function text, compiled apart) hits bit for bit where the same
+ * trace hits without the cache (a tracer that never saw the first); one of another constant is
+ * made anew. */
+static void test_iso_cache(void)
+{
+	const char *iso = "isosurface { function { sqrt(x*x + y*y + z*z) - 0.8 + %s * sin(7 * x) } "
+			  "contained_by { box { -1, 1 } } }\n";
+	char a[256], b[256], c[256], text[2048];
+	snprintf(a, sizeof a, iso, "0.1"), snprintf(b, sizeof b, iso, "0.1"), snprintf(c, sizeof c, iso, "0.11");
+	snprintf(text, sizeof text,
+		 "camera { location <0, 0, -4> look_at 0 }\n#declare A = %s#declare B = %s#declare C = %s"
+		 "#declare P = trace(A, <0.3, 0.2, -5>, z);\n#declare Q = trace(B, <0.3, 0.2, -5>, z);\n"
+		 "#declare R = trace(C, <0.3, 0.2, -5>, z);\nsphere { P, 0.1 }\nsphere { Q, 0.1 }\nsphere { R, 0.1 }\n",
+		 a, b, c);
+	world_tracer *t = world_tracer_new(0);
+	scene *sc = parse(text, t, NULL);
+	CHECK(sc && scene_n_objects(sc) == 3, "the cached trace scene parses");
+	size_t hits = shape_cache_hits(world_tracer_shapes(t));
+	CHECK(world_tracer_builds(t) == 3, "three objects, three worlds: %zu", world_tracer_builds(t));
+	CHECK(hits >= 1, "B's grid is A's, from the cache: %zu hits", hits);
+	/* B alone, by a tracer that never made A's grid */
+	snprintf(text, sizeof text,
+		 "camera { location <0, 0, -4> look_at 0 }\n#declare B = %s#declare C = %s"
+		 "#declare Q = trace(B, <0.3, 0.2, -5>, z);\n#declare R = trace(C, <0.3, 0.2, -5>, z);\n"
+		 "sphere { Q, 0.1 }\nsphere { R, 0.1 }\n",
+		 b, c);
+	world_tracer *u = world_tracer_new(0);
+	scene *sb = parse(text, u, NULL);
+	CHECK(sb && scene_n_objects(sb) == 2, "the uncached trace scene parses");
+	CHECK(shape_cache_hits(world_tracer_shapes(u)) == 0, "B and C share no grid: %zu hits",
+	      shape_cache_hits(world_tracer_shapes(u)));
+	if (sc && sb && scene_n_objects(sc) == 3 && scene_n_objects(sb) == 2) {
+		dvec3 p = sphere_at(sc, 0), q = sphere_at(sc, 1), r = sphere_at(sc, 2), q0 = sphere_at(sb, 0),
+		      r0 = sphere_at(sb, 1);
+		printf("iso cache: A hit <%.17g, %.17g, %.17g>, B <%.17g, %.17g, %.17g>, C <%.17g, %.17g, %.17g>\n", p.x,
+		       p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z);
+		CHECK(q.z > -1 && q.z < -0.5, "the trace hit the isosurface: z %g", q.z);
+		CHECK(!memcmp(&q, &q0, sizeof q), "B's hit from the cached grid <%.17g, %.17g, %.17g> is the uncached "
+						   "<%.17g, %.17g, %.17g>",
+		      q.x, q.y, q.z, q0.x, q0.y, q0.z);
+		CHECK(!memcmp(&p, &q, sizeof p), "A and B, one function, hit alike: %.17g against %.17g", p.z, q.z);
+		CHECK(!memcmp(&r, &r0, sizeof r) && r.z != q.z, "C, another constant, its own grid: %.17g (%.17g), B %.17g",
+		      r.z, r0.z, q.z);
+	}
+	scene_free(sc), scene_free(sb);
+	world_tracer_free(t), world_tracer_free(u);
+}
+
 int main(void)
 {
 	if (!mkdtemp(dir)) {
@@ -432,6 +489,7 @@ int main(void)
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
 		test_case(&cases[i]);
 	test_language();
+	test_iso_cache();
 	rmdir(dir);
 	return check_done("test_trace");
 }
