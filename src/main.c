@@ -1160,6 +1160,10 @@ int main(int argc, char **argv)
 	 * the same estimator; for the tests and bench/sss that compare the two in one binary). */
 	const char *skip = getenv("CIRCE_WALK_SKIP");
 	sss_walk_set_skip(!(skip && !strcmp(skip, "off")));
+	/* CIRCE_WALK_RUN=off: no cheap runs of classic steps inside a ball free of surface (src/sss/
+	 * README.md, "Runs inside a ball": the same expectation, other samples; for the comparison). */
+	const char *run = getenv("CIRCE_WALK_RUN");
+	sss_walk_set_run(!(run && !strcmp(run, "off")));
 	/* An output FIFO whose reader has gone is a write error (EPIPE) reported, not a silent death. */
 	signal(SIGPIPE, SIG_IGN);
 	/* Each subcommand sees argv from its own name on, so getopt_long works as for a program. */

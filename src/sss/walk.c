@@ -421,6 +421,91 @@ static bool walk_ball_holds(walk_ball *b, const sss_probe *pr, vec3 p, double ne
 	return false;
 }
 
+/* ---- runs inside a free ball (README.md, "Runs inside a ball") ------------------------------------ */
+
+/* A run starts at a collision at least this many mean free paths of the hero inside the known
+ * ball: nearer its surface it would end within a step or two, and its setup (six exponentials)
+ * would cost more than the steps it makes cheaper. */
+#ifndef WALK_RUN_MIN
+#define WALK_RUN_MIN 2.0
+#endif
+/* A run makes at most this many collisions before handing back to the walk's loop (Russian
+ * roulette and the step bound are the loop's): it bounds the exponents of its weights, about
+ * this many mean free paths' worth, far inside a double's range. */
+#define WALK_RUN_MAX 128
+
+static bool walk_run = true;
+void sss_walk_set_run(bool on) { walk_run = on; }
+
+/* A Henyey-Greenstein direction about w (53 bits for the cosine, 32 for the azimuth) or, when
+ * isotropic, Marsaglia's (1972): a point (a, b) uniform in the unit disc by rejection from the
+ * square (32-bit draws, 4/pi tries on average), s = a^2 + b^2, the direction
+ * (2a sqrt(1 - s), 2b sqrt(1 - s), 1 - 2s), uniform on the sphere; no trigonometry, no basis. */
+static vec3 walk_run_dir(double g_hg, vec3 w, rng *g)
+{
+	if (fabs(g_hg) >= WALK_G_ISOTROPIC) {
+		double u1 = rng_double(g), u2 = walk_u32(g);
+		return sss_walk_sample_hg(w, g_hg, u1, u2);
+	}
+	for (;;) {
+		float a = (float)(2.0 * walk_u32(g) - 1.0), b = (float)(2.0 * walk_u32(g) - 1.0), s = a * a + b * b;
+		if (s < 1.0f && s > 0.0f) {
+			float r = 2.0f * sqrtf(1.0f - s);
+			return v3(a * r, b * r, 1.0f - 2.0f * s);
+		}
+	}
+}
+
+/* The run's state handed back to the walk: the point and direction after its last collision, and
+ * the free path already drawn along that direction that would leave the ball. */
+typedef struct walk_run_end {
+	vec3 p, w;
+	double t;
+} walk_run_end;
+
+/* From a collision at p, free of surface within the ball b: the classic walk of the hero channel
+ * (directions from the phase function, free paths of the hero's extinction; no guide, no cast,
+ * no weights per step) until a free path would leave the ball less its margin, the step bound is
+ * reached or WALK_RUN_MAX collisions are made; then the channels' weights take the whole run at
+ * once: n collisions and a length L multiply f_k by (sigma_s,k / sigma_t,h)^n e^{-(sigma_t,k -
+ * sigma_t,h) L} and ratio_k by (sigma_t,k / sigma_t,h)^n e^{-(sigma_t,k - sigma_t,h) L}, exactly
+ * the products the loop's classic steps would make (walk_path_pdf with no guide: sigma e^{-sigma
+ * t} a collision), and an unbiased walk, the strategy being a function of the state (the mixture
+ * of the loop's one-sample MIS may depend on the point; inside the ball it is the classic one).
+ * log_s, log_t: ln(sigma_s,k / sigma_t,h), ln(sigma_t,k / sigma_t,h) (-inf for sigma_s,k = 0). */
+static walk_run_end walk_run_ball(const sss_walk_medium *m, const walk_ball *b, const double sigma_t[3], int hero,
+				  const double log_s[3], const double log_t[3], vec3 p, vec3 w, rng *g,
+				  sss_walk_result *res, int max_steps, double f[3], double ratio[3])
+{
+	double sh = sigma_t[hero], inv_sh = 1.0 / sh, len = 0.0;
+	/* the margin: the skin ahead of a surface (WALK_REACH of the coordinates) and a relative
+	 * 1e-6 of the radius for the float points' rounding, as walk_ball_holds */
+	double mag = walk_maxn(fabs(b->c.x), walk_maxn(fabs(b->c.y), fabs(b->c.z)));
+	double lim = b->r * (1.0 - 1e-6) - 2.0 * WALK_REACH * mag, lim2 = lim * lim;
+	int n = 0;
+	walk_run_end e;
+	for (;;) {
+		w = walk_run_dir(m->g, w, g);
+		double t = -log(1.0 - rng_double(g)) * inv_sh;
+		vec3 q = v3_madd(p, w, (float)t);
+		if (!(walk_dist2(q, b->c) < lim2) || n >= WALK_RUN_MAX || res->steps >= max_steps) {
+			e.p = p, e.w = w, e.t = t;
+			break;
+		}
+		p = q, len += t, n++;
+		res->steps++, res->skipped++;
+	}
+	res->runs++;
+	if (n == 0)
+		return e; /* no collision, no length: the weights stand */
+	for (int k = 0; k < 3; k++) {
+		double dl = -(sigma_t[k] - sh) * len;
+		f[k] = m->sigma_s[k] > 0.0 ? f[k] * sss_walk_exp(walk_minn(700.0, n * log_s[k] + dl)) : 0.0;
+		ratio[k] = sigma_t[k] > 0.0 ? ratio[k] * sss_walk_exp(walk_minn(700.0, n * log_t[k] + dl)) : 0.0;
+	}
+	return e;
+}
+
 /* One of the few functions over 100 lines left whole (issue 16): the walk is one loop whose
  * steps (the boundary hit, the free flight with its channel pdfs, the exit test, the reentry
  * after a step that lands outside, the scattering) read and write the same variables of its
@@ -455,13 +540,18 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	int stuck = 0;		  /* reentries in a row */
 	double last_scale = x_scale; /* the largest triangle scale met: the skin's scale ahead */
 	walk_ball ball = {.c = org, .r = 0.0, .wait = 0, .backoff = 1, .on = {x, x}};
+	double pending = -1.0;		  /* a free path a run drew, for the next flight; < 0: none */
+	double log_s[3], log_t[3];	  /* for runs: ln(sigma_s,k / sigma_t,h), ln(sigma_t,k / sigma_t,h) */
+	bool logs = false;
 	for (res.steps = 0; res.steps < max_steps;) {
 		/* the hero's free path (stretched when the direction was guided); the densities of
 		 * every channel and strategy for the path so far are kept relative to the hero's */
 		double st = sigma_t[hero] * stretch;
 		/* -ln(1 - u): u has 53 bits, so 1 - u is exact and log's argument is log1p's (libm's
-		 * log is the cheaper of the two: issue 21) */
-		double t = st > 0.0 ? -log(1.0 - rng_double(g)) / st : INFINITY;
+		 * log is the cheaper of the two: issue 21); a run inside a ball hands over the free
+		 * path it drew (classic: stretch 1) */
+		double t = pending >= 0.0 ? pending : st > 0.0 ? -log(1.0 - rng_double(g)) / st : INFINITY;
+		pending = -1.0;
 		/* The ray only needs to reach past the free path: a boundary beyond it is not met
 		 * (issue 21: a cast bounded by t visits the BVH's nodes along a segment a few mean
 		 * free paths long, not the whole chord to the far side; measured in
@@ -532,7 +622,33 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		}
 		if (collision) {
 			org = v3_madd(org, w, (float)t);
-			w = walk_scatter(m, &gd, org, w, g, &wd, &stretch);
+			double room = ball.r - WALK_RUN_MIN / sigma_t[hero];
+			if (walk_run && room > 0.0 && walk_dist2(org, ball.c) < room * room) {
+				if (!logs) {
+					for (int k = 0; k < 3; k++) {
+						log_s[k] = m->sigma_s[k] > 0.0 ? log(m->sigma_s[k] / sigma_t[hero]) : 0.0;
+						log_t[k] = sigma_t[k] > 0.0 ? log(sigma_t[k] / sigma_t[hero]) : 0.0;
+					}
+					logs = true;
+				}
+				walk_run_end e = walk_run_ball(m, &ball, sigma_t, hero, log_s, log_t, org, w, g, &res, max_steps,
+							       f, ratio);
+				org = e.p, w = e.w, pending = e.t;
+				wd.scattered = false, stretch = 1.0; /* the next free path is classic */
+				double top = 0.0;
+				for (int k = 0; k < 3; k++)
+					top = walk_maxn(top, walk_maxn(f[k], ratio[k]));
+				if (top > 1e100)
+					for (int k = 0; k < 3; k++)
+						f[k] *= 1e-100, ratio[k] *= 1e-100;
+				walk_beta(q, f, ratio, beta);
+				if (!(walk_max(beta[0], walk_max(beta[1], beta[2])) > 0.0)) {
+					res.status = SSS_WALK_ABSORBED;
+					return res;
+				}
+			} else {
+				w = walk_scatter(m, &gd, org, w, g, &wd, &stretch);
+			}
 		} else {
 			wd.scattered = false, stretch = 1.0; /* the next direction is the boundary's */
 			vec3 n_out = walk_side(h.ng, w); /* points out of the medium along w */

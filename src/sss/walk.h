@@ -58,6 +58,8 @@ typedef struct sss_walk_result {
 			  * surface: the walk steps back in (README.md); about 1 in 10^6 interactions */
 	int queries;	 /* nearest-surface queries asked of the probe (README.md, "Skipping casts") */
 	int skipped;	 /* interactions whose ray cast was skipped: inside a ball free of surface */
+	int runs;	 /* runs of classic steps inside a ball free of surface (README.md, "Runs inside a
+			  * ball"); their collisions count in steps and skipped */
 } sss_walk_result;
 
 /* The default bound on interactions per walk; reaching it is counted, never silent (the renderer
@@ -85,6 +87,11 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
  * must have `nearest`): the same walks either way, the casts a walk makes aside (README.md,
  * "Skipping casts"). For tests and benchmarks; set it before walks run (not thread-safe). */
 void sss_walk_set_skip(bool on);
+/* Whether walks make their steps inside a known ball free of surface as cheap runs of the classic
+ * walk (the default, true; README.md, "Runs inside a ball": the same estimator's expectation, a
+ * different sampling inside the ball). For tests and benchmarks; set it before walks run (not
+ * thread-safe). */
+void sss_walk_set_run(bool on);
 
 /* Dwivedi's diffusion length nu0 (in mean free paths) of single-scattering albedo alpha: the
  * root of 1 = alpha nu0/2 ln((nu0 + 1)/(nu0 - 1)) by d'Eon & Krivanek 2020's fit (eq. 67);
