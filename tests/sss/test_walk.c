@@ -51,7 +51,7 @@ static void object_free(object *o)
 typedef struct stat3 {
 	test_mean3 m;
 	long count[SSS_WALK_BAD_INPUT + 1];
-	long steps, reentries;
+	long steps, reentries, runs;
 } stat3;
 
 static void stat_add(stat3 *st, const sss_walk_result *r, bool counts)
@@ -59,6 +59,7 @@ static void stat_add(stat3 *st, const sss_walk_result *r, bool counts)
 	st->count[r->status]++;
 	st->steps += r->steps;
 	st->reentries += r->reentries;
+	st->runs += r->runs;
 	double w[3] = {counts ? r->weight.x : 0.0, counts ? r->weight.y : 0.0, counts ? r->weight.z : 0.0};
 	test_mean3_add(&st->m, w);
 }
@@ -212,6 +213,9 @@ static void check_closure(void)
 
 /* The albedo of a large box (200 mean free paths of the thinnest channel on each side) lit at
  * normal incidence in the middle of its top face: light leaving through the top. */
+/* The means of the last check_semi_infinite_at, per channel, and its runs a walk (check_runs). */
+static double last_mean[3], last_runs;
+
 static void check_semi_infinite_at(const char *name, const double albedo[3], const double sigma_t[3], double mu,
 				   bool classic, double *se_out, double *steps_out)
 {
@@ -241,11 +245,14 @@ static void check_semi_infinite_at(const char *name, const double albedo[3], con
 		CHECK(fabs(got - want) <= 3.0 * se, "%s ch %d: %g +- %g, want %g", name, c, got, se, want);
 		if (se_out)
 			se_out[c] = se;
+		last_mean[c] = got;
 	}
+	last_runs = (double)st.runs / st.m.n;
 	if (steps_out)
 		*steps_out = (double)st.steps / st.m.n;
-	printf("  %ld walks, %.1f interactions each, lost %ld, step limit %ld, re-entries %ld\n", st.m.n,
-	       (double)st.steps / st.m.n, st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT], st.reentries);
+	printf("  %ld walks, %.1f interactions each, %.2f runs inside a ball, lost %ld, step limit %ld, re-entries %ld\n",
+	       st.m.n, (double)st.steps / st.m.n, (double)st.runs / st.m.n, st.count[SSS_WALK_LOST],
+	       st.count[SSS_WALK_STEP_LIMIT], st.reentries);
 	CHECK(st.count[SSS_WALK_LOST] == 0 && st.count[SSS_WALK_STEP_LIMIT] == 0, "lost %ld, step limit %ld",
 	      st.count[SSS_WALK_LOST], st.count[SSS_WALK_STEP_LIMIT]);
 	object_free(&o);
@@ -254,6 +261,33 @@ static void check_semi_infinite_at(const char *name, const double albedo[3], con
 static void check_semi_infinite(const char *name, const double albedo[3], const double sigma_t[3])
 {
 	check_semi_infinite_at(name, albedo, sigma_t, 1.0, false, NULL, NULL);
+}
+
+/* Runs inside a ball (README.md, "Runs inside a ball"): deep in a free ball the walk's steps are a
+ * run of classic steps of the hero, the channels' weights taking the whole run at once (the
+ * hero's (sigma_s,k / sigma_t,h)^n and e^{-(sigma_t,k - sigma_t,h) L} per channel). A bright RGB
+ * medium of three extinctions and albedos, each channel against Chandrasekhar (3 SE, in
+ * check_semi_infinite_at) with the runs on and off: on, the walks make runs (one every two walks at least
+ * on average), off none; the two agree per channel within 3 SE of their difference. A run that
+ * forgot the channels' extinctions (e^{-(sigma_t,k - sigma_t,h) L}) fails both, by 30 SE and more
+ * (measured, and the slab checks of check_auto_slab with it). */
+static void check_runs(void)
+{
+	const double albedo[3] = {0.999, 0.99, 0.95}, sigma_t[3] = {1.0, 2.0, 0.5};
+	double se_on[3], se_off[3], on[3];
+	check_semi_infinite_at("rgb bright (runs)", albedo, sigma_t, 1.0, false, se_on, NULL);
+	double runs_on = last_runs;
+	memcpy(on, last_mean, sizeof on);
+	sss_walk_set_run(false);
+	check_semi_infinite_at("rgb bright (no runs)", albedo, sigma_t, 1.0, false, se_off, NULL);
+	sss_walk_set_run(true);
+	CHECK(runs_on >= 0.5 && last_runs == 0.0, "runs a walk: %g on, %g off", runs_on, last_runs);
+	for (int c = 0; c < 3; c++) {
+		double se = sqrt(se_on[c] * se_on[c] + se_off[c] * se_off[c]);
+		printf("runs ch %d: on %.5f, off %.5f (%+.2f SE); variance on / off %.2f\n", c, on[c], last_mean[c],
+		       (on[c] - last_mean[c]) / se, se_on[c] * se_on[c] / (se_off[c] * se_off[c]));
+		CHECK(fabs(on[c] - last_mean[c]) <= 3.0 * se, "ch %d: runs %g, none %g, SE %g", c, on[c], last_mean[c], se);
+	}
 }
 
 /* Guided and classic walks against Chandrasekhar at high albedos and oblique incidence; the
@@ -554,12 +588,14 @@ static void check_skip(const char *name, object *o, vec3 entry, vec3 ng)
 		rng_seed(&r0, 77, (uint64_t)i), rng_seed(&r1, 77, (uint64_t)i), rng_seed(&r2, 77, (uint64_t)i);
 		rng_seed(&r3, 77, (uint64_t)i);
 		vec3 w = v3_normalize(v3_add(v3_neg(ng), v3_scale(test_unit_vector_of(i), 0.5f)));
+		sss_walk_set_run(false); /* a run samples its steps otherwise: the same walks, bit for bit, without */
 		sss_walk_result a = sss_walk(&m, &o->pr, entry, ng, 0.0f, w, &r0, SSS_WALK_MAX_STEPS);
 		sss_walk_result b = sss_walk(&m, &plain, entry, ng, 0.0f, w, &r1, SSS_WALK_MAX_STEPS);
 		sss_walk_result c = sss_walk(&m, &liar, entry, ng, 0.0f, w, &r2, SSS_WALK_MAX_STEPS);
 		sss_walk_set_skip(false);
 		sss_walk_result d = sss_walk(&m, &o->pr, entry, ng, 0.0f, w, &r3, SSS_WALK_MAX_STEPS);
 		sss_walk_set_skip(true);
+		sss_walk_set_run(true);
 		differ += !same_walk(&a, &b) || !same_walk(&d, &b);
 		lied += !same_walk(&c, &b);
 		steps += a.steps, skipped += a.skipped, queries += a.queries, off_queries += d.queries + b.queries;
@@ -587,6 +623,7 @@ int main(void)
 	check_semi_infinite("rgb", rgb_albedo, rgb_sigma);
 	check_dwivedi_nu();
 	check_guided_vs_classic();
+	check_runs();
 	check_thin_slab();
 	check_auto_slab();
 
