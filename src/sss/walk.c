@@ -456,6 +456,17 @@ static vec3 walk_run_dir(double g_hg, vec3 w, rng *g)
 	}
 }
 
+/* The radius about the ball's centre within which a run's collisions stay (0: none): the ball
+ * less the skin ahead of a surface (WALK_REACH of the larger of the coordinates' magnitude and
+ * the largest triangle's scale met, whose rounding the nearest distance carries, as the skipped
+ * casts' test) and a relative 1e-6 of the radius for the float points' rounding. Every point of
+ * a segment between two points within it is within it (the ball is convex). */
+static double walk_run_limit(const walk_ball *b, double last_scale)
+{
+	double mag = walk_maxn(last_scale, walk_maxn(fabs(b->c.x), walk_maxn(fabs(b->c.y), fabs(b->c.z))));
+	return walk_maxn(0.0, b->r * (1.0 - 1e-6) - 2.0 * WALK_REACH * mag);
+}
+
 /* The run's state handed back to the walk: the point and direction after its last collision, and
  * the free path already drawn along that direction that would leave the ball. */
 typedef struct walk_run_end {
@@ -465,23 +476,21 @@ typedef struct walk_run_end {
 
 /* From a collision at p, free of surface within the ball b: the classic walk of the hero channel
  * (directions from the phase function, free paths of the hero's extinction; no guide, no cast,
- * no weights per step) until a free path would leave the ball less its margin, the step bound is
+ * no weights per step) until a free path would end beyond lim (walk_run_limit; p is within it),
+ * the step bound is
  * reached or WALK_RUN_MAX collisions are made; then the channels' weights take the whole run at
  * once: n collisions and a length L multiply f_k by (sigma_s,k / sigma_t,h)^n e^{-(sigma_t,k -
  * sigma_t,h) L} and ratio_k by (sigma_t,k / sigma_t,h)^n e^{-(sigma_t,k - sigma_t,h) L}, exactly
  * the products the loop's classic steps would make (walk_path_pdf with no guide: sigma e^{-sigma
  * t} a collision), and an unbiased walk, the strategy being a function of the state (the mixture
  * of the loop's one-sample MIS may depend on the point; inside the ball it is the classic one).
- * log_s, log_t: ln(sigma_s,k / sigma_t,h), ln(sigma_t,k / sigma_t,h) (-inf for sigma_s,k = 0). */
-static walk_run_end walk_run_ball(const sss_walk_medium *m, const walk_ball *b, const double sigma_t[3], int hero,
-				  const double log_s[3], const double log_t[3], vec3 p, vec3 w, rng *g,
+ * log_s, log_t: ln(sigma_s,k / sigma_t,h), ln(sigma_t,k / sigma_t,h) (unused where sigma_s,k
+ * or sigma_t,k is 0: that channel's f or ratio becomes 0). */
+static walk_run_end walk_run_ball(const sss_walk_medium *m, const walk_ball *b, double lim, const double sigma_t[3],
+				  int hero, const double log_s[3], const double log_t[3], vec3 p, vec3 w, rng *g,
 				  sss_walk_result *res, int max_steps, double f[3], double ratio[3])
 {
-	double sh = sigma_t[hero], inv_sh = 1.0 / sh, len = 0.0;
-	/* the margin: the skin ahead of a surface (WALK_REACH of the coordinates) and a relative
-	 * 1e-6 of the radius for the float points' rounding, as walk_ball_holds */
-	double mag = walk_maxn(fabs(b->c.x), walk_maxn(fabs(b->c.y), fabs(b->c.z)));
-	double lim = b->r * (1.0 - 1e-6) - 2.0 * WALK_REACH * mag, lim2 = lim * lim;
+	double sh = sigma_t[hero], inv_sh = 1.0 / sh, len = 0.0, lim2 = lim * lim;
 	int n = 0;
 	walk_run_end e;
 	for (;;) {
@@ -622,7 +631,9 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		}
 		if (collision) {
 			org = v3_madd(org, w, (float)t);
-			double room = ball.r - WALK_RUN_MIN / sigma_t[hero];
+			/* a run's start lies within its limit, WALK_RUN_MIN mean free paths inside the ball */
+			double lim = ball.r > 0.0 ? walk_run_limit(&ball, last_scale) : 0.0;
+			double room = walk_minn(lim, ball.r - WALK_RUN_MIN / sigma_t[hero]);
 			if (walk_run && room > 0.0 && walk_dist2(org, ball.c) < room * room) {
 				if (!logs) {
 					for (int k = 0; k < 3; k++) {
@@ -631,8 +642,8 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 					}
 					logs = true;
 				}
-				walk_run_end e = walk_run_ball(m, &ball, sigma_t, hero, log_s, log_t, org, w, g, &res, max_steps,
-							       f, ratio);
+				walk_run_end e = walk_run_ball(m, &ball, lim, sigma_t, hero, log_s, log_t, org, w, g, &res,
+							       max_steps, f, ratio);
 				org = e.p, w = e.w, pending = e.t;
 				wd.scattered = false, stretch = 1.0; /* the next free path is classic */
 				double top = 0.0;
