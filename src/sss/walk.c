@@ -322,7 +322,7 @@ static double walk_path_pdf(const walk_guide *gd, const walk_dir *wd, double sig
 
 /* ---- skipping casts (README.md, "Skipping casts") ----------------------------------------------- */
 
-/* Below this many mean free paths of the hero channel a ball saves (about (r / mfp)^2 / 2 steps
+/* Below this many mean free paths (mfp_ball in sss_walk) a ball saves (about (r / mfp)^2 / 2 steps
  * of a diffusing walk) less than its query costs: the next query waits, twice as long each time
  * in a row, up to WALK_BALL_WAIT steps. */
 #ifndef WALK_BALL_MIN
@@ -373,7 +373,8 @@ static bool walk_skip = true;
 void sss_walk_set_skip(bool on) { walk_skip = on; }
 
 /* Whether the ball about p of radius `need` is free of surface: inside the ball known, or in a
- * new one asked of the probe at p when a query is due. mfp: the hero's mean free path. */
+ * new one asked of the probe at p when a query is due. mfp: the walk's length unit for balls,
+ * the mean free path of its channel of the highest albedo (mfp_ball in sss_walk). */
 static bool walk_ball_holds(walk_ball *b, const sss_probe *pr, vec3 p, double need, double mfp,
 			    sss_walk_result *res)
 {
@@ -423,7 +424,7 @@ static bool walk_ball_holds(walk_ball *b, const sss_probe *pr, vec3 p, double ne
 
 /* ---- runs inside a free ball (README.md, "Runs inside a ball") ------------------------------------ */
 
-/* A run starts at a collision at least this many mean free paths of the hero inside the known
+/* A run starts at a collision at least this many mean free paths (mfp_ball) inside the known
  * ball: nearer its surface it would end within a step or two, and its setup (six exponentials)
  * would cost more than the steps it makes cheaper. */
 #ifndef WALK_RUN_MIN
@@ -549,6 +550,18 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 	int stuck = 0;		  /* reentries in a row */
 	double last_scale = x_scale; /* the largest triangle scale met: the skin's scale ahead */
 	walk_ball ball = {.c = org, .r = 0.0, .wait = 0, .backoff = 1, .on = {x, x}};
+	/* The balls' and runs' length unit: the mean free path of the channel of the highest
+	 * single-scattering albedo, whichever the hero. A run changes the sampling, and spectral
+	 * MIS weighs each channel by the density its own walk would have given the path: every
+	 * choice of strategy must be a function of the path alone, the same for every hero, so the
+	 * queries (which make the balls) and the runs' start must not depend on the hero's
+	 * extinction (issue 21, sixth pass). */
+	double mfp_ball = 0.0, a_top = -1.0;
+	for (int c = 0; c < 3; c++) {
+		double a = sigma_t[c] > 0.0 ? m->sigma_s[c] / sigma_t[c] : -1.0;
+		if (a > a_top)
+			a_top = a, mfp_ball = 1.0 / sigma_t[c];
+	}
 	double pending = -1.0;		  /* a free path a run drew, for the next flight; < 0: none */
 	double log_s[3], log_t[3];	  /* for runs: ln(sigma_s,k / sigma_t,h), ln(sigma_t,k / sigma_t,h) */
 	bool logs = false;
@@ -580,7 +593,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 		/* Inside a ball known to be free of surface the bounded cast can only miss (README.md,
 		 * "Skipping casts"): its answer is known without it. The skin's margin again, and a
 		 * relative 1e-6, cover the cast's rounding and the float ray's. */
-		if (!bounded || !walk_ball_holds(&ball, pr, org, (double)reach * (1.0 + 1e-6) + skin, 1.0 / sigma_t[hero],
+		if (!bounded || !walk_ball_holds(&ball, pr, org, (double)reach * (1.0 + 1e-6) + skin, mfp_ball,
 						 &res)) {
 			bvh_ray ray = {org, w, 0.0f, reach};
 			hit = pr->closest(pr->ctx, &ray, &h);
@@ -633,7 +646,7 @@ sss_walk_result sss_walk(const sss_walk_medium *m, const sss_probe *pr, vec3 x, 
 			org = v3_madd(org, w, (float)t);
 			/* a run's start lies within its limit, WALK_RUN_MIN mean free paths inside the ball */
 			double lim = ball.r > 0.0 ? walk_run_limit(&ball, last_scale) : 0.0;
-			double room = walk_minn(lim, ball.r - WALK_RUN_MIN / sigma_t[hero]);
+			double room = walk_minn(lim, ball.r - WALK_RUN_MIN * mfp_ball);
 			if (walk_run && room > 0.0 && walk_dist2(org, ball.c) < room * room) {
 				if (!logs) {
 					for (int k = 0; k < 3; k++) {
