@@ -217,6 +217,25 @@ static void cache_keep(shape_cache *c, const shape_desc *s, double h, const shap
 	c->n++, c->bytes += bytes;
 }
 
+/* The rungs of the ladder of grid steps within an octave: 2^(k/8) / 2, k = 0 .. 7. */
+static const double ISO_RUNGS[8] = {0.5, 0.5 * 1.0905077326652577, 0.5 * 1.1892071150027210, 0.5 * 1.2968395546510096,
+				    0.5 * 1.4142135623730951, 0.5 * 1.5422108254079407, 0.5 * 1.6817928305074290,
+				    0.5 * 1.8340080864093424};
+
+/* A step h taken down to the ladder 2^(k/8), k an integer: at most 9 % finer than h (its
+ * triangles no farther from the surface), and the same step for isosurfaces of one function whose
+ * tolerances differ a little (isocacti's 750 rocks, each at its distance from the camera), so
+ * that they share one grid through the cache. Exact: frexp and ldexp only change the exponent. */
+static double ladder_step(double h)
+{
+	int e;
+	double m = frexp(h, &e); /* [0.5, 1) */
+	int k = 7;
+	while (k > 0 && ISO_RUNGS[k] > m)
+		k--;
+	return ldexp(ISO_RUNGS[k], e);
+}
+
 /* The container's bound. */
 static void iso_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 {
@@ -278,6 +297,8 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then again (once, or max_passes - 1
 	 * times) at the step the measured distance asks for, when it was missed and the grid allows it. */
 	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
+	if (h > 0 && isfinite(h))
+		h = ladder_step(h);
 	iso_ctx c = {.s = s, .eps = 0};
 	/* the workers' contexts (acc->threads), each written by its worker alone, merged into c */
 	int workers = acc->threads > 1 ? acc->threads : 1;
@@ -341,6 +362,7 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 		if (b.failed || got <= 1.5 * acc->tol || pass == passes - 1)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);
+		h2 = ladder_step(h2);
 		if (shape_field_fit_step(ext, h2, ISO_MAX_GRID_POINTS) >= h)
 			break; /* the grid cannot be finer */
 		sb_free(&b);
