@@ -105,7 +105,11 @@ typedef struct mt {
 	int workers;
 	grid *G;
 	shape_builder *b;
-	edge_map map;
+	/* the vertices of the edges from the points of planes k and k + 1 (the layer of cubes being
+	 * marched): plane[0] and plane[1], 7 edges a point (edge_vertex's ranks), UINT32_MAX where
+	 * none was made yet */
+	uint32_t *plane[2];
+	uint32_t k;
 	bool failed;
 	/* vertices v0 .. b->nv - 1 wait for their places: ends[2 (v - v0)], ends[2 (v - v0) + 1] the
 	 * grid points of their edge; pend the triangles waiting for them */
@@ -159,17 +163,10 @@ static uint32_t edge_vertex(mt *t, size_t a, size_t b)
 	uint64_t rank = 0;
 	while (rank < 7 && offs[rank] != off)
 		rank++;
-	uint64_t key = (uint64_t)a * 8 + rank;
-	if (2 * (t->map.n + 1) > t->map.cap && !map_grow(&t->map)) {
-		t->failed = true;
-		return 0;
-	}
-	size_t h = (size_t)(key * 0x9E3779B97F4A7C15ull) & (t->map.cap - 1);
-	while (t->map.key[h] != UINT64_MAX) {
-		if (t->map.key[h] == key)
-			return t->map.val[h];
-		h = (h + 1) & (t->map.cap - 1);
-	}
+	/* the lower point lies in plane k or k + 1 of the layer of cubes marched */
+	uint32_t *slot = &t->plane[a / sz - t->k][(a % sz) * 7 + rank];
+	if (*slot != UINT32_MAX)
+		return *slot;
 	/* placed later, with the others waiting (place_pending) */
 	size_t w = t->b->nv - t->v0;
 	if (2 * w + 2 > t->cap_ends) {
@@ -187,7 +184,7 @@ static uint32_t edge_vertex(mt *t, size_t a, size_t b)
 		return 0;
 	}
 	t->ends[2 * w] = a, t->ends[2 * w + 1] = b;
-	t->map.key[h] = key, t->map.val[h] = v, t->map.n++;
+	*slot = v;
 	return v;
 }
 
@@ -274,7 +271,16 @@ static void march(mt *t)
 {
 	static const int tets[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
 	const grid *G = t->G;
-	for (uint32_t k = 0; k + 1 < G->nz && !t->failed; k++)
+	size_t plane = (size_t)7 * G->nx * G->ny;
+	memset(t->plane[0], 0xff, plane * sizeof *t->plane[0]);
+	memset(t->plane[1], 0xff, plane * sizeof *t->plane[1]);
+	for (uint32_t k = 0; k + 1 < G->nz && !t->failed; k++) {
+		if (k > 0) { /* plane k + 1 of the last layer is this one's plane k */
+			uint32_t *p = t->plane[0];
+			t->plane[0] = t->plane[1], t->plane[1] = p;
+			memset(p, 0xff, plane * sizeof *p);
+		}
+		t->k = k;
 		for (uint32_t j = 0; j + 1 < G->ny; j++)
 			for (uint32_t i = 0; i + 1 < G->nx; i++) {
 				size_t c[8];
@@ -295,6 +301,7 @@ static void march(mt *t)
 				if (t->n_pend >= FIELD_PENDING)
 					place_pending(t);
 			}
+	}
 	place_pending(t);
 }
 
@@ -743,8 +750,13 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 	}
 	sb_init(b);
 	mt t = {.F = F, .Fw = Fw, .workers = workers, .G = &G, .b = b};
-	march(&t);
-	mem_free(G.f), mem_free(t.map.key), mem_free(t.map.val), mem_free(t.ends), mem_free(t.pend);
+	size_t plane = (size_t)7 * G.nx * G.ny;
+	t.plane[0] = mem_alloc(plane, sizeof *t.plane[0]), t.plane[1] = mem_alloc(plane, sizeof *t.plane[1]);
+	if (t.plane[0] && t.plane[1])
+		march(&t);
+	else
+		t.failed = true;
+	mem_free(G.f), mem_free(t.plane[0]), mem_free(t.plane[1]), mem_free(t.ends), mem_free(t.pend);
 	if (t.failed)
 		b->failed = true;
 	if (!b->failed)
