@@ -701,6 +701,30 @@ static bool fill_grid(const shape_field *F, const shape_field *Fw, int workers, 
 	return true;
 }
 
+typedef struct crossed_job {
+	const grid *G;
+	size_t *counts; /* each worker's */
+} crossed_job;
+
+/* The cubes of layers [begin, end) with points inside and outside, added to the worker's count. */
+static void count_crossed(void *ctx, size_t begin, size_t end, int worker)
+{
+	const crossed_job *J = ctx;
+	const grid *G = J->G;
+	size_t n = 0;
+	for (uint32_t k = (uint32_t)begin; k < end; k++)
+		for (uint32_t j = 0; j + 1 < G->ny; j++)
+			for (uint32_t i = 0; i + 1 < G->nx; i++) {
+				bool in = false, outp = false;
+				for (int q = 0; q < 8; q++) {
+					bool inside = G->f[gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1))] > 0;
+					in |= inside, outp |= !inside;
+				}
+				n += in && outp;
+			}
+	J->counts[worker] += n;
+}
+
 double shape_field_fit_step(dvec3 ext, double h, size_t max_points)
 {
 	while ((ext.x / h + 3) * (ext.y / h + 3) * (ext.z / h + 3) > (double)max_points)
@@ -730,17 +754,14 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 		return false;
 	}
 	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
+	size_t one = 0, *counts = workers > 1 ? mem_calloc((size_t)workers, sizeof *counts) : &one;
+	crossed_job C = {&G, counts ? counts : &one};
+	par_for(counts ? workers : 1, G.nz - 1, 1, count_crossed, &C);
 	size_t crossed = 0;
-	for (uint32_t k = 0; k + 1 < G.nz; k++)
-		for (uint32_t j = 0; j + 1 < G.ny; j++)
-			for (uint32_t i = 0; i + 1 < G.nx; i++) {
-				bool in = false, outp = false;
-				for (int q = 0; q < 8; q++) {
-					bool inside = G.f[gidx(&G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1))] > 0;
-					in |= inside, outp |= !inside;
-				}
-				crossed += in && outp;
-			}
+	for (int w = 0; w < (counts ? workers : 1); w++)
+		crossed += C.counts[w];
+	if (counts != &one)
+		mem_free(counts);
 	if (crossed * 6 > SHAPE_MAX_TRIANGLES) {
 		field_workers_free(F, Fw);
 		mem_free(G.f);
