@@ -110,6 +110,7 @@ typedef struct mt {
 	 * none was made yet */
 	uint32_t *plane[2];
 	uint32_t k;
+	const uint8_t *crossed; /* the cubes with points inside and outside (count_crossed) */
 	bool failed;
 	/* vertices v0 .. b->nv - 1 wait for their places: ends[2 (v - v0)], ends[2 (v - v0) + 1] the
 	 * grid points of their edge; pend the triangles waiting for them */
@@ -283,17 +284,11 @@ static void march(mt *t)
 		t->k = k;
 		for (uint32_t j = 0; j + 1 < G->ny; j++)
 			for (uint32_t i = 0; i + 1 < G->nx; i++) {
-				size_t c[8];
-				bool any_in = false, any_out = false;
-				for (int q = 0; q < 8; q++) {
-					c[q] = gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1));
-					if (G->f[c[q]] > 0)
-						any_in = true;
-					else
-						any_out = true;
-				}
-				if (!any_in || !any_out)
+				if (!t->crossed[gidx(G, i, j, k)])
 					continue;
+				size_t c[8];
+				for (int q = 0; q < 8; q++)
+					c[q] = gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1));
 				for (int q = 0; q < 6; q++) {
 					size_t v[4] = {c[tets[q][0]], c[tets[q][1]], c[tets[q][2]], c[tets[q][3]]};
 					tetra(t, v);
@@ -704,6 +699,7 @@ static bool fill_grid(const shape_field *F, const shape_field *Fw, int workers, 
 typedef struct crossed_job {
 	const grid *G;
 	size_t *counts; /* each worker's */
+	uint8_t *crossed; /* 1 for each crossed cube (indexed as its lowest point), for the march */
 } crossed_job;
 
 /* The cubes of layers [begin, end) with points inside and outside, added to the worker's count. */
@@ -721,6 +717,7 @@ static void count_crossed(void *ctx, size_t begin, size_t end, int worker)
 					in |= inside, outp |= !inside;
 				}
 				n += in && outp;
+				J->crossed[gidx(G, i, j, k)] = in && outp;
 			}
 	J->counts[worker] += n;
 }
@@ -755,7 +752,16 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 	}
 	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
 	size_t one = 0, *counts = workers > 1 ? mem_calloc((size_t)workers, sizeof *counts) : &one;
-	crossed_job C = {&G, counts ? counts : &one};
+	uint8_t *cubes = mem_alloc(np, 1);
+	if (!cubes) {
+		if (counts != &one)
+			mem_free(counts);
+		field_workers_free(F, Fw);
+		mem_free(G.f);
+		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
+		return false;
+	}
+	crossed_job C = {&G, counts ? counts : &one, cubes};
 	par_for(counts ? workers : 1, G.nz - 1, 1, count_crossed, &C);
 	size_t crossed = 0;
 	for (int w = 0; w < (counts ? workers : 1); w++)
@@ -763,6 +769,7 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 	if (counts != &one)
 		mem_free(counts);
 	if (crossed * 6 > SHAPE_MAX_TRIANGLES) {
+		mem_free(cubes);
 		field_workers_free(F, Fw);
 		mem_free(G.f);
 		diag_error(d, loc, "the %s would make about %zu triangles (the limit of one shape is %u)", what, crossed * 6,
@@ -770,14 +777,14 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 		return false;
 	}
 	sb_init(b);
-	mt t = {.F = F, .Fw = Fw, .workers = workers, .G = &G, .b = b};
+	mt t = {.F = F, .Fw = Fw, .workers = workers, .G = &G, .b = b, .crossed = cubes};
 	size_t plane = (size_t)7 * G.nx * G.ny;
 	t.plane[0] = mem_alloc(plane, sizeof *t.plane[0]), t.plane[1] = mem_alloc(plane, sizeof *t.plane[1]);
 	if (t.plane[0] && t.plane[1])
 		march(&t);
 	else
 		t.failed = true;
-	mem_free(G.f), mem_free(t.plane[0]), mem_free(t.plane[1]), mem_free(t.ends), mem_free(t.pend);
+	mem_free(G.f), mem_free(cubes), mem_free(t.plane[0]), mem_free(t.plane[1]), mem_free(t.ends), mem_free(t.pend);
 	if (t.failed)
 		b->failed = true;
 	if (!b->failed)
