@@ -3,7 +3,11 @@
  * its main diagonal, so neighbouring cubes agree and the surface is closed), each vertex shared by
  * the edge it lies on; the vertices then moved onto the zero set (Newton steps along the gradient,
  * at most half a cell, or kept on their edge and found there by regula falsi), normals -gradient.
- * The triangles are counted from the grid before any is made and refused past the limit. */
+ * The triangles are counted from the grid before any is made and refused past the limit. With
+ * workers (shape_field.workers) the grid's values, the vertices' places, the normals and the
+ * distance are computed on threads, each value by the point it belongs to alone; the topology
+ * (which edges have vertices, their numbers, the triangles) is made in order on the caller's, so
+ * the mesh is the same for any count. */
 #include "geom/shape.h"
 
 #include "base/mem.h"
