@@ -41,8 +41,9 @@ typedef struct world_options {
 	 * the build keeps its own while it runs, WORLD_SHAPE_CACHE_BYTES at most): the same
 	 * isosurface at the same grid step is made once, bit for bit the same mesh. */
 	struct shape_cache *shape_cache;
-	/* threads an isosurface is tessellated on (geom/shape.h shape_accuracy.threads; 0: every
-	 * core, base/par.h's par_default_workers): the same meshes for any count */
+	/* threads isosurfaces are tessellated on (geom/shape.h shape_accuracy.threads) and the
+	 * meshes' BVHs built on (0: every core, base/par.h's par_default_workers): the same meshes
+	 * and BVHs for any count */
 	int threads;
 } world_options;
 
