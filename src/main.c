@@ -44,7 +44,7 @@ static const char usage_text[] =
 	"                    [--aov albedo,normal,depth,variance,error,samples] [--tile I/N]\n"
 	"                    [--clock F] [--frame N] [--checkpoint S] [--max-memory SIZE] [-I DIR]\n"
 	"                    [--quiet]\n"
-	"       circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE] [--dump]\n"
+	"       circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE] [--threads N] [--dump]\n"
 	"       circe compare A.exr B.exr [--fail T --fail-percent P] [--diff D.exr]\n"
 	"                     [--channels R,G,B]\n"
 	"       circe merge -o FULL.exr TILE.exr...\n"
@@ -320,6 +320,7 @@ typedef struct check_cli {
 	long frame; /* -1: none (frame_number and its range are 0) */
 	bool dump;
 	size_t max_memory;
+	int threads; /* 0: every core */
 } check_cli;
 
 /* --clock of check: a number strtod reads whole, finite. */
@@ -345,6 +346,8 @@ static const cli_opt check_options[] = {
 	{"dump", 0, NULL, "print the parsed scene instead of its statistics", opt_flag, C(dump), 0, 0, NULL},
 	{"max-memory", 0, "SIZE", "memory limit such as 512M or 2G (default: the machine's memory)", opt_size,
 	 C(max_memory), 0, 0, "--max-memory needs a size such as 512M or 2G, not '%s'"},
+	{"threads", 0, "N", "threads isosurfaces are tessellated on (default: every core; the same meshes for any)",
+	 opt_int, C(threads), 1, 1024, "--threads needs a count from 1 to 1024, not '%s'"},
 	CLI_HELP,
 };
 #undef C
@@ -364,7 +367,7 @@ static bool inside_object(void *user, const scene *sc, const scene_object *objs,
 	return world_inside_fn(user, sc, objs, n, key, out, d, loc);
 }
 
-/* circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE]: parse and build, print statistics;
+/* circe check SCENE [-I DIR] [--clock F] [--frame N] [--max-memory SIZE] [--threads N]: parse and build, print statistics;
  * a scene whose render would need more than the memory limit fails. */
 static int cmd_check(int argc, char **argv)
 {
@@ -384,6 +387,7 @@ static int cmd_check(int argc, char **argv)
 	diag_init(&d, stderr);
 	scene *sc = NULL;
 	world_tracer *tracer = world_tracer_new(max_memory); /* the object patterns' too: freed last */
+	world_tracer_set_threads(tracer, o.threads);
 	lo.trace = trace_object, lo.inside = inside_object, lo.trace_user = tracer;
 	lang_status st = tracer ? lang_parse_file(argv[optind], &lo, &d, &sc) : LANG_NO_MEMORY;
 	int rc = st == LANG_OK ? EXIT_OK : st == LANG_SCENE_ERROR ? EXIT_SCENE : EXIT_RUNTIME;
@@ -393,7 +397,8 @@ static int cmd_check(int argc, char **argv)
 		scene_dump(sc, stdout);
 	else if (st == LANG_OK) {
 		world_options wo = {.width = CHECK_WIDTH, .height = CHECK_HEIGHT, .max_memory = max_memory,
-				    .geometry_only = true, .reuse = tracer, .shape_cache = world_tracer_shapes(tracer)};
+				    .geometry_only = true, .reuse = tracer, .shape_cache = world_tracer_shapes(tracer),
+				    .threads = o.threads};
 		world *w = world_build(sc, &wo, &d);
 		if (w) {
 			world_stats ws;
@@ -792,6 +797,7 @@ static int render_scene_of(const render_cli *o, render_state *s)
 			   .clock = o->clock, .width = o->width, .height = o->height, .animated = o->frame >= 0,
 			   .frame = o->frame};
 	s->tracer = world_tracer_new(o->max_memory);
+	world_tracer_set_threads(s->tracer, o->threads);
 	lo.trace = trace_object, lo.inside = inside_object, lo.trace_user = s->tracer;
 	lang_status ls = s->tracer ? lang_parse_file(o->scene, &lo, &s->d, &s->sc) : LANG_NO_MEMORY;
 	if (ls != LANG_OK) {
@@ -807,7 +813,7 @@ static int render_scene_of(const render_cli *o, render_state *s)
 	if (o->sss && !sss_method_from_name(o->sss, &sss))
 		assert(!"--sss was checked by its option parser");
 	world_options wo = {.width = o->width, .height = o->height, .max_memory = o->max_memory, .sss_method = sss,
-			    .reuse = s->tracer, .shape_cache = world_tracer_shapes(s->tracer)};
+			    .reuse = s->tracer, .shape_cache = world_tracer_shapes(s->tracer), .threads = o->threads};
 	/* A failure to build the world is the scene's fault (a bad mesh file, a level too high) or
 	 * the machine's (memory): both were reported with their place. */
 	if (!(s->w = world_build(s->sc, &wo, &s->d))) {

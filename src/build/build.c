@@ -4,6 +4,7 @@
 
 #include "build/assets.h"
 #include "base/mem.h"
+#include "base/par.h"
 #include "geom/prim.h"
 #include "geom/shape.h"
 #include "geom/subdiv.h"
@@ -11,6 +12,18 @@
 #include <string.h>
 
 static void world_release(world *w);
+
+/* The BVHs of geoms [begin, end) of w with triangles (each its own: any worker may build any). */
+static void build_bvhs(void *ctx, size_t begin, size_t end, int worker)
+{
+	(void)worker;
+	world *w = ctx;
+	for (size_t i = begin; i < end; i++) {
+		world_geom *g = &w->geoms[i];
+		if (g->m.num_triangles)
+			g->b = bvh_build(g->m.positions, g->m.num_vertices, g->m.indices, g->m.num_triangles);
+	}
+}
 
 /* Fills the zeroed w; on failure (reported to d) releases what it made. */
 static bool build_world(world *w, const scene *sc, const world_options *opt, diag *d)
@@ -48,13 +61,15 @@ static bool build_world(world *w, const scene *sc, const world_options *opt, dia
 	if (ok)
 		w->bsdfs[w->n_materials - 1] = bsdf_diffuse(v3s(WORLD_DEFAULT_GREY));
 	ok = ok && (o.geometry_only || build_atmosphere(w, sc, d));
+	/* the meshes' BVHs on the threads (world_options.threads), then looked at in order */
+	if (ok && !o.geometry_only)
+		par_for(o.threads > 0 ? o.threads : par_default_workers(), w->n_geoms, 1, build_bvhs, w);
 	for (size_t i = 0; i < w->n_geoms; i++) {
 		world_geom *g = &w->geoms[i];
 		w->stats.triangles += g->m.num_triangles;
 		w->stats.geometry_bytes += mesh_bytes(&g->m);
 		if (!ok || o.geometry_only || !g->m.num_triangles)
 			continue;
-		g->b = bvh_build(g->m.positions, g->m.num_vertices, g->m.indices, g->m.num_triangles);
 		if (!g->b) {
 			diag_error(d, diag_noloc(), "out of memory while building the BVH");
 			ok = false;

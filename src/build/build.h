@@ -41,6 +41,10 @@ typedef struct world_options {
 	 * the build keeps its own while it runs, WORLD_SHAPE_CACHE_BYTES at most): the same
 	 * isosurface at the same grid step is made once, bit for bit the same mesh. */
 	struct shape_cache *shape_cache;
+	/* threads isosurfaces are tessellated on (geom/shape.h shape_accuracy.threads) and the
+	 * meshes' BVHs built on (0: every core, base/par.h's par_default_workers): the same meshes
+	 * and BVHs for any count */
+	int threads;
 } world_options;
 
 /* The most bytes of isosurface grids a build keeps for its own isosurfaces (world_options). */
@@ -109,6 +113,8 @@ typedef struct world_tracer world_tracer;
 enum { WORLD_TRACE_WIDTH = 640, WORLD_TRACE_HEIGHT = 480 };
 /* max_memory: the tessellation limit, as world_options' (0: its default). NULL when memory runs out. */
 world_tracer *world_tracer_new(size_t max_memory);
+/* The threads t's worlds tessellate isosurfaces on (world_options.threads; 0, the default: every core). */
+void world_tracer_set_threads(world_tracer *t, int threads);
 void world_tracer_free(world_tracer *t);
 /* The nearest hit past the start of the ray from org along dir on objs[0..n) (parent: the scene
  * they belong to, as parsed so far; key: a name for the object that stays its own while t lives,

@@ -7,6 +7,7 @@
 #include "build/build_impl.h"
 
 #include "base/mem.h"
+#include "base/par.h"
 #include "geom/shape.h"
 
 #include <math.h>
@@ -83,7 +84,8 @@ bool build_pov_shape(world *w, const scene *sc, const scene_geom *g, const world
 	subd_camera view = scene_view(sc, opt);
 	double tol;
 	uint32_t level = shape_level(sc, g, &view, centre, radius, &tol);
-	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level), .cache = opt->shape_cache};
+	shape_accuracy acc = {.tol = tol, .segments = prim_sphere_level_segments(level), .cache = opt->shape_cache,
+			      .threads = opt->threads > 0 ? opt->threads : par_default_workers()};
 	size_t hits = shape_cache_hits(opt->shape_cache);
 	world_geom *wg = &w->geoms[g->id];
 	mesh *m = &wg->m;

@@ -70,6 +70,12 @@ void world_tracer_free(world_tracer *t)
 
 size_t world_tracer_builds(const world_tracer *t) { return t ? t->builds : 0; }
 
+void world_tracer_set_threads(world_tracer *t, int threads)
+{
+	if (t)
+		t->opt.threads = threads;
+}
+
 shape_cache *world_tracer_shapes(const world_tracer *t) { return t ? t->shapes : NULL; }
 
 /* The geom of w that tessellated shape at (tol, segments), or NULL. */

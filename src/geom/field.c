@@ -3,10 +3,15 @@
  * its main diagonal, so neighbouring cubes agree and the surface is closed), each vertex shared by
  * the edge it lies on; the vertices then moved onto the zero set (Newton steps along the gradient,
  * at most half a cell, or kept on their edge and found there by regula falsi), normals -gradient.
- * The triangles are counted from the grid before any is made and refused past the limit. */
+ * The triangles are counted from the grid before any is made and refused past the limit. With
+ * workers (shape_field.workers) the grid's values, the vertices' places, the normals and the
+ * distance are computed on threads, each value by the point it belongs to alone; the topology
+ * (which edges have vertices, their numbers, the triangles) is made in order on the caller's, so
+ * the mesh is the same for any count. */
 #include "geom/shape.h"
 
 #include "base/mem.h"
+#include "base/par.h"
 
 #include <math.h>
 #include <string.h>
@@ -17,6 +22,10 @@
  * at which they stop. */
 #define FIELD_EDGE_STEPS 12
 #define FIELD_EDGE_TOL 1e-6
+/* Indices a worker takes at a time (vertices, triangles), and the triangles the march keeps
+ * waiting for their vertices' places before it places them (on the workers) and adds them. */
+#define FIELD_CHUNK 512
+#define FIELD_PENDING 65536
 
 typedef struct grid {
 	dvec3 lo;
@@ -34,6 +43,29 @@ static dvec3 gpos(const grid *G, size_t id)
 {
 	uint32_t i = (uint32_t)(id % G->nx), j = (uint32_t)(id / G->nx % G->ny), k = (uint32_t)(id / G->nx / G->ny);
 	return d3(G->lo.x + i * G->h, G->lo.y + j * G->h, G->lo.z + k * G->h);
+}
+
+/* F for each of its workers: copies of F calling eval with worker_ctx[w] (*n of them; one, F
+ * itself, when F has no workers or memory runs out). Freed by field_workers_free. */
+static shape_field *field_workers(const shape_field *F, int *n)
+{
+	*n = 1;
+	if (F->workers > 1 && F->worker_ctx) {
+		shape_field *w = mem_alloc((size_t)F->workers, sizeof *w);
+		if (w) {
+			for (int k = 0; k < F->workers; k++)
+				w[k] = *F, w[k].ctx = F->worker_ctx[k], w[k].workers = 1;
+			*n = F->workers;
+			return w;
+		}
+	}
+	return (shape_field *)F;
+}
+
+static void field_workers_free(const shape_field *F, shape_field *w)
+{
+	if (w != F)
+		mem_free(w);
 }
 
 /* Edge vertices, shared: an open-addressing table from the edge's two grid points to a vertex. */
@@ -65,12 +97,31 @@ static bool map_grow(edge_map *m)
 	return true;
 }
 
+/* A triangle made before its vertices are placed: sb_tri's arguments. */
+typedef struct pend_tri {
+	uint32_t v[3];
+	dvec3 want;
+} pend_tri;
+
 typedef struct mt {
 	const shape_field *F;
+	shape_field *Fw; /* the workers' (field_workers) */
+	int workers;
 	grid *G;
 	shape_builder *b;
-	edge_map map;
+	/* the vertices of the edges from the points of planes k and k + 1 (the layer of cubes being
+	 * marched): plane[0] and plane[1], 7 edges a point (edge_vertex's ranks), UINT32_MAX where
+	 * none was made yet */
+	uint32_t *plane[2];
+	uint32_t k;
+	const uint8_t *crossed; /* the cubes with points inside and outside (count_crossed) */
 	bool failed;
+	/* vertices v0 .. b->nv - 1 wait for their places: ends[2 (v - v0)], ends[2 (v - v0) + 1] the
+	 * grid points of their edge; pend the triangles waiting for them */
+	uint32_t v0;
+	size_t *ends, cap_ends;
+	pend_tri *pend;
+	size_t n_pend, cap_pend;
 } mt;
 
 /* The zero of the field on the segment pa (value fa > 0 or < 0) to pb (fb of the other sign):
@@ -117,26 +168,74 @@ static uint32_t edge_vertex(mt *t, size_t a, size_t b)
 	uint64_t rank = 0;
 	while (rank < 7 && offs[rank] != off)
 		rank++;
-	uint64_t key = (uint64_t)a * 8 + rank;
-	if (2 * (t->map.n + 1) > t->map.cap && !map_grow(&t->map)) {
+	/* the lower point lies in plane k or k + 1 of the layer of cubes marched */
+	uint32_t *slot = &t->plane[a / sz - t->k][(a % sz) * 7 + rank];
+	if (*slot != UINT32_MAX)
+		return *slot;
+	/* placed later, with the others waiting (place_pending) */
+	size_t w = t->b->nv - t->v0;
+	if (2 * w + 2 > t->cap_ends) {
+		size_t cap = t->cap_ends ? 2 * t->cap_ends : 2 * FIELD_PENDING;
+		size_t *e = mem_realloc(t->ends, cap, sizeof *e);
+		if (!e) {
+			t->failed = true;
+			return 0;
+		}
+		t->ends = e, t->cap_ends = cap;
+	}
+	uint32_t v = sb_vertex(t->b, gpos(t->G, a), d3(0, 1, 0), 0, 0);
+	if (t->b->failed) {
 		t->failed = true;
 		return 0;
 	}
-	size_t h = (size_t)(key * 0x9E3779B97F4A7C15ull) & (t->map.cap - 1);
-	while (t->map.key[h] != UINT64_MAX) {
-		if (t->map.key[h] == key)
-			return t->map.val[h];
-		h = (h + 1) & (t->map.cap - 1);
-	}
-	double fa = t->G->f[a], fb = t->G->f[b];
-	dvec3 pa = gpos(t->G, a), pb = gpos(t->G, b), p;
-	if (t->F->on_edges)
-		p = edge_root(t->F, pa, fa, pb, fb);
-	else
-		p = d3_add(pa, d3_scale(d3_sub(pb, pa), fa / (fa - fb)));
-	uint32_t v = sb_vertex(t->b, p, d3(0, 1, 0), 0, 0);
-	t->map.key[h] = key, t->map.val[h] = v, t->map.n++;
+	t->ends[2 * w] = a, t->ends[2 * w + 1] = b;
+	*slot = v;
 	return v;
+}
+
+/* The places of waiting vertices [begin, end) (after v0): on their edge, where the field is 0. */
+static void place_vertices(void *ctx, size_t begin, size_t end, int worker)
+{
+	mt *t = ctx;
+	const shape_field *F = &t->Fw[worker];
+	for (size_t w = begin; w < end; w++) {
+		size_t a = t->ends[2 * w], b = t->ends[2 * w + 1];
+		double fa = t->G->f[a], fb = t->G->f[b];
+		dvec3 pa = gpos(t->G, a), pb = gpos(t->G, b), p;
+		if (F->on_edges)
+			p = edge_root(F, pa, fa, pb, fb);
+		else
+			p = d3_add(pa, d3_scale(d3_sub(pb, pa), fa / (fa - fb)));
+		t->b->pos[t->v0 + w] = d3_to_v3(p);
+	}
+}
+
+/* Places the waiting vertices (on the workers), then adds the waiting triangles in their order
+ * (sb_tri orients each by its vertices' places). */
+static void place_pending(mt *t)
+{
+	if (!t->failed && t->b->nv > t->v0)
+		par_for(t->workers, t->b->nv - t->v0, FIELD_CHUNK, place_vertices, t);
+	for (size_t i = 0; i < t->n_pend && !t->failed; i++)
+		sb_tri(t->b, t->pend[i].v[0], t->pend[i].v[1], t->pend[i].v[2], t->pend[i].want);
+	t->v0 = t->b->nv, t->n_pend = 0;
+}
+
+/* Triangle a c1 c2 facing want, added once its vertices are placed. */
+static void pending_tri(mt *t, uint32_t a, uint32_t c1, uint32_t c2, dvec3 want)
+{
+	if (t->failed)
+		return;
+	if (t->n_pend == t->cap_pend) {
+		size_t cap = t->cap_pend ? 2 * t->cap_pend : 1024;
+		pend_tri *p = mem_realloc(t->pend, cap, sizeof *p);
+		if (!p) {
+			t->failed = true;
+			return;
+		}
+		t->pend = p, t->cap_pend = cap;
+	}
+	t->pend[t->n_pend++] = (pend_tri){{a, c1, c2}, want};
 }
 
 /* One tetrahedron of grid points: its piece of the zero set (inside: field above 0). */
@@ -163,13 +262,13 @@ static void tetra(mt *t, const size_t v[4])
 		uint32_t e[3];
 		for (int i = 0; i < 3; i++)
 			e[i] = edge_vertex(t, v[lone], v[others[i]]);
-		sb_tri(t->b, e[0], e[1], e[2], want);
+		pending_tri(t, e[0], e[1], e[2], want);
 		return;
 	}
 	uint32_t e00 = edge_vertex(t, v[in[0]], v[out[0]]), e01 = edge_vertex(t, v[in[0]], v[out[1]]);
 	uint32_t e11 = edge_vertex(t, v[in[1]], v[out[1]]), e10 = edge_vertex(t, v[in[1]], v[out[0]]);
-	sb_tri(t->b, e00, e01, e11, want);
-	sb_tri(t->b, e00, e11, e10, want);
+	pending_tri(t, e00, e01, e11, want);
+	pending_tri(t, e00, e11, e10, want);
 }
 
 /* Each cube of the grid as six tetrahedra about its diagonal from corner 0 to corner 7. */
@@ -177,33 +276,50 @@ static void march(mt *t)
 {
 	static const int tets[6][4] = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}};
 	const grid *G = t->G;
-	for (uint32_t k = 0; k + 1 < G->nz && !t->failed; k++)
+	size_t plane = (size_t)7 * G->nx * G->ny;
+	memset(t->plane[0], 0xff, plane * sizeof *t->plane[0]);
+	memset(t->plane[1], 0xff, plane * sizeof *t->plane[1]);
+	for (uint32_t k = 0; k + 1 < G->nz && !t->failed; k++) {
+		if (k > 0) { /* plane k + 1 of the last layer is this one's plane k */
+			uint32_t *p = t->plane[0];
+			t->plane[0] = t->plane[1], t->plane[1] = p;
+			memset(p, 0xff, plane * sizeof *p);
+		}
+		t->k = k;
 		for (uint32_t j = 0; j + 1 < G->ny; j++)
 			for (uint32_t i = 0; i + 1 < G->nx; i++) {
-				size_t c[8];
-				bool any_in = false, any_out = false;
-				for (int q = 0; q < 8; q++) {
-					c[q] = gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1));
-					if (G->f[c[q]] > 0)
-						any_in = true;
-					else
-						any_out = true;
-				}
-				if (!any_in || !any_out)
+				if (!t->crossed[gidx(G, i, j, k)])
 					continue;
+				size_t c[8];
+				for (int q = 0; q < 8; q++)
+					c[q] = gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1));
 				for (int q = 0; q < 6; q++) {
 					size_t v[4] = {c[tets[q][0]], c[tets[q][1]], c[tets[q][2]], c[tets[q][3]]};
 					tetra(t, v);
 				}
+				if (t->n_pend >= FIELD_PENDING)
+					place_pending(t);
 			}
+	}
+	place_pending(t);
 }
 
 /* Moves every vertex onto the zero set (Newton along the gradient, at most half a cell in all;
  * not for a field whose vertices were found on their edges) and gives it the surface's normal,
  * -gradient. */
-static void project(const shape_field *F, shape_builder *b, double h)
+typedef struct project_job {
+	const shape_field *Fw;
+	shape_builder *b;
+	double h;
+} project_job;
+
+static void project_vertices(void *ctx, size_t begin, size_t end, int worker)
 {
-	for (uint32_t i = 0; i < b->nv; i++) {
+	const project_job *J = ctx;
+	const shape_field *F = &J->Fw[worker];
+	shape_builder *b = J->b;
+	double h = J->h;
+	for (size_t i = begin; i < end; i++) {
 		dvec3 p0 = v3_to_d3(b->pos[i]), p = p0, g;
 		for (int it = 0; it < (F->on_edges ? 0 : FIELD_NEWTON_STEPS); it++) {
 			double f = F->eval(F->ctx, p, &g), g2 = d3_dot(g, g);
@@ -221,6 +337,12 @@ static void project(const shape_field *F, shape_builder *b, double h)
 		double nl = d3_length(n);
 		b->nrm[i] = nl > 0 && isfinite(nl) ? d3_to_v3(d3_scale(n, 1 / nl)) : v3(0, 1, 0);
 	}
+}
+
+static void project(const shape_field *Fw, int workers, shape_builder *b, double h)
+{
+	project_job J = {Fw, b, h};
+	par_for(workers, b->nv, FIELD_CHUNK, project_vertices, &J);
 }
 
 /* The first-order distance |F| / |grad F| at p, or 0 where it cannot be told. */
@@ -246,12 +368,19 @@ static double tri_points_dist(const shape_field *F, dvec3 p0, dvec3 p1, dvec3 p2
 	return isfinite(m / gl) ? m / gl : 0.0;
 }
 
-double shape_field_error(const shape_field *F, const shape_builder *b)
+typedef struct error_job {
+	const shape_field *Fw;
+	const shape_builder *b;
+	double *max; /* each worker's largest distance */
+} error_job;
+
+static void error_tris(void *ctx, size_t begin, size_t end, int worker)
 {
-	/* The centre and the edges' midpoints of each triangle: marching tetrahedra make slivers,
-	 * whose largest distance is at the midpoint of the long edge, not at the centre. */
-	double w = 0;
-	for (uint32_t t = 0; t < b->nt; t++) {
+	const error_job *J = ctx;
+	const shape_field *F = &J->Fw[worker];
+	const shape_builder *b = J->b;
+	double w = J->max[worker];
+	for (size_t t = begin; t < end; t++) {
 		const uint32_t *i = &b->idx[3 * t];
 		dvec3 p0 = v3_to_d3(b->pos[i[0]]), p1 = v3_to_d3(b->pos[i[1]]), p2 = v3_to_d3(b->pos[i[2]]);
 		dvec3 c = d3_scale(d3_add(d3_add(p0, p1), p2), 1.0 / 3);
@@ -260,6 +389,27 @@ double shape_field_error(const shape_field *F, const shape_builder *b)
 			continue;
 		w = fmax(w, tri_points_dist(F, p0, p1, p2));
 	}
+	J->max[worker] = w;
+}
+
+double shape_field_error(const shape_field *F, const shape_builder *b)
+{
+	/* The centre and the edges' midpoints of each triangle: marching tetrahedra make slivers,
+	 * whose largest distance is at the midpoint of the long edge, not at the centre. The largest
+	 * over the workers' largest: a maximum, whatever triangles each measured. */
+	int n;
+	shape_field *Fw = field_workers(F, &n);
+	double one = 0, *max = n > 1 ? mem_calloc((size_t)n, sizeof *max) : &one;
+	if (!max)
+		n = 1, max = &one;
+	error_job J = {Fw, b, max};
+	par_for(n, b->nt, FIELD_CHUNK, error_tris, &J);
+	double w = 0;
+	for (int k = 0; k < n; k++)
+		w = fmax(w, max[k]);
+	if (max != &one)
+		mem_free(max);
+	field_workers_free(F, Fw);
 	return w;
 }
 
@@ -446,12 +596,22 @@ static float field_point(const shape_field *F, const grid *G, size_t id)
 	return isnan(v) ? -1.0f : (float)v;
 }
 
-/* The block of n cells a side from point (i0, j0, k0) (cut at the grid's end): its points not yet
- * set (done) take the value at the block's centre when F's Lipschitz bound keeps the surface more
- * than a cell's diagonal from all of them, else its eight halves are filled, down to blocks of
- * two cells, whose points are evaluated. */
+/* Whether point (i, j, k) of the top-level block whose first point is o was set before: by the
+ * block itself (done), or on the block's low faces, which the blocks before it along each axis
+ * set (a top-level block sets all its points, and the blocks are filled k, then j, then i, the
+ * lower first). So a top-level block writes only points no other writes, and reads only those:
+ * the blocks may be filled at once, each as it would be filled after the ones before it. */
+static bool point_done(const uint8_t *done, size_t id, uint32_t i, uint32_t j, uint32_t k, const uint32_t o[3])
+{
+	return (i == o[0] && i > 0) || (j == o[1] && j > 0) || (k == o[2] && k > 0) || done[id];
+}
+
+/* The block of n cells a side from point (i0, j0, k0) (cut at the grid's end) within the
+ * top-level block at o: its points not yet set (point_done) take the value at the block's centre
+ * when F's Lipschitz bound keeps the surface more than a cell's diagonal from all of them, else
+ * its eight halves are filled, down to blocks of two cells, whose points are evaluated. */
 static void fill_block(const shape_field *F, grid *G, uint8_t *done, uint32_t i0, uint32_t j0, uint32_t k0,
-		       uint32_t n)
+		       uint32_t n, const uint32_t o[3])
 {
 	uint32_t i1 = i0 + n < G->nx - 1 ? i0 + n : G->nx - 1, j1 = j0 + n < G->ny - 1 ? j0 + n : G->ny - 1,
 		 k1 = k0 + n < G->nz - 1 ? k0 + n : G->nz - 1;
@@ -464,7 +624,7 @@ static void fill_block(const shape_field *F, grid *G, uint8_t *done, uint32_t i0
 				for (uint32_t j = j0; j <= j1; j++)
 					for (uint32_t i = i0; i <= i1; i++) {
 						size_t id = gidx(G, i, j, k);
-						if (!done[id])
+						if (!point_done(done, id, i, j, k, o))
 							G->f[id] = (float)v, done[id] = 1;
 					}
 			return;
@@ -473,7 +633,7 @@ static void fill_block(const shape_field *F, grid *G, uint8_t *done, uint32_t i0
 		for (uint32_t q = 0; q < 8; q++) {
 			uint32_t a = i0 + (q & 1) * m, b = j0 + (q >> 1 & 1) * m, e = k0 + (q >> 2 & 1) * m;
 			if (a < i1 && b < j1 && e < k1)
-				fill_block(F, G, done, a, b, e, m);
+				fill_block(F, G, done, a, b, e, m, o);
 		}
 		return;
 	}
@@ -481,13 +641,44 @@ static void fill_block(const shape_field *F, grid *G, uint8_t *done, uint32_t i0
 		for (uint32_t j = j0; j <= j1; j++)
 			for (uint32_t i = i0; i <= i1; i++) {
 				size_t id = gidx(G, i, j, k);
-				if (!done[id])
+				if (!point_done(done, id, i, j, k, o))
 					G->f[id] = field_point(F, G, id), done[id] = 1;
 			}
 }
 
-/* The grid's values: F's fill, its octree (lipschitz), or every point. False: out of memory. */
-static bool fill_grid(const shape_field *F, grid *G)
+typedef struct fill_job {
+	const shape_field *Fw;
+	grid *G;
+	uint8_t *done;
+	uint32_t bx, by; /* top-level blocks along x and y */
+} fill_job;
+
+/* Top-level blocks [begin, end) in the order k, j, i. */
+static void fill_blocks(void *ctx, size_t begin, size_t end, int worker)
+{
+	const fill_job *J = ctx;
+	for (size_t q = begin; q < end; q++) {
+		uint32_t o[3] = {(uint32_t)(q % J->bx) * FIELD_BLOCK, (uint32_t)(q / J->bx % J->by) * FIELD_BLOCK,
+				 (uint32_t)(q / J->bx / J->by) * FIELD_BLOCK};
+		fill_block(&J->Fw[worker], J->G, J->done, o[0], o[1], o[2], FIELD_BLOCK, o);
+	}
+}
+
+typedef struct points_job {
+	const shape_field *Fw;
+	grid *G;
+} points_job;
+
+static void fill_points(void *ctx, size_t begin, size_t end, int worker)
+{
+	const points_job *J = ctx;
+	for (size_t i = begin; i < end; i++)
+		J->G->f[i] = field_point(&J->Fw[worker], J->G, i);
+}
+
+/* The grid's values: F's fill, its octree (lipschitz), or every point, on F's workers Fw. False:
+ * out of memory. */
+static bool fill_grid(const shape_field *F, const shape_field *Fw, int workers, grid *G)
 {
 	size_t np = (size_t)G->nx * G->ny * G->nz;
 	if (F->fill) {
@@ -495,19 +686,44 @@ static bool fill_grid(const shape_field *F, grid *G)
 		return true;
 	}
 	if (!(F->lipschitz > 0)) {
-		for (size_t i = 0; i < np; i++)
-			G->f[i] = field_point(F, G, i);
+		points_job J = {Fw, G};
+		par_for(workers, np, 4 * FIELD_CHUNK, fill_points, &J);
 		return true;
 	}
 	uint8_t *done = mem_calloc(np, 1);
 	if (!done)
 		return false;
-	for (uint32_t k = 0; k + 1 < G->nz; k += FIELD_BLOCK)
-		for (uint32_t j = 0; j + 1 < G->ny; j += FIELD_BLOCK)
-			for (uint32_t i = 0; i + 1 < G->nx; i += FIELD_BLOCK)
-				fill_block(F, G, done, i, j, k, FIELD_BLOCK);
+	uint32_t bx = (G->nx - 2) / FIELD_BLOCK + 1, by = (G->ny - 2) / FIELD_BLOCK + 1, bz = (G->nz - 2) / FIELD_BLOCK + 1;
+	fill_job J = {Fw, G, done, bx, by};
+	par_for(workers, (size_t)bx * by * bz, 1, fill_blocks, &J);
 	mem_free(done);
 	return true;
+}
+
+typedef struct crossed_job {
+	const grid *G;
+	size_t *counts; /* each worker's */
+	uint8_t *crossed; /* 1 for each crossed cube (indexed as its lowest point), for the march */
+} crossed_job;
+
+/* The cubes of layers [begin, end) with points inside and outside, added to the worker's count. */
+static void count_crossed(void *ctx, size_t begin, size_t end, int worker)
+{
+	const crossed_job *J = ctx;
+	const grid *G = J->G;
+	size_t n = 0;
+	for (uint32_t k = (uint32_t)begin; k < end; k++)
+		for (uint32_t j = 0; j + 1 < G->ny; j++)
+			for (uint32_t i = 0; i + 1 < G->nx; i++) {
+				bool in = false, outp = false;
+				for (int q = 0; q < 8; q++) {
+					bool inside = G->f[gidx(G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1))] > 0;
+					in |= inside, outp |= !inside;
+				}
+				n += in && outp;
+				J->crossed[gidx(G, i, j, k)] = in && outp;
+			}
+	J->counts[worker] += n;
 }
 
 double shape_field_fit_step(dvec3 ext, double h, size_t max_points)
@@ -530,36 +746,53 @@ bool shape_field_polygonise(const shape_field *F, dvec3 lo, dvec3 hi, double h, 
 		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
 		return false;
 	}
-	if (!fill_grid(F, &G)) {
+	int workers;
+	shape_field *Fw = field_workers(F, &workers);
+	if (!fill_grid(F, Fw, workers, &G)) {
+		field_workers_free(F, Fw);
 		mem_free(G.f);
 		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
 		return false;
 	}
 	/* The triangles to come, counted before any is made: about six a crossed cube (measured). */
+	size_t one = 0, *counts = workers > 1 ? mem_calloc((size_t)workers, sizeof *counts) : &one;
+	uint8_t *cubes = mem_alloc(np, 1);
+	if (!cubes) {
+		if (counts != &one)
+			mem_free(counts);
+		field_workers_free(F, Fw);
+		mem_free(G.f);
+		diag_error(d, loc, "out of memory while tessellating the %s (a grid of %ux%ux%u)", what, G.nx, G.ny, G.nz);
+		return false;
+	}
+	crossed_job C = {&G, counts ? counts : &one, cubes};
+	par_for(counts ? workers : 1, G.nz - 1, 1, count_crossed, &C);
 	size_t crossed = 0;
-	for (uint32_t k = 0; k + 1 < G.nz; k++)
-		for (uint32_t j = 0; j + 1 < G.ny; j++)
-			for (uint32_t i = 0; i + 1 < G.nx; i++) {
-				bool in = false, outp = false;
-				for (int q = 0; q < 8; q++) {
-					bool inside = G.f[gidx(&G, i + (q & 1), j + (q >> 1 & 1), k + (q >> 2 & 1))] > 0;
-					in |= inside, outp |= !inside;
-				}
-				crossed += in && outp;
-			}
+	for (int w = 0; w < (counts ? workers : 1); w++)
+		crossed += C.counts[w];
+	if (counts != &one)
+		mem_free(counts);
 	if (crossed * 6 > SHAPE_MAX_TRIANGLES) {
+		mem_free(cubes);
+		field_workers_free(F, Fw);
 		mem_free(G.f);
 		diag_error(d, loc, "the %s would make about %zu triangles (the limit of one shape is %u)", what, crossed * 6,
 			   SHAPE_MAX_TRIANGLES);
 		return false;
 	}
 	sb_init(b);
-	mt t = {.F = F, .G = &G, .b = b};
-	march(&t);
-	mem_free(G.f), mem_free(t.map.key), mem_free(t.map.val);
+	mt t = {.F = F, .Fw = Fw, .workers = workers, .G = &G, .b = b, .crossed = cubes};
+	size_t plane = (size_t)7 * G.nx * G.ny;
+	t.plane[0] = mem_alloc(plane, sizeof *t.plane[0]), t.plane[1] = mem_alloc(plane, sizeof *t.plane[1]);
+	if (t.plane[0] && t.plane[1])
+		march(&t);
+	else
+		t.failed = true;
+	mem_free(G.f), mem_free(cubes), mem_free(t.plane[0]), mem_free(t.plane[1]), mem_free(t.ends), mem_free(t.pend);
 	if (t.failed)
 		b->failed = true;
 	if (!b->failed)
-		project(F, b, h);
+		project(Fw, workers, b, h);
+	field_workers_free(F, Fw);
 	return true;
 }

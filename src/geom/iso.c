@@ -217,6 +217,25 @@ static void cache_keep(shape_cache *c, const shape_desc *s, double h, const shap
 	c->n++, c->bytes += bytes;
 }
 
+/* The rungs of the ladder of grid steps within an octave: 2^(k/8) / 2, k = 0 .. 7. */
+static const double ISO_RUNGS[8] = {0.5, 0.5 * 1.0905077326652577, 0.5 * 1.1892071150027210, 0.5 * 1.2968395546510096,
+				    0.5 * 1.4142135623730951, 0.5 * 1.5422108254079407, 0.5 * 1.6817928305074290,
+				    0.5 * 1.8340080864093424};
+
+/* A step h taken down to the ladder 2^(k/8), k an integer: at most 9 % finer than h (its
+ * triangles no farther from the surface), and the same step for isosurfaces of one function whose
+ * tolerances differ a little (isocacti's 750 rocks, each at its distance from the camera), so
+ * that they share one grid through the cache. Exact: frexp and ldexp only change the exponent. */
+static double ladder_step(double h)
+{
+	int e;
+	double m = frexp(h, &e); /* [0.5, 1) */
+	int k = 7;
+	while (k > 0 && ISO_RUNGS[k] > m)
+		k--;
+	return ldexp(ISO_RUNGS[k], e);
+}
+
 /* The container's bound. */
 static void iso_bounds(const shape_desc *s, dvec3 *lo, dvec3 *hi)
 {
@@ -278,13 +297,24 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 	 * triangles h^2 / (8 r_c) off a surface curved at r_c; then again (once, or max_passes - 1
 	 * times) at the step the measured distance asks for, when it was missed and the grid allows it. */
 	double rc = size / 8, h = fmin(sqrt(8 * acc->tol * rc), rc / 3);
+	if (h > 0 && isfinite(h))
+		h = ladder_step(h);
 	iso_ctx c = {.s = s, .eps = 0};
+	/* the workers' contexts (acc->threads), each written by its worker alone, merged into c */
+	int workers = acc->threads > 1 ? acc->threads : 1;
+	iso_ctx *wc = workers > 1 ? mem_alloc((size_t)workers, sizeof *wc) : NULL;
+	const void **wp = wc ? mem_alloc((size_t)workers, sizeof *wp) : NULL;
+	if (!wp)
+		workers = 1;
+	for (int k = 0; k < workers && wp; k++)
+		wp[k] = &wc[k];
 	/* the golden ratio's fraction of a cell: the box's faces fall between grid points (a grid
 	 * point on the zero set would make degenerate triangles there) */
 	/* The field, min(threshold - f, the container's distance), changes at most as fast as f or 1. */
 	shape_field F = {.eval = iso_eval, .ctx = &c, .on_edges = true, .shift = 0.6180339887,
 			 .has_region = s->has_region, .region_lo = s->region_lo, .region_hi = s->region_hi,
-			 .lipschitz = s->max_gradient > 0 ? ISO_GRADIENT_SAFETY * fmax(s->max_gradient, 1.0) : 0.0};
+			 .lipschitz = s->max_gradient > 0 ? ISO_GRADIENT_SAFETY * fmax(s->max_gradient, 1.0) : 0.0,
+			 .workers = workers, .worker_ctx = wp};
 	shape_builder b;
 	double got = 0;
 	int passes = s->max_passes > 0 ? s->max_passes : 2;
@@ -295,10 +325,26 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 		double grad_before = c.max_grad;
 		c.max_grad = 0;
 		if (!cache_take(acc->cache, s, h, &b, &got, &c.max_grad)) {
-			if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc))
+			for (int k = 0; k < workers && wc; k++)
+				wc[k] = c;
+			if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc)) {
+				mem_free(wc), mem_free(wp);
 				return false;
+			}
+			bool failed = c.failed;
+			for (int k = 0; k < workers && wc; k++)
+				failed |= wc[k].failed;
+			if (failed && workers > 1) { /* again on one thread: the first point where it fails */
+				sb_free(&b);
+				F.workers = 1;
+				if (!shape_field_polygonise(&F, lo, hi, h, what, &b, d, loc)) {
+					mem_free(wc), mem_free(wp);
+					return false;
+				}
+			}
 			if (c.failed) {
 				sb_free(&b);
+				mem_free(wc), mem_free(wp);
 				diag_error(d, loc, "the isosurface's function '%s' cannot be evaluated by circe at <%g, %g, %g>",
 					   s->fn_name ? s->fn_name : "function", c.failed_at.x, c.failed_at.y, c.failed_at.z);
 				return false;
@@ -307,12 +353,16 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 			if (s->open && !b.failed)
 				rim = drop_cut(&c, &b, h);
 			got = b.failed ? 0 : fmax(rim, shape_field_error(&F, &b));
+			/* the largest gradient the workers met (a maximum: the same whoever met it) */
+			for (int k = 0; k < workers && wc; k++)
+				c.max_grad = fmax(c.max_grad, wc[k].max_grad);
 			cache_keep(acc->cache, s, h, &b, got, c.max_grad);
 		}
 		c.max_grad = fmax(grad_before, c.max_grad);
 		if (b.failed || got <= 1.5 * acc->tol || pass == passes - 1)
 			break;
 		double h2 = fmax(h * sqrt(acc->tol / got), 0.5 * h);
+		h2 = ladder_step(h2);
 		if (shape_field_fit_step(ext, h2, ISO_MAX_GRID_POINTS) >= h)
 			break; /* the grid cannot be finer */
 		sb_free(&b);
@@ -323,6 +373,7 @@ bool shape_isosurface_named(const shape_desc *s, const shape_accuracy *acc, cons
 			     "the isosurface's function has a gradient of %g, more than its max_gradient %g (POV-Ray "
 			     "would miss parts of the surface; circe trusts twice max_gradient where it skips empty space)",
 			     c.max_grad, s->max_gradient);
+	mem_free(wc), mem_free(wp);
 	*tol_out = fmax(acc->tol, got);
 	return sb_finish(&b, out, false, what, d, loc);
 }

@@ -114,6 +114,9 @@ typedef struct shape_accuracy {
 	double tol;
 	uint32_t segments;
 	shape_cache *cache;
+	/* threads an isosurface is tessellated on (shape_field.workers; 0 or 1: the caller's only):
+	 * the same mesh, bit for bit, for any count */
+	int threads;
 } shape_accuracy;
 
 /* A cache of isosurface grids (iso.c): what one grid step of an isosurface made (each of
@@ -209,6 +212,13 @@ typedef struct shape_field {
 	 * diagonal + a cell's diagonal) holds no surface within a cell of its points, so its points take
 	 * the centre's value (the right sign) unevaluated. 0: every grid point is evaluated. */
 	double lipschitz;
+	/* workers > 1: the grid's points, the edges' vertices, the normals and the distance reached are
+	 * computed on that many threads (base/par.h), worker w calling eval with worker_ctx[w] (a ctx of
+	 * its own, which eval may write: the caller merges what the workers' ctx gathered); every value
+	 * depends on its point alone, so the mesh and the distance are the same bits for any count.
+	 * 0 or 1: one thread, with ctx. */
+	int workers;
+	const void *const *worker_ctx;
 } shape_field;
 /* The zero set of F inside [lo, hi] (the field must be <= 0 at the bound, or the surface is cut
  * open there) at grid step h, into b (initialised here), closed and with outward normals (-grad).

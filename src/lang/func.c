@@ -24,6 +24,12 @@ typedef enum fn_opcode {
 	OP_MIN, OP_MAX, /* n operands */
 	OP_SELECT, /* n = 3 or 4 */
 	OP_CALL, /* fn with n arguments; component comp of its result */
+	/* what the peephole pass (fuse) makes of the common sequences, the same operations on the
+	 * same values: a binary operator whose right operand is a constant k or a parameter which */
+	OP_ADDK, OP_SUBK, OP_MULK, OP_DIVK,
+	OP_ADDP, OP_SUBP, OP_MULP, OP_DIVP,
+	OP_CALLI, /* an internal function fn (functions.inc's) of n arguments, its one value */
+	OP_CALLI_XYZ, /* the same of the function's own x, y and z (its parameters 0, 1, 2) */
 } fn_opcode;
 
 struct lang_fn_op {
@@ -135,6 +141,20 @@ static bool run_code(const lang_function *f, const double *args, double *out, co
 		BINARY(OP_AND, a != 0.0 && b != 0.0)
 		BINARY(OP_OR, a != 0.0 || b != 0.0)
 #undef BINARY
+		case OP_ADDK: st[sp - 1] = st[sp - 1] + o->k; break;
+		case OP_SUBK: st[sp - 1] = st[sp - 1] - o->k; break;
+		case OP_MULK: st[sp - 1] = st[sp - 1] * o->k; break;
+		case OP_DIVK: st[sp - 1] = st[sp - 1] / o->k; break;
+		case OP_ADDP: st[sp - 1] = st[sp - 1] + args[o->which]; break;
+		case OP_SUBP: st[sp - 1] = st[sp - 1] - args[o->which]; break;
+		case OP_MULP: st[sp - 1] = st[sp - 1] * args[o->which]; break;
+		case OP_DIVP: st[sp - 1] = st[sp - 1] / args[o->which]; break;
+		case OP_CALLI: {
+			double r = o->fn->impl(&st[sp - o->n]);
+			sp -= o->n, st[sp++] = r;
+			break;
+		}
+		case OP_CALLI_XYZ: st[sp++] = o->fn->impl(args); break;
 		}
 	}
 	out[0] = st[0];
@@ -753,6 +773,39 @@ static bool params(parser *p, lang_function *f)
 	return lang_expect(p, LTK_RPAREN, "to close the function's parameters");
 }
 
+/* The peephole pass over code[0..*n) (in place): a constant or a parameter followed by + - * /
+ * becomes one operation with its operand (OP_ADDK ... OP_DIVP), a call of an internal function
+ * OP_CALLI, and of one of x, y, z given as they come OP_CALLI_XYZ, which reads them where they
+ * are. The code has no jumps, so any instruction may be fused with the one before it; each
+ * fused operation computes what the pair did, in the same order, to the same bits. */
+static void fuse(lang_fn_op *code, size_t *n)
+{
+	size_t o = 0;
+	for (size_t i = 0; i < *n; i++) {
+		lang_fn_op x = code[i];
+		lang_fn_op *last = o ? &code[o - 1] : NULL;
+		int bin = x.op == OP_ADD ? 0 : x.op == OP_SUB ? 1 : x.op == OP_MUL ? 2 : x.op == OP_DIV ? 3 : -1;
+		if (bin >= 0 && last && (last->op == OP_CONST || last->op == OP_PARAM)) {
+			static const fn_opcode ks[4] = {OP_ADDK, OP_SUBK, OP_MULK, OP_DIVK}, ps[4] = {OP_ADDP, OP_SUBP, OP_MULP, OP_DIVP};
+			last->op = last->op == OP_CONST ? ks[bin] : ps[bin];
+			continue;
+		}
+		if (x.op == OP_CALL && x.fn->kind == LANG_FN_INTERNAL && x.comp == 0 && x.fn->impl) {
+			bool xyz = x.n == 3 && x.fn->n_params == 3 && o >= 3;
+			for (int a = 0; xyz && a < 3; a++)
+				xyz = code[o - 3 + a].op == OP_PARAM && code[o - 3 + a].which == a;
+			if (xyz) {
+				o -= 3;
+				code[o++] = (lang_fn_op){.op = OP_CALLI_XYZ, .fn = x.fn, .n = 3};
+				continue;
+			}
+			x.op = OP_CALLI;
+		}
+		code[o++] = x;
+	}
+	*n = o;
+}
+
 /* The body's expression compiled into f's code. */
 static bool code_body(parser *p, lang_function *f, const lang_token *self, bool defaults)
 {
@@ -762,6 +815,8 @@ static bool code_body(parser *p, lang_function *f, const lang_token *self, bool 
 	p->no_gt = false;
 	bool ok = cexpr(&c);
 	p->no_gt = saved;
+	if (ok)
+		fuse(c.code.data, &c.code.len);
 	lang_fn_op *code = ok ? arena_alloc(&p->sc->arena, c.code.len, sizeof *code, 16) : NULL;
 	if (ok && !code)
 		ok = lang_error(p, p->prev.loc, "out of memory");

@@ -219,7 +219,7 @@ static void test_lathe(void)
 	/* a closed linear profile: a square ring section, a torus of square section (exact volume) */
 	double sq[] = {1, 0, 2, 0, 2, 1, 1, 1, 1, 0};
 	shape_desc s = lathe_desc(SHAPE_LINEAR, sq, 5);
-	shape_accuracy acc = {1e-3, 256, NULL};
+	shape_accuracy acc = {1e-3, 256, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "linear lathe");
@@ -232,7 +232,7 @@ static void test_lathe(void)
 	/* a cubic profile from the axis to the axis: closed by its poles, within tol of the curve */
 	double cp[] = {0, -0.5, 0, 0, 1, 0.5, 1.2, 1.5, 0.5, 2.5, 0, 3, 0, 3.5};
 	s = lathe_desc(SHAPE_CUBIC, cp, 7);
-	acc = (shape_accuracy){2e-3, 128, NULL};
+	acc = (shape_accuracy){2e-3, 128, NULL, 0};
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "cubic lathe");
 	CHECK(open_edges(&m) == 0, "closed cubic lathe: %zu open edges", open_edges(&m));
 	CHECK(volume(&m) > 0, "outward: volume %g", volume(&m));
@@ -250,7 +250,7 @@ static void test_sor(void)
 {
 	double P[] = {0, 0, 1, 0, 1.2, 1, 0.6, 2, 0.8, 3, 0, 3.5};
 	shape_desc s = {.kind = SHAPE2_SOR, .pts = P, .n_pts = 6};
-	shape_accuracy acc = {1e-3, 128, NULL};
+	shape_accuracy acc = {1e-3, 128, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sor");
@@ -297,7 +297,7 @@ static void test_prism(void)
 	/* a square with a square hole (two sub-polygons, each closed by repeating its first point) */
 	double P[] = {-2, -2, 2, -2, 2, 2, -2, 2, -2, -2, -1, -1, 1, -1, 1, 1, -1, 1, -1, -1};
 	shape_desc s = {.kind = SHAPE2_PRISM, .spline = SHAPE_LINEAR, .pts = P, .n_pts = 10, .h1 = 0, .h2 = 1};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "prism");
@@ -369,7 +369,7 @@ static void test_sphere_sweep(void)
 {
 	double S[] = {0, 0, 0, 0.5, 2, 0, 0, 0.3};
 	shape_desc s = {.kind = SHAPE2_SPHERE_SWEEP, .spline = SHAPE_LINEAR, .pts = S, .n_pts = 2};
-	shape_accuracy acc = {1e-3, 128, NULL};
+	shape_accuracy acc = {1e-3, 128, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "sphere_sweep");
@@ -411,7 +411,7 @@ static void test_blob(void)
 	shape_desc s = {.kind = SHAPE2_BLOB, .comps = &one, .n_comps = 1, .threshold = 0.5};
 	CHECK_NEAR(shape_blob_field(&s, d3(sqrt(1 - sqrt(0.5)), 0, 0)), 0.5, 1e-12);
 	CHECK_NEAR(shape_blob_field(&s, d3(0, 0.5, 0)), 0.5625, 1e-12);
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "blob");
@@ -489,7 +489,7 @@ static void test_blob_crease(void)
 		{.a = d3(0, 1.5, -0.55), .radius = 0.07, .strength = 0.2},
 	};
 	shape_desc s = {.kind = SHAPE2_BLOB, .comps = candle, .n_comps = 6, .threshold = 0.5};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "candle at 1e-3");
@@ -531,7 +531,7 @@ static void test_text(void)
 		return;
 	}
 	shape_desc s = {.kind = SHAPE2_TEXT, .font = font, .text = "Bob 8%", .depth = 0.25};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "text");
@@ -564,7 +564,7 @@ static void test_bicubic(void)
 	double cp[48] = {-2, 0, -2, -1, 1, -2, 1, -1, -2, 2, 0, -2, -2, 1, -1, -1, 3, -1, 1, 2, -1, 2, 0, -1,
 			 -2, 0, 1,  -1, -1, 1, 1, 2, 1,   2, 1, 1,  -2, 0, 2,  -1, 1, 2, 1, 0, 2,  2, 0, 2};
 	shape_desc s = {.kind = SHAPE2_BICUBIC, .pts = cp, .n_pts = 16, .st = {0, 0, 1, 0, 1, 1, 0, 1}};
-	shape_accuracy acc = {2e-3, 64, NULL};
+	shape_accuracy acc = {2e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "bicubic_patch");
@@ -624,7 +624,7 @@ static void test_isosurface_octree(void)
 	double r = 0.6;
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere_counted, .fn_ctx = &r, .fn_name = "sphere",
 			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh a = {0}, b = {0};
 	double ta, tb;
 	sphere_calls = 0;
@@ -706,6 +706,92 @@ static void test_isosurface_cache(void)
 	mesh_free(&got), mesh_free(&want), mesh_free(&first);
 }
 
+/* iso.c's ladder of grid steps: tolerances 0.002 and 0.0023 ask steps 0.0632 and 0.0678 (the
+ * square root of 8 tol times an eighth of the container), both on the rung 2^-4 = 0.0625, so the
+ * second takes the first's grid from the cache; each mesh within its stated distance. */
+static void test_isosurface_ladder(void)
+{
+	double r = 0.8;
+	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere, .fn_ctx = &r, .fn_same = same_radius,
+			.fn_name = "sphere", .box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
+	shape_cache *c = shape_cache_new((size_t)1 << 26);
+	shape_accuracy a1 = {.tol = 0.002, .segments = 64, .cache = c}, a2 = {.tol = 0.0023, .segments = 64, .cache = c};
+	mesh m1 = {0}, m2 = {0};
+	double t1, t2;
+	CHECK(c && shape_tessellate(&s, &a1, &m1, &t1, &d, diag_noloc()), "tolerance 0.002");
+	CHECK(shape_tessellate(&s, &a2, &m2, &t2, &d, diag_noloc()), "tolerance 0.0023");
+	CHECK(shape_cache_hits(c) == 1 && same_mesh(&m1, &m2), "one rung, one grid: %zu hits, %u and %u triangles",
+	      shape_cache_hits(c), m1.num_triangles, m2.num_triangles);
+	double w = worst(&m2, sphere_dist, &r);
+	CHECK(t2 == 0.0023 && w <= 1.01 * t2, "the shared grid within the second's stated %g: %g", t2, w);
+	shape_cache_free(c);
+	mesh_free(&m1), mesh_free(&m2);
+}
+
+/* A sphere of radius 0.75 with bumps, as a shell 0.2 thick (two surfaces: more triangles than
+ * the march keeps waiting, FIELD_PENDING); pure, so any thread may call it. */
+static bool fn_bumpy_shell(const void *ctx, const double *q, double *out)
+{
+	(void)ctx;
+	double rr = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+	*out = fabs(rr - 0.75 - 0.04 * sin(9 * q[0]) * sin(9 * q[1]) * sin(9 * q[2])) - 0.1;
+	return true;
+}
+
+/* s tessellated on `threads` threads into m (tol *t), its messages (the warning of max_gradient,
+ * an error) into msg (freed by the caller); whether it succeeded. */
+static bool tessellate_on(const shape_desc *s, double tol, int threads, mesh *m, double *t, char **msg)
+{
+	size_t len;
+	FILE *f = open_memstream(msg, &len);
+	diag dd;
+	diag_init(&dd, f);
+	shape_accuracy a = {.tol = tol, .segments = 64, .threads = threads};
+	bool ok = shape_tessellate(s, &a, m, t, &dd, diag_noloc());
+	fclose(f);
+	return ok;
+}
+
+/* Isosurfaces tessellated on 2, 3 and 8 threads are the one thread's, bit for bit (positions,
+ * normals, triangles, the distance reached and the messages: max_gradient's warning with the
+ * largest gradient met, the first point where a function fails): the grid's octree (several
+ * top-level blocks along each axis), every grid point (no max_gradient), and a failing function. */
+static void test_isosurface_threads(void)
+{
+	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_bumpy_shell, .fn_name = "shell", .box_lo = d3(-1, -1, -1),
+			.box_hi = d3(1, 1, 1), .max_gradient = 0.9};
+	const int counts[3] = {2, 3, 8};
+	for (int pass = 0; pass < 3; pass++) {
+		if (pass == 1)
+			s.max_gradient = 0; /* every grid point */
+		if (pass == 2)
+			s.fn = fn_fails, s.fn_name = "fails", s.max_gradient = 1.1;
+		double tol = pass == 0 ? 3e-3 : 4e-3, t1 = 0;
+		mesh one = {0};
+		char *m1 = NULL;
+		bool ok1 = tessellate_on(&s, tol, 1, &one, &t1, &m1);
+		CHECK(ok1 == (pass < 2), "case %d on one thread: %s", pass, m1);
+		if (pass == 0)
+			CHECK(one.num_triangles > 65536 && strstr(m1, "gradient of"),
+			      "the shell makes %u triangles, more than FIELD_PENDING, and warns of its gradient: %s",
+			      one.num_triangles, m1);
+		if (pass == 2)
+			CHECK(strstr(m1, "cannot be evaluated") != NULL, "the failing function: %s", m1);
+		for (int k = 0; k < 3; k++) {
+			mesh many = {0};
+			char *mk = NULL;
+			double tk = 0;
+			bool okk = tessellate_on(&s, tol, counts[k], &many, &tk, &mk);
+			CHECK(okk == ok1 && (!ok1 || (same_mesh(&one, &many) && tk == t1)) && !strcmp(m1, mk),
+			      "case %d on %d threads: %u against %u triangles, distance %.17g against %.17g, messages '%s' "
+			      "against '%s'",
+			      pass, counts[k], many.num_triangles, one.num_triangles, tk, t1, mk, m1);
+			mesh_free(&many), free(mk);
+		}
+		mesh_free(&one), free(m1);
+	}
+}
+
 /* The distance of p to the boundary of (ball of radius r) cut by the box [-1, 1]^3. */
 static double cut_ball_dist(const void *ctx, dvec3 p)
 {
@@ -719,7 +805,7 @@ static void test_isosurface(void)
 	double r = 0.8;
 	shape_desc s = {.kind = SHAPE2_ISOSURFACE, .fn = fn_sphere, .fn_ctx = &r, .fn_name = "sphere",
 			.box_lo = d3(-1, -1, -1), .box_hi = d3(1, 1, 1), .max_gradient = 1.1};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "isosurface sphere");
@@ -827,7 +913,7 @@ static void test_parametric(void)
 	tctx cx = {1, 0}, cy = {1, 1}, cz = {1, 2};
 	shape_desc s = {.kind = SHAPE2_PARAMETRIC, .fn = fn_torus3, .fn_ctxs = {&cx, &cy, &cz},
 			.uv_lo = {0, 0}, .uv_hi = {2 * M_PI, 2 * M_PI}, .box_lo = d3(-2, -2, -2), .box_hi = d3(2, 2, 2)};
-	shape_accuracy acc = {1e-3, 64, NULL};
+	shape_accuracy acc = {1e-3, 64, NULL, 0};
 	mesh m = {0};
 	double tol;
 	CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "parametric torus");
@@ -868,7 +954,7 @@ static void test_julia(void)
 	for (int f = 0; f < 2; f++) {
 		shape_desc s = {.kind = SHAPE2_JULIA, .julia = {0, 0, 0, 0}, .slice = {0, 0, 0, 1}, .jfunc = f,
 				.max_iteration = 20, .precision = 20};
-		shape_accuracy acc = {2e-2, 64, NULL}; /* cells of 0.04: a quick test */
+		shape_accuracy acc = {2e-2, 64, NULL, 0}; /* cells of 0.04: a quick test */
 		mesh m = {0};
 		double tol;
 		CHECK(shape_tessellate(&s, &acc, &m, &tol, &d, diag_noloc()), "julia");
@@ -886,7 +972,7 @@ static void test_limit(void)
 {
 	double cp[] = {0, 0, 1, 0, 1, 1, 0, 2};
 	shape_desc s = lathe_desc(SHAPE_CUBIC, cp, 4);
-	shape_accuracy acc = {1e-9, 1u << 22, NULL};
+	shape_accuracy acc = {1e-9, 1u << 22, NULL, 0};
 	mesh m = {0};
 	double tol;
 	diag quiet;
@@ -911,6 +997,8 @@ int main(void)
 	test_isosurface();
 	test_isosurface_octree();
 	test_isosurface_cache();
+	test_isosurface_ladder();
+	test_isosurface_threads();
 	test_parametric();
 	test_julia();
 	test_limit();
