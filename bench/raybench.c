@@ -165,7 +165,14 @@ int main(int argc, char **argv)
 	}
 #ifdef HAVE_EMBREE
 	if (embree) {
-		RTCDevice dev = rtcNewDevice("threads=1");
+		/* CIRCE_EMBREE_ISA=avx2 (or sse2, avx, avx512) pins Embree's kernels: on a CPU with
+		 * AVX-512 Embree runs its AVX-512 ones, circe at most AVX2. */
+		const char *isa = getenv("CIRCE_EMBREE_ISA");
+		if (isa && (!*isa || strlen(isa) > 16))
+			isa = NULL;
+		char config[64];
+		snprintf(config, sizeof config, "threads=1%s%s", isa ? ",isa=" : "", isa ? isa : "");
+		RTCDevice dev = rtcNewDevice(config);
 		double ebuild = 1e30;
 		RTCScene scene = NULL;
 		for (long k = 0; k < repeat; k++) {
