@@ -1724,6 +1724,8 @@ static void light_move(scene_light *l, const xform *t)
 		scene_object *o = (scene_object *)&l->projected[i];
 		o->transform = xform_then(o->transform, *t);
 	}
+	for (uint32_t i = 0; i < l->n_looks_lights; i++) /* the same (copy_looks, looks_like) */
+		light_move((scene_light *)&l->looks_lights[i], t);
 	l->position = xform_point(t, l->position);
 	l->point_at = xform_point(t, l->point_at);
 	l->axis1 = xform_vector(t, l->axis1);
@@ -2645,22 +2647,37 @@ static bool object_item(parser *p, vecbuf *out, bool *matched);
 static bool light_block(parser *p, scene_light *out, diag_loc kw);
 static bool add_light(parser *p, const scene_light *l, diag_loc kw);
 
+/* Whether objects read unplaced in `where` (p->unplaced) refuse a light_source, as POV-Ray's
+ * Parse_Bound_Clip refuses an object holding one (a light is a "patch" object there). */
+static bool unplaced_refuses_lights(const char *where)
+{
+	return where && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by"));
+}
+
 /* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
  * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
  * moves the lights from its first on (csg_lights_move); only where the object is placed in the
- * scene (p->lights_in_csg). */
+ * scene or in a light's looks_like (p->lights_in_csg). In an object that is never placed (an
+ * object pattern's, a projected_through's) POV-Ray parses the light and never uses it: circe
+ * too, with a warning; in a clipped_by or bounded_by POV-Ray refuses it. */
 static bool csg_light(parser *p, const char *what)
 {
 	lang_token kw = *lang_peek(p);
-	if (!p->lights_in_csg)
+	if (!p->lights_in_csg && unplaced_refuses_lights(p->unplaced))
 		return lang_error(p, kw.loc,
-				  "a light_source inside a %s is supported only in an object placed in the "
-				  "scene or a #declare (not in a clipped_by, object pattern or looks_like): "
-				  "give it beside the %s's copies",
-				  what, what);
+				  "a light_source inside a %s is not allowed in a %s, as in POV-Ray (\"Illegal texture "
+				  "or patch in clip, bound or object pattern\")",
+				  what, p->unplaced);
 	lang_advance(p);
 	scene_light l;
 	TRY(light_block(p, &l, kw.loc));
+	if (!p->lights_in_csg) {
+		diag_warning(p->d, kw.loc,
+			     "this light_source inside a %s lights nothing, as in POV-Ray: the %s's object is not "
+			     "placed in the scene",
+			     what, p->unplaced ? p->unplaced : "block");
+		return true;
+	}
 	return add_light(p, &l, kw.loc);
 }
 
@@ -2779,8 +2796,9 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at);
 
 /* A declared object's name: its objects pushed onto out as instances placed at kw, with copies
  * of its light groups (new ids, the parent chain inside it copied) and, where the copy is placed
- * in the scene (p->lights_in_csg), of its lights: POV-Ray copies a declared CSG's lights with
- * each `object { U }`, and the enclosing blocks move them (object_tail_lights, csg_lights_move). */
+ * in the scene or in a looks_like (p->lights_in_csg), of its lights: POV-Ray copies a declared
+ * CSG's lights with each `object { U }`, and the enclosing blocks move them (object_tail_lights,
+ * csg_lights_move). */
 static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 {
 	lang_token name = *lang_peek(p);
@@ -2813,7 +2831,7 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 			return lang_error(p, kw, "out of memory");
 	}
 	const char *where = p->unplaced ? p->unplaced : "block";
-	if (ol->n_lights && !p->lights_in_csg && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by")))
+	if (ol->n_lights && !p->lights_in_csg && unplaced_refuses_lights(where))
 		return lang_error(p, kw, "'%.*s' holds a light_source: not allowed in a %s, as in POV-Ray (\"Illegal "
 					 "texture or patch in clip, bound or object pattern\")",
 				  (int)name.len, name.text, where);
@@ -3973,33 +3991,56 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 		memcpy(o, l->projected, l->n_projected * sizeof *o);
 		l->projected = o;
 	}
+	if (l->n_looks_lights) { /* and the lights in its looks_like, each with its own */
+		scene_light *c = arena_zalloc(&p->sc->arena, l->n_looks_lights, sizeof *c);
+		if (!c)
+			return lang_error(p, at, "out of memory");
+		memcpy(c, l->looks_lights, l->n_looks_lights * sizeof *c);
+		l->looks_lights = c;
+		for (uint32_t i = 0; i < l->n_looks_lights; i++)
+			TRY(copy_looks(p, &c[i], at));
+	}
 	return true;
 }
 
 /* The object of a light's block `what` (projected_through, looks_like): a declared object, as
- * POV-Ray's Parse_Object takes it, or an object item, not placed in the scene, into *b. */
+ * POV-Ray's Parse_Object takes it, or an object item, into *b. A projected_through's object is
+ * not placed in the scene: its lights light nothing (csg_light, declared_object). A looks_like's
+ * is (POV-Ray's Post_Process walks the light's children): its lights, and a light_source written
+ * as the looks_like's object itself, join the scene's lights from their index on (looks_like
+ * takes them into the light). */
 static bool light_object(parser *p, const char *what, vecbuf *b)
 {
-	bool matched = true, ok;
-	if (lang_peek(p)->kind == LTK_IDENT) {
-		bool saved = p->lights_in_csg;
-		const char *saved_where = p->unplaced;
-		p->lights_in_csg = false, p->unplaced = what; /* not placed: its lights light nothing */
+	bool matched = true, ok, placed = !strcmp(what, "looks_like");
+	size_t lights = p->sc->lights.len;
+	bool saved = p->lights_in_csg;
+	const char *saved_where = p->unplaced;
+	if (placed)
+		p->lights_in_csg = true, p->unplaced = NULL;
+	else
+		p->lights_in_csg = false, p->unplaced = what;
+	if (lang_peek(p)->kind == LTK_IDENT)
 		ok = declared_object(p, b, lang_peek(p)->loc);
-		p->lights_in_csg = saved, p->unplaced = saved_where;
-	} else
-		ok = object_item_unplaced(p, b, &matched, what);
-	if (ok && (!matched || !b->len))
+	else if (placed && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE)
+		ok = csg_light(p, what);
+	else
+		ok = object_item(p, b, &matched);
+	p->lights_in_csg = saved, p->unplaced = saved_where;
+	if (ok && (!matched || (!b->len && p->sc->lights.len == lights)))
 		ok = lang_error_found(p, "expected an object in '%s'", what);
 	return ok;
 }
 
-/* The block's modifiers up to its '}', then b's objects copied into the scene's arena (casting no
- * shadow when no_shadow): *out, *n. */
-static bool light_object_end(parser *p, const char *what, diag_loc kw, diag_loc open, vecbuf *b, bool no_shadow,
-			     const scene_object **out, uint32_t *n)
+/* The block's modifiers up to its '}' (moving the scene's lights from `lights` on too), then b's
+ * objects copied into the scene's arena (casting no shadow when no_shadow): *out, *n. */
+static bool light_object_end(parser *p, const char *what, diag_loc kw, diag_loc open, vecbuf *b, size_t lights,
+			     bool no_shadow, const scene_object **out, uint32_t *n)
 {
-	TRY(object_tail(p, b, 0, open, what));
+	TRY(object_tail_lights(p, b, 0, lights, open, what));
+	if (!b->len) {
+		*out = NULL, *n = 0;
+		return true;
+	}
 	scene_object *o = arena_zalloc(&p->sc->arena, b->len, sizeof *o);
 	if (!o)
 		return lang_error(p, kw, "out of memory");
@@ -4022,28 +4063,44 @@ static bool projected_through(parser *p, scene_light *l)
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
 	bool ok = light_object(p, "projected_through", &b) &&
-		  light_object_end(p, "projected_through", kw, open, &b, false, &l->projected, &l->n_projected);
+		  light_object_end(p, "projected_through", kw, open, &b, p->sc->lights.len, false, &l->projected,
+				   &l->n_projected);
 	vecbuf_free(&b);
 	return ok;
 }
 
-/* looks_like = "looks_like" "{" ( identifier | object_item ) { modifier } "}": POV-Ray's (Parse_Light_Source): the
- * object translated to the light's position as it stands, then its modifiers, no_shadow; one a
- * light. */
+/* looks_like = "looks_like" "{" ( identifier | object_item | light_source ) { modifier } "}":
+ * POV-Ray's (Parse_Light_Source): the object translated to the light's position as it stands,
+ * then its modifiers, no_shadow; one a light. The light_sources in it (or it) light the scene as
+ * POV-Ray's Post_Process finds them among the light's children, moved with the object: taken out
+ * of the scene's lights into l->looks_lights (add_light places them after l). */
 static bool looks_like(parser *p, scene_light *l)
 {
 	diag_loc kw = lang_advance(p)->loc, open;
-	if (l->n_looks)
+	if (l->n_looks || l->n_looks_lights)
 		return lang_error(p, kw, "only one looks_like is allowed in a light_source");
 	TRY(open_block(p, "looks_like", &open));
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
+	size_t lights = p->sc->lights.len, objects = p->sc->objects.len;
 	bool ok = light_object(p, "looks_like", &b);
 	xform to = xform_translate(l->position);
 	for (size_t i = 0; ok && i < b.len; i++)
 		VECBUF_AT(&b, scene_object, i).transform = xform_then(VECBUF_AT(&b, scene_object, i).transform, to);
-	ok = ok && light_object_end(p, "looks_like", kw, open, &b, true, &l->looks, &l->n_looks);
+	for (size_t i = lights; ok && i < p->sc->lights.len; i++)
+		light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &to);
+	ok = ok && light_object_end(p, "looks_like", kw, open, &b, lights, true, &l->looks, &l->n_looks);
 	vecbuf_free(&b);
+	if (ok && p->sc->lights.len > lights) {
+		/* add_light placed their own looks_like objects: placed again with l (add_light) */
+		size_t n = p->sc->lights.len - lights;
+		scene_light *c = arena_zalloc(&p->sc->arena, n, sizeof *c);
+		if (!c)
+			return lang_error(p, kw, "out of memory");
+		memcpy(c, &VECBUF_AT(&p->sc->lights, scene_light, lights), n * sizeof *c);
+		l->looks_lights = c, l->n_looks_lights = (uint32_t)n;
+	}
+	p->sc->lights.len = lights, p->sc->objects.len = objects;
 	return ok;
 }
 
@@ -4233,14 +4290,55 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 	}
 }
 
-/* A light placed in the scene, with the objects of its looks_like. */
+/* The objects of l's looks_like and of the lights in it, pushed onto the scene's objects. */
+static bool add_looks(parser *p, const scene_light *l, diag_loc kw)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) /* the objects that show it */
+		if (!vecbuf_push(&p->sc->objects, &l->looks[i]))
+			return lang_error(p, kw, "out of memory");
+	for (uint32_t i = 0; i < l->n_looks_lights; i++)
+		TRY(add_looks(p, &l->looks_lights[i], kw));
+	return true;
+}
+
+/* A light placed in the scene, with the objects of its looks_like. The lights in its looks_like
+ * stay in it (moved with it by light_move) until lang_lights_flatten places them. */
 static bool add_light(parser *p, const scene_light *l, diag_loc kw)
 {
 	if (!vecbuf_push(&p->sc->lights, l))
 		return lang_error(p, kw, "out of memory");
-	for (uint32_t i = 0; i < l->n_looks; i++) /* the objects that show it */
-		if (!vecbuf_push(&p->sc->objects, &l->looks[i]))
-			return lang_error(p, kw, "out of memory");
+	return add_looks(p, l, kw);
+}
+
+static bool flatten_light(vecbuf *out, const scene_light *l)
+{
+	if (!vecbuf_push(out, l))
+		return false;
+	scene_light *pushed = &VECBUF_AT(out, scene_light, out->len - 1);
+	pushed->looks_lights = NULL, pushed->n_looks_lights = 0;
+	for (uint32_t i = 0; i < l->n_looks_lights; i++)
+		if (!flatten_light(out, &l->looks_lights[i]))
+			return false;
+	return true;
+}
+
+bool lang_lights_flatten(parser *p)
+{
+	vecbuf *lights = &p->sc->lights;
+	bool any = false;
+	for (size_t i = 0; i < lights->len; i++)
+		any |= VECBUF_AT(lights, scene_light, i).n_looks_lights > 0;
+	if (!any)
+		return true;
+	vecbuf flat;
+	vecbuf_init(&flat, sizeof(scene_light));
+	for (size_t i = 0; i < lights->len; i++)
+		if (!flatten_light(&flat, &VECBUF_AT(lights, scene_light, i))) {
+			vecbuf_free(&flat);
+			return lang_error(p, diag_noloc(), "out of memory");
+		}
+	vecbuf_free(lights);
+	*lights = flat;
 	return true;
 }
 
