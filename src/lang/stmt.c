@@ -3545,7 +3545,13 @@ static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_
  * tracepixel.cpp's CreateCameraRay: 0, ray k of pixel i from face i of mesh k; 1, the meshes'
  * faces summed, ray k of pixel i from face k * width * height + i; 2, the meshes side by side;
  * 3, the first mesh's uv (render/camera.c's cam_sample). What POV-Ray refuses is refused where
- * it is written, and a max_distance other than 0 (circe's rays run to infinity). */
+ * it is written. max_distance: the camera ray's first hit is sought only that far (TraceRay's
+ * maxDepth); POV-Ray takes one below its EPSILON, 1e-10, negative ones too, as no limit. */
+/* POV-Ray's EPSILON: a max_distance below it is no limit (TraceRay: maxDepth >= EPSILON). */
+#define MESH_CAMERA_MIN_DISTANCE 1e-10
+/* A max_distance this large limits nothing a float ray can reach: taken as none. */
+#define MESH_CAMERA_NO_LIMIT 1e30
+
 static bool mesh_camera_block(parser *p, scene_camera *c)
 {
 	diag_loc open;
@@ -3565,9 +3571,10 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 		double x;
 		at = lang_peek(p)->loc;
 		TRY(lang_float(p, "for the mesh_camera's max_distance", &x));
-		if (x != 0)
-			return lang_error(p, at, "circe's mesh_camera has no max_distance (found %g); rays run to infinity",
-					  x);
+		if (x < 0)
+			diag_warning(p->d, at, "a negative max_distance (%g) is no limit, as in POV-Ray", x);
+		else if (x >= MESH_CAMERA_MIN_DISTANCE && x < MESH_CAMERA_NO_LIMIT)
+			c->mesh_max_distance = x;
 	}
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));

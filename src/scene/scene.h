@@ -93,6 +93,9 @@ typedef struct scene_camera {
 	uint32_t uv_n, uv_grid;
 	const uint32_t *uv_start, *uv_list;
 	bool mesh_smooth;
+	/* POV-Ray's max_distance (Camera::Max_Ray_Distance): the camera ray's first hit is sought
+	 * only this far from its origin, beyond it the ray misses; 0: no limit */
+	double mesh_max_distance;
 } scene_camera;
 
 typedef enum scene_light_kind {
