@@ -370,7 +370,7 @@ bool build_pov_probe(world *w, const scene *sc, diag *d)
 			render_ray ray;
 			render_hit hit = {0};
 			if (!cam_sample(c, px, py, v2((float)(fx - px), (float)(fy - py)), v2(0.5f, 0.5f), &ray) ||
-			    !rs->intersect(rs->user, &ray, 0.0f, INFINITY, &hit) || hit.material < 0 ||
+			    !rs->intersect(rs->user, &ray, 0.0f, c->max_distance > 0.0f ? c->max_distance : INFINITY, &hit) || hit.material < 0 ||
 			    hit.object >= n_obj || open_obj[hit.object] != 1)
 				continue;
 			size_t k = (size_t)hit.material;
