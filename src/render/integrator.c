@@ -1046,7 +1046,9 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		uint32_t md_obj = 0;
 		const render_media *md = any_media(s) && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
-			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
+			/* a limited miss: the media that deep too (POV-Ray's ComputeMedia to that depth) */
+			float seg = hit_any ? hit.t : isfinite(tmax) ? tmax : 0.0f;
+			int r = through_media(s, set, md, md_obj, seg, bounce, g, &pa, &ray);
 			if (r < 0)
 				break;
 			if (r > 0)
