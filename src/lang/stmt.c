@@ -2645,6 +2645,7 @@ static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc op
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
 static bool light_block(parser *p, scene_light *out, diag_loc kw);
+static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
 static bool add_light(parser *p, const scene_light *l, diag_loc kw);
 
 /* Whether objects read unplaced in `where` (p->unplaced) refuse a light_source, as POV-Ray's
@@ -2660,25 +2661,44 @@ static bool unplaced_refuses_lights(const char *where)
  * scene or in a light's looks_like (p->lights_in_csg). In an object that is never placed (an
  * object pattern's, a projected_through's) POV-Ray parses the light and never uses it: circe
  * too, with a warning; in a clipped_by or bounded_by POV-Ray refuses it. */
+/* The article of a block's name: "an object", "an intersection", "a union". */
+static const char *article(const char *word) { return strchr("aeio", word[0]) ? "an" : "a"; }
+
+/* Whether a light_source (at `at`) in a block `what` is refused here: in a clipped_by or
+ * bounded_by, as POV-Ray refuses it (then reported). */
+static bool csg_light_refused(parser *p, diag_loc at, const char *what)
+{
+	if (!p->lights_in_csg && unplaced_refuses_lights(p->unplaced))
+		return !lang_error(p, at,
+				   "a light_source inside %s %s is not allowed in a %s, as in POV-Ray (\"Illegal texture "
+				   "or patch in clip, bound or object pattern\")",
+				   article(what), what, p->unplaced);
+	return false;
+}
+
+/* The light l (at kw) of a block `what`, placed (add_light) where csg_light says, else dropped
+ * with a warning. */
+static bool csg_light_place(parser *p, const scene_light *l, diag_loc kw, const char *what)
+{
+	if (!p->lights_in_csg) {
+		diag_warning(p->d, kw,
+			     "this light_source inside %s %s lights nothing, as in POV-Ray: the %s's object is not "
+			     "placed in the scene",
+			     article(what), what, p->unplaced ? p->unplaced : "block");
+		return true;
+	}
+	return add_light(p, l, kw);
+}
+
 static bool csg_light(parser *p, const char *what)
 {
 	lang_token kw = *lang_peek(p);
-	if (!p->lights_in_csg && unplaced_refuses_lights(p->unplaced))
-		return lang_error(p, kw.loc,
-				  "a light_source inside a %s is not allowed in a %s, as in POV-Ray (\"Illegal texture "
-				  "or patch in clip, bound or object pattern\")",
-				  what, p->unplaced);
+	if (csg_light_refused(p, kw.loc, what))
+		return false;
 	lang_advance(p);
 	scene_light l;
 	TRY(light_block(p, &l, kw.loc));
-	if (!p->lights_in_csg) {
-		diag_warning(p->d, kw.loc,
-			     "this light_source inside a %s lights nothing, as in POV-Ray: the %s's object is not "
-			     "placed in the scene",
-			     what, p->unplaced ? p->unplaced : "block");
-		return true;
-	}
-	return add_light(p, &l, kw.loc);
+	return csg_light_place(p, &l, kw.loc, what);
 }
 
 /* The block's transforms applied to the lights its items placed (the scene's lights from first). */
@@ -2855,6 +2875,13 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	lang_token *t = lang_peek(p);
+	if (names(p, VAL_LIGHT)) { /* object { L ... } of a declared light, as POV-Ray's Parse_Object_Id */
+		if (csg_light_refused(p, kw, "object"))
+			return false;
+		scene_light l;
+		TRY(light_body(p, &l, kw, open));
+		return csg_light_place(p, &l, kw, "object");
+	}
 	if (t->kind != LTK_IDENT) {
 		size_t start = out->len, lights = p->sc->lights.len;
 		bool matched;
@@ -4026,7 +4053,15 @@ static bool light_object(parser *p, const char *what, vecbuf *b)
 		p->lights_in_csg = true, p->unplaced = NULL;
 	else
 		p->lights_in_csg = false, p->unplaced = what;
-	if (lang_peek(p)->kind == LTK_IDENT)
+	if (placed && names(p, VAL_LIGHT)) { /* a declared light as the looks_like's object */
+		diag_loc at = lang_peek(p)->loc;
+		const value *v = declared(p, VAL_LIGHT, "a light_source");
+		scene_light l;
+		ok = v != NULL;
+		if (ok)
+			l = *v->light, l.loc = at;
+		ok = ok && copy_looks(p, &l, at) && add_light(p, &l, at);
+	} else if (lang_peek(p)->kind == LTK_IDENT)
 		ok = declared_object(p, b, lang_peek(p)->loc);
 	else if (placed && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE)
 		ok = csg_light(p, what);

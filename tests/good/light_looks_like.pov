@@ -5,6 +5,7 @@
 // even where its light is in a light_group (checked with povray: "Light Sources: 2" and the red
 // pools where these positions say). A light in an object pattern's or a projected_through's
 // object lights nothing (POV-Ray parses and never uses it): a warning, not counted.
+// (povray: "Light Sources: 23", circe the 23 lights of no group below.)
 // 1: in a union; the light's translate after looks_like moves both: <1, 4, 2>
 light_source { <0, 4, 0> color rgb <0, 0, 0.6>
   looks_like { union {
@@ -45,6 +46,13 @@ object { Post scale 2 }
 // 7: a declared union holding a light, in a looks_like: its light placed: <0, 6, 0> + <0, 20, 0>
 #declare Lamp = union { light_source { <0, 5, 0> color 1 } sphere { 0, 1 } translate y }
 light_source { <0, 20, 0> color 0.5 looks_like { Lamp } }
-// 8: in an object pattern and in a projected_through: warnings, no light
+// 8: a declared light as the looks_like's object, bare and as object { L }: <1, 30, 0> twice
+#declare Bare = light_source { x color 0.6 }
+light_source { <0, 30, 0> color 0.5 looks_like { Bare } }
+light_source { <0, 30, 0> color 0.5 looks_like { object { Bare } } }
+// 9: object { L } in a union placed: <1, 1, 1>; in an object pattern's: a warning, no light
+union { object { Bare translate y } sphere { 0, 1 } translate z }
+plane { y, -5 pigment { object { union { object { Bare } sphere { 0, 1 } } color rgb 1 color rgb 0 } } }
+// 10: in an object pattern and in a projected_through: warnings, no light
 plane { y, 0 pigment { object { union { sphere { 0, 2 } light_source { <3, 4, 0> color rgb <1, 0, 0> } } color rgb 1 color rgb <0, 1, 0> } } }
 light_source { <0, 10, 0> color 0.5 projected_through { union { disc { <0, 5, 0>, y, 3 } light_source { <3, -6, 0> color rgb <1, 0, 0> } } } }
