@@ -259,24 +259,17 @@ int main(void)
 		scene_free(sc);
 		sc = NULL;
 	}
-	for (long n = 0; n < 600; n += 3) {
-		mem_fail_after(n);
-		st = lang_parse_file("lights.pov", &vo, &d, &sc);
-		mem_fail_after(-1);
-		CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "lights.pov, fail after %ld: %d", n,
-		      (int)st);
-		scene_free(sc);
-		sc = NULL;
-	}
-	for (long n = 0; n < 600; n += 3) {
-		mem_fail_after(n);
-		st = lang_parse_file("looks.pov", &vo, &d, &sc);
-		mem_fail_after(-1);
-		CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "looks.pov, fail after %ld: %d", n,
-		      (int)st);
-		scene_free(sc);
-		sc = NULL;
-	}
+	static const char *const light_files[] = {"lights.pov", "looks.pov"}; /* the lights' copies */
+	for (size_t f = 0; f < 2; f++)
+		for (long n = 0; n < 600; n += 3) {
+			mem_fail_after(n);
+			st = lang_parse_file(light_files[f], &vo, &d, &sc);
+			mem_fail_after(-1);
+			CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "%s, fail after %ld: %d",
+			      light_files[f], n, (int)st);
+			scene_free(sc);
+			sc = NULL;
+		}
 	fclose(out);
 	free(buf);
 	diag_free(&d);
