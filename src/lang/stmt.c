@@ -3222,8 +3222,15 @@ bool lang_object_list(parser *p, const char *what, const objlist **out)
 	diag_loc at = t->loc;
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
-	bool matched;
-	bool ok = object_item_unplaced(p, &tmp, &matched, "object pattern");
+	bool matched = true, ok;
+	if (t->kind == LTK_KW_LIGHT_SOURCE) { /* POV-Ray's pattern of a light alone: inside nothing */
+		bool saved = p->lights_in_csg;
+		const char *saved_where = p->unplaced;
+		p->lights_in_csg = false, p->unplaced = "object pattern";
+		ok = csg_light(p, "object pattern");
+		p->lights_in_csg = saved, p->unplaced = saved_where;
+	} else
+		ok = object_item_unplaced(p, &tmp, &matched, "object pattern");
 	if (ok && !matched) {
 		vecbuf_free(&tmp);
 		return lang_error_found(p, "expected an object %s", what);

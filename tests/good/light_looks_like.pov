@@ -53,6 +53,8 @@ light_source { <0, 30, 0> color 0.5 looks_like { object { Bare } } }
 // 9: object { L } in a union placed: <1, 1, 1>; in an object pattern's: a warning, no light
 union { object { Bare translate y } sphere { 0, 1 } translate z }
 plane { y, -5 pigment { object { union { object { Bare } sphere { 0, 1 } } color rgb 1 color rgb 0 } } }
-// 10: in an object pattern and in a projected_through: warnings, no light
+// 10: in an object pattern (in a union, and a light alone as the pattern's object: inside
+// nothing) and in a projected_through: warnings, no light
 plane { y, 0 pigment { object { union { sphere { 0, 2 } light_source { <3, 4, 0> color rgb <1, 0, 0> } } color rgb 1 color rgb <0, 1, 0> } } }
 light_source { <0, 10, 0> color 0.5 projected_through { union { disc { <0, 5, 0>, y, 3 } light_source { <3, -6, 0> color rgb <1, 0, 0> } } } }
+plane { y, -6 pigment { object { light_source { <0, 5, 0> color 1 } color rgb 1 color rgb 0 } } }
