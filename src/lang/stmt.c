@@ -2655,12 +2655,6 @@ static bool unplaced_refuses_lights(const char *where)
 	return where && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by"));
 }
 
-/* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
- * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
- * moves the lights from its first on (csg_lights_move); only where the object is placed in the
- * scene or in a light's looks_like (p->lights_in_csg). In an object that is never placed (an
- * object pattern's, a projected_through's) POV-Ray parses the light and never uses it: circe
- * too, with a warning; in a clipped_by or bounded_by POV-Ray refuses it. */
 /* The article of a block's name: "an object", "an intersection", "a union". */
 static const char *article(const char *word) { return strchr("aeio", word[0]) ? "an" : "a"; }
 
@@ -2690,6 +2684,12 @@ static bool csg_light_place(parser *p, const scene_light *l, diag_loc kw, const 
 	return add_light(p, l, kw);
 }
 
+/* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
+ * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
+ * moves the lights from its first on (csg_lights_move); only where the object is placed in the
+ * scene or in a light's looks_like (p->lights_in_csg). In an object that is never placed (an
+ * object pattern's, a projected_through's) POV-Ray parses the light and never uses it: circe
+ * too, with a warning; in a clipped_by or bounded_by POV-Ray refuses it. */
 static bool csg_light(parser *p, const char *what)
 {
 	lang_token kw = *lang_peek(p);
@@ -2814,6 +2814,23 @@ static bool csg_renumber(parser *p, scene_object *objs, size_t n, diag_loc kw)
 
 static bool copy_looks(parser *p, scene_light *l, diag_loc at);
 
+/* The light groups [first, last) of l's looks_like objects and of the lights in them (copies:
+ * copy_looks) moved by shift, to a declared object's copy's groups (declared_object). */
+static void shift_looks_groups(scene_light *l, uint32_t first, uint32_t last, uint32_t shift)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) {
+		scene_object *o = (scene_object *)&l->looks[i];
+		if (o->light_group >= first && o->light_group < last)
+			o->light_group += shift;
+	}
+	for (uint32_t i = 0; i < l->n_looks_lights; i++) {
+		scene_light *c = (scene_light *)&l->looks_lights[i];
+		if (c->group >= first && c->group < last)
+			c->group += shift;
+		shift_looks_groups(c, first, last, shift);
+	}
+}
+
 /* A declared object's name: its objects pushed onto out as instances placed at kw, with copies
  * of its light groups (new ids, the parent chain inside it copied) and, where the copy is placed
  * in the scene or in a looks_like (p->lights_in_csg), of its lights: POV-Ray copies a declared
@@ -2864,6 +2881,7 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 		l.group = SHIFTED(l.group);
 		l.loc = kw;
 		TRY(copy_looks(p, &l, kw)); /* its projected_through objects are moved with this copy only */
+		shift_looks_groups(&l, first, last, shift);
 		TRY(add_light(p, &l, kw));
 	}
 #undef SHIFTED
@@ -3574,6 +3592,11 @@ static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_
 	return true;
 }
 
+/* POV-Ray's EPSILON: a max_distance below it is no limit (TraceRay: maxDepth >= EPSILON). */
+#define MESH_CAMERA_MIN_DISTANCE 1e-10
+/* A max_distance this large limits nothing a float ray can reach: taken as none. */
+#define MESH_CAMERA_NO_LIMIT 1e30
+
 /* POV-Ray's mesh_camera (Parse_Mesh_Camera), the lookahead 'mesh_camera': "{" rays_per_pixel
  * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". The distributions of
  * tracepixel.cpp's CreateCameraRay: 0, ray k of pixel i from face i of mesh k; 1, the meshes'
@@ -3581,11 +3604,6 @@ static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_
  * 3, the first mesh's uv (render/camera.c's cam_sample). What POV-Ray refuses is refused where
  * it is written. max_distance: the camera ray's first hit is sought only that far (TraceRay's
  * maxDepth); POV-Ray takes one below its EPSILON, 1e-10, negative ones too, as no limit. */
-/* POV-Ray's EPSILON: a max_distance below it is no limit (TraceRay: maxDepth >= EPSILON). */
-#define MESH_CAMERA_MIN_DISTANCE 1e-10
-/* A max_distance this large limits nothing a float ray can reach: taken as none. */
-#define MESH_CAMERA_NO_LIMIT 1e30
-
 static bool mesh_camera_block(parser *p, scene_camera *c)
 {
 	diag_loc open;

@@ -5,7 +5,7 @@
 // even where its light is in a light_group (checked with povray: "Light Sources: 2" and the red
 // pools where these positions say). A light in an object pattern's or a projected_through's
 // object lights nothing (POV-Ray parses and never uses it): a warning, not counted.
-// (povray: "Light Sources: 23", circe the 23 lights of no group below.)
+// (povray: "Light Sources: 25", circe the 25 lights of no group below.)
 // 1: in a union; the light's translate after looks_like moves both: <1, 4, 2>
 light_source { <0, 4, 0> color rgb <0, 0, 0.6>
   looks_like { union {
@@ -58,3 +58,11 @@ plane { y, -5 pigment { object { union { object { Bare } sphere { 0, 1 } } color
 plane { y, 0 pigment { object { union { sphere { 0, 2 } light_source { <3, 4, 0> color rgb <1, 0, 0> } } color rgb 1 color rgb <0, 1, 0> } } }
 light_source { <0, 10, 0> color 0.5 projected_through { union { disc { <0, 5, 0>, y, 3 } light_source { <3, -6, 0> color rgb <1, 0, 0> } } } }
 plane { y, -6 pigment { object { light_source { <0, 5, 0> color 1 } color rgb 1 color rgb 0 } } }
+// 11: a light_group in a looks_like of a declared union's light, the union placed twice: each
+// copy's group new (2, 3), its light and its sphere in it (povray counts the 2 outer lights)
+#declare D = union {
+  light_source { <0, 40, 0> color 1 looks_like { light_group { light_source { x color 1 } sphere { 0, 0.1 } } } }
+  sphere { <0, 35, 0>, 1 }
+}
+object { D }
+object { D translate z }
