@@ -57,6 +57,7 @@ static cam_params scene_cam(const scene *sc, double *angle_deg, diag_loc *loc)
 		cp.uv_start = c->uv_start, cp.uv_list = c->uv_list;
 		cp.mesh_offset = (float)c->location.z; /* POV-Ray's Location[Z], along the normal */
 		cp.mesh_invert = c->has_direction && c->direction.z < -1e-10; /* POV-Ray's -EPSILON */
+		cp.max_distance = (float)c->mesh_max_distance;
 	}
 	return cp;
 }

@@ -228,6 +228,29 @@ static void classify(world *w)
 	}
 }
 
+/* The SSS volume of a mesh placed in pieces (mesh2's texture_list, world_inst.n_pieces): its SSS
+ * pieces of no named group are one volume, the first of them its set, so that circles, probes
+ * and the volume walk see the whole closed mesh, not each piece's open part of it. */
+static void piece_groups(world *w, const scene *sc)
+{
+	for (size_t i = 0; i < w->n_insts; i++) {
+		const world_inst *in = &w->insts[i];
+		const scene_object *o = scene_object_at(sc, in->object);
+		if (!in->n_pieces || in->hidden || !is_sss(o->material) || o->material->sss.group)
+			continue;
+		for (size_t j = in->piece0; j <= i; j++) {
+			const world_inst *jn = &w->insts[j];
+			const scene_material *mj = scene_object_at(sc, jn->object)->material;
+			if (!jn->hidden && is_sss(mj) && !mj->sss.group) {
+				w->sss_group[i] = j == i ? -1 : (int)j;
+				if (j < i)
+					w->sss_group[j] = (int)j;
+				break;
+			}
+		}
+	}
+}
+
 /* The SSS volume of a CSG solid: its SSS instances (of no named group) are one volume, so that
  * circles and probes find the solid's boundary over all its operands. */
 static void csg_groups(world *w, const scene *sc)
@@ -262,6 +285,7 @@ bool build_csg(world *w, const scene *sc, diag *d)
 		set_pieces(w, sc, i);
 		steps += o->csg_depth;
 	}
+	piece_groups(w, sc);
 	if (!steps)
 		return true;
 	idmap map = {0};

@@ -178,17 +178,58 @@ static void warn_dense_medium(const world *w, const world_inst *in, const scene 
 			     worst, SSS_WALK_MAX_STEPS);
 }
 
+/* The closure of the SSS pieces of instance i's mesh (mesh2's texture_list, world_inst.n_pieces,
+ * those of its SSS volume: piece_groups) taken together, one mesh of their triangles. */
+static sss_mesh_closure pieces_closure(const world *w, size_t i, uint64_t *open_edges)
+{
+	const world_inst *in = &w->insts[i];
+	size_t nv = 0, nt = 0;
+	for (size_t j = in->piece0; j < in->piece0 + in->n_pieces; j++)
+		if (w->sss_group[j] == w->sss_group[i])
+			nv += w->insts[j].g->m.num_vertices, nt += w->insts[j].g->m.num_triangles;
+	if (nv > UINT32_MAX || nt > UINT32_MAX / 3)
+		return SSS_MESH_NO_MEMORY;
+	mesh all = {.num_vertices = (uint32_t)nv, .num_triangles = (uint32_t)nt};
+	all.positions = mem_alloc(nv ? nv : 1, sizeof *all.positions);
+	all.indices = mem_alloc(nt ? nt : 1, 3 * sizeof *all.indices);
+	sss_mesh_closure c = SSS_MESH_NO_MEMORY;
+	if (all.positions && all.indices) {
+		uint32_t v0 = 0, t0 = 0;
+		for (size_t j = in->piece0; j < in->piece0 + in->n_pieces; j++) {
+			const mesh *m = &w->insts[j].g->m;
+			if (w->sss_group[j] != w->sss_group[i])
+				continue;
+			memcpy(all.positions + v0, m->positions, m->num_vertices * sizeof *m->positions);
+			for (size_t k = 0; k < 3 * (size_t)m->num_triangles; k++)
+				all.indices[3 * (size_t)t0 + k] = m->indices[k] + v0;
+			v0 += m->num_vertices, t0 += m->num_triangles;
+		}
+		c = sss_walk_mesh_closure(&all, open_edges);
+	}
+	mem_free(all.positions), mem_free(all.indices);
+	return c;
+}
+
 /* Whether instance i's mesh is closed (sss_walk_mesh_closure), cached per mesh in closed[] (0
- * unknown, 1 closed, -1 open): 1, 0, or -1 out of memory. */
-static int mesh_closed(const world *w, size_t i, int8_t *closed)
+ * unknown, 1 closed, -1 open): 1, 0, or -1 out of memory. A piece of a mesh placed in pieces
+ * that is one SSS volume with the others is closed when they are together (pieces_closure).
+ * *open_edges (when not NULL) says how many edges are open where this call checked them. */
+static int mesh_closed(const world *w, size_t i, int8_t *closed, uint64_t *open_edges)
 {
 	size_t gi = (size_t)(w->insts[i].g - w->geoms);
+	if (open_edges)
+		*open_edges = 0;
 	if (!closed[gi]) {
-		uint64_t open_edges = 0;
-		sss_mesh_closure c = sss_walk_mesh_closure(&w->insts[i].g->m, &open_edges);
+		uint64_t open = 0;
+		const world_inst *in = &w->insts[i];
+		bool pieces = in->n_pieces && w->sss_group[i] >= 0 && (size_t)w->sss_group[i] >= in->piece0 &&
+			      (size_t)w->sss_group[i] < in->piece0 + in->n_pieces;
+		sss_mesh_closure c = pieces ? pieces_closure(w, i, &open) : sss_walk_mesh_closure(&in->g->m, &open);
 		if (c == SSS_MESH_NO_MEMORY)
 			return -1;
 		closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+		if (open_edges)
+			*open_edges = open;
 	}
 	return closed[gi] > 0;
 }
@@ -203,7 +244,7 @@ static int pov_bounded(const world *w, int32_t item, int8_t *closed)
 		const world_inst *in = &w->insts[-1 - item];
 		if (in->hidden || in->csg_inverse || in->inside_kind == WORLD_INSIDE_PLANE)
 			return 0;
-		return mesh_closed(w, (size_t)(-1 - item), closed);
+		return mesh_closed(w, (size_t)(-1 - item), closed, NULL);
 	}
 	const world_csg_node *n = &w->csg_nodes[item];
 	if (n->inverse)
@@ -329,7 +370,7 @@ bool build_pov_probe(world *w, const scene *sc, diag *d)
 			render_ray ray;
 			render_hit hit = {0};
 			if (!cam_sample(c, px, py, v2((float)(fx - px), (float)(fy - py)), v2(0.5f, 0.5f), &ray) ||
-			    !rs->intersect(rs->user, &ray, 0.0f, INFINITY, &hit) || hit.material < 0 ||
+			    !rs->intersect(rs->user, &ray, 0.0f, c->max_distance > 0.0f ? c->max_distance : INFINITY, &hit) || hit.material < 0 ||
 			    hit.object >= n_obj || open_obj[hit.object] != 1)
 				continue;
 			size_t k = (size_t)hit.material;
@@ -390,14 +431,10 @@ bool check_volumes(world *w, const scene *sc, const world_options *opt, diag *d)
 		const world_geom *g = w->insts[i].g;
 		size_t gi = (size_t)(g - w->geoms);
 		uint64_t open_edges = 0;
-		if (!closed[gi]) {
-			sss_mesh_closure c = sss_walk_mesh_closure(&g->m, &open_edges);
-			if (c == SSS_MESH_NO_MEMORY) {
-				diag_error(d, o->loc, "out of memory while checking that the object is closed");
-				ok = false;
-				break;
-			}
-			closed[gi] = c == SSS_MESH_CLOSED ? 1 : -1;
+		if (mesh_closed(w, i, closed, &open_edges) < 0) {
+			diag_error(d, o->loc, "out of memory while checking that the object is closed");
+			ok = false;
+			break;
 		}
 		if (closed[gi] < 0 && method == SSS_METHOD_AUTO) {
 			/* auto walks only where the object is thin; an open one holds no volume to walk

@@ -1903,6 +1903,8 @@ lang_status lang_parse_file(const char *path, const lang_options *opt, diag *d, 
 		while (!p->failed && lang_peek(p)->kind != LTK_EOF)
 			if (!lang_statement(p))
 				break;
+		if (!p->failed && !d->errors)
+			lang_lights_flatten(p);
 		if (!p->failed && !d->errors) {
 			sc->global.working_gamma = scene_working_gamma(&sc->global, p->version);
 			scene_resolve_pov_sss(sc, d);

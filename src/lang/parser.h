@@ -343,6 +343,9 @@ void lang_apply_object_flags(scene_object *o, const lang_objflags *f);
 /* ---- statements (stmt.c) ---- */
 /* statement = global_settings | camera | light_source | background | sky_sphere | object_item */
 bool lang_statement(parser *p);
+/* After the last statement: each light's looks_like lights (scene_light.looks_lights) placed in
+ * the scene's lights after it, as POV-Ray's Post_Process lists them; false when memory runs out. */
+bool lang_lights_flatten(parser *p);
 /* The right-hand side of #declare that is a block (object, material, texture); false with
  * *handled false when the lookahead starts none of them. */
 bool lang_declare_block(parser *p, value *out, bool *handled);

@@ -1724,6 +1724,8 @@ static void light_move(scene_light *l, const xform *t)
 		scene_object *o = (scene_object *)&l->projected[i];
 		o->transform = xform_then(o->transform, *t);
 	}
+	for (uint32_t i = 0; i < l->n_looks_lights; i++) /* the same (copy_looks, looks_like) */
+		light_move((scene_light *)&l->looks_lights[i], t);
 	l->position = xform_point(t, l->position);
 	l->point_at = xform_point(t, l->point_at);
 	l->axis1 = xform_vector(t, l->axis1);
@@ -2643,25 +2645,60 @@ static bool subdivision_surface(parser *p, vecbuf *out, diag_loc kw, diag_loc op
 static bool object_item(parser *p, vecbuf *out, bool *matched);
 
 static bool light_block(parser *p, scene_light *out, diag_loc kw);
+static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open);
 static bool add_light(parser *p, const scene_light *l, diag_loc kw);
+
+/* Whether objects read unplaced in `where` (p->unplaced) refuse a light_source, as POV-Ray's
+ * Parse_Bound_Clip refuses an object holding one (a light is a "patch" object there). */
+static bool unplaced_refuses_lights(const char *where)
+{
+	return where && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by"));
+}
+
+/* The article of a block's name: "an object", "an intersection", "a union". */
+static const char *article(const char *word) { return strchr("aeio", word[0]) ? "an" : "a"; }
+
+/* Whether a light_source (at `at`) in a block `what` is refused here: in a clipped_by or
+ * bounded_by, as POV-Ray refuses it (then reported). */
+static bool csg_light_refused(parser *p, diag_loc at, const char *what)
+{
+	if (!p->lights_in_csg && unplaced_refuses_lights(p->unplaced))
+		return !lang_error(p, at,
+				   "a light_source inside %s %s is not allowed in a %s, as in POV-Ray (\"Illegal texture "
+				   "or patch in clip, bound or object pattern\")",
+				   article(what), what, p->unplaced);
+	return false;
+}
+
+/* The light l (at kw) of a block `what`, placed (add_light) where csg_light says, else dropped
+ * with a warning. */
+static bool csg_light_place(parser *p, const scene_light *l, diag_loc kw, const char *what)
+{
+	if (!p->lights_in_csg) {
+		diag_warning(p->d, kw,
+			     "this light_source inside %s %s lights nothing, as in POV-Ray: the %s's object is not "
+			     "placed in the scene",
+			     article(what), what, p->unplaced ? p->unplaced : "block");
+		return true;
+	}
+	return add_light(p, l, kw);
+}
 
 /* A light_source in a CSG block (the lookahead): POV-Ray's light that moves with its CSG's
  * transforms (drums.pov, iortest.pov). It joins the scene's lights now, and each enclosing block
  * moves the lights from its first on (csg_lights_move); only where the object is placed in the
- * scene (p->lights_in_csg). */
+ * scene or in a light's looks_like (p->lights_in_csg). In an object that is never placed (an
+ * object pattern's, a projected_through's) POV-Ray parses the light and never uses it: circe
+ * too, with a warning; in a clipped_by or bounded_by POV-Ray refuses it. */
 static bool csg_light(parser *p, const char *what)
 {
 	lang_token kw = *lang_peek(p);
-	if (!p->lights_in_csg)
-		return lang_error(p, kw.loc,
-				  "a light_source inside a %s is supported only in an object placed in the "
-				  "scene or a #declare (not in a clipped_by, object pattern or looks_like): "
-				  "give it beside the %s's copies",
-				  what, what);
+	if (csg_light_refused(p, kw.loc, what))
+		return false;
 	lang_advance(p);
 	scene_light l;
 	TRY(light_block(p, &l, kw.loc));
-	return add_light(p, &l, kw.loc);
+	return csg_light_place(p, &l, kw.loc, what);
 }
 
 /* The block's transforms applied to the lights its items placed (the scene's lights from first). */
@@ -2777,10 +2814,28 @@ static bool csg_renumber(parser *p, scene_object *objs, size_t n, diag_loc kw)
 
 static bool copy_looks(parser *p, scene_light *l, diag_loc at);
 
+/* The light groups [first, last) of l's looks_like objects and of the lights in them (copies:
+ * copy_looks) moved by shift, to a declared object's copy's groups (declared_object). */
+static void shift_looks_groups(scene_light *l, uint32_t first, uint32_t last, uint32_t shift)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) {
+		scene_object *o = (scene_object *)&l->looks[i];
+		if (o->light_group >= first && o->light_group < last)
+			o->light_group += shift;
+	}
+	for (uint32_t i = 0; i < l->n_looks_lights; i++) {
+		scene_light *c = (scene_light *)&l->looks_lights[i];
+		if (c->group >= first && c->group < last)
+			c->group += shift;
+		shift_looks_groups(c, first, last, shift);
+	}
+}
+
 /* A declared object's name: its objects pushed onto out as instances placed at kw, with copies
  * of its light groups (new ids, the parent chain inside it copied) and, where the copy is placed
- * in the scene (p->lights_in_csg), of its lights: POV-Ray copies a declared CSG's lights with
- * each `object { U }`, and the enclosing blocks move them (object_tail_lights, csg_lights_move). */
+ * in the scene or in a looks_like (p->lights_in_csg), of its lights: POV-Ray copies a declared
+ * CSG's lights with each `object { U }`, and the enclosing blocks move them (object_tail_lights,
+ * csg_lights_move). */
 static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 {
 	lang_token name = *lang_peek(p);
@@ -2813,7 +2868,7 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 			return lang_error(p, kw, "out of memory");
 	}
 	const char *where = p->unplaced ? p->unplaced : "block";
-	if (ol->n_lights && !p->lights_in_csg && (!strcmp(where, "clipped_by") || !strcmp(where, "bounded_by")))
+	if (ol->n_lights && !p->lights_in_csg && unplaced_refuses_lights(where))
 		return lang_error(p, kw, "'%.*s' holds a light_source: not allowed in a %s, as in POV-Ray (\"Illegal "
 					 "texture or patch in clip, bound or object pattern\")",
 				  (int)name.len, name.text, where);
@@ -2826,6 +2881,7 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 		l.group = SHIFTED(l.group);
 		l.loc = kw;
 		TRY(copy_looks(p, &l, kw)); /* its projected_through objects are moved with this copy only */
+		shift_looks_groups(&l, first, last, shift);
 		TRY(add_light(p, &l, kw));
 	}
 #undef SHIFTED
@@ -2837,6 +2893,13 @@ static bool declared_object(parser *p, vecbuf *out, diag_loc kw)
 static bool instance(parser *p, vecbuf *out, diag_loc kw, diag_loc open)
 {
 	lang_token *t = lang_peek(p);
+	if (names(p, VAL_LIGHT)) { /* object { L ... } of a declared light, as POV-Ray's Parse_Object_Id */
+		if (csg_light_refused(p, kw, "object"))
+			return false;
+		scene_light l;
+		TRY(light_body(p, &l, kw, open));
+		return csg_light_place(p, &l, kw, "object");
+	}
 	if (t->kind != LTK_IDENT) {
 		size_t start = out->len, lights = p->sc->lights.len;
 		bool matched;
@@ -3177,8 +3240,15 @@ bool lang_object_list(parser *p, const char *what, const objlist **out)
 	diag_loc at = t->loc;
 	vecbuf tmp;
 	vecbuf_init(&tmp, sizeof(scene_object));
-	bool matched;
-	bool ok = object_item_unplaced(p, &tmp, &matched, "object pattern");
+	bool matched = true, ok;
+	if (t->kind == LTK_KW_LIGHT_SOURCE) { /* POV-Ray's pattern of a light alone: inside nothing */
+		bool saved = p->lights_in_csg;
+		const char *saved_where = p->unplaced;
+		p->lights_in_csg = false, p->unplaced = "object pattern";
+		ok = csg_light(p, "object pattern");
+		p->lights_in_csg = saved, p->unplaced = saved_where;
+	} else
+		ok = object_item_unplaced(p, &tmp, &matched, "object pattern");
 	if (ok && !matched) {
 		vecbuf_free(&tmp);
 		return lang_error_found(p, "expected an object %s", what);
@@ -3522,12 +3592,18 @@ static bool mesh_camera_uv(parser *p, const scene_object *o, bool smooth, scene_
 	return true;
 }
 
+/* POV-Ray's EPSILON: a max_distance below it is no limit (TraceRay: maxDepth >= EPSILON). */
+#define MESH_CAMERA_MIN_DISTANCE 1e-10
+/* A max_distance this large limits nothing a float ray can reach: taken as none. */
+#define MESH_CAMERA_NO_LIMIT 1e30
+
 /* POV-Ray's mesh_camera (Parse_Mesh_Camera), the lookahead 'mesh_camera': "{" rays_per_pixel
  * distribution_type [ max_distance ] { mesh | mesh2 } [ "smooth" ] "}". The distributions of
  * tracepixel.cpp's CreateCameraRay: 0, ray k of pixel i from face i of mesh k; 1, the meshes'
  * faces summed, ray k of pixel i from face k * width * height + i; 2, the meshes side by side;
  * 3, the first mesh's uv (render/camera.c's cam_sample). What POV-Ray refuses is refused where
- * it is written, and a max_distance other than 0 (circe's rays run to infinity). */
+ * it is written. max_distance: the camera ray's first hit is sought only that far (TraceRay's
+ * maxDepth); POV-Ray takes one below its EPSILON, 1e-10, negative ones too, as no limit. */
 static bool mesh_camera_block(parser *p, scene_camera *c)
 {
 	diag_loc open;
@@ -3547,9 +3623,10 @@ static bool mesh_camera_block(parser *p, scene_camera *c)
 		double x;
 		at = lang_peek(p)->loc;
 		TRY(lang_float(p, "for the mesh_camera's max_distance", &x));
-		if (x != 0)
-			return lang_error(p, at, "circe's mesh_camera has no max_distance (found %g); rays run to infinity",
-					  x);
+		if (x < 0)
+			diag_warning(p->d, at, "a negative max_distance (%g) is no limit, as in POV-Ray", x);
+		else if (x >= MESH_CAMERA_MIN_DISTANCE && x < MESH_CAMERA_NO_LIMIT)
+			c->mesh_max_distance = x;
 	}
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
@@ -3973,33 +4050,64 @@ static bool copy_looks(parser *p, scene_light *l, diag_loc at)
 		memcpy(o, l->projected, l->n_projected * sizeof *o);
 		l->projected = o;
 	}
+	if (l->n_looks_lights) { /* and the lights in its looks_like, each with its own */
+		scene_light *c = arena_zalloc(&p->sc->arena, l->n_looks_lights, sizeof *c);
+		if (!c)
+			return lang_error(p, at, "out of memory");
+		memcpy(c, l->looks_lights, l->n_looks_lights * sizeof *c);
+		l->looks_lights = c;
+		for (uint32_t i = 0; i < l->n_looks_lights; i++)
+			TRY(copy_looks(p, &c[i], at));
+	}
 	return true;
 }
 
 /* The object of a light's block `what` (projected_through, looks_like): a declared object, as
- * POV-Ray's Parse_Object takes it, or an object item, not placed in the scene, into *b. */
+ * POV-Ray's Parse_Object takes it, or an object item, into *b. A projected_through's object is
+ * not placed in the scene: its lights light nothing (csg_light, declared_object). A looks_like's
+ * is (POV-Ray's Post_Process walks the light's children): its lights, and a light_source written
+ * as the looks_like's object itself, join the scene's lights from their index on (looks_like
+ * takes them into the light). */
 static bool light_object(parser *p, const char *what, vecbuf *b)
 {
-	bool matched = true, ok;
-	if (lang_peek(p)->kind == LTK_IDENT) {
-		bool saved = p->lights_in_csg;
-		const char *saved_where = p->unplaced;
-		p->lights_in_csg = false, p->unplaced = what; /* not placed: its lights light nothing */
+	bool matched = true, ok, placed = !strcmp(what, "looks_like");
+	size_t lights = p->sc->lights.len;
+	bool saved = p->lights_in_csg;
+	const char *saved_where = p->unplaced;
+	if (placed)
+		p->lights_in_csg = true, p->unplaced = NULL;
+	else
+		p->lights_in_csg = false, p->unplaced = what;
+	if (placed && names(p, VAL_LIGHT)) { /* a declared light as the looks_like's object */
+		diag_loc at = lang_peek(p)->loc;
+		const value *v = declared(p, VAL_LIGHT, "a light_source");
+		scene_light l;
+		ok = v != NULL;
+		if (ok)
+			l = *v->light, l.loc = at;
+		ok = ok && copy_looks(p, &l, at) && add_light(p, &l, at);
+	} else if (lang_peek(p)->kind == LTK_IDENT)
 		ok = declared_object(p, b, lang_peek(p)->loc);
-		p->lights_in_csg = saved, p->unplaced = saved_where;
-	} else
-		ok = object_item_unplaced(p, b, &matched, what);
-	if (ok && (!matched || !b->len))
+	else if (placed && lang_peek(p)->kind == LTK_KW_LIGHT_SOURCE)
+		ok = csg_light(p, what);
+	else
+		ok = object_item(p, b, &matched);
+	p->lights_in_csg = saved, p->unplaced = saved_where;
+	if (ok && (!matched || (!b->len && p->sc->lights.len == lights)))
 		ok = lang_error_found(p, "expected an object in '%s'", what);
 	return ok;
 }
 
-/* The block's modifiers up to its '}', then b's objects copied into the scene's arena (casting no
- * shadow when no_shadow): *out, *n. */
-static bool light_object_end(parser *p, const char *what, diag_loc kw, diag_loc open, vecbuf *b, bool no_shadow,
-			     const scene_object **out, uint32_t *n)
+/* The block's modifiers up to its '}' (moving the scene's lights from `lights` on too), then b's
+ * objects copied into the scene's arena (casting no shadow when no_shadow): *out, *n. */
+static bool light_object_end(parser *p, const char *what, diag_loc kw, diag_loc open, vecbuf *b, size_t lights,
+			     bool no_shadow, const scene_object **out, uint32_t *n)
 {
-	TRY(object_tail(p, b, 0, open, what));
+	TRY(object_tail_lights(p, b, 0, lights, open, what));
+	if (!b->len) {
+		*out = NULL, *n = 0;
+		return true;
+	}
 	scene_object *o = arena_zalloc(&p->sc->arena, b->len, sizeof *o);
 	if (!o)
 		return lang_error(p, kw, "out of memory");
@@ -4022,28 +4130,44 @@ static bool projected_through(parser *p, scene_light *l)
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
 	bool ok = light_object(p, "projected_through", &b) &&
-		  light_object_end(p, "projected_through", kw, open, &b, false, &l->projected, &l->n_projected);
+		  light_object_end(p, "projected_through", kw, open, &b, p->sc->lights.len, false, &l->projected,
+				   &l->n_projected);
 	vecbuf_free(&b);
 	return ok;
 }
 
-/* looks_like = "looks_like" "{" ( identifier | object_item ) { modifier } "}": POV-Ray's (Parse_Light_Source): the
- * object translated to the light's position as it stands, then its modifiers, no_shadow; one a
- * light. */
+/* looks_like = "looks_like" "{" ( identifier | object_item | light_source ) { modifier } "}":
+ * POV-Ray's (Parse_Light_Source): the object translated to the light's position as it stands,
+ * then its modifiers, no_shadow; one a light. The light_sources in it (or it) light the scene as
+ * POV-Ray's Post_Process finds them among the light's children, moved with the object: taken out
+ * of the scene's lights into l->looks_lights (add_light places them after l). */
 static bool looks_like(parser *p, scene_light *l)
 {
 	diag_loc kw = lang_advance(p)->loc, open;
-	if (l->n_looks)
+	if (l->n_looks || l->n_looks_lights)
 		return lang_error(p, kw, "only one looks_like is allowed in a light_source");
 	TRY(open_block(p, "looks_like", &open));
 	vecbuf b;
 	vecbuf_init(&b, sizeof(scene_object));
+	size_t lights = p->sc->lights.len, objects = p->sc->objects.len;
 	bool ok = light_object(p, "looks_like", &b);
 	xform to = xform_translate(l->position);
 	for (size_t i = 0; ok && i < b.len; i++)
 		VECBUF_AT(&b, scene_object, i).transform = xform_then(VECBUF_AT(&b, scene_object, i).transform, to);
-	ok = ok && light_object_end(p, "looks_like", kw, open, &b, true, &l->looks, &l->n_looks);
+	for (size_t i = lights; ok && i < p->sc->lights.len; i++)
+		light_move(&VECBUF_AT(&p->sc->lights, scene_light, i), &to);
+	ok = ok && light_object_end(p, "looks_like", kw, open, &b, lights, true, &l->looks, &l->n_looks);
 	vecbuf_free(&b);
+	if (ok && p->sc->lights.len > lights) {
+		/* add_light placed their own looks_like objects: placed again with l (add_light) */
+		size_t n = p->sc->lights.len - lights;
+		scene_light *c = arena_zalloc(&p->sc->arena, n, sizeof *c);
+		if (!c)
+			return lang_error(p, kw, "out of memory");
+		memcpy(c, &VECBUF_AT(&p->sc->lights, scene_light, lights), n * sizeof *c);
+		l->looks_lights = c, l->n_looks_lights = (uint32_t)n;
+	}
+	p->sc->lights.len = lights, p->sc->objects.len = objects;
 	return ok;
 }
 
@@ -4233,14 +4357,55 @@ static bool light_body(parser *p, scene_light *out, diag_loc kw, diag_loc open)
 	}
 }
 
-/* A light placed in the scene, with the objects of its looks_like. */
+/* The objects of l's looks_like and of the lights in it, pushed onto the scene's objects. */
+static bool add_looks(parser *p, const scene_light *l, diag_loc kw)
+{
+	for (uint32_t i = 0; i < l->n_looks; i++) /* the objects that show it */
+		if (!vecbuf_push(&p->sc->objects, &l->looks[i]))
+			return lang_error(p, kw, "out of memory");
+	for (uint32_t i = 0; i < l->n_looks_lights; i++)
+		TRY(add_looks(p, &l->looks_lights[i], kw));
+	return true;
+}
+
+/* A light placed in the scene, with the objects of its looks_like. The lights in its looks_like
+ * stay in it (moved with it by light_move) until lang_lights_flatten places them. */
 static bool add_light(parser *p, const scene_light *l, diag_loc kw)
 {
 	if (!vecbuf_push(&p->sc->lights, l))
 		return lang_error(p, kw, "out of memory");
-	for (uint32_t i = 0; i < l->n_looks; i++) /* the objects that show it */
-		if (!vecbuf_push(&p->sc->objects, &l->looks[i]))
-			return lang_error(p, kw, "out of memory");
+	return add_looks(p, l, kw);
+}
+
+static bool flatten_light(vecbuf *out, const scene_light *l)
+{
+	if (!vecbuf_push(out, l))
+		return false;
+	scene_light *pushed = &VECBUF_AT(out, scene_light, out->len - 1);
+	pushed->looks_lights = NULL, pushed->n_looks_lights = 0;
+	for (uint32_t i = 0; i < l->n_looks_lights; i++)
+		if (!flatten_light(out, &l->looks_lights[i]))
+			return false;
+	return true;
+}
+
+bool lang_lights_flatten(parser *p)
+{
+	vecbuf *lights = &p->sc->lights;
+	bool any = false;
+	for (size_t i = 0; i < lights->len; i++)
+		any |= VECBUF_AT(lights, scene_light, i).n_looks_lights > 0;
+	if (!any)
+		return true;
+	vecbuf flat;
+	vecbuf_init(&flat, sizeof(scene_light));
+	for (size_t i = 0; i < lights->len; i++)
+		if (!flatten_light(&flat, &VECBUF_AT(lights, scene_light, i))) {
+			vecbuf_free(&flat);
+			return lang_error(p, diag_noloc(), "out of memory");
+		}
+	vecbuf_free(lights);
+	*lights = flat;
 	return true;
 }
 

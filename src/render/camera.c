@@ -173,6 +173,7 @@ bool cam_init_why(cam *c, const cam_params *p, int width, int height, const char
 		c->uv_faces = p->uv_faces, c->uv_n = p->uv_n, c->uv_grid = p->uv_grid;
 		c->uv_start = p->uv_start, c->uv_list = p->uv_list;
 		c->mesh_offset = p->mesh_offset, c->mesh_invert = p->mesh_invert;
+		c->max_distance = p->max_distance;
 		c->width = width, c->height = height;
 		bool uv = p->mesh_distribution == 3;
 		if (uv ? !p->uv_faces || p->uv_n == 0 || p->uv_grid == 0 || !p->uv_start || !p->uv_list

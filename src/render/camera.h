@@ -91,6 +91,7 @@ typedef struct cam_params {
 	const uint32_t *uv_start, *uv_list;
 	float mesh_offset;
 	bool mesh_invert;
+	float max_distance; /* POV-Ray's mesh_camera max_distance: see cam.max_distance */
 } cam_params;
 
 /* The ready camera: an orthonormal frame and the screen vectors at unit forward distance. */
@@ -120,6 +121,10 @@ typedef struct cam {
 	const uint32_t *uv_start, *uv_list;
 	float mesh_offset;
 	bool mesh_invert;
+	/* POV-Ray's mesh_camera max_distance: the camera ray's first hit is sought only this far
+	 * along it (the rays are unit), beyond it the ray misses (the background, fog that deep);
+	 * the rays after that hit are not limited, as in POV-Ray (TraceRay's maxDepth). 0: none. */
+	float max_distance;
 } cam;
 
 cam_params cam_params_default(void);

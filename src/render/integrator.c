@@ -83,18 +83,18 @@ static vec3 to_world(const frame *f, vec3 v)
  * triangle (barycentrics), not as o + t d, for the offset to cover their error. */
 static vec3 offset_origin(vec3 p, float scale, vec3 n_out) { return bvh_offset_scaled(p, n_out, scale); }
 
-/* Nearest surface: the scene's or a sphere light's. *sphere_light receives the sphere light's
- * index when that is nearer, else -1. */
-static bool trace(const render_scene *s, const render_ray *ray, render_hit *hit, int *sphere_light)
+/* Nearest surface closer than tmax: the scene's or a sphere light's. *sphere_light receives the
+ * sphere light's index when that is nearer, else -1. */
+static bool trace(const render_scene *s, const render_ray *ray, float tmax, render_hit *hit, int *sphere_light)
 {
-	bool found = s->intersect(s->user, ray, 0.0f, INFINITY, hit);
+	bool found = s->intersect(s->user, ray, 0.0f, tmax, hit);
 	*sphere_light = -1;
 	const light_set *ls = s->lights;
 	for (size_t i = 0; ls && i < ls->count; i++) {
 		const light *l = &ls->lights[i];
 		float t;
 		if (l->kind == LIGHT_SPHERE &&
-		    light_sphere_hit(l, ray, 0.0f, found ? hit->t : INFINITY, &t)) {
+		    light_sphere_hit(l, ray, 0.0f, found ? hit->t : tmax, &t)) {
 			found = true;
 			*sphere_light = (int)i;
 			hit->t = t;
@@ -1038,13 +1038,17 @@ render_sample render_path(const render_scene *s, const render_settings *set, ren
 		pa.bounce = bounce;
 		render_hit hit = {0}; /* fields a scene leaves unset stay 0 (scale: unknown) */
 		int sphere_light;
-		bool hit_any = trace(s, &ray, &hit, &sphere_light);
-		if (s->fog_count && pa.fog_view)
-			through_fog(s, set, &ray, hit_any ? hit.t : INFINITY, &pa);
+		/* the camera's ray alone may be limited (POV-Ray's TraceRay maxDepth, the first call) */
+		float tmax = vtx == 0 && set->camera_tmax > 0.0f ? set->camera_tmax : INFINITY;
+		bool hit_any = trace(s, &ray, tmax, &hit, &sphere_light);
+		if (s->fog_count && pa.fog_view) /* a limited miss: the fog that deep, as POV-Ray's */
+			through_fog(s, set, &ray, hit_any ? hit.t : tmax, &pa);
 		uint32_t md_obj = 0;
 		const render_media *md = any_media(s) && pa.in.n ? nest_media(s, &pa.in, &md_obj) : NULL;
 		if (md) {
-			int r = through_media(s, set, md, md_obj, hit_any ? hit.t : 0.0f, bounce, g, &pa, &ray);
+			/* a limited miss: the media that deep too (POV-Ray's ComputeMedia to that depth) */
+			float seg = hit_any ? hit.t : isfinite(tmax) ? tmax : 0.0f;
+			int r = through_media(s, set, md, md_obj, seg, bounce, g, &pa, &ray);
 			if (r < 0)
 				break;
 			if (r > 0)

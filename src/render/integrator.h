@@ -212,6 +212,9 @@ typedef struct render_settings {
 	 * unbiased, noisy). Thin transparent surfaces pass shadow rays in both (exact). */
 	bool opaque_glass_shadows;
 	render_part part; /* RENDER_PART_ALL (default): everything */
+	/* The camera ray's first hit is sought only this far (cam.max_distance, POV-Ray's mesh_camera
+	 * max_distance): beyond it the ray misses; later rays are not limited. 0 (default): none. */
+	float camera_tmax;
 } render_settings;
 
 /* One camera sample: radiance and the AOVs of the first surface hit (zero where the ray escapes). */

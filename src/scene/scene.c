@@ -729,6 +729,8 @@ static void dump_camera_more(FILE *o, const scene_camera *c)
 		fprintf(o, " distribution %d meshes %u faces %u", c->mesh_distribution, c->mesh_count, c->mesh_n);
 	if (c->type == SCENE_CAM_MESH && c->mesh_distribution == 1)
 		fprintf(o, " rays %u", c->mesh_rays);
+	if (c->type == SCENE_CAM_MESH && c->mesh_max_distance > 0)
+		fprintf(o, " max_distance %g", c->mesh_max_distance);
 	if (c->has_direction)
 		dump_d3(o, "direction", c->direction);
 	if (!c->has_look_at)

@@ -93,6 +93,9 @@ typedef struct scene_camera {
 	uint32_t uv_n, uv_grid;
 	const uint32_t *uv_start, *uv_list;
 	bool mesh_smooth;
+	/* POV-Ray's max_distance (Camera::Max_Ray_Distance): the camera ray's first hit is sought
+	 * only this far from its origin, beyond it the ray misses; 0: no limit */
+	double mesh_max_distance;
 } scene_camera;
 
 typedef enum scene_light_kind {
@@ -133,6 +136,11 @@ typedef struct scene_light {
 	 * placed; in the scene's arena. */
 	const struct scene_object *looks;
 	uint32_t n_looks;
+	/* The light_sources written in the looks_like object (POV-Ray's Post_Process walks the
+	 * light's children, so they light the scene): moved with it, placed after it where it is
+	 * placed; in the scene's arena. */
+	const struct scene_light *looks_lights;
+	uint32_t n_looks_lights;
 	/* POV-Ray's light_group: the group (1-based index of scene.light_groups) whose objects alone
 	 * the light lights; 0: a global light. */
 	uint32_t group;

@@ -2,8 +2,9 @@
 // object { Name }: each copy's lights are moved by the copy's transforms (after the declared
 // object's own), and each light_group in it is a new group per copy (the chain inside copied; a
 // group around the copy becomes its parent); a light's looks_like objects and projected_through
-// objects move with its copy. Where a copy is not placed in the scene (a looks_like) its lights
-// light nothing (a warning; in a clipped_by or bounded_by an error, as in POV-Ray).
+// objects move with its copy. A copy in a looks_like places its lights too (POV-Ray's
+// Post_Process walks the light's children: light_looks_like.pov); in a clipped_by or bounded_by
+// it is an error, as in POV-Ray.
 #declare Lamp = union { light_source { <0, 5, 0> color 1 } sphere { 0, 1 } translate y }
 object { Lamp translate x * 3 }
 object { Lamp rotate z * 90 }

@@ -45,6 +45,13 @@ static const memfile files[] = {
 		       "#declare G = light_group { light_source { <1, 2, 3> color 1 } sphere { 0, 1 }\n"
 		       "  light_group { light_source { <0, 1, 0> color 1 } box { -1, 1 } } }\n"
 		       "object { G translate z } object { G scale 2 }\n"},
+	/* A light in a light's looks_like lights the scene, moved with it, listed after it: in a
+	 * declared union's light (each copy its own), and as the looks_like's object itself */
+	{"looks.pov", "#declare U = union {\n"
+		      "  light_source { <0, 5, 0> color 1 looks_like { union { sphere { 0, 0.1 } light_source { x color 1 } } } }\n"
+		      "  sphere { 0, 1 } }\n"
+		      "object { U translate x * 3 } object { U rotate y * 90 }\n"
+		      "light_source { <0, 1, 0> color 1 looks_like { light_source { y color 1 } } translate z }\n"},
 };
 
 static int read_mem(void *user, const char *path, char **text, size_t *len)
@@ -226,6 +233,23 @@ int main(void)
 	}
 	scene_free(sc);
 
+	st = parse_quiet("looks.pov", &vo, &sc, msg, sizeof msg);
+	CHECK(st == LANG_OK && sc, "looks.pov: status %d: %s", (int)st, msg);
+	if (sc) {
+		CHECK(scene_n_lights(sc) == 6 && scene_n_objects(sc) == 4, "looks.pov: %zu lights (6), %zu objects (4)",
+		      scene_n_lights(sc), scene_n_objects(sc));
+		static const double want[6][3] = {{3, 5, 0}, {4, 5, 0}, {0, 5, 0}, {0, 5, -1}, {0, 1, 1}, {0, 2, 1}};
+		for (size_t i = 0; i < 6 && i < scene_n_lights(sc); i++) {
+			const scene_light *l = scene_light_at(sc, i);
+			CHECK(fabs(l->position.x - want[i][0]) < 1e-12 && fabs(l->position.y - want[i][1]) < 1e-12 &&
+				      fabs(l->position.z - want[i][2]) < 1e-12 && l->group == 0 && l->n_looks_lights == 0,
+			      "looks.pov: light %zu at <%g, %g, %g> group %u (%u inner), expected <%g, %g, %g> group 0", i,
+			      l->position.x, l->position.y, l->position.z, l->group, l->n_looks_lights, want[i][0],
+			      want[i][1], want[i][2]);
+		}
+	}
+	scene_free(sc);
+
 	/* Allocation failure anywhere is an error, never a crash or a leak (under the sanitizers). */
 	for (long n = 0; n < 400; n += 7) {
 		mem_fail_after(n);
@@ -235,15 +259,17 @@ int main(void)
 		scene_free(sc);
 		sc = NULL;
 	}
-	for (long n = 0; n < 600; n += 3) {
-		mem_fail_after(n);
-		st = lang_parse_file("lights.pov", &vo, &d, &sc);
-		mem_fail_after(-1);
-		CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "lights.pov, fail after %ld: %d", n,
-		      (int)st);
-		scene_free(sc);
-		sc = NULL;
-	}
+	static const char *const light_files[] = {"lights.pov", "looks.pov"}; /* the lights' copies */
+	for (size_t f = 0; f < 2; f++)
+		for (long n = 0; n < 600; n += 3) {
+			mem_fail_after(n);
+			st = lang_parse_file(light_files[f], &vo, &d, &sc);
+			mem_fail_after(-1);
+			CHECK(st == LANG_OK || st == LANG_NO_MEMORY || st == LANG_SCENE_ERROR, "%s, fail after %ld: %d",
+			      light_files[f], n, (int)st);
+			scene_free(sc);
+			sc = NULL;
+		}
 	fclose(out);
 	free(buf);
 	diag_free(&d);

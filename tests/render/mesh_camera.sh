@@ -12,6 +12,7 @@
 #    w * h + i, so the upper half of the pixels average red and blue, the lower half have one
 #    ray (red): means R 0.75, B 0.25 (POV-Ray 3.7's code, which never shoots ray 1, would give
 #    R 1, B 0).
+# 4. max_distance: below.
 . "$top_srcdir/tests/lib.sh"
 enter_workdir
 world='background { rgb <0.1, 0.2, 0.4> }
@@ -82,4 +83,21 @@ r=$(mean R) g=$(mean G) b=$(mean B)
 echo "type 1, 2 rays: means R $r G $g B $b (want 0.75 0 0.25)"
 awk -v r="$r" -v g="$g" -v b="$b" 'BEGIN { exit !(r != "" && (r - 0.75) ^ 2 < 1e-4 && g ^ 2 < 1e-8 && (b - 0.25) ^ 2 < 1e-4) }' ||
 	fail "type 1 with 2 rays per pixel: means R $r G $g B $b, want 0.75 0 0.25"
+
+# 4. max_distance (POV-Ray's TraceRay maxDepth on the camera ray): the type 3 quad's rays at 7
+#    from z = -5 meet the sphere and the box (at distances 5 and more) but not the plane at
+#    distance 9, which the background replaces: the orthographic camera of the world without the
+#    plane (within 1e-3 but at a few edge samples); the control, the same camera without
+#    max_distance, differs from it.
+noplane=$(printf '%s\n' "$world" | grep -v '^plane')
+printf 'camera { mesh_camera { 1 3 7 %s } location <0, 0, 0> }\n%s\n' "$quad" "$world" >far.pov
+printf 'camera { orthographic location <0, 0, -5> look_at <0, 0, 0> right 4 * x up 3 * y }\n%s\n' "$noplane" >near.pov
+for f in far near; do
+	expect_status 0 "$CIRCE" render $f.pov -o $f.exr -W 40 -H 30 --spp 16 --seed 3 --quiet
+done
+"$CIRCE" compare far.exr near.exr --fail 1e-3 --fail-percent 2 >out 2>&1 ||
+	fail "max_distance 7 does not hide the plane at 9: $(cat out)"
+if "$CIRCE" compare uv.exr near.exr --fail 1e-3 --fail-percent 2 >out 2>&1; then
+	fail "the control: the camera without max_distance matches the world without the plane: $(cat out)"
+fi
 pass

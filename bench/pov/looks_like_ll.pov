@@ -1,0 +1,11 @@
+// looks_like_ll.pov (light19b): a red light in a union in a blue light's looks_like, the light moved after: POV-Ray lights the floor with both, the red pool at <1, 4, 2>
+global_settings { assumed_gamma 1 }
+camera { location <0, 14, -0.001> look_at 0 angle 60 }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+light_source { <0, 4, 0> color rgb <0, 0, 0.6>
+  looks_like { union {
+    sphere { 0, 0.2 pigment { rgb 1 } finish { ambient 1 } }
+    light_source { <3, 0, 0> color rgb <1, 0, 0> }
+  } }
+  translate <-2, 0, 2>
+}
